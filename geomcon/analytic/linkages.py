@@ -1,0 +1,105 @@
+"""Closed forms for the extreme positions of the basic linkages (law of cosines, right triangles).
+
+All lengths in mm, all angles in degrees. Each function returns a dict keyed by the recipe's answer names.
+
+Examples
+--------
+>>> r = crank_rocker_extremes(AB=50, BC=70, CD=80, AD=90)
+>>> round(r["theta"], 4), round(r["gamma_min"], 4)
+(12.5056, 29.9947)
+>>> round(crank_slider_extremes(AB=120, BC=250, e=60)["H"], 3)
+249.777
+>>> guide_bar_extremes(AB=145, AC=290)["theta"]
+60.00000000000001
+"""
+from __future__ import annotations
+
+import math
+
+
+def _acos_deg(c: float) -> float:
+    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+
+
+def _asin_deg(s: float) -> float:
+    return math.degrees(math.asin(max(-1.0, min(1.0, s))))
+
+
+def _cos_rule(adj1: float, adj2: float, opposite: float) -> float:
+    """The angle (deg) between sides adj1 and adj2 of a triangle whose third side is ``opposite``."""
+    return _acos_deg((adj1 * adj1 + adj2 * adj2 - opposite * opposite) / (2.0 * adj1 * adj2))
+
+
+def k_from_theta(theta: float) -> float:
+    """Time-ratio coefficient K = (180° + θ)/(180° − θ)."""
+    return (180.0 + theta) / (180.0 - theta)
+
+
+def theta_from_k(K: float) -> float:
+    """Crank angle between the extreme positions θ = 180°(K − 1)/(K + 1)."""
+    return 180.0 * (K - 1.0) / (K + 1.0)
+
+
+def crank_rocker_extremes(AB: float, BC: float, CD: float, AD: float) -> dict[str, float]:
+    """Extreme positions of a crank-rocker by the law of cosines.
+
+    In the folded position (C1) A sees C at distance BC − AB, in the extended one (C2) at BC + AB; both C lie
+    on the rocker circle about D. θ = ∠C1AD − ∠C2AD, ψ = ∠ADC2 − ∠ADC1 (both C on one side of AD). The
+    transmission angle γ = ∠BCD (or its supplement) is extreme when the crank lies along the frame:
+    BD = AD − AB (γ1) or AD + AB (γ2).
+    """
+    f, x = BC - AB, BC + AB
+    c1ad, c2ad = _cos_rule(f, AD, CD), _cos_rule(x, AD, CD)
+    adc1, adc2 = _cos_rule(AD, CD, f), _cos_rule(AD, CD, x)
+    theta = c1ad - c2ad
+    g1 = _cos_rule(BC, CD, AD - AB)
+    g2 = _cos_rule(BC, CD, AD + AB)
+    t1, t2 = min(g1, 180.0 - g1), min(g2, 180.0 - g2)
+    return {
+        "theta": theta,
+        "psi": adc2 - adc1,
+        "K": k_from_theta(theta),
+        "gamma_min": min(t1, t2),
+        "gamma_1": t1,
+        "gamma_2": t2,
+        "angle_C1AD": c1ad,
+        "angle_C2AD": c2ad,
+        "AC1": f,
+        "AC2": x,
+    }
+
+
+def crank_slider_extremes(AB: float, BC: float, e: float) -> dict[str, float]:
+    """Extreme positions of an offset crank-slider from right triangles.
+
+    With the guide at distance e from A, C1 (folded, AC1 = BC − AB) and C2 (extended, AC2 = BC + AB) lie at
+    horizontal distances √(AC² − e²) from the foot of A. The pressure angle at the slider is
+    α = asin(distance of B from the guide / BC): largest with B farthest from the guide (fast stroke); over
+    the slow stroke it is largest at the folded position or with B nearest the guide.
+    """
+    a, b = AB, BC
+    x1 = math.sqrt((b - a) ** 2 - e * e)
+    x2 = math.sqrt((b + a) ** 2 - e * e)
+    theta = _asin_deg(e / (b - a)) - _asin_deg(e / (b + a))
+    alpha_max = _asin_deg((a + e) / b)
+    alpha_slow = max(_asin_deg(e / (b - a)), _asin_deg(abs(a - e) / b))
+    return {
+        "H": x2 - x1,
+        "theta": theta,
+        "K": k_from_theta(theta),
+        "alpha_max": alpha_max,
+        "gamma_min": 90.0 - alpha_max,
+        "gamma_min_fast": 90.0 - alpha_max,
+        "gamma_min_slow": 90.0 - alpha_slow,
+        "AC1": b - a,
+        "AC2": b + a,
+    }
+
+
+def guide_bar_extremes(AB: float, AC: float) -> dict[str, float]:
+    """Extreme positions of the oscillating guide-bar: the guide bar is tangent to the crank circle.
+
+    sin(ψ/2) = AB/AC and θ = ψ; the transmission angle of a centric guide-bar is always 90°.
+    """
+    psi = 2.0 * _asin_deg(AB / AC)
+    return {"theta": psi, "psi": psi, "K": k_from_theta(psi)}

@@ -1,0 +1,185 @@
+"""Named branch rules: how a construction chooses one of two intersection points.
+
+A textbook never says "the first solution"; it says "the intersection above the frame", "the one nearer to
+D", "the other intersection than C1". Each rule here is a small frozen object that holds the points it
+refers to (plain points, or :class:`geomcon.scene.Ref` before a scene resolves them), chooses among the
+candidates of an intersection, and describes itself in English and Chinese for the step's caption.
+
+A rule that cannot tell the candidates apart raises :class:`~geomcon.errors.AmbiguousBranch`; a single
+(tangent) candidate is returned as it is, since both branches meet there.
+
+Examples
+--------
+>>> from geomcon.geometry.primitives import Point
+>>> cands = (Point(4, 3), Point(4, -3))
+>>> LeftOf(Point(0, 0), Point(8, 0)).choose(cands)
+Point(x=4.0, y=3.0)
+>>> Below(Point(0, 0), Point(8, 0)).choose(cands)
+Point(x=4.0, y=-3.0)
+>>> NearestTo(Point(4, -10)).choose(cands)
+Point(x=4.0, y=-3.0)
+>>> OtherThan(Point(4, 3)).choose(cands)
+Point(x=4.0, y=-3.0)
+>>> LeftOf("A", "D").describe()
+('left of the directed line A→D', '位于有向线 A→D 左侧的交点')
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Any, Callable
+
+from ..errors import AmbiguousBranch
+from ..tolerance import tol
+from .primitives import Point
+
+
+def _name(x: Any, label: Callable[[Any], str] | None) -> str:
+    if label is not None:
+        return label(x)
+    if isinstance(x, Point):
+        return f"({x.x:.4g}, {x.y:.4g})"
+    return str(getattr(x, "key", x))
+
+
+def _pick(cands: tuple[Point, ...], score: Callable[[Point], float], what: str) -> Point:
+    """Return the candidate with the larger score; refuse when the scores tie within tolerance."""
+    if len(cands) == 1:
+        return cands[0]
+    if len(cands) != 2:
+        raise AmbiguousBranch(f"{what}: expected 1 or 2 candidates, got {len(cands)}")
+    s0, s1 = score(cands[0]), score(cands[1])
+    scale = max(abs(cands[0] - cands[1]), 1e-300)
+    if abs(s0 - s1) <= tol(scale, abs(s0), abs(s1)):
+        raise AmbiguousBranch(f"{what}: both intersections qualify equally (scores {s0:.6g}, {s1:.6g})")
+    return cands[0] if s0 > s1 else cands[1]
+
+
+class Branch:
+    """Base of the rules; subclasses are frozen dataclasses whose fields are points (or references)."""
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def describe(self, label: Callable[[Any], str] | None = None) -> tuple[str, str]:  # pragma: no cover
+        raise NotImplementedError
+
+    def refs(self) -> tuple[Any, ...]:
+        """The rule's points (or references), in field order."""
+        return tuple(getattr(self, f.name) for f in fields(self))  # type: ignore[arg-type]
+
+    def with_points(self, points: tuple[Point, ...]) -> Branch:
+        """The same rule with its fields replaced by resolved points."""
+        return type(self)(*points)  # type: ignore[call-arg]
+
+
+@dataclass(frozen=True)
+class LeftOf(Branch):
+    """The intersection on the left of the directed line ``a → b``."""
+
+    a: Any
+    b: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        d = self.b - self.a
+        return _pick(cands, lambda p: d.cross(p - self.a) / abs(d), "left of a directed line")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        a, b = _name(self.a, label), _name(self.b, label)
+        return (f"left of the directed line {a}→{b}", f"位于有向线 {a}→{b} 左侧的交点")
+
+
+@dataclass(frozen=True)
+class RightOf(Branch):
+    """The intersection on the right of the directed line ``a → b``."""
+
+    a: Any
+    b: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        d = self.b - self.a
+        return _pick(cands, lambda p: -d.cross(p - self.a) / abs(d), "right of a directed line")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        a, b = _name(self.a, label), _name(self.b, label)
+        return (f"right of the directed line {a}→{b}", f"位于有向线 {a}→{b} 右侧的交点")
+
+
+def _upward_normal(a: Point, b: Point) -> Point:
+    n = (b - a).perp().unit()
+    if abs(n.y) <= tol(1.0):
+        raise AmbiguousBranch("above/below a vertical line is undefined: use left/right of a directed line")
+    return n if n.y > 0 else -n
+
+
+@dataclass(frozen=True)
+class Above(Branch):
+    """The intersection above the line ``ab`` (on the side of +y)."""
+
+    a: Any
+    b: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        n = _upward_normal(self.a, self.b)
+        return _pick(cands, lambda p: n.dot(p - self.a), "above a line")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        a, b = _name(self.a, label), _name(self.b, label)
+        return (f"above the line {a}{b}", f"位于直线 {a}{b} 上方的交点")
+
+
+@dataclass(frozen=True)
+class Below(Branch):
+    """The intersection below the line ``ab`` (on the side of −y)."""
+
+    a: Any
+    b: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        n = _upward_normal(self.a, self.b)
+        return _pick(cands, lambda p: -n.dot(p - self.a), "below a line")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        a, b = _name(self.a, label), _name(self.b, label)
+        return (f"below the line {a}{b}", f"位于直线 {a}{b} 下方的交点")
+
+
+@dataclass(frozen=True)
+class NearestTo(Branch):
+    """The intersection nearest to point ``p``."""
+
+    p: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: -abs(q - self.p), "nearest to a point")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        p = _name(self.p, label)
+        return (f"the intersection nearer to {p}", f"离 {p} 较近的交点")
+
+
+@dataclass(frozen=True)
+class FarthestFrom(Branch):
+    """The intersection farthest from point ``p``."""
+
+    p: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: abs(q - self.p), "farthest from a point")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        p = _name(self.p, label)
+        return (f"the intersection farther from {p}", f"离 {p} 较远的交点")
+
+
+@dataclass(frozen=True)
+class OtherThan(Branch):
+    """The intersection other than the known point ``p`` (the one farther from it)."""
+
+    p: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: abs(q - self.p), "other than a known point")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        p = _name(self.p, label)
+        return (f"the intersection other than {p}", f"异于 {p} 的另一交点")

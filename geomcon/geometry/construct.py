@@ -1,0 +1,122 @@
+"""Ruler-and-compass constructions as free functions.
+
+Examples
+--------
+>>> from geomcon.geometry.primitives import Point
+>>> circle_through3(Point(1, 0), Point(0, 1), Point(-1, 0)).center
+Point(x=0.0, y=0.0)
+>>> perpendicular_bisector(Point(0, 0), Point(2, 0)).point
+Point(x=1.0, y=0.0)
+>>> point_along(Point(0, 0), Point(10, 0), 3.0)
+Point(x=3.0, y=0.0)
+>>> reflect(Point(1, 1), Line(Point(0, 0), Point(1, 0)))
+Point(x=1.0, y=-1.0)
+"""
+from __future__ import annotations
+
+import math
+
+from ..errors import Degenerate
+from ..tolerance import tol
+from .intersect import line_line
+from .primitives import Circle, Line, Point, Ray, Segment
+
+
+def line_through(a: Point, b: Point) -> Line:
+    """The line through ``a`` and ``b``, directed from ``a`` to ``b``."""
+    return Line.through(a, b)
+
+
+def segment(a: Point, b: Point) -> Segment:
+    """The segment ``ab``."""
+    return Segment(a, b)
+
+
+def circle(center: Point, r: float) -> Circle:
+    """The circle about ``center`` with radius ``r``."""
+    return Circle(center, r)
+
+
+def midpoint(a: Point, b: Point) -> Point:
+    """Midpoint of ``ab``."""
+    return Point((a.x + b.x) / 2.0, (a.y + b.y) / 2.0)
+
+
+def perpendicular_bisector(a: Point, b: Point) -> Line:
+    """The perpendicular bisector of ``ab``, directed to the left of ``a → b``."""
+    if a == b:
+        raise Degenerate(f"perpendicular bisector of a zero-length chord at ({a.x:.6g}, {a.y:.6g})")
+    return Line(midpoint(a, b), (b - a).perp())
+
+
+def perpendicular(line: Line, through: Point) -> Line:
+    """The perpendicular to ``line`` through ``through``, directed to the line's left."""
+    return Line(through, line.normal)
+
+
+def parallel(line: Line, through: Point) -> Line:
+    """The parallel to ``line`` through ``through``, with the same direction."""
+    return Line(through, line.direction)
+
+
+def foot(line: Line, p: Point) -> Point:
+    """The foot of the perpendicular from ``p`` to ``line``."""
+    return line.at((p - line.point).dot(line.direction))
+
+
+def rotate(p: Point, center: Point, angle: float) -> Point:
+    """``p`` turned about ``center`` by ``angle`` radians (counter-clockwise positive)."""
+    c, s = math.cos(angle), math.sin(angle)
+    v = p - center
+    return Point(center.x + c * v.x - s * v.y, center.y + s * v.x + c * v.y)
+
+
+def rotate_ray(ray: Ray, angle: float) -> Ray:
+    """The ray turned about its origin by ``angle`` radians (counter-clockwise positive)."""
+    c, s = math.cos(angle), math.sin(angle)
+    d = ray.direction
+    return Ray(ray.origin, Point(c * d.x - s * d.y, s * d.x + c * d.y))
+
+
+def ray_at_angle(origin: Point, toward: Point, angle: float) -> Ray:
+    """The ray from ``origin`` making the signed ``angle`` (radians) with the ray ``origin → toward``."""
+    return rotate_ray(Ray.toward(origin, toward), angle)
+
+
+def point_along(origin: Point, toward: Point, dist: float) -> Point:
+    """The point at signed distance ``dist`` from ``origin`` on the ray towards ``toward``."""
+    return Ray.toward(origin, toward).at(dist)
+
+
+def point_on_ray(ray: Ray, dist: float) -> Point:
+    """The point at distance ``dist`` along ``ray``."""
+    return ray.at(dist)
+
+
+def reflect(p: Point, line: Line) -> Point:
+    """Mirror image of ``p`` in ``line``."""
+    f = foot(line, p)
+    return f * 2.0 - p
+
+
+def circle_through3(a: Point, b: Point, c: Point) -> Circle:
+    """The circle through three points (circumcircle), from two perpendicular bisectors.
+
+    Raises
+    ------
+    Degenerate
+        When the three points are collinear within tolerance (the bisectors do not meet).
+    """
+    meet = line_line(perpendicular_bisector(a, b), perpendicular_bisector(b, c))
+    span = max(abs(b - a), abs(c - b), abs(c - a))
+    if not meet or abs((b - a).cross(c - a)) <= tol(span) * span:
+        raise Degenerate(
+            f"circle through collinear points ({a.x:.6g}, {a.y:.6g}), ({b.x:.6g}, {b.y:.6g}), ({c.x:.6g}, {c.y:.6g})"
+        )
+    o = meet[0]
+    return Circle(o, abs(a - o))
+
+
+def thales_circle(a: Point, b: Point) -> Circle:
+    """The circle on ``ab`` as diameter (every point of it sees ``ab`` under a right angle)."""
+    return Circle(midpoint(a, b), abs(b - a) / 2.0)

@@ -1,0 +1,102 @@
+"""The three intersections, under one contract.
+
+Contract
+--------
+- The result is always a tuple of 0, 1 or 2 :class:`Point`.
+- Two points come in a documented order: for circle–circle the point left of the directed line from the
+  first centre to the second comes first; for line–circle the point met first along the line's direction
+  comes first. Constructions never rely on this order: they choose with a named rule (:mod:`.branch`).
+- Tangency within the tolerance policy (:func:`geomcon.tolerance.tol`) gives exactly one point.
+- Coincident lines or coincident circles raise :class:`~geomcon.errors.Coincident`.
+
+Numerics
+--------
+Coordinates are taken relative to a local centre (the first circle's centre, the circle's centre, the first
+line's point) before anything is squared, and the half-chord comes from Heron's product of four
+differences, each computed directly from the distances, so that near tangency (relative gap δ) the error is
+of order ε·r/√δ and a scene translated far from the origin keeps its accuracy.
+
+Examples
+--------
+>>> from geomcon.geometry.primitives import Circle, Line, Point
+>>> circle_circle(Circle(Point(0, 0), 5), Circle(Point(8, 0), 5))
+(Point(x=4.0, y=3.0), Point(x=4.0, y=-3.0))
+>>> circle_circle(Circle(Point(0, 0), 1), Circle(Point(2, 0), 1))
+(Point(x=1.0, y=0.0),)
+>>> line_circle(Line(Point(-9, 0), Point(1, 0)), Circle(Point(0, 0), 2))
+(Point(x=-2.0, y=0.0), Point(x=2.0, y=0.0))
+>>> line_line(Line(Point(0, 0), Point(1, 1)), Line(Point(2, 0), Point(0, 1)))
+(Point(x=2.0, y=2.0),)
+"""
+from __future__ import annotations
+
+import math
+
+from ..errors import Coincident
+from ..tolerance import tol
+from .primitives import Circle, Line, Point
+
+
+def line_line(l1: Line, l2: Line) -> tuple[Point, ...]:
+    """Intersect two lines: ``()`` if parallel, one point otherwise.
+
+    Lines are parallel when the sine of their angle is below ``REL_TOL``; parallel lines closer than the
+    tolerance coincide and raise :class:`Coincident`.
+    """
+    w = l2.point - l1.point
+    s = l1.direction.cross(l2.direction)
+    if abs(s) <= tol(1.0):
+        offset = l1.direction.cross(w)
+        if abs(offset) <= tol(abs(w), 1e-300):
+            raise Coincident("the two lines coincide")
+        return ()
+    t = w.cross(l2.direction) / s
+    return (l1.point + l1.direction * t,)
+
+
+def line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
+    """Intersect a line and a circle: 0, 1 (tangent) or 2 points, ordered along the line's direction."""
+    u = line.direction
+    w = line.point - circle.center          # local frame: the circle's centre at the origin
+    t0 = -w.dot(u)                           # parameter of the foot of the perpendicular from the centre
+    p = u.cross(w)                           # signed distance of the centre's foot (|p| = distance to line)
+    r = circle.r
+    gap = abs(p) - r
+    if abs(gap) <= tol(r, abs(p)):
+        return (line.point + u * t0,)
+    if gap > 0:
+        return ()
+    h = math.sqrt((r - abs(p)) * (r + abs(p)))
+    return (line.point + u * (t0 - h), line.point + u * (t0 + h))
+
+
+def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
+    """Intersect two circles: 0, 1 (tangent) or 2 points, the one left of ``c1.center → c2.center`` first.
+
+    Raises
+    ------
+    Coincident
+        When the circles coincide (same centre and radius within tolerance).
+    """
+    r1, r2 = c1.r, c2.r
+    v = c2.center - c1.center               # local frame: the first centre at the origin
+    d = abs(v)
+    scale = max(d, r1, r2)
+    if d <= tol(scale):
+        if abs(r1 - r2) <= tol(scale):
+            raise Coincident(f"the two circles coincide (radius {r1:.6g})")
+        return ()
+    outer = d - (r1 + r2)                    # > 0: apart
+    inner = abs(r1 - r2) - d                 # > 0: one inside the other
+    u = v / d
+    if abs(outer) <= tol(scale) or abs(inner) <= tol(scale):
+        a = r1 if abs(outer) <= tol(scale) else (r1 if r1 > r2 else -r1)
+        return (c1.center + u * a,)
+    if outer > 0 or inner > 0:
+        return ()
+    a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
+    h2 = (r1 + r2 - d) * (d - r1 + r2) * (d + r1 - r2) * (d + r1 + r2)
+    h = math.sqrt(h2) / (2.0 * d)
+    foot = c1.center + u * a
+    n = u.perp() * h
+    return (foot + n, foot - n)

@@ -1,0 +1,207 @@
+"""Small frozen value objects of plane geometry: Point, Line, Ray, Segment, Circle, Arc.
+
+Each validates itself when built (finite coordinates, unit directions, positive radii) and never changes
+afterwards. Operations on them are free functions in the neighbouring modules.
+
+Examples
+--------
+>>> p = Point(3.0, 4.0)
+>>> abs(p)
+5.0
+>>> Line.through(Point(0, 0), Point(2, 0)).direction
+Point(x=1.0, y=0.0)
+>>> Circle(Point(0, 0), 2.0).r
+2.0
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import Degenerate
+
+
+def _finite(*values: float) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+@dataclass(frozen=True, slots=True)
+class Point:
+    """A point (or a free vector) of the plane, in mm.
+
+    Examples
+    --------
+    >>> Point(1, 2) + Point(3, 4)
+    Point(x=4.0, y=6.0)
+    >>> Point(1, 0).perp()
+    Point(x=-0.0, y=1.0)
+    """
+
+    x: float
+    y: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "x", float(self.x))
+        object.__setattr__(self, "y", float(self.y))
+        if not _finite(self.x, self.y):
+            raise Degenerate(f"point with a non-finite coordinate ({self.x}, {self.y})")
+
+    def __add__(self, other: Point) -> Point:
+        return Point(self.x + other.x, self.y + other.y)
+
+    def __sub__(self, other: Point) -> Point:
+        return Point(self.x - other.x, self.y - other.y)
+
+    def __mul__(self, k: float) -> Point:
+        return Point(self.x * k, self.y * k)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, k: float) -> Point:
+        return Point(self.x / k, self.y / k)
+
+    def __neg__(self) -> Point:
+        return Point(-self.x, -self.y)
+
+    def __abs__(self) -> float:
+        return math.hypot(self.x, self.y)
+
+    def dot(self, other: Point) -> float:
+        """Scalar product."""
+        return self.x * other.x + self.y * other.y
+
+    def cross(self, other: Point) -> float:
+        """z-component of the vector product: > 0 when ``other`` lies counter-clockwise of ``self``."""
+        return self.x * other.y - self.y * other.x
+
+    def perp(self) -> Point:
+        """This vector turned by +90° (counter-clockwise)."""
+        return Point(-self.y, self.x)
+
+    def unit(self) -> Point:
+        """This vector scaled to length 1; a zero vector raises :class:`Degenerate`."""
+        n = abs(self)
+        if n == 0.0:
+            raise Degenerate("direction of a zero-length vector")
+        return Point(self.x / n, self.y / n)
+
+    def tuple(self) -> tuple[float, float]:
+        """``(x, y)``."""
+        return (self.x, self.y)
+
+
+@dataclass(frozen=True, slots=True)
+class Line:
+    """The infinite line through ``point`` with unit ``direction`` (the direction orients it).
+
+    "Left of the line" means on the counter-clockwise side of its direction.
+    """
+
+    point: Point
+    direction: Point
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "direction", self.direction.unit())
+
+    @staticmethod
+    def through(a: Point, b: Point) -> Line:
+        """The line through ``a`` and ``b``, directed from ``a`` to ``b``."""
+        if a == b:
+            raise Degenerate(f"line through two coincident points ({a.x:.6g}, {a.y:.6g})")
+        return Line(a, b - a)
+
+    @property
+    def normal(self) -> Point:
+        """Unit normal pointing to the left of the direction."""
+        return self.direction.perp()
+
+    def at(self, t: float) -> Point:
+        """The point at signed distance ``t`` from ``point`` along the direction."""
+        return self.point + self.direction * t
+
+
+@dataclass(frozen=True, slots=True)
+class Ray:
+    """The half-line from ``origin`` in unit ``direction``."""
+
+    origin: Point
+    direction: Point
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "direction", self.direction.unit())
+
+    @staticmethod
+    def toward(origin: Point, through: Point) -> Ray:
+        """The ray from ``origin`` through ``through``."""
+        if origin == through:
+            raise Degenerate("ray toward its own origin")
+        return Ray(origin, through - origin)
+
+    def line(self) -> Line:
+        """The supporting line, with the ray's direction."""
+        return Line(self.origin, self.direction)
+
+    def at(self, t: float) -> Point:
+        """The point at distance ``t`` from the origin."""
+        return self.origin + self.direction * t
+
+
+@dataclass(frozen=True, slots=True)
+class Segment:
+    """The segment from ``a`` to ``b``."""
+
+    a: Point
+    b: Point
+
+    @property
+    def length(self) -> float:
+        """Length of the segment."""
+        return abs(self.b - self.a)
+
+    def line(self) -> Line:
+        """The supporting line, directed from ``a`` to ``b``."""
+        return Line.through(self.a, self.b)
+
+    def midpoint(self) -> Point:
+        """Midpoint of the segment."""
+        return Point((self.a.x + self.b.x) / 2.0, (self.a.y + self.b.y) / 2.0)
+
+
+@dataclass(frozen=True, slots=True)
+class Circle:
+    """The circle of centre ``center`` and radius ``r`` > 0."""
+
+    center: Point
+    r: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "r", float(self.r))
+        if not math.isfinite(self.r) or self.r <= 0.0:
+            raise Degenerate(f"circle about ({self.center.x:.6g}, {self.center.y:.6g}) with radius {self.r:.6g}")
+
+    def at(self, angle: float) -> Point:
+        """The point at polar ``angle`` (radians, counter-clockwise from +x)."""
+        return Point(self.center.x + self.r * math.cos(angle), self.center.y + self.r * math.sin(angle))
+
+
+@dataclass(frozen=True, slots=True)
+class Arc:
+    """The counter-clockwise arc of a circle from polar angle ``start`` sweeping ``sweep`` radians (≥ 0)."""
+
+    center: Point
+    r: float
+    start: float
+    sweep: float
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.r) and self.r > 0 and _finite(self.start, self.sweep) and self.sweep >= 0):
+            raise Degenerate(f"arc with radius {self.r:.6g} and sweep {self.sweep:.6g}")
+
+    @property
+    def circle(self) -> Circle:
+        """The full circle the arc lies on."""
+        return Circle(self.center, self.r)
+
+    def at(self, fraction: float) -> Point:
+        """The point at ``fraction`` (0 … 1) of the arc."""
+        return self.circle.at(self.start + fraction * self.sweep)

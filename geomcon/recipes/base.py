@@ -1,0 +1,109 @@
+"""What a recipe is: one textbook construction with its named givens and answers and its analytic twin.
+
+Examples
+--------
+>>> q = Quantity("AB", "mm", "crank length")
+>>> q.name, q.unit, q.required
+('AB', 'mm', True)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+from ..scene import Scene
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A named given or answer.
+
+    Parameters
+    ----------
+    name : str
+        The public name (part of the contract: problem files and JSON use it).
+    unit : str
+        ``"mm"``, ``"deg"``, ``""`` (a ratio) or ``"choice"`` (one of ``choices``).
+    doc : str
+        One line saying what it is.
+    required : bool
+        Givens only: must the problem file give it.
+    default : Any
+        Givens only: the value when not given.
+    minimum : float
+        Givens only: smallest admissible value.
+    inclusive : bool
+        Givens only: whether ``minimum`` itself is admissible (e ≥ 0) or not (AB > 0).
+    choices : tuple of str
+        Givens of unit "choice": the admissible words.
+    """
+
+    name: str
+    unit: str
+    doc: str
+    required: bool = True
+    default: Any = None
+    minimum: float | None = 0.0
+    inclusive: bool = False
+    choices: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Construction:
+    """A built scene plus the map from public names to its step keys.
+
+    ``solutions`` lists, for problems with several valid solutions, the answer→step-key map of each; the
+    first is the textbook's choice and equals ``answers``.
+    """
+
+    scene: Scene
+    answers: Mapping[str, str]
+    points: Mapping[str, str]
+    solutions: tuple[Mapping[str, str], ...] = ()
+    warnings: tuple[str, ...] = ()
+    figure: Mapping[str, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Recipe:
+    """One textbook construction.
+
+    Parameters
+    ----------
+    name : str
+        Public recipe name, e.g. ``"crank_rocker.extremes"``.
+    title : str
+        One-line description.
+    givens, answers : tuple of Quantity
+        The contract: names, units, meaning.
+    points : tuple of str
+        Names of the points reported in the JSON.
+    construct : callable
+        ``construct(given) -> Construction``: adds the ruler-and-compass steps.
+    analytic : callable
+        ``analytic(given) -> [ {answer: value}, ... ]``: the independent closed form, one dict per solution in
+        the order of ``Construction.solutions``.
+    validate : callable or None
+        ``validate(given) -> list[str]`` raises :class:`~geomcon.errors.NotAMechanism` for givens that
+        describe no such mechanism, and returns warnings for borderline ones.
+    """
+
+    name: str
+    title: str
+    givens: tuple[Quantity, ...]
+    answers: tuple[Quantity, ...]
+    points: tuple[str, ...]
+    construct: Callable[[Mapping[str, Any]], Construction]
+    analytic: Callable[[Mapping[str, Any]], list[dict[str, float]]]
+    validate: Callable[[Mapping[str, Any]], list[str]] | None = None
+
+    def given_names(self) -> tuple[str, ...]:
+        """Names of all givens, required first."""
+        return tuple(q.name for q in self.givens)
+
+    def answer(self, name: str) -> Quantity:
+        """The answer quantity called ``name``."""
+        for q in self.answers:
+            if q.name == name:
+                return q
+        raise KeyError(name)

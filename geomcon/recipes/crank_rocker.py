@@ -1,0 +1,164 @@
+"""``crank_rocker.extremes``: the extreme positions of a crank-rocker (crank and coupler collinear).
+
+Construction (A at the origin, D on +x, the linkage above the frame unless ``branch = "below"``): the
+rocker circle about D meets the circle about A of radius BC − AB at C1 (folded position) and the circle of
+radius BC + AB at C2 (extended position); θ = ∠C1AC2, ψ = ∠C1DC2. γmin is read at the two positions where
+the crank lies along the frame.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.linkages import crank_rocker_extremes
+from ..errors import NotAMechanism
+from ..geometry import Above, Below, Point, circle, circle_circle, point_along, segment
+from ..scene import Role, Scene
+from ..tolerance import is_zero
+from .base import Construction, Quantity, Recipe
+from .common import (add_angle_mark, add_bar, add_pivot, angle_deg, difference, k_ratio, smallest, total,
+                     transmission_deg)
+
+GIVENS = (
+    Quantity("AB", "mm", "crank"),
+    Quantity("BC", "mm", "coupler"),
+    Quantity("CD", "mm", "rocker"),
+    Quantity("AD", "mm", "frame"),
+    Quantity("branch", "choice", "side of the frame the linkage is drawn on", required=False, default="above",
+             minimum=None, choices=("above", "below")),
+)
+ANSWERS = (
+    Quantity("theta", "deg", "crank angle between the extreme positions, ∠C1AC2"),
+    Quantity("psi", "deg", "rocker swing, ∠C1DC2"),
+    Quantity("K", "", "time-ratio coefficient (180°+θ)/(180°−θ)"),
+    Quantity("gamma_min", "deg", "smallest transmission angle over the cycle"),
+    Quantity("gamma_1", "deg", "transmission angle with the crank along AD (B between A and D)"),
+    Quantity("gamma_2", "deg", "transmission angle with the crank along DA extended (A between B and D)"),
+    Quantity("angle_C1AD", "deg", "∠C1AD, folded extreme position"),
+    Quantity("angle_C2AD", "deg", "∠C2AD, extended extreme position"),
+)
+
+
+def grashof(AB: float, BC: float, CD: float, AD: float) -> list[str]:
+    """Refuse lengths for which AB is not a crank of a crank-rocker on frame AD; warn at the boundary.
+
+    Examples
+    --------
+    >>> grashof(50, 70, 80, 90)
+    []
+    >>> grashof(15, 50, 35, 30)[0][:30]
+    'Grashof equality AB + BC = CD '
+    """
+    lengths = {"AB": AB, "BC": BC, "CD": CD, "AD": AD}
+    longest = max(lengths, key=lambda k: lengths[k])
+    if AB > min(BC, CD, AD) or AB == AD:
+        raise NotAMechanism(
+            f"AB = {AB:g} is not the strictly shortest link adjacent to the frame (BC = {BC:g}, CD = {CD:g}, "
+            f"AD = {AD:g}): no crank-rocker with crank AB")
+    if longest == "AB":
+        longest = "BC"
+    others = [k for k in ("BC", "CD", "AD") if k != longest]
+    s_l = AB + lengths[longest]
+    p_q = lengths[others[0]] + lengths[others[1]]
+    if s_l > p_q and not is_zero(s_l - p_q, p_q):
+        raise NotAMechanism(
+            f"AB is not a crank (Grashof): AB + {longest} = {AB:g} + {lengths[longest]:g} = {s_l:g} > "
+            f"{others[0]} + {others[1]} = {p_q:g}")
+    if AB == BC:
+        raise NotAMechanism(f"BC = AB = {AB:g}: the folded position puts C1 on A, θ is undefined")
+    if is_zero(s_l - p_q, p_q):
+        return [f"Grashof equality AB + {longest} = {others[0]} + {others[1]} = {p_q:g}: a change-point "
+                "linkage (links can all be collinear, γmin = 0)"]
+    return []
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    return grashof(g["AB"], g["BC"], g["CD"], g["AD"])
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build the extreme-position construction."""
+    AB, BC, CD, AD = g["AB"], g["BC"], g["CD"], g["AD"]
+    below = g.get("branch", "above") == "below"
+    side_en, side_zh = ("below", "下方") if below else ("above", "上方")
+    ground = math.pi / 2 if below else -math.pi / 2
+    sc = Scene("Crank-rocker: extreme positions")
+    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"), ground_angle=ground)
+    D = add_pivot(sc, "D", Point(AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
+                                              f"在机架线上取 D,使 AD = {AD:g}"), ground_angle=ground)
+    side = Below(A, D) if below else Above(A, D)
+    sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
+    kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}, the path of C",
+                                               f"以 D 为圆心、CD = {CD:g} 为半径作圆(C 点轨迹)"))
+    r1 = sc.add("r1", difference, BC, AB, visible=False, unit="mm", role=Role.MEASUREMENT)
+    r2 = sc.add("r2", total, BC, AB, visible=False, unit="mm", role=Role.MEASUREMENT)
+    k1 = sc.add("k1", circle, A, r1, caption=(f"Circle about A with radius BC − AB = {BC - AB:g}",
+                                              f"以 A 为圆心、BC − AB = {BC - AB:g} 为半径作圆"))
+    C1 = sc.add("C1", circle_circle, k1, kD, branch=side, role=Role.RESULT, style="joint", label="C1",
+                caption=("It meets the rocker circle at C1: crank and coupler folded",
+                         "交摇杆圆于 C1(曲柄与连杆重叠共线)"))
+    k2 = sc.add("k2", circle, A, r2, caption=(f"Circle about A with radius BC + AB = {BC + AB:g}",
+                                              f"以 A 为圆心、BC + AB = {BC + AB:g} 为半径作圆"))
+    C2 = sc.add("C2", circle_circle, k2, kD, branch=side, role=Role.RESULT, style="joint", label="C2",
+                caption=("It meets the rocker circle at C2: crank and coupler extended",
+                         "交摇杆圆于 C2(曲柄与连杆拉直共线)"))
+    B1 = sc.add("B1", point_along, A, C1, -AB, role=Role.RESULT, style="joint", label="B1",
+                caption=("B1 on the extension of C1A beyond A, AB1 = AB", "在 C1A 的延长线上截取 AB1 = AB"))
+    B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",
+                caption=("B2 on AC2, AB2 = AB", "在 AC2 上截取 AB2 = AB"))
+    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
+        style = "link" if i == 1 else "link-alt"
+        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
+        add_bar(sc, f"B{i}C{i}", B, C, (f"Coupler B{i}C{i}", f"连杆 B{i}C{i}"), style=style)
+        add_bar(sc, f"C{i}D", C, D, (f"Rocker C{i}D", f"摇杆 C{i}D"), style=style)
+    sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
+    th = sc.add("theta", angle_deg, A, C1, C2, role=Role.MEASUREMENT, unit="deg",
+                caption=("Measure θ = ∠C1AC2", "量得极位夹角 θ = ∠C1AC2"))
+    ps = sc.add("psi", angle_deg, D, C1, C2, role=Role.MEASUREMENT, unit="deg",
+                caption=("Measure the swing ψ = ∠C1DC2", "量得摇杆摆角 ψ = ∠C1DC2"))
+    sc.add("K", k_ratio, th, role=Role.MEASUREMENT, unit="",
+           caption=("K = (180° + θ)/(180° − θ)", "行程速比系数 K = (180° + θ)/(180° − θ)"))
+    sc.add("angle_C1AD", angle_deg, A, C1, D, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("angle_C2AD", angle_deg, A, C2, D, role=Role.MEASUREMENT, unit="deg", visible=False)
+    # transmission angle: crank along the frame, towards D (B') and away from D (B'')
+    gammas = []
+    for i, (sign, en, zh) in enumerate(((1.0, "along AD", "与 AD 重叠"), (-1.0, "along DA extended", "在 DA 延长线上")), 1):
+        p = "′" * i
+        Bg = sc.add(f"Bg{i}", point_along, A, D, sign * AB, style="point", label=f"B{p}",
+                    caption=(f"Crank {en}: B{p} with AB{p} = AB", f"曲柄{zh}:取 AB{p} = AB 得 B{p}"))
+        kB = sc.add(f"kBg{i}", circle, Bg, BC, caption=(f"Circle about B{p} with radius BC = {BC:g}",
+                                                        f"以 B{p} 为圆心、BC 为半径作圆"))
+        Cg = sc.add(f"Cg{i}", circle_circle, kB, kD, branch=side, style="point", label=f"C{p}",
+                    caption=(f"It meets the rocker circle at C{p}", f"交摇杆圆于 C{p}"))
+        for a, b, nm in ((A, Bg, f"AB{p}"), (Bg, Cg, f"B{p}C{p}"), (Cg, D, f"C{p}D")):
+            add_bar(sc, f"g{i}_{nm}", a, b, (f"Position {nm}", f"位置 {nm}"), style="ghost", role=Role.CONSTRUCTION)
+        gk = sc.add(f"gamma_{i}", transmission_deg, Bg, Cg, D, role=Role.MEASUREMENT, unit="deg",
+                    caption=(f"Transmission angle γ{i} = ∠B{p}C{p}D (acute form)", f"传动角 γ{i} = ∠B{p}C{p}D(取锐角)"))
+        gammas.append((gk, Bg, Cg))
+    gm = sc.add("gamma_min", smallest, gammas[0][0], gammas[1][0], role=Role.MEASUREMENT, unit="deg",
+                caption=("γmin = min(γ1, γ2)", "最小传动角 γmin = min(γ1, γ2)"))
+    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
+    add_angle_mark(sc, "mark_psi", D, C1, C2, "ψ", ps)
+    for i, (gk, Bg, Cg) in enumerate(gammas, 1):
+        add_angle_mark(sc, f"mark_gamma_{i}", Cg, Bg, D, f"γ{i}", gk)
+    del gm
+    answers = {q.name: q.name for q in ANSWERS}
+    points = {n: n for n in ("A", "D", "B1", "C1", "B2", "C2")}
+    return Construction(sc, answers, points)
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """The law-of-cosines twin (branch does not change the answers)."""
+    return [crank_rocker_extremes(g["AB"], g["BC"], g["CD"], g["AD"])]
+
+
+RECIPE = Recipe(
+    name="crank_rocker.extremes",
+    title="Crank-rocker: extreme positions, θ, ψ, K, γmin",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=("A", "D", "B1", "C1", "B2", "C2"),
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+)

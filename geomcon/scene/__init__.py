@@ -1,0 +1,6 @@
+"""Scenes: lazy construction DAGs of steps with explicit references."""
+from .marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
+from .scene import Scene
+from .step import Ref, Role, Step
+
+__all__ = ["AngleMark", "Dimension", "Ground", "Guide", "Ref", "RightAngleMark", "Role", "Scene", "Slider", "Step"]
