@@ -51,7 +51,7 @@ def crank_rocker_extremes(AB: float, BC: float, CD: float, AD: float) -> dict[st
     f, x = BC - AB, BC + AB
     c1ad, c2ad = _cos_rule(f, AD, CD), _cos_rule(x, AD, CD)
     adc1, adc2 = _cos_rule(AD, CD, f), _cos_rule(AD, CD, x)
-    theta = c1ad - c2ad
+    theta = abs(c1ad - c2ad)
     g1 = _cos_rule(BC, CD, AD - AB)
     g2 = _cos_rule(BC, CD, AD + AB)
     t1, t2 = min(g1, 180.0 - g1), min(g2, 180.0 - g2)

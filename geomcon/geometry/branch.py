@@ -144,6 +144,50 @@ class Below(Branch):
 
 
 @dataclass(frozen=True)
+class Ahead(Branch):
+    """The intersection farther along the direction ``a → b`` (e.g. "on the slider's side of A")."""
+
+    a: Any
+    b: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        d = (self.b - self.a).unit()
+        return _pick(cands, lambda p: d.dot(p - self.a), "ahead along a direction")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        a, b = _name(self.a, label), _name(self.b, label)
+        return (f"the intersection farther along {a}→{b}", f"沿 {a}→{b} 方向较远的交点")
+
+
+@dataclass(frozen=True)
+class ToRightOf(Branch):
+    """The intersection to the right of point ``p`` in the drawing (larger x), as a figure is read."""
+
+    p: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: q.x - self.p.x, "to the right of a point")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        p = _name(self.p, label)
+        return (f"the intersection to the right of {p}", f"位于 {p} 右侧的交点")
+
+
+@dataclass(frozen=True)
+class ToLeftOf(Branch):
+    """The intersection to the left of point ``p`` in the drawing (smaller x)."""
+
+    p: Any
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: self.p.x - q.x, "to the left of a point")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        p = _name(self.p, label)
+        return (f"the intersection to the left of {p}", f"位于 {p} 左侧的交点")
+
+
+@dataclass(frozen=True)
 class NearestTo(Branch):
     """The intersection nearest to point ``p``."""
 

@@ -95,8 +95,9 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     if outer > 0 or inner > 0:
         return ()
     a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
-    h2 = (r1 + r2 - d) * (d - r1 + r2) * (d + r1 - r2) * (d + r1 + r2)
+    s, m = r1 + r2, r1 - r2
+    h2 = (s - d) * (d - m) * (d + m) * (d + s)
     h = math.sqrt(h2) / (2.0 * d)
-    foot = c1.center + u * a
+    foot = u * a                             # still local: translate once, at the very end
     n = u.perp() * h
-    return (foot + n, foot - n)
+    return (c1.center + (foot + n), c1.center + (foot - n))

@@ -87,3 +87,34 @@ def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str
     """The arc marking a measured angle, labelled with its value."""
     return sc.add(key, marks.angle_mark, vertex, a, b, symbol, value, radius, role=Role.ANNOTATION,
                   style="angle", caption=(f"Mark the angle {symbol}", f"标注角 {symbol}"))
+
+
+def along_line(line, t: float) -> Point:
+    """The point at signed distance ``t`` along a line from its reference point."""
+    return line.at(t)
+
+
+def pressure_deg(b: Point, c: Point, guide) -> float:
+    """Pressure angle at a slider ``c`` pushed by the rod c–b along ``guide`` (a Line): the acute angle
+    between the rod and the guide, in degrees."""
+    return pressure_on_guide_deg(b, c, guide.direction)
+
+
+def largest(*values: float) -> float:
+    """The largest of the values."""
+    return max(values)
+
+
+def guide_angle_mark(c: Point, b: Point, guide, symbol: str, value: float, radius: float | None = None):
+    """Angle mark at slider ``c`` between the rod c→b and the guide, on the side where the angle is acute."""
+    d = guide.direction
+    if (b - c).dot(d) < 0:
+        d = -d
+    return marks.AngleMark(c, b, c + d, symbol, value, radius)
+
+
+def guide_between(p: Point, q: Point, guide, margin: float, side: int = -1):
+    """A hatched guide along ``guide`` covering the projections of ``p`` and ``q`` plus ``margin``."""
+    u = guide.direction
+    t = sorted(((p - guide.point).dot(u), (q - guide.point).dot(u)))
+    return marks.Guide(guide.at(t[0] - margin), guide.at(t[1] + margin), side)

@@ -1,0 +1,157 @@
+"""The ``geomcon`` command: solve, recipes, gallery, bench.
+
+Bad input never shows a traceback: it prints one line ``error: <file>: <what>`` on stderr and exits 2,
+and no output file is written (everything is rendered before anything is written).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+from typing import Sequence
+
+from .errors import GeomconError
+
+EXIT_BAD_INPUT = 2
+EXIT_CHECK_FAILED = 1
+
+
+def _fail(where: str, msg: str) -> int:
+    print(f"error: {where}: {msg}", file=sys.stderr)
+    return EXIT_BAD_INPUT
+
+
+def _summary(sol) -> str:
+    lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
+    lines += [f"  {line}" for line in sol.info_lines()]
+    lines += [f"  warning: {w}" for w in sol.warnings]
+    st = sol.stats
+    lines.append(f"  steps evaluated {st['steps_evaluated']} of {st['steps_total']}")
+    return "\n".join(lines)
+
+
+def cmd_solve(args: argparse.Namespace) -> int:
+    from .fileio import write_all
+    from .gallery import to_json_text
+    from .problems import load_problem
+    from .solve import solve
+
+    path = args.file
+    try:
+        sol = solve(load_problem(path))
+        text = to_json_text(sol) if args.json else _summary(sol) + "\n"
+        files: dict[Path, str] = {}
+        if args.svg:
+            files[Path(args.svg)] = sol.svg()
+        if args.html:
+            files[Path(args.html)] = sol.html()
+        if args.steps:
+            for k, frame in enumerate(sol.frames(), 1):
+                files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
+        write_all(files)
+    except GeomconError as exc:
+        return _fail(path, str(exc))
+    except OSError as exc:
+        return _fail(path, f"cannot write output: {exc}")
+    sys.stdout.write(text)
+    return 0 if sol.ok else EXIT_CHECK_FAILED
+
+
+def cmd_recipes(args: argparse.Namespace) -> int:
+    from .recipes import RECIPES
+
+    if args.json:
+        data = {name: {"title": r.title,
+                       "given": {q.name: {"unit": q.unit, "doc": q.doc, "required": q.required,
+                                          **({"choices": list(q.choices)} if q.choices else {})} for q in r.givens},
+                       "answers": {q.name: {"unit": q.unit, "doc": q.doc} for q in r.answers},
+                       "points": list(r.points)} for name, r in sorted(RECIPES.items())}
+        print(json.dumps(data, ensure_ascii=False, indent=2))
+        return 0
+    for name, r in sorted(RECIPES.items()):
+        print(f"{name}  —  {r.title}")
+        print("  given:   " + ", ".join(q.name + ("" if q.required else "?") for q in r.givens))
+        print("  answers: " + ", ".join(q.name for q in r.answers))
+    return 0
+
+
+def cmd_gallery(args: argparse.Namespace) -> int:
+    from .fileio import write_all
+    from .gallery import build_gallery, problem_files, stale_files
+
+    problems, out = Path(args.problems), Path(args.out)
+    if not problem_files(problems):
+        return _fail(str(problems), "no *.toml problem files here")
+    try:
+        if args.check:
+            stale = stale_files(problems, out)
+            if stale:
+                print(f"gallery is stale ({len(stale)} files): " + ", ".join(stale), file=sys.stderr)
+                print("run: geomcon gallery", file=sys.stderr)
+                return EXIT_CHECK_FAILED
+            print(f"gallery is up to date ({len(problem_files(problems))} problems)")
+            return 0
+        files = build_gallery(problems)
+    except GeomconError as exc:
+        return _fail(_current_file(exc, problems), str(exc))
+    write_all({out / name: text for name, text in files.items()})
+    for stale in sorted(p for p in out.glob("*") if p.is_file() and p.name not in files):
+        stale.unlink()
+    print(f"wrote {len(files)} files to {out}/ from {len(problem_files(problems))} problems")
+    return 0
+
+
+def _current_file(exc: Exception, problems: Path) -> str:
+    return str(getattr(exc, "file", problems))
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from .bench import run_bench
+
+    return run_bench(quick=args.quick, out=Path(args.out))
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of the ``geomcon`` command."""
+    p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
+    sub = p.add_subparsers(dest="command", required=True)
+    s = sub.add_parser("solve", help="solve one problem file")
+    s.add_argument("file")
+    s.add_argument("--json", action="store_true", help="print the result as one JSON object")
+    s.add_argument("--svg", metavar="OUT", help="write the annotated drawing")
+    s.add_argument("--steps", metavar="DIR", help="write one SVG per construction step")
+    s.add_argument("--html", metavar="OUT", help="write a self-contained step player page")
+    s.set_defaults(func=cmd_solve)
+    r = sub.add_parser("recipes", help="list recipes with their given and answer names")
+    r.add_argument("--json", action="store_true")
+    r.set_defaults(func=cmd_recipes)
+    g = sub.add_parser("gallery", help="solve every bundled problem and write the gallery")
+    g.add_argument("--check", action="store_true", help="exit 1 when the committed gallery is stale")
+    g.add_argument("--problems", default="problems", metavar="DIR")
+    g.add_argument("--out", default="gallery", metavar="DIR")
+    g.set_defaults(func=cmd_gallery)
+    b = sub.add_parser("bench", help="time against error: construction vs crank sweep; answers vs drawing")
+    b.add_argument("--quick", action="store_true", help="fewer repetitions and sweep sizes")
+    b.add_argument("--out", default="bench.svg", metavar="SVG", help="where to write the plot")
+    b.set_defaults(func=cmd_bench)
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``geomcon`` console script."""
+    args = build_parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except Exception as exc:  # a defect of geomcon, not of the input: still one line, no traceback
+        if os.environ.get("GEOMCON_DEBUG"):
+            raise
+        where = getattr(args, "file", None) or args.command
+        print(f"error: {where}: internal error ({type(exc).__name__}: {exc}); rerun with GEOMCON_DEBUG=1 "
+              "for the traceback", file=sys.stderr)
+        return 3
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,27 @@
+"""The recipe registry: every textbook construction geomcon can replay, by public name.
+
+Examples
+--------
+>>> sorted(RECIPES)[:3]
+['crank_rocker.extremes', 'crank_slider.extremes', 'guide_bar.extremes']
+>>> get_recipe("crank_rocker.extremes").answers[0].name
+'theta'
+"""
+from __future__ import annotations
+
+from ..errors import ProblemError
+from . import crank_rocker, crank_slider, guide_bar
+from .base import Construction, Quantity, Recipe
+
+RECIPES: dict[str, Recipe] = {r.name: r for r in (crank_rocker.RECIPE, crank_slider.RECIPE, guide_bar.RECIPE)}
+
+
+def get_recipe(name: str) -> Recipe:
+    """The recipe called ``name``; an unknown name raises :class:`ProblemError` listing the known ones."""
+    try:
+        return RECIPES[name]
+    except KeyError:
+        raise ProblemError(f"unknown recipe '{name}' (known: {', '.join(sorted(RECIPES))})") from None
+
+
+__all__ = ["Construction", "Quantity", "RECIPES", "Recipe", "get_recipe"]

@@ -1,0 +1,143 @@
+"""``crank_slider.extremes``: the extreme positions of an offset crank-slider.
+
+Construction (A at the origin, the guide the horizontal line at distance e below A, the slider to the right
+of A): the circles about A of radii BC − AB and BC + AB meet the guide at C1 (folded) and C2 (extended);
+H = C1C2, θ = ∠C1AC2. The largest pressure angle at the slider occurs with the crank perpendicular to the
+guide on the far side (B3); over the slow stroke the largest is at C1 or with the crank towards the guide (B4).
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.linkages import crank_slider_extremes
+from ..errors import NotAMechanism
+from ..geometry import Line, Point, ToRightOf, circle, line_circle, perpendicular, point_along, segment
+from ..scene import Role, Scene, marks
+from ..tolerance import is_zero
+from .base import Construction, Quantity, Recipe
+from .common import (add_angle_mark, add_bar, add_pivot, along_line, angle_deg, complement_deg, difference,
+                     guide_angle_mark, guide_between, k_ratio, largest, length, pressure_deg, total)
+
+GIVENS = (
+    Quantity("AB", "mm", "crank"),
+    Quantity("BC", "mm", "connecting rod"),
+    Quantity("e", "mm", "offset: distance of the guide from A", minimum=0.0, inclusive=True),
+)
+ANSWERS = (
+    Quantity("H", "mm", "stroke C1C2"),
+    Quantity("theta", "deg", "crank angle between the extreme positions, ∠C1AC2"),
+    Quantity("K", "", "time-ratio coefficient"),
+    Quantity("alpha_max", "deg", "largest pressure angle at the slider (crank perpendicular to the guide, far side)"),
+    Quantity("gamma_min", "deg", "smallest transmission angle, 90° − αmax"),
+    Quantity("gamma_min_fast", "deg", "smallest transmission angle over the fast stroke (crank turning 180° − θ)"),
+    Quantity("gamma_min_slow", "deg", "smallest transmission angle over the slow stroke (crank turning 180° + θ)"),
+)
+
+
+def crank_condition(AB: float, BC: float, e: float) -> list[str]:
+    """Refuse a crank-slider whose AB cannot turn fully (AB + e > BC); warn at equality.
+
+    Examples
+    --------
+    >>> crank_condition(50, 120, 20)
+    []
+    """
+    if AB + e > BC and not is_zero(AB + e - BC, BC):
+        raise NotAMechanism(f"AB is not a crank: AB + e = {AB:g} + {e:g} = {AB + e:g} > BC = {BC:g}")
+    if is_zero(AB + e - BC, BC):
+        return [f"AB + e = BC = {BC:g}: the rod is perpendicular to the guide at one position (αmax = 90°)"]
+    return []
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    return crank_condition(g["AB"], g["BC"], g["e"])
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build the extreme-position construction of the offset crank-slider."""
+    AB, BC, e = g["AB"], g["BC"], g["e"]
+    sc = Scene("Offset crank-slider: extreme positions")
+    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
+    F = sc.given("F", Point(0.0, -e), style="point", label="F" if e > 0 else None,
+                 caption=(f"F below A with AF = e = {e:g}", f"在 A 下方取 AF = e = {e:g}"))
+    gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given",
+                caption=("The slider's guide through F, perpendicular to AF", "过 F 作导路(垂直于 AF)"))
+    if e > 0:
+        sc.add("dim_e", marks.dimension, F, A, "e", e, -0.25 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
+               caption=("Dimension the offset e", "标注偏距 e"))
+    k1 = sc.add("k1", circle, A, sc.add("r1", difference, BC, AB, visible=False, unit="mm"),
+                caption=(f"Circle about A with radius BC − AB = {BC - AB:g}", f"以 A 为圆心、BC − AB = {BC - AB:g} 为半径作圆"))
+    C1 = sc.add("C1", line_circle, gl, k1, branch=ToRightOf(A), role=Role.RESULT, style="joint", label="C1",
+                caption=("It meets the guide at C1: crank and rod folded", "交导路于 C1(曲柄与连杆重叠共线)"))
+    k2 = sc.add("k2", circle, A, sc.add("r2", total, BC, AB, visible=False, unit="mm"),
+                caption=(f"Circle about A with radius BC + AB = {BC + AB:g}", f"以 A 为圆心、BC + AB = {BC + AB:g} 为半径作圆"))
+    C2 = sc.add("C2", line_circle, gl, k2, branch=ToRightOf(A), role=Role.RESULT, style="joint", label="C2",
+                caption=("It meets the guide at C2: crank and rod extended", "交导路于 C2(曲柄与连杆拉直共线)"))
+    B1 = sc.add("B1", point_along, A, C1, -AB, role=Role.RESULT, style="joint", label="B1",
+                caption=("B1 on the extension of C1A beyond A, AB1 = AB", "在 C1A 的延长线上截取 AB1 = AB"))
+    B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",
+                caption=("B2 on AC2, AB2 = AB", "在 AC2 上截取 AB2 = AB"))
+    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
+        style = "link" if i == 1 else "link-alt"
+        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
+        add_bar(sc, f"B{i}C{i}", B, C, (f"Rod B{i}C{i}", f"连杆 B{i}C{i}"), style=style)
+        sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider",
+               caption=(f"Slider at C{i}", f"滑块位于 C{i}"))
+    sc.add("guide_mark", guide_between, C1, C2, gl, 0.2 * (BC + AB) / 2, role=Role.ANNOTATION, style="guide",
+           caption=("Hatch the guide", "画导路"))
+    sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
+    H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
+               caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
+    th = sc.add("theta", angle_deg, A, C1, C2, role=Role.MEASUREMENT, unit="deg",
+                caption=("Measure θ = ∠C1AC2", "量得极位夹角 θ = ∠C1AC2"))
+    sc.add("K", k_ratio, th, role=Role.MEASUREMENT, caption=("K = (180° + θ)/(180° − θ)", "K = (180° + θ)/(180° − θ)"))
+    nA = sc.add("nA", perpendicular, gl, A, caption=("Perpendicular to the guide through A", "过 A 作导路的垂线"))
+    pos = {}
+    for i, (t, en, zh) in ((3, (AB, "away from the guide", "远离导路")), (4, (-AB, "towards the guide", "指向导路"))):
+        B = sc.add(f"B{i}", along_line, nA, t, style="point", label=f"B{i}",
+                   caption=(f"Crank perpendicular to the guide, {en}: B{i}", f"曲柄垂直于导路且{zh}:B{i}"))
+        kB = sc.add(f"kB{i}", circle, B, BC, caption=(f"Circle about B{i} with radius BC", f"以 B{i} 为圆心、BC 为半径作圆"))
+        C = sc.add(f"C{i}", line_circle, gl, kB, branch=ToRightOf(B), style="point", label=f"C{i}",
+                   caption=(f"It meets the guide at C{i}", f"交导路于 C{i}"))
+        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style="ghost", role=Role.CONSTRUCTION)
+        add_bar(sc, f"B{i}C{i}", B, C, (f"Rod B{i}C{i}", f"连杆 B{i}C{i}"), style="ghost", role=Role.CONSTRUCTION)
+        pos[i] = (B, C)
+    a3 = sc.add("alpha_3", pressure_deg, *pos[3], gl, role=Role.MEASUREMENT, unit="deg",
+                caption=("Pressure angle at C3 (largest of the cycle)", "C3 处压力角(全周最大)"))
+    a4 = sc.add("alpha_4", pressure_deg, *pos[4], gl, role=Role.MEASUREMENT, unit="deg",
+                caption=("Pressure angle at C4", "C4 处压力角"))
+    a1 = sc.add("alpha_1", pressure_deg, B1, C1, gl, role=Role.MEASUREMENT, unit="deg",
+                caption=("Pressure angle at C1", "C1 处压力角"))
+    sc.add("alpha_max", largest, a3, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("gamma_min", complement_deg, a3, role=Role.MEASUREMENT, unit="deg",
+           caption=("γmin = 90° − αmax", "最小传动角 γmin = 90° − αmax"))
+    sc.add("gamma_min_fast", complement_deg, a3, role=Role.MEASUREMENT, unit="deg", visible=False)
+    slow = sc.add("alpha_slow", largest, a1, a4, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("gamma_min_slow", complement_deg, slow, role=Role.MEASUREMENT, unit="deg",
+           caption=("Slow stroke: γmin = 90° − max(α at C1, α at C4)", "慢行程最小传动角 = 90° − max(α1, α4)"))
+    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
+    sc.add("mark_alpha", guide_angle_mark, *reversed(pos[3]), gl, "αmax", a3, role=Role.ANNOTATION, style="angle",
+           caption=("Mark αmax at C3", "标注最大压力角 αmax"))
+    sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
+           caption=("Dimension the stroke H", "标注行程 H"))
+    names = [q.name for q in ANSWERS]
+    return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "B1", "C1", "B2", "C2")})
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """The right-triangle twin."""
+    return [crank_slider_extremes(g["AB"], g["BC"], g["e"])]
+
+
+RECIPE = Recipe(
+    name="crank_slider.extremes",
+    title="Offset crank-slider: stroke H, θ, K, αmax, γmin",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=("A", "B1", "C1", "B2", "C2"),
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+)
+del math

@@ -1,0 +1,196 @@
+"""Solving a problem: build the recipe's construction, read the answers lazily, check them against the
+analytic twin, audit the published answers, and produce JSON or drawings on demand.
+
+Only what is asked for is computed: :meth:`Solution.to_json` evaluates the answer and point steps (and
+their dependencies) and no annotation; the drawing methods evaluate the rest.
+
+Examples
+--------
+>>> from geomcon.problems import problem_from_dict
+>>> s = solve(problem_from_dict({"recipe": "guide_bar.extremes", "given": {"AB": 145, "AC": 290},
+...                              "published": {"theta": 60.5}}, name="demo"))
+>>> round(s.answers["theta"], 9), s.checks[0]["ok"]
+(60.0, True)
+>>> s.published[0]["deviation"]
+0.5
+>>> s.stats["steps_evaluated"] < s.stats["steps_total"]
+True
+"""
+from __future__ import annotations
+
+import math
+from functools import cached_property
+from typing import Any
+
+from .check import PUBLISHED_WARN_REL, audit_row, check_row
+from .problems import Problem
+from .recipes import Construction, Recipe, get_recipe
+
+
+def _num(x: float) -> float:
+    """Round to 12 significant digits so that JSON is stable across platforms' last-bit differences."""
+    if x == 0 or not math.isfinite(x):
+        return 0.0 if x == 0 else x
+    return float(f"{x:.12g}")
+
+
+class Solution:
+    """The solved problem; every property computes only what it needs, once."""
+
+    def __init__(self, problem: Problem, recipe: Recipe, construction: Construction, warnings: list[str]) -> None:
+        self.problem = problem
+        self.recipe = recipe
+        self.construction = construction
+        self.scene = construction.scene
+        self._warnings = list(warnings) + list(construction.warnings)
+
+    @cached_property
+    def length_scale(self) -> float:
+        """The largest given length: the scale of relative comparisons of lengths."""
+        lengths = [v for q in self.recipe.givens if q.unit == "mm" and (v := self.problem.given.get(q.name)) is not None]
+        return max([abs(v) for v in lengths] + [1e-300])
+
+    @cached_property
+    def solution_values(self) -> list[dict[str, float]]:
+        """Every valid solution's answers (the first is the textbook's choice)."""
+        maps = self.construction.solutions or (self.construction.answers,)
+        keys = [k for m in maps for k in m.values()]
+        vals = self.scene.evaluate(keys)
+        return [{name: float(vals[key]) for name, key in m.items()} for m in maps]
+
+    @property
+    def answers(self) -> dict[str, float]:
+        """The answers of the textbook's choice of solution."""
+        return self.solution_values[0]
+
+    @cached_property
+    def points(self) -> dict[str, tuple[float, float]]:
+        """The named points of the chosen solution."""
+        vals = self.scene.evaluate(self.construction.points.values())
+        return {name: vals[key].tuple() for name, key in self.construction.points.items()}
+
+    @cached_property
+    def analytic(self) -> list[dict[str, float]]:
+        """The analytic twin's solutions."""
+        return self.recipe.analytic(self.problem.given)
+
+    @cached_property
+    def checks(self) -> list[dict[str, Any]]:
+        """Construction vs analytic twin for every answer of every solution."""
+        rows = []
+        for i, (built, exact) in enumerate(zip(self.solution_values, self.analytic)):
+            prefix = f"solutions[{i}]." if i else ""
+            for q in self.recipe.answers:
+                if q.name in built and q.name in exact:
+                    rows.append(check_row(prefix + q.name, built[q.name], exact[q.name], q.unit, self.length_scale))
+        if len(self.solution_values) != len(self.analytic):
+            rows.append({"quantity": "number of solutions", "construction": len(self.solution_values),
+                         "analytic": len(self.analytic), "abs_error": abs(len(self.solution_values) - len(self.analytic)),
+                         "ok": False})
+        return rows
+
+    @property
+    def ok(self) -> bool:
+        """True when every check passes."""
+        return all(r["ok"] for r in self.checks)
+
+    @cached_property
+    def published(self) -> list[dict[str, Any]]:
+        """The audit of the printed answers against the exact ones."""
+        return [audit_row(k, v, self.answers[k]) for k, v in self.problem.published.items()]
+
+    @property
+    def warnings(self) -> list[str]:
+        """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
+        out = list(self._warnings)
+        for r in self.checks:
+            if not r["ok"]:
+                out.append(f"check failed: {r['quantity']} construction {r['construction']!r} vs analytic {r['analytic']!r}")
+        for r in self.published:
+            rel = r["rel_deviation"]
+            if (rel is not None and abs(rel) > PUBLISHED_WARN_REL) or (rel is None and r["deviation"] != 0):
+                how = f"{100 * rel:+.2f} %" if rel is not None else f"{r['deviation']:+g}"
+                out.append(f"published {r['quantity']} = {r['published']:g} deviates from the exact "
+                           f"{r['exact']:.6g} by {how}")
+        return out
+
+    @property
+    def stats(self) -> dict[str, int]:
+        """Steps in the scene and steps computed so far."""
+        return self.scene.stats
+
+    def to_json(self) -> dict[str, Any]:
+        """The public JSON object (angles in degrees, lengths in mm)."""
+        answers = {k: _num(v) for k, v in self.answers.items()}
+        out = {
+            "problem": self.problem.id,
+            "recipe": self.recipe.name,
+            "title": self.problem.title,
+            "given": dict(self.problem.given),
+            "answers": answers,
+            "points": {k: [_num(x), _num(y)] for k, (x, y) in self.points.items()},
+            "solutions": [{k: _num(v) for k, v in s.items()} for s in self.solution_values],
+            "checks": [{**r, "construction": _num(r["construction"]), "analytic": _num(r["analytic"]),
+                        "abs_error": float(f"{r['abs_error']:.3g}")} for r in self.checks],
+            "published": [{**r, "exact": _num(r["exact"]),
+                           "rel_deviation": None if r["rel_deviation"] is None else float(f"{r['rel_deviation']:.4g}")}
+                          for r in self.published],
+            "warnings": self.warnings,
+        }
+        out["stats"] = dict(self.stats)
+        return out
+
+    # ------------------------------------------------------------------ drawings (lazy imports: no SVG work
+    # unless a drawing is asked for)
+    def info_lines(self) -> list[str]:
+        """Result lines printed under the protocol: answer, twin agreement, published deviation."""
+        pub = {r["quantity"]: r for r in self.published}
+        lines = []
+        for q in self.recipe.answers:
+            if q.name not in self.answers:
+                continue
+            v = self.answers[q.name]
+            unit = {"deg": "°", "mm": " mm"}.get(q.unit, "")
+            row = next((r for r in self.checks if r["quantity"] == q.name), None)
+            mark = "" if row is None else (" ✓ twin" if row["ok"] else " ✗ twin")
+            line = f"{q.name} = {v:.4f}{unit}{mark}"
+            if q.name in pub:
+                p = pub[q.name]
+                rel = "" if p["rel_deviation"] is None else f", {100 * p['rel_deviation']:+.2f} %"
+                line += f"  (printed {p['published']:g}{rel})"
+            lines.append(line)
+        return lines
+
+    def title(self) -> str:
+        """Title for drawings."""
+        return self.problem.title or self.scene.title
+
+    def svg(self, *, upto: int | None = None, viewbox=None) -> str:
+        """The annotated drawing (frame ``upto`` when given)."""
+        from .render import render_svg
+        return render_svg(self.scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines())
+
+    def html(self) -> str:
+        """The self-contained step player page."""
+        from .render import render_html
+        return render_html(self.scene, title=self.title(), info=self.info_lines())
+
+    def frames(self) -> list[str]:
+        """One SVG per numbered step, all with the full drawing's view box."""
+        from .render import model_extent
+        box = model_extent(self.scene)
+        n = len(self.scene.visible_steps())
+        return [self.svg(upto=k, viewbox=box) for k in range(1, n + 1)]
+
+
+def solve(problem: Problem) -> Solution:
+    """Build the construction of a validated problem.
+
+    Raises
+    ------
+    NotAMechanism
+        When the givens describe no mechanism of the recipe's kind.
+    """
+    recipe = get_recipe(problem.recipe)
+    warnings = recipe.validate(problem.given) if recipe.validate else []
+    return Solution(problem, recipe, recipe.construct(problem.given), warnings)
