@@ -17,17 +17,26 @@ from __future__ import annotations
 import math
 
 
-def _acos_deg(c: float) -> float:
-    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+def _tri_angle(x: float, y: float, z: float) -> float:
+    """The angle (deg) between sides x and y of a triangle whose third side is z (opposite the angle).
+
+    Kahan's formula for needle-like triangles: accurate to a few ulps for any valid float sides, also when
+    the triangle is nearly flat (angles near 0° or 180°), where the law of cosines loses half the digits.
+    Sides that violate the triangle inequality by rounding only are taken as flat.
+
+    >>> round(_tri_angle(3.0, 4.0, 5.0), 12), _tri_angle(1.0, 2.0, 3.0), _tri_angle(1.0, 2.0, 1.0)
+    (90.0, 180.0, 0.0)
+    """
+    a, b, c = max(x, y), min(x, y), z
+    mu = c - (a - b) if b >= c else b - (a - c)
+    num = max(0.0, ((a - b) + c) * mu)
+    den = max(0.0, (a + (b + c)) * ((a - c) + b))
+    return math.degrees(2.0 * math.atan2(math.sqrt(num), math.sqrt(den)))
 
 
-def _asin_deg(s: float) -> float:
-    return math.degrees(math.asin(max(-1.0, min(1.0, s))))
-
-
-def _cos_rule(adj1: float, adj2: float, opposite: float) -> float:
-    """The angle (deg) between sides adj1 and adj2 of a triangle whose third side is ``opposite``."""
-    return _acos_deg((adj1 * adj1 + adj2 * adj2 - opposite * opposite) / (2.0 * adj1 * adj2))
+def _leg(hyp: float, leg: float) -> float:
+    """The other leg of a right triangle, √((hyp − leg)(hyp + leg)) (no cancellation in hyp² − leg²)."""
+    return math.sqrt(max(0.0, (hyp - leg) * (hyp + leg)))
 
 
 def k_from_theta(theta: float) -> float:
@@ -49,11 +58,11 @@ def crank_rocker_extremes(AB: float, BC: float, CD: float, AD: float) -> dict[st
     BD = AD − AB (γ1) or AD + AB (γ2).
     """
     f, x = BC - AB, BC + AB
-    c1ad, c2ad = _cos_rule(f, AD, CD), _cos_rule(x, AD, CD)
-    adc1, adc2 = _cos_rule(AD, CD, f), _cos_rule(AD, CD, x)
+    c1ad, c2ad = _tri_angle(f, AD, CD), _tri_angle(x, AD, CD)
+    adc1, adc2 = _tri_angle(AD, CD, f), _tri_angle(AD, CD, x)
     theta = abs(c1ad - c2ad)
-    g1 = _cos_rule(BC, CD, AD - AB)
-    g2 = _cos_rule(BC, CD, AD + AB)
+    g1 = _tri_angle(BC, CD, AD - AB)
+    g2 = _tri_angle(BC, CD, AD + AB)
     t1, t2 = min(g1, 180.0 - g1), min(g2, 180.0 - g2)
     return {
         "theta": theta,
@@ -78,19 +87,20 @@ def crank_slider_extremes(AB: float, BC: float, e: float) -> dict[str, float]:
     the slow stroke it is largest at the folded position or with B nearest the guide.
     """
     a, b = AB, BC
-    x1 = math.sqrt((b - a) ** 2 - e * e)
-    x2 = math.sqrt((b + a) ** 2 - e * e)
-    theta = _asin_deg(e / (b - a)) - _asin_deg(e / (b + a))
-    alpha_max = _asin_deg((a + e) / b)
-    alpha_slow = max(_asin_deg(e / (b - a)), _asin_deg(abs(a - e) / b))
+    x1, x2 = _leg(b - a, e), _leg(b + a, e)          # C1, C2 measured along the guide from the foot of A
+    theta = math.degrees(math.atan2(e, x1) - math.atan2(e, x2))
+    # pressure angle with B at height y above the guide: tan α = y / √(b² − y²)
+    gamma_fast = math.degrees(math.atan2(_leg(b, a + e), a + e))
+    alpha_max = 90.0 - gamma_fast
+    gamma_slow = min(math.degrees(math.atan2(x1, e)), math.degrees(math.atan2(_leg(b, abs(a - e)), abs(a - e))))
     return {
         "H": x2 - x1,
         "theta": theta,
         "K": k_from_theta(theta),
         "alpha_max": alpha_max,
-        "gamma_min": 90.0 - alpha_max,
-        "gamma_min_fast": 90.0 - alpha_max,
-        "gamma_min_slow": 90.0 - alpha_slow,
+        "gamma_min": gamma_fast,
+        "gamma_min_fast": gamma_fast,
+        "gamma_min_slow": gamma_slow,
         "AC1": b - a,
         "AC2": b + a,
     }
@@ -101,5 +111,5 @@ def guide_bar_extremes(AB: float, AC: float) -> dict[str, float]:
 
     sin(ψ/2) = AB/AC and θ = ψ; the transmission angle of a centric guide-bar is always 90°.
     """
-    psi = 2.0 * _asin_deg(AB / AC)
+    psi = 2.0 * math.degrees(math.atan2(AB, _leg(AC, AB)))
     return {"theta": psi, "psi": psi, "K": k_from_theta(psi)}

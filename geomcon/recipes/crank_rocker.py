@@ -51,6 +51,10 @@ def grashof(AB: float, BC: float, CD: float, AD: float) -> list[str]:
     """
     lengths = {"AB": AB, "BC": BC, "CD": CD, "AD": AD}
     longest = max(lengths, key=lambda k: lengths[k])
+    rest = sum(lengths.values()) - lengths[longest]
+    if lengths[longest] >= rest:
+        raise NotAMechanism(f"the links cannot be assembled: {longest} = {lengths[longest]:g} ≥ sum of the "
+                            f"other three = {rest:g}")
     if AB > min(BC, CD, AD) or AB == AD:
         raise NotAMechanism(
             f"AB = {AB:g} is not the strictly shortest link adjacent to the frame (BC = {BC:g}, CD = {CD:g}, "
