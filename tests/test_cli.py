@@ -1,0 +1,175 @@
+"""The command line: every bad-input class gives one line ``error: <file>: <what>``, exit code 2, no
+traceback and no output file; good input gives the JSON contract; laziness and determinism."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from geomcon.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+GOOD = """recipe = "crank_rocker.extremes"
+title = "t"
+[given]
+AB = 50
+BC = 70
+CD = 80
+AD = 90
+[published]
+theta = 12.5
+"""
+
+
+def _write(tmp_path: Path, text: str, name: str = "p.toml") -> Path:
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def _run(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "geomcon.cli", *args], capture_output=True, text=True, cwd=ROOT)
+
+
+BAD = {
+    "malformed TOML": ("recipe = \n[given", "malformed TOML"),
+    "unknown recipe": ('recipe = "four_bar.nonsense"\n[given]\nAB = 1\n', "unknown recipe 'four_bar.nonsense'"),
+    "no recipe": ("[given]\nAB = 1\n", "missing key 'recipe'"),
+    "unknown top key": (GOOD + "\n[extra]\nx = 1\n", "unknown key 'extra'"),
+    "missing given": (GOOD.replace("AD = 90\n", ""), "missing given 'AD'"),
+    "extra given": (GOOD.replace("AD = 90\n", "AD = 90\nXY = 3\n"), "unknown given 'XY'"),
+    "non-numeric": (GOOD.replace("AD = 90", 'AD = "ninety"'), "given 'AD' must be a number, got 'ninety'"),
+    "boolean": (GOOD.replace("AD = 90", "AD = true"), "given 'AD' must be a number, got True"),
+    "NaN": (GOOD.replace("AD = 90", "AD = nan"), "given 'AD' is not a finite number (nan)"),
+    "infinite": (GOOD.replace("AD = 90", "AD = inf"), "given 'AD' is not a finite number (inf)"),
+    "negative": (GOOD.replace("AB = 50", "AB = -50"), "given 'AB' must be > 0, got -50"),
+    "zero": (GOOD.replace("AB = 50", "AB = 0"), "given 'AB' must be > 0, got 0"),
+    "negative offset": ('recipe = "crank_slider.extremes"\n[given]\nAB = 5\nBC = 20\ne = -1\n', "given 'e' must be ≥ 0, got -1"),
+    "bad choice": (GOOD + "", None),
+    "published not an answer": (GOOD.replace("theta = 12.5", "H = 3"), "published 'H' is not an answer"),
+    "published non-numeric": (GOOD.replace("theta = 12.5", 'theta = "x"'), "published 'theta' must be a number"),
+    "not a crank": (GOOD.replace("AD = 90", "AD = 95").replace("AB = 50", "AB = 60"), "AB is not a crank (Grashof)"),
+    "cannot assemble": (GOOD.replace("AD = 90", "AD = 900"), "cannot be assembled: AD = 900"),
+    "rotating guide bar": ('recipe = "guide_bar.extremes"\n[given]\nAB = 300\nAC = 290\n', "rotating guide-bar"),
+}
+BAD["bad choice"] = (GOOD.replace("AD = 90\n", 'AD = 90\nbranch = "left"\n'), "given 'branch' must be one of above, below")
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_bad_input_is_one_line_exit_2_and_no_output(case, tmp_path, capsys):
+    text, expected = BAD[case]
+    p = _write(tmp_path, text)
+    out_svg, out_html, steps = tmp_path / "o.svg", tmp_path / "o.html", tmp_path / "frames"
+    code = main(["solve", str(p), "--json", "--svg", str(out_svg), "--html", str(out_html), "--steps", str(steps)])
+    cap = capsys.readouterr()
+    assert code == 2
+    assert cap.out == ""
+    lines = cap.err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {p}: "), cap.err
+    assert expected in lines[0]
+    assert "Traceback" not in cap.err
+    assert not out_svg.exists() and not out_html.exists() and not steps.exists()
+    assert not list(tmp_path.glob(".*tmp"))
+
+
+def test_unreadable_file_and_directory(tmp_path, capsys):
+    for path in (tmp_path / "missing.toml", tmp_path):
+        assert main(["solve", str(path)]) == 2
+        err = capsys.readouterr().err
+        assert err.startswith(f"error: {path}: cannot read the file") and err.count("\n") == 1
+
+
+def test_not_utf8(tmp_path, capsys):
+    p = tmp_path / "latin.toml"
+    p.write_bytes(b'recipe = "caf\xe9"\n')
+    assert main(["solve", str(p)]) == 2
+    assert "not UTF-8" in capsys.readouterr().err
+
+
+def test_subprocess_shows_no_traceback(tmp_path):
+    p = _write(tmp_path, GOOD.replace("AB = 50", "AB = -1"))
+    r = _run("solve", str(p), "--json")
+    assert r.returncode == 2 and r.stdout == "" and "Traceback" not in r.stderr
+    assert r.stderr.strip() == f"error: {p}: given 'AB' must be > 0, got -1"
+
+
+def test_json_contract_and_laziness(tmp_path, capsys):
+    p = _write(tmp_path, GOOD)
+    assert main(["solve", str(p), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    for key in ("problem", "recipe", "answers", "points", "solutions", "checks", "published", "warnings", "stats"):
+        assert key in data
+    assert data["recipe"] == "crank_rocker.extremes" and data["problem"] == "p"
+    assert set(data["answers"]) >= {"theta", "psi", "K", "gamma_min"}
+    assert set(data["points"]) == {"A", "D", "B1", "C1", "B2", "C2"}
+    assert data["solutions"] == [data["answers"]]
+    assert all(set(c) == {"quantity", "construction", "analytic", "abs_error", "ok"} and c["ok"] for c in data["checks"])
+    (pub,) = data["published"]
+    assert set(pub) == {"quantity", "published", "exact", "deviation", "rel_deviation"}
+    assert pub["quantity"] == "theta" and pub["deviation"] == pytest.approx(12.5 - 12.5055860934, abs=1e-9)
+    st = data["stats"]
+    assert 0 < st["steps_evaluated"] < st["steps_total"]
+
+
+def test_answers_compute_no_annotation():
+    from geomcon.problems import load_problem
+    from geomcon.scene import Role
+    from geomcon.solve import solve
+
+    sol = solve(load_problem(ROOT / "problems" / "001-08_crank_rocker.toml"))
+    sol.to_json()
+    annotations = [s.key for s in sol.scene.steps if s.role is Role.ANNOTATION]
+    assert annotations and not any(sol.scene.is_evaluated(k) for k in annotations)
+
+
+def test_outputs_are_deterministic(tmp_path, capsys):
+    p = _write(tmp_path, GOOD)
+    outs = []
+    for i in range(2):
+        d = tmp_path / f"run{i}"
+        assert main(["solve", str(p), "--json", "--svg", str(d / "a.svg"), "--html", str(d / "a.html"),
+                     "--steps", str(d / "steps")]) == 0
+        outs.append((capsys.readouterr().out, *(f.read_bytes() for f in sorted(d.rglob("*")) if f.is_file())))
+    assert outs[0] == outs[1]
+    assert len(outs[0]) > 4
+
+
+def test_steps_writes_one_frame_per_numbered_step(tmp_path, capsys):
+    from geomcon.problems import load_problem
+    from geomcon.solve import solve
+
+    p = _write(tmp_path, GOOD)
+    assert main(["solve", str(p), "--steps", str(tmp_path / "f")]) == 0
+    n = len(solve(load_problem(p)).scene.visible_steps())
+    assert len(list((tmp_path / "f").glob("step-*.svg"))) == n
+
+
+def test_recipes_lists_every_recipe(capsys):
+    assert main(["recipes", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert {"crank_rocker.extremes", "crank_slider.extremes", "guide_bar.extremes"} <= set(data)
+    assert list(data["crank_slider.extremes"]["given"]) == ["AB", "BC", "e"]
+    assert "H" in data["crank_slider.extremes"]["answers"]
+
+
+def test_every_bundled_problem_agrees_with_its_twin():
+    from geomcon.gallery import problem_files
+    from geomcon.problems import load_problem
+    from geomcon.solve import solve
+
+    files = problem_files(ROOT / "problems")
+    assert len(files) >= 7
+    for f in files:
+        sol = solve(load_problem(f))
+        assert sol.ok, (f.name, [c for c in sol.checks if not c["ok"]])
+        assert sol.stats["steps_evaluated"] < sol.stats["steps_total"]
+
+
+def test_gallery_is_fresh():
+    from geomcon.gallery import stale_files
+
+    stale = stale_files(ROOT / "problems", ROOT / "gallery")
+    assert not stale, f"gallery is stale, run `geomcon gallery`: {stale}"
