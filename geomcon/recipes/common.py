@@ -118,3 +118,42 @@ def guide_between(p: Point, q: Point, guide, margin: float, side: int = -1):
     u = guide.direction
     t = sorted(((p - guide.point).dot(u), (q - guide.point).dot(u)))
     return marks.Guide(guide.at(t[0] - margin), guide.at(t[1] + margin), side)
+
+
+def add_collinear_extremes(sc: Scene, A: Ref, path: Ref, AB: float, BC: float, branch, meet,
+                           path_name: tuple[str, str]) -> tuple[Ref, Ref, Ref, Ref]:
+    """The two extreme positions where crank and coupler are collinear.
+
+    The circle about A of radius BC − AB meets the path of C (``meet(circle, path)``, ``path`` first for a
+    line) at C1 (folded), the circle of radius BC + AB at C2 (extended); B1 lies on C1A extended beyond A and
+    B2 on AC2, both at AB from A. Returns ``(B1, C1, B2, C2)``.
+    """
+    from ..geometry import circle, point_along
+
+    en, zh = path_name
+    cs = []
+    for i, (r_key, op, r, sign, how_en, how_zh) in enumerate((("r1", difference, "BC − AB", -1, "folded", "重叠"),
+                                                              ("r2", total, "BC + AB", 1, "extended", "拉直")), 1):
+        radius = sc.add(r_key, op, BC, AB, visible=False, unit="mm")
+        value = op(BC, AB)
+        k = sc.add(f"k{i}", circle, A, radius, caption=(f"Circle about A with radius {r} = {value:g}",
+                                                        f"以 A 为圆心、{r} = {value:g} 为半径作圆"))
+        args = (path, k) if meet.__name__ == "line_circle" else (k, path)
+        C = sc.add(f"C{i}", meet, *args, branch=branch, role=Role.RESULT, style="joint", label=f"C{i}",
+                   caption=(f"It meets {en} at C{i}: crank and coupler {how_en}", f"交{zh}于 C{i}(曲柄与连杆{how_zh}共线)"))
+        cs.append(C)
+    C1, C2 = cs
+    B1 = sc.add("B1", point_along, A, C1, -AB, role=Role.RESULT, style="joint", label="B1",
+                caption=("B1 on the extension of C1A beyond A, AB1 = AB", "在 C1A 的延长线上截取 AB1 = AB"))
+    B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",
+                caption=("B2 on AC2, AB2 = AB", "在 AC2 上截取 AB2 = AB"))
+    return B1, C1, B2, C2
+
+
+def add_theta_and_K(sc: Scene, A: Ref, C1: Ref, C2: Ref) -> Ref:
+    """θ = ∠C1AC2 and K = (180° + θ)/(180° − θ) as measurement steps; returns θ."""
+    th = sc.add("theta", angle_deg, A, C1, C2, role=Role.MEASUREMENT, unit="deg",
+                caption=("Measure θ = ∠C1AC2", "量得极位夹角 θ = ∠C1AC2"))
+    sc.add("K", k_ratio, th, role=Role.MEASUREMENT,
+           caption=("K = (180° + θ)/(180° − θ)", "行程速比系数 K = (180° + θ)/(180° − θ)"))
+    return th

@@ -16,7 +16,7 @@ from ..geometry import Above, Below, Point, circle, circle_circle, point_along, 
 from ..scene import Role, Scene
 from ..tolerance import is_zero
 from .base import Construction, Quantity, Recipe
-from .common import (add_angle_mark, add_bar, add_pivot, angle_deg, difference, k_ratio, smallest, total,
+from .common import (add_angle_mark, add_bar, add_collinear_extremes, add_pivot, add_theta_and_K, angle_deg, smallest,
                      transmission_deg)
 
 GIVENS = (
@@ -94,34 +94,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
     kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}, the path of C",
                                                f"以 D 为圆心、CD = {CD:g} 为半径作圆(C 点轨迹)"))
-    r1 = sc.add("r1", difference, BC, AB, visible=False, unit="mm", role=Role.MEASUREMENT)
-    r2 = sc.add("r2", total, BC, AB, visible=False, unit="mm", role=Role.MEASUREMENT)
-    k1 = sc.add("k1", circle, A, r1, caption=(f"Circle about A with radius BC − AB = {BC - AB:g}",
-                                              f"以 A 为圆心、BC − AB = {BC - AB:g} 为半径作圆"))
-    C1 = sc.add("C1", circle_circle, k1, kD, branch=side, role=Role.RESULT, style="joint", label="C1",
-                caption=("It meets the rocker circle at C1: crank and coupler folded",
-                         "交摇杆圆于 C1(曲柄与连杆重叠共线)"))
-    k2 = sc.add("k2", circle, A, r2, caption=(f"Circle about A with radius BC + AB = {BC + AB:g}",
-                                              f"以 A 为圆心、BC + AB = {BC + AB:g} 为半径作圆"))
-    C2 = sc.add("C2", circle_circle, k2, kD, branch=side, role=Role.RESULT, style="joint", label="C2",
-                caption=("It meets the rocker circle at C2: crank and coupler extended",
-                         "交摇杆圆于 C2(曲柄与连杆拉直共线)"))
-    B1 = sc.add("B1", point_along, A, C1, -AB, role=Role.RESULT, style="joint", label="B1",
-                caption=("B1 on the extension of C1A beyond A, AB1 = AB", "在 C1A 的延长线上截取 AB1 = AB"))
-    B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",
-                caption=("B2 on AC2, AB2 = AB", "在 AC2 上截取 AB2 = AB"))
+    B1, C1, B2, C2 = add_collinear_extremes(sc, A, kD, AB, BC, side, circle_circle, ("the rocker circle", "摇杆圆"))
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
         style = "link" if i == 1 else "link-alt"
         add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
         add_bar(sc, f"B{i}C{i}", B, C, (f"Coupler B{i}C{i}", f"连杆 B{i}C{i}"), style=style)
         add_bar(sc, f"C{i}D", C, D, (f"Rocker C{i}D", f"摇杆 C{i}D"), style=style)
     sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
-    th = sc.add("theta", angle_deg, A, C1, C2, role=Role.MEASUREMENT, unit="deg",
-                caption=("Measure θ = ∠C1AC2", "量得极位夹角 θ = ∠C1AC2"))
+    th = add_theta_and_K(sc, A, C1, C2)
     ps = sc.add("psi", angle_deg, D, C1, C2, role=Role.MEASUREMENT, unit="deg",
                 caption=("Measure the swing ψ = ∠C1DC2", "量得摇杆摆角 ψ = ∠C1DC2"))
-    sc.add("K", k_ratio, th, role=Role.MEASUREMENT, unit="",
-           caption=("K = (180° + θ)/(180° − θ)", "行程速比系数 K = (180° + θ)/(180° − θ)"))
     sc.add("angle_C1AD", angle_deg, A, C1, D, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add("angle_C2AD", angle_deg, A, C2, D, role=Role.MEASUREMENT, unit="deg", visible=False)
     # transmission angle: crank along the frame, towards D (B') and away from D (B'')
@@ -139,13 +121,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
         gk = sc.add(f"gamma_{i}", transmission_deg, Bg, Cg, D, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"Transmission angle γ{i} = ∠B{p}C{p}D (acute form)", f"传动角 γ{i} = ∠B{p}C{p}D(取锐角)"))
         gammas.append((gk, Bg, Cg))
-    gm = sc.add("gamma_min", smallest, gammas[0][0], gammas[1][0], role=Role.MEASUREMENT, unit="deg",
+    sc.add("gamma_min", smallest, gammas[0][0], gammas[1][0], role=Role.MEASUREMENT, unit="deg",
                 caption=("γmin = min(γ1, γ2)", "最小传动角 γmin = min(γ1, γ2)"))
     add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     add_angle_mark(sc, "mark_psi", D, C1, C2, "ψ", ps)
     for i, (gk, Bg, Cg) in enumerate(gammas, 1):
         add_angle_mark(sc, f"mark_gamma_{i}", Cg, Bg, D, f"γ{i}", gk)
-    del gm
     answers = {q.name: q.name for q in ANSWERS}
     points = {n: n for n in ("A", "D", "B1", "C1", "B2", "C2")}
     return Construction(sc, answers, points)

@@ -12,12 +12,12 @@ from typing import Any, Mapping
 
 from ..analytic.linkages import crank_slider_extremes
 from ..errors import NotAMechanism
-from ..geometry import Line, Point, ToRightOf, circle, line_circle, perpendicular, point_along, segment
+from ..geometry import Line, Point, ToRightOf, circle, line_circle, perpendicular, segment
 from ..scene import Role, Scene, marks
 from ..tolerance import is_zero
 from .base import Construction, Quantity, Recipe
-from .common import (add_angle_mark, add_bar, add_pivot, along_line, angle_deg, complement_deg, difference,
-                     guide_angle_mark, guide_between, k_ratio, largest, length, pressure_deg, total)
+from .common import (add_angle_mark, add_bar, add_collinear_extremes, add_pivot, add_theta_and_K, along_line,
+                     complement_deg, guide_angle_mark, guide_between, largest, length, pressure_deg)
 
 GIVENS = (
     Quantity("AB", "mm", "crank"),
@@ -66,18 +66,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if e > 0:
         sc.add("dim_e", marks.dimension, F, A, "e", e, -0.25 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
                caption=("Dimension the offset e", "标注偏距 e"))
-    k1 = sc.add("k1", circle, A, sc.add("r1", difference, BC, AB, visible=False, unit="mm"),
-                caption=(f"Circle about A with radius BC − AB = {BC - AB:g}", f"以 A 为圆心、BC − AB = {BC - AB:g} 为半径作圆"))
-    C1 = sc.add("C1", line_circle, gl, k1, branch=ToRightOf(A), role=Role.RESULT, style="joint", label="C1",
-                caption=("It meets the guide at C1: crank and rod folded", "交导路于 C1(曲柄与连杆重叠共线)"))
-    k2 = sc.add("k2", circle, A, sc.add("r2", total, BC, AB, visible=False, unit="mm"),
-                caption=(f"Circle about A with radius BC + AB = {BC + AB:g}", f"以 A 为圆心、BC + AB = {BC + AB:g} 为半径作圆"))
-    C2 = sc.add("C2", line_circle, gl, k2, branch=ToRightOf(A), role=Role.RESULT, style="joint", label="C2",
-                caption=("It meets the guide at C2: crank and rod extended", "交导路于 C2(曲柄与连杆拉直共线)"))
-    B1 = sc.add("B1", point_along, A, C1, -AB, role=Role.RESULT, style="joint", label="B1",
-                caption=("B1 on the extension of C1A beyond A, AB1 = AB", "在 C1A 的延长线上截取 AB1 = AB"))
-    B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",
-                caption=("B2 on AC2, AB2 = AB", "在 AC2 上截取 AB2 = AB"))
+    B1, C1, B2, C2 = add_collinear_extremes(sc, A, gl, AB, BC, ToRightOf(A), line_circle, ("the guide", "导路"))
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
         style = "link" if i == 1 else "link-alt"
         add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
@@ -89,9 +78,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
                caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
-    th = sc.add("theta", angle_deg, A, C1, C2, role=Role.MEASUREMENT, unit="deg",
-                caption=("Measure θ = ∠C1AC2", "量得极位夹角 θ = ∠C1AC2"))
-    sc.add("K", k_ratio, th, role=Role.MEASUREMENT, caption=("K = (180° + θ)/(180° − θ)", "K = (180° + θ)/(180° − θ)"))
+    th = add_theta_and_K(sc, A, C1, C2)
     nA = sc.add("nA", perpendicular, gl, A, caption=("Perpendicular to the guide through A", "过 A 作导路的垂线"))
     pos = {}
     for i, (t, en, zh) in ((3, (AB, "away from the guide", "远离导路")), (4, (-AB, "towards the guide", "指向导路"))):
