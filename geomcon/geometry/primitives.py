@@ -21,6 +21,10 @@ from dataclasses import dataclass
 from ..errors import Degenerate
 
 
+_SAFE_NORM = 2.0 ** -969
+"""Below this length a vector's components may be subnormal and lose relative precision."""
+
+
 def _finite(*values: float) -> bool:
     return all(math.isfinite(v) for v in values)
 
@@ -79,10 +83,24 @@ class Point:
         return Point(-self.y, self.x)
 
     def unit(self) -> Point:
-        """This vector scaled to length 1; a zero vector raises :class:`Degenerate`."""
+        """This vector scaled to length 1; a zero vector raises :class:`Degenerate`.
+
+        A vector whose length overflows (components near 1e308) or whose components are subnormal is
+        first divided by its largest component, so that the result still has length 1.
+
+        Examples
+        --------
+        >>> Point(3e-320, 4e-320).unit(), Point(1.5e308, 1.5e308).unit()
+        (Point(x=0.6, y=0.8), Point(x=0.7071067811865475, y=0.7071067811865475))
+        """
         n = abs(self)
         if n == 0.0:
             raise Degenerate("direction of a zero-length vector")
+        if not _SAFE_NORM <= n < math.inf:
+            m = max(abs(self.x), abs(self.y))
+            x, y = self.x / m, self.y / m
+            n = math.hypot(x, y)
+            return Point(x / n, y / n)
         return Point(self.x / n, self.y / n)
 
     def tuple(self) -> tuple[float, float]:
