@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from ..errors import Degenerate
+from ..errors import Coincident, Degenerate
 from ..tolerance import tol
 from .intersect import line_line
 from .primitives import Circle, Line, Point, Ray, Segment
@@ -107,12 +107,19 @@ def circle_through3(a: Point, b: Point, c: Point) -> Circle:
     Degenerate
         When the three points are collinear within tolerance (the bisectors do not meet).
     """
-    meet = line_line(perpendicular_bisector(a, b), perpendicular_bisector(b, c))
     span = max(abs(b - a), abs(c - b), abs(c - a))
-    if not meet or abs((b - a).cross(c - a)) <= tol(span) * span:
-        raise Degenerate(
-            f"circle through collinear points ({a.x:.6g}, {a.y:.6g}), ({b.x:.6g}, {b.y:.6g}), ({c.x:.6g}, {c.y:.6g})"
-        )
+    why = (f"circle through collinear points ({a.x:.6g}, {a.y:.6g}), ({b.x:.6g}, {b.y:.6g}), "
+           f"({c.x:.6g}, {c.y:.6g})")
+    # Decide collinearity first: two coincident points (a == c) are collinear with any third, and their
+    # bisectors would coincide rather than fail to meet.
+    if abs((b - a).cross(c - a)) <= tol(span) * span:
+        raise Degenerate(why)
+    try:
+        meet = line_line(perpendicular_bisector(a, b), perpendicular_bisector(b, c))
+    except Coincident:
+        raise Degenerate(why) from None
+    if not meet:
+        raise Degenerate(why)
     o = meet[0]
     return Circle(o, abs(a - o))
 
