@@ -54,6 +54,14 @@ def _pick(cands: tuple[Point, ...], score: Callable[[Point], float], what: str) 
     return cands[0] if s0 > s1 else cands[1]
 
 
+def _direction(a: Point, b: Point, what: str) -> Point:
+    """The unit direction ``a → b`` of a rule's dividing line; a zero-length one makes the rule undecidable."""
+    d = b - a
+    if d.x == 0.0 and d.y == 0.0:
+        raise AmbiguousBranch(f"{what}: the dividing line through ({a.x:.6g}, {a.y:.6g}) has zero length")
+    return d.unit()
+
+
 class Branch:
     """Base of the rules; subclasses are frozen dataclasses whose fields are points (or references)."""
 
@@ -80,8 +88,8 @@ class LeftOf(Branch):
     b: Any
 
     def choose(self, cands: tuple[Point, ...]) -> Point:
-        d = self.b - self.a
-        return _pick(cands, lambda p: d.cross(p - self.a) / abs(d), "left of a directed line")
+        d = _direction(self.a, self.b, "left of a directed line")
+        return _pick(cands, lambda p: d.cross(p - self.a), "left of a directed line")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
@@ -96,8 +104,8 @@ class RightOf(Branch):
     b: Any
 
     def choose(self, cands: tuple[Point, ...]) -> Point:
-        d = self.b - self.a
-        return _pick(cands, lambda p: -d.cross(p - self.a) / abs(d), "right of a directed line")
+        d = _direction(self.a, self.b, "right of a directed line")
+        return _pick(cands, lambda p: -d.cross(p - self.a), "right of a directed line")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
@@ -105,7 +113,7 @@ class RightOf(Branch):
 
 
 def _upward_normal(a: Point, b: Point) -> Point:
-    n = (b - a).perp().unit()
+    n = _direction(a, b, "above/below a line").perp()
     if abs(n.y) <= tol(1.0):
         raise AmbiguousBranch("above/below a vertical line is undefined: use left/right of a directed line")
     return n if n.y > 0 else -n
