@@ -23,11 +23,20 @@ def distance(a: Point, b: Point) -> float:
     return math.hypot(b.x - a.x, b.y - a.y)
 
 
+def _half_open(a: float) -> float:
+    """Map ``atan2``'s −π (a negative zero or a negative underflow over a negative abscissa) to π."""
+    return math.pi if a == -math.pi else a
+
+
 def signed_angle(u: Point, v: Point) -> float:
-    """The angle turning vector ``u`` into vector ``v``, in (−π, π], counter-clockwise positive."""
+    """The angle turning vector ``u`` into vector ``v``, in (−π, π], counter-clockwise positive.
+
+    >>> signed_angle(Point(-1, 0), Point(1, 0)) == math.pi      # a half turn is +π, never −π
+    True
+    """
     if abs(u) == 0.0 or abs(v) == 0.0:
         raise Degenerate("angle of a zero-length vector")
-    return math.atan2(u.cross(v), u.dot(v))
+    return _half_open(math.atan2(u.cross(v), u.dot(v)))
 
 
 def angle_between(u: Point, v: Point) -> float:
@@ -52,5 +61,9 @@ def signed_distance(line: Line, p: Point) -> float:
 
 
 def polar_angle(center: Point, p: Point) -> float:
-    """Polar angle of ``p`` seen from ``center``, in (−π, π]."""
-    return math.atan2(p.y - center.y, p.x - center.x)
+    """Polar angle of ``p`` seen from ``center``, in (−π, π].
+
+    >>> polar_angle(Point(0, 0), Point(-1, -0.0)) == math.pi
+    True
+    """
+    return _half_open(math.atan2(p.y - center.y, p.x - center.x))
