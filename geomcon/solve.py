@@ -83,6 +83,12 @@ class Solution:
             for q in self.recipe.answers:
                 if q.name in built and q.name in exact:
                     rows.append(check_row(prefix + q.name, built[q.name], exact[q.name], q.unit, self.length_scale))
+        if self.recipe.back_check is not None:
+            for i, built in enumerate(self.solution_values):
+                prefix = f"solutions[{i}]." if i else ""
+                for name, rebuilt, required, unit in self.recipe.back_check(self.problem.given, built):
+                    rows.append(check_row(f"{prefix}back_substitution.{name}", rebuilt, required, unit,
+                                          self.length_scale))
         if len(self.solution_values) != len(self.analytic):
             rows.append({"quantity": "number of solutions", "construction": len(self.solution_values),
                          "analytic": len(self.analytic), "abs_error": abs(len(self.solution_values) - len(self.analytic)),
@@ -103,6 +109,11 @@ class Solution:
     def warnings(self) -> list[str]:
         """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
         out = list(self._warnings)
+        allow = self.problem.given.get("gamma_allow")
+        for i, sol in enumerate(self.solution_values):
+            if allow is not None and "gamma_min" in sol and sol["gamma_min"] < allow:
+                which = f"solution {i + 1}: " if len(self.solution_values) > 1 else ""
+                out.append(f"{which}γmin = {sol['gamma_min']:.4g}° is below gamma_allow = {allow:g}°")
         for r in self.checks:
             if not r["ok"]:
                 out.append(f"check failed: {r['quantity']} construction {r['construction']!r} vs analytic {r['analytic']!r}")

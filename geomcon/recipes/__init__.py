@@ -10,10 +10,11 @@ Examples
 from __future__ import annotations
 
 from ..errors import ProblemError
-from . import crank_rocker, crank_slider, guide_bar
+from . import crank_rocker, crank_slider, crank_slider_design, guide_bar
 from .base import Construction, Quantity, Recipe
 
-RECIPES: dict[str, Recipe] = {r.name: r for r in (crank_rocker.RECIPE, crank_slider.RECIPE, guide_bar.RECIPE)}
+RECIPES: dict[str, Recipe] = {r.name: r for r in (crank_rocker.RECIPE, crank_slider.RECIPE, crank_slider_design.RECIPE,
+                                                guide_bar.RECIPE)}
 
 
 def get_recipe(name: str) -> Recipe:

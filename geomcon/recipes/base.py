@@ -86,6 +86,10 @@ class Recipe:
     validate : callable or None
         ``validate(given) -> list[str]`` raises :class:`~geomcon.errors.NotAMechanism` for givens that
         describe no such mechanism, and returns warnings for borderline ones.
+    back_check : callable or None
+        ``back_check(given, answers) -> [(quantity, rebuilt, required, unit), ...]``: a design recipe rebuilds
+        the designed linkage with the core's ``*.extremes`` construction and returns what it reproduces
+        (K, H, ψ, the closing condition) next to what the problem required.
     """
 
     name: str
@@ -96,6 +100,7 @@ class Recipe:
     construct: Callable[[Mapping[str, Any]], Construction]
     analytic: Callable[[Mapping[str, Any]], list[dict[str, float]]]
     validate: Callable[[Mapping[str, Any]], list[str]] | None = None
+    back_check: Callable[[Mapping[str, Any], Mapping[str, float]], list[tuple[str, float, float, str]]] | None = None
 
     def given_names(self) -> tuple[str, ...]:
         """Names of all givens, required first."""

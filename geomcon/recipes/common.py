@@ -89,9 +89,9 @@ def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str
                   style="angle", caption=(f"Mark the angle {symbol}", f"标注角 {symbol}"))
 
 
-def along_line(line, t: float) -> Point:
-    """The point at signed distance ``t`` along a line from its reference point."""
-    return line.at(t)
+def along_line(line, t: float, sign: float = 1.0) -> Point:
+    """The point at signed distance ``sign·t`` along a line from its reference point."""
+    return line.at(sign * t)
 
 
 def pressure_deg(b: Point, c: Point, guide) -> float:

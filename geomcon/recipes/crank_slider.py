@@ -13,7 +13,7 @@ from typing import Any, Mapping
 from ..analytic.linkages import crank_slider_extremes
 from ..errors import NotAMechanism
 from ..geometry import Line, Point, ToRightOf, circle, line_circle, perpendicular, segment
-from ..scene import Role, Scene, marks
+from ..scene import Ref, Role, Scene, marks
 from ..tolerance import is_zero
 from .base import Construction, Quantity, Recipe
 from .common import (add_angle_mark, add_bar, add_collinear_extremes, add_pivot, add_theta_and_K, along_line,
@@ -79,10 +79,25 @@ def construct(g: Mapping[str, Any]) -> Construction:
     H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
                caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
     th = add_theta_and_K(sc, A, C1, C2)
+    add_pressure_angles(sc, A, B1, C1, gl, AB, BC)
+    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
+    sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
+           caption=("Dimension the stroke H", "标注行程 H"))
+    names = [q.name for q in ANSWERS]
+    return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "B1", "C1", "B2", "C2")})
+
+
+def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC) -> Ref:
+    """The pressure angles that decide γmin: crank perpendicular to the guide away from it (B3, the largest
+    of the cycle, in the fast stroke) and towards it (B4), and the folded position C1 (slow stroke).
+
+    ``AB`` and ``BC`` are numbers or references to measured lengths. Adds ``alpha_max``, ``gamma_min``,
+    ``gamma_min_fast``, ``gamma_min_slow`` and the αmax angle mark; returns ``gamma_min``.
+    """
     nA = sc.add("nA", perpendicular, gl, A, caption=("Perpendicular to the guide through A", "过 A 作导路的垂线"))
     pos = {}
-    for i, (t, en, zh) in ((3, (AB, "away from the guide", "远离导路")), (4, (-AB, "towards the guide", "指向导路"))):
-        B = sc.add(f"B{i}", along_line, nA, t, style="point", label=f"B{i}",
+    for i, (sign, en, zh) in ((3, (1.0, "away from the guide", "远离导路")), (4, (-1.0, "towards the guide", "指向导路"))):
+        B = sc.add(f"B{i}", along_line, nA, AB, sign, style="point", label=f"B{i}",
                    caption=(f"Crank perpendicular to the guide, {en}: B{i}", f"曲柄垂直于导路且{zh}:B{i}"))
         kB = sc.add(f"kB{i}", circle, B, BC, caption=(f"Circle about B{i} with radius BC", f"以 B{i} 为圆心、BC 为半径作圆"))
         C = sc.add(f"C{i}", line_circle, gl, kB, branch=ToRightOf(B), style="point", label=f"C{i}",
@@ -103,13 +118,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
     slow = sc.add("alpha_slow", largest, a1, a4, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add("gamma_min_slow", complement_deg, slow, role=Role.MEASUREMENT, unit="deg",
            caption=("Slow stroke: γmin = 90° − max(α at C1, α at C4)", "慢行程最小传动角 = 90° − max(α1, α4)"))
-    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     sc.add("mark_alpha", guide_angle_mark, *reversed(pos[3]), gl, "αmax", a3, role=Role.ANNOTATION, style="angle",
            caption=("Mark αmax at C3", "标注最大压力角 αmax"))
-    sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
-           caption=("Dimension the stroke H", "标注行程 H"))
-    names = [q.name for q in ANSWERS]
-    return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "B1", "C1", "B2", "C2")})
+    return Ref("gamma_min")
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:

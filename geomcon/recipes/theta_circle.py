@@ -1,0 +1,85 @@
+"""The θ-circle and its relatives: circles through C1, C2 from whose arc the chord is seen under a given
+angle, built as the textbook does (C2P ⊥ C1C2, ∠C2C1P = 90° − β, the circle through C1, C2, P).
+
+Examples
+--------
+>>> from geomcon.geometry import Point
+>>> k = seeing_circle(Point(0, 0), Point(2, 0), 90.0, 1)
+>>> k.center, k.r
+(Point(x=1.0, y=0.0), 1.0)
+>>> c = seeing_circle(Point(0, 0), Point(2, 0), 45.0, 1).center
+>>> round(c.x, 12), round(c.y, 12)
+(1.0, 1.0)
+"""
+from __future__ import annotations
+
+import math
+
+from ..geometry import (Arc, Circle, Line, Point, circle_through3, line_line, polar_angle, ray_at_angle,
+                        thales_circle)
+from ..scene import Ref, Role, Scene
+
+
+def ray_from(origin: Point, toward: Point, angle_deg: float):
+    """The ray from ``origin`` turned by ``angle_deg`` (counter-clockwise positive) from ``origin → toward``."""
+    return ray_at_angle(origin, toward, math.radians(angle_deg))
+
+
+def perpendicular_at(a: Point, b: Point) -> Line:
+    """The perpendicular to ``ab`` at ``b``."""
+    return Line(b, (b - a).perp())
+
+
+def meet_lines(l1, l2) -> Point:
+    """The intersection of two lines (or rays' lines) that must cross."""
+    from ..errors import NoIntersection
+    l1 = l1.line() if hasattr(l1, "line") else l1
+    pts = line_line(l1, l2)
+    if not pts:
+        raise NoIntersection("the two lines are parallel")
+    return pts[0]
+
+
+def complement_turn(theta_deg: float, side: int) -> float:
+    """The signed turn 90° − θ towards ``side`` (+1 counter-clockwise)."""
+    return side * (90.0 - theta_deg)
+
+
+def seeing_circle(c1: Point, c2: Point, beta_deg: float, side: int) -> Circle:
+    """The circle through c1, c2 whose arc on ``side`` (+1: left of c1→c2) sees c1c2 under ``beta_deg``."""
+    if abs(beta_deg - 90.0) < 1e-12:
+        return thales_circle(c1, c2)
+    p = meet_lines(ray_from(c1, c2, side * (90.0 - beta_deg)), perpendicular_at(c1, c2))
+    return circle_through3(c1, c2, p)
+
+
+def arc_from_to(circle: Circle, start: Point, end: Point) -> Arc:
+    """The counter-clockwise arc of ``circle`` from ``start`` to ``end``."""
+    a0 = polar_angle(circle.center, start)
+    sweep = (polar_angle(circle.center, end) - a0) % (2 * math.pi)
+    return Arc(circle.center, circle.r, a0, sweep)
+
+
+def add_theta_circle(sc: Scene, C1: Ref, C2: Ref, theta: Ref, side: int, *, side_words: tuple[str, str]) -> Ref:
+    """Add the textbook's three steps (C2P ⊥ C1C2, ∠C2C1P = 90° − θ, circle C1C2P); return the circle.
+
+    ``side`` +1 puts P (and the arc from which C1C2 is seen under θ) on the left of C1→C2.
+    """
+    en, zh = side_words
+    n2 = sc.add("n2", perpendicular_at, C1, C2, caption=("Perpendicular to C1C2 at C2", "过 C2 作 C1C2 的垂线"))
+    compl = sc.add("compl", complement_turn, theta, side, visible=False, unit="deg")
+    rP = sc.add("rP", ray_from, C1, C2, compl,
+                caption=(f"From C1 draw a line at 90° − θ to C1C2, {en}", f"过 C1 作与 C1C2 成 90° − θ 的直线({zh})"))
+    P = sc.add("P", meet_lines, rP, n2, style="point", label="P", caption=("The two lines meet at P", "两线交于 P"))
+    return sc.add("kTheta", circle_through3, C1, C2, P, style="theta-circle",
+                  caption=("The circle through C1, C2, P: from its arc C1C2 is seen under θ",
+                           "作 △C1C2P 的外接圆(圆上各点对 C1C2 张角为 θ)"))
+
+
+def add_seeing_circle(sc: Scene, key: str, C1: Ref, C2: Ref, beta: Ref, side: int, caption: tuple[str, str]) -> Ref:
+    """A circle through C1, C2 seeing the chord under ``beta`` (a step value, degrees) on ``side``."""
+    return sc.add(key, seeing_circle, C1, C2, beta, side, caption=caption)
+
+
+__all__ = ["add_seeing_circle", "add_theta_circle", "arc_from_to", "meet_lines", "perpendicular_at", "ray_from",
+           "seeing_circle", "Role"]
