@@ -79,6 +79,11 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
             out[q.name] = q.default
             continue
         value = given[q.name]
+        if q.unit == "bool":
+            if not isinstance(value, bool):
+                raise ProblemError(f"given '{q.name}' must be true or false, got {value!r}")
+            out[q.name] = value
+            continue
         if q.unit == "choice":
             if value not in q.choices:
                 raise ProblemError(f"given '{q.name}' must be one of {', '.join(q.choices)}, got {value!r}")

@@ -23,6 +23,7 @@ from functools import cached_property
 from typing import Any
 
 from .check import PUBLISHED_WARN_REL, audit_row, check_row
+from .errors import NotAMechanism
 from .problems import Problem
 from .recipes import Construction, Recipe, get_recipe
 
@@ -52,11 +53,20 @@ class Solution:
 
     @cached_property
     def solution_values(self) -> list[dict[str, float]]:
-        """Every valid solution's answers (the first is the textbook's choice)."""
+        """Every valid solution's answers, the textbook's choice first.
+
+        A solution map may name a ``_valid`` step (a candidate of a multi-solution construction); candidates
+        whose ``_valid`` is false are left out.
+        """
         maps = self.construction.solutions or (self.construction.answers,)
-        keys = [k for m in maps for k in m.values()]
-        vals = self.scene.evaluate(keys)
-        return [{name: float(vals[key]) for name, key in m.items()} for m in maps]
+        vals = self.scene.evaluate([k for m in maps for k in m.values()])
+        out = [{name: float(vals[key]) for name, key in m.items() if name != "_valid"}
+               for m in maps if "_valid" not in m or vals[m["_valid"]]]
+        if self.recipe.order is not None:
+            out.sort(key=self.recipe.order)
+        if not out:
+            raise NotAMechanism(self.construction.no_solution or "no candidate of the construction is a valid mechanism")
+        return out
 
     @property
     def answers(self) -> dict[str, float]:

@@ -75,3 +75,122 @@ def crank_slider_design(K: float, H: float, *, e: float | None = None, AB: float
     gamma = math.degrees(math.atan2(math.sqrt(max(0.0, (b - a - ecc) * (b + a + ecc))), a + ecc))
     return {"AB": a, "BC": b, "e": ecc, "theta": math.degrees(th), "K": K, "alpha_max": 90.0 - gamma,
             "gamma_min": gamma, "AC1": u, "AC2": v}
+
+
+# ---------------------------------------------------------------------------------------------- crank-rocker
+def _trilaterate(p: tuple[float, float], q: tuple[float, float], rp: float, rq: float) -> list[tuple[float, float]]:
+    """The points at distance rp from p and rq from q (0, 1 or 2), by the law of cosines in triangle p q A."""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    d = math.hypot(dx, dy)
+    cos_p = (rp * rp + d * d - rq * rq) / (2 * rp * d)
+    if abs(cos_p) > 1 + 1e-12:
+        return []
+    cos_p = max(-1.0, min(1.0, cos_p))
+    base = math.atan2(dy, dx)
+    turn = math.acos(cos_p)
+    return [(p[0] + rp * math.cos(base + s * turn), p[1] + rp * math.sin(base + s * turn)) for s in (1, -1)]
+
+
+def rocker_design_candidates(K: float, CD: float, c1: tuple[float, float], c2: tuple[float, float], *,
+                             BC: float | None = None, AB: float | None = None, AC1: float | None = None,
+                             frame_line: bool = False, AD: float | None = None) -> list[tuple[float, float]]:
+    """Every position of A (D at the origin, rocker extremes at c1, c2) meeting the closing condition.
+
+    No validity filter here: see :func:`rocker_design`.
+    """
+    th = math.radians(theta_from_k(K))
+    L = math.dist(c1, c2)
+    out: list[tuple[float, float]] = []
+    if th == 0.0:                           # K = 1: A on the line C1C2, beyond one end
+        ux, uy = (c2[0] - c1[0]) / L, (c2[1] - c1[1]) / L
+        if frame_line:                      # meets the horizontal through D
+            if abs(uy) < 1e-15:
+                return []
+            t = -c1[1] / uy
+            return [(c1[0] + t * ux, 0.0)]
+        if AD is not None:                  # at distance AD from D: t² + 2t(c1·u) + |c1|² − AD² = 0
+            bq = c1[0] * ux + c1[1] * uy
+            disc = bq * bq - (c1[0] ** 2 + c1[1] ** 2 - AD * AD)
+            if disc < 0:
+                return []
+            return [(c1[0] + t * ux, c1[1] + t * uy) for t in (-bq - math.sqrt(disc), -bq + math.sqrt(disc))]
+        raise ValueError("K = 1 needs AD or frame_line")
+    pairs: list[tuple[float, float]] = []   # (distance to c1, distance to c2)
+    if BC is not None or AB is not None:
+        if BC is not None:
+            uv = (4 * BC * BC - L * L) / (2 * (1 + math.cos(th)))
+            s, d = 2 * BC, math.sqrt(max(0.0, 4 * BC * BC - 4 * uv))
+        else:
+            uv = (L * L - 4 * AB * AB) / (2 * (1 - math.cos(th)))
+            d = 2 * AB
+            s = math.sqrt(d * d + 4 * uv)
+        u, v = (s - d) / 2, (s + d) / 2
+        pairs = [(u, v), (v, u)]
+    elif AC1 is not None:                   # triangle A c1 c2 with side AC1 and angle θ at A
+        disc = L * L - (AC1 * math.sin(th)) ** 2
+        if disc >= 0:
+            for w in (AC1 * math.cos(th) - math.sqrt(disc), AC1 * math.cos(th) + math.sqrt(disc)):
+                if w > 0:
+                    pairs.append((AC1, w))
+    elif frame_line:                        # A = (x, 0) with ∠c1 A c2 = θ: bracket and bisect the angle
+        return _frame_line_points(c1, c2, th)
+    else:
+        raise ValueError("give one of BC, AB, AC1, frame_line")
+    for rp, rq in pairs:
+        if rp > 0 and rq > 0:
+            out += _trilaterate(c1, c2, rp, rq)
+    return out
+
+
+def _frame_line_points(c1, c2, th: float) -> list[tuple[float, float]]:
+    def f(x: float) -> float:
+        a = math.atan2(c1[1], c1[0] - x)
+        b = math.atan2(c2[1], c2[0] - x)
+        return abs(math.remainder(a - b, 2 * math.pi)) - th
+
+    span = 50 * max(math.hypot(*c1), math.hypot(*c2))
+    xs = [-span + 2 * span * i / 20000 for i in range(20001)]
+    roots = []
+    for x0, x1 in zip(xs, xs[1:]):
+        f0, f1 = f(x0), f(x1)
+        if f0 == 0.0:
+            roots.append(x0)
+        elif f0 * f1 < 0:
+            for _ in range(200):
+                xm = (x0 + x1) / 2
+                if f(x0) * f(xm) <= 0:
+                    x1 = xm
+                else:
+                    x0 = xm
+            roots.append((x0 + x1) / 2)
+    return [(x, 0.0) for x in roots]
+
+
+def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float, float],
+                  **closing: float | bool | None) -> list[dict[str, float]]:
+    """Every valid crank-rocker for the rocker extremes c1, c2 (D at the origin) and one closing condition.
+
+    Valid: AB is a crank by Grashof (shortest, s + l ≤ p + q) and the two extremes lie on one side of the
+    frame line AD (otherwise the linkage's real extreme positions are not c1 and c2). Each solution gives
+    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage.
+    """
+    from .linkages import crank_rocker_extremes
+
+    sols = []
+    for ax, ay in rocker_design_candidates(K, CD, c1, c2, **closing):
+        d1, d2 = math.dist((ax, ay), c1), math.dist((ax, ay), c2)
+        a, b = abs(d2 - d1) / 2, (d1 + d2) / 2
+        ad = math.hypot(ax, ay)
+        if ad == 0 or a == 0:
+            continue
+        s1 = ax * c1[1] - ay * c1[0]         # sides of the line A→D (D at origin): cross(D − A, C − A)
+        s2 = ax * c2[1] - ay * c2[0]
+        if s1 * s2 <= 0:
+            continue
+        ls = sorted([b, CD, ad])
+        if a >= ls[0] or a + ls[2] > (ls[0] + ls[1]) * (1 + 1e-12):
+            continue
+        ext = crank_rocker_extremes(a, b, CD, ad)
+        sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),
+                     "theta": ext["theta"], "K": K, "psi": ext["psi"], "gamma_min": ext["gamma_min"]})
+    return sols

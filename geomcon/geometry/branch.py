@@ -196,6 +196,28 @@ class ToLeftOf(Branch):
 
 
 @dataclass(frozen=True)
+class Leftmost(Branch):
+    """The left one of the two intersections in the drawing (smaller x)."""
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: -q.x, "the left one")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        return ("the left intersection", "左侧的交点")
+
+
+@dataclass(frozen=True)
+class Rightmost(Branch):
+    """The right one of the two intersections in the drawing (larger x)."""
+
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        return _pick(cands, lambda q: q.x, "the right one")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        return ("the right intersection", "右侧的交点")
+
+
+@dataclass(frozen=True)
 class NearestTo(Branch):
     """The intersection nearest to point ``p``."""
 

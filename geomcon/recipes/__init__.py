@@ -3,17 +3,18 @@
 Examples
 --------
 >>> sorted(RECIPES)[:3]
-['crank_rocker.extremes', 'crank_slider.extremes', 'guide_bar.extremes']
+['crank_rocker.extremes', 'crank_slider.design_by_K', 'crank_slider.extremes']
 >>> get_recipe("crank_rocker.extremes").answers[0].name
 'theta'
 """
 from __future__ import annotations
 
 from ..errors import ProblemError
-from . import crank_rocker, crank_slider, crank_slider_design, guide_bar
+from . import crank_rocker, crank_rocker_design, crank_slider, crank_slider_design, guide_bar
 from .base import Construction, Quantity, Recipe
 
-RECIPES: dict[str, Recipe] = {r.name: r for r in (crank_rocker.RECIPE, crank_slider.RECIPE, crank_slider_design.RECIPE,
+RECIPES: dict[str, Recipe] = {r.name: r for r in (crank_rocker.RECIPE, crank_rocker_design.RECIPE, crank_slider.RECIPE,
+                                                crank_slider_design.RECIPE,
                                                 guide_bar.RECIPE)}
 
 

@@ -8,7 +8,7 @@ Examples
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
 from ..scene import Scene
@@ -52,8 +52,9 @@ class Quantity:
 class Construction:
     """A built scene plus the map from public names to its step keys.
 
-    ``solutions`` lists, for problems with several valid solutions, the answer→step-key map of each; the
-    first is the textbook's choice and equals ``answers``.
+    ``solutions`` lists, for problems with several solutions, the answer→step-key map of each candidate in
+    the textbook's order of preference; a map may name a boolean ``_valid`` step, and the first valid
+    candidate is the textbook's choice. ``no_solution`` is the refusal when no candidate is valid.
     """
 
     scene: Scene
@@ -61,7 +62,7 @@ class Construction:
     points: Mapping[str, str]
     solutions: tuple[Mapping[str, str], ...] = ()
     warnings: tuple[str, ...] = ()
-    figure: Mapping[str, str] = field(default_factory=dict)
+    no_solution: str = ""
 
 
 @dataclass(frozen=True)
@@ -90,6 +91,9 @@ class Recipe:
         ``back_check(given, answers) -> [(quantity, rebuilt, required, unit), ...]``: a design recipe rebuilds
         the designed linkage with the core's ``*.extremes`` construction and returns what it reproduces
         (K, H, ψ, the closing condition) next to what the problem required.
+    order : callable or None
+        Sort key of a solution's answers: the textbook's order of preference among several solutions (the
+        construction's valid candidates are sorted by it; the twin returns its solutions in that order).
     """
 
     name: str
@@ -101,6 +105,7 @@ class Recipe:
     analytic: Callable[[Mapping[str, Any]], list[dict[str, float]]]
     validate: Callable[[Mapping[str, Any]], list[str]] | None = None
     back_check: Callable[[Mapping[str, Any], Mapping[str, float]], list[tuple[str, float, float, str]]] | None = None
+    order: Callable[[Mapping[str, float]], Any] | None = None
 
     def given_names(self) -> tuple[str, ...]:
         """Names of all givens, required first."""

@@ -60,20 +60,24 @@ def arc_from_to(circle: Circle, start: Point, end: Point) -> Arc:
     return Arc(circle.center, circle.r, a0, sweep)
 
 
-def add_theta_circle(sc: Scene, C1: Ref, C2: Ref, theta: Ref, side: int, *, side_words: tuple[str, str]) -> Ref:
-    """Add the textbook's three steps (C2P ⊥ C1C2, ∠C2C1P = 90° − θ, circle C1C2P); return the circle.
+def add_theta_circle(sc: Scene, C1: Ref, C2: Ref, theta: Ref, side: int, *, side_words: tuple[str, str],
+                     prefix: str = "", label: str = "P") -> Ref:
+    """Add the textbook's steps (C2P ⊥ C1C2, ∠C2C1P = 90° − θ, circle C1C2P); return the circle.
 
-    ``side`` +1 puts P (and the arc from which C1C2 is seen under θ) on the left of C1→C2.
+    ``side`` +1 puts P (and the arc from which C1C2 is seen under θ) on the left of C1→C2. ``prefix`` keeps
+    the keys of a second θ-circle apart; the perpendicular at C2 is shared.
     """
     en, zh = side_words
-    n2 = sc.add("n2", perpendicular_at, C1, C2, caption=("Perpendicular to C1C2 at C2", "过 C2 作 C1C2 的垂线"))
-    compl = sc.add("compl", complement_turn, theta, side, visible=False, unit="deg")
-    rP = sc.add("rP", ray_from, C1, C2, compl,
+    n2 = Ref("n2") if "n2" in sc else sc.add("n2", perpendicular_at, C1, C2,
+                                              caption=("Perpendicular to C1C2 at C2", "过 C2 作 C1C2 的垂线"))
+    compl = sc.add(f"{prefix}compl", complement_turn, theta, side, visible=False, unit="deg")
+    rP = sc.add(f"{prefix}rP", ray_from, C1, C2, compl,
                 caption=(f"From C1 draw a line at 90° − θ to C1C2, {en}", f"过 C1 作与 C1C2 成 90° − θ 的直线({zh})"))
-    P = sc.add("P", meet_lines, rP, n2, style="point", label="P", caption=("The two lines meet at P", "两线交于 P"))
-    return sc.add("kTheta", circle_through3, C1, C2, P, style="theta-circle",
-                  caption=("The circle through C1, C2, P: from its arc C1C2 is seen under θ",
-                           "作 △C1C2P 的外接圆(圆上各点对 C1C2 张角为 θ)"))
+    P = sc.add(f"{prefix}P", meet_lines, rP, n2, style="point", label=label,
+               caption=(f"The two lines meet at {label}", f"两线交于 {label}"))
+    return sc.add(f"{prefix}kTheta", circle_through3, C1, C2, P, style="theta-circle",
+                  caption=(f"The circle through C1, C2, {label}: from its arc {en} C1C2 is seen under θ",
+                           f"作 △C1C2{label} 的外接圆(其{zh}的圆弧上各点对 C1C2 张角为 θ)"))
 
 
 def add_seeing_circle(sc: Scene, key: str, C1: Ref, C2: Ref, beta: Ref, side: int, caption: tuple[str, str]) -> Ref:

@@ -83,7 +83,8 @@ class Scene:
     # ------------------------------------------------------------------ building
     def add(self, key: str, op: Callable[..., Any], *args: Any, caption: tuple[str, str] = ("", ""),
             role: Role = Role.CONSTRUCTION, style: str = "", label: str | None = None,
-            branch: Branch | None = None, visible: bool = True, unit: str = "", **kwargs: Any) -> Ref:
+            branch: Branch | None = None, visible: bool = True, unit: str = "", optional: bool = False,
+            **kwargs: Any) -> Ref:
         """Add a step and return a :class:`Ref` to it.
 
         Raises
@@ -93,7 +94,7 @@ class Scene:
         """
         if key in self._steps:
             raise KeyError(f"step '{key}' defined twice")
-        step = Step(key, op, tuple(args), dict(kwargs), caption, role, style, label, branch, visible, unit)
+        step = Step(key, op, tuple(args), dict(kwargs), caption, role, style, label, branch, visible, unit, optional)
         missing = [d for d in step.deps() if d not in self._steps]
         if missing:
             raise KeyError(f"step '{key}' refers to unknown step(s) {missing}")
@@ -186,8 +187,12 @@ class Scene:
         try:
             args = _resolve(step.args, self._memo)
             kwargs = {n: _resolve(v, self._memo) for n, v in step.kwargs.items()}
+            if step.optional and (None in args or None in kwargs.values()):
+                return None
             out = step.op(*args, **kwargs)
             if step.branch is not None:
+                if not out and step.optional:
+                    return None
                 if not out:
                     raise NoIntersection(_no_meet_message(*args[:2]))
                 out = _resolve(step.branch, self._memo).choose(out)

@@ -71,6 +71,9 @@ class Step:
         False for helper values (a radius, an intermediate number) that are neither drawn nor numbered.
     unit : str
         "mm", "deg" or "" for measurements.
+    optional : bool
+        A candidate of a multi-solution construction: an empty intersection gives ``None`` instead of an
+        error, and so does any step whose arguments include ``None``.
     """
 
     key: str
@@ -84,6 +87,7 @@ class Step:
     branch: Branch | None = None
     visible: bool = True
     unit: str = ""
+    optional: bool = False
 
     def deps(self) -> tuple[str, ...]:
         """Keys of the steps this step refers to, in order of appearance, without repeats."""

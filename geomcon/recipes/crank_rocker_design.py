@@ -1,0 +1,485 @@
+"""``crank_rocker.design_by_K``: a crank-rocker with time ratio K, rocker CD and its extreme positions.
+
+Two families of exam problems:
+
+- **positions given** (``psi``, or the directions ``phi1``, ``phi2`` of DC1, DC2 from the horizontal through D):
+  the θ-circles through C1, C2 (one on D's side of C1C2, one on the far side) carry every possible A; one
+  closing condition picks A on them:
+  ``BC`` (F on C1A extended with AF = AC2 sees C1C2 under θ/2 and lies at C1F = 2·BC),
+  ``AB`` (E on AC2 with AE = AC1 sees C1C2 under 90° + θ/2 and lies at C2E = 2·AB),
+  ``AC1`` (the circle about C1 of that radius), ``frame_line`` (A on the horizontal through D).
+  K = 1 puts A on the line C1C2 itself (with ``AD`` or ``frame_line``).
+- **frame given** (``AD`` and the angle ``phi`` = ∠ADC of one extreme position C1): the other extreme
+  position lies on the rocker circle where a line through A at ±θ to AC1 meets it.
+
+Every candidate is built; the valid ones (AB a crank by Grashof, C1 and C2 on one side of AD, so that they
+really are the designed linkage's extreme positions) are the ``solutions``; the textbook's choice is the
+first by :func:`preference`: C1 the folded position, then A on D's side of C1C2, then the shorter frame.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.design_by_k import rocker_design
+from ..analytic.linkages import theta_from_k
+from ..errors import NotAMechanism
+from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherThan, Point, RightOf, Rightmost,
+                        circle, circle_circle, line_circle, line_line, line_through, midpoint, point_along, segment)
+from ..scene import Ref, Role, Scene, marks
+from ..tolerance import tol
+from .base import Construction, Quantity, Recipe
+from .common import add_bar, angle_deg, length, transmission_deg
+from .crank_rocker import construct as extremes_construct
+from .theta_circle import add_seeing_circle, add_theta_circle, ray_from
+
+GIVENS = (
+    Quantity("K", "", "time-ratio coefficient", minimum=1.0, inclusive=True),
+    Quantity("CD", "mm", "rocker"),
+    Quantity("psi", "deg", "rocker swing ∠C1DC2 (positions given)", required=False),
+    Quantity("phi1", "deg", "direction of DC1 from the horizontal through D, counter-clockwise", required=False, minimum=None),
+    Quantity("phi2", "deg", "direction of DC2 from the horizontal through D, counter-clockwise", required=False, minimum=None),
+    Quantity("BC", "mm", "closing condition: coupler", required=False),
+    Quantity("AB", "mm", "closing condition: crank", required=False),
+    Quantity("AC1", "mm", "closing condition: distance from A to C1", required=False),
+    Quantity("frame_line", "bool", "closing condition: A on the horizontal through D", required=False, default=False),
+    Quantity("AD", "mm", "frame (K = 1 with positions given, or with phi)", required=False),
+    Quantity("phi", "deg", "angle ∠ADC1 between the frame and the given extreme position DC1 (frame given)",
+             required=False),
+    Quantity("gamma_allow", "deg", "smallest admissible transmission angle", required=False),
+)
+ANSWERS = (
+    Quantity("AB", "mm", "crank"),
+    Quantity("BC", "mm", "coupler"),
+    Quantity("AD", "mm", "frame"),
+    Quantity("CD", "mm", "rocker (as given)"),
+    Quantity("psi", "deg", "rocker swing of the designed linkage"),
+    Quantity("gamma_min", "deg", "smallest transmission angle of the designed linkage"),
+    Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
+    Quantity("K", "", "time-ratio coefficient (as given)"),
+    Quantity("C1_folded", "", "1 when the extreme position C1 is the folded one (AC1 = BC − AB), else 0"),
+    Quantity("A_near", "", "1 when A lies on D's side of C1C2 (always 1 when the frame is given)"),
+)
+CLOSINGS = ("BC", "AB", "AC1", "frame_line", "AD")
+
+
+# ----------------------------------------------------------------------------------------- problem forms
+def _form(g: Mapping[str, Any]) -> tuple[str, str]:
+    """("positions" | "frame", closing condition name), or a refusal naming what is missing or extra."""
+    has = {k for k in ("psi", "phi1", "phi2", "phi") if g.get(k) is not None}
+    closing = [k for k in CLOSINGS if g.get(k) not in (None, False)]
+    if "phi" in has:
+        if has - {"phi"} or set(closing) - {"AD"} or "AD" not in closing:
+            raise NotAMechanism("with phi (frame given) give AD and neither psi, phi1, phi2 nor another closing condition")
+        return "frame", "AD"
+    if has == {"psi"} or has == {"phi1", "phi2"}:
+        wanted = ("AD", "frame_line") if g["K"] == 1.0 else ("BC", "AB", "AC1", "frame_line")
+        if len(closing) != 1 or closing[0] not in wanted:
+            raise NotAMechanism(f"give exactly one closing condition of {', '.join(wanted)} (got {', '.join(closing) or 'none'})")
+        if closing[0] == "frame_line" and has == {"psi"}:
+            raise NotAMechanism("frame_line needs the directions phi1, phi2 of the extreme positions, not only psi")
+        return "positions", closing[0]
+    raise NotAMechanism("give the rocker's extreme positions (psi, or phi1 and phi2), or the frame (AD and phi)")
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    _form(g)
+    theta = theta_from_k(g["K"])
+    if theta >= 180.0 or g["K"] >= 1e12:
+        raise NotAMechanism(f"K = {g['K']:g} gives θ = {theta:g}°: too close to 180°")
+    if g.get("psi") is not None and not 0.0 < g["psi"] < 180.0:
+        raise NotAMechanism(f"psi = {g['psi']:g}° must lie in (0°, 180°)")
+    if g.get("phi1") is not None and math.isclose(g["phi1"] % 360, g["phi2"] % 360):
+        raise NotAMechanism(f"phi1 = phi2 = {g['phi1']:g}°: the rocker does not swing")
+    return []
+
+
+def extreme_positions(g: Mapping[str, Any]) -> tuple[Point, Point]:
+    """C1, C2 of the positions family, D at the origin (C1 on the left when only ψ is given)."""
+    CD = g["CD"]
+    if g.get("psi") is not None:
+        a1, a2 = 90.0 + g["psi"] / 2, 90.0 - g["psi"] / 2
+    else:
+        a1, a2 = g["phi1"], g["phi2"]
+    return (Point(CD * math.cos(math.radians(a1)), CD * math.sin(math.radians(a1))),
+            Point(CD * math.cos(math.radians(a2)), CD * math.sin(math.radians(a2))))
+
+
+# ----------------------------------------------------------------------------------------- step operations
+def half_difference(A: Point, P: Point, Q: Point) -> float:
+    """|AQ − AP| / 2: the crank of a design whose extreme positions are P and Q."""
+    return abs(abs(Q - A) - abs(P - A)) / 2.0
+
+
+def half_sum(A: Point, P: Point, Q: Point) -> float:
+    """(AP + AQ) / 2: the coupler."""
+    return (abs(P - A) + abs(Q - A)) / 2.0
+
+
+def folded_flag(A: Point, P1: Point, P2: Point) -> float:
+    """1.0 when P1 is the folded extreme position (nearer to A)."""
+    return 1.0 if abs(P1 - A) < abs(P2 - A) else 0.0
+
+
+def near_flag(A: Point, C1: Point, C2: Point, D: Point) -> float:
+    """1.0 when A and D lie on the same side of the line C1C2."""
+    u = C2 - C1
+    return 1.0 if u.cross(A - C1) * u.cross(D - C1) > 0 else 0.0
+
+
+def one(*_: Any) -> float:
+    """1.0 (A_near of the frame family)."""
+    return 1.0
+
+
+def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float) -> bool:
+    """A crank-rocker with extreme positions P1, P2: AB is a crank by Grashof and P1, P2 lie on one side of AD."""
+    AD = abs(D - A)
+    a, b = half_difference(A, P1, P2), half_sum(A, P1, P2)
+    if AD <= tol(CD) or a <= tol(b):
+        return False
+    u = D - A
+    s1, s2 = u.cross(P1 - A), u.cross(P2 - A)
+    if s1 * s2 <= 0 or min(abs(s1), abs(s2)) <= tol(AD, CD) * AD:
+        return False
+    ls = sorted([b, CD, AD])
+    return a < ls[0] and a + ls[2] <= ls[0] + ls[1] + tol(ls[2])
+
+
+def gamma_min_of(A: Point, D: Point, P1: Point, CD: float, a: float, b: float) -> float:
+    """γmin of the designed linkage, read at the two positions with the crank along the frame, on the side of
+    AD where the extreme positions are (the construction of ``crank_rocker.extremes``)."""
+    side = LeftOf(A, D) if (D - A).cross(P1 - A) > 0 else RightOf(A, D)
+    kD = circle(D, CD)
+    out = []
+    for sign in (1.0, -1.0):
+        B = point_along(A, D, sign * a)
+        C = side.choose(circle_circle(circle(B, b), kD))
+        out.append(transmission_deg(B, C, D))
+    return min(out)
+
+
+def preference(sol: Mapping[str, float]) -> tuple[float, float, float]:
+    """The textbook's order of solutions: C1 folded first, then A on D's side, then the shorter frame."""
+    return (-sol["C1_folded"], -sol["A_near"], sol["AD"])
+
+
+def best_index(*flat: Any) -> int | None:
+    """Index of the preferred valid candidate; ``flat`` holds (valid, C1_folded, A_near, AD) per candidate."""
+    best = None
+    for i in range(0, len(flat), 4):
+        valid, f, n, ad = flat[i:i + 4]
+        if valid:
+            key = preference({"C1_folded": f, "A_near": n, "AD": ad})
+            if best is None or key < best[0]:
+                best = (key, i // 4)
+    return None if best is None else best[1]
+
+
+def pick(i: int | None, *values: Any) -> Any:
+    """The ``i``-th value (None when there is no valid candidate)."""
+    return None if i is None else values[i]
+
+
+def nearer(A: Point, P: Point, Q: Point) -> Point:
+    """The extreme position nearer to A (the folded one)."""
+    return P if abs(P - A) < abs(Q - A) else Q
+
+
+def farther(A: Point, P: Point, Q: Point) -> Point:
+    """The extreme position farther from A (the extended one)."""
+    return Q if abs(P - A) < abs(Q - A) else P
+
+
+def _theta_of(K: float) -> float:
+    return theta_from_k(K)
+
+
+def _plus(theta: float, k: float, c: float) -> float:
+    return k * theta + c
+
+
+def _times(x: float, k: float) -> float:
+    return k * x
+
+
+# ----------------------------------------------------------------------------------------- construction
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build every candidate of the design and the drawing of the textbook's choice."""
+    family, closing = _form(g)
+    K, CD = g["K"], g["CD"]
+    sc = Scene("Crank-rocker designed by K")
+    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
+                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}", f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}"))
+    sc.add("K", float, K, visible=False)
+    sc.add("CD", float, CD, visible=False)
+    if family == "positions":
+        cands = _positions_candidates(sc, g, closing, th)
+    else:
+        cands = _frame_candidates(sc, g, th)
+    D = Ref("D")
+    sols, flat = [], []
+    for i, (A, P1, P2, near) in enumerate(cands, 1):
+        opt = dict(optional=True, visible=False)
+        sc.add(f"AB_{i}", half_difference, A, P1, P2, unit="mm", **opt)
+        sc.add(f"BC_{i}", half_sum, A, P1, P2, unit="mm", **opt)
+        sc.add(f"AD_{i}", length, A, D, unit="mm", **opt)
+        sc.add(f"psi_{i}", angle_deg, D, P1, P2, unit="deg", **opt)
+        sc.add(f"C1_folded_{i}", folded_flag, A, P1, P2, **opt)
+        sc.add(f"A_near_{i}", near, A, P1, P2, D, **opt)
+        sc.add(f"valid_{i}", is_valid, A, P1, P2, D, CD, **opt)
+        sc.add(f"gamma_min_{i}", gamma_min_of, A, D, P1, CD, Ref(f"AB_{i}"), Ref(f"BC_{i}"), unit="deg", **opt)
+        sols.append({"AB": f"AB_{i}", "BC": f"BC_{i}", "AD": f"AD_{i}", "CD": "CD", "psi": f"psi_{i}",
+                     "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
+                     "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
+        flat += [Ref(f"valid_{i}"), Ref(f"C1_folded_{i}"), Ref(f"A_near_{i}"), Ref(f"AD_{i}")]
+    idx = sc.add("choice", best_index, *flat, visible=False)
+    _draw_choice(sc, idx, cands, th)
+    answers = {name: f"chosen_{name}" for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near")}
+    answers.update(CD="CD", theta="theta", K="K")
+    for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near"):
+        sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False, optional=True)
+    points = {"D": "D", "A": "A", "C1": "Cf", "C2": "Ce", "B1": "B1", "B2": "B2"}
+    return Construction(sc, answers, points, solutions=tuple(sols),
+                        no_solution=_no_solution_message(g, closing))
+
+
+def _no_solution_message(g: Mapping[str, Any], closing: str) -> str:
+    value = g.get(closing)
+    return (f"no valid crank-rocker: no point of the θ-circles meets {closing} = {value} with AB a crank "
+            "(Grashof) and C1, C2 on one side of AD")
+
+
+def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref) -> list:
+    CD = g["CD"]
+    c1, c2 = extreme_positions(g)
+    symmetric = g.get("psi") is not None
+    D = sc.given("D", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot D of the rocker", "摇杆固定铰链 D"))
+    sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground", caption=("Ground at D", "D 处机架"))
+    C1 = sc.given("C1", c1, style="joint", caption=(f"Extreme position DC1, CD = {CD:g}", f"作摇杆极限位置 DC1,CD = {CD:g}"))
+    C2 = sc.given("C2", c2, style="joint", caption=("Extreme position DC2: the rocker swings through ψ = ∠C1DC2",
+                                                    "作摇杆另一极限位置 DC2,摆角 ψ = ∠C1DC2"))
+    add_bar(sc, "DC1", D, C1, ("Rocker DC1", "摇杆 DC1"), role=Role.GIVEN)
+    add_bar(sc, "DC2", D, C2, ("Rocker DC2", "摇杆 DC2"), role=Role.GIVEN)
+    sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
+    near_side = 1 if (c2 - c1).cross(Point(0, 0) - c1) > 0 else -1
+    xaxis = None
+    if closing == "frame_line":
+        xaxis = sc.add("xaxis", Line, D, Point(1.0, 0.0), role=Role.GIVEN, style="frame",
+                       caption=("The frame line: the horizontal through D", "机架线:过 D 的水平线"))
+    opt = dict(optional=True, style="candidate")
+    out = []
+    if g["K"] == 1.0:
+        lc = sc.add("lC", line_through, C1, C2, caption=("K = 1: A lies on the line C1C2", "K = 1:A 在 C1C2 连线上"))
+        if closing == "frame_line":
+            out.append((sc.add("A_1", _meet_or_none, lc, xaxis, label="A", **opt,
+                               caption=("It meets the frame line at A", "交机架线于 A")), C1, C2, near_flag))
+        else:
+            kAD = sc.add("kAD", circle, D, g["AD"], caption=(f"Circle about D with radius AD = {g['AD']:g}",
+                                                            f"以 D 为圆心、AD = {g['AD']:g} 为半径作圆"))
+            rules = [(NearestTo(C1), "A")] + ([] if symmetric else [(NearestTo(C2), "A′")])
+            for j, (rule, lab) in enumerate(rules, 1):
+                out.append((sc.add(f"A_{j}", line_circle, lc, kAD, branch=rule, label=lab, **opt,
+                                   caption=(f"It meets the line C1C2 at {lab}", f"交 C1C2 连线于 {lab}")), C1, C2, near_flag))
+        return out
+    sides = ((near_side, "n", "on D's side", "D 所在一侧", "P"), (-near_side, "f", "on the far side", "远离 D 的一侧", "P′"))
+    shared: dict[str, Ref] = {}
+    n = 0
+    for s, pre, en, zh, lab in sides:
+        kT = add_theta_circle(sc, C1, C2, th, s, side_words=(en, zh), prefix=pre, label=lab)
+        side_rule = LeftOf(C1, C2) if s > 0 else RightOf(C1, C2)
+        if closing == "BC":
+            half = sc.add(f"{pre}half", _times, th, 0.5, visible=False, unit="deg")
+            kF = add_seeing_circle(sc, f"{pre}kF", C1, C2, half, s, (f"Circle seeing C1C2 under θ/2, {en}",
+                                                                    f"作对 C1C2 张角为 θ/2 的圆({zh})"))
+            if "kC1" not in shared:
+                shared["kC1"] = sc.add("kC1", circle, C1, 2 * g["BC"], caption=(
+                    f"Circle about C1 with radius 2·BC = {2 * g['BC']:g}", f"以 C1 为圆心、2BC = {2 * g['BC']:g} 为半径作圆"))
+            rules = [(FarthestFrom(C2), "F")] + ([] if symmetric else [(NearestTo(C2), "F*")])
+            for rule, flab in rules:
+                n += 1
+                F = sc.add(f"F_{n}", circle_circle, shared["kC1"], kF, branch=rule, label=f"{flab}{pre}", **opt,
+                           caption=(f"They meet at {flab}: AF = AC2 (the other end)", f"两圆交于 {flab}"))
+                lF = sc.add(f"lF_{n}", line_through, C1, F, optional=True, caption=("Join C1F", "连接 C1F"))
+                out.append((sc.add(f"A_{n}", line_circle, lF, kT, branch=OtherThan(C1), label=f"A{n}", **opt,
+                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag))
+        elif closing == "AB":
+            beta = sc.add(f"{pre}beta", _plus, th, 0.5, 90.0, visible=False, unit="deg")
+            kE = add_seeing_circle(sc, f"{pre}kE", C1, C2, beta, s, (f"Circle seeing C1C2 under 90° + θ/2, {en}",
+                                                                    f"作对 C1C2 张角为 90° + θ/2 的圆({zh})"))
+            ends = [(C2, C1, "kC2", "C2")] + ([] if symmetric else [(C1, C2, "kC1", "C1")])
+            for far_end, near_end, kkey, nm in ends:
+                if kkey not in shared:
+                    shared[kkey] = sc.add(kkey, circle, far_end, 2 * g["AB"], caption=(
+                        f"Circle about {nm} with radius 2·AB = {2 * g['AB']:g}", f"以 {nm} 为圆心、2AB = {2 * g['AB']:g} 为半径作圆"))
+                n += 1
+                E = sc.add(f"E_{n}", circle_circle, shared[kkey], kE, branch=side_rule, label=f"E{n}", **opt,
+                           caption=("They meet at E (on AC of the extended end, AE = the folded distance)", "两圆交于 E"))
+                lE = sc.add(f"lE_{n}", line_through, far_end, E, optional=True, caption=(f"Join {nm}E", f"连接 {nm}E"))
+                out.append((sc.add(f"A_{n}", line_circle, lE, kT, branch=OtherThan(far_end), label=f"A{n}", **opt,
+                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag))
+        elif closing == "AC1":
+            if "kA" not in shared:
+                shared["kA"] = sc.add("kA", circle, C1, g["AC1"], caption=(
+                    f"Circle about C1 with radius AC1 = {g['AC1']:g}", f"以 C1 为圆心、AC1 = {g['AC1']:g} 为半径作圆"))
+            for rule in (FarthestFrom(C2), NearestTo(C2)):
+                n += 1
+                out.append((sc.add(f"A_{n}", circle_circle, shared["kA"], kT, branch=rule, label=f"A{n}", **opt,
+                                   caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag))
+        else:  # frame_line
+            for rule in (Leftmost(), Rightmost()):
+                n += 1
+                out.append((sc.add(f"A_{n}", line_circle, xaxis, kT, branch=rule, label=f"A{n}", **opt,
+                                   caption=("The frame line meets the θ-circle at A", "机架线交 θ 圆于 A")), C1, C2, near_flag))
+    return out
+
+
+def _meet_or_none(l1: Line, l2: Line) -> Point | None:
+    """The crossing of two lines, or None when they are parallel."""
+    pts = line_line(l1, l2)
+    return pts[0] if pts else None
+
+
+def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
+    CD, AD, phi = g["CD"], g["AD"], g["phi"]
+    A = sc.given("A_0", Point(0.0, 0.0), style="pivot", label="A", caption=("Fixed pivot A", "固定铰链 A"))
+    D = sc.given("D", Point(AD, 0.0), style="pivot", caption=(f"Fixed pivot D with AD = {AD:g}", f"取 AD = {AD:g} 得固定铰链 D"))
+    sc.add("AD_frame", segment, A, D, role=Role.GIVEN, style="frame", caption=("The frame AD", "机架 AD"))
+    c = Point(AD + CD * math.cos(math.radians(180.0 - phi)), CD * math.sin(math.radians(180.0 - phi)))
+    C1 = sc.given("C1", c, style="joint", caption=(f"The given extreme position DC1 at ∠ADC1 = {phi:g}°",
+                                                   f"作已知极限位置 DC1,∠ADC1 = {phi:g}°"))
+    add_bar(sc, "DC1", D, C1, ("Rocker DC1", "摇杆 DC1"), role=Role.GIVEN)
+    kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
+    sc.add("AC1s", segment, A, C1, style="construction", caption=("Join AC1", "连接 AC1"))
+    out = []
+    senses = ((1.0, "counter-clockwise", "逆时针"),) if g["K"] == 1.0 else ((1.0, "counter-clockwise", "逆时针"),
+                                                                          (-1.0, "clockwise", "顺时针"))
+    n = 0
+    for sign, en, zh in senses:
+        turn = sc.add(f"turn{int(sign)}", _times, th, sign, visible=False, unit="deg")
+        r = sc.add(f"ray{int(sign)}", ray_from, A, C1, turn, caption=(f"Through A a line at θ to AC1, turned {en}",
+                                                                      f"过 A 作与 AC1 成 θ 角的直线({zh})"))
+        line = sc.add(f"line{int(sign)}", _ray_line, r, visible=False)
+        for rule in (NearestTo(A), FarthestFrom(A)):
+            n += 1
+            Cn = sc.add(f"C2_{n}", line_circle, line, kD, branch=rule, label=f"C2,{n}", optional=True, style="candidate",
+                        caption=("It meets the rocker circle at a candidate C2", "交摇杆圆得 C2 的候选位置"))
+            ok = sc.add(f"ahead_{n}", _ahead, A, r, Cn, optional=True, visible=False)
+            out.append((A, C1, ok, one))
+    return out
+
+
+def _ray_line(r) -> Line:
+    return r.line()
+
+
+def _ahead(A: Point, r, C: Point) -> Point | None:
+    """C when it lies on the ray (in front of A), else None: the line meets the circle behind A too."""
+    return C if (C - A).dot(r.direction) > 0 else None
+
+
+def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
+    """The textbook's choice drawn as the result: A, B1, B2 and both extreme positions of the linkage."""
+    A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label="A", optional=True,
+               caption=("The textbook's choice of A (the other valid points are candidates)", "取 A(其余可行点为备选解)"))
+    P1 = sc.add("P1c", pick, idx, *(c[1] for c in cands), visible=False, optional=True)
+    P2 = sc.add("P2c", pick, idx, *(c[2] for c in cands), visible=False, optional=True)
+    Cf = sc.add("Cf", nearer, A, P1, P2, visible=False, optional=True)
+    Ce = sc.add("Ce", farther, A, P1, P2, visible=False, optional=True)
+    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True,
+           caption=("Fixed pivot A", "固定铰链 A"))
+    sc.add("ACf", segment, A, Cf, style="construction", optional=True, caption=("Join A to both extreme positions", "连接 A 与两极限位置"))
+    sc.add("ACe", segment, A, Ce, style="construction", optional=True, caption=("", ""), visible=False)
+    u = sc.add("u_len", length, A, Cf, visible=False, optional=True)
+    E = sc.add("Echoice", point_along, A, Ce, u, style="point", label="E", optional=True,
+               caption=("The arc about A through the folded position meets the other line at E", "以 A 为圆心、AC(折叠)为半径画弧交另一连线于 E"))
+    M = sc.add("Mchoice", midpoint, E, Ce, style="point", label="M", optional=True,
+               caption=("Bisect E and the extended position at M: AB = EM, BC = AM", "平分得 M:AB = EM,BC = AM"))
+    AB = sc.add("AB_draw", length, E, M, visible=False, optional=True)
+    sc.add("AD_link", segment, A, Ref("D"), style="frame", optional=True, caption=("The frame AD", "机架 AD"))
+    mAB = sc.add("mAB", _times, AB, -1.0, visible=False, optional=True)
+    B1 = sc.add("B1", point_along, A, Cf, mAB, role=Role.RESULT, style="joint", label="B1", optional=True,
+                caption=("B1 beyond A on the folded line, AB1 = AB", "在折叠共线位置上取 AB1 = AB"))
+    B2 = sc.add("B2", point_along, A, Ce, AB, role=Role.RESULT, style="joint", label="B2", optional=True,
+                caption=("B2 on the extended line, AB2 = AB", "在拉直共线位置上取 AB2 = AB"))
+    for i, (B, C) in enumerate(((B1, Cf), (B2, Ce)), 1):
+        style = "link" if i == 1 else "link-alt"
+        sc.add(f"AB{i}", segment, A, B, role=Role.RESULT, style=style, optional=True, caption=(f"Crank AB{i}", f"曲柄 AB{i}"))
+        sc.add(f"B{i}C{i}", segment, B, C, role=Role.RESULT, style=style, optional=True, caption=(f"Coupler B{i}C{i}", f"连杆 B{i}C{i}"))
+    sc.add("mark_theta", marks.angle_mark, A, Cf, Ce, "θ", th, None, role=Role.ANNOTATION, style="angle", optional=True,
+           caption=("Mark θ", "标注 θ"))
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """Every valid design by trilateration (:func:`geomcon.analytic.design_by_k.rocker_design`), sorted by
+    :func:`preference`."""
+    family, closing = _form(g)
+    K, CD = g["K"], g["CD"]
+    if family == "positions":
+        c1, c2 = (p.tuple() for p in extreme_positions(g))
+        sols = rocker_design(K, CD, c1, c2, **{closing: g[closing]})
+        if g.get("psi") is not None and closing != "AC1":   # symmetric: mirror images are the same designs
+            sols = [s for s in sols if s["c1_folded"]]
+        def side(x: float, y: float) -> float:             # which side of the line c1→c2
+            return (c2[0] - c1[0]) * (y - c1[1]) - (c2[1] - c1[1]) * (x - c1[0])
+
+        for s in sols:
+            s["C1_folded"] = s["c1_folded"]
+            s["A_near"] = float(side(s["Ax"], s["Ay"]) * side(0.0, 0.0) > 0)
+    else:
+        sols = _frame_family_twin(g)
+    keep = ("AB", "BC", "AD", "CD", "psi", "gamma_min", "theta", "K", "C1_folded", "A_near")
+    return sorted(({k: float(s[k]) for k in keep} for s in sols), key=preference)
+
+
+def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """Frame given: |AC2| = w from w² − 2w·AD·cos β + AD² − CD² = 0 with β = ∠C1AD ± θ (law of cosines)."""
+    from ..analytic.linkages import crank_rocker_extremes
+    CD, AD, phi, K = g["CD"], g["AD"], g["phi"], g["K"]
+    th = theta_from_k(K)
+    x1 = AD - CD * math.cos(math.radians(phi))
+    y1 = CD * math.sin(math.radians(phi))
+    w1 = math.hypot(x1, y1)
+    alpha1 = math.degrees(math.atan2(y1, x1))           # ∠C1AD, C1 above the frame
+    out = []
+    for beta in ({alpha1 + th, alpha1 - th} if th else {alpha1}):
+        cb = math.cos(math.radians(beta))
+        disc = (AD * cb) ** 2 - (AD * AD - CD * CD)
+        if disc < 0:
+            continue
+        for w in (AD * cb - math.sqrt(disc), AD * cb + math.sqrt(disc)):
+            if w <= 0 or not 0 < beta < 180:
+                continue
+            a, b = abs(w - w1) / 2, (w + w1) / 2
+            ls = sorted([b, CD, AD])
+            if a <= 1e-12 * b or a >= ls[0] or a + ls[2] > (ls[0] + ls[1]) * (1 + 1e-12):
+                continue
+            ext = crank_rocker_extremes(a, b, CD, AD)
+            out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": ext["psi"], "gamma_min": ext["gamma_min"],
+                        "theta": th, "K": K, "C1_folded": float(w1 < w), "A_near": 1.0})
+    return out
+
+
+def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
+    """Rebuild with ``crank_rocker.extremes``: K, ψ (when given) and γmin must come back."""
+    sc = extremes_construct({"AB": ans["AB"], "BC": ans["BC"], "CD": ans["CD"], "AD": ans["AD"]}).scene
+    v = sc.evaluate(["K", "psi", "gamma_min"])
+    rows = [("K", v["K"], g["K"], ""), ("gamma_min", v["gamma_min"], ans["gamma_min"], "deg"),
+            ("psi", v["psi"], ans["psi"], "deg")]
+    if g.get("psi") is not None:
+        rows.append(("psi_given", v["psi"], g["psi"], "deg"))
+    return rows
+
+
+RECIPE = Recipe(
+    name="crank_rocker.design_by_K",
+    title="Crank-rocker designed from K, the rocker's extreme positions and one closing condition",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=("D", "A", "C1", "C2", "B1", "B2"),
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+    back_check=back_check,
+    order=preference,
+)
