@@ -194,3 +194,43 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
         sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),
                      "theta": ext["theta"], "K": K, "psi": ext["psi"], "gamma_min": ext["gamma_min"]})
     return sols
+
+
+# ---------------------------------------------------------------------------------------------- guide bars
+def guide_bar_design(K: float, *, AC: float | None = None, AB: float | None = None) -> dict[str, float]:
+    """Oscillating guide-bar with time ratio K: ψ = θ and AB = AC·sin(θ/2) (the guide bar tangent to the
+    crank circle at the extremes).
+
+    >>> r = guide_bar_design(1.8, AB=70)
+    >>> round(r["AC"], 2), round(r["psi"], 2)
+    (161.33, 51.43)
+    """
+    th = theta_from_k(K)
+    s = math.sin(math.radians(th / 2))
+    if AC is not None:
+        AB = AC * s
+    elif AB is not None:
+        AC = AB / s
+    else:
+        raise ValueError("give AC or AB")
+    return {"AB": AB, "AC": AC, "psi": th, "theta": th, "K": K}
+
+
+def shaper_design(K: float, H: float, *, AC: float | None = None, AB: float | None = None,
+                  alpha_allow: float | None = None) -> dict[str, float]:
+    """The guide-bar six-bar of a shaper: the ram's stroke H is the chord of D's arc, H = 2·CD·sin(θ/2); the
+    ram's guide at the middle of the arc's sagitta, h = CD(1 + cos(θ/2))/2 from C, keeps the largest
+    deviation of D from it, CD(1 − cos(θ/2))/2, as small as it can be; with a pressure-angle limit the
+    shortest coupler is DE = that deviation / sin(α_allow).
+
+    >>> r = shaper_design(2, 300, AB=75)
+    >>> round(r["AC"], 6), round(r["CD"], 6), round(r["h"], 3)
+    (150.0, 300.0, 279.904)
+    """
+    out = guide_bar_design(K, AC=AC, AB=AB)
+    half = math.radians(out["theta"] / 2)
+    CD = H / (2 * math.sin(half))
+    out.update(H=H, CD=CD, h=CD * (1 + math.cos(half)) / 2, deviation=CD * (1 - math.cos(half)) / 2)
+    if alpha_allow is not None:
+        out["DE_min"] = out["deviation"] / math.sin(math.radians(alpha_allow))
+    return out

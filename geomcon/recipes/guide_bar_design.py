@@ -1,0 +1,263 @@
+"""``guide_bar.design_by_K`` and ``shaper.design_by_K``: the oscillating guide-bar (and the six-bar of
+shapers and slotters built on it) designed from the time ratio K.
+
+The guide bar's extreme positions are the tangents from C to the crank circle, so ψ = θ and
+AB = AC·sin(θ/2). Construction (A at the origin, the centre line AC vertical, C below A):
+
+- AC given: the extreme positions are the lines through C at ±θ/2 to CA; the perpendiculars from A meet
+  them at B1, B2;
+- AB given: AB1 at 90° − θ/2 to AC on the crank circle, the tangent at B1 meets the centre line at C.
+
+The shaper adds the ram: D on the guide bar at CD from C describes an arc whose chord D1D2 is the stroke H
+(the line parallel to the centre line at H/2 meets CB1 at D1); the ram's guide runs through the middle of
+the arc's sagitta, h = CD(1 + cos(θ/2))/2 from C, so the largest deviation of D from it, half the sagitta,
+is as small as it can be; a coupler DE then meets the guide at a pressure angle of at most
+asin(deviation / DE), and the shortest DE for an allowed angle is deviation / sin α.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.design_by_k import guide_bar_design, shaper_design
+from ..analytic.linkages import theta_from_k
+from ..errors import NotAMechanism
+from ..geometry import (Ahead, Line, NearestTo, Point, circle, foot, line_circle, midpoint, perpendicular,
+                        point_on_ray, reflect)
+from ..scene import Ref, Role, Scene, marks
+from .base import Construction, Quantity, Recipe
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
+from .guide_bar import construct as guide_bar_extremes
+from .theta_circle import meet_lines, ray_from
+
+GUIDE_GIVENS = (
+    Quantity("K", "", "time-ratio coefficient, 1 < K < 3 (θ < 90°)", minimum=1.0),
+    Quantity("AC", "mm", "frame: crank pivot A to guide-bar pivot C (give AC or AB)", required=False),
+    Quantity("AB", "mm", "crank (give AC or AB)", required=False),
+)
+GUIDE_ANSWERS = (
+    Quantity("AB", "mm", "crank"),
+    Quantity("AC", "mm", "frame"),
+    Quantity("psi", "deg", "swing of the guide bar (= θ)"),
+    Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
+    Quantity("K", "", "time-ratio coefficient (as given)"),
+)
+SHAPER_GIVENS = GUIDE_GIVENS[:1] + (Quantity("H", "mm", "stroke of the ram (slider E)"),) + GUIDE_GIVENS[1:] + (
+    Quantity("alpha_allow", "deg", "largest admissible pressure angle at the ram: gives the shortest DE",
+             required=False),
+    Quantity("DE", "mm", "coupler, when chosen: gives the largest pressure angle", required=False),
+)
+SHAPER_ANSWERS = GUIDE_ANSWERS + (
+    Quantity("CD", "mm", "guide bar, C to the coupler joint D"),
+    Quantity("h", "mm", "distance of the ram's guide from C (middle of the sagitta of D's arc)"),
+    Quantity("deviation", "mm", "largest distance of D from the ram's guide, half the sagitta"),
+    Quantity("DE", "mm", "shortest coupler for alpha_allow (or the given DE)"),
+    Quantity("alpha_max", "deg", "largest pressure angle at the ram with that DE"),
+)
+
+
+def _closing(g: Mapping[str, Any]) -> str:
+    have = [k for k in ("AC", "AB") if g.get(k) is not None]
+    if len(have) != 1:
+        raise NotAMechanism(f"give exactly one of AC, AB (got {', '.join(have) or 'none'})")
+    return have[0]
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    _closing(g)
+    th = theta_from_k(g["K"])
+    if th >= 90.0:
+        raise NotAMechanism(f"K = {g['K']:g} gives θ = {th:g}° ≥ 90°: the guide bar would swing through ψ = θ ≥ 90°, "
+                            "more than a guide-bar quick-return drive is built for; use K < 3")
+    if g.get("alpha_allow") is not None and not 0 < g["alpha_allow"] < 90:
+        raise NotAMechanism(f"alpha_allow = {g['alpha_allow']:g}° must lie in (0°, 90°)")
+    if g.get("alpha_allow") is not None and g.get("DE") is not None:
+        raise NotAMechanism("give alpha_allow (to size DE) or DE (to check the pressure angle), not both")
+    return []
+
+
+def _theta_of(K: float) -> float:
+    return theta_from_k(K)
+
+
+def _scaled(x: float, k: float) -> float:
+    return k * x
+
+
+def _sin_ratio(dev: float, alpha_deg: float) -> float:
+    return dev / math.sin(math.radians(alpha_deg))
+
+
+def _pressure(dev: float, de: float) -> float:
+    return math.degrees(math.asin(min(1.0, dev / de)))
+
+
+def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref, Ref]:
+    """A, C, B1, B2 and ψ of the guide-bar part; returns (A, C, B1, B2, theta)."""
+    K = g["K"]
+    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
+                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}; the guide bar swings through ψ = θ",
+                         f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g};导杆摆角 ψ = θ"))
+    sc.add("K", float, K, visible=False)
+    half = sc.add("half", _scaled, th, 0.5, visible=False, unit="deg")
+    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Crank pivot A", "曲柄转动中心 A"))
+    centre = sc.add("centre", Line, A, Point(0.0, -1.0), role=Role.GIVEN, style="frame",
+                    caption=("The centre line through A (vertical)", "过 A 作竖直中心线"))
+    if _closing(g) == "AC":
+        AC = g["AC"]
+        C = add_pivot(sc, "C", Point(0.0, -AC), (f"Guide-bar pivot C on the centre line, AC = {AC:g}",
+                                                 f"在中心线上取 AC = {AC:g} 得导杆摆动中心 C"))
+        rays = []
+        for i, sign in ((1, 1.0), (2, -1.0)):
+            turn = sc.add(f"turn{i}", _scaled, half, sign, visible=False, unit="deg")   # B1 on the left
+            rays.append(sc.add(f"g{i}", ray_from, C, A, turn, caption=(
+                f"Extreme position {i} of the guide bar: through C at θ/2 to CA", f"过 C 作与 CA 成 θ/2 的导杆极限位置 {i}")))
+        Bs = []
+        for i, r in enumerate(rays, 1):
+            line = sc.add(f"gl{i}", _as_line, r, visible=False)
+            Bs.append(sc.add(f"B{i}", foot, line, A, role=Role.RESULT, style="joint", label=f"B{i}",
+                             caption=(f"The perpendicular from A meets it at B{i}", f"自 A 作其垂线,垂足为 B{i}")))
+        B1, B2 = Bs
+        sc.add("AB", length, A, B1, role=Role.MEASUREMENT, unit="mm", caption=("Crank AB = AB1", "曲柄 AB = AB1"))
+        sc.add("AC", length, A, C, visible=False, unit="mm")
+    else:
+        AB = g["AB"]
+        sc.add("kB", circle, A, AB, style="path", caption=(f"Crank circle about A, AB = {AB:g}", f"以 A 为圆心、AB = {AB:g} 作曲柄圆"))
+        comp = sc.add("comp", _complement_turn, half, visible=False, unit="deg")
+        down = sc.given("down", Point(0.0, -1.0), visible=False)
+        r1 = sc.add("rB1", ray_from, A, down, comp, caption=("Through A a ray at 90° − θ/2 to the centre line",
+                                                          "过 A 作与中心线成 90° − θ/2 的射线"))
+        B1 = sc.add("B1", point_on_ray, r1, AB, role=Role.RESULT, style="joint", label="B1",
+                    caption=("It meets the crank circle at B1", "交曲柄圆于 B1"))
+        t1 = sc.add("t1", _tangent_at, A, B1, caption=("The tangent at B1 (perpendicular to AB1)", "过 B1 作曲柄圆的切线"))
+        C = sc.add("C", meet_lines, t1, centre, role=Role.RESULT, style="pivot", label="C",
+                   caption=("It meets the centre line at C", "交中心线于 C"))
+        sc.add("C_ground", marks.ground, C, -math.pi / 2, role=Role.ANNOTATION, style="ground",
+               caption=("Ground at C", "C 处机架"))
+        B2 = sc.add("B2", reflect, B1, centre, role=Role.RESULT, style="joint", label="B2",
+                    caption=("B2, the mirror image of B1 in the centre line", "B1 关于中心线的对称点 B2"))
+        sc.add("AC", length, A, C, role=Role.MEASUREMENT, unit="mm", caption=("Frame AC", "机架 AC"))
+        sc.add("AB", length, A, B1, visible=False, unit="mm")
+    for i, B in enumerate((B1, B2), 1):
+        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style="link" if i == 1 else "link-alt")
+        sc.add(f"right{i}", marks.right_angle, B, A, C, role=Role.ANNOTATION, style="right-angle",
+               caption=(f"∠AB{i}C = 90°", f"∠AB{i}C = 90°"))
+    ps = sc.add("psi", angle_deg, C, B1, B2, role=Role.MEASUREMENT, unit="deg", caption=("ψ = ∠B1CB2", "ψ = ∠B1CB2"))
+    add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
+    return A, C, B1, B2, th
+
+
+def _as_line(r) -> Line:
+    return r.line()
+
+
+def _complement_turn(half: float) -> float:
+    return -(90.0 - half)
+
+
+def _tangent_at(center: Point, p: Point) -> Line:
+    return Line(p, (p - center).perp())
+
+
+def guide_construct(g: Mapping[str, Any]) -> Construction:
+    """Build the guide-bar design."""
+    sc = Scene("Oscillating guide-bar designed by K")
+    A, C, B1, B2, _ = _guide_bar_part(sc, g)
+    for i, B in enumerate((B1, B2), 1):
+        add_bar(sc, f"CB{i}", C, B, (f"Guide bar CB{i}", f"导杆 CB{i}"), style="link" if i == 1 else "link-alt")
+    return Construction(sc, {q.name: q.name for q in GUIDE_ANSWERS}, {n: n for n in ("A", "C", "B1", "B2")})
+
+
+def shaper_construct(g: Mapping[str, Any]) -> Construction:
+    """Build the shaper design: guide-bar part, then the ram's stroke, guide and coupler."""
+    H = g["H"]
+    sc = Scene("Shaper six-bar designed by K")
+    A, C, B1, B2, th = _guide_bar_part(sc, g)
+    centre = Ref("centre")
+    off = sc.add("off", Line, sc.given("Hh", Point(-H / 2, 0.0), visible=False), Point(0.0, 1.0), caption=(
+        f"The line parallel to the centre line at H/2 = {H / 2:g}", f"作与中心线相距 H/2 = {H / 2:g} 的平行线"))
+    ray1 = sc.add("cb1", _line_through_ray, C, B1, visible=False)
+    D1 = sc.add("D1", meet_lines, ray1, off, role=Role.RESULT, style="joint", label="D1",
+                caption=("It meets CB1 extended at D1: D1D2 = H", "交 CB1 延长线于 D1,D1D2 = H"))
+    D2 = sc.add("D2", reflect, D1, centre, role=Role.RESULT, style="joint", label="D2",
+                caption=("D2, the mirror image of D1", "D1 的对称点 D2"))
+    CD = sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Guide bar CD = CD1", "导杆长 CD = CD1"))
+    for i, D in enumerate((D1, D2), 1):
+        add_bar(sc, f"CD{i}", C, D, (f"Guide bar CD{i}", f"导杆 CD{i}"), style="link" if i == 1 else "link-alt")
+    sc.add("arcD", circle, C, CD, style="path", caption=("The arc of D about C", "D 点绕 C 的轨迹圆弧"))
+    T = sc.add("T", line_circle, centre, sc.add("kCD", circle, C, CD, visible=False), branch=Ahead(C, A), style="point",
+               label="T", caption=("The arc's top T on the centre line", "圆弧与中心线的交点 T"))
+    M = sc.add("Mchord", midpoint, D1, D2, style="point", label="M", caption=("The chord's midpoint M", "弦 D1D2 的中点 M"))
+    G = sc.add("G", midpoint, T, M, style="point", label="G", caption=("G halves the sagitta TM", "取弓高 TM 的中点 G"))
+    guide = sc.add("ram_guide", perpendicular, centre, G, role=Role.RESULT, style="given",
+                   caption=("The ram's guide through G, perpendicular to the centre line", "过 G 作垂直于中心线的滑块导路"))
+    sc.add("h", length, C, G, role=Role.MEASUREMENT, unit="mm", caption=("h = CG", "导路位置 h = CG"))
+    dev = sc.add("deviation", length, G, M, role=Role.MEASUREMENT, unit="mm",
+                 caption=("Largest deviation of D from the guide: GM = GT", "D 偏离导路的最大距离 GM = GT"))
+    if g.get("alpha_allow") is not None:
+        DE = sc.add("DE", _sin_ratio, dev, g["alpha_allow"], role=Role.MEASUREMENT, unit="mm",
+                    caption=(f"Shortest coupler DE = GM / sin αallow, αallow = {g['alpha_allow']:g}°",
+                             f"最短连杆 DE = GM / sin[α],[α] = {g['alpha_allow']:g}°"))
+    elif g.get("DE") is not None:
+        DE = sc.add("DE", float, g["DE"], role=Role.MEASUREMENT, unit="mm", caption=(f"Coupler DE = {g['DE']:g}", f"连杆 DE = {g['DE']:g}"))
+    else:
+        DE = None
+    if DE is not None:
+        sc.add("alpha_max", _pressure, dev, DE, role=Role.MEASUREMENT, unit="deg",
+               caption=("Largest pressure angle at the ram, asin(GM / DE)", "滑块最大压力角 asin(GM/DE)"))
+        kE = sc.add("kE", circle, D1, DE, visible=False)
+        E1 = sc.add("E1", line_circle, guide, kE, branch=NearestTo(G), role=Role.RESULT, style="joint", label="E1",
+                    caption=("E1 on the guide at DE from D1", "以 D1 为圆心、DE 为半径画弧交导路于 E1"))
+        add_bar(sc, "D1E1", D1, E1, ("Coupler D1E1", "连杆 D1E1"))
+        sc.add("slider_E1", marks.slider, E1, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider", caption=("Ram at E1", "滑块 E1"))
+    names = [q.name for q in SHAPER_ANSWERS if DE is not None or q.name not in ("DE", "alpha_max")]
+    return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1", "D2")})
+
+
+def _line_through_ray(c: Point, b: Point) -> Line:
+    return Line.through(c, b)
+
+
+def guide_analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """sin(θ/2) = AB/AC."""
+    return [guide_bar_design(g["K"], AC=g.get("AC"), AB=g.get("AB"))]
+
+
+def shaper_analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """H = 2·CD·sin(θ/2), h = CD(1 + cos(θ/2))/2, DE = deviation / sin α."""
+    r = shaper_design(g["K"], g["H"], AC=g.get("AC"), AB=g.get("AB"), alpha_allow=g.get("alpha_allow"))
+    if g.get("alpha_allow") is not None:
+        r["DE"] = r.pop("DE_min")
+        r["alpha_max"] = g["alpha_allow"]
+    elif g.get("DE") is not None:
+        r["DE"] = g["DE"]
+        r["alpha_max"] = math.degrees(math.asin(min(1.0, r["deviation"] / g["DE"])))
+    return [r]
+
+
+def guide_back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
+    """Rebuild with ``guide_bar.extremes``: K and ψ must come back."""
+    v = guide_bar_extremes({"AB": ans["AB"], "AC": ans["AC"]}).scene.evaluate(["K", "psi"])
+    return [("K", v["K"], g["K"], ""), ("psi", v["psi"], ans["psi"], "deg")]
+
+
+def shaper_back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
+    """Guide-bar part rebuilt by ``guide_bar.extremes``; the stroke 2·CD·sin(ψ/2) must give H back."""
+    rows = guide_back_check(g, ans)
+    v = guide_bar_extremes({"AB": ans["AB"], "AC": ans["AC"]}).scene.evaluate(["psi"])
+    rows.append(("H", 2 * ans["CD"] * math.sin(math.radians(v["psi"] / 2)), g["H"], "mm"))
+    return rows
+
+
+GUIDE_RECIPE = Recipe(
+    name="guide_bar.design_by_K",
+    title="Oscillating guide-bar designed from K and AC or AB",
+    givens=GUIDE_GIVENS, answers=GUIDE_ANSWERS, points=("A", "C", "B1", "B2"),
+    construct=guide_construct, analytic=guide_analytic, validate=_validate, back_check=guide_back_check,
+)
+SHAPER_RECIPE = Recipe(
+    name="shaper.design_by_K",
+    title="Shaper / slotter guide-bar six-bar designed from K, the stroke H and AC or AB",
+    givens=SHAPER_GIVENS, answers=SHAPER_ANSWERS, points=("A", "C", "B1", "B2", "D1", "D2"),
+    construct=shaper_construct, analytic=shaper_analytic, validate=_validate, back_check=shaper_back_check,
+)
