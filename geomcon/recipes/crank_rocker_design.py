@@ -31,7 +31,7 @@ from ..tolerance import tol
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, angle_deg, length, transmission_deg
 from .crank_rocker import construct as extremes_construct
-from .theta_circle import add_seeing_circle, add_theta_circle, ray_from
+from .theta_circle import refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient", minimum=1.0, inclusive=True),
@@ -85,6 +85,7 @@ def _form(g: Mapping[str, Any]) -> tuple[str, str]:
 def _validate(g: Mapping[str, Any]) -> list[str]:
     _form(g)
     theta = theta_from_k(g["K"])
+    refuse_tiny_theta(g["K"])
     if theta >= 180.0 or g["K"] >= 1e12:
         raise NotAMechanism(f"K = {g['K']:g} gives θ = {theta:g}°: too close to 180°")
     if g.get("psi") is not None and not 0.0 < g["psi"] < 180.0:

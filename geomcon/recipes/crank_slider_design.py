@@ -28,7 +28,7 @@ from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, along_line, angle_deg, length
 from .crank_slider import add_pressure_angles
 from .crank_slider import construct as extremes_construct
-from .theta_circle import add_seeing_circle, add_theta_circle, arc_from_to
+from .theta_circle import refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1 ≤ K < 3", minimum=1.0, inclusive=True),
@@ -78,6 +78,7 @@ def feasible_range(K: float, H: float, which: str) -> tuple[float, float]:
 def _validate(g: Mapping[str, Any]) -> list[str]:
     which = _closing(g)
     K, H, x = g["K"], g["H"], g[which]
+    refuse_tiny_theta(g["K"])
     theta = theta_from_k(K)
     if K == 1.0:
         if which == "AB" and x != H / 2 or which == "e" and x != 0.0:

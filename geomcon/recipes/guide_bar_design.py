@@ -28,7 +28,7 @@ from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
 from .guide_bar import construct as guide_bar_extremes
-from .theta_circle import meet_lines, ray_from
+from .theta_circle import refuse_tiny_theta, meet_lines, ray_from
 
 GUIDE_GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1 < K < 3 (θ < 90°)", minimum=1.0),
@@ -66,6 +66,7 @@ def _closing(g: Mapping[str, Any]) -> str:
 def _validate(g: Mapping[str, Any]) -> list[str]:
     _closing(g)
     th = theta_from_k(g["K"])
+    refuse_tiny_theta(g["K"])
     if th >= 90.0:
         raise NotAMechanism(f"K = {g['K']:g} gives θ = {th:g}° ≥ 90°: the guide bar would swing through ψ = θ ≥ 90°, "
                             "more than a guide-bar quick-return drive is built for; use K < 3")

@@ -20,6 +20,29 @@ from ..geometry import (Arc, Circle, Line, Point, circle_through3, line_line, po
 from ..scene import Ref, Role, Scene
 
 
+THETA_MIN_RAD = 1e-3
+"""Smallest θ > 0 (0.057°, K ≈ 1.00064) a θ-circle is built for. Its radius is then about 500 chords; a line
+through C1 meets it again at A nearly tangentially, so A carries an error of about ε·(R/C1C2)² of the chord:
+2e-10 here, growing as 1/θ². Smaller θ are refused with the advice to give K = 1, the exact line."""
+
+
+def refuse_tiny_theta(K: float) -> None:
+    """Refuse 1 < K whose θ is below :data:`THETA_MIN_RAD` (K = 1 itself is handled as the line).
+
+    >>> refuse_tiny_theta(1.0); refuse_tiny_theta(1.25)
+    >>> refuse_tiny_theta(1 + 1e-6)
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.NotAMechanism: K = 1.000001 gives θ = 9e-05°: the θ-circle's radius would be 3.2e+05 times the chord C1C2 and its intersections lose accuracy; give K = 1 (the line) or K ≥ 1.00064
+    """
+    from ..errors import NotAMechanism
+    th = math.pi * (K - 1.0) / (K + 1.0)
+    if 0.0 < th < THETA_MIN_RAD:
+        raise NotAMechanism(f"K = {K:.10g} gives θ = {math.degrees(th):.2g}°: the θ-circle's radius would be "
+                            f"{1 / (2 * math.sin(th)):.2g} times the chord C1C2 and its intersections lose accuracy; "
+                            "give K = 1 (the line) or K ≥ 1.00064")
+
+
 def ray_from(origin: Point, toward: Point, angle_deg: float):
     """The ray from ``origin`` turned by ``angle_deg`` (counter-clockwise positive) from ``origin → toward``."""
     return ray_at_angle(origin, toward, math.radians(angle_deg))

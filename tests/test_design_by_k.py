@@ -1,0 +1,192 @@
+"""Design by K: every recipe against its closed-form twin on random problems (fixed seed), the
+back-substitution of every solution through the core's extreme-position constructions, the seed answers,
+and the edge cases (K = 1, K near 3 and beyond, e at its largest value, closing conditions off the circle,
+huge and tiny scales)."""
+from __future__ import annotations
+
+import math
+import random
+
+import pytest
+
+from geomcon.errors import NotAMechanism
+from geomcon.problems import problem_from_dict
+from geomcon.solve import solve
+
+
+def _solve(recipe: str, **given):
+    return solve(problem_from_dict({"recipe": recipe, "given": given}, name="t"))
+
+
+def _assert_all_checks(sol):
+    bad = [c for c in sol.checks if not c["ok"]]
+    assert not bad, bad
+    assert any(c["quantity"].split(".")[-2:-1] == ["back_substitution"] or "back_substitution" in c["quantity"]
+               for c in sol.checks)
+
+
+# ---------------------------------------------------------------- crank-slider
+@pytest.mark.parametrize("i", range(40))
+def test_random_crank_slider_designs(i):
+    rng = random.Random(4000 + i)
+    K, H = rng.uniform(1.02, 2.8), rng.uniform(5, 500)
+    th = math.radians(180 * (K - 1) / (K + 1))
+    which = rng.choice(["e", "AB", "BC"])
+    t = rng.uniform(0.05, 0.95)
+    value = {"e": t * H / math.tan(th),
+             "AB": H / 2 * math.tan(th / 2) + t * (H / 2 - H / 2 * math.tan(th / 2)),
+             "BC": H / 2 + t * (H / 2 / math.tan(th / 2) - H / 2)}[which]
+    sol = _solve("crank_slider.design_by_K", K=K, H=H, **{which: value})
+    _assert_all_checks(sol)
+    assert sol.answers[which] == pytest.approx(value, rel=1e-9)
+
+
+def test_crank_slider_design_seed_001_18():
+    a = _solve("crank_slider.design_by_K", K=1.5, H=50, e=20).answers
+    assert a["AB"] == pytest.approx(21.5067, abs=1e-4) and a["BC"] == pytest.approx(46.5171, abs=1e-4)
+    assert a["alpha_max"] == pytest.approx(63.1624, abs=1e-4)
+
+
+def test_crank_slider_design_at_the_end_of_the_arc_is_tangent():
+    K, H = 1.5, 50
+    e_max = H / math.tan(math.radians(36))
+    sol = _solve("crank_slider.design_by_K", K=K, H=H, e=e_max)
+    assert sol.answers["alpha_max"] == pytest.approx(90, abs=1e-5)
+    assert any("end Q" in w for w in sol.warnings)
+
+
+@pytest.mark.parametrize("given, words", [
+    (dict(K=1.5, H=50, e=80), ["e = 80", "(0, 68.8191]"]),
+    (dict(K=1.5, H=50, AB=30), ["AB = 30", "[8.12299, 25)"]),
+    (dict(K=1.5, H=50, BC=200), ["BC = 200", "(25, 76.9421]"]),
+    (dict(K=3.5, H=50, e=10), ["θ = 100°"]),
+    (dict(K=1.5, H=50), ["exactly one of e, AB, BC"]),
+    (dict(K=1.5, H=50, e=10, AB=20), ["exactly one of e, AB, BC"]),
+    (dict(K=1.0, H=50, e=10), ["K = 1"]),
+])
+def test_crank_slider_design_refusals_name_the_range(given, words):
+    with pytest.raises(NotAMechanism) as exc:
+        _solve("crank_slider.design_by_K", **given)
+    for w in words:
+        assert w in str(exc.value)
+
+
+@pytest.mark.parametrize("K", [1.0, 1.00065, 1.001, 1.01])
+def test_crank_slider_design_K_to_one(K):
+    sol = _solve("crank_slider.design_by_K", K=K, H=50, BC=60)
+    _assert_all_checks(sol)
+    assert sol.answers["AB"] == pytest.approx(25, rel=1e-3)
+
+
+@pytest.mark.parametrize("recipe, given", [
+    ("crank_slider.design_by_K", dict(H=50, BC=60)),
+    ("crank_rocker.design_by_K", dict(CD=290, psi=32, BC=260)),
+    ("guide_bar.design_by_K", dict(AC=100)),
+])
+@pytest.mark.parametrize("K", [1.0 + 1e-12, 1.0 + 1e-9, 1.0 + 1e-6, 1.0006])
+def test_K_just_above_one_is_refused_clearly(recipe, given, K):
+    with pytest.raises(NotAMechanism, match="give K = 1"):
+        _solve(recipe, K=K, **given)
+
+
+@pytest.mark.parametrize("K", [2.5, 2.9, 2.99])
+def test_crank_slider_design_K_near_three(K):
+    th = math.radians(180 * (K - 1) / (K + 1))
+    sol = _solve("crank_slider.design_by_K", K=K, H=50, e=0.5 * 50 / math.tan(th))
+    _assert_all_checks(sol)
+
+
+@pytest.mark.parametrize("scale", [1e-3, 1.0, 1e6])
+def test_crank_slider_design_scales(scale):
+    base = _solve("crank_slider.design_by_K", K=1.5, H=50, e=20).answers
+    sol = _solve("crank_slider.design_by_K", K=1.5, H=50 * scale, e=20 * scale)
+    _assert_all_checks(sol)
+    assert sol.answers["AB"] == pytest.approx(base["AB"] * scale, rel=1e-12)
+    assert sol.answers["alpha_max"] == pytest.approx(base["alpha_max"], rel=1e-12)
+
+
+def test_gamma_allow_warns_when_the_design_is_below_it():
+    sol = _solve("crank_slider.design_by_K", K=1.5, H=50, e=20, gamma_allow=40)
+    assert any("below gamma_allow" in w for w in sol.warnings)
+
+
+# ---------------------------------------------------------------- crank-rocker
+SEEDS = [  # (given, expected answers of the textbook's choice, number of solutions)
+    (dict(K=1.25, CD=290, psi=32, BC=260), dict(AB=66.9811, AD=261.0127), 2),
+    (dict(K=1.2, CD=300, psi=35, AB=80), dict(BC=303.6776, AD=309.2894), 2),
+    (dict(K=1.4, CD=300, psi=35, AC1=225), dict(AB=55.4551, BC=280.4551, AD=188.6790), 4),
+    (dict(K=1.4, CD=500, phi1=90, phi2=45, frame_line=True), dict(AB=82.3549, BC=672.3694, AD=313.2364), 2),
+    (dict(K=1, CD=525, psi=30, AD=800), dict(AB=135.8800, BC=618.7393), 1),
+    (dict(K=1, CD=50, phi1=30, phi2=90, frame_line=True), dict(AB=25, BC=75, AD=86.6025), 1),
+    (dict(K=1.5, CD=75, AD=100, phi=45), dict(AB=49.3118, BC=120.1524), 2),
+    (dict(K=1.5, CD=85, AD=120, phi=45), dict(AB=58.2456, BC=143.0986), 2),
+]
+
+
+@pytest.mark.parametrize("given, expected, n", SEEDS)
+def test_crank_rocker_design_seeds(given, expected, n):
+    sol = _solve("crank_rocker.design_by_K", **given)
+    _assert_all_checks(sol)
+    assert len(sol.solution_values) == n
+    for k, v in expected.items():
+        assert sol.answers[k] == pytest.approx(v, abs=1e-4)
+
+
+@pytest.mark.parametrize("i", range(40))
+def test_random_crank_rocker_designs(i):
+    rng = random.Random(5000 + i)
+    # a random crank-rocker gives its own K, ψ and closing values: the design must find it again
+    while True:
+        AB = rng.uniform(10, 50)
+        BC, CD, AD = (rng.uniform(AB * 1.2, 300) for _ in range(3))
+        ls = sorted([BC, CD, AD])
+        if AB + ls[2] < ls[0] + ls[1] - 5:
+            break
+    ex = _solve("crank_rocker.extremes", AB=AB, BC=BC, CD=CD, AD=AD)
+    K, psi = ex.answers["K"], ex.answers["psi"]
+    if K < 1 + 1e-6:
+        pytest.skip("this random linkage has no quick return")
+    which = rng.choice(["BC", "AB"])
+    sol = _solve("crank_rocker.design_by_K", K=K, CD=CD, psi=psi, **{which: {"BC": BC, "AB": AB}[which]})
+    _assert_all_checks(sol)
+    found = [s for s in sol.solution_values if abs(s["AD"] - AD) <= 1e-6 * AD]
+    assert found, (AD, [s["AD"] for s in sol.solution_values])
+    assert found[0]["AB"] == pytest.approx(AB, rel=1e-8) and found[0]["BC"] == pytest.approx(BC, rel=1e-8)
+
+
+def test_crank_rocker_design_refuses_a_coupler_no_point_satisfies():
+    with pytest.raises(NotAMechanism) as exc:
+        _solve("crank_rocker.design_by_K", K=1.25, CD=290, psi=32, BC=10).answers
+    assert "BC = 10" in str(exc.value)
+
+
+@pytest.mark.parametrize("given, words", [
+    (dict(K=1.25, CD=290, BC=260), ["extreme positions"]),
+    (dict(K=1.25, CD=290, psi=32), ["exactly one closing condition"]),
+    (dict(K=1.25, CD=290, psi=32, BC=260, AB=60), ["exactly one closing condition"]),
+    (dict(K=1.25, CD=290, psi=200, BC=260), ["psi = 200"]),
+    (dict(K=1.25, CD=290, psi=32, frame_line=True), ["frame_line needs"]),
+])
+def test_crank_rocker_design_bad_forms(given, words):
+    with pytest.raises(NotAMechanism) as exc:
+        _solve("crank_rocker.design_by_K", **given)
+    for w in words:
+        assert w in str(exc.value)
+
+
+# ---------------------------------------------------------------- guide bars and shapers
+@pytest.mark.parametrize("i", range(20))
+def test_random_guide_bar_and_shaper_designs(i):
+    rng = random.Random(6000 + i)
+    K = rng.uniform(1.05, 2.9)
+    which = rng.choice(["AC", "AB"])
+    v = rng.uniform(10, 400)
+    _assert_all_checks(_solve("guide_bar.design_by_K", K=K, **{which: v}))
+    extra = rng.choice([{}, {"alpha_allow": rng.uniform(5, 40)}, {"DE": rng.uniform(400, 900)}])
+    _assert_all_checks(_solve("shaper.design_by_K", K=K, H=rng.uniform(50, 500), **{which: v}, **extra))
+
+
+def test_shaper_seed_001_20():
+    a = _solve("shaper.design_by_K", K=2, H=300, AB=75, DE=100).answers
+    assert (a["AC"], a["CD"]) == (pytest.approx(150), pytest.approx(300))
+    assert a["h"] == pytest.approx(279.9038, abs=1e-4) and a["alpha_max"] == pytest.approx(11.5932, abs=1e-4)
