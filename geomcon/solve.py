@@ -200,7 +200,7 @@ class Solution:
         """One SVG per numbered step, all with the full drawing's view box."""
         from .render import model_extent
         box = model_extent(self.scene)
-        n = len(self.scene.visible_steps())
+        n = len(self.scene.frames())
         return [self.svg(upto=k, viewbox=box) for k in range(1, n + 1)]
 
 

@@ -143,7 +143,7 @@ def test_steps_writes_one_frame_per_numbered_step(tmp_path, capsys):
 
     p = _write(tmp_path, GOOD)
     assert main(["solve", str(p), "--steps", str(tmp_path / "f")]) == 0
-    n = len(solve(load_problem(p)).scene.visible_steps())
+    n = len(solve(load_problem(p)).scene.frames())
     assert len(list((tmp_path / "f").glob("step-*.svg"))) == n
 
 

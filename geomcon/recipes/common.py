@@ -70,14 +70,13 @@ def total(a: float, b: float) -> float:
 def add_pivot(sc: Scene, key: str, at: Point, caption: tuple[str, str], *, ground_angle: float = -math.pi / 2) -> Ref:
     """A fixed pivot: the given point plus its hatched ground symbol."""
     ref = sc.given(key, at, caption=caption, style="pivot")
-    sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground",
-           caption=(f"Ground symbol at {key}", f"在 {key} 处画固定铰链"), visible=True)
+    sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
     return ref
 
 
-def add_bar(sc: Scene, key: str, a: Ref, b: Ref, name: tuple[str, str], *, style: str = "link",
+def add_bar(sc: Scene, key: str, a: Ref, b: Ref, name: tuple[str, str] = ("", ""), *, style: str = "link",
             role: Role = Role.RESULT) -> Ref:
-    """A link drawn as a bar between two joints."""
+    """A link drawn as a bar between two joints (an empty caption draws it with the step before)."""
     from ..geometry import segment
     return sc.add(key, segment, a, b, role=role, style=style, caption=name)
 
@@ -85,8 +84,7 @@ def add_bar(sc: Scene, key: str, a: Ref, b: Ref, name: tuple[str, str], *, style
 def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str, value: Ref,
                    radius: float | None = None) -> Ref:
     """The arc marking a measured angle, labelled with its value."""
-    return sc.add(key, marks.angle_mark, vertex, a, b, symbol, value, radius, role=Role.ANNOTATION,
-                  style="angle", caption=(f"Mark the angle {symbol}", f"标注角 {symbol}"))
+    return sc.add(key, marks.angle_mark, vertex, a, b, symbol, value, radius, role=Role.ANNOTATION, style="angle")
 
 
 def along_line(line, t: float, sign: float = 1.0) -> Point:

@@ -97,9 +97,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     B1, C1, B2, C2 = add_collinear_extremes(sc, A, kD, AB, BC, side, circle_circle, ("the rocker circle", "摇杆圆"))
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
         style = "link" if i == 1 else "link-alt"
-        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
-        add_bar(sc, f"B{i}C{i}", B, C, (f"Coupler B{i}C{i}", f"连杆 B{i}C{i}"), style=style)
-        add_bar(sc, f"C{i}D", C, D, (f"Rocker C{i}D", f"摇杆 C{i}D"), style=style)
+        how = ("folded", "重叠") if i == 1 else ("extended", "拉直")
+        add_bar(sc, f"AB{i}", A, B, (f"Draw the {how[0]} position AB{i}C{i}D", f"画出{how[1]}共线位置 AB{i}C{i}D"), style=style)
+        add_bar(sc, f"B{i}C{i}", B, C, style=style)
+        add_bar(sc, f"C{i}D", C, D, style=style)
     sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     th = add_theta_and_K(sc, A, C1, C2)
     ps = sc.add("psi", angle_deg, D, C1, C2, role=Role.MEASUREMENT, unit="deg",
@@ -117,7 +118,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         Cg = sc.add(f"Cg{i}", circle_circle, kB, kD, branch=side, style="point", label=f"C{p}",
                     caption=(f"It meets the rocker circle at C{p}", f"交摇杆圆于 C{p}"))
         for a, b, nm in ((A, Bg, f"AB{p}"), (Bg, Cg, f"B{p}C{p}"), (Cg, D, f"C{p}D")):
-            add_bar(sc, f"g{i}_{nm}", a, b, (f"Position {nm}", f"位置 {nm}"), style="ghost", role=Role.CONSTRUCTION)
+            add_bar(sc, f"g{i}_{nm}", a, b, style="ghost", role=Role.CONSTRUCTION)
         gk = sc.add(f"gamma_{i}", transmission_deg, Bg, Cg, D, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"Transmission angle γ{i} = ∠B{p}C{p}D (acute form)", f"传动角 γ{i} = ∠B{p}C{p}D(取锐角)"))
         gammas.append((gk, Bg, Cg))

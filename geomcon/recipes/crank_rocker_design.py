@@ -239,7 +239,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     answers = {name: f"chosen_{name}" for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near")}
     answers.update(CD="CD", theta="theta", K="K")
     for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near"):
-        sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False, optional=True)
+        sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False)
     points = {"D": "D", "A": "A", "C1": "Cf", "C2": "Ce", "B1": "B1", "B2": "B2"}
     return Construction(sc, answers, points, solutions=tuple(sols),
                         no_solution=_no_solution_message(g, closing))
@@ -256,12 +256,12 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
     c1, c2 = extreme_positions(g)
     symmetric = g.get("psi") is not None
     D = sc.given("D", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot D of the rocker", "摇杆固定铰链 D"))
-    sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground", caption=("Ground at D", "D 处机架"))
+    sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     C1 = sc.given("C1", c1, style="joint", caption=(f"Extreme position DC1, CD = {CD:g}", f"作摇杆极限位置 DC1,CD = {CD:g}"))
     C2 = sc.given("C2", c2, style="joint", caption=("Extreme position DC2: the rocker swings through ψ = ∠C1DC2",
                                                     "作摇杆另一极限位置 DC2,摆角 ψ = ∠C1DC2"))
-    add_bar(sc, "DC1", D, C1, ("Rocker DC1", "摇杆 DC1"), role=Role.GIVEN)
-    add_bar(sc, "DC2", D, C2, ("Rocker DC2", "摇杆 DC2"), role=Role.GIVEN)
+    add_bar(sc, "DC1", D, C1, role=Role.GIVEN)
+    add_bar(sc, "DC2", D, C2, role=Role.GIVEN)
     sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
     near_side = 1 if (c2 - c1).cross(Point(0, 0) - c1) > 0 else -1
     xaxis = None
@@ -381,14 +381,14 @@ def _ahead(A: Point, r, C: Point) -> Point | None:
 
 def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
     """The textbook's choice drawn as the result: A, B1, B2 and both extreme positions of the linkage."""
-    A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label="A", optional=True,
+    A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label="A",
                caption=("The textbook's choice of A (the other valid points are candidates)", "取 A(其余可行点为备选解)"))
-    P1 = sc.add("P1c", pick, idx, *(c[1] for c in cands), visible=False, optional=True)
-    P2 = sc.add("P2c", pick, idx, *(c[2] for c in cands), visible=False, optional=True)
+    P1 = sc.add("P1c", pick, idx, *(c[1] for c in cands), visible=False)    # pick itself handles None:
+    P2 = sc.add("P2c", pick, idx, *(c[2] for c in cands), visible=False)    # not optional
+
     Cf = sc.add("Cf", nearer, A, P1, P2, visible=False, optional=True)
     Ce = sc.add("Ce", farther, A, P1, P2, visible=False, optional=True)
-    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True,
-           caption=("Fixed pivot A", "固定铰链 A"))
+    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
     sc.add("ACf", segment, A, Cf, style="construction", optional=True, caption=("Join A to both extreme positions", "连接 A 与两极限位置"))
     sc.add("ACe", segment, A, Ce, style="construction", optional=True, caption=("", ""), visible=False)
     u = sc.add("u_len", length, A, Cf, visible=False, optional=True)
@@ -405,10 +405,10 @@ def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
                 caption=("B2 on the extended line, AB2 = AB", "在拉直共线位置上取 AB2 = AB"))
     for i, (B, C) in enumerate(((B1, Cf), (B2, Ce)), 1):
         style = "link" if i == 1 else "link-alt"
-        sc.add(f"AB{i}", segment, A, B, role=Role.RESULT, style=style, optional=True, caption=(f"Crank AB{i}", f"曲柄 AB{i}"))
-        sc.add(f"B{i}C{i}", segment, B, C, role=Role.RESULT, style=style, optional=True, caption=(f"Coupler B{i}C{i}", f"连杆 B{i}C{i}"))
-    sc.add("mark_theta", marks.angle_mark, A, Cf, Ce, "θ", th, None, role=Role.ANNOTATION, style="angle", optional=True,
-           caption=("Mark θ", "标注 θ"))
+        sc.add(f"AB{i}", segment, A, B, role=Role.RESULT, style=style, optional=True,
+               caption=(f"Draw the designed linkage in extreme position {i}", f"画出所设计机构的极限位置 {i}"))
+        sc.add(f"B{i}C{i}", segment, B, C, role=Role.RESULT, style=style, optional=True)
+    sc.add("mark_theta", marks.angle_mark, A, Cf, Ce, "θ", th, None, role=Role.ANNOTATION, style="angle", optional=True)
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:

@@ -69,12 +69,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
     B1, C1, B2, C2 = add_collinear_extremes(sc, A, gl, AB, BC, ToRightOf(A), line_circle, ("the guide", "导路"))
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
         style = "link" if i == 1 else "link-alt"
-        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
-        add_bar(sc, f"B{i}C{i}", B, C, (f"Rod B{i}C{i}", f"连杆 B{i}C{i}"), style=style)
-        sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider",
-               caption=(f"Slider at C{i}", f"滑块位于 C{i}"))
-    sc.add("guide_mark", guide_between, C1, C2, gl, 0.2 * (BC + AB) / 2, role=Role.ANNOTATION, style="guide",
-           caption=("Hatch the guide", "画导路"))
+        how = ("folded", "重叠") if i == 1 else ("extended", "拉直")
+        add_bar(sc, f"AB{i}", A, B, (f"Draw the {how[0]} position AB{i}C{i}", f"画出{how[1]}共线位置 AB{i}C{i}"), style=style)
+        add_bar(sc, f"B{i}C{i}", B, C, style=style)
+        sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+    sc.add("guide_mark", guide_between, C1, C2, gl, 0.2 * (BC + AB) / 2, role=Role.ANNOTATION, style="guide")
     sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
                caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
@@ -102,8 +101,8 @@ def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC) ->
         kB = sc.add(f"kB{i}", circle, B, BC, caption=(f"Circle about B{i} with radius BC", f"以 B{i} 为圆心、BC 为半径作圆"))
         C = sc.add(f"C{i}", line_circle, gl, kB, branch=ToRightOf(B), style="point", label=f"C{i}",
                    caption=(f"It meets the guide at C{i}", f"交导路于 C{i}"))
-        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style="ghost", role=Role.CONSTRUCTION)
-        add_bar(sc, f"B{i}C{i}", B, C, (f"Rod B{i}C{i}", f"连杆 B{i}C{i}"), style="ghost", role=Role.CONSTRUCTION)
+        add_bar(sc, f"AB{i}", A, B, style="ghost", role=Role.CONSTRUCTION)
+        add_bar(sc, f"B{i}C{i}", B, C, style="ghost", role=Role.CONSTRUCTION)
         pos[i] = (B, C)
     a3 = sc.add("alpha_3", pressure_deg, *pos[3], gl, role=Role.MEASUREMENT, unit="deg",
                 caption=("Pressure angle at C3 (largest of the cycle)", "C3 处压力角(全周最大)"))
@@ -118,8 +117,7 @@ def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC) ->
     slow = sc.add("alpha_slow", largest, a1, a4, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add("gamma_min_slow", complement_deg, slow, role=Role.MEASUREMENT, unit="deg",
            caption=("Slow stroke: γmin = 90° − max(α at C1, α at C4)", "慢行程最小传动角 = 90° − max(α1, α4)"))
-    sc.add("mark_alpha", guide_angle_mark, *reversed(pos[3]), gl, "αmax", a3, role=Role.ANNOTATION, style="angle",
-           caption=("Mark αmax at C3", "标注最大压力角 αmax"))
+    sc.add("mark_alpha", guide_angle_mark, *reversed(pos[3]), gl, "αmax", a3, role=Role.ANNOTATION, style="angle")
     return Ref("gamma_min")
 
 

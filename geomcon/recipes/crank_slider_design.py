@@ -197,13 +197,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 caption=("B2 on AC2, AB2 = AB", "在 AC2 上取 AB2 = AB"))
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
         style = "link" if i == 1 else "link-alt"
-        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
-        add_bar(sc, f"B{i}C{i}", B, C, (f"Rod B{i}C{i}", f"连杆 B{i}C{i}"), style=style)
-        sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider",
-               caption=(f"Slider at C{i}", f"滑块位于 C{i}"))
+        how = ("folded", "重叠") if i == 1 else ("extended", "拉直")
+        add_bar(sc, f"AB{i}", A, B, (f"Draw the designed linkage, {how[0]}: AB{i}C{i}", f"画出所设计机构的{how[1]}共线位置 AB{i}C{i}"), style=style)
+        add_bar(sc, f"B{i}C{i}", B, C, style=style)
+        sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
     add_pressure_angles(sc, A, B1, C1, gl, AB, BC)
-    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground",
-           caption=("Fixed pivot A", "固定铰链 A"))
+    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     sc.add("theta_at_A", angle_deg, A, C1, C2, visible=False, unit="deg")
     add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.15 * H, role=Role.ANNOTATION, style="dim",

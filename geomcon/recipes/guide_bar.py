@@ -54,12 +54,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     for i, B in enumerate((B1, B2), 1):
         style = "link" if i == 1 else "link-alt"
         E = sc.add(f"E{i}", point_along, C, B, L, visible=False)
-        add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i}", f"曲柄 AB{i}"), style=style)
-        add_bar(sc, f"CE{i}", C, E, (f"Guide bar through B{i}", f"导杆 CB{i}"), style=style)
-        sc.add(f"slider{i}", _block_along, B, C, role=Role.ANNOTATION, style="slider",
-               caption=(f"Slider at B{i} on the guide bar", f"滑块位于 B{i}"))
-        sc.add(f"right{i}", marks.right_angle, B, A, C, role=Role.ANNOTATION, style="right-angle",
-               caption=(f"∠AB{i}C = 90°", f"∠AB{i}C = 90°"))
+        add_bar(sc, f"AB{i}", A, B, (f"Extreme position {i}: crank AB{i}, guide bar CB{i}", f"极限位置 {i}:曲柄 AB{i}、导杆 CB{i}"), style=style)
+        add_bar(sc, f"CE{i}", C, E, style=style)
+        sc.add(f"slider{i}", _block_along, B, C, role=Role.ANNOTATION, style="slider")
+        sc.add(f"right{i}", marks.right_angle, B, A, C, role=Role.ANNOTATION, style="right-angle")
     B1x = sc.add("B1x", point_along, A, B1, -AB, visible=False)
     sc.add("ext1", segment, A, B1x, style="construction", caption=("Extend B1A beyond A", "延长 B1A"))
     ps = sc.add("psi", angle_deg, C, B1, B2, role=Role.MEASUREMENT, unit="deg",

@@ -127,12 +127,23 @@ class Scene:
         """The steps that are drawn and numbered in the protocol, in order."""
         return tuple(s for s in self._steps.values() if s.visible)
 
+    def frames(self) -> list[list[Step]]:
+        """The visible steps grouped by protocol number: a step with an empty caption is drawn with the
+        numbered step before it (a link drawn with its position, a ground symbol with its pivot)."""
+        out: list[list[Step]] = []
+        for s in self.visible_steps():
+            if s.caption[0] or s.branch is not None or not out:
+                out.append([s])
+            else:
+                out[-1].append(s)
+        return out
+
     def number(self, key: str) -> int:
-        """1-based protocol number of a visible step."""
-        for i, s in enumerate(self.visible_steps(), 1):
-            if s.key == key:
+        """1-based protocol number of a visible step (the number of the frame it is drawn in)."""
+        for i, group in enumerate(self.frames(), 1):
+            if any(s.key == key for s in group):
                 return i
-        raise KeyError(f"step '{key}' is not a numbered step")
+        raise KeyError(f"step '{key}' is not a visible step")
 
     def label_of(self, x: Any) -> str:
         """The printed label of a referenced point (its step label, else its key)."""
