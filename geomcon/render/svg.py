@@ -163,7 +163,10 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
     proto_x = ox + fig_w + 8.0
     proto_lines = _protocol_lines(scene, frames[:n], values) if protocol else []
     info_lines = [ln for s in info for ln in wrap(s, PROTO_W, 2.9)]
-    text_h = LINE_H * (len(proto_lines) + len(info_lines) + (2 if info_lines else 0))
+    n_lines = len(proto_lines)
+    if protocol and upto is not None:     # frames keep the page of the whole replay: reserve every caption
+        n_lines = max(n_lines, _caption_lines(scene, frames) + 2)
+    text_h = LINE_H * (n_lines + len(info_lines) + (2 if info_lines else 0))
     width = round(proto_x + (PROTO_W if protocol else 0.0) + MARGIN, 3)
     height = round(max(oy + fig_h + 14.0, oy + text_h + 6.0), 3)
     dwg = svgwrite.Drawing(size=(f"{width}mm", f"{height}mm"), viewBox=f"0 0 {width} {height}", profile="full",
@@ -225,6 +228,13 @@ def _place_labels(shown, values, view: View) -> dict[str, tuple[float, float]]:
             circles.append((view.p(v.center.x, v.center.y), view.length(v.r)))
         elif isinstance(v, Point):
             pts.append(view.p(v.x, v.y))
+        elif isinstance(v, (Ground, Slider)):      # keep labels off the symbols too
+            x, y = view.p(v.at.x, v.at.y)
+            u = (math.cos(v.angle), -math.sin(v.angle)) if isinstance(v, Ground) else (0.0, 0.0)
+            cx, cy = x + u[0] * 3.6, y + u[1] * 3.6
+            segs += [((cx - 3.6, cy), (cx + 3.6, cy)), ((x, y), (cx, cy))]
+        elif isinstance(v, Guide):
+            segs.append((view.p(v.a.x, v.a.y), view.p(v.b.x, v.b.y)))
     out: dict[str, tuple[float, float]] = {}
     taken: list[tuple[float, float]] = []
     for s in shown:
@@ -261,6 +271,15 @@ def _protocol_lines(scene: Scene, frames, values) -> list[tuple[int, str, str]]:
             for ln in wrap(zh, PROTO_W - 4, 2.6):
                 lines.append((i, "zh", "    " + ln))
     return lines
+
+
+def _caption_lines(scene: Scene, frames) -> int:
+    """Protocol lines of all frames, counted without the measured values (which would need later steps)."""
+    total = 0
+    for i, group in enumerate(frames, 1):
+        en, zh = scene.caption(group[0].key)
+        total += len(wrap(f"{i}. {en} = 000.000 mm", PROTO_W, 2.9)) + (len(wrap(zh, PROTO_W - 4, 2.6)) if zh else 0)
+    return total
 
 
 def _protocol(dwg, lines, info_lines, x: float, y0: float, n: int, upto: int | None) -> None:
