@@ -381,7 +381,8 @@ def _ahead(A: Point, r, C: Point) -> Point | None:
 
 def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
     """The textbook's choice drawn as the result: A, B1, B2 and both extreme positions of the linkage."""
-    A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label="A",
+    fixed_A = len({c[0].key for c in cands}) == 1          # frame given: A is a given point, labelled already
+    A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label=None if fixed_A else "A",
                caption=("The textbook's choice of A (the other valid points are candidates)", "取 A(其余可行点为备选解)"))
     P1 = sc.add("P1c", pick, idx, *(c[1] for c in cands), visible=False)    # pick itself handles None:
     P2 = sc.add("P2c", pick, idx, *(c[2] for c in cands), visible=False)    # not optional
@@ -408,6 +409,7 @@ def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
         sc.add(f"AB{i}", segment, A, B, role=Role.RESULT, style=style, optional=True,
                caption=(f"Draw the designed linkage in extreme position {i}", f"画出所设计机构的极限位置 {i}"))
         sc.add(f"B{i}C{i}", segment, B, C, role=Role.RESULT, style=style, optional=True)
+        sc.add(f"C{i}D_design", segment, C, Ref("D"), role=Role.RESULT, style=style, optional=True)
     sc.add("mark_theta", marks.angle_mark, A, Cf, Ce, "θ", th, None, role=Role.ANNOTATION, style="angle", optional=True)
 
 
