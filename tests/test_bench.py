@@ -1,0 +1,65 @@
+"""The benchmark measures what it says: the sweep's error shrinks as N grows, the construction agrees with
+the twin, answers alone evaluate fewer steps than the drawing, and the command writes a valid plot.
+(Correctness only: times are reported, never asserted.)"""
+from __future__ import annotations
+
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from geomcon.bench import CASES, QUICK, measure_drawing, measure_extremes, render_plot
+from geomcon.bench.sweep import sweep_crank_rocker, sweep_crank_slider, sweep_guide_bar
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def rows():
+    return measure_extremes(QUICK)
+
+
+def test_construction_agrees_with_the_twin(rows):
+    cons = [r for r in rows if r.method == "construction"]
+    assert len(cons) == len(CASES)
+    assert all(r.rel_error <= 1e-9 for r in cons)
+
+
+def test_sweep_error_shrinks_as_N_grows(rows):
+    for case in CASES:
+        errs = [r.rel_error for r in rows if r.case == case and r.method == "sweep"]
+        assert len(errs) >= 3 and errs == sorted(errs, reverse=True) and errs[-1] < errs[0] / 10, (case, errs)
+
+
+@pytest.mark.parametrize("sweep, given, key, exact", [
+    (sweep_crank_rocker, {"AB": 50, "BC": 70, "CD": 80, "AD": 90}, "psi", 77.8862570493),
+    (sweep_crank_slider, {"AB": 120, "BC": 250, "e": 60}, "H", 249.777099324),
+    (sweep_guide_bar, {"AB": 145, "AC": 290}, "psi", 60.0),
+])
+def test_a_fine_sweep_converges_to_the_twin(sweep, given, key, exact):
+    assert sweep(given, 200_000)[key] == pytest.approx(exact, rel=1e-6)
+
+
+def test_answers_only_evaluate_fewer_steps_than_the_drawing():
+    rows = measure_drawing(QUICK)
+    for case in CASES:
+        a, d = [r for r in rows if r.case == case]
+        assert a.steps_evaluated < d.steps_evaluated == d.steps_total
+
+
+def test_plot_has_a_series_per_method_and_problem(rows):
+    root = ET.fromstring(render_plot(rows, quick=True))
+    text = " ".join(t.text or "" for t in root.iter("{http://www.w3.org/2000/svg}text"))
+    for case in CASES:
+        assert f"{case.label} · construction" in text and f"{case.label} · sweep" in text
+
+
+def test_bench_command_writes_the_plot(tmp_path):
+    out = tmp_path / "b.svg"
+    r = subprocess.run([sys.executable, "-m", "geomcon.cli", "bench", "--quick", "--out", str(out)],
+                       capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert out.is_file() and ET.parse(out).getroot().tag.endswith("svg")
+    assert "construction" in r.stdout and "steps evaluated" in r.stdout
