@@ -179,6 +179,15 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("arc_ok", admissible_arc, kT, Q, C1, C2, g.get("gamma_allow"), role=Role.ANNOTATION,
                style="admissible", caption=(_arc_caption(g.get("gamma_allow"))))
         A = _closing_step(sc, which, g[which], C1, C2, gl, kT, th)
+    finish_from_A(sc, A, C1, C2, gl, th, H)
+    names = {q.name: q.name for q in ANSWERS}
+    names.update(AC1="AC1_out", AC2="AC2_out")
+    return Construction(sc, names, {n: n for n in ("C1", "C2", "A", "B1", "B2")})
+
+
+def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: float) -> None:
+    """Everything after A is placed: AB and BC by the textbook's arcs, e, the designed linkage in both
+    extreme positions, its pressure angles, the θ mark and the stroke's dimension."""
     sc.add("AC1", segment, A, C1, style="construction", caption=("Join AC1", "连接 AC1"))
     sc.add("AC2s", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     u = sc.add("AC1_len", length, A, C1, visible=False, unit="mm")
@@ -207,9 +216,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.15 * H, role=Role.ANNOTATION, style="dim",
            caption=("Dimension the stroke H", "标注行程 H"))
-    names = {q.name: q.name for q in ANSWERS}
-    names.update(AC1="AC1_out", AC2="AC2_out")
-    return Construction(sc, names, {n: n for n in ("C1", "C2", "A", "B1", "B2")})
 
 
 def _neg(sc: Scene, x: Ref) -> Ref:
