@@ -190,3 +190,38 @@ def test_shaper_seed_001_20():
     a = _solve("shaper.design_by_K", K=2, H=300, AB=75, DE=100).answers
     assert (a["AC"], a["CD"]) == (pytest.approx(150), pytest.approx(300))
     assert a["h"] == pytest.approx(279.9038, abs=1e-4) and a["alpha_max"] == pytest.approx(11.5932, abs=1e-4)
+
+
+# ---------------------------------------------------------------- the optimum of seed 004
+SEED_004 = {1.05: (49.6035, 171.403, 20.6058, 80.2599), 1.2: (48.9077, 87.8994, 15.0286, 67.3296),
+            1.5: (48.5932, 61.7558, 8.5375, 49.5627), 1.7: (48.7431, 56.2763, 5.7545, 40.1922)}
+
+
+@pytest.mark.parametrize("K", sorted(SEED_004))
+def test_best_by_K_matches_the_seeds_independent_table(K):
+    sol = _solve("crank_slider.best_by_K", K=K, H=100)
+    _assert_all_checks(sol)
+    a = sol.answers
+    for got, want in zip((a["AB"], a["BC"], a["e"], a["gamma_w_min"]), SEED_004[K]):
+        assert got == pytest.approx(want, rel=5e-6)             # the seed prints 6 significant digits
+    assert 48 <= a["AB"] < 50                     # the paper's legible a* column: 48 or 49 mm
+    assert a["gamma_min"] < a["gamma_w_min"]      # the cycle's γmin falls in the return stroke
+
+
+@pytest.mark.parametrize("K", [1.1, 1.35, 1.6])
+def test_best_by_K_beats_every_point_of_a_dense_scan(K):
+    from geomcon.analytic.design_by_k import working_stroke_gamma
+    best = _solve("crank_slider.best_by_K", K=K, H=100).answers["gamma_w_min"]
+    th = math.radians(180 * (K - 1) / (K + 1))
+    lo, hi = 50 * math.tan(th / 2), 50.0
+    scan = max(working_stroke_gamma(K, 100, lo + (hi - lo) * i / 20000)[0] for i in range(1, 20000))
+    assert best >= scan - 1e-9 and best - scan < 0.02      # the optimum is a kink: the grid only nears it
+
+
+def test_best_by_K_respects_the_offset_band():
+    a = _solve("crank_slider.best_by_K", K=1.2, H=100, e_max=12).answers
+    assert a["e"] == pytest.approx(12, abs=1e-9)
+    free = _solve("crank_slider.best_by_K", K=1.2, H=100).answers
+    assert a["gamma_w_min"] < free["gamma_w_min"]
+    with pytest.raises(NotAMechanism, match="e_min"):
+        _solve("crank_slider.best_by_K", K=1.5, H=100, e_min=200)      # H·cot θ = 137.6

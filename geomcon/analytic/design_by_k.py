@@ -234,3 +234,69 @@ def shaper_design(K: float, H: float, *, AC: float | None = None, AB: float | No
     if alpha_allow is not None:
         out["DE_min"] = out["deviation"] / math.sin(math.radians(alpha_allow))
     return out
+
+
+# ---------------------------------------------------------------------------------------------- optimum
+def working_stroke_gamma(K: float, H: float, a: float) -> tuple[float, float, float, float]:
+    """(γ_w,min, BC, e, γmin) of the crank-slider with crank ``a`` on the θ-circle: the working (slow) stroke's
+    smallest transmission angle is the smaller of the one at the folded position, atan2(√(u² − e²), e), and
+    the one with the crank perpendicular to the guide towards it, acos(|a − e| / b)."""
+    th = math.radians(theta_from_k(K))
+    u, v = _sides_from_a(H, th, a)
+    b, e = (u + v) / 2, u * v * math.sin(th) / H
+    g_fold = math.degrees(math.atan2(math.sqrt(max(0.0, (u - e) * (u + e))), e))
+    d = abs(a - e)
+    g_near = math.degrees(math.atan2(math.sqrt(max(0.0, (b - d) * (b + d))), d))
+    g_glob = math.degrees(math.atan2(math.sqrt(max(0.0, (b - a - e) * (b + a + e))), a + e))
+    return min(g_fold, g_near), b, e, g_glob
+
+
+def crank_slider_best(K: float, H: float, *, e_min: float = 0.0, e_max: float = math.inf) -> dict[str, float]:
+    """The crank on the admissible range [(H/2)·tan(θ/2), H/2) that maximises γ_w,min (seed 004).
+
+    The folded position's angle rises from 0° (A at Q) and the other falls to 0° (A at C1), so the optimum is
+    where they are equal: found by bisection on their difference, then limited to the offsets allowed.
+
+    >>> r = crank_slider_best(1.5, 100)
+    >>> round(r["AB"], 3), round(r["gamma_w_min"], 3)
+    (48.593, 49.563)
+    """
+    th = math.radians(theta_from_k(K))
+    lo, hi = H / 2 * math.tan(th / 2), H / 2
+
+    def parts(a: float) -> tuple[float, float]:
+        u, v = _sides_from_a(H, th, a)
+        b, e = (u + v) / 2, u * v * math.sin(th) / H
+        d = abs(a - e)
+        return (math.degrees(math.atan2(math.sqrt(max(0.0, (u - e) * (u + e))), e)),
+                math.degrees(math.atan2(math.sqrt(max(0.0, (b - d) * (b + d))), d)))
+
+    x0, x1 = lo * (1 + 1e-15), hi * (1 - 1e-15)
+    for _ in range(300):
+        m = (x0 + x1) / 2
+        f, n = parts(m)
+        if f < n:
+            x0 = m
+        else:
+            x1 = m
+    a = (x0 + x1) / 2
+    # offsets decrease from e(lo) to 0 as a grows: clamp to the allowed band
+    e_of = lambda x: working_stroke_gamma(K, H, x)[2]  # noqa: E731
+    if e_of(a) > e_max or e_of(a) < e_min:
+        target = e_max if e_of(a) > e_max else e_min
+        y0, y1 = lo * (1 + 1e-15), hi * (1 - 1e-15)
+        for _ in range(300):
+            m = (y0 + y1) / 2
+            if e_of(m) > target:
+                y0 = m
+            else:
+                y1 = m
+        a = (y0 + y1) / 2
+    gw, b, e, gg = working_stroke_gamma(K, H, a)
+    return {"AB": a, "BC": b, "e": e, "gamma_w_min": gw, "gamma_min": gg, "alpha_max": 90.0 - gg,
+            "theta": math.degrees(th), "K": K}
+
+
+def best_table(H: float = 100.0, Ks: tuple[float, ...] = tuple(round(1.05 + 0.05 * i, 2) for i in range(14))):
+    """The optimum for each K (seed 004's Table 1, recomputed in full)."""
+    return [crank_slider_best(K, H) for K in Ks]

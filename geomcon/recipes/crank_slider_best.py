@@ -1,0 +1,153 @@
+"""``crank_slider.best_by_K``: the offset crank-slider with time ratio K and stroke H whose working stroke has
+the largest smallest transmission angle (the parametric design of seed 004).
+
+Every A on the admissible arc QC1 of the θ-circle gives a crank-slider with K and H; the working stroke is
+the slow one, C1 → C2, so the crank must turn counter-clockwise (A above the guide, slider to the right) and
+the cycle's smallest transmission angle (crank perpendicular to the guide, away from it) then falls in the
+return stroke. In the working stroke the smallest transmission angle is the smaller of the one at the
+folded position C1 and the one with the crank perpendicular to the guide, towards it. A* maximises it; it is
+found by a golden-section search along the arc (0 ≤ t ≤ 1 from Q to C1), limited to ``e_min ≤ e ≤ e_max``.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.design_by_k import crank_slider_best
+from ..analytic.linkages import theta_from_k
+from ..errors import NotAMechanism
+from ..geometry import Line, OtherThan, Point, line_circle, perpendicular
+from ..scene import Role, Scene
+from .base import Construction, Quantity, Recipe
+from .crank_slider import construct as extremes_construct
+from .crank_slider_design import admissible_arc, finish_from_A
+from .theta_circle import add_theta_circle, arc_from_to, refuse_tiny_theta
+
+GIVENS = (
+    Quantity("K", "", "time-ratio coefficient, 1 < K < 3", minimum=1.0),
+    Quantity("H", "mm", "stroke of the slider"),
+    Quantity("e_min", "mm", "smallest admissible offset", required=False, default=0.0, minimum=0.0, inclusive=True),
+    Quantity("e_max", "mm", "largest admissible offset", required=False),
+)
+ANSWERS = (
+    Quantity("AB", "mm", "crank"),
+    Quantity("BC", "mm", "connecting rod"),
+    Quantity("e", "mm", "offset"),
+    Quantity("gamma_w_min", "deg", "smallest transmission angle of the working (slow) stroke, maximised"),
+    Quantity("gamma_min", "deg", "smallest transmission angle of the cycle (in the return stroke)"),
+    Quantity("alpha_max", "deg", "largest pressure angle of the cycle"),
+    Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
+    Quantity("K", "", "time-ratio coefficient (as given)"),
+)
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    refuse_tiny_theta(g["K"])
+    th = theta_from_k(g["K"])
+    if th >= 90.0:
+        raise NotAMechanism(f"K = {g['K']:g} gives θ = {th:g}° ≥ 90°: no offset crank-slider reaches it")
+    e_hi = g["H"] / math.tan(math.radians(th))
+    e_max = g.get("e_max")
+    if e_max is not None and e_max < g.get("e_min", 0.0):
+        raise NotAMechanism(f"e_max = {e_max:g} is below e_min = {g['e_min']:g}")
+    if g.get("e_min", 0.0) >= e_hi:
+        raise NotAMechanism(f"e_min = {g['e_min']:g} leaves no admissible offset: e < H·cot θ = {e_hi:.6g}")
+    return []
+
+
+def working_gamma(A: Point, C1: Point, C2: Point) -> float:
+    """γ_w,min (deg) for pivot A: the smaller transmission angle at the folded position and with the crank
+    perpendicular to the guide, towards it (the guide through C1 and C2 horizontal)."""
+    u, v = abs(A - C1), abs(A - C2)
+    a, b, e = (v - u) / 2, (v + u) / 2, abs(A.y - C1.y)
+    g_fold = math.atan2(math.sqrt(max(0.0, (u - e) * (u + e))), e)
+    d = abs(a - e)
+    g_near = math.atan2(math.sqrt(max(0.0, (b - d) * (b + d))), d)
+    return math.degrees(min(g_fold, g_near))
+
+
+def best_on_arc(k, Q: Point, C1: Point, C2: Point, e_min: float, e_max: float | None) -> Point:
+    """A* on the arc QC1: golden-section search of :func:`working_gamma` within the offset band."""
+    arc = arc_from_to(k, Q, C1)
+
+    def e_at(t: float) -> float:
+        return abs(arc.at(t).y - C1.y)
+
+    def limit(target: float) -> float:          # e falls from Q (t = 0) to C1 (t = 1): where e = target
+        lo, hi = 0.0, 1.0
+        for _ in range(200):
+            m = (lo + hi) / 2
+            lo, hi = (m, hi) if e_at(m) > target else (lo, m)
+        return (lo + hi) / 2
+
+    t0 = limit(e_max) if e_max is not None and e_max < e_at(0.0) else 0.0
+    t1 = limit(e_min) if e_min > 0 else 1.0
+    lo, hi = t0, t1
+    r = (math.sqrt(5) - 1) / 2
+    x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
+    f1, f2 = working_gamma(arc.at(x1), C1, C2), working_gamma(arc.at(x2), C1, C2)
+    for _ in range(200):
+        if f1 < f2:
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + r * (hi - lo)
+            f2 = working_gamma(arc.at(x2), C1, C2)
+        else:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - r * (hi - lo)
+            f1 = working_gamma(arc.at(x1), C1, C2)
+        if hi - lo <= 4e-16:
+            break
+    return arc.at((lo + hi) / 2)
+
+
+def _theta_of(K: float) -> float:
+    return theta_from_k(K)
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """θ-circle, admissible arc, A* by search along the arc, then the design's measuring steps."""
+    K, H = g["K"], g["H"]
+    sc = Scene("Offset crank-slider: best working-stroke transmission angle for K")
+    C1 = sc.given("C1", Point(0.0, 0.0), style="joint", caption=("C1, one end of the stroke", "取行程端点 C1"))
+    C2 = sc.given("C2", Point(H, 0.0), style="joint", caption=(f"C2 with C1C2 = H = {H:g}", f"截取 C1C2 = H = {H:g} 得 C2"))
+    gl = sc.add("guide", Line, C1, Point(1.0, 0.0), role=Role.GIVEN, style="given",
+                caption=("The slider's guide through C1 and C2", "过 C1、C2 作导路"))
+    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
+                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}", f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}"))
+    sc.add("K", float, K, visible=False)
+    kT = add_theta_circle(sc, C1, C2, th, +1, side_words=("above the guide", "在导路上方"))
+    n1 = sc.add("n1", perpendicular, gl, C1, caption=("Perpendicular to the guide at C1", "过 C1 作导路的垂线"))
+    Q = sc.add("Q", line_circle, n1, kT, branch=OtherThan(C1), style="point", label="Q",
+               caption=("It meets the θ-circle again at Q", "交 θ 圆于 Q"))
+    sc.add("arc_ok", admissible_arc, kT, Q, C1, C2, None, role=Role.ANNOTATION, style="admissible",
+           caption=("Admissible arc QC1: every A on it gives K and H", "A 的可行弧 QC1:其上任一点均满足 K、H"))
+    A = sc.add("A", best_on_arc, kT, Q, C1, C2, g.get("e_min") or 0.0, g.get("e_max"), role=Role.RESULT,
+               style="pivot", label="A*",
+               caption=("A* on QC1 with the largest working-stroke γmin (golden-section search; the crank turns "
+                        "counter-clockwise so that C1 → C2 is the slow working stroke)",
+                        "在弧 QC1 上求工作行程最小传动角最大的点 A*(曲柄逆时针转,C1→C2 为慢速工作行程)"))
+    finish_from_A(sc, A, C1, C2, gl, th, H)
+    names = {q.name: q.name for q in ANSWERS}
+    names["gamma_w_min"] = "gamma_min_slow"
+    return Construction(sc, names, {n: n for n in ("C1", "C2", "A", "B1", "B2")})
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """Bisection on the crank where the two working-stroke angles are equal (independent of the arc)."""
+    e_max = g.get("e_max")
+    return [crank_slider_best(g["K"], g["H"], e_min=g.get("e_min") or 0.0,
+                              e_max=math.inf if e_max is None else e_max)]
+
+
+def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
+    """Rebuild with ``crank_slider.extremes``: H, K and the slow stroke's γmin come back."""
+    v = extremes_construct({"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]}).scene.evaluate(["H", "K", "gamma_min_slow"])
+    return [("H", v["H"], g["H"], "mm"), ("K", v["K"], g["K"], ""), ("gamma_w_min", v["gamma_min_slow"], ans["gamma_w_min"], "deg")]
+
+
+RECIPE = Recipe(
+    name="crank_slider.best_by_K",
+    title="Offset crank-slider for K and H with the best working-stroke transmission angle (seed 004)",
+    givens=GIVENS, answers=ANSWERS, points=("C1", "C2", "A", "B1", "B2"),
+    construct=construct, analytic=analytic, validate=_validate, back_check=back_check,
+)
