@@ -203,7 +203,7 @@ def test_best_by_K_matches_the_seeds_independent_table(K):
     _assert_all_checks(sol)
     a = sol.answers
     for got, want in zip((a["AB"], a["BC"], a["e"], a["gamma_w_min"]), SEED_004[K]):
-        assert got == pytest.approx(want, rel=5e-6)             # the seed prints 6 significant digits
+        assert got == pytest.approx(want, rel=5e-6, abs=6e-5)   # the seed prints 6 digits or 4 decimals
     assert 48 <= a["AB"] < 50                     # the paper's legible a* column: 48 or 49 mm
     assert a["gamma_min"] < a["gamma_w_min"]      # the cycle's γmin falls in the return stroke
 
