@@ -225,3 +225,13 @@ def test_best_by_K_respects_the_offset_band():
     assert a["gamma_w_min"] < free["gamma_w_min"]
     with pytest.raises(NotAMechanism, match="e_min"):
         _solve("crank_slider.best_by_K", K=1.5, H=100, e_min=200)      # H·cot θ = 137.6
+
+
+def test_the_chosen_crank_rocker_pivot_lies_on_an_admissible_arc():
+    sol = _solve("crank_rocker.design_by_K", K=1.2, CD=300, psi=35, AB=80, gamma_allow=40)
+    arcs = sol.scene.value("narcs_ok")
+    A = sol.scene.value("A")
+    assert arcs and all(abs(abs(A - a.center) - a.r) < 1e-9 * a.r for a in arcs[:1])
+    ang = math.atan2(A.y - arcs[0].center.y, A.x - arcs[0].center.x)
+    assert any((ang - a.start) % (2 * math.pi) <= a.sweep for a in arcs)
+    assert sol.scene.value("farcs_ok") == ()        # the far design has γmin = 32.9° < 40°

@@ -160,6 +160,43 @@ def gamma_min_of(A: Point, D: Point, P1: Point, CD: float, a: float, b: float) -
     return min(out)
 
 
+def admissible_arcs(k, C1: Point, C2: Point, D: Point, CD: float, gamma_allow: float | None):
+    """The arcs of a θ-circle where A gives a valid design (:func:`is_valid`, and γmin ≥ ``gamma_allow`` when
+    given): the circle is sampled at 720 points and each boundary refined by bisection to 1e-12 of a turn."""
+    from ..geometry import Arc
+
+    def ok(t: float) -> bool:
+        A = k.at(t)
+        if not is_valid(A, C1, C2, D, CD):
+            return False
+        if gamma_allow is None:
+            return True
+        return gamma_min_of(A, D, C1, CD, half_difference(A, C1, C2), half_sum(A, C1, C2)) >= gamma_allow
+
+    n = 720
+    ts = [2 * math.pi * i / n for i in range(n)]
+    flags = [ok(t) for t in ts]
+    if all(flags):
+        return (Arc(k.center, k.r, 0.0, 2 * math.pi),)
+    start = flags.index(False)
+    arcs, t0 = [], None
+    for j in range(1, n + 1):
+        i = (start + j) % n
+        prev = (start + j - 1) % n
+        if flags[i] != flags[prev]:
+            a, b = ts[prev], ts[prev] + 2 * math.pi / n
+            for _ in range(45):
+                m = (a + b) / 2
+                a, b = (m, b) if ok(m) == flags[prev] else (a, m)
+            edge = (a + b) / 2
+            if flags[i]:
+                t0 = edge
+            elif t0 is not None:
+                arcs.append(Arc(k.center, k.r, t0, (edge - t0) % (2 * math.pi)))
+                t0 = None
+    return tuple(arcs)
+
+
 def preference(sol: Mapping[str, float]) -> tuple[float, float, float]:
     """The textbook's order of solutions: C1 folded first, then A on D's side, then the shorter frame."""
     return (-sol["C1_folded"], -sol["A_near"], sol["AD"])
@@ -288,6 +325,10 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
     n = 0
     for s, pre, en, zh, lab in sides:
         kT = add_theta_circle(sc, C1, C2, th, s, side_words=(en, zh), prefix=pre, label=lab)
+        sc.add(f"{pre}arcs_ok", admissible_arcs, kT, C1, C2, D, CD, g.get("gamma_allow"), role=Role.ANNOTATION,
+               style="admissible", caption=(f"Admissible arcs {en}: a crank, C1 and C2 on one side of AD"
+                                            + (f", γmin ≥ {g['gamma_allow']:g}°" if g.get("gamma_allow") else ""),
+                                            f"A 的可行弧段({zh})"))
         side_rule = LeftOf(C1, C2) if s > 0 else RightOf(C1, C2)
         if closing == "BC":
             half = sc.add(f"{pre}half", _times, th, 0.5, visible=False, unit="deg")
