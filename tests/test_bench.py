@@ -63,3 +63,13 @@ def test_bench_command_writes_the_plot(tmp_path):
     assert r.returncode == 0, r.stderr
     assert out.is_file() and ET.parse(out).getroot().tag.endswith("svg")
     assert "construction" in r.stdout and "steps evaluated" in r.stdout
+
+
+def test_design_by_K_agrees_with_sympy_geometry():
+    pytest.importorskip("sympy")      # in the test extra; the bench reports "not measured" without it
+    from geomcon.bench.exact import engine_crank_slider, sympy_crank_slider
+
+    for g in ({"K": 1.5, "H": 50, "e": 20}, {"K": 2, "H": 300, "e": 60}):
+        e_ab, e_bc = engine_crank_slider(**g)
+        s_ab, s_bc = sympy_crank_slider(**g)
+        assert e_ab == pytest.approx(s_ab, rel=1e-12) and e_bc == pytest.approx(s_bc, rel=1e-12)

@@ -14,6 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..fileio import write_all
+from .exact import exact_table, measure_exact
 from .measure import CASES, FULL, QUICK, Case, Config, DrawRow, ErrorRow, measure_drawing, measure_extremes
 from .plot import render_plot
 from .report import report
@@ -32,7 +33,7 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
     config = QUICK if quick else FULL
     extremes = measure_extremes(config)
     drawing = measure_drawing(config)
-    text = report(extremes, drawing, quick=quick)
+    text = report(extremes, drawing, quick=quick) + "\n\n" + exact_table(measure_exact(1 if quick else 3))
     write_all({out: render_plot(extremes, quick=quick)})
     print(text + f"\nplot written to {out}")
     return 0

@@ -1,0 +1,85 @@
+"""(c) Design by K: the engine's construction against the same construction in sympy.geometry (exact
+arithmetic, then evaluated to 30 digits), run time and error against the closed-form twin side by side.
+
+sympy is an optional dependency of the benchmark only (it is in the ``test`` extra); without it this part
+is reported as not measured.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from ..analytic.design_by_k import crank_slider_design
+
+CASES = ({"K": 1.5, "H": 50, "e": 20}, {"K": 1.25, "H": 101.737391, "e": 20}, {"K": 2, "H": 300, "e": 60})
+
+
+@dataclass(frozen=True)
+class ExactRow:
+    """One design by both routes: seconds and |error| of AB and BC against the twin."""
+
+    given: Mapping[str, Any]
+    method: str
+    seconds: float
+    err_AB: float
+    err_BC: float
+
+
+def sympy_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
+    """AB, BC by the θ-circle construction in sympy.geometry (C2P ⊥ C1C2, ∠C2C1P = 90° − θ, circle C1C2P,
+    the parallel at distance e, the intersection left of C1, then AB = (AC2 − AC1)/2, BC = (AC2 + AC1)/2)."""
+    import sympy as sp
+    from sympy.geometry import Circle, Line, Point
+
+    Kq, Hq, eq = sp.nsimplify(K), sp.nsimplify(H), sp.nsimplify(e)
+    th = sp.pi * (Kq - 1) / (Kq + 1)
+    C1, C2 = Point(0, 0), Point(Hq, 0)
+    P = Line(C2, Point(Hq, 1)).intersection(Line(C1, Point(sp.cos(sp.pi / 2 - th), sp.sin(sp.pi / 2 - th))))[0]
+    k = Circle(C1, C2, P)
+    A = min(k.intersection(Line(Point(0, eq), Point(1, eq))), key=lambda p: float(p.x))
+    u, v = A.distance(C1), A.distance(C2)
+    return float(sp.N((v - u) / 2, 30)), float(sp.N((v + u) / 2, 30))
+
+
+def engine_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
+    """AB, BC by geomcon's ``crank_slider.design_by_K`` construction (answers only)."""
+    from ..recipes import get_recipe
+    from ..problems import validate_given
+
+    r = get_recipe("crank_slider.design_by_K")
+    vals = r.construct(validate_given(r, {"K": K, "H": H, "e": e})).scene.evaluate(["AB", "BC"])
+    return vals["AB"], vals["BC"]
+
+
+def measure_exact(repeat: int = 3) -> list[ExactRow] | None:
+    """Both routes on every case; None when sympy is not installed."""
+    try:
+        import sympy  # noqa: F401
+    except ImportError:
+        return None
+    rows = []
+    for g in CASES:
+        exact = crank_slider_design(g["K"], g["H"], e=g["e"])
+        for method, fn, n in (("geomcon", engine_crank_slider, repeat * 20), ("sympy.geometry", sympy_crank_slider, repeat)):
+            best = float("inf")
+            for _ in range(n):
+                t0 = time.perf_counter()
+                ab, bc = fn(g["K"], g["H"], g["e"])
+                best = min(best, time.perf_counter() - t0)
+            rows.append(ExactRow(g, method, best, abs(ab - exact["AB"]), abs(bc - exact["BC"])))
+    return rows
+
+
+def exact_table(rows: list[ExactRow] | None) -> str:
+    """The printed table of part (c)."""
+    if rows is None:
+        return "(c) design by K vs sympy.geometry: not measured (sympy is not installed: pip install sympy)"
+    lines = ["(c) crank_slider.design_by_K (K, H, e): the engine vs the same construction in sympy.geometry", "",
+             f"{'given':<28}  {'method':<15}  {'time (best)':>11}  {'|ΔAB| mm':>9}  {'|ΔBC| mm':>9}",
+             f"{'-' * 28}  {'-' * 15}  {'-' * 11}  {'-' * 9}  {'-' * 9}"]
+    for r in rows:
+        g = ", ".join(f"{k}={v:g}" for k, v in r.given.items())
+        t = f"{r.seconds * 1e3:.3g} ms" if r.seconds < 1 else f"{r.seconds:.3g} s"
+        lines.append(f"{g:<28}  {r.method:<15}  {t:>11}  {r.err_AB:>9.1e}  {r.err_BC:>9.1e}")
+    return "\n".join(lines)
