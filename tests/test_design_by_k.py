@@ -235,3 +235,16 @@ def test_the_chosen_crank_rocker_pivot_lies_on_an_admissible_arc():
     ang = math.atan2(A.y - arcs[0].center.y, A.x - arcs[0].center.x)
     assert any((ang - a.start) % (2 * math.pi) <= a.sweep for a in arcs)
     assert sol.scene.value("farcs_ok") == ()        # the far design has γmin = 32.9° < 40°
+
+
+@pytest.mark.parametrize("i", range(10))
+def test_random_slotter_designs(i):
+    rng = random.Random(7000 + i)
+    sol = _solve("slotter.design_by_K", K=rng.uniform(1.05, 2.5), H=rng.uniform(50, 300),
+                 B1B2=rng.uniform(100, 600), alpha_allow=rng.uniform(5, 30))
+    _assert_all_checks(sol)
+
+
+def test_slotter_seed_001_19():
+    a = _solve("slotter.design_by_K", K=1.5, H=154, B1B2=308, alpha_allow=10).answers
+    assert (round(a["AB"], 2), round(a["AC"], 2), a["CD"], round(a["DE"], 1)) == (161.93, 50.04, 77.0, 443.4)

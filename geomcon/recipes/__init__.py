@@ -11,13 +11,13 @@ from __future__ import annotations
 
 from ..errors import ProblemError
 from . import (crank_rocker, crank_rocker_design, crank_slider, crank_slider_best, crank_slider_design, guide_bar,
-               guide_bar_design)
+               guide_bar_design, slotter_design)
 from .base import Construction, Quantity, Recipe
 
 RECIPES: dict[str, Recipe] = {r.name: r for r in (crank_rocker.RECIPE, crank_rocker_design.RECIPE, crank_slider.RECIPE,
                                                 crank_slider_design.RECIPE, crank_slider_best.RECIPE,
                                                 guide_bar.RECIPE, guide_bar_design.GUIDE_RECIPE,
-                                                guide_bar_design.SHAPER_RECIPE)}
+                                                guide_bar_design.SHAPER_RECIPE, slotter_design.RECIPE)}
 
 
 def get_recipe(name: str) -> Recipe:
