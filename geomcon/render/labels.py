@@ -1,54 +1,132 @@
-"""Point labels as textbooks print them (C1 → C with subscript 1), placed off the lines.
-
-Placement is greedy and deterministic: for each label, in step order, sixteen directions around its point
-are tried and the one whose text centre keeps the largest clearance from the drawn curves, the points and
-the labels already placed wins (the first in direction order on a tie).
+"""Texts: point labels as textbooks print them (C1 → C with subscript 1), subscripts in captions, width
+estimates and line wrapping (CJK characters are about 1 em wide, Latin ones about half).
 
 Examples
 --------
->>> split_label("C1")
-('C', '1', '')
->>> split_label("B′")
-('B', '', '′')
->>> best_offset((0.0, 0.0), [((-10.0, 0.0), (10.0, 0.0))], [], [], 3.0)[1] != 0.0
-True
+>>> label_runs("C1")
+(('C', False), ('1', True))
+>>> label_runs("B′′")
+(('B′′', False),)
+>>> rich_runs("Join AC2, γmin")
+(('Join AC', False), ('2', True), (', γ', False), ('min', True))
+>>> wrap("one two three", 8 * 2.7 * 0.55, 2.7)
+['one two', 'three']
 """
 from __future__ import annotations
 
-import math
 import re
-from typing import Sequence
 
-_LABEL = re.compile(r"^([^\d′″‴'*]+)(\d*)(.*)$")
-DIRECTIONS = [(math.cos(math.radians(a)), math.sin(math.radians(a)))
-              for a in (45, 135, 225, 315, 90, 0, 180, 270, 22.5, 67.5, 112.5, 157.5, 202.5, 247.5, 292.5, 337.5)]
+Runs = tuple[tuple[str, bool], ...]
 
-Seg = tuple[tuple[float, float], tuple[float, float]]
-Circ = tuple[tuple[float, float], float]
+_LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴']*)$")
+_SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max)\b")
 
 
-def split_label(label: str) -> tuple[str, str, str]:
-    """(letters, subscript digits, rest) of a point label."""
+def label_runs(label: str) -> Runs:
+    """Runs of a point label: letters, then trailing digits as a subscript, then primes."""
     m = _LABEL.match(label)
-    return (m.group(1), m.group(2), m.group(3)) if m else (label, "", "")
+    if not m:
+        return ((label, False),)
+    out = [(m.group(1), False), (m.group(2), True)]
+    if m.group(3):
+        out.append((m.group(3), False))
+    return tuple(out)
 
 
-def _dist_seg(p: tuple[float, float], s: Seg) -> float:
-    (ax, ay), (bx, by) = s
-    dx, dy = bx - ax, by - ay
-    L2 = dx * dx + dy * dy
-    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / L2))
-    return math.hypot(p[0] - ax - t * dx, p[1] - ay - t * dy)
+def rich_runs(text: str) -> Runs:
+    """Runs of a caption: digits right after a capital or Greek letter (C1, AB2, γ1) and min/max after a
+    Greek letter (γmin) become subscripts."""
+    out: list[tuple[str, bool]] = []
+    pos = 0
+    for m in _SUB.finditer(text):
+        if m.start() > pos:
+            out.append((text[pos:m.start()], False))
+        out.append((m.group(0), True))
+        pos = m.end()
+    if pos < len(text):
+        out.append((text[pos:], False))
+    return tuple(out)
 
 
-def best_offset(p: tuple[float, float], segs: Sequence[Seg], circles: Sequence[Circ],
-                taken: Sequence[tuple[float, float]], dist: float) -> tuple[float, float]:
-    """The label offset (paper mm, y down) for a point at ``p`` with the most clearance."""
-    best, best_score = DIRECTIONS[0], -1.0
-    for dx, dy in DIRECTIONS:
-        c = (p[0] + dx * dist, p[1] - dy * dist)
-        score = min([_dist_seg(c, s) for s in segs] + [abs(math.hypot(c[0] - o[0], c[1] - o[1]) - r) for o, r in circles]
-                    + [math.hypot(c[0] - q[0], c[1] - q[1]) * 0.6 for q in taken] + [10.0])
-        if score > best_score + 1e-9:
-            best, best_score = (dx, dy), score
-    return (best[0] * dist, -best[1] * dist)
+def char_em(ch: str) -> float:
+    """Estimated advance of one character in em (Noto Sans CJK / DejaVu Sans metrics, rounded up)."""
+    o = ord(ch)
+    if 0x2E80 <= o <= 0x9FFF or 0xF900 <= o <= 0xFAFF or 0xFF00 <= o <= 0xFFEF or 0x3000 <= o <= 0x303F:
+        return 1.0
+    if ch == " ":
+        return 0.26
+    if ch in "ilj.,:;'|!′″()[]":
+        return 0.3
+    if ch in "mwMW":
+        return 0.85
+    if ch.isupper():
+        return 0.66
+    if ch.isdigit():
+        return 0.56
+    if ch in "−+=<>×÷→≤≥°":
+        return 0.6
+    return 0.54
+
+
+def text_width(text: str | Runs, size: float) -> float:
+    """Estimated width (paper mm) of a text or of runs (subscripts at 72 %) at font ``size``."""
+    runs = ((text, False),) if isinstance(text, str) else text
+    return sum(char_em(ch) * size * (0.72 if sub else 1.0) for s, sub in runs for ch in s)
+
+
+def _tokens(s: str) -> list[str]:
+    """Breakable pieces: Latin words with their trailing space, single CJK characters (closing punctuation
+    stays with the character before it)."""
+    out: list[str] = []
+    word = ""
+    for ch in s:
+        cjk = char_em(ch) == 1.0
+        if cjk and ch in _CLOSING:
+            word += ch
+        elif cjk:
+            if word:
+                out.append(word)
+            word = ch
+        elif ch == " ":
+            out.append(word + " ")
+            word = ""
+        else:
+            if word and char_em(word[-1]) == 1.0 and word[-1] not in _CLOSING:
+                out.append(word)
+                word = ""
+            word += ch
+    if word:
+        out.append(word)
+    return out
+
+
+_CLOSING = ",。、;:)」』!?"
+
+
+def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> list[str]:
+    """Split ``text`` into lines no wider than ``width`` (estimated, paper mm at font ``size``).
+
+    Latin text breaks at spaces, CJK text between characters. ``last_reserve`` keeps room at the end of
+    the last line (for a value appended later).
+
+    Examples
+    --------
+    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)
+    ['以 A 为圆心、BC', '− AB = 20 为半径', '作圆']
+    """
+    lines: list[str] = []
+    cur = ""
+    for tok in _tokens(text):
+        if cur.strip() and text_width(rich_runs(cur + tok.rstrip()), size) > width:
+            lines.append(cur.rstrip())
+            cur = tok.lstrip()
+        else:
+            cur += tok
+    lines.append(cur.rstrip())
+    if last_reserve and len(lines[-1]) and text_width(rich_runs(lines[-1]), size) + last_reserve > width:
+        words = lines[-1].rsplit(" ", 1)
+        if len(words) == 2 and words[0]:
+            lines[-1:] = words
+        else:
+            lines.append("")
+    return lines

@@ -1,11 +1,15 @@
-"""A self-contained HTML step player: the full drawing inline, previous / next / play, a slider, the current
-step's caption in English and Chinese. No network: no external script, style or font.
+"""A self-contained HTML step player: the full drawing inline, first / previous / play / next / last buttons,
+keyboard arrows, a slider, and the current step's number and caption in English and Chinese.
+
+The replay is pure CSS: every step group and protocol entry carries ``data-step``; the script only sets
+the classes ``future`` (hidden) and ``current`` (highlighted) by comparing it with the current step. No
+network: no external script, style sheet or font.
 
 Examples
 --------
->>> from geomcon.recipes.guide_bar import construct
->>> page = render_html(construct({"AB": 145.0, "AC": 290.0}).scene, title="demo")
->>> page.startswith("<!DOCTYPE html>") and "<script src" not in page
+>>> from geomcon.recipes.crank_rocker import construct
+>>> page = render_html(construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene, title="demo")
+>>> page.startswith("<!DOCTYPE html>") and "<script src" not in page and "<link" not in page
 True
 """
 from __future__ import annotations
@@ -15,69 +19,127 @@ import json
 from typing import Sequence
 
 from ..scene import Scene
+from .style import FONT_FAMILY, HIGHLIGHT
 from .svg import render_svg
 
+_CSS = """
+body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fafafa; }
+#bar { display: flex; gap: .4em; align-items: center; flex-wrap: wrap; margin: .4em 0; }
+#bar button { font: inherit; padding: .15em .7em; min-width: 2.4em; cursor: pointer; }
+#slider { flex: 1 1 16em; max-width: 40em; }
+#count { font-variant-numeric: tabular-nums; min-width: 6em; }
+#caption { min-height: 3em; margin: .2em 0 .6em 0; padding: .4em .7em; background: #fff; border-left: 4px solid %(hl)s; }
+#caption .en { font-weight: bold; }
+#caption .zh { color: #5c6370; }
+#drawing { background: #fff; border: 1px solid #ddd; overflow: auto; }
+#drawing svg { display: block; width: 100%%; height: auto; }
+.future { display: none; }
+"""
+
+_SCRIPT = """
+(function () {
+  "use strict";
+  var STEPS = %(steps)s;
+  var N = STEPS.length;
+  var k = N, timer = null;
+  if (N === 0) return;
+  var items = Array.prototype.slice.call(document.querySelectorAll("#drawing [data-step]"));
+  function $(id) { return document.getElementById(id); }
+  function show(j) {
+    k = Math.max(1, Math.min(N, j));
+    items.forEach(function (el) {
+      var s = parseInt(el.getAttribute("data-step"), 10);
+      el.classList.toggle("future", s > k);
+      el.classList.toggle("current", s === k);
+    });
+    $("slider").value = k;
+    $("count").textContent = "step " + k + " / " + N;
+    var c = STEPS[k - 1];
+    $("cap-en").textContent = k + ". " + c[0];
+    $("cap-zh").textContent = c[1];
+  }
+  function stop() {
+    if (timer) { clearInterval(timer); timer = null; }
+    $("play").textContent = "\\u25B6 play";
+  }
+  function play() {
+    if (timer) { stop(); return; }
+    if (k >= N) show(1);
+    $("play").textContent = "\\u275A\\u275A pause";
+    timer = setInterval(function () { if (k >= N) stop(); else show(k + 1); }, 1200);
+  }
+  $("first").onclick = function () { stop(); show(1); };
+  $("prev").onclick = function () { stop(); show(k - 1); };
+  $("next").onclick = function () { stop(); show(k + 1); };
+  $("last").onclick = function () { stop(); show(N); };
+  $("play").onclick = play;
+  $("slider").oninput = function (e) { stop(); show(parseInt(e.target.value, 10)); };
+  document.addEventListener("keydown", function (e) {
+    if (e.target && e.target.tagName === "INPUT" && e.key !== " ") return;
+    if (e.key === "ArrowLeft" || e.key === "ArrowUp") { stop(); show(k - 1); e.preventDefault(); }
+    else if (e.key === "ArrowRight" || e.key === "ArrowDown") { stop(); show(k + 1); e.preventDefault(); }
+    else if (e.key === "Home") { stop(); show(1); e.preventDefault(); }
+    else if (e.key === "End") { stop(); show(N); e.preventDefault(); }
+    else if (e.key === " ") { play(); e.preventDefault(); }
+  });
+  show(N);
+})();
+"""
+
 _PAGE = """<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>{title}</title>
-<style>
-body {{ font-family: "Noto Sans CJK SC", "Noto Sans", "DejaVu Sans", sans-serif; margin: 1em; color: #1a1a1a; }}
-#bar {{ display: flex; gap: .6em; align-items: center; margin: .5em 0; }}
-#bar button {{ font-size: 1em; padding: .2em .8em; }}
-#caption {{ min-height: 3.2em; margin: .3em 0 .6em 0; }}
-#caption .zh {{ color: #5c6370; }}
-#drawing svg {{ max-width: 100%; height: auto; border: 1px solid #ddd; }}
-.step.future, .protocol.future {{ display: none; }}
-</style></head>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>%(title)s</title>
+<style>%(css)s</style>
+</head>
 <body>
-<h1 style="font-size:1.2em">{title}</h1>
-<div id="bar"><button id="prev" title="previous step (←)">◀</button><button id="play" title="play (space)">▶ play</button>
-<button id="next" title="next step (→)">▶</button><input id="slider" type="range" min="0" max="{n}" value="{n}">
-<span id="count"></span></div>
-<div id="caption"><div class="en"></div><div class="zh"></div></div>
-<div id="drawing">{svg}</div>
-<script>
-const CAPTIONS = {captions};
-const N = {n};
-let k = N, timer = null;
-function show(j) {{
-  k = Math.max(0, Math.min(N, j));
-  document.querySelectorAll("[data-step]").forEach(function (el) {{
-    const s = parseInt(el.getAttribute("data-step"), 10);
-    el.classList.toggle("future", s > k);
-    el.classList.toggle("current", s === k);
-  }});
-  document.getElementById("slider").value = k;
-  document.getElementById("count").textContent = "step " + k + " / " + N;
-  const c = k > 0 ? CAPTIONS[k - 1] : ["", ""];
-  document.querySelector("#caption .en").textContent = k > 0 ? k + ". " + c[0] : "";
-  document.querySelector("#caption .zh").textContent = c[1];
-}}
-function play() {{
-  if (timer) {{ clearInterval(timer); timer = null; document.getElementById("play").textContent = "▶ play"; return; }}
-  if (k >= N) show(0);
-  document.getElementById("play").textContent = "❚❚ pause";
-  timer = setInterval(function () {{ if (k >= N) {{ play(); }} else {{ show(k + 1); }} }}, 1200);
-}}
-document.getElementById("prev").onclick = function () {{ show(k - 1); }};
-document.getElementById("next").onclick = function () {{ show(k + 1); }};
-document.getElementById("play").onclick = play;
-document.getElementById("slider").oninput = function (e) {{ show(parseInt(e.target.value, 10)); }};
-document.addEventListener("keydown", function (e) {{
-  if (e.key === "ArrowLeft") show(k - 1);
-  else if (e.key === "ArrowRight") show(k + 1);
-  else if (e.key === " ") {{ e.preventDefault(); play(); }}
-}});
-show(N);
-</script>
-</body></html>
+<div id="bar">
+<button id="first" type="button" title="first step (Home)">|\u25C0</button>
+<button id="prev" type="button" title="previous step (\u2190)">\u25C0</button>
+<button id="play" type="button" title="play / pause (space)">\u25B6 play</button>
+<button id="next" type="button" title="next step (\u2192)">\u25B6</button>
+<button id="last" type="button" title="last step (End)">\u25B6|</button>
+<input id="slider" type="range" min="1" max="%(n)d" value="%(n)d" aria-label="step">
+<span id="count">step %(n)d / %(n)d</span>
+</div>
+<div id="caption"><div class="en" id="cap-en"></div><div class="zh" id="cap-zh"></div></div>
+<div id="drawing">
+%(svg)s
+</div>
+<script>%(script)s</script>
+</body>
+</html>
 """
 
 
+def step_captions(scene: Scene) -> list[tuple[str, str]]:
+    """(English, Chinese) caption of every numbered step, in protocol order (branch rules included)."""
+    return [scene.caption(group[0].key) for group in scene.frames()]
+
+
 def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] = ()) -> str:
-    """The step player page of the whole scene."""
+    """The step player page of the whole scene.
+
+    Parameters
+    ----------
+    scene : Scene
+        The construction (every step is evaluated).
+    title : str or None
+        Page and drawing title (default: the scene's title).
+    info : sequence of str
+        Result lines printed under the protocol.
+
+    Returns
+    -------
+    str
+        One self-contained HTML document.
+    """
     svg = render_svg(scene, title=title, info=info)
-    svg = svg[svg.index("<svg"):] if "<svg" in svg else svg
-    frames = scene.frames()
-    captions = [list(scene.caption(group[0].key)) for group in frames]
-    return _PAGE.format(title=html.escape(title or scene.title), n=len(frames), svg=svg,
-                        captions=json.dumps(captions, ensure_ascii=False).replace("</", "<\\/"))
+    svg = svg[svg.index("<svg"):]
+    steps = json.dumps(step_captions(scene), ensure_ascii=False).replace("</", "<\\/")
+    css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
+                                    for f in FONT_FAMILY.split(",")), "hl": HIGHLIGHT}
+    return _PAGE % {"title": html.escape(title or scene.title), "css": css, "n": len(scene.frames()), "svg": svg,
+                    "script": _SCRIPT % {"steps": steps}}

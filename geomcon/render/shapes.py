@@ -1,206 +1,220 @@
-"""Drawing one step's value on paper: each function returns a list of svgwrite elements.
+"""Paper-space shapes: what a step draws, before it becomes SVG.
 
-Every function takes the value, the :class:`~geomcon.render.geometry2d.View` and the style's attributes,
-and draws nothing for ``None`` (a candidate that does not exist) or for numbers (measurements appear in the
-protocol only).
+Drawing a value produces a few small frozen shapes in paper mm (y down): polylines, arcs, discs and
+texts. The same shapes give the SVG elements and the obstacles the label placer keeps clear of, so what
+is avoided is exactly what is drawn.
+
+Examples
+--------
+>>> pen = Pen("#000", 0.35)
+>>> el = to_svg(Poly(((0.0, 0.0), (10.0, 0.0)), pen))
+>>> el.tostring()
+'<path class="ink" d="M0 0L10 0" fill="none" stroke="#000" stroke-linecap="round" stroke-linejoin="round" stroke-width="0.35" />'
+>>> round(obstacle(Poly(((0.0, 0.0), (10.0, 0.0)), pen)).length, 6)
+10.0
 """
 from __future__ import annotations
 
 import math
-from typing import Any
+from dataclasses import dataclass, replace
+from typing import Any, Union
 
+import shapely
 import svgwrite
 
-from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
-from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
-from .geometry2d import View, clip_line
-from .style import INK, POINT_RADIUS
+from .style import HALO, HIGHLIGHT, PAPER
+from .view import fmt
 
-D = svgwrite.Drawing(profile="full", debug=False)   # an element factory only; never saved
+_D = svgwrite.Drawing(profile="full", debug=False)   # element factory only; never saved
 
-
-def _attrs(style: dict) -> dict:
-    return {k.replace("-", "_"): v for k, v in style.items()}
+XY = tuple[float, float]
 
 
-def _unit(v: tuple[float, float]) -> tuple[float, float]:
-    n = math.hypot(*v)
-    return (v[0] / n, v[1] / n) if n else (1.0, 0.0)
+@dataclass(frozen=True, slots=True)
+class Pen:
+    """Stroke colour, width and dash pattern (paper mm), with an opacity."""
+
+    stroke: str
+    width: float
+    dash: tuple[float, ...] = ()
+    opacity: float = 1.0
 
 
-def _pp(view: View, p: Point) -> tuple[float, float]:
-    return view.p(p.x, p.y)
+@dataclass(frozen=True, slots=True)
+class Poly:
+    """A polyline (or closed polygon) through paper points; ``fill`` only for closed ones."""
+
+    pts: tuple[XY, ...]
+    pen: Pen
+    closed: bool = False
+    fill: str = "none"
 
 
-def _polyline(points, **kw):
-    return D.polyline([(round(x, 3), round(y, 3)) for x, y in points], fill="none", **kw)
+@dataclass(frozen=True, slots=True)
+class ArcP:
+    """A circular arc on paper: centre, radius, start angle and signed sweep (radians, paper orientation:
+    positive turns clockwise as seen, since y points down)."""
+
+    c: XY
+    r: float
+    start: float
+    sweep: float
+    pen: Pen
+
+    def at(self, f: float) -> XY:
+        """The point at fraction ``f`` of the arc."""
+        a = self.start + f * self.sweep
+        return (self.c[0] + self.r * math.cos(a), self.c[1] + self.r * math.sin(a))
 
 
-def point(p: Point, view: View, style_name: str) -> list:
-    """A joint, pivot or construction point."""
-    r = POINT_RADIUS.get(style_name, 0.5)
-    x, y = _pp(view, p)
-    if style_name in ("pivot", "joint", "candidate"):
-        color = "#7d8590" if style_name == "candidate" else INK
-        return [D.circle((x, y), r, fill="white", stroke=color, stroke_width=0.35)]
-    return [D.circle((x, y), r, fill=INK, stroke="none")]
+@dataclass(frozen=True, slots=True)
+class Disc:
+    """A circle on paper: a point marker (``fill`` white for a hinge, ink for a dot) or a whole circle."""
+
+    c: XY
+    r: float
+    pen: Pen | None
+    fill: str = "none"
 
 
-def segment(s: Segment, view: View, st: dict) -> list:
-    """A link or a construction segment."""
-    return [D.line(_pp(view, s.a), _pp(view, s.b), stroke_linecap="round", **_attrs(st))]
+@dataclass(frozen=True, slots=True)
+class Text:
+    """A text on paper: ``runs`` of (text, subscript?) anchored at ``x`` (``anchor``) on baseline ``y``.
+
+    ``box`` is its estimated extent (x0, y0, x1, y1) before rotation, used as an obstacle; ``rotate``
+    turns text and box about the box's centre, in degrees (clockwise as seen).
+    """
+
+    x: float
+    y: float
+    runs: tuple[tuple[str, bool], ...]
+    size: float
+    fill: str
+    box: tuple[float, float, float, float]
+    anchor: str = "middle"
+    italic: bool = False
+    rotate: float = 0.0
+    cls: str = "mark-text"
 
 
-def line(value: Line | Ray, view: View, st: dict) -> list:
-    """An infinite line or a ray, clipped to the view box."""
-    p = value.origin if isinstance(value, Ray) else value.point
-    part = clip_line(p.tuple(), value.direction.tuple(), view.box, ray=isinstance(value, Ray))
-    if part is None:
-        return []
-    return [D.line(view.p(*part[0]), view.p(*part[1]), **_attrs(st))]
+Shape = Union[Poly, ArcP, Disc, Text]
 
 
-def circle(c: Circle, view: View, st: dict) -> list:
-    """A full circle (clipped to the figure by the figure's clip path)."""
-    return [D.circle(_pp(view, c.center), round(view.length(c.r), 3), fill="none", **_attrs(st))]
+def recolour(shape: Shape, colour: str = HIGHLIGHT) -> Shape:
+    """The shape in another ink (white fills and halos stay white)."""
+    pen = getattr(shape, "pen", None)
+    if pen is not None:
+        shape = replace(shape, pen=replace(pen, stroke=colour))
+    if isinstance(shape, (Poly, Disc)) and shape.fill not in ("none", PAPER):
+        shape = replace(shape, fill=colour)
+    if isinstance(shape, Text):
+        shape = replace(shape, fill=colour)
+    return shape
 
 
-def arc_path(center: Point, r: float, start: float, sweep: float, view: View) -> str:
-    """SVG path data of a model arc (counter-clockwise from ``start`` through ``sweep`` radians)."""
-    if sweep >= 2 * math.pi - 1e-9:
-        sweep = 2 * math.pi - 1e-6
-    x0, y0 = view.p(center.x + r * math.cos(start), center.y + r * math.sin(start))
-    x1, y1 = view.p(center.x + r * math.cos(start + sweep), center.y + r * math.sin(start + sweep))
-    rp = round(view.length(r), 3)
-    return f"M {x0} {y0} A {rp} {rp} 0 {1 if sweep > math.pi else 0} 0 {x1} {y1}"
-
-
-def arc(a: Arc, view: View, st: dict) -> list:
-    """An arc (e.g. the admissible arc of a θ-circle)."""
-    return [D.path(d=arc_path(a.center, a.r, a.start, a.sweep, view), fill="none", stroke_linecap="round", **_attrs(st))]
-
-
-def angle_mark(m: AngleMark, view: View, st: dict) -> list:
-    """The arc of a marked angle and its value."""
-    va, vb = m.a - m.vertex, m.b - m.vertex
-    if abs(va) == 0 or abs(vb) == 0:
-        return []
-    a0 = math.atan2(va.y, va.x)
-    sweep = math.atan2(va.cross(vb), va.dot(vb))
-    if sweep < 0:
-        a0, sweep = a0 + sweep, -sweep
-    shortest = min(view.length(abs(va)), view.length(abs(vb)))
-    r_paper = view.length(m.radius) if m.radius else max(3.0, min(8.0, 0.45 * shortest))
-    r = r_paper * view.mu
-    out = []
-    if sweep > math.radians(0.2):
-        out.append(D.path(d=arc_path(m.vertex, r, a0, sweep, view), fill="none", **_attrs(st)))
-    mid = a0 + sweep / 2
-    tx, ty = view.p(m.vertex.x + (r + 4.2 * view.mu) * math.cos(mid), m.vertex.y + (r + 4.2 * view.mu) * math.sin(mid))
-    out.append(D.text(m.text, insert=(tx, round(ty + 1.0, 3)), text_anchor="middle", class_="mark-text"))
+# ---------------------------------------------------------------------------------------------- SVG
+def _pen_attrs(pen: Pen | None) -> dict[str, Any]:
+    if pen is None:
+        return {"stroke": "none"}
+    out: dict[str, Any] = {"stroke": pen.stroke, "stroke_width": fmt(pen.width)}
+    if pen.dash:
+        out["stroke_dasharray"] = " ".join(fmt(d) for d in pen.dash)
+    if pen.opacity != 1.0:
+        out["stroke_opacity"] = fmt(pen.opacity)
     return out
 
 
-def right_angle(m: RightAngleMark, view: View, st: dict) -> list:
-    """The little square of a right angle."""
-    v = _pp(view, m.vertex)
-    u = _unit((_pp(view, m.a)[0] - v[0], _pp(view, m.a)[1] - v[1]))
-    w = _unit((_pp(view, m.b)[0] - v[0], _pp(view, m.b)[1] - v[1]))
-    s = 2.0
-    pts = [(v[0] + u[0] * s, v[1] + u[1] * s), (v[0] + (u[0] + w[0]) * s, v[1] + (u[1] + w[1]) * s),
-           (v[0] + w[0] * s, v[1] + w[1] * s)]
-    return [_polyline(pts, **_attrs(st))]
+def arc_d(a: ArcP) -> str:
+    """SVG path data of an arc (split in two when it is a whole turn)."""
+    sweep = a.sweep
+    if abs(sweep) >= 2 * math.pi - 1e-9:
+        h = ArcP(a.c, a.r, a.start, math.copysign(math.pi, sweep), a.pen)
+        rest = ArcP(a.c, a.r, a.start + h.sweep, h.sweep, a.pen)
+        return arc_d(h) + " " + arc_d(rest)[arc_d(rest).index("A"):]
+    (x0, y0), (x1, y1) = a.at(0.0), a.at(1.0)
+    r = fmt(a.r)
+    large = 1 if abs(sweep) > math.pi else 0
+    flag = 1 if sweep > 0 else 0
+    return f"M{fmt(x0)} {fmt(y0)}A{r} {r} 0 {large} {flag} {fmt(x1)} {fmt(y1)}"
 
 
-def _arrow(tip: tuple[float, float], toward: tuple[float, float]) -> Any:
-    u = _unit((toward[0] - tip[0], toward[1] - tip[1]))
-    n = (-u[1], u[0])
-    L, W = 1.8, 0.5
-    pts = [tip, (tip[0] + u[0] * L + n[0] * W, tip[1] + u[1] * L + n[1] * W),
-           (tip[0] + u[0] * L - n[0] * W, tip[1] + u[1] * L - n[1] * W)]
-    return D.polygon([(round(x, 3), round(y, 3)) for x, y in pts], fill=INK, stroke="none")
+def to_svg(shape: Shape) -> Any:
+    """The svgwrite element of a shape."""
+    if isinstance(shape, Poly):
+        d = "M" + "L".join(f"{fmt(x)} {fmt(y)}" for x, y in shape.pts) + ("Z" if shape.closed else "")
+        return _D.path(d=d, fill=shape.fill, stroke_linecap="round", stroke_linejoin="round",
+                       class_="ink", **_pen_attrs(shape.pen))
+    if isinstance(shape, ArcP):
+        return _D.path(d=arc_d(shape), fill="none", stroke_linecap="round", class_="ink", **_pen_attrs(shape.pen))
+    if isinstance(shape, Disc):
+        cls = "ink" if shape.fill in ("none", PAPER) else "ink dot"
+        return _D.circle(center=(fmt(shape.c[0]), fmt(shape.c[1])), r=fmt(shape.r), fill=shape.fill, class_=cls,
+                         **_pen_attrs(shape.pen))
+    return _text(shape)
 
 
-def dimension(m: Dimension, view: View, st: dict) -> list:
-    """A linear dimension: extension lines, the dimension line with arrowheads, the value."""
-    d = m.b - m.a
-    if abs(d) == 0:
-        return []
-    n = d.unit().perp() * m.offset
-    a2, b2 = m.a + n, m.b + n
-    over = n.unit() * (1.2 * view.mu) if abs(n) else Point(0, 0)
-    pa, pb = _pp(view, a2), _pp(view, b2)
-    out = [D.line(_pp(view, m.a), _pp(view, a2 + over), **_attrs(st)),
-           D.line(_pp(view, m.b), _pp(view, b2 + over), **_attrs(st)),
-           D.line(pa, pb, **_attrs(st)), _arrow(pa, pb), _arrow(pb, pa)]
-    ang = math.degrees(math.atan2(pb[1] - pa[1], pb[0] - pa[0]))
-    if ang > 90 or ang <= -90:
-        ang -= 180 * (1 if ang > 0 else -1)
-    mx, my = (pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2
-    nx, ny = math.sin(math.radians(ang)), -math.cos(math.radians(ang))
-    t = D.text(m.text, insert=(round(mx + nx * 1.0, 3), round(my + ny * 1.0, 3)), text_anchor="middle", class_="mark-text")
-    t.rotate(round(ang, 3), center=(round(mx + nx * 1.0, 3), round(my + ny * 1.0, 3)))
-    return out + [t]
+def _text(t: Text) -> Any:
+    attrs: dict[str, Any] = {"font_size": fmt(t.size), "fill": t.fill, "stroke": PAPER, "stroke_width": fmt(HALO),
+                             "stroke_linejoin": "round", "paint_order": "stroke", "class_": t.cls}
+    if t.anchor != "start":
+        attrs["text_anchor"] = t.anchor
+    if t.italic:
+        attrs["font_style"] = "italic"
+    if t.rotate:
+        cx, cy = (t.box[0] + t.box[2]) / 2, (t.box[1] + t.box[3]) / 2
+        attrs["transform"] = f"rotate({fmt(t.rotate)} {fmt(cx)} {fmt(cy)})"
+    el = _D.text("", insert=(fmt(t.x), fmt(t.y)), **attrs)
+    add_runs(el, t.runs, t.size)
+    el.attribs["xml:space"] = "preserve"
+    return el
 
 
-def ground(m: Ground, view: View, st: dict) -> list:
-    """The hatched ground symbol of a fixed pivot: a triangle to a hatched base."""
-    x, y = _pp(view, m.at)
-    u = (math.cos(m.angle), -math.sin(m.angle))
-    n = (-u[1], u[0])
-    h, w = 3.2, 2.4
-    bx, by = x + u[0] * h, y + u[1] * h
-    e1, e2 = (bx + n[0] * w, by + n[1] * w), (bx - n[0] * w, by - n[1] * w)
-    out = [_polyline([e1, (x, y), e2], **_attrs(st)),
-           D.line((round(bx + n[0] * (w + 1), 3), round(by + n[1] * (w + 1), 3)),
-                  (round(bx - n[0] * (w + 1), 3), round(by - n[1] * (w + 1), 3)), **_attrs(st))]
-    for k in range(6):
-        s = -(w + 1) + k * (2 * w + 2) / 5
-        p0 = (bx + n[0] * s, by + n[1] * s)
-        p1 = (p0[0] + (u[0] - n[0]) * 1.2, p0[1] + (u[1] - n[1]) * 1.2)
-        out.append(D.line((round(p0[0], 3), round(p0[1], 3)), (round(p1[0], 3), round(p1[1], 3)), stroke=INK, stroke_width=0.2))
-    return out
+def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float) -> None:
+    """Append text runs to a text element: subscripts as smaller tspans lowered with ``dy`` (the one shift
+    every SVG renderer agrees on), the following run raised back."""
+    shift = 0.0
+    for s, sub in runs:
+        target = SUB_DROP * size if sub else 0.0
+        attrs: dict[str, Any] = {}
+        if target != shift:
+            attrs["dy"] = [fmt(target - shift)]
+            shift = target
+        if sub:
+            attrs["font_size"] = fmt(size * SUB_SCALE)
+        el.add(_D.tspan(s, **attrs))
 
 
-def slider(m: Slider, view: View, st: dict) -> list:
-    """A slider block centred on its joint, aligned with its direction of motion."""
-    x, y = _pp(view, m.at)
-    u = _unit((m.direction.x, -m.direction.y))
-    n = (-u[1], u[0])
-    a, b = 3.5, 2.2
-    pts = [(x + s * u[0] * a + t * n[0] * b, y + s * u[1] * a + t * n[1] * b) for s, t in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
-    return [D.polygon([(round(px, 3), round(py, 3)) for px, py in pts], fill="white", fill_opacity=0.85, **_attrs(st))]
+SUB_SCALE = 0.72
+SUB_DROP = 0.22
 
 
-def guide(m: Guide, view: View, st: dict) -> list:
-    """A straight guide with hatching on one side."""
-    pa, pb = _pp(view, m.a), _pp(view, m.b)
-    u = _unit((pb[0] - pa[0], pb[1] - pa[1]))
-    n = (u[1] * m.side, -u[0] * m.side)          # model left = paper right-hand normal (y flipped)
-    off = 2.4
-    out = [D.line((round(pa[0] + n[0] * off, 3), round(pa[1] + n[1] * off, 3)),
-                  (round(pb[0] + n[0] * off, 3), round(pb[1] + n[1] * off, 3)), **_attrs(st))]
-    L = math.hypot(pb[0] - pa[0], pb[1] - pa[1])
-    k = 0.0
-    while k <= L:
-        p0 = (pa[0] + u[0] * k + n[0] * off, pa[1] + u[1] * k + n[1] * off)
-        p1 = (p0[0] + (n[0] - u[0]) * 1.3, p0[1] + (n[1] - u[1]) * 1.3)
-        out.append(D.line((round(p0[0], 3), round(p0[1], 3)), (round(p1[0], 3), round(p1[1], 3)), stroke=INK, stroke_width=0.2))
-        k += 2.5
-    return out
+# ---------------------------------------------------------------------------------------------- obstacles
+def _arc_points(a: ArcP) -> list[XY]:
+    n = max(2, int(abs(a.sweep) * a.r / 1.0) + 2)     # a vertex every ~1 mm of paper
+    return [a.at(i / (n - 1)) for i in range(n)]
 
 
-def draw(value: Any, view: View, style_name: str, st: dict) -> list:
-    """Dispatch on the value's type."""
-    if value is None or isinstance(value, (bool, int, float)):
-        return []
-    if isinstance(value, Point):
-        return point(value, view, style_name)
-    table = {Segment: segment, Line: line, Ray: line, Circle: circle, Arc: arc, AngleMark: angle_mark,
-             RightAngleMark: right_angle, Dimension: dimension, Ground: ground, Slider: slider, Guide: guide}
-    fn = table.get(type(value))
-    if fn is None:
-        if isinstance(value, tuple):
-            return [e for v in value for e in draw(v, view, style_name, st)]
-        return []
-    return fn(value, view, st)
+def text_polygon(t: Text) -> shapely.Geometry:
+    """The estimated box of a text, rotated as drawn."""
+    x0, y0, x1, y1 = t.box
+    box = shapely.box(x0, y0, x1, y1)
+    if t.rotate:
+        from shapely import affinity
+        box = affinity.rotate(box, t.rotate, origin="center")
+    return box
+
+
+def obstacle(shape: Shape) -> shapely.Geometry:
+    """The shapely geometry a label must keep clear of: strokes as lines, markers and texts as areas."""
+    if isinstance(shape, Poly):
+        pts = list(shape.pts) + ([shape.pts[0]] if shape.closed else [])
+        geom = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
+        return shapely.Polygon(shape.pts) if shape.closed and shape.fill != "none" and len(pts) > 3 else geom
+    if isinstance(shape, ArcP):
+        return shapely.LineString(_arc_points(shape))
+    if isinstance(shape, Disc):
+        if shape.fill == "none":
+            return shapely.LineString(_arc_points(ArcP(shape.c, shape.r, 0.0, 2 * math.pi, Pen("", 0))))
+        return shapely.Point(shape.c).buffer(shape.r + (shape.pen.width / 2 if shape.pen else 0.0), 8)
+    return text_polygon(shape)
+

@@ -1,64 +1,175 @@
-"""The drawing styles: one table from style name to stroke, width (paper mm), dash and fill.
+"""The drawing styles: one table from style name to pen, point marker and layer, plus the page constants.
 
-Given elements are medium black, construction lines thin and light, results bold; every recipe names its
-styles from this table (see :mod:`geomcon.recipes`).
+All sizes are in mm of paper (one SVG user unit = 1 mm). Recipes name a style per step; an empty or
+unknown name falls back to a default chosen by the step's role and the kind of value it holds.
 
 Examples
 --------
->>> stroke_of("link")["stroke-width"]
+>>> STYLES["link"].width
 0.7
->>> stroke_of("no-such-style", role="construction")["stroke"]
-'#9aa0a6'
+>>> from geomcon.scene import Role
+>>> resolve_style("", Role.CONSTRUCTION, "curve").name
+'construction'
+>>> resolve_style("no-such-style", Role.RESULT, "point").name
+'joint'
+>>> resolve_style("", Role.ANNOTATION, "Ground").name
+'ground'
 """
 from __future__ import annotations
 
-FONT = "Noto Sans CJK SC, Noto Sans, DejaVu Sans, sans-serif"
+from dataclasses import dataclass, replace
+
+from ..scene.step import Role
+
+FONT_FAMILY = "Noto Sans CJK SC, Noto Sans, DejaVu Sans, sans-serif"
+"""Font stack of every text (a CJK font first, so that Chinese captions never fall back to boxes)."""
+
 INK = "#1a1a1a"
-LIGHT = "#9aa0a6"
-ALT = "#1c4e80"
 HIGHLIGHT = "#d9480f"
+"""Colour of the current step of a frame (orange-red)."""
+GREY_TEXT = "#5c6370"
+PAPER = "#ffffff"
 
-STYLES: dict[str, dict] = {
-    "given": {"stroke": INK, "stroke-width": 0.35},
-    "frame": {"stroke": INK, "stroke-width": 0.3, "stroke-dasharray": "6 1.2 1 1.2"},
-    "construction": {"stroke": LIGHT, "stroke-width": 0.18},
-    "theta-circle": {"stroke": "#5f7f9f", "stroke-width": 0.25},
-    "path": {"stroke": LIGHT, "stroke-width": 0.2, "stroke-dasharray": "1.5 1"},
-    "link": {"stroke": INK, "stroke-width": 0.7},
-    "link-alt": {"stroke": ALT, "stroke-width": 0.7},
-    "ghost": {"stroke": "#7d8590", "stroke-width": 0.3, "stroke-dasharray": "2 1"},
-    "admissible": {"stroke": "#2f9e44", "stroke-width": 1.6, "stroke-opacity": 0.45},
-    "angle": {"stroke": INK, "stroke-width": 0.25},
-    "right-angle": {"stroke": INK, "stroke-width": 0.25},
-    "dim": {"stroke": INK, "stroke-width": 0.2},
-    "ground": {"stroke": INK, "stroke-width": 0.3},
-    "slider": {"stroke": INK, "stroke-width": 0.45},
-    "guide": {"stroke": INK, "stroke-width": 0.35},
+LABEL_SIZE = 3.6        # point labels
+MARK_TEXT_SIZE = 2.9    # angle and dimension texts
+TITLE_SIZE = 5.0
+PROTO_SIZE = 2.7        # English protocol line
+PROTO_ZH_SIZE = 2.4     # Chinese protocol line
+INFO_SIZE = 2.7
+HALO = 0.9              # width of the white halo drawn behind texts
+
+LAYERS = ("construction", "given", "ground", "links", "marks", "sliders", "points")
+"""Drawing layers, bottom to top; every step group lives in exactly one of them."""
+
+
+@dataclass(frozen=True, slots=True)
+class Style:
+    """One named drawing style.
+
+    Parameters
+    ----------
+    name : str
+        The style name (also the ``style-<name>`` class of the step group).
+    stroke : str
+        Line colour.
+    width : float
+        Line width, paper mm.
+    dash : tuple of float
+        Dash pattern, paper mm; empty for a solid line.
+    marker : str
+        How a point of this style is drawn: ``"hollow"`` (a hinge circle) or ``"dot"``.
+    radius : float
+        Marker radius, paper mm.
+    marker_width : float
+        Outline width of a hollow marker, paper mm.
+    layer : str
+        Layer of curves and marks of this style (one of :data:`LAYERS`; points are always on top).
+    opacity : float
+        Stroke opacity.
+    compass : bool
+        Circles of this style are drawn as short compass arcs through the points lying on them (the
+        textbook way of drawing an auxiliary circle) rather than whole.
+    """
+
+    name: str
+    stroke: str = INK
+    width: float = 0.35
+    dash: tuple[float, ...] = ()
+    marker: str = "dot"
+    radius: float = 0.7
+    marker_width: float = 0.3
+    layer: str = "given"
+    opacity: float = 1.0
+    compass: bool = False
+
+
+STYLES: dict[str, Style] = {s.name: s for s in (
+    # points
+    Style("pivot", marker="hollow", radius=1.5, marker_width=0.4),
+    Style("joint", marker="hollow", radius=1.25, marker_width=0.55),
+    Style("point", marker="dot", radius=0.55),
+    Style("candidate", stroke="#7d8590", marker="hollow", radius=1.0, marker_width=0.3, layer="construction"),
+    Style("given", marker="dot", radius=0.75),
+    # curves
+    Style("frame", width=0.25, dash=(6.0, 1.2, 1.0, 1.2)),
+    Style("construction", stroke="#8f959c", width=0.18, layer="construction", compass=True),
+    Style("theta-circle", stroke="#5f7f9f", width=0.25, layer="construction"),
+    Style("link", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
+    Style("link-alt", stroke="#1c4e80", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
+    Style("ghost", stroke="#6f767e", width=0.3, dash=(2.0, 1.0), layer="construction"),
+    Style("path", stroke="#6f767e", width=0.22, dash=(1.6, 1.0), layer="construction"),
+    Style("admissible", stroke="#2f9e44", width=1.6, opacity=0.45, layer="construction"),
+    # marks
+    Style("ground", width=0.3, layer="ground"),
+    Style("guide", width=0.4, layer="ground"),
+    Style("slider", width=0.45, layer="sliders"),
+    Style("angle", width=0.25, layer="marks"),
+    Style("dim", width=0.2, layer="marks"),
+    Style("right-angle", width=0.25, layer="marks"),
+)}
+"""The style table: every style name the recipes use."""
+
+_ROLE_DEFAULTS: dict[tuple[Role, str], str] = {
+    (Role.GIVEN, "point"): "given",
+    (Role.GIVEN, "curve"): "given",
+    (Role.CONSTRUCTION, "point"): "point",
+    (Role.CONSTRUCTION, "curve"): "construction",
+    (Role.RESULT, "point"): "joint",
+    (Role.RESULT, "curve"): "link",
+    (Role.ANNOTATION, "point"): "point",
+    (Role.ANNOTATION, "curve"): "given",
+    (Role.MEASUREMENT, "point"): "point",
+    (Role.MEASUREMENT, "curve"): "construction",
 }
-ROLE_DEFAULT = {
-    "given": "given",
-    "construction": "construction",
-    "result": "link",
-    "measurement": "construction",
-    "annotation": "dim",
+
+MARK_DEFAULTS: dict[str, str] = {
+    "AngleMark": "angle", "RightAngleMark": "right-angle", "Dimension": "dim",
+    "Ground": "ground", "Slider": "slider", "Guide": "guide",
 }
-POINT_RADIUS = {"pivot": 1.1, "joint": 0.9, "point": 0.45, "given": 0.55, "candidate": 0.7}
+"""Default style of each mark type (by class name)."""
 
 
-def stroke_of(style: str, *, role: str = "construction") -> dict:
-    """SVG presentation attributes of a style (falling back on the role's default)."""
-    return dict(STYLES.get(style) or STYLES[ROLE_DEFAULT.get(role, "construction")])
+def resolve_style(name: str, role: Role, kind: str) -> Style:
+    """The style to draw a step with.
+
+    Parameters
+    ----------
+    name : str
+        The step's style name ("" for none).
+    role : Role
+        The step's role, deciding the default when ``name`` is empty or unknown.
+    kind : str
+        ``"point"``, ``"curve"`` or a mark class name (``"Ground"``, ``"AngleMark"``...).
+
+    Returns
+    -------
+    Style
+        ``STYLES[name]`` when known, else the default for the mark type, else for the role and kind.
+    """
+    if name in STYLES:
+        return STYLES[name]
+    if kind in MARK_DEFAULTS:
+        return STYLES[MARK_DEFAULTS[kind]]
+    return STYLES[_ROLE_DEFAULTS.get((role, kind), "construction")]
+
+
+def highlighted(style: Style) -> Style:
+    """The same style in the highlight colour (the current step of a frame), at least medium width.
+
+    Examples
+    --------
+    >>> s = highlighted(STYLES["construction"])
+    >>> s.stroke == HIGHLIGHT, s.width
+    (True, 0.3)
+    """
+    return replace(style, stroke=HIGHLIGHT, width=max(style.width, 0.3), opacity=max(style.opacity, 0.6))
 
 
 CSS = f"""
-text {{ font-family: {FONT}; fill: {INK}; }}
-.label {{ font-size: 3.6px; font-style: italic; }}
-.mark-text {{ font-size: 3px; }}
-.protocol {{ font-size: 2.9px; }}
-.protocol .zh {{ fill: #5c6370; font-size: 2.6px; }}
-.title {{ font-size: 5px; font-weight: bold; }}
-.info {{ font-size: 2.9px; }}
-.current line, .current circle, .current path, .current polyline, .current polygon {{ stroke: {HIGHLIGHT}; }}
-.current text, text.current {{ fill: {HIGHLIGHT}; }}
+.current .ink {{ stroke: {HIGHLIGHT}; }}
+.current .dot {{ fill: {HIGHLIGHT}; }}
+.current text, .proto.current text {{ fill: {HIGHLIGHT}; }}
 .future {{ display: none; }}
 """
+"""Replay styles: the HTML player toggles ``current`` and ``future`` on groups (presentation attributes
+lose against any CSS rule, so these recolour without touching the drawing)."""

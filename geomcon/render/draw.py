@@ -1,0 +1,182 @@
+"""Drawing one step's value: primitives and marks become paper shapes, labels become placement requests.
+
+Every function takes the value, its :class:`~geomcon.render.style.Style` and the :class:`Context` of the
+figure, and returns a :class:`Drawn`: the shapes to draw now and the texts whose position the label placer
+decides later. The marks (ground, slider, angle...) are in :mod:`geomcon.render.symbols`.
+
+Examples
+--------
+>>> from geomcon.geometry import Point, Segment
+>>> from geomcon.render.style import STYLES
+>>> from geomcon.render.view import View
+>>> ctx = Context(View((0.0, 0.0, 100.0, 100.0), 1.0, (0.0, 0.0)))
+>>> d = draw_segment(Segment(Point(0, 0), Point(50, 0)), STYLES["link"], ctx)
+>>> d.shapes[0].pts
+((0.0, 100.0), (50.0, 100.0))
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
+from .labels import Runs, label_runs, text_width
+from .placement import Request
+from .shapes import Disc, ArcP, Pen, Poly, Shape
+from .style import LABEL_SIZE, PAPER, Style
+from .view import TAU, View, clip_arc, clip_interval
+
+XY = tuple[float, float]
+SLIDER = (8.0, 5.0)            # slider block, paper mm (along, across the guide)
+ANGLE_RADIUS = 9.0             # default radius of an angle mark's arc, paper mm
+COMPASS_HALF = 11.0            # half length of a compass arc through a point, paper mm
+
+
+@dataclass(frozen=True, slots=True)
+class TextRequest:
+    """A text still to be placed: its runs, font size and placement request."""
+
+    runs: Runs
+    size: float
+    request: Request
+    italic: bool = False
+    cls: str = "label"
+    fallback: TextRequest | None = None
+    """A shorter text (an angle's symbol without its value) used when this one finds no free place."""
+
+
+@dataclass
+class Drawn:
+    """What one value draws: shapes now, texts after placement."""
+
+    shapes: list[Shape] = field(default_factory=list)
+    texts: list[TextRequest] = field(default_factory=list)
+
+    def extend(self, other: Drawn) -> None:
+        """Append another drawing."""
+        self.shapes += other.shapes
+        self.texts += other.texts
+
+
+@dataclass
+class Context:
+    """What drawing a value may look at besides the value: the view, the points drawn in the figure (a
+    construction circle is drawn as compass arcs through them), the centre of the drawing (labels prefer
+    to point away from it) and the angle marks drawn so far at each vertex (nested marks get larger arcs)."""
+
+    view: View
+    points: tuple[Point, ...] = ()
+    centre: XY = (0.0, 0.0)
+    marks_at: dict[tuple[float, float], int] = field(default_factory=dict)
+
+
+def pen(style: Style) -> Pen:
+    """The style's pen."""
+    return Pen(style.stroke, style.width, style.dash, style.opacity)
+
+
+def _unit(x: float, y: float) -> XY:
+    n = math.hypot(x, y)
+    return (x / n, y / n) if n > 0 else (1.0, 0.0)
+
+
+def _add(p: XY, u: XY, k: float = 1.0) -> XY:
+    return (p[0] + u[0] * k, p[1] + u[1] * k)
+
+
+def _paper_dir(d: Point) -> XY:
+    """A model direction on paper (y flipped), as a unit vector."""
+    return _unit(d.x, -d.y)
+
+
+# ---------------------------------------------------------------------------------------------- primitives
+def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn:
+    """A hinge circle or a dot, and its label to be placed."""
+    c = ctx.view.p(p)
+    if style.marker == "hollow":
+        shapes: list[Shape] = [Disc(c, style.radius, Pen(style.stroke, style.marker_width), PAPER)]
+    else:
+        shapes = [Disc(c, style.radius, None, style.stroke)]
+    out = Drawn(shapes)
+    if label:
+        runs = label_runs(label)
+        sub = any(s for _, s in runs)
+        h = LABEL_SIZE * (0.95 if sub else 0.74)
+        away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
+        req = Request(c, text_width(runs, LABEL_SIZE) + 0.3, h, style.radius + 0.4, away)
+        out.texts.append(TextRequest(runs, LABEL_SIZE, req, italic=True))
+    return out
+
+
+def _line_part(p: Point, d: Point, lo: float, hi: float, style: Style, ctx: Context) -> Drawn:
+    box = ctx.view.box
+    t = clip_interval(p.tuple(), d.tuple(), box, lo, hi)
+    if t is None:
+        return Drawn()
+    return Drawn([Poly((ctx.view.p(p + d * t[0]), ctx.view.p(p + d * t[1])), pen(style))])
+
+
+def draw_segment(s: Segment, style: Style, ctx: Context) -> Drawn:
+    """A link or a construction segment (clipped to the view box)."""
+    if s.a == s.b:
+        return Drawn()
+    return _line_part(s.a, s.b - s.a, 0.0, 1.0, style, ctx)
+
+
+def draw_line(v: Line | Ray, style: Style, ctx: Context) -> Drawn:
+    """An infinite line or a ray, clipped to the view box."""
+    if isinstance(v, Ray):
+        return _line_part(v.origin, v.direction, 0.0, math.inf, style, ctx)
+    return _line_part(v.point, v.direction, -math.inf, math.inf, style, ctx)
+
+
+def _arcs(center: Point, r: float, parts: list[tuple[float, float]], style: Style, ctx: Context) -> Drawn:
+    out = Drawn()
+    c, rp = ctx.view.p(center), ctx.view.length(r)
+    for start, sweep in parts:
+        for a0, sw in clip_arc(center, r, ctx.view.box, start, sweep):
+            if sw >= TAU - 1e-12:
+                out.shapes.append(Disc(c, rp, pen(style)))
+            else:       # model counter-clockwise = negative paper angles
+                out.shapes.append(ArcP(c, rp, -a0, -sw, pen(style)))
+    return out
+
+
+def compass_parts(c: Circle, points: tuple[Point, ...], half: float) -> list[tuple[float, float]]:
+    """Angular intervals (start, sweep) of the short arcs of ``c`` through the ``points`` lying on it,
+    each ``half`` radians either side, merged where they overlap; the whole circle when none lies on it.
+
+    Examples
+    --------
+    >>> compass_parts(Circle(Point(0, 0), 1.0), (Point(1, 0),), 0.1)
+    [(-0.1, 0.2)]
+    """
+    tol = 1e-9 * max(c.r, abs(c.center.x), abs(c.center.y))
+    on = sorted({math.atan2(p.y - c.center.y, p.x - c.center.x) for p in points
+                 if abs(math.hypot(p.x - c.center.x, p.y - c.center.y) - c.r) <= tol})
+    if not on or half * 2 * len(on) >= TAU:
+        return [(0.0, TAU)]
+    parts: list[list[float]] = []
+    for a in on:
+        if parts and a - half <= parts[-1][1]:
+            parts[-1][1] = a + half
+        else:
+            parts.append([a - half, a + half])
+    if len(parts) > 1 and parts[-1][1] - TAU >= parts[0][0]:
+        last = parts.pop()
+        parts[0][0] = last[0] - TAU
+    return [(a, b - a) if b - a < TAU else (0.0, TAU) for a, b in parts]
+
+
+def draw_circle(c: Circle, style: Style, ctx: Context) -> Drawn:
+    """A circle, clipped to the view box; compass-style circles as short arcs through their points."""
+    parts = [(0.0, TAU)]
+    if style.compass:
+        half = max(math.radians(6.0), min(math.pi, COMPASS_HALF / max(ctx.view.length(c.r), 1e-12)))
+        parts = compass_parts(c, ctx.points, half)
+    return _arcs(c.center, c.r, parts, style, ctx)
+
+
+def draw_arc(a: Arc, style: Style, ctx: Context) -> Drawn:
+    """An arc (e.g. the admissible arc of a θ-circle), clipped to the view box."""
+    return _arcs(a.center, a.r, [(a.start, a.sweep)], style, ctx)

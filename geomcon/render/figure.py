@@ -1,0 +1,230 @@
+"""The figure of a frame: the values of the steps shown, drawn on paper, labelled, sorted into layers.
+
+Building a figure evaluates exactly the steps it shows (and what they depend on); it never looks at a
+later step. Labels are placed after every shape of the frame is known, greedily in step order.
+
+Examples
+--------
+>>> from geomcon.recipes.crank_rocker import construct
+>>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+>>> fig = build_figure(sc, upto=3)
+>>> [g.key for g in fig.groups][:3]
+['A', 'A_ground', 'D']
+>>> sc.is_evaluated("C1")
+False
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Iterable
+
+import shapely
+import shapely.ops
+
+from ..geometry.primitives import Arc, Circle, Point, Ray, Segment
+from ..scene import Scene, Step
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
+from .draw import Context, Drawn, TextRequest
+from .placement import Placer
+from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
+from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
+from .symbols import draw, kind_of
+from .view import FIG_MARGIN, Box, View, choose_scale, grow
+
+WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
+CROWDED = 0.5              # a text placed with less clearance (paper mm) tries its shorter form
+SOFT = 0.5                 # clearance allowance for crossing a thin construction line (paper mm)
+LEADER_FROM = 3.0          # a mark text farther than this from its arc gets a leader line (paper mm)
+SMALL_CIRCLE = 0.25         # any circle with r ≤ this × the content's size fits in the view
+
+
+@dataclass
+class StepDrawing:
+    """One step on paper: its key, protocol number, classes, layer and shapes (placed texts included)."""
+
+    key: str
+    number: int
+    classes: str
+    layer: str
+    shapes: list[Shape] = field(default_factory=list)
+
+    @property
+    def texts(self) -> list[Text]:
+        """The step's texts (labels, mark values)."""
+        return [s for s in self.shapes if isinstance(s, Text)]
+
+
+@dataclass
+class Figure:
+    """A frame's drawing: the view and the step drawings in step order."""
+
+    view: View
+    groups: list[StepDrawing]
+    values: dict[str, Any]
+    shown: int
+
+    def layers(self) -> list[tuple[str, list[StepDrawing]]]:
+        """The step drawings by layer, bottom layer first."""
+        return [(name, [g for g in self.groups if g.layer == name]) for name in LAYERS]
+
+
+# ---------------------------------------------------------------------------------------------- extent
+def shown_steps(scene: Scene, upto: int | None) -> tuple[list[tuple[int, Step]], int]:
+    """The (number, step) pairs of frames 1…upto and the number of frames shown."""
+    frames = scene.frames()
+    n = len(frames) if upto is None else max(0, min(int(upto), len(frames)))
+    return [(i, s) for i, group in enumerate(frames[:n], 1) for s in group], n
+
+
+def _points_of(v: Any) -> list[Point]:
+    if isinstance(v, Point):
+        return [v]
+    if isinstance(v, (tuple, list)):
+        return [p for x in v for p in _points_of(x)]
+    if isinstance(v, (Segment, Guide)):
+        return [v.a, v.b]
+    if isinstance(v, Ray):
+        return [v.origin]
+    if isinstance(v, Dimension):
+        shift = (v.b - v.a).unit().perp() * v.offset if v.a != v.b else Point(0, 0)
+        return [v.a, v.b, v.a + shift, v.b + shift]
+    if isinstance(v, (Ground, Slider)):
+        return [v.at]
+    if isinstance(v, (AngleMark, RightAngleMark)):
+        return [v.vertex]
+    if isinstance(v, Arc):
+        return [v.at(i / 8) for i in range(9)]
+    return []
+
+
+def _circles_of(v: Any) -> list[Circle]:
+    if isinstance(v, Circle):
+        return [v]
+    if isinstance(v, (tuple, list)):
+        return [c for x in v for c in _circles_of(x)]
+    return []
+
+
+def _bbox(points: Iterable[Point]) -> Box:
+    pts = list(points)
+    return (min(p.x for p in pts), min(p.y for p in pts), max(p.x for p in pts), max(p.y for p in pts))
+
+
+def content_box(scene: Scene, steps: list[tuple[int, Step]], values: dict[str, Any]) -> Box:
+    """Model box of the drawn points, segments and marks, plus the circles that fit (small ones, and the
+    whole-drawn paths and θ-circles not much larger than the rest); other circles and infinite lines are
+    clipped to it instead."""
+    pts = [p for _, s in steps for p in _points_of(values[s.key])]
+    if not pts:
+        return (-5.0, -5.0, 5.0, 5.0)
+    box = _bbox(pts)
+    size = max(box[2] - box[0], box[3] - box[1])
+    if size == 0.0:
+        size = max(abs(box[0]), abs(box[1]), 1.0) * 0.1
+    extra = list(pts)
+    for _, s in steps:
+        for c in _circles_of(values[s.key]):
+            style = resolve_style(s.style, s.role, "curve")
+            if c.r <= SMALL_CIRCLE * size or (not style.compass and c.r <= WHOLE_CIRCLE_REACH * size):
+                extra += [c.center - Point(c.r, c.r), c.center + Point(c.r, c.r)]
+    x0, y0, x1, y1 = _bbox(extra)
+    w, h = x1 - x0, y1 - y0
+    size = max(w, h, size)
+    dw, dh = max(0.0, 0.2 * size - w) / 2, max(0.0, 0.2 * size - h) / 2     # never a flat box
+    return (x0 - dw, y0 - dh, x1 + dw, y1 + dh)
+
+
+def fit_view(content: Box) -> Box:
+    """The view box: the content plus :data:`FIG_MARGIN` paper mm on every side at the scale chosen."""
+    w, h = content[2] - content[0], content[3] - content[1]
+    mu = choose_scale(w, h, FIG_MARGIN)
+    return grow(content, FIG_MARGIN * mu)
+
+
+# ---------------------------------------------------------------------------------------------- building
+def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
+                 origin: tuple[float, float] = (0.0, 0.0)) -> Figure:
+    """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted."""
+    steps, n = shown_steps(scene, upto)
+    values = scene.evaluate([s.key for _, s in steps])
+    box = viewbox or fit_view(content_box(scene, steps, values))
+    view = View(box, choose_scale(box[2] - box[0], box[3] - box[1]), origin)
+    pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
+    ctx = Context(view, pts, _centre(view, pts))
+    current = n if upto is not None else None
+    groups, pending = [], []
+    for number, s in steps:
+        value = values[s.key]
+        kind = kind_of(value)
+        style = resolve_style(s.style, s.role, kind)
+        is_cur = number == current
+        drawn = draw(value, highlighted(style) if is_cur else style, ctx, s.label)
+        layer = "points" if kind == "point" else (style.layer if kind != "none" else "given")
+        cls = f"step role-{s.role.value} style-{style.name if kind != 'none' else (s.style or 'none')}"
+        groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
+        pending.append((drawn, is_cur))
+    _place_texts(view, groups, pending)
+    return Figure(view, groups, values, n)
+
+
+def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:
+    if not pts:
+        x0, y0, x1, y1 = view.paper_box
+        return ((x0 + x1) / 2, (y0 + y1) / 2)
+    xs = [view.p(p)[0] for p in pts]
+    ys = [view.p(p)[1] for p in pts]
+    return ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+
+
+def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
+    """Place every label and mark text, in step order, clear of all shapes of the frame."""
+    obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
+    placer = Placer(obstacles, view.paper_box)
+    for g, (drawn, is_cur) in zip(groups, pending):
+        colour = HIGHLIGHT if is_cur else None
+        for t in drawn.texts:
+            centre, score = placer.best(t.request, g.key)
+            if score < CROWDED and t.fallback is not None:
+                alt, alt_score = placer.best(t.fallback.request, g.key)
+                if alt_score > score + 0.3:
+                    t, centre = t.fallback, alt
+            box = t.request.box(*centre)
+            placer.commit(box)
+            leader = _leader(t, box)
+            if leader is not None:
+                placer.commit(obstacle(leader))
+                g.shapes.append(recolour(leader, colour) if colour else leader)
+            g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+
+
+def _leader(t: TextRequest, box: Any) -> Poly | None:
+    """A thin leader from a mark's anchor to its text when the text sits far from it (not for labels)."""
+    if t.cls == "label" or t.request.candidates:
+        return None
+    anchor = shapely.Point(t.request.anchor)
+    if box.distance(anchor) <= LEADER_FROM:
+        return None
+    _, near = shapely.ops.nearest_points(anchor, box.exterior)
+    ax, ay = t.request.anchor
+    d = math.hypot(near.x - ax, near.y - ay)
+    k = (d - 0.4) / d
+    return Poly(((ax, ay), (ax + (near.x - ax) * k, ay + (near.y - ay) * k)), Pen(INK, 0.15))
+
+
+def _text_at(t: TextRequest, cx: float, cy: float, colour: str | None) -> Text:
+    r = t.request
+    sub = any(s for _, s in t.runs)
+    baseline = cy + r.height / 2 - (0.24 * t.size if sub else 0.0)
+    text = Text(cx, baseline, t.runs, t.size, INK, (cx - r.width / 2, cy - r.height / 2, cx + r.width / 2,
+                                                  cy + r.height / 2), italic=t.italic, rotate=r.rotate, cls=t.cls)
+    return recolour(text, colour) if colour else text
+
+
+def label_positions(fig: Figure) -> dict[str, list[Text]]:
+    """The placed texts of each step (for tests and tools)."""
+    return {g.key: g.texts for g in fig.groups if g.texts}
+
+
+__all__ = ["Figure", "StepDrawing", "build_figure", "content_box", "fit_view", "label_positions",
+           "shown_steps"]

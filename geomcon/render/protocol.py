@@ -1,0 +1,196 @@
+"""The numbered construction protocol beside the figure: English caption, Chinese caption (smaller, grey),
+measured values appended, wrapped and set in balanced columns; the result lines under it.
+
+The layout depends on the captions only, never on values, so every frame of a replay has the same page
+size and frame k needs no value of a later step (a measured value gets a fixed reserve at the end of its
+caption's last line).
+
+Examples
+--------
+>>> from geomcon.scene import Scene
+>>> sc = Scene("demo")
+>>> _ = sc.given("A", 1.0, caption=("Take A", "取 A"), unit="mm")
+>>> lay = layout(sc, fig_height=50.0)
+>>> [(e.number, e.en, e.zh) for e in lay.entries]
+[(1, ['Take A'], ['取 A'])]
+>>> format_value(12.50559, "deg"), format_value(101.7374, "mm"), format_value(1.149325, "")
+(' = 12.506°', ' = 101.737 mm', ' = 1.149')
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Mapping, Sequence
+
+import svgwrite
+
+from ..scene import Role, Scene
+from .labels import rich_runs, text_width, wrap
+from .shapes import add_runs
+from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
+from .view import fmt
+
+COL_W = 84.0          # column width, paper mm
+COL_GAP = 6.0
+NUM_W = 5.5           # hanging indent of the caption after its number
+EN_LH = PROTO_SIZE * 1.28
+ZH_LH = PROTO_ZH_SIZE * 1.3
+ENTRY_GAP = 0.9
+HEAD_H = 6.0          # the heading line above the columns
+MIN_LIMIT = 185.0     # a protocol may grow this tall beside a smaller figure before taking another column
+VALUE_RESERVE = text_width(" = -000.000 mm", PROTO_SIZE)
+
+
+def format_value(value: Any, unit: str) -> str:
+    """A measured value as appended to its caption (`` = 12.506°``); "" for anything but a number."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return ""
+    if unit == "deg":
+        return f" = {value:.3f}°"
+    if unit == "mm":
+        return f" = {value:.3f} mm"
+    return f" = {value:.3f}"
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One numbered protocol entry: the frame number, its first step (whose caption and value it shows),
+    its wrapped lines, and its position."""
+
+    number: int
+    key: str
+    unit: str
+    measured: bool
+    en: list[str]
+    zh: list[str]
+    column: int
+    y: float
+
+    @property
+    def height(self) -> float:
+        """Height on paper."""
+        return entry_height(self.en, self.zh)
+
+
+def entry_height(en: Sequence[str], zh: Sequence[str]) -> float:
+    """Height of an entry with these lines."""
+    return len(en) * EN_LH + len(zh) * ZH_LH + ENTRY_GAP
+
+
+@dataclass(frozen=True)
+class Layout:
+    """The protocol's entries, its number of columns, and its size on paper (info lines excluded)."""
+
+    entries: list[Entry]
+    columns: int
+    width: float
+    height: float
+
+
+def layout(scene: Scene, fig_height: float) -> Layout:
+    """Wrap every numbered step's caption and set the entries in the fewest columns (at most three) whose
+    height stays within that of the figure (or :data:`MIN_LIMIT` when the figure is smaller)."""
+    raw = []
+    for i, group in enumerate(scene.frames(), 1):
+        s = group[0]
+        en, zh = scene.caption(s.key)
+        measured = s.role == Role.MEASUREMENT or s.unit in ("mm", "deg")
+        en_lines = wrap(en or s.key, COL_W - NUM_W, PROTO_SIZE, last_reserve=VALUE_RESERVE if measured else 0.0)
+        zh_lines = wrap(zh, COL_W - NUM_W, PROTO_ZH_SIZE) if zh else []
+        raw.append((i, s.key, s.unit, measured, en_lines, zh_lines))
+    heights = [entry_height(r[4], r[5]) for r in raw]
+    limit = max(fig_height, MIN_LIMIT)
+    for cols in (1, 2, 3):
+        starts = _split(heights, cols)
+        col_h = _column_heights(heights, starts)
+        if max(col_h) <= limit or cols == 3:
+            break
+    entries, y, col = [], 0.0, 0
+    for j, r in enumerate(raw):
+        if col + 1 < len(starts) and j == starts[col + 1]:
+            col, y = col + 1, 0.0
+        entries.append(Entry(r[0], r[1], r[2], r[3], r[4], r[5], col, y))
+        y += heights[j]
+    ncols = len(starts)
+    return Layout(entries, ncols, ncols * COL_W + (ncols - 1) * COL_GAP, HEAD_H + max(col_h, default=0.0))
+
+
+def _split(heights: Sequence[float], cols: int) -> list[int]:
+    """Start indices of ``cols`` balanced columns (greedy against the mean height)."""
+    target = sum(heights) / cols
+    starts, acc = [0], 0.0
+    for j, h in enumerate(heights):
+        if acc > 0 and acc + h / 2 > target and len(starts) < cols:
+            starts.append(j)
+            acc = 0.0
+        acc += h
+    return starts
+
+
+def _column_heights(heights: Sequence[float], starts: Sequence[int]) -> list[float]:
+    bounds = list(starts) + [len(heights)]
+    return [sum(heights[a:b]) for a, b in zip(bounds, bounds[1:])]
+
+
+def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fill: str, cls: str) -> Any:
+    el = dwg.text("", insert=(fmt(x), fmt(y)), font_size=fmt(size), fill=fill, class_=cls)
+    el.attribs["xml:space"] = "preserve"            # keep the spaces around subscript runs
+    add_runs(el, rich_runs(text), size)
+    return el
+
+
+def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, values: Mapping[str, Any],
+                    shown: int, current: int | None) -> Any:
+    """The protocol group: entries 1…``shown`` (each ``<g class="proto" data-step="n">``), entry
+    ``current`` highlighted; values taken from ``values`` (measured steps only)."""
+    root = dwg.g(id="protocol")
+    root.add(_line(dwg, "Construction protocol  作图步骤", x, y + 3.2, 3.0, INK, "proto-head"))
+    root.elements[-1].attribs["font-weight"] = "bold"
+    top = y + HEAD_H
+    for e in lay.entries:
+        if e.number > shown:
+            break
+        is_cur = e.number == current
+        ink, grey = (HIGHLIGHT, HIGHLIGHT) if is_cur else (INK, GREY_TEXT)
+        g = dwg.g(id=f"proto-{e.key}", class_="proto current" if is_cur else "proto")
+        g.attribs["data-step"] = str(e.number)
+        x0 = x + e.column * (COL_W + COL_GAP)
+        yy = top + e.y + PROTO_SIZE
+        num = _line(dwg, f"{e.number}.", x0, yy, PROTO_SIZE, ink, "num")
+        num.attribs["font-weight"] = "bold"
+        g.add(num)
+        value = format_value(values.get(e.key), e.unit) if e.measured else ""
+        for j, ln in enumerate(e.en):
+            el = _line(dwg, ln, x0 + NUM_W, yy, PROTO_SIZE, ink, "en")
+            if value and j == len(e.en) - 1:
+                el.add(dwg.tspan(value, class_="value", font_weight="bold"))
+            g.add(el)
+            yy += EN_LH
+        yy += ZH_LH - EN_LH
+        for ln in e.zh:
+            g.add(_line(dwg, ln, x0 + NUM_W, yy, PROTO_ZH_SIZE, grey, "zh"))
+            yy += ZH_LH
+        root.add(g)
+    return root
+
+
+def info_height(info: Sequence[str], width: float) -> float:
+    """Height of the result lines (with their heading) under the protocol."""
+    if not info:
+        return 0.0
+    n = sum(len(wrap(s, width, INFO_SIZE)) for s in info)
+    return 4.0 + INFO_SIZE * 1.6 + n * INFO_SIZE * 1.3
+
+
+def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float) -> Any:
+    """The result lines (answers, checks) under the protocol."""
+    g = dwg.g(id="info")
+    y += 4.0 + INFO_SIZE
+    head = _line(dwg, "Results  结果", x, y, 3.0, INK, "info-head")
+    head.attribs["font-weight"] = "bold"
+    g.add(head)
+    y += INFO_SIZE * 1.6
+    for s in info:
+        for ln in wrap(s, width, INFO_SIZE):
+            g.add(_line(dwg, ln, x, y, INFO_SIZE, INK, "info"))
+            y += INFO_SIZE * 1.3
+    return g

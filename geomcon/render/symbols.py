@@ -1,0 +1,237 @@
+"""The textbook symbols: ground, slider, guide, angle arcs, right angles, dimensions; and the dispatch from
+a value to its drawing.
+
+Symbol sizes are fixed in paper mm, whatever the drawing scale (a hinge is a hinge at any μl).
+
+Examples
+--------
+>>> from geomcon.geometry import Point
+>>> from geomcon.scene.marks import Ground
+>>> from geomcon.render.style import STYLES
+>>> from geomcon.render.view import View
+>>> ctx = Context(View((-10.0, -10.0, 10.0, 10.0), 1.0, (0.0, 0.0)))
+>>> len(draw(Ground(Point(0, 0)), STYLES["ground"], ctx).shapes)     # legs, base, five hatch strokes
+7
+"""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
+from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
+                   draw_circle, draw_line, draw_point, draw_segment, pen)
+from .labels import rich_runs, text_width
+from .placement import Request
+from .shapes import ArcP, Pen, Poly
+from .style import MARK_TEXT_SIZE, PAPER, Style
+
+HATCH = 0.2     # width of hatch strokes
+
+
+def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
+    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side."""
+    c = ctx.view.p(g.at)
+    u = (math.cos(g.angle), -math.sin(g.angle))        # towards the ground, on paper
+    n = (-u[1], u[0])
+    base = _add(c, u, 4.2)
+    p = pen(style)
+    legs = Poly((_add(base, n, 2.6), c, _add(base, n, -2.6)), p)
+    line = Poly((_add(base, n, -4.2), _add(base, n, 4.2)), p)
+    out = Drawn([legs, line])
+    slant = _unit(u[0] - n[0], u[1] - n[1])
+    for k in range(5):
+        s = -3.4 + k * 1.7
+        q = _add(base, n, s + 0.8)
+        out.shapes.append(Poly((q, _add(q, slant, 1.7)), Pen(style.stroke, HATCH)))
+    return out
+
+
+def draw_slider(s: Slider, style: Style, ctx: Context) -> Drawn:
+    """A slider block centred on its joint, its long side along the direction of motion."""
+    c = ctx.view.p(s.at)
+    u = _paper_dir(s.direction)
+    n = (-u[1], u[0])
+    a, b = SLIDER[0] / 2, SLIDER[1] / 2
+    pts = tuple(_add(_add(c, u, i * a), n, j * b) for i, j in ((1, 1), (-1, 1), (-1, -1), (1, -1)))
+    return Drawn([Poly(pts, pen(style), closed=True, fill=PAPER)])
+
+
+def draw_guide(g: Guide, style: Style, ctx: Context) -> Drawn:
+    """A guide: the surface the slider blocks run on (half a block below the line a–b on its ``side``),
+    hatched on that side."""
+    if g.a == g.b:
+        return Drawn()
+    pa, pb = ctx.view.p(g.a), ctx.view.p(g.b)
+    u = _unit(pb[0] - pa[0], pb[1] - pa[1])
+    side = -1.0 if g.side >= 0 else 1.0                 # model left of a→b is paper right-hand (y flipped)
+    n = (-u[1] * side, u[0] * side)
+    off = SLIDER[1] / 2
+    a2, b2 = _add(pa, n, off), _add(pb, n, off)
+    out = Drawn([Poly((a2, b2), pen(style))])
+    length = math.hypot(b2[0] - a2[0], b2[1] - a2[1])
+    slant = _unit(n[0] - u[0], n[1] - u[1])
+    k = 1.2
+    while k <= length:
+        q = _add(a2, u, k)
+        out.shapes.append(Poly((q, _add(q, slant, 1.8)), Pen(style.stroke, HATCH)))
+        k += 2.4
+    return out
+
+
+def angle_rays(m: AngleMark) -> tuple[Point, Point, bool]:
+    """The two ray directions the arc of ``m`` spans, and whether the first was reversed.
+
+    A mark whose value is the supplement of the angle between its rays (a transmission angle "in acute
+    form" marked on the links B–C and C–D) is drawn where that value is: between the extension of the
+    first ray beyond the vertex and the second ray.
+
+    Examples
+    --------
+    >>> m = AngleMark(Point(0, 0), Point(-1, 0), Point(1, 1), "γ", 45.0)
+    >>> angle_rays(m)[2]
+    True
+    """
+    va, vb = m.a - m.vertex, m.b - m.vertex
+    geom = math.degrees(abs(math.atan2(va.cross(vb), va.dot(vb))))
+    value = m.value if isinstance(m.value, (int, float)) else geom
+    flip = abs(value - geom) > 1e-6 * max(1.0, geom) and abs(180.0 - geom - value) < 1e-6 * max(1.0, geom)
+    return (-va if flip else va), vb, flip
+
+
+def _radius(m: AngleMark, va: Point, vb: Point, ctx: Context) -> float:
+    """Arc radius on paper: the mark's own, else :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter
+    than 4 mm of paper only give a direction), enlarged for each earlier mark at the same vertex."""
+    if m.radius:
+        return ctx.view.length(m.radius)
+    key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
+    nested = ctx.marks_at.get(key, 0)
+    ctx.marks_at[key] = nested + 1
+    rays = [ctx.view.length(abs(v)) for v in (va, vb) if ctx.view.length(abs(v)) >= 4.0]
+    r = min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS
+    return max(3.0, r) + 3.5 * nested
+
+
+def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
+    """The arc of a marked angle and its text (``θ=12.51°``, or just the symbol where the full text finds
+    no room), placed later near the bisector, outside the arc."""
+    if m.a == m.vertex or m.b == m.vertex:
+        return Drawn()
+    va, vb, flip = angle_rays(m)
+    a0 = math.atan2(va.y, va.x)
+    phi = math.atan2(va.cross(vb), va.dot(vb))           # model, counter-clockwise positive
+    r = _radius(m, m.a - m.vertex, vb, ctx)
+    c = ctx.view.p(m.vertex)
+    out = Drawn()
+    arc = ArcP(c, r, -a0, -phi, pen(style))
+    if abs(phi) > math.radians(0.2):
+        out.shapes.append(arc)
+    if flip:                                              # the extension the arc starts from
+        out.shapes.append(Poly((c, _add(c, _paper_dir(va), r + 2.5)), Pen(style.stroke, 0.18, (1.2, 0.8))))
+    mid, prefer = arc.at(0.5), -(a0 + phi / 2)
+    short = _mark_text(rich_runs(m.symbol), mid, prefer, None)
+    out.texts.append(_mark_text(rich_runs(m.text), mid, prefer, short))
+    return out
+
+
+def _mark_text(runs: tuple[tuple[str, bool], ...], anchor: XY, prefer: float,
+               fallback: TextRequest | None) -> TextRequest:
+    sub = any(s for _, s in runs)
+    req = Request(anchor, text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * (0.95 if sub else 0.78), 0.5,
+                  prefer, spread=0.05)
+    return TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text", fallback=fallback)
+
+
+def draw_right_angle(m: RightAngleMark, style: Style, ctx: Context) -> Drawn:
+    """The small square of a right angle."""
+    if m.a == m.vertex or m.b == m.vertex:
+        return Drawn()
+    v = ctx.view.p(m.vertex)
+    u, w = _paper_dir(m.a - m.vertex), _paper_dir(m.b - m.vertex)
+    s = 2.2
+    return Drawn([Poly((_add(v, u, s), _add(_add(v, u, s), w, s), _add(v, w, s)), pen(style))])
+
+
+def _arrow(tip: XY, toward: XY, style: Style) -> Poly:
+    u = _unit(toward[0] - tip[0], toward[1] - tip[1])
+    n = (-u[1], u[0])
+    back = _add(tip, u, 2.2)
+    return Poly((tip, _add(back, n, 0.55), _add(back, n, -0.55)), Pen(style.stroke, 0.1), closed=True,
+                fill=style.stroke)
+
+
+def _reading_angle(u: XY) -> float:
+    """The angle (degrees, clockwise as seen) of a text along paper direction ``u``, turned to read from
+    left to right or from bottom to top."""
+    ang = math.degrees(math.atan2(u[1], u[0]))
+    if ang >= 90.0 - 1e-9:
+        ang -= 180.0
+    elif ang < -90.0 - 1e-9:
+        ang += 180.0
+    return ang
+
+
+def draw_dimension(m: Dimension, style: Style, ctx: Context) -> Drawn:
+    """A linear dimension: extension lines, the dimension line with arrowheads, and its text along it
+    (placed later: centred on the side away from the measured points if free, else shifted or beside)."""
+    if m.a == m.b:
+        return Drawn()
+    d = (m.b - m.a).unit()
+    shift = d.perp() * m.offset
+    pa, pb = ctx.view.p(m.a), ctx.view.p(m.b)
+    qa, qb = ctx.view.p(m.a + shift), ctx.view.p(m.b + shift)
+    n = _paper_dir(d.perp() * (1.0 if m.offset >= 0 else -1.0))   # from the measured points to the line
+    p = pen(style)
+    out = Drawn()
+    if ctx.view.length(abs(m.offset)) > 1.0:
+        out.shapes += [Poly((_add(pa, n, 1.0), _add(qa, n, 1.5)), p), Poly((_add(pb, n, 1.0), _add(qb, n, 1.5)), p)]
+    out.shapes += [Poly((qa, qb), p), _arrow(qa, qb, style), _arrow(qb, qa, style)]
+    u = _unit(qb[0] - qa[0], qb[1] - qa[1])
+    ang = _reading_angle(u)
+    runs = rich_runs(m.text)
+    w, h = text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * 0.8
+    up = (math.sin(math.radians(ang)), -math.cos(math.radians(ang)))      # the text's "up", on paper
+    outward = 1.0 if up[0] * n[0] + up[1] * n[1] >= 0 else -1.0
+    cands = []
+    for side in (outward, -outward):
+        for t in (0.5, 0.3, 0.7, 0.15, 0.85):
+            base = (qa[0] + (qb[0] - qa[0]) * t, qa[1] + (qb[1] - qa[1]) * t)
+            cands.append(_add(base, up, side * (0.6 + h / 2)))
+    req = Request(((qa[0] + qb[0]) / 2, (qa[1] + qb[1]) / 2), w, h, 0.6, 0.0, spread=0.06,
+                  candidates=tuple(cands), rotate=round(ang, 6))
+    out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text"))
+    return out
+
+
+def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Drawn:
+    """Draw any step value: dispatch on its type (tuples draw each member; numbers and None nothing)."""
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return Drawn()
+    if isinstance(value, Point):
+        return draw_point(value, style, ctx, label)
+    if isinstance(value, (tuple, list)):
+        out = Drawn()
+        for v in value:
+            out.extend(draw(v, style, ctx))
+        return out
+    fn = _TABLE.get(type(value))
+    return fn(value, style, ctx) if fn else Drawn()
+
+
+_TABLE = {Segment: draw_segment, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
+          AngleMark: draw_angle, RightAngleMark: draw_right_angle, Dimension: draw_dimension,
+          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide}
+
+
+def kind_of(value: Any) -> str:
+    """``"point"``, ``"curve"``, a mark class name, or ``"none"`` (numbers, None): chooses the default style."""
+    if isinstance(value, Point):
+        return "point"
+    if isinstance(value, (Segment, Line, Ray, Circle, Arc)):
+        return "curve"
+    if isinstance(value, (tuple, list)):
+        return kind_of(value[0]) if value else "none"
+    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide)):
+        return type(value).__name__
+    return "none"
