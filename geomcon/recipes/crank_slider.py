@@ -64,7 +64,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given",
                 caption=("The slider's guide through F, perpendicular to AF", "过 F 作导路(垂直于 AF)"))
     if e > 0:
-        sc.add("dim_e", marks.dimension, F, A, "e", e, -0.25 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
+        # dimension on the left of F→A, away from the crank and the slider
+        sc.add("dim_e", marks.dimension, F, A, "e", e, 0.25 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
                caption=("Dimension the offset e", "标注偏距 e"))
     B1, C1, B2, C2 = add_collinear_extremes(sc, A, gl, AB, BC, ToRightOf(A), line_circle, ("the guide", "导路"))
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
