@@ -33,6 +33,26 @@ def test_sweep_error_shrinks_as_N_grows(rows):
         assert len(errs) >= 3 and errs == sorted(errs, reverse=True) and errs[-1] < errs[0] / 10, (case, errs)
 
 
+def test_sweep_theta_is_within_one_step(rows):
+    for r in rows:
+        if r.method == "sweep":
+            assert r.errors["theta"] <= 360.0 / r.n, (r.case.label, r.n, r.errors)
+
+
+def test_sweep_starts_off_the_round_angles():
+    # from 0, every 1° sample of N = 360 falls on the guide-bar's extremes (210°, 330°): an accidental exact ψ
+    given = {"AB": 145.0, "AC": 290.0}
+    assert sweep_guide_bar(given, 360, phase=0.0)["psi"] == pytest.approx(60.0, abs=1e-12)
+    assert abs(sweep_guide_bar(given, 360)["psi"] - 60.0) > 1e-4
+
+
+def test_sweep_follows_the_branch():
+    above = sweep_crank_rocker({"AB": 50, "BC": 70, "CD": 80, "AD": 90, "branch": "above"}, 3600)
+    below = sweep_crank_rocker({"AB": 50, "BC": 70, "CD": 80, "AD": 90, "branch": "below"}, 3600)
+    assert below["psi"] == pytest.approx(above["psi"], rel=1e-6)
+    assert abs(below["theta"] - above["theta"]) <= 2 * 360 / 3600
+
+
 @pytest.mark.parametrize("sweep, given, key, exact", [
     (sweep_crank_rocker, {"AB": 50, "BC": 70, "CD": 80, "AD": 90}, "psi", 77.8862570493),
     (sweep_crank_slider, {"AB": 120, "BC": 250, "e": 60}, "H", 249.777099324),
@@ -50,10 +70,19 @@ def test_answers_only_evaluate_fewer_steps_than_the_drawing():
 
 
 def test_plot_has_a_series_per_method_and_problem(rows):
-    root = ET.fromstring(render_plot(rows, quick=True))
-    text = " ".join(t.text or "" for t in root.iter("{http://www.w3.org/2000/svg}text"))
+    root = ET.fromstring(render_plot(rows, quick=True).encode())
+    svg = "{http://www.w3.org/2000/svg}"
+    series = [g for g in root.iter(svg + "g") if "series" in g.get("class", "").split()]
+    assert sorted((g.get("data-recipe"), g.get("data-method")) for g in series) == sorted(
+        (case.recipe, m) for case in CASES for m in ("construction", "sweep"))
+    text = " ".join(t.text or "" for t in root.iter(svg + "text"))
     for case in CASES:
         assert f"{case.label} · construction" in text and f"{case.label} · sweep" in text
+    assert "N = 36,000" in text and "floor 10⁻¹⁷" in text
+
+
+def test_plot_is_deterministic_given_the_numbers(rows):
+    assert render_plot(rows) == render_plot(rows)
 
 
 def test_bench_command_writes_the_plot(tmp_path):

@@ -69,11 +69,15 @@ def extremes_table(rows: Sequence[ErrorRow]) -> str:
     return format_table(headers, body, "llrrrrrr")
 
 
+def _steps(row: DrawRow) -> str:
+    done = "—" if row.steps_evaluated is None else str(row.steps_evaluated)
+    return f"{done} of {row.steps_total}"
+
+
 def drawing_table(rows: Sequence[DrawRow]) -> str:
     """Part (b): answers only vs answers and drawing."""
     headers = ("problem", "asked for", "time (best)", "steps evaluated", "note")
-    body = [(r.case.label, r.output, fmt_seconds(r.seconds), f"{'—' if r.steps_evaluated is None else r.steps_evaluated} of {r.steps_total}", r.note)
-            for r in rows]
+    body = [(r.case.label, r.output, fmt_seconds(r.seconds), _steps(r), r.note) for r in rows]
     return format_table(headers, body, "llrrl")
 
 
@@ -85,8 +89,10 @@ def report(extremes: Sequence[ErrorRow], drawing: Sequence[DrawRow], *, quick: b
         "",
         extremes_table(extremes),
         "",
-        "A sweep's |Δθ| is at most about one step, 360°/N, but where in that range it falls is luck; ψ and H",
-        "err by O(1/N²). Time is the best of several runs; the construction's includes building the scene.",
+        "A sweep's |Δθ| is at most about one step, 360°/N, but where in that range it falls is luck (the",
+        "guide-bar's θ = 60° is a whole number of steps for N = 360·10^k, so θ comes out exact there, not for",
+        "N = 10⁶); ψ and H err by O(1/N²). Time is the best of several runs; the construction's includes",
+        "building the scene.",
         "",
         "(b) a fresh solve asked for answers only vs for answers and the SVG drawing",
         "",
