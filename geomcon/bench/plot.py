@@ -37,9 +37,10 @@ NOTES = (
     "360°/N, anywhere in that range by luck:",
     "the guide-bar's θ = 60° is a whole number",
     "of steps for N = 360·10ᵏ (θ exact; what",
-    "shows is ψ's O(1/N²) error) but not for",
-    "N = 10⁶, where the error jumps up.",
+    "shows is ψ's O(1/N²) error).",
 )
+FULL_NOTE = ("At N = 10⁶ it is not, and the error", "jumps up.")
+"""Added to the notes when N = 10⁶ is plotted."""
 """The reading notes under the legend."""
 
 
@@ -202,7 +203,7 @@ def _series(dwg: svgwrite.Drawing, rows: Sequence[ErrorRow], pts: Sequence[tuple
     return g
 
 
-def _legend(dwg: svgwrite.Drawing, keys: Sequence[tuple[Case, str]], colors: dict[str, str]):
+def _legend(dwg: svgwrite.Drawing, keys: Sequence[tuple[Case, str]], colors: dict[str, str], *, full: bool):
     g = dwg.g(class_="legend", font_family=FONT)
     x0, y0 = RIGHT + 22, TOP + 4
     g.add(_text(dwg, "problem · method", x0, y0 + 4, size=12, font_weight="bold"))
@@ -214,7 +215,7 @@ def _legend(dwg: svgwrite.Drawing, keys: Sequence[tuple[Case, str]], colors: dic
         g.add(_marker(dwg, method, x0 + 13, y, color))
         g.add(_text(dwg, f"{case.label} · {method}", x0 + 36, y + 4))
     y = y0 + 26 + 24 * len(keys) + 8
-    for line in NOTES:
+    for line in NOTES + (FULL_NOTE if full else ()):
         g.add(_text(dwg, line, x0, y, size=10, fill="#555"))
         y += 14
     return g
@@ -258,5 +259,5 @@ def render_plot(rows: Sequence[ErrorRow], *, quick: bool = False) -> str:
     for (case, method), group, p in zip(keys, groups, pts):
         labels = [None if r.n is None else next(spots) for r in group]
         dwg.add(_series(dwg, group, p, colors[case.recipe], labels))
-    dwg.add(_legend(dwg, keys, colors))
+    dwg.add(_legend(dwg, keys, colors, full=any(r.n == 1_000_000 for r in rows)))
     return '<?xml version="1.0" encoding="utf-8"?>\n' + dwg.tostring() + "\n"
