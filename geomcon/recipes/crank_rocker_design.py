@@ -31,7 +31,7 @@ from ..tolerance import tol
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, angle_deg, length, transmission_deg
 from .crank_rocker import construct as extremes_construct
-from .theta_circle import refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
+from .theta_circle import add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient", minimum=1.0, inclusive=True),
@@ -229,9 +229,6 @@ def farther(A: Point, P: Point, Q: Point) -> Point:
     return Q if abs(P - A) < abs(Q - A) else P
 
 
-def _theta_of(K: float) -> float:
-    return theta_from_k(K)
-
 
 def _plus(theta: float, k: float, c: float) -> float:
     return k * theta + c
@@ -247,9 +244,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     family, closing = _form(g)
     K, CD = g["K"], g["CD"]
     sc = Scene("Crank-rocker designed by K")
-    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}", f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}"))
-    sc.add("K", float, K, visible=False)
+    th = add_theta_step(sc, K)
     sc.add("CD", float, CD, visible=False)
     if family == "positions":
         cands = _positions_candidates(sc, g, closing, th)

@@ -21,7 +21,7 @@ from ..scene import Role, Scene
 from .base import Construction, Quantity, Recipe
 from .crank_slider import construct as extremes_construct
 from .crank_slider_design import admissible_arc, finish_from_A
-from .theta_circle import add_theta_circle, arc_from_to, refuse_tiny_theta
+from .theta_circle import add_theta_step, add_theta_circle, arc_from_to, refuse_tiny_theta
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1 < K < 3", minimum=1.0),
@@ -100,9 +100,6 @@ def best_on_arc(k, Q: Point, C1: Point, C2: Point, e_min: float, e_max: float | 
     return arc.at((lo + hi) / 2)
 
 
-def _theta_of(K: float) -> float:
-    return theta_from_k(K)
-
 
 def construct(g: Mapping[str, Any]) -> Construction:
     """θ-circle, admissible arc, A* by search along the arc, then the design's measuring steps."""
@@ -112,9 +109,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     C2 = sc.given("C2", Point(H, 0.0), style="joint", caption=(f"C2 with C1C2 = H = {H:g}", f"截取 C1C2 = H = {H:g} 得 C2"))
     gl = sc.add("guide", Line, C1, Point(1.0, 0.0), role=Role.GIVEN, style="given",
                 caption=("The slider's guide through C1 and C2", "过 C1、C2 作导路"))
-    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}", f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}"))
-    sc.add("K", float, K, visible=False)
+    th = add_theta_step(sc, K)
     kT = add_theta_circle(sc, C1, C2, th, +1, side_words=("above the guide", "在导路上方"))
     n1 = sc.add("n1", perpendicular, gl, C1, caption=("Perpendicular to the guide at C1", "过 C1 作导路的垂线"))
     Q = sc.add("Q", line_circle, n1, kT, branch=OtherThan(C1), style="point", label="Q",

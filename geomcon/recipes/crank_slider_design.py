@@ -28,7 +28,7 @@ from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, along_line, angle_deg, length
 from .crank_slider import add_pressure_angles
 from .crank_slider import construct as extremes_construct
-from .theta_circle import refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
+from .theta_circle import add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1 ≤ K < 3", minimum=1.0, inclusive=True),
@@ -103,9 +103,6 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     return []
 
 
-def _theta_of(K: float) -> float:
-    return theta_from_k(K)
-
 
 def _half_plus_90(theta: float) -> float:
     return 90.0 + theta / 2.0
@@ -166,9 +163,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                                                                f"在导路上截取 C1C2 = H = {H:g} 得 C2"))
     gl = sc.add("guide", Line, C1, Point(1.0, 0.0), role=Role.GIVEN, style="given",
                 caption=("The slider's guide through C1 and C2", "过 C1、C2 作导路"))
-    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}", f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}"))
-    sc.add("K", float, K, role=Role.MEASUREMENT, visible=False)
+    th = add_theta_step(sc, K)
     if K == 1.0:
         A = _k_equals_one(sc, C1, C2, g["BC"], H)
     else:

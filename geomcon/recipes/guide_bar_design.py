@@ -28,7 +28,7 @@ from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
 from .guide_bar import construct as guide_bar_extremes
-from .theta_circle import refuse_tiny_theta, meet_lines, ray_from
+from .theta_circle import add_theta_step, refuse_tiny_theta, meet_lines, ray_from
 
 GUIDE_GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1 < K < 3 (θ < 90°)", minimum=1.0),
@@ -77,9 +77,6 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     return []
 
 
-def _theta_of(K: float) -> float:
-    return theta_from_k(K)
-
 
 def _scaled(x: float, k: float) -> float:
     return k * x
@@ -96,10 +93,7 @@ def _pressure(dev: float, de: float) -> float:
 def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref, Ref]:
     """A, C, B1, B2 and ψ of the guide-bar part; returns (A, C, B1, B2, theta)."""
     K = g["K"]
-    th = sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}; the guide bar swings through ψ = θ",
-                         f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g};导杆摆角 ψ = θ"))
-    sc.add("K", float, K, visible=False)
+    th = add_theta_step(sc, K, note=("; the guide bar swings through ψ = θ", ";导杆摆角 ψ = θ"))
     half = sc.add("half", _scaled, th, 0.5, visible=False, unit="deg")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Crank pivot A", "曲柄转动中心 A"))
     centre = sc.add("centre", Line, A, Point(0.0, -1.0), role=Role.GIVEN, style="frame",

@@ -21,7 +21,7 @@ from ..geometry import Above, Line, Point, ToRightOf, circle, line_circle, perpe
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
-from .theta_circle import refuse_tiny_theta, seeing_circle
+from .theta_circle import add_theta_step, refuse_tiny_theta, seeing_circle
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient", minimum=1.0),
@@ -50,9 +50,6 @@ def _seen(K: float) -> float:
     return 180.0 - theta_from_k(K)
 
 
-def _theta_of(K: float) -> float:
-    return theta_from_k(K)
-
 
 def _shortest(cd: float, alpha: float) -> float:
     return cd / math.sin(math.radians(alpha))
@@ -62,9 +59,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     """Build the slotter's construction."""
     K, S, L = g["K"], g["H"], g["B1B2"]
     sc = Scene("Slotter with a rotating guide bar designed by K")
-    sc.add("theta", _theta_of, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}", f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}"))
-    sc.add("K", float, K, visible=False)
+    add_theta_step(sc, K)
     C = add_pivot(sc, "C", Point(0.0, 0.0), ("Guide-bar pivot C on the slider's path ee", "导杆转动中心 C 位于滑块导路 ee 上"))
     ee = sc.add("ee", Line, C, Point(1.0, 0.0), role=Role.GIVEN, style="given", caption=("The slider's path ee", "滑块导路 ee"))
     B1 = sc.given("B1", Point(-L / 2, 0.0), style="joint", caption=(f"B1, B2 on ee with B1B2 = {L:g}, C midway",

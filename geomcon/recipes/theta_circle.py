@@ -83,6 +83,21 @@ def arc_from_to(circle: Circle, start: Point, end: Point) -> Arc:
     return Arc(circle.center, circle.r, a0, sweep)
 
 
+def theta_of_k(K: float) -> float:
+    """θ = 180°(K − 1)/(K + 1) (a step operation)."""
+    from ..analytic.linkages import theta_from_k
+    return theta_from_k(K)
+
+
+def add_theta_step(sc: Scene, K: float, *, note: tuple[str, str] = ("", "")) -> Ref:
+    """The first step of every design by K: θ from K (measured, numbered), and K itself as a hidden answer."""
+    th = sc.add("theta", theta_of_k, K, role=Role.MEASUREMENT, unit="deg",
+                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}{note[0]}",
+                         f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}{note[1]}"))
+    sc.add("K", float, K, role=Role.MEASUREMENT, visible=False)
+    return th
+
+
 def add_theta_circle(sc: Scene, C1: Ref, C2: Ref, theta: Ref, side: int, *, side_words: tuple[str, str],
                      prefix: str = "", label: str = "P") -> Ref:
     """Add the textbook's steps (C2P ⊥ C1C2, ∠C2C1P = 90° − θ, circle C1C2P); return the circle.
