@@ -229,7 +229,6 @@ def farther(A: Point, P: Point, Q: Point) -> Point:
     return Q if abs(P - A) < abs(Q - A) else P
 
 
-
 def _plus(theta: float, k: float, c: float) -> float:
     return k * theta + c
 

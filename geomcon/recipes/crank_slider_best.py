@@ -18,6 +18,7 @@ from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
 from ..geometry import Line, OtherThan, Point, line_circle, perpendicular
 from ..scene import Role, Scene
+from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
 from .crank_slider import construct as extremes_construct
 from .crank_slider_design import admissible_arc, finish_from_A
@@ -73,32 +74,10 @@ def best_on_arc(k, Q: Point, C1: Point, C2: Point, e_min: float, e_max: float | 
     def e_at(t: float) -> float:
         return abs(arc.at(t).y - C1.y)
 
-    def limit(target: float) -> float:          # e falls from Q (t = 0) to C1 (t = 1): where e = target
-        lo, hi = 0.0, 1.0
-        for _ in range(200):
-            m = (lo + hi) / 2
-            lo, hi = (m, hi) if e_at(m) > target else (lo, m)
-        return (lo + hi) / 2
-
-    t0 = limit(e_max) if e_max is not None and e_max < e_at(0.0) else 0.0
-    t1 = limit(e_min) if e_min > 0 else 1.0
-    lo, hi = t0, t1
-    r = (math.sqrt(5) - 1) / 2
-    x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
-    f1, f2 = working_gamma(arc.at(x1), C1, C2), working_gamma(arc.at(x2), C1, C2)
-    for _ in range(200):
-        if f1 < f2:
-            lo, x1, f1 = x1, x2, f2
-            x2 = lo + r * (hi - lo)
-            f2 = working_gamma(arc.at(x2), C1, C2)
-        else:
-            hi, x2, f2 = x2, x1, f1
-            x1 = hi - r * (hi - lo)
-            f1 = working_gamma(arc.at(x1), C1, C2)
-        if hi - lo <= 4e-16:
-            break
-    return arc.at((lo + hi) / 2)
-
+    # e falls from Q (t = 0) to C1 (t = 1): the band e_min ≤ e ≤ e_max is an interval of t
+    t0 = crossing(lambda t: e_at(t) > e_max, 0.0, 1.0) if e_max is not None and e_max < e_at(0.0) else 0.0
+    t1 = crossing(lambda t: e_at(t) > e_min, 0.0, 1.0) if e_min > 0 else 1.0
+    return arc.at(maximise(lambda t: working_gamma(arc.at(t), C1, C2), t0, t1))
 
 
 def construct(g: Mapping[str, Any]) -> Construction:

@@ -24,6 +24,7 @@ from ..errors import NotAMechanism
 from ..geometry import (Above, Line, OtherThan, Point, ToLeftOf, circle, circle_circle, foot, line_circle,
                         line_through, midpoint, parallel, perpendicular, point_along, segment)
 from ..scene import Ref, Role, Scene, marks
+from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, along_line, angle_deg, length
 from .crank_slider import add_pressure_angles
@@ -103,7 +104,6 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     return []
 
 
-
 def _half_plus_90(theta: float) -> float:
     return 90.0 + theta / 2.0
 
@@ -130,25 +130,13 @@ def admissible_arc(k, Q: Point, C1: Point, C2: Point, gamma_allow: float | None)
     arc = arc_from_to(k, Q, C1)
     if gamma_allow is None:
         return arc
-    g = lambda t: _gamma_at(arc.at(t), C1, C2)  # noqa: E731
-    lo, hi = 0.0, 1.0
-    for _ in range(200):                      # golden-section search for the maximum
-        m1, m2 = lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo)
-        lo, hi = (lo, m2) if g(m1) > g(m2) else (m1, hi)
-    tmax = (lo + hi) / 2
+    def g(t: float) -> float:
+        return _gamma_at(arc.at(t), C1, C2)
+
+    tmax = maximise(g, 0.0, 1.0)
     if g(tmax) < gamma_allow:
         return None
-
-    def cross(a: float, b: float) -> float:
-        for _ in range(200):
-            m = (a + b) / 2
-            if (g(m) >= gamma_allow) == (g(a) >= gamma_allow):
-                a = m
-            else:
-                b = m
-        return (a + b) / 2
-
-    t0, t1 = cross(0.0, tmax), cross(1.0, tmax)
+    t0, t1 = (crossing(lambda t: g(t) >= gamma_allow, tmax, end) for end in (0.0, 1.0))
     from ..geometry import Arc
     return Arc(arc.center, arc.r, arc.start + t0 * arc.sweep, (t1 - t0) * arc.sweep)
 

@@ -77,7 +77,6 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     return []
 
 
-
 def _scaled(x: float, k: float) -> float:
     return k * x
 

@@ -50,7 +50,6 @@ def _seen(K: float) -> float:
     return 180.0 - theta_from_k(K)
 
 
-
 def _shortest(cd: float, alpha: float) -> float:
     return cd / math.sin(math.radians(alpha))
 
