@@ -31,7 +31,7 @@ from ..tolerance import tol
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, angle_deg, length, transmission_deg
 from .crank_rocker import construct as extremes_construct
-from .theta_circle import add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
+from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient", minimum=1.0, inclusive=True),
@@ -395,7 +395,7 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
         turn = sc.add(f"turn{int(sign)}", _times, th, sign, visible=False, unit="deg")
         r = sc.add(f"ray{int(sign)}", ray_from, A, C1, turn, caption=(f"Through A a line at θ to AC1, turned {en}",
                                                                       f"过 A 作与 AC1 成 θ 角的直线({zh})"))
-        line = sc.add(f"line{int(sign)}", _ray_line, r, visible=False)
+        line = sc.add(f"line{int(sign)}", ray_line, r, visible=False)
         for rule in (NearestTo(A), FarthestFrom(A)):
             n += 1
             Cn = sc.add(f"C2_{n}", line_circle, line, kD, branch=rule, label=f"C2,{n}", optional=True, style="candidate",
@@ -403,10 +403,6 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
             ok = sc.add(f"ahead_{n}", _ahead, A, r, Cn, optional=True, visible=False)
             out.append((A, C1, ok, one))
     return out
-
-
-def _ray_line(r) -> Line:
-    return r.line()
 
 
 def _ahead(A: Point, r, C: Point) -> Point | None:

@@ -22,13 +22,13 @@ from typing import Any, Mapping
 from ..analytic.design_by_k import guide_bar_design, shaper_design
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
-from ..geometry import (Ahead, Line, NearestTo, Point, circle, foot, line_circle, midpoint, perpendicular,
+from ..geometry import (Ahead, Line, NearestTo, Point, circle, foot, line_circle, line_through, midpoint, perpendicular,
                         point_on_ray, reflect)
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
 from .guide_bar import construct as guide_bar_extremes
-from .theta_circle import add_theta_step, refuse_tiny_theta, meet_lines, ray_from
+from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, meet_lines, ray_from
 
 GUIDE_GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1 < K < 3 (θ < 90°)", minimum=1.0),
@@ -108,7 +108,7 @@ def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref
                 f"Extreme position {i} of the guide bar: through C at θ/2 to CA", f"过 C 作与 CA 成 θ/2 的导杆极限位置 {i}")))
         Bs = []
         for i, r in enumerate(rays, 1):
-            line = sc.add(f"gl{i}", _as_line, r, visible=False)
+            line = sc.add(f"gl{i}", ray_line, r, visible=False)
             Bs.append(sc.add(f"B{i}", foot, line, A, role=Role.RESULT, style="joint", label=f"B{i}",
                              caption=(f"The perpendicular from A meets it at B{i}", f"自 A 作其垂线,垂足为 B{i}")))
         B1, B2 = Bs
@@ -139,10 +139,6 @@ def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref
     return A, C, B1, B2, th
 
 
-def _as_line(r) -> Line:
-    return r.line()
-
-
 def _complement_turn(half: float) -> float:
     return -(90.0 - half)
 
@@ -168,7 +164,7 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     centre = Ref("centre")
     off = sc.add("off", Line, sc.given("Hh", Point(-H / 2, 0.0), visible=False), Point(0.0, 1.0), caption=(
         f"The line parallel to the centre line at H/2 = {H / 2:g}", f"作与中心线相距 H/2 = {H / 2:g} 的平行线"))
-    ray1 = sc.add("cb1", _line_through_ray, C, B1, visible=False)
+    ray1 = sc.add("cb1", line_through, C, B1, visible=False)
     D1 = sc.add("D1", meet_lines, ray1, off, role=Role.RESULT, style="joint", label="D1",
                 caption=("It meets CB1 extended at D1: D1D2 = H", "交 CB1 延长线于 D1,D1D2 = H"))
     D2 = sc.add("D2", reflect, D1, centre, role=Role.RESULT, style="joint", label="D2",
@@ -204,10 +200,6 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
         sc.add("slider_E1", marks.slider, E1, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
     names = [q.name for q in SHAPER_ANSWERS if DE is not None or q.name not in ("DE", "alpha_max")]
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1", "D2")})
-
-
-def _line_through_ray(c: Point, b: Point) -> Line:
-    return Line.through(c, b)
 
 
 def guide_analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:

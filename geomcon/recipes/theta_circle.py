@@ -48,6 +48,11 @@ def ray_from(origin: Point, toward: Point, angle_deg: float):
     return ray_at_angle(origin, toward, math.radians(angle_deg))
 
 
+def ray_line(r) -> Line:
+    """The line carrying a ray, with its direction (a step operation)."""
+    return r.line()
+
+
 def perpendicular_at(a: Point, b: Point) -> Line:
     """The perpendicular to ``ab`` at ``b``."""
     return Line(b, (b - a).perp())
