@@ -81,6 +81,14 @@ def add_bar(sc: Scene, key: str, a: Ref, b: Ref, name: tuple[str, str] = ("", ""
     return sc.add(key, segment, a, b, role=role, style=style, caption=name)
 
 
+def transmission_mark(c: Point, b: Point, d: Point, symbol: str, value: float):
+    """The mark of a transmission angle at joint ``c``: between c→d and c→b, or c→b extended beyond c when
+    ∠BCD is obtuse, so that the arc spans the acute angle its value names."""
+    if (b - c).dot(d - c) < 0:
+        b = c * 2.0 - b
+    return marks.AngleMark(c, b, d, symbol, value, None)
+
+
 def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str, value: Ref,
                    radius: float | None = None) -> Ref:
     """The arc marking a measured angle, labelled with its value."""

@@ -17,7 +17,7 @@ from ..scene import Role, Scene
 from ..tolerance import is_zero
 from .base import Construction, Quantity, Recipe
 from .common import (add_angle_mark, add_bar, add_collinear_extremes, add_pivot, add_theta_and_K, angle_deg, smallest,
-                     transmission_deg)
+                     transmission_deg, transmission_mark)
 
 GIVENS = (
     Quantity("AB", "mm", "crank"),
@@ -127,7 +127,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     add_angle_mark(sc, "mark_psi", D, C1, C2, "ψ", ps)
     for i, (gk, Bg, Cg) in enumerate(gammas, 1):
-        add_angle_mark(sc, f"mark_gamma_{i}", Cg, Bg, D, f"γ{i}", gk)
+        sc.add(f"mark_gamma_{i}", transmission_mark, Cg, Bg, D, f"γ{i}", gk, role=Role.ANNOTATION, style="angle")
     answers = {q.name: q.name for q in ANSWERS}
     points = {n: n for n in ("A", "D", "B1", "C1", "B2", "C2")}
     return Construction(sc, answers, points)
