@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Any, Mapping
 
 from .errors import ProblemError
-from .recipes import Recipe, get_recipe
+from .recipes import Quantity, Recipe, get_recipe
 
 TOP_KEYS = ("recipe", "title", "source", "seed", "statement", "notes", "given", "published")
 
@@ -45,7 +45,7 @@ class Problem:
     id: str
     recipe: str
     given: Mapping[str, Any]
-    published: Mapping[str, float] = field(default_factory=dict)
+    published: Mapping[str, Any] = field(default_factory=dict)
     title: str = ""
     source: str = ""
     seed: str = ""
@@ -89,14 +89,43 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
                 raise ProblemError(f"given '{q.name}' must be one of {', '.join(q.choices)}, got {value!r}")
             out[q.name] = value
             continue
-        x = _number(value, f"given '{q.name}'")
-        if q.minimum is not None:
-            bad = x < q.minimum if q.inclusive else x <= q.minimum
-            if bad:
-                op = "≥" if q.inclusive else ">"
-                raise ProblemError(f"given '{q.name}' must be {op} {q.minimum:g}, got {value!r}")
-        out[q.name] = x
+        if q.unit == "point":
+            out[q.name] = _point(value, f"given '{q.name}'")
+            continue
+        if q.unit == "table[]":
+            out[q.name] = _tables(value, f"given '{q.name}'")
+            continue
+        if q.unit.endswith("[]"):
+            if not isinstance(value, list) or not value:
+                raise ProblemError(f"given '{q.name}' must be a non-empty list of numbers, got {value!r}")
+            out[q.name] = tuple(_bounded(q, v, f"given '{q.name}[{i}]'") for i, v in enumerate(value))
+            continue
+        out[q.name] = _bounded(q, value, f"given '{q.name}'")
     return out
+
+
+def _bounded(q: Quantity, value: Any, where: str) -> float:
+    x = _number(value, where)
+    if q.minimum is not None:
+        bad = x < q.minimum if q.inclusive else x <= q.minimum
+        if bad:
+            op = "≥" if q.inclusive else ">"
+            raise ProblemError(f"{where} must be {op} {q.minimum:g}, got {value!r}")
+    return x
+
+
+def _point(value: Any, where: str) -> tuple[float, float]:
+    """``[x, y]`` in mm."""
+    if not isinstance(value, list) or len(value) != 2:
+        raise ProblemError(f"{where} must be a point [x, y], got {value!r}")
+    return (_number(value[0], f"{where}[0]"), _number(value[1], f"{where}[1]"))
+
+
+def _tables(value: Any, where: str) -> tuple[dict[str, Any], ...]:
+    """A non-empty list of tables (e.g. a cam's motion program); the recipe checks their contents."""
+    if not isinstance(value, list) or not value or not all(isinstance(v, Mapping) for v in value):
+        raise ProblemError(f"{where} must be a non-empty list of tables, e.g. [{{kind = \"rise\", angle = 120}}], got {value!r}")
+    return tuple(dict(v) for v in value)
 
 
 def problem_from_dict(data: Mapping[str, Any], *, name: str, path: str | None = None) -> Problem:
@@ -114,11 +143,16 @@ def problem_from_dict(data: Mapping[str, Any], *, name: str, path: str | None = 
     if not isinstance(published_in, Mapping):
         raise ProblemError("[published] must be a table of answer = value")
     answers = [q.name for q in recipe.answers]
-    published: dict[str, float] = {}
+    published: dict[str, Any] = {}
     for k, v in published_in.items():
         if k not in answers:
             raise ProblemError(f"published '{k}' is not an answer of {recipe.name} (answers: {', '.join(answers)})")
-        published[k] = _number(v, f"published '{k}'")
+        if isinstance(v, list):
+            published[k] = tuple(_number(x, f"published '{k}[{i}]'") for i, x in enumerate(v))
+        elif isinstance(v, bool):
+            published[k] = v
+        else:
+            published[k] = _number(v, f"published '{k}'")
     texts = {}
     for k in ("title", "source", "seed", "statement", "notes"):
         v = data.get(k, "")

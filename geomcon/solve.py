@@ -35,6 +35,40 @@ def _num(x: float) -> float:
     return float(f"{x:.12g}")
 
 
+def _value(unit: str, v: Any) -> Any:
+    """An answer step's value in the contract's type: bool, a tuple of floats (list units) or a float."""
+    if unit == "bool":
+        return bool(v)
+    if unit.endswith("[]"):
+        return tuple(float(x) for x in v)
+    return float(v)
+
+
+def _json(v: Any) -> Any:
+    """An answer value for JSON: numbers rounded by :func:`_num`, lists element by element, bools as they are."""
+    if isinstance(v, bool):
+        return v
+    if isinstance(v, (tuple, list)):
+        return [_json(x) for x in v]
+    return _num(v)
+
+
+def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
+    """Matching scalar parts of two answer values: ``("s[0]", a[0], b[0])``… for lists;
+    bools compare as the numbers 1 and 0.
+
+    Examples
+    --------
+    >>> _pairs("s", (1.0, 2.0), (1.0, 2.5))
+    [('s[0]', 1.0, 1.0), ('s[1]', 2.0, 2.5)]
+    """
+    if isinstance(a, (tuple, list)):
+        if not isinstance(b, (tuple, list)) or len(a) != len(b):
+            raise NotAMechanism(f"answer {name}: {len(a)} values against {b!r}")
+        return [(f"{name}[{i}]", x, y) for i, (x, y) in enumerate(zip(a, b))]
+    return [(name, a, b)]
+
+
 class Solution:
     """The solved problem; every property computes only what it needs, once."""
 
@@ -60,7 +94,8 @@ class Solution:
         """
         maps = self.construction.solutions or (self.construction.answers,)
         vals = self.scene.evaluate([k for m in maps for k in m.values()])
-        out = [{name: float(vals[key]) for name, key in m.items() if name != "_valid"}
+        units = {q.name: q.unit for q in self.recipe.answers}
+        out = [{name: _value(units.get(name, ""), vals[key]) for name, key in m.items() if name != "_valid"}
                for m in maps if "_valid" not in m or vals[m["_valid"]]]
         if self.recipe.order is not None:
             out.sort(key=self.recipe.order)
@@ -92,7 +127,8 @@ class Solution:
             prefix = f"solutions[{i}]." if i else ""
             for q in self.recipe.answers:
                 if q.name in built and q.name in exact:
-                    rows.append(check_row(prefix + q.name, built[q.name], exact[q.name], q.unit, self.length_scale))
+                    for name, b, e in _pairs(prefix + q.name, built[q.name], exact[q.name]):
+                        rows.append(check_row(name, b, e, q.unit.removesuffix("[]"), self.length_scale))
         if self.recipe.back_check is not None:
             for i, built in enumerate(self.solution_values):
                 prefix = f"solutions[{i}]." if i else ""
@@ -113,7 +149,8 @@ class Solution:
     @cached_property
     def published(self) -> list[dict[str, Any]]:
         """The audit of the printed answers against the exact ones."""
-        return [audit_row(k, v, self.answers[k]) for k, v in self.problem.published.items()]
+        return [audit_row(name, p, e) for k, v in self.problem.published.items()
+                for name, p, e in _pairs(k, v, self.answers[k])]
 
     @property
     def warnings(self) -> list[str]:
@@ -142,7 +179,7 @@ class Solution:
 
     def to_json(self) -> dict[str, Any]:
         """The public JSON object (angles in degrees, lengths in mm)."""
-        answers = {k: _num(v) for k, v in self.answers.items()}
+        answers = {k: _json(v) for k, v in self.answers.items()}
         out = {
             "problem": self.problem.id,
             "recipe": self.recipe.name,
@@ -150,10 +187,10 @@ class Solution:
             "given": dict(self.problem.given),
             "answers": answers,
             "points": {k: [_num(x), _num(y)] for k, (x, y) in self.points.items()},
-            "solutions": [{k: _num(v) for k, v in s.items()} for s in self.solution_values],
-            "checks": [{**r, "construction": _num(r["construction"]), "analytic": _num(r["analytic"]),
+            "solutions": [{k: _json(v) for k, v in s.items()} for s in self.solution_values],
+            "checks": [{**r, "construction": _json(r["construction"]), "analytic": _json(r["analytic"]),
                         "abs_error": float(f"{r['abs_error']:.3g}")} for r in self.checks],
-            "published": [{**r, "exact": _num(r["exact"]),
+            "published": [{**r, "exact": _json(r["exact"]),
                            "rel_deviation": None if r["rel_deviation"] is None else float(f"{r['rel_deviation']:.4g}")}
                           for r in self.published],
             "warnings": self.warnings,
@@ -170,16 +207,17 @@ class Solution:
         for q in self.recipe.answers:
             if q.name not in self.answers:
                 continue
-            v = self.answers[q.name]
-            unit = {"deg": "°", "mm": " mm"}.get(q.unit, "")
-            row = next((r for r in self.checks if r["quantity"] == q.name), None)
-            mark = "" if row is None else (" ✓ twin" if row["ok"] else " ✗ twin")
-            line = f"{q.name} = {v:.4f}{unit}{mark}"
-            if q.name in pub:
-                p = pub[q.name]
-                rel = "" if p["rel_deviation"] is None else f", {100 * p['rel_deviation']:+.2f} %"
-                line += f"  (printed {p['published']:g}{rel})"
-            lines.append(line)
+            unit = {"deg": "°", "mm": " mm"}.get(q.unit.removesuffix("[]"), "")
+            for name, v, _ in _pairs(q.name, self.answers[q.name], self.answers[q.name]):
+                row = next((r for r in self.checks if r["quantity"] == name), None)
+                mark = "" if row is None else (" ✓ twin" if row["ok"] else " ✗ twin")
+                shown = str(v).lower() if isinstance(v, bool) else f"{v:.4f}{unit}"
+                line = f"{name} = {shown}{mark}"
+                if name in pub:
+                    p = pub[name]
+                    rel = "" if p["rel_deviation"] is None else f", {100 * p['rel_deviation']:+.2f} %"
+                    line += f"  (printed {p['published']:g}{rel})"
+                lines.append(line)
         return lines
 
     def title(self) -> str:

@@ -1,4 +1,4 @@
-"""Small frozen value objects of plane geometry: Point, Line, Ray, Segment, Circle, Arc.
+"""Small frozen value objects of plane geometry: Point, Line, Ray, Segment, Circle, Arc, Polyline.
 
 Each validates itself when built (finite coordinates, unit directions, positive radii) and never changes
 afterwards. Operations on them are free functions in the neighbouring modules.
@@ -223,3 +223,27 @@ class Arc:
     def at(self, fraction: float) -> Point:
         """The point at ``fraction`` (0 … 1) of the arc."""
         return self.circle.at(self.start + fraction * self.sweep)
+
+
+@dataclass(frozen=True, slots=True)
+class Polyline:
+    """A chain of points (a sampled curve: pitch curve, cam profile, coupler path), optionally closed.
+
+    Examples
+    --------
+    >>> Polyline((Point(0, 0), Point(1, 0), Point(1, 1))).length
+    2.0
+    """
+
+    points: tuple[Point, ...]
+    closed: bool = False
+
+    def __post_init__(self) -> None:
+        if len(self.points) < 2:
+            raise Degenerate(f"polyline with {len(self.points)} point(s)")
+
+    @property
+    def length(self) -> float:
+        """Total length (including the closing edge when closed)."""
+        pts = self.points + (self.points[:1] if self.closed else ())
+        return sum(abs(b - a) for a, b in zip(pts, pts[1:]))

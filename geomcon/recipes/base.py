@@ -23,7 +23,10 @@ class Quantity:
     name : str
         The public name (part of the contract: problem files and JSON use it).
     unit : str
-        ``"mm"``, ``"deg"``, ``""`` (a ratio) or ``"choice"`` (one of ``choices``).
+        ``"mm"``, ``"deg"``, ``""`` (a ratio), ``"choice"`` (one of ``choices``), ``"bool"``,
+        ``"point"`` (``[x, y]`` in mm), ``"mm[]"`` / ``"deg[]"`` / ``"[]"`` (a list of numbers; answers of
+        these units are tuples, checked element by element) or ``"table[]"`` (givens only: a list of
+        tables, e.g. a cam's motion program, whose contents the recipe validates).
     doc : str
         One line saying what it is.
     required : bool

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
+from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from .labels import Runs, label_runs, text_width
 from .placement import Request
 from .shapes import Disc, ArcP, Pen, Poly, Shape
@@ -180,3 +180,8 @@ def draw_circle(c: Circle, style: Style, ctx: Context) -> Drawn:
 def draw_arc(a: Arc, style: Style, ctx: Context) -> Drawn:
     """An arc (e.g. the admissible arc of a θ-circle), clipped to the view box."""
     return _arcs(a.center, a.r, [(a.start, a.sweep)], style, ctx)
+
+
+def draw_polyline(pl: Polyline, style: Style, ctx: Context) -> Drawn:
+    """A sampled curve (pitch curve, cam profile, path) as one SVG polyline (its points are part of the view's content box)."""
+    return Drawn([Poly(tuple(ctx.view.p(p) for p in pl.points), pen(style), closed=pl.closed)])

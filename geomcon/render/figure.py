@@ -22,7 +22,7 @@ from typing import Any, Iterable
 import shapely
 import shapely.ops
 
-from ..geometry.primitives import Arc, Circle, Point, Ray, Segment
+from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
@@ -95,6 +95,8 @@ def _points_of(v: Any) -> list[Point]:
         return [v.vertex]
     if isinstance(v, Arc):
         return [v.at(i / 8) for i in range(9)]
+    if isinstance(v, Polyline):
+        return list(v.points)
     return []
 
 

@@ -18,10 +18,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
+from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
-                   draw_circle, draw_line, draw_point, draw_segment, pen)
+                   draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
 from .placement import Request
 from .shapes import ArcP, Pen, Poly
@@ -219,7 +219,7 @@ def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Dr
     return fn(value, style, ctx) if fn else Drawn()
 
 
-_TABLE = {Segment: draw_segment, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
+_TABLE = {Segment: draw_segment, Polyline: draw_polyline, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
           AngleMark: draw_angle, RightAngleMark: draw_right_angle, Dimension: draw_dimension,
           Ground: draw_ground, Slider: draw_slider, Guide: draw_guide}
 
@@ -228,7 +228,7 @@ def kind_of(value: Any) -> str:
     """``"point"``, ``"curve"``, a mark class name, or ``"none"`` (numbers, None): chooses the default style."""
     if isinstance(value, Point):
         return "point"
-    if isinstance(value, (Segment, Line, Ray, Circle, Arc)):
+    if isinstance(value, (Segment, Line, Ray, Circle, Arc, Polyline)):
         return "curve"
     if isinstance(value, (tuple, list)):
         return kind_of(value[0]) if value else "none"
