@@ -1,0 +1,125 @@
+"""The standard motion laws of cam followers, normalised: f(x) for x = δ/Φ in [0, 1], with f(0) = 0, f(1) = 1.
+
+A rise of stroke h over the cam angle Φ (radians) is s(δ) = h·f(δ/Φ), so ds/dδ = h·f′(x)/Φ and
+d²s/dδ² = h·f″(x)/Φ². A return is s(δ) = h·(1 − f(δ/Φ)).
+
+=============  ===================  =====================================  =============================
+name           textbook name        f(x)                                   impact at the ends (with dwells)
+=============  ===================  =====================================  =============================
+uniform        等速                 x                                      rigid (velocity jumps)
+parabolic      等加速等减速          2x² (x < ½), 1 − 2(1 − x)² (x ≥ ½)     soft (acceleration jumps, also at ½)
+cosine         余弦加速度 (简谐)     (1 − cos πx)/2                          soft
+cycloidal      正弦加速度 (摆线)     x − sin(2πx)/(2π)                       none
+poly345        五次多项式 (3-4-5)    10x³ − 15x⁴ + 6x⁵                       none
+=============  ===================  =====================================  =============================
+
+At x = ½ the parabolic law's f″ jumps from +4 to −4; the value returned there is the decelerating one
+(each law's pieces own the half-open interval that starts at their left end).
+
+Examples
+--------
+>>> law("parabolic").f(0.25), round(law("cosine").f(0.5), 15)
+(0.125, 0.5)
+>>> law("等速").name, law("3-4-5").name
+('uniform', 'poly345')
+>>> [law(n).impact for n in LAW_NAMES]
+['rigid', 'soft', 'soft', 'none', 'none']
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from ..errors import NotAMechanism
+
+Fn = Callable[[np.ndarray], np.ndarray]
+
+
+def _uniform(x):
+    return x, np.ones_like(x), np.zeros_like(x)
+
+
+def _parabolic(x):
+    first = x < 0.5
+    y = 1.0 - x
+    f = np.where(first, 2.0 * x * x, 1.0 - 2.0 * y * y)
+    d1 = np.where(first, 4.0 * x, 4.0 * y)
+    d2 = np.where(first, 4.0, -4.0)
+    return f, d1, d2 + 0.0 * x
+
+
+def _cosine(x):
+    t = math.pi * x
+    return np.sin(t / 2.0) ** 2, math.pi / 2.0 * np.sin(t), math.pi ** 2 / 2.0 * np.cos(t)   # sin² = (1 − cos)/2
+
+
+def _cycloidal(x):
+    t = 2.0 * math.pi * x
+    return x - np.sin(t) / (2.0 * math.pi), 1.0 - np.cos(t), 2.0 * math.pi * np.sin(t)
+
+
+def _poly345(x):
+    x2 = x * x
+    return x2 * x * (10.0 - 15.0 * x + 6.0 * x2), 30.0 * x2 * (1.0 - x) ** 2, 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x)
+
+
+@dataclass(frozen=True)
+class Law:
+    """One normalised motion law.
+
+    Parameters
+    ----------
+    name : str
+        The public name (``uniform``, ``parabolic``, ``cosine``, ``cycloidal``, ``poly345``).
+    zh : str
+        The textbook's name.
+    impact : str
+        ``"rigid"``, ``"soft"`` or ``"none"``: the shock at the ends of a rise between dwells.
+    fn : callable
+        ``fn(x) -> (f, f′, f″)`` on arrays.
+    """
+
+    name: str
+    zh: str
+    impact: str
+    fn: Callable
+
+    def f(self, x: float) -> float:
+        """f(x) for one x in [0, 1]."""
+        return float(self.fn(np.asarray(float(x)))[0])
+
+    def derivatives(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(f, f′, f″) at ``x`` (scalar or array), each as a float array of x's shape."""
+        xa = np.asarray(x, dtype=float)
+        f, d1, d2 = self.fn(xa)
+        return np.asarray(f, dtype=float), np.asarray(d1, dtype=float), np.asarray(d2, dtype=float)
+
+
+LAWS: dict[str, Law] = {l.name: l for l in (
+    Law("uniform", "等速运动规律", "rigid", _uniform),
+    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic),
+    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine),
+    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal),
+    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345),
+)}
+LAW_NAMES = tuple(LAWS)
+
+ALIASES = {
+    "constant_velocity": "uniform", "linear": "uniform", "等速": "uniform",
+    "constant_acceleration": "parabolic", "parabola": "parabolic", "等加速等减速": "parabolic",
+    "simple_harmonic": "cosine", "harmonic": "cosine", "余弦": "cosine", "余弦加速度": "cosine", "简谐": "cosine",
+    "sine": "cycloidal", "cycloid": "cycloidal", "正弦": "cycloidal", "正弦加速度": "cycloidal", "摆线": "cycloidal",
+    "3-4-5": "poly345", "345": "poly345", "polynomial": "poly345", "五次多项式": "poly345",
+}
+
+
+def law(name: str) -> Law:
+    """The law called ``name`` (or one of its aliases); an unknown name raises :class:`NotAMechanism` listing
+    the known ones."""
+    key = ALIASES.get(name, name)
+    if key not in LAWS:
+        raise NotAMechanism(f"unknown motion law '{name}' (known: {', '.join(LAW_NAMES)}; aliases: {', '.join(ALIASES)})")
+    return LAWS[key]

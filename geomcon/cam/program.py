@@ -1,0 +1,180 @@
+"""A cam's motion program: rise, dwells and return over one turn, and the follower's motion s(δ) it gives.
+
+A problem file gives the program as a list of tables::
+
+    h = 16
+    program = [{kind = "rise", angle = 150, law = "parabolic"},
+               {kind = "dwell", angle = 30},
+               {kind = "return", angle = 120, law = "uniform"},
+               {kind = "dwell", angle = 60}]
+
+The angles are cam angles in degrees and must add up to 360°. ``h`` is the stroke: mm for a translating
+follower, degrees for an oscillating one; s comes out in the unit of h, its derivatives per radian of cam
+angle. A segment owns the half-open interval [start, end) of cam angle; δ = 360° belongs to the last one.
+A program without a return may be shorter than a turn (a motion-law exercise); cam profiles need
+:attr:`Program.full`.
+
+Examples
+--------
+>>> p = parse_program([{"kind": "rise", "angle": 150, "law": "parabolic"}, {"kind": "dwell", "angle": 30},
+...                    {"kind": "return", "angle": 120, "law": "uniform"}, {"kind": "dwell", "angle": 60}])
+>>> round(float(p.motion(15.0, 100.0)[0]), 4)       # seed 001-24: s at δ = 100°
+11.6667
+>>> [(e.angle, e.kind) for e in p.impacts(15.0)]
+[(0.0, 'soft'), (75.0, 'soft'), (150.0, 'soft'), (180.0, 'rigid'), (300.0, 'rigid')]
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Mapping, Sequence
+
+import numpy as np
+
+from ..errors import NotAMechanism
+from .laws import Law, law
+
+KINDS = ("rise", "dwell", "return")
+FULL_TURN_REL = 1e-9
+"""The segment angles must add up to 360° to this relative tolerance."""
+
+
+@dataclass(frozen=True)
+class Segment:
+    """One part of the program: ``kind`` rise | dwell | return over ``angle`` degrees from ``start``."""
+
+    kind: str
+    start: float
+    angle: float
+    law: Law | None = None
+
+    @property
+    def end(self) -> float:
+        """Cam angle (deg) where the segment ends."""
+        return self.start + self.angle
+
+
+@dataclass(frozen=True)
+class Impact:
+    """A shock of the follower at cam angle ``angle`` (deg): ``rigid`` (velocity jumps) or ``soft``
+    (acceleration jumps), with the jump's size (in the units of h per rad, per rad²)."""
+
+    angle: float
+    kind: str
+    jump: float
+
+
+@dataclass(frozen=True)
+class Program:
+    """The validated segments of one turn, in order from δ = 0."""
+
+    segments: tuple[Segment, ...]
+
+    @property
+    def full(self) -> bool:
+        """True when the segments fill the whole turn (a cam); a rise alone may be shorter (a motion-law
+        exercise), and the follower then stays at the top after it."""
+        return abs(self.segments[-1].end - 360.0) <= FULL_TURN_REL * 360.0
+
+    @property
+    def rise(self) -> Segment:
+        """The (first) rise segment."""
+        return next(s for s in self.segments if s.kind == "rise")
+
+    @property
+    def ret(self) -> Segment | None:
+        """The (first) return segment, if any."""
+        return next((s for s in self.segments if s.kind == "return"), None)
+
+    def motion(self, h: float, delta) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(s, ds/dδ, d²s/dδ²) at cam angles ``delta`` (deg, scalar or array, taken modulo 360°); s in the
+        unit of ``h``, derivatives per radian of cam angle."""
+        d = np.mod(np.asarray(delta, dtype=float), 360.0)
+        d = np.where((d == 0.0) & (np.asarray(delta, dtype=float) > 0.0), 360.0, d)
+        s, v, a = np.zeros_like(d), np.zeros_like(d), np.zeros_like(d)
+        level = 0.0                 # the follower's height at the start of each segment (0 or h)
+        last = len(self.segments) - 1
+        for i, seg in enumerate(self.segments):
+            inside = (d >= seg.start) & ((d < seg.end) | ((i == last) & (d <= seg.end)))
+            if seg.kind == "dwell":
+                s = np.where(inside, level, s)
+                continue
+            span = math.radians(seg.angle)
+            f, f1, f2 = seg.law.derivatives(np.clip((d - seg.start) / seg.angle, 0.0, 1.0))
+            sign = 1.0 if seg.kind == "rise" else -1.0
+            s = np.where(inside, level + sign * h * f, s)
+            v = np.where(inside, sign * h * f1 / span, v)
+            a = np.where(inside, sign * h * f2 / span ** 2, a)
+            level += sign * h
+        return np.where(d > self.segments[-1].end, level, s), v, a
+
+    def impacts(self, h: float) -> list[Impact]:
+        """Every jump of velocity (rigid impact) or acceleration (soft impact) over the turn, including the
+        middle of a parabolic segment, from the one-sided end values of neighbouring segments."""
+        out = []
+        segs = self.segments if self.full else self.segments + (Segment("dwell", self.segments[-1].end, 1.0),)
+        for i, seg in enumerate(segs):
+            prev = segs[i - 1] if self.full or i else Segment("dwell", 0.0, seg.angle)
+            v0, a0 = _end_values(prev, h, at_end=True)
+            v1, a1 = _end_values(seg, h, at_end=False)
+            scale = abs(h) / math.radians(min(seg.angle, prev.angle))
+            if abs(v1 - v0) > 1e-9 * scale:
+                out.append(Impact(seg.start % 360.0, "rigid", v1 - v0))
+            elif abs(a1 - a0) > 1e-9 * scale / math.radians(min(seg.angle, prev.angle)):
+                out.append(Impact(seg.start % 360.0, "soft", a1 - a0))
+            if seg.law is not None and seg.law.name == "parabolic":
+                sign = 1.0 if seg.kind == "rise" else -1.0
+                out.append(Impact(seg.start + seg.angle / 2, "soft", -8.0 * sign * h / math.radians(seg.angle) ** 2))
+        return sorted(out, key=lambda e: e.angle)
+
+
+def _end_values(seg: Segment, h: float, *, at_end: bool) -> tuple[float, float]:
+    """(ds/dδ, d²s/dδ²) at the start or end of a segment (one-sided)."""
+    if seg.kind == "dwell":
+        return 0.0, 0.0
+    _, f1, f2 = seg.law.derivatives(1.0 if at_end else 0.0)
+    sign = 1.0 if seg.kind == "rise" else -1.0
+    span = math.radians(seg.angle)
+    return sign * h * float(f1) / span, sign * h * float(f2) / span ** 2
+
+
+def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") -> Program:
+    """Validate a program given as tables (see the module docstring); a bad entry raises
+    :class:`NotAMechanism` naming ``program[i]`` and the value."""
+    segs, start = [], 0.0
+    rises = returns = 0
+    for i, t in enumerate(tables):
+        where = f"{key}[{i}]"
+        extra = [k for k in t if k not in ("kind", "angle", "law")]
+        if extra:
+            raise NotAMechanism(f"{where}: unknown key '{extra[0]}' (a segment takes kind, angle, law)")
+        kind = t.get("kind")
+        if kind not in KINDS:
+            raise NotAMechanism(f"{where}: kind must be one of {', '.join(KINDS)}, got {kind!r}")
+        angle = t.get("angle")
+        if isinstance(angle, bool) or not isinstance(angle, (int, float)) or not math.isfinite(angle) or angle <= 0:
+            raise NotAMechanism(f"{where}: angle must be a number > 0 (degrees of cam rotation), got {angle!r}")
+        if kind == "dwell":
+            if "law" in t:
+                raise NotAMechanism(f"{where}: a dwell has no law (got law = {t['law']!r})")
+            lw = None
+        else:
+            if not isinstance(t.get("law"), str):
+                raise NotAMechanism(f"{where}: a {kind} needs law = one of uniform, parabolic, cosine, cycloidal, poly345")
+            try:
+                lw = law(t["law"])
+            except NotAMechanism as exc:
+                raise NotAMechanism(f"{where}: {exc}") from None
+        rises += kind == "rise"
+        returns += kind == "return"
+        segs.append(Segment(kind, start, float(angle), lw))
+        start += float(angle)
+    if not segs:
+        raise NotAMechanism(f"{key} is empty")
+    if rises != 1 or returns > 1:
+        raise NotAMechanism(f"{key}: one rise and at most one return per turn, got {rises} rise(s) and {returns} return(s)")
+    if returns == 1 and [s.kind for s in segs if s.kind != "dwell"] != ["rise", "return"]:
+        raise NotAMechanism(f"{key}: the return must follow the rise")
+    if abs(start - 360.0) > FULL_TURN_REL * 360.0 and not (returns == 0 and start < 360.0):
+        raise NotAMechanism(f"{key}: the segment angles add up to {start:g}°, not 360°")
+    return Program(tuple(segs))
