@@ -154,6 +154,34 @@ def test_random_crank_rocker_designs(i):
     assert found[0]["AB"] == pytest.approx(AB, rel=1e-8) and found[0]["BC"] == pytest.approx(BC, rel=1e-8)
 
 
+@pytest.mark.parametrize("i", range(30))
+def test_random_crank_rocker_links_form(i):
+    """Links form (AB, BC, K, ψ → CD, AD): a random crank-rocker's own K and ψ must give its CD and AD back."""
+    rng = random.Random(7000 + i)
+    while True:
+        AB = rng.uniform(10, 50)
+        BC, CD, AD = (rng.uniform(AB * 1.2, 300) for _ in range(3))
+        ls = sorted([BC, CD, AD])
+        if AB + ls[2] < ls[0] + ls[1] - 5:
+            break
+    ex = _solve("crank_rocker.extremes", AB=AB, BC=BC, CD=CD, AD=AD)
+    K, psi = ex.answers["K"], ex.answers["psi"]
+    if K < 1 + 1e-3:
+        pytest.skip("this random linkage has (almost) no quick return")
+    sol = _solve("crank_rocker.design_by_K", K=K, AB=AB, BC=BC, psi=psi)
+    _assert_all_checks(sol)
+    found = [s for s in sol.solution_values if abs(s["AD"] - AD) <= 1e-7 * AD]
+    assert found, (AD, [s["AD"] for s in sol.solution_values])
+    assert found[0]["CD"] == pytest.approx(CD, rel=1e-8)
+
+
+def test_crank_rocker_links_form_seed_001_17():
+    sol = _solve("crank_rocker.design_by_K", K=1.1155098391166032, AB=240, BC=600, psi=45)
+    _assert_all_checks(sol)
+    assert [round(s["AD"], 2) for s in sol.solution_values] == [762.77, 911.62]
+    assert {round(s["CD"], 2) for s in sol.solution_values} == {639.12}
+
+
 def test_crank_rocker_design_refuses_a_coupler_no_point_satisfies():
     with pytest.raises(NotAMechanism) as exc:
         _solve("crank_rocker.design_by_K", K=1.25, CD=290, psi=32, BC=10).answers
@@ -166,6 +194,9 @@ def test_crank_rocker_design_refuses_a_coupler_no_point_satisfies():
     (dict(K=1.25, CD=290, psi=32, BC=260, AB=60), ["exactly one closing condition"]),
     (dict(K=1.25, CD=290, psi=200, BC=260), ["psi = 200"]),
     (dict(K=1.25, CD=290, psi=32, frame_line=True), ["frame_line needs"]),
+    (dict(K=1.25, psi=32, BC=260), ["without CD"]),
+    (dict(K=1.0, psi=32, BC=260, AB=60), ["K > 1"]),
+    (dict(K=1.25, psi=32, BC=60, AB=60), ["AB = 60 must be shorter"]),
 ])
 def test_crank_rocker_design_bad_forms(given, words):
     with pytest.raises(NotAMechanism) as exc:
@@ -248,3 +279,16 @@ def test_random_slotter_designs(i):
 def test_slotter_seed_001_19():
     a = _solve("slotter.design_by_K", K=1.5, H=154, B1B2=308, alpha_allow=10).answers
     assert (round(a["AB"], 2), round(a["AC"], 2), a["CD"], round(a["DE"], 1)) == (161.93, 50.04, 77.0, 443.4)
+
+
+def test_output_arm_of_the_cutter_drive_seed_001_21():
+    sol = _solve("crank_rocker.design_by_K", K=1, CD=200, phi1=140, phi2=95, frame_line=True, H_out=300)
+    _assert_all_checks(sol)
+    assert sol.answers["DE"] == pytest.approx(300 / (2 * math.sin(math.radians(22.5))), rel=1e-12)
+    E1, E2 = (sol.scene.evaluate([k])[k] for k in ("E1", "E2"))
+    assert abs(E2 - E1) == pytest.approx(300, rel=1e-12)
+
+
+def test_output_arm_needs_the_positions_form():
+    with pytest.raises(NotAMechanism, match="H_out"):
+        _solve("crank_rocker.design_by_K", K=1.2, CD=50, AD=80, phi=60, H_out=30)

@@ -11,6 +11,8 @@ Two families of exam problems:
   K = 1 puts A on the line C1C2 itself (with ``AD`` or ``frame_line``).
 - **frame given** (``AD`` and the angle ``phi`` = ∠ADC of one extreme position C1): the other extreme
   position lies on the rocker circle where a line through A at ±θ to AC1 meets it.
+- **links** (no ``CD``; ``AB``, ``BC`` and ``psi`` given): the triangle AC1C2 from AC1 = BC − AB,
+  AC2 = AB + BC and θ, then D on the bisector of C1C2 seeing it under ψ (:mod:`.crank_rocker_links`).
 
 Every candidate is built; the valid ones (AB a crank by Grashof, C1 and C2 on one side of AD, so that they
 really are the designed linkage's extreme positions) are the ``solutions``; the textbook's choice is the
@@ -28,6 +30,7 @@ from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherTh
                         circle, circle_circle, line_circle, line_line, line_through, midpoint, point_along, segment)
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import tol
+from . import crank_rocker_links
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, angle_deg, length, transmission_deg
 from .crank_rocker import construct as extremes_construct
@@ -35,7 +38,7 @@ from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, add_seein
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient", minimum=1.0, inclusive=True),
-    Quantity("CD", "mm", "rocker"),
+    Quantity("CD", "mm", "rocker (all forms but the links form)", required=False),
     Quantity("psi", "deg", "rocker swing ∠C1DC2 (positions given)", required=False),
     Quantity("phi1", "deg", "direction of DC1 from the horizontal through D, counter-clockwise", required=False, minimum=None),
     Quantity("phi2", "deg", "direction of DC2 from the horizontal through D, counter-clockwise", required=False, minimum=None),
@@ -47,27 +50,39 @@ GIVENS = (
     Quantity("phi", "deg", "angle ∠ADC1 between the frame and the given extreme position DC1 (frame given)",
              required=False),
     Quantity("gamma_allow", "deg", "smallest admissible transmission angle", required=False),
+    Quantity("H_out", "mm", "stroke of an output slider driven from the rocker by an arm DE along DC whose link "
+             "EF is parallel in both extreme positions (equal pressure angles there): gives DE", required=False),
 )
 ANSWERS = (
     Quantity("AB", "mm", "crank"),
     Quantity("BC", "mm", "coupler"),
     Quantity("AD", "mm", "frame"),
-    Quantity("CD", "mm", "rocker (as given)"),
+    Quantity("CD", "mm", "rocker (as given, or designed in the links form)"),
     Quantity("psi", "deg", "rocker swing of the designed linkage"),
     Quantity("gamma_min", "deg", "smallest transmission angle of the designed linkage"),
     Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
     Quantity("K", "", "time-ratio coefficient (as given)"),
     Quantity("C1_folded", "", "1 when the extreme position C1 is the folded one (AC1 = BC − AB), else 0"),
     Quantity("A_near", "", "1 when A lies on D's side of C1C2 (always 1 when the frame is given)"),
+    Quantity("DE", "mm", "arm of the output stage, H_out / (2 sin ψ/2) (only with H_out)"),
 )
 CLOSINGS = ("BC", "AB", "AC1", "frame_line", "AD")
 
 
 # ----------------------------------------------------------------------------------------- problem forms
 def _form(g: Mapping[str, Any]) -> tuple[str, str]:
-    """("positions" | "frame", closing condition name), or a refusal naming what is missing or extra."""
+    """("positions" | "frame" | "links", closing condition name), or a refusal naming what is missing or extra."""
     has = {k for k in ("psi", "phi1", "phi2", "phi") if g.get(k) is not None}
     closing = [k for k in CLOSINGS if g.get(k) not in (None, False)]
+    if g.get("CD") is None:
+        if has != {"psi"} or sorted(closing) != ["AB", "BC"]:
+            raise NotAMechanism("without CD give AB, BC and psi (the links form: rocker and frame are designed); "
+                                "otherwise give CD")
+        if g["K"] == 1.0:
+            raise NotAMechanism("the links form needs K > 1 (with K = 1 the extreme positions C1, C2 are collinear with A)")
+        if g["AB"] >= g["BC"]:
+            raise NotAMechanism(f"AB = {g['AB']:g} must be shorter than BC = {g['BC']:g} for a crank-rocker")
+        return "links", "AB+BC"
     if "phi" in has:
         if has - {"phi"} or set(closing) - {"AD"} or "AD" not in closing:
             raise NotAMechanism("with phi (frame given) give AD and neither psi, phi1, phi2 nor another closing condition")
@@ -83,7 +98,8 @@ def _form(g: Mapping[str, Any]) -> tuple[str, str]:
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
-    _form(g)
+    if _form(g)[0] != "positions" and g.get("H_out") is not None:
+        raise NotAMechanism("H_out (the output arm DE) needs the rocker's extreme positions given (psi or phi1, phi2)")
     theta = theta_from_k(g["K"])
     refuse_tiny_theta(g["K"])
     if theta >= 180.0 or g["K"] >= 1e12:
@@ -241,6 +257,8 @@ def _times(x: float, k: float) -> float:
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build every candidate of the design and the drawing of the textbook's choice."""
     family, closing = _form(g)
+    if family == "links":
+        return crank_rocker_links.construct(g)
     K, CD = g["K"], g["CD"]
     sc = Scene("Crank-rocker designed by K")
     th = add_theta_step(sc, K)
@@ -269,11 +287,35 @@ def construct(g: Mapping[str, Any]) -> Construction:
     _draw_choice(sc, idx, cands, th)
     answers = {name: f"chosen_{name}" for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near")}
     answers.update(CD="CD", theta="theta", K="K")
+    if g.get("H_out") is not None:
+        answers["DE"] = _add_output_arm(sc, g["H_out"])
+        for sol in sols:
+            sol["DE"] = answers["DE"]
     for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near"):
         sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False)
     points = {"D": "D", "A": "A", "C1": "Cf", "C2": "Ce", "B1": "B1", "B2": "B2"}
     return Construction(sc, answers, points, solutions=tuple(sols),
                         no_solution=_no_solution_message(g, closing))
+
+
+def _add_output_arm(sc: Scene, H: float) -> str:
+    """The output stage: E1, E2 on DC1, DC2 extended with E1E2 = H (similar triangles DC1C2 ~ DE1E2, so
+    E1E2 ∥ C1C2 and the link EF, parallel in both extremes, moves the slider by H); returns the DE step."""
+    D, C1, C2 = Ref("D"), Ref("Cf"), Ref("Ce")
+    DE = sc.add("DE", _scaled, D, C1, C2, H, unit="mm", visible=False, optional=True)
+    E1 = sc.add("E1", point_along, D, C1, DE, style="joint", label="E1", optional=True, caption=(
+        f"Output arm: E1, E2 on DC1, DC2 with E1E2 ∥ C1C2 and E1E2 = H = {H:g}: DE = H/(2 sin ψ/2)",
+        f"输出摇臂:在 DC1、DC2 上取 E1、E2,使 E1E2 ∥ C1C2 且 E1E2 = H = {H:g}"))
+    E2 = sc.add("E2", point_along, D, C2, DE, style="joint", label="E2", optional=True)
+    sc.add("DE1", segment, D, E1, style="link", optional=True)
+    sc.add("DE2", segment, D, E2, style="link-alt", optional=True)
+    sc.add("E1E2", segment, E1, E2, style="construction", optional=True)
+    return "DE"
+
+
+def _scaled(D: Point, C1: Point, C2: Point, H: float) -> float:
+    """DE with E1E2 = H on the rays DC1, DC2: CD·H/C1C2."""
+    return abs(C1 - D) * H / abs(C2 - C1)
 
 
 def _no_solution_message(g: Mapping[str, Any], closing: str) -> str:
@@ -424,10 +466,10 @@ def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
     sc.add("ACf", segment, A, Cf, style="construction", optional=True, caption=("Join A to both extreme positions", "连接 A 与两极限位置"))
     sc.add("ACe", segment, A, Ce, style="construction", optional=True, caption=("", ""), visible=False)
     u = sc.add("u_len", length, A, Cf, visible=False, optional=True)
-    E = sc.add("Echoice", point_along, A, Ce, u, style="point", label="E", optional=True,
-               caption=("The arc about A through the folded position meets the other line at E", "以 A 为圆心、AC(折叠)为半径画弧交另一连线于 E"))
+    E = sc.add("Echoice", point_along, A, Ce, u, style="point", label="N", optional=True,
+               caption=("The arc about A through the folded position meets the other line at N", "以 A 为圆心、AC(折叠)为半径画弧交另一连线于 N"))
     M = sc.add("Mchoice", midpoint, E, Ce, style="point", label="M", optional=True,
-               caption=("Bisect E and the extended position at M: AB = EM, BC = AM", "平分得 M:AB = EM,BC = AM"))
+               caption=("Bisect N and the extended position at M: AB = NM, BC = AM", "平分得 M:AB = NM,BC = AM"))
     AB = sc.add("AB_draw", length, E, M, visible=False, optional=True)
     sc.add("AD_link", segment, A, Ref("D"), style="frame", optional=True, caption=("The frame AD", "机架 AD"))
     mAB = sc.add("mAB", _times, AB, -1.0, visible=False, optional=True)
@@ -441,13 +483,20 @@ def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
                caption=(f"Draw the designed linkage in extreme position {i}", f"画出所设计机构的极限位置 {i}"))
         sc.add(f"B{i}C{i}", segment, B, C, role=Role.RESULT, style=style, optional=True)
         sc.add(f"C{i}D_design", segment, C, Ref("D"), role=Role.RESULT, style=style, optional=True)
-    sc.add("mark_theta", marks.angle_mark, A, Cf, Ce, "θ", th, None, role=Role.ANNOTATION, style="angle", optional=True)
+    sc.add("mark_theta", theta_mark, A, Cf, Ce, th, role=Role.ANNOTATION, style="angle", optional=True)
+
+
+def theta_mark(A: Point, C1: Point, C2: Point, theta: float) -> marks.AngleMark | None:
+    """The θ arc at A between the two extreme positions (none when θ = 0: K = 1 has nothing to mark)."""
+    return marks.angle_mark(A, C1, C2, "θ", theta) if theta > 0 else None
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """Every valid design by trilateration (:func:`geomcon.analytic.design_by_k.rocker_design`), sorted by
     :func:`preference`."""
     family, closing = _form(g)
+    if family == "links":
+        return sorted(crank_rocker_links.analytic(g), key=preference)
     K, CD = g["K"], g["CD"]
     if family == "positions":
         c1, c2 = (p.tuple() for p in extreme_positions(g))
@@ -463,7 +512,11 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     else:
         sols = _frame_family_twin(g)
     keep = ("AB", "BC", "AD", "CD", "psi", "gamma_min", "theta", "K", "C1_folded", "A_near")
-    return sorted(({k: float(s[k]) for k in keep} for s in sols), key=preference)
+    out = sorted(({k: float(s[k]) for k in keep} for s in sols), key=preference)
+    if g.get("H_out") is not None:
+        for s in out:
+            s["DE"] = g["H_out"] / (2.0 * math.sin(math.radians(s["psi"]) / 2.0))
+    return out
 
 
 def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:

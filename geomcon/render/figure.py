@@ -155,19 +155,39 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
     ctx = Context(view, pts, _centre(view, pts))
     current = n if upto is not None else None
+    labels = merged_labels(steps, values, box)
     groups, pending = [], []
     for number, s in steps:
         value = values[s.key]
         kind = kind_of(value)
         style = resolve_style(s.style, s.role, kind)
         is_cur = number == current
-        drawn = draw(value, highlighted(style) if is_cur else style, ctx, s.label)
+        drawn = draw(value, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
         layer = "points" if kind == "point" else (style.layer if kind != "none" else "given")
         cls = f"step role-{s.role.value} style-{style.name if kind != 'none' else (s.style or 'none')}"
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
         pending.append((drawn, is_cur))
     _place_texts(view, groups, pending)
     return Figure(view, groups, values, n)
+
+
+def merged_labels(steps: list[tuple[int, Any]], values: dict[str, Any], box: Box) -> dict[str, str | None]:
+    """Labels of points drawn on top of a labelled candidate point (the textbook's choice among candidates):
+    the result carries both, ``"D (D1)"``, and the candidate none, so that two labels never fight for one
+    spot. Points coincide within 1e-9 of the drawing's size."""
+    eps = 1e-9 * max(box[2] - box[0], box[3] - box[1])
+    cands = [(s.key, s.label, values[s.key]) for _, s in steps
+             if s.style == "candidate" and s.label and isinstance(values[s.key], Point)]
+    out: dict[str, str | None] = {}
+    for _, s in steps:
+        p = values[s.key]
+        if s.style == "candidate" or not s.label or not isinstance(p, Point):
+            continue
+        same = [(k, lab) for k, lab, q in cands if abs(q - p) <= eps and k not in out]
+        if same:
+            out[s.key] = f"{s.label} ({same[0][1]})"
+            out[same[0][0]] = None
+    return out
 
 
 def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:

@@ -23,7 +23,15 @@ _SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max)\
 
 
 def label_runs(label: str) -> Runs:
-    """Runs of a point label: letters, then trailing digits as a subscript, then primes."""
+    """Runs of a point label: letters, then trailing digits as a subscript, then primes; ``"D (D1)"`` (a
+    result drawn on the candidate it was chosen from) as both labels.
+
+    >>> label_runs("D (D1)")
+    (('D', False), (' (', False), ('D', False), ('1', True), (')', False))
+    """
+    if label.endswith(")") and " (" in label:
+        head, tail = label[:-1].split(" (", 1)
+        return label_runs(head) + ((" (", False),) + label_runs(tail) + ((")", False),)
     m = _LABEL.match(label)
     if not m:
         return ((label, False),)

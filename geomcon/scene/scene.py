@@ -198,7 +198,7 @@ class Scene:
         try:
             args = _resolve(step.args, self._memo)
             kwargs = {n: _resolve(v, self._memo) for n, v in step.kwargs.items()}
-            if step.optional and (None in args or None in kwargs.values()):
+            if step.optional and _missing(step, args, kwargs):
                 return None
             out = step.op(*args, **kwargs)
             if step.branch is not None:
@@ -223,3 +223,11 @@ class Scene:
 
 def _constant(value: Any) -> Any:
     return value
+
+
+def _missing(step: Step, args: tuple, kwargs: dict) -> bool:
+    """True when a referenced value an optional step needs is None (a candidate that does not exist);
+    a literal None argument (e.g. "default radius") does not count."""
+    refs = [v for a, v in zip(step.args, args) if isinstance(a, Ref)]
+    refs += [kwargs[n] for n, a in step.kwargs.items() if isinstance(a, Ref)]
+    return any(v is None for v in refs)
