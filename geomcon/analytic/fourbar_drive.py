@@ -17,10 +17,25 @@ Examples
 1
 >>> assemble((0.0, 0.0), (90.0, 0.0), 50.0, 10.0, 10.0, 90.0, +1) is None     # BD = 103 > BC + CD
 True
+
+The **movable range** of the input: a position φ can be assembled when BD(φ) lies in [|BC − CD|, BC + CD];
+at either end of that interval BC and CD are collinear (a dead point of the input: the transmission angle
+is 0 and the branch may change). A motion of the input from φ1 through φ2 to φ3 passes no dead point when
+BD stays strictly inside the interval over the whole arc (:func:`arc_through`, :func:`bd_extremes`,
+:func:`dead_point_free`).
+
+>>> arc_through(10.0, 60.0, 100.0), arc_through(10.0, -30.0, -80.0), arc_through(10.0, 200.0, 100.0)
+((10.0, 90.0), (10.0, -90.0), (10.0, -270.0))
+>>> [round(v, 9) for v in bd_extremes((0.0, 0.0), (90.0, 0.0), 50.0, 10.0, 90.0)]
+[41.674095346, 110.285237448]
+>>> dead_point_free(41.1, 100.2, 70.0, 80.0), turns_fully(50.0, 70.0, 80.0, 90.0)
+(True, True)
 """
 from __future__ import annotations
 
 import math
+
+from ..tolerance import REL_TOL
 
 XY = tuple[float, float]
 
@@ -61,3 +76,50 @@ def branch_of(B: XY, C: XY, D: XY) -> int:
 def angle_of(P: XY, Q: XY) -> float:
     """Direction of P→Q in degrees, in (−180°, 180°]."""
     return math.degrees(math.atan2(Q[1] - P[1], Q[0] - P[0]))
+
+
+def arc_through(phi1: float, phi2: float, phi3: float) -> tuple[float, float]:
+    """The input's motion from ``phi1`` to ``phi3`` passing ``phi2``: ``(start, sweep)`` in degrees, the
+    sweep positive counter-clockwise, |sweep| < 360°."""
+    s2, s3 = (phi2 - phi1) % 360.0, (phi3 - phi1) % 360.0
+    return (phi1, s3) if s2 < s3 else (phi1, s3 - 360.0)
+
+
+def on_arc(phi: float, start: float, sweep: float) -> bool:
+    """True when direction ``phi`` (deg) lies on the arc from ``start`` turning through ``sweep``."""
+    t = (phi - start) % 360.0 if sweep >= 0 else (start - phi) % 360.0
+    return t <= abs(sweep)
+
+
+def bd_extremes(A: XY, D: XY, AB: float, start: float, sweep: float) -> tuple[float, float]:
+    """Smallest and largest distance BD while the crank AB turns over the arc ``(start, sweep)``.
+
+    BD² = AB² + AD² − 2·AB·AD·cos(φ − φ_D) is smallest at φ = φ_D (B on AD) and largest opposite; over an
+    arc the extremes are those two when they lie on it, else at its ends.
+    """
+    AD = math.hypot(D[0] - A[0], D[1] - A[1])
+    phid = angle_of(A, D)
+
+    def bd(phi: float) -> float:
+        # |AB − AD|² + 4·AB·AD·sin²((φ − φ_D)/2): no cancellation near φ_D
+        s = math.sin(math.radians(phi - phid) / 2.0)
+        return math.sqrt((AB - AD) ** 2 + 4.0 * AB * AD * s * s)
+
+    ends = [bd(start), bd(start + sweep)]
+    lo = abs(AD - AB) if on_arc(phid, start, sweep) else min(ends)
+    hi = AD + AB if on_arc(phid + 180.0, start, sweep) else max(ends)
+    return lo, hi
+
+
+def dead_point_free(bd_min: float, bd_max: float, BC: float, CD: float) -> bool:
+    """True when BD in [bd_min, bd_max] stays strictly inside (|BC − CD|, BC + CD): no dead point (BC and CD
+    collinear) on the way; touching an end within the tolerance counts as a dead point."""
+    t = REL_TOL * max(BC, CD, bd_max)
+    return bd_min > abs(BC - CD) + t and bd_max < BC + CD - t
+
+
+def turns_fully(AB: float, BC: float, CD: float, AD: float) -> bool:
+    """True when the crank AB can turn through 360° relative to the frame AD: BD over the whole turn,
+    [|AD − AB|, AD + AB], lies within [|BC − CD|, BC + CD] (touching counts: a change-point linkage)."""
+    t = REL_TOL * max(AB, BC, CD, AD)
+    return AD + AB <= BC + CD + t and abs(AD - AB) >= abs(BC - CD) - t

@@ -96,6 +96,12 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("theta-circle", stroke="#5f7f9f", width=0.25, layer="construction"),
     Style("link", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
     Style("link-alt", stroke="#1c4e80", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
+    Style("link-2", stroke="#3f6f9f", width=0.55, marker="hollow", radius=1.2, marker_width=0.5, layer="links"),
+    Style("link-3", stroke="#8aa7c4", width=0.5, marker="hollow", radius=1.15, marker_width=0.45, layer="links"),
+    # three positions of a synthesised linkage, in graded tones (position 1 darkest)
+    Style("pos1", stroke="#1a1a1a", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
+    Style("pos2", stroke="#4f6d8f", width=0.6, marker="hollow", radius=1.15, marker_width=0.5, layer="links"),
+    Style("pos3", stroke="#8fa6bf", width=0.55, marker="hollow", radius=1.1, marker_width=0.45, layer="links"),
     Style("ghost", stroke="#6f767e", width=0.3, dash=(2.0, 1.0), layer="construction"),
     Style("path", stroke="#6f767e", width=0.22, dash=(1.6, 1.0), layer="construction"),
     Style("admissible", stroke="#2f9e44", width=1.6, opacity=0.45, layer="construction"),

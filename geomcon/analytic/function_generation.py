@@ -1,0 +1,182 @@
+"""Function generation by Freudenstein's equation: the twin of ``four_bar.function_generation``.
+
+Conventions (those of the recipe): A at the origin, D = (d, 0) on +x; the crank AB = a makes the angle φ
+with the frame line A→D (counter-clockwise); the rocker carries a marked line DE whose direction makes the
+angle ψ with the same direction A→D, i.e. with AD extended beyond D (counter-clockwise; the interior angle
+∠ADE is 180° − ψ). The hinge C of the coupler on the rocker lies at CD = c in the direction ψ + β, where β is
+the (unknown) angle of DC from the marked line DE. BC = b.
+
+Freudenstein's equation for the direction χ = ψ + β of DC reads
+
+    K1·cos χ − K2·cos φ + K3 = cos(φ − χ),   K1 = d/a,  K2 = d/c,  K3 = (a² − b² + c² + d²)/(2ac)
+
+(expand |C − B|² = b² with B = a(cos φ, sin φ), C = (d + c cos χ, c sin χ) and divide by 2ac). The crank a
+is given, so K1 is known; multiplying by c/d and expanding χ = ψ + β leaves an equation that is linear in
+U = c·cos β, V = c·sin β and W = c·K3/d:
+
+    U·(cos ψ/a − cos(φ − ψ)/d) − V·(sin ψ/a + sin(φ − ψ)/d) + W = cos φ.
+
+Three pairs (φi, ψi) give a 3×3 linear system, solved here by Cramer's rule. Then c = √(U² + V²),
+β = atan2(V, U) and b² = a² + c² + d² − 2adW. When C lies on the marked line (β = 0) this is the textbook
+form with U = 1/K2 = c/d·d, V = 0, W = K3/K2.
+
+The code is complex-safe (``cmath``), so the sensitivity of C1 to each given is its complex-step
+derivative: exact to rounding, a route separate from the construction's first-order geometry.
+
+Examples
+--------
+>>> r = function_generation(60.0, 20.0, (30.0, 75.0, 120.0), (80.0, 95.0, 115.0))
+>>> [round(v, 6) for v in (*r["C1"], r["BC"], r["CD"], r["beta"])]
+[100.884517, 41.329152, 89.24382, 58.134693, -34.690131]
+>>> r["crank"], r["branch_ok"], r["order_ok"]
+(True, True, True)
+"""
+from __future__ import annotations
+
+import cmath
+import math
+from typing import Sequence
+
+from ..errors import NotAMechanism
+from .fourbar_drive import arc_through, bd_extremes, dead_point_free, turns_fully
+from .linkages import _tri_angle
+
+STEP = 1e-30
+"""Complex-step size: f'(x) = Im f(x + i·STEP) / STEP, free of cancellation."""
+
+REFUSE_FLAT = 1e-6
+"""Refuse when the three inverted points (the circle the hinge is the centre of) are this flat: height of
+the triangle over its longest side, relative to that side (the hinge would lie ≳ 2.5·10⁵ chords away)."""
+
+WARN_FLAT = 0.02
+"""Warn when the inverted triangle's relative height is below this (the hinge lies over about 12 chords
+away and moves far per 0.1° of drafting error; the sensitivity answers say how far)."""
+
+
+def solve3(M: Sequence[Sequence[complex]], r: Sequence[complex]) -> tuple[complex, complex, complex]:
+    """Solve the 3×3 system M·x = r by Cramer's rule (complex-safe).
+
+    The relative determinant |det M| / (|row1|·|row2|·|row3|) (Hadamard's bound) below 1e-14 is refused.
+
+    >>> [round(abs(v), 12) for v in solve3([[2, 0, 0], [0, 4, 0], [1, 0, 1]], [2, 8, 3])]
+    [1.0, 2.0, 2.0]
+    """
+    def det(m):
+        return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+
+    D = det(M)
+    bound = math.prod(math.sqrt(sum(abs(v) ** 2 for v in row)) for row in M)
+    if not abs(D) > 1e-14 * bound:
+        raise NotAMechanism(f"the 3×3 linear system is singular (relative determinant {abs(D) / bound:.3g})")
+    out = []
+    for j in range(3):
+        Mj = [[r[i] if k == j else M[i][k] for k in range(3)] for i in range(3)]
+        out.append(det(Mj) / D)
+    return out[0], out[1], out[2]
+
+
+def _hinge(d, a, phi, psi):
+    """(C1x, C1y, U, V, W) from the linear Freudenstein system; angles in radians; complex-safe."""
+    rows, rhs = [], []
+    for f, p in zip(phi, psi):
+        rows.append([cmath.cos(p) / a - cmath.cos(f - p) / d, -(cmath.sin(p) / a + cmath.sin(f - p) / d), 1.0])
+        rhs.append(cmath.cos(f))
+    U, V, W = solve3(rows, rhs)
+    c1, s1 = cmath.cos(psi[0]), cmath.sin(psi[0])
+    return d + U * c1 - V * s1, U * s1 + V * c1, U, V, W
+
+
+def flatness(P: Sequence[tuple[float, float]]) -> tuple[float, float]:
+    """(relative height, relative shortest side) of the triangle P: 2·area/L² and min side/L, L the
+    longest side (both 0 for coincident points).
+
+    >>> [round(v, 6) for v in flatness([(0, 0), (2, 0), (1, 1)])]
+    [0.5, 0.707107]
+    """
+    sides = [math.dist(P[i], P[(i + 1) % 3]) for i in range(3)]
+    L = max(sides)
+    if L == 0.0:
+        return 0.0, 0.0
+    area2 = abs((P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[1][1] - P[0][1]) * (P[2][0] - P[0][0]))
+    return area2 / (L * L), min(sides) / L
+
+
+def inverted_pins(AD: float, AB: float, phi: Sequence[float], psi: Sequence[float]) -> list[tuple[float, float]]:
+    """B1 and the crank pins of positions 2, 3 turned about D by ψ1 − ψi (the points the hinge C1 is the
+    centre of), for the flatness test of the givens.
+
+    >>> [tuple(round(v, 9) for v in p) for p in inverted_pins(10.0, 5.0, (0, 0, 0), (0, 90, 180))]
+    [(5.0, 0.0), (10.0, 5.0), (15.0, 0.0)]
+    """
+    out = []
+    for f, p in zip(phi, psi):
+        bx, by = AB * math.cos(math.radians(f)) - AD, AB * math.sin(math.radians(f))
+        t = math.radians(psi[0] - p)
+        out.append((AD + bx * math.cos(t) - by * math.sin(t), bx * math.sin(t) + by * math.cos(t)))
+    return out
+
+
+def check_inverted(P: Sequence[tuple[float, float]], what: str, names: str) -> list[str]:
+    """Refuse (NotAMechanism) or warn when the three inverted points are coincident or nearly collinear.
+
+    ``what`` names the sought hinge, ``names`` the three points (for the message).
+
+    >>> check_inverted([(0, 0), (1, 0), (2, 1e-9)], "C1", "B1, B2′, B3′")
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.NotAMechanism: the inverted points B1, B2′, B3′ are collinear (relative height 2.5e-10 < 1e-06): C1 would lie at infinity
+    """
+    h, short = flatness(P)
+    if short <= REFUSE_FLAT:
+        raise NotAMechanism(f"two of the inverted points {names} coincide (shortest side {short:.3g} of the longest "
+                            f"< {REFUSE_FLAT:g}): {what} is not determined")
+    if h <= REFUSE_FLAT:
+        raise NotAMechanism(f"the inverted points {names} are collinear (relative height {h:.3g} < {REFUSE_FLAT:g}): "
+                            f"{what} would lie at infinity")
+    if h < WARN_FLAT:
+        return [f"the inverted points {names} are nearly collinear (relative height {h:.3g} < {WARN_FLAT:g}): "
+                f"{what} lies far away and is sensitive to drafting errors"]
+    return []
+
+
+def _branch(B, C, D) -> int:
+    """+1 when C lies left of B→D (the fourbar_drive convention), −1 right, 0 on it."""
+    s = math.sin(math.atan2(C[1] - B[1], C[0] - B[0]) - math.atan2(D[1] - B[1], D[0] - B[0]))
+    return (s > 0) - (s < 0)
+
+
+def function_generation(AD: float, AB: float, phi: Sequence[float], psi: Sequence[float]) -> dict:
+    """Every answer of ``four_bar.function_generation`` by the linear Freudenstein system.
+
+    Angles in degrees as documented in the module; returns C1 (tuple), BC, CD, beta, gamma_min, grashof,
+    crank, branch_ok, order_ok, sens_C1 (mm per 0.1° of any one given angle) and sens_C1_mm (mm per 0.1 mm
+    of AD or AB).
+    """
+    d, a = AD, AB
+    rad = [math.radians(v) for v in (*phi, *psi)]
+    x, y, U, V, W = (z.real for z in _hinge(d, a, rad[:3], rad[3:]))
+    c = math.hypot(U, V)
+    b = math.sqrt(max(0.0, a * a + c * c + d * d - 2.0 * a * d * W))
+    beta = math.degrees(math.atan2(V, U))
+    ls = sorted((a, b, c, d))
+    branches = []
+    for f, p in zip(phi, psi):
+        B = (a * math.cos(math.radians(f)), a * math.sin(math.radians(f)))
+        C = (d + c * math.cos(math.radians(p + beta)), c * math.sin(math.radians(p + beta)))
+        branches.append(_branch(B, C, (d, 0.0)))
+    crank = turns_fully(a, b, c, d)
+    start, swept = (0.0, 360.0) if crank else arc_through(*phi)
+    lo, hi = bd_extremes((0.0, 0.0), (d, 0.0), a, start, swept)
+    free = dead_point_free(lo, hi, b, c)
+    gammas = [min(g, 180.0 - g) for g in (_tri_angle(b, c, lo), _tri_angle(b, c, hi))]
+    sens = []
+    for k in range(8):          # φ1..3, ψ1..3 (rad), AD, AB (mm)
+        gk = [complex(v) for v in (*rad, d, a)]
+        gk[k] += 1j * STEP
+        xk, yk = _hinge(gk[6], gk[7], gk[:3], gk[3:6])[:2]
+        sens.append(math.hypot(xk.imag, yk.imag) / STEP)
+    return {"C1": (x, y), "BC": b, "CD": c, "beta": beta, "gamma_min": min(gammas) if crank or free else 0.0,
+            "grashof": ls[0] + ls[3] <= ls[1] + ls[2], "crank": crank,
+            "branch_ok": len(set(branches)) == 1 and 0 not in branches, "order_ok": crank or free,
+            "sens_C1": max(sens[:6]) * math.radians(0.1), "sens_C1_mm": max(sens[6:]) * 0.1}
