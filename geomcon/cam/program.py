@@ -86,27 +86,33 @@ class Program:
         """The (first) return segment, if any."""
         return next((s for s in self.segments if s.kind == "return"), None)
 
-    def motion(self, h: float, delta) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def motion(self, h: float, delta, *, radians: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(s, ds/dδ, d²s/dδ²) at cam angles ``delta`` (deg, scalar or array, taken modulo 360°); s in the
-        unit of ``h``, derivatives per radian of cam angle."""
-        d = np.mod(np.asarray(delta, dtype=float), 360.0)
-        d = np.where((d == 0.0) & (np.asarray(delta, dtype=float) > 0.0), 360.0, d)
+        unit of ``h``, derivatives per radian of cam angle. With ``radians=True`` the angles are radians
+        (modulo 2π) and the segment ends are compared in radians, so that ``nextafter`` of an end in
+        radians stays in the segment it approaches (one-sided values for the profile machinery)."""
+        conv = math.radians if radians else float
+        turn = conv(360.0)
+        raw = np.asarray(delta, dtype=float)
+        d = np.mod(raw, turn)
+        d = np.where((d == 0.0) & (raw > 0.0), turn, d)
         s, v, a = np.zeros_like(d), np.zeros_like(d), np.zeros_like(d)
         level = 0.0                 # the follower's height at the start of each segment (0 or h)
         last = len(self.segments) - 1
         for i, seg in enumerate(self.segments):
-            inside = (d >= seg.start) & ((d < seg.end) | ((i == last) & (d <= seg.end)))
+            start, end = conv(seg.start), conv(seg.end)
+            inside = (d >= start) & ((d < end) | ((i == last) & (d <= end)))
             if seg.kind == "dwell":
                 s = np.where(inside, level, s)
                 continue
             span = math.radians(seg.angle)
-            f, f1, f2 = seg.law.derivatives(np.clip((d - seg.start) / seg.angle, 0.0, 1.0))
+            f, f1, f2 = seg.law.derivatives(np.clip((d - start) / conv(seg.angle), 0.0, 1.0))
             sign = 1.0 if seg.kind == "rise" else -1.0
             s = np.where(inside, level + sign * h * f, s)
             v = np.where(inside, sign * h * f1 / span, v)
             a = np.where(inside, sign * h * f2 / span ** 2, a)
             level += sign * h
-        return np.where(d > self.segments[-1].end, level, s), v, a
+        return np.where(d > conv(self.segments[-1].end), level, s), v, a
 
     def impacts(self, h: float) -> list[Impact]:
         """Every jump of velocity (rigid impact) or acceleration (soft impact) over the turn, including the

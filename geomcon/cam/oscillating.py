@@ -1,0 +1,385 @@
+"""Closed forms of an oscillating-follower disc cam (摆动从动件盘形凸轮) by the inversion method (反转法).
+
+Conventions (the textbook's analytic frame)
+-------------------------------------------
+The cam centre O is the origin; the arm's fixed pivot A0 lies on +y at distance ``a`` (centre distance); the
+arm A0B has length ``L``; B is the roller centre (the knife tip). Coordinates are those of the cam at δ = 0
+(the cam frame), the frame in which the profile is cut.
+
+- ``rotation``: the cam's sense, ``"ccw"`` (σ = +1) or ``"cw"`` (σ = −1). The inversion holds the cam still
+  and turns the frame by −σδ about O, so the pivot's inverted position is A0′(δ) = R(−σδ)·A0.
+- ``arm``: the side of the line A0→O on which the roller lies, as drawn with A0 above O: ``"left"`` or
+  ``"right"``. The arm makes the angle φ = ψ0 + ψ(δ) with the line A0′O and swings away from O during the
+  rise: clockwise (τ = −1) for a left arm, counter-clockwise (τ = +1) for a right arm.
+- ε = σ·τ = +1 when the arm swings, during the rise, in the same sense as the cam turns ("same"), −1 when
+  opposite. A ccw cam with a left arm (ε = −1) is the textbook's formula
+  x = a sin δ − L sin(δ + ψ0 + ψ), y = a cos δ − L cos(δ + ψ0 + ψ).
+
+With θA = 90° − σδ (polar angle of A0′) and e(θ) = (cos θ, sin θ), the pitch curve is
+
+    B(δ) = a·e(θA) − L·e(θA + τφ),     cos ψ0 = (a² + L² − r0²)/(2aL).
+
+Pressure angle: the roller's velocity is perpendicular to the arm; the contact normal is perpendicular to
+the pitch curve's tangent, so α is the acute angle between B′(δ) and the arm. Resolving B′ along and across
+the arm,
+
+    tan α = |L(1 − εψ′) − a cos φ| / (a sin φ),        ψ′ = dψ/dδ (rad/rad),
+
+the same as the relative instant centre P of cam and arm on the line OA0′ at A0′P = a/(1 − εψ′) gives.
+Since L − a cos φ = r·cos β (r = OB, β = ∠OBA0′), the textbook's rule follows: when ∠OBA0′ is acute, a rise
+that swings the arm in the same sense as the cam turns (ε = +1) lowers the rise pressure angle, and the
+opposite sense raises it; when ∠OBA0′ is obtuse it is the other way round. So the sense matters.
+
+Radius of curvature ρ of the pitch curve: positive where the curve is convex (outward), negative on concave
+parts; the roller undercuts where 0 < ρ ≤ rr.
+
+Examples
+--------
+>>> from geomcon.cam.program import parse_program
+>>> prog = parse_program([{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60},
+...                       {"kind": "return", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60}])
+>>> cam = OscillatingCam(a=150.0, L=132.0, r0=50.0, h=20.0, program=prog)
+>>> round(math.degrees(cam.psi0), 4), cam.eps
+(19.0822, -1)
+>>> x, y = cam.pitch(0.0)
+>>> round(float(math.hypot(x, y)), 12)                # B0 lies on the base circle
+50.0
+>>> round(float(cam.pressure_angle(60.0)), 4)
+25.942
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from .profile import PitchCurve
+from .program import Program, Segment
+
+GRID = 240
+"""Grid points per smooth piece of a segment for bracketing the extrema of α and of the curvature."""
+
+
+@dataclass(frozen=True)
+class Motion:
+    """ψ, ψ′, ψ″ in radians (per radian of cam angle) at the cam angles ``delta`` (radians)."""
+
+    delta: np.ndarray
+    psi: np.ndarray
+    d1: np.ndarray
+    d2: np.ndarray
+
+
+def segment_motion(seg: Segment, level: float, h: float, x) -> Motion:
+    """The motion on one segment at fractions ``x`` (0 … 1, both ends included, one-sided values there).
+
+    ``level`` is ψ (deg) at the segment's start, ``h`` the stroke (deg).
+
+    Examples
+    --------
+    >>> from geomcon.cam.program import Segment
+    >>> from geomcon.cam.laws import law
+    >>> m = segment_motion(Segment("rise", 0.0, 10.0, law("parabolic")), 0.0, 20.0, [0.5, 1.0])
+    >>> [round(math.degrees(v), 9) for v in m.psi], round(float(m.d1[0]), 12)
+    ([10.0, 20.0], 4.0)
+    """
+    xa = np.asarray(x, dtype=float)
+    delta = math.radians(seg.start) + math.radians(seg.angle) * xa
+    if seg.kind == "dwell":
+        zero = np.zeros_like(xa)
+        return Motion(delta, np.full_like(xa, math.radians(level)), zero, zero)
+    f, f1, f2 = seg.law.derivatives(xa)
+    sign = 1.0 if seg.kind == "rise" else -1.0
+    span, hr = math.radians(seg.angle), math.radians(h)
+    return Motion(delta, math.radians(level) + sign * hr * f, sign * hr * f1 / span, sign * hr * f2 / span ** 2)
+
+
+def levels(program: Program, h: float) -> list[float]:
+    """ψ (deg) at the start of each segment of ``program``."""
+    out, level = [], 0.0
+    for seg in program.segments:
+        out.append(level)
+        level += {"rise": h, "return": -h}.get(seg.kind, 0.0)
+    return out
+
+
+def pieces(seg: Segment) -> tuple[tuple[float, float], ...]:
+    """The smooth pieces (fractions) of a segment: the parabolic law's acceleration jumps at ½."""
+    if seg.law is not None and seg.law.name == "parabolic":
+        return ((0.0, 0.5), (0.5, 1.0))
+    return ((0.0, 1.0),)
+
+
+def piece_grid(x0: float, x1: float, n: int = GRID) -> np.ndarray:
+    """``n`` fractions from x0 to just below x1 (so the law's left piece owns the right end)."""
+    x = np.linspace(x0, x1, n)
+    x[-1] = np.nextafter(x1, x0)
+    return x
+
+
+def psi0_rad(a: float, L: float, r0: float) -> float:
+    """The arm's initial angle ψ0 (rad) with the line A0O, from cos ψ0 = (a² + L² − r0²)/(2aL), in the
+    half-angle form (accurate for slim triangles); ``nan`` when the triangle a, L, r0 does not close.
+
+    Examples
+    --------
+    >>> round(math.degrees(psi0_rad(150.0, 132.0, 50.0)), 4), round(math.degrees(psi0_rad(150.0, 123.0, 50.0)), 4)
+    (19.0822, 17.8232)
+    """
+    p, q = (r0 - a + L) * (r0 + a - L), (a + L + r0) * (a + L - r0)
+    if p < 0 or q <= 0:
+        return math.nan
+    return 2.0 * math.atan2(math.sqrt(p), math.sqrt(q))
+
+
+@dataclass(frozen=True)
+class OscillatingCam:
+    """An oscillating-follower disc cam: geometry plus motion program (see the module docstring).
+
+    Parameters
+    ----------
+    a, L, r0 : float
+        Centre distance OA0, arm length A0B and base-circle radius of the pitch curve (mm).
+    h : float
+        Angular stroke ψmax (deg).
+    program : Program
+        The motion program (a full turn).
+    rotation : str
+        ``"ccw"`` or ``"cw"``.
+    arm : str
+        ``"left"`` or ``"right"`` of the line A0→O.
+    """
+
+    a: float
+    L: float
+    r0: float
+    h: float
+    program: Program
+    rotation: str = "ccw"
+    arm: str = "left"
+
+    @property
+    def sigma(self) -> int:
+        """+1 for a ccw cam, −1 for cw."""
+        return 1 if self.rotation == "ccw" else -1
+
+    @property
+    def tau(self) -> int:
+        """The arm's rise sense: −1 (cw) for a left arm, +1 (ccw) for a right arm."""
+        return -1 if self.arm == "left" else 1
+
+    @property
+    def eps(self) -> int:
+        """+1 when the arm swings in the cam's sense during the rise, −1 when opposite."""
+        return self.sigma * self.tau
+
+    @property
+    def psi0(self) -> float:
+        """Initial arm angle ψ0 (rad)."""
+        return psi0_rad(self.a, self.L, self.r0)
+
+    # ------------------------------------------------------------------ motion and pitch curve
+    def motion(self, delta) -> Motion:
+        """ψ, ψ′, ψ″ (rad) at cam angles ``delta`` (deg), from the program (half-open segments)."""
+        d = np.asarray(delta, dtype=float)
+        s, v, acc = self.program.motion(self.h, d)
+        return Motion(np.radians(d), np.radians(s), np.radians(v), np.radians(acc))
+
+    def breaks(self) -> tuple[float, ...]:
+        """Cam angles (rad) where ψ′ or ψ″ may jump: segment ends and the parabolic law's midpoints."""
+        out = []
+        for seg in self.program.segments:
+            out += [math.radians(seg.start + seg.angle * x0) for x0, _ in pieces(seg)]
+        return tuple(sorted(set(out) - {0.0}))
+
+    def motion_rad(self, delta) -> Motion:
+        """The motion at cam angles ``delta`` in radians, segment ends compared in radians (so that
+        ``nextafter`` of a break, :meth:`breaks`, falls in the piece before it)."""
+        d = np.asarray(delta, dtype=float)
+        s, v, acc = self.program.motion(self.h, d, radians=True)
+        return Motion(d, np.radians(s), np.radians(v), np.radians(acc))
+
+    def pitch_of(self, m: Motion) -> tuple[np.ndarray, ...]:
+        """(x, y, x′, y′, x″, y″) of the pitch curve for a motion ``m`` (derivatives per radian of δ)."""
+        sg, tu = self.sigma, self.tau
+        ta = math.pi / 2 - sg * m.delta
+        t2 = ta + tu * (self.psi0 + m.psi)
+        w2 = -sg + tu * m.d1                                  # dθ2/dδ
+        ca, sa, c2, s2 = np.cos(ta), np.sin(ta), np.cos(t2), np.sin(t2)
+        x, y = self.a * ca - self.L * c2, self.a * sa - self.L * s2
+        dx = -sg * self.a * -sa - self.L * w2 * -s2
+        dy = -sg * self.a * ca - self.L * w2 * c2
+        ddx = -self.a * ca - self.L * tu * m.d2 * -s2 + self.L * w2 ** 2 * c2
+        ddy = -self.a * sa - self.L * tu * m.d2 * c2 + self.L * w2 ** 2 * s2
+        return x, y, dx, dy, ddx, ddy
+
+    def pitch(self, delta) -> tuple[np.ndarray, np.ndarray]:
+        """The pitch point B(δ) (cam frame) at cam angles ``delta`` (deg)."""
+        return self.pitch_of(self.motion(delta))[:2]
+
+    def pivot(self, delta) -> tuple[np.ndarray, np.ndarray]:
+        """The pivot's inverted position A0′(δ) = R(−σδ)·A0."""
+        ta = math.pi / 2 - self.sigma * np.radians(np.asarray(delta, dtype=float))
+        return self.a * np.cos(ta), self.a * np.sin(ta)
+
+    # ------------------------------------------------------------------ pressure angle
+    def tan_pressure_parts(self, m: Motion) -> tuple[np.ndarray, ...]:
+        """(N, D, N′, D′) with tan α = |N|/D: N = L(1 − εψ′) − a cos φ, D = a sin φ (derivatives per rad)."""
+        phi = self.psi0 + m.psi
+        c, s = np.cos(phi), np.sin(phi)
+        n = self.L * (1.0 - self.eps * m.d1) - self.a * c
+        return n, self.a * s, -self.eps * self.L * m.d2 + self.a * s * m.d1, self.a * c * m.d1
+
+    def pressure_of(self, m: Motion) -> np.ndarray:
+        """Pressure angle α (deg, 0 … 90) for a motion ``m``."""
+        n, d, _, _ = self.tan_pressure_parts(m)
+        return np.degrees(np.arctan2(np.abs(n), d))
+
+    def pressure_angle(self, delta) -> np.ndarray:
+        """Pressure angle α (deg) at cam angles ``delta`` (deg)."""
+        return self.pressure_of(self.motion(delta))
+
+    def pressure_arg(self, m: Motion) -> np.ndarray:
+        """α (deg) by a separate route (the twin's): the acute angle between the pitch curve's tangent
+        B′ = w·u (u = c′ − iσc, see :meth:`convex_curvature_complex`) and the arm B − A0′ = −L·w·e^(iτφ)."""
+        e = np.exp(1j * self.tau * (self.psi0 + m.psi))
+        u = -1j * self.tau * self.L * m.d1 * e - 1j * self.sigma * (self.a - self.L * e)
+        t = np.abs(np.angle(-u / e))                        # angle between tangent and arm, 0 … π
+        return np.degrees(np.minimum(t, np.pi - t))
+
+    def pressure_arg_slope(self, m: Motion) -> np.ndarray:
+        """d/dδ of the angle between tangent and arm by the same route: Im(B″/B′) − Im(q′/q), q the arm
+        vector (q′/q = i(τψ′ − σ)); α is stationary where it vanishes."""
+        e = np.exp(1j * self.tau * (self.psi0 + m.psi))
+        c = self.a - self.L * e
+        c1 = -1j * self.tau * self.L * m.d1 * e
+        c2 = -1j * self.tau * self.L * m.d2 * e + self.L * m.d1 ** 2 * e
+        u, v = c1 - 1j * self.sigma * c, c2 - 2j * self.sigma * c1 - c
+        return np.imag(v / u) - (self.tau * m.d1 - self.sigma)
+
+    def worst_pressure(self, kind: str, *, route: str = "tan") -> tuple[float, float]:
+        """(α_max, δ where it occurs) over the ``kind`` ("rise" or "return") segment, both in degrees.
+
+        Candidates are the ends of each smooth piece (one-sided values) and the interior stationary points,
+        the roots of dα/dδ located by bisection on its exact sign: sign(N)(N′D − ND′) with tan α = |N|/D
+        (``route = "tan"``), or :meth:`pressure_arg_slope` with α from :meth:`pressure_arg`
+        (``route = "arg"``, the analytic twin's). Ties go to the smaller cam angle.
+        """
+        k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
+        seg, level = self.program.segments[k], levels(self.program, self.h)[k]
+        alpha = self.pressure_of if route == "tan" else self.pressure_arg
+
+        def slope(x):
+            m = segment_motion(seg, level, self.h, x)
+            if route == "tan":
+                n, d, n1, d1 = self.tan_pressure_parts(m)
+                return np.sign(n) * (n1 * d - n * d1)
+            return self.pressure_arg_slope(m)
+
+        best = (-1.0, 0.0)
+        for x0, x1 in pieces(seg):
+            m = segment_motion(seg, level, self.h, _roots(slope, x0, x1) + [x0, x1])
+            for a, delta in zip(alpha(m), np.degrees(m.delta)):
+                if a > best[0] + 1e-13 or (abs(a - best[0]) <= 1e-13 and delta < best[1]):
+                    best = (float(a), float(delta))
+        return best
+
+    # ------------------------------------------------------------------ curvature
+    def convex_curvature_of(self, m: Motion) -> np.ndarray:
+        """1/ρ of the pitch curve (1/mm): positive where it is convex outward."""
+        _, _, dx, dy, ddx, ddy = self.pitch_of(m)
+        return -self.sigma * (dx * ddy - dy * ddx) / np.hypot(dx, dy) ** 3
+
+    def convex_curvature_complex(self, m: Motion) -> np.ndarray:
+        """The same 1/ρ by a separate route (the analytic twin's): B = w·c with w = e^(iθA) and
+        c = a − L·e^(iτφ) in the frame that turns with A0′, so B′ = w(c′ − iσc), B″ = w(c″ − 2iσc′ − c) and
+        κ = Im(conj(B′)·B″)/|B′|³ (the rotation w drops out)."""
+        e = np.exp(1j * self.tau * (self.psi0 + m.psi))
+        c = self.a - self.L * e
+        c1 = -1j * self.tau * self.L * m.d1 * e
+        c2 = -1j * self.tau * self.L * m.d2 * e + self.L * m.d1 ** 2 * e
+        u, v = c1 - 1j * self.sigma * c, c2 - 2j * self.sigma * c1 - c
+        return -self.sigma * np.imag(np.conj(u) * v) / np.abs(u) ** 3
+
+    def pitch_curve(self) -> PitchCurve:
+        """The pitch curve as a :class:`~geomcon.cam.profile.PitchCurve` (parameter δ in radians)."""
+        return PitchCurve(lambda d: self.pitch_of(self.motion_rad(d)), self.breaks())
+
+    def rho(self, delta) -> np.ndarray:
+        """Signed radius of curvature ρ of the pitch curve (mm) at ``delta`` (deg); ±inf where straight."""
+        with np.errstate(divide="ignore"):
+            return 1.0 / self.convex_curvature_of(self.motion(delta))
+
+    def rho_min(self, curvature: Callable[[Motion], np.ndarray] | None = None) -> tuple[float, float]:
+        """(ρmin, δ) of the pitch curve over its convex parts: the largest positive curvature, found on a grid
+        of each smooth piece and refined by golden-section search; ``inf`` when nowhere convex.
+
+        ``curvature`` (default :meth:`convex_curvature_of`) lets an independent formula use the same search.
+        """
+        kappa = curvature or self.convex_curvature_of
+        best = (-math.inf, 0.0)
+        for seg, level in zip(self.program.segments, levels(self.program, self.h)):
+            for x0, x1 in pieces(seg):
+                def f(x, seg=seg, level=level):
+                    return kappa(segment_motion(seg, level, self.h, x))
+                xs = (x0, x1) if seg.kind == "dwell" else _golden_maxima(f, x0, x1)
+                for x in xs:
+                    val = float(f(np.asarray([x]))[0])
+                    if val > best[0]:
+                        best = (val, seg.start + seg.angle * float(x))
+        return (1.0 / best[0], best[1]) if best[0] > 0 else (math.inf, best[1])
+
+    # ------------------------------------------------------------------ roller
+    def roller_contact(self, delta, rr: float) -> tuple[np.ndarray, np.ndarray]:
+        """The actual (working) profile point of a roller of radius ``rr`` at ``delta`` (deg): the pitch point
+        moved by rr along the inward normal (the inner envelope of the roller circles)."""
+        x, y, dx, dy, _, _ = self.pitch_of(self.motion(delta))
+        n = np.hypot(dx, dy)
+        ox, oy = -self.sigma * dy / n, self.sigma * dx / n      # outward unit normal
+        return x - rr * ox, y - rr * oy
+
+
+def _roots(fn: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
+    """Interior points of [x0, x1) where ``fn`` changes sign, refined by bisection to the last bit."""
+    xs = piece_grid(x0, x1, n)
+    g = fn(xs)
+    out = []
+    for i in np.nonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]:
+        lo, hi = float(xs[i]), float(xs[i + 1])
+        s_lo = np.sign(g[i])
+        while True:
+            mid = 0.5 * (lo + hi)
+            if mid <= lo or mid >= hi:
+                break
+            if np.sign(fn(np.asarray([mid]))[0]) == s_lo:
+                lo = mid
+            else:
+                hi = mid
+        out.append(lo)
+    return out
+
+
+def _golden_maxima(f: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
+    """The ends of [x0, x1) and every grid maximum of ``f`` refined by golden-section search."""
+    xs = piece_grid(x0, x1, n)
+    v = f(xs)
+    out = [float(xs[0]), float(xs[-1])]
+    inv = (math.sqrt(5.0) - 1.0) / 2.0
+    for i in range(1, n - 1):
+        if v[i] > v[i - 1] and v[i] >= v[i + 1]:
+            lo, hi = float(xs[i - 1]), float(xs[i + 1])
+            c, d = hi - inv * (hi - lo), lo + inv * (hi - lo)
+            fc, fd = f(np.asarray([c]))[0], f(np.asarray([d]))[0]
+            while hi - lo > 1e-12 * max(1.0, abs(hi)):
+                if fc >= fd:
+                    hi, d, fd = d, c, fc
+                    c = hi - inv * (hi - lo)
+                    fc = f(np.asarray([c]))[0]
+                else:
+                    lo, c, fc = c, d, fd
+                    d = lo + inv * (hi - lo)
+                    fd = f(np.asarray([d]))[0]
+            out.append(0.5 * (lo + hi))
+    return out

@@ -1,0 +1,584 @@
+"""Cam profiles from a pitch curve given parametrically by the cam angle: curvature, ρmin, the roller
+profile (inner offset), the flat-faced profile (envelope of lines), loop trimming and validation.
+
+Generic over the follower: a translating or an oscillating follower only supplies the curve.
+
+Conventions
+-----------
+- Everything is drawn in the cam's frame (the inversion, 反转法): the cam centre O is the origin and
+  stands still, the follower is turned about O by −δ.
+- The parameter is the cam angle δ in **radians** (0 … 2π for a full turn); derivatives are per radian.
+- A **pitch curve** is a function ``fn(delta) -> (x, y, x′, y′, x″, y″)`` of a float array, with exact
+  derivatives, plus the ``breaks`` (radians, in (0, 2π)) where a derivative may jump (segment ends of
+  the motion program). Each piece [a, b) between breaks is smooth; one-sided values at b are taken at
+  ``nextafter(b, a)``.
+- Signed curvature κ is positive where the curve turns counter-clockwise; ``orientation`` σ = ±1 is the
+  sense in which the curve goes round O, and σκ > 0 on the **convex** parts. ρ = 1/(σκ): positive on
+  convex parts, negative on concave ones.
+
+Examples
+--------
+A circle of radius 40 about O traversed clockwise (the pitch curve of a dwell, cam turning CCW):
+
+>>> def circle40(d):
+...     c, s = np.cos(d), np.sin(d)
+...     return 40 * s, 40 * c, 40 * c, -40 * s, -40 * s, -40 * c
+>>> pc = PitchCurve(circle40)
+>>> pc.orientation, round(rho_min(pc).value, 12)
+(-1, 40.0)
+>>> prof = roller_profile(pc, 10.0)
+>>> prof.undercut, prof.trimmed, round(float(np.hypot(*prof.xy.T).max()), 9)
+(False, False, 30.0)
+>>> len(prof.delta) == sample_count(pc, 10.0, 1e-3)
+True
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+import numpy as np
+import shapely
+from shapely.geometry import LinearRing, LineString, Point as SPoint, Polygon
+
+from ..errors import NotAMechanism
+
+Curve6 = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
+CurveFn = Callable[[np.ndarray], Curve6]
+
+TWO_PI = 2.0 * math.pi
+TOLERANCE = 1e-3
+"""Default profile tolerance (mm): the largest distance between the sampled profile and the exact one."""
+STRICT_TOLERANCE = 1e-5
+"""Strict-mode profile tolerance (mm)."""
+MAX_SAMPLES = 2_000_000
+_DENSE = 1440               # samples per turn for locating extrema before refining
+_GOLD = (math.sqrt(5.0) - 1.0) / 2.0
+
+
+def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequence[np.ndarray],
+             ddq: Sequence[np.ndarray]) -> Curve6:
+    """A point fixed to the follower's frame, ``q(δ)``, seen from the cam: P = R(∓δ)·q (inversion).
+
+    Parameters
+    ----------
+    delta : array
+        Cam angles (radians).
+    rotation : {"ccw", "cw"}
+        The cam's sense of rotation; the follower is turned the other way, by −δ for "ccw".
+    q, dq, ddq : pairs of arrays
+        The point in the frame of the follower and its first and second derivatives by δ.
+
+    Returns
+    -------
+    (x, y, x′, y′, x″, y″) : arrays
+        P and its exact derivatives: P′ = R(q′ + kJq), P″ = R(q″ + 2kJq′ − q), k = ∓1, J the +90° turn.
+
+    Examples
+    --------
+    >>> d = np.array([math.pi / 2])
+    >>> [round(float(v[0]), 12) for v in inverted(d, "ccw", (0.0 * d, 30.0 + 0 * d), (0 * d, 0 * d), (0 * d, 0 * d))]
+    [30.0, 0.0, 0.0, -30.0, -30.0, -0.0]
+    """
+    k = -1.0 if rotation == "ccw" else 1.0
+    c, s = np.cos(k * delta), np.sin(k * delta)
+    (qx, qy), (dx, dy), (ex, ey) = q, dq, ddq
+    vx, vy = dx - k * qy, dy + k * qx                          # q′ + kJq
+    ax, ay = ex - 2.0 * k * dy - qx, ey + 2.0 * k * dx - qy    # q″ + 2kJq′ − q
+    return (c * qx - s * qy, s * qx + c * qy, c * vx - s * vy, s * vx + c * vy, c * ax - s * ay, s * ax + c * ay)
+
+
+@dataclass(frozen=True)
+class PitchCurve:
+    """A closed curve traced once as δ goes from 0 to 2π (see the module docstring)."""
+
+    fn: CurveFn
+    breaks: tuple[float, ...] = ()
+
+    def pieces(self) -> list[tuple[float, float]]:
+        """The smooth pieces [a, b] of the turn, in order."""
+        cuts = [0.0] + sorted(b for b in self.breaks if 0.0 < b < TWO_PI) + [TWO_PI]
+        return [(a, b) for a, b in zip(cuts, cuts[1:]) if b > a]
+
+    def eval(self, delta) -> Curve6:
+        """(x, y, x′, y′, x″, y″) at ``delta`` (radians)."""
+        return tuple(np.asarray(v, dtype=float) for v in self.fn(np.asarray(delta, dtype=float)))
+
+    def piece_samples(self, a: float, b: float, n: int) -> np.ndarray:
+        """``n + 1`` cam angles from a to b; the last is ``nextafter(b, a)`` so that derivatives there are
+        the piece's own (one-sided)."""
+        d = np.linspace(a, b, n + 1)
+        d[-1] = np.nextafter(b, a)
+        return d
+
+    @property
+    def orientation(self) -> int:
+        """+1 when the curve goes counter-clockwise round O, −1 clockwise (sign of its area)."""
+        d = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
+        x, y = self.eval(d)[:2]
+        return 1 if float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)) > 0.0 else -1
+
+
+def curvature(c6: Curve6) -> np.ndarray:
+    """Signed curvature κ = (x′y″ − y′x″)/|P′|³ (counter-clockwise positive) of sampled derivatives."""
+    _, _, dx, dy, ex, ey = c6
+    return (dx * ey - dy * ex) / np.hypot(dx, dy) ** 3
+
+
+@dataclass(frozen=True)
+class Extremum:
+    """An extreme ``value`` reached at cam angle ``delta`` (radians)."""
+
+    value: float
+    delta: float
+
+    @property
+    def delta_deg(self) -> float:
+        """The cam angle in degrees."""
+        return math.degrees(self.delta)
+
+
+def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float, float]],
+             dense: int = _DENSE, xtol: float = 1e-11, slope: Callable[[np.ndarray], np.ndarray] | None = None) -> Extremum:
+    """The maximum of a function smooth on each piece: dense samples, then golden-section search about
+    the best sample of each piece to ``xtol`` radians (the value is then right to ~xtol² relative). Values
+    alone place an interior maximum only to ~1e-8 rad; with ``slope`` (a function with the sign of g′) the
+    place is then polished by bisection on the slope's sign change.
+
+    Examples
+    --------
+    >>> m = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, 2.0), (2.0, TWO_PI)])
+    >>> abs(m.delta - math.pi / 4) < 1e-7, abs(m.value - math.sin(math.pi / 4) * math.exp(-math.pi / 4)) < 1e-15
+    (True, True)
+    >>> m = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, TWO_PI)], slope=lambda d: np.cos(d) - np.sin(d))
+    >>> abs(m.delta - math.pi / 4) < 1e-15
+    True
+    """
+    best: Extremum | None = None
+    total = sum(b - a for a, b in pieces)
+    for a, b in pieces:
+        n = max(16, int(math.ceil(dense * (b - a) / total)))
+        d = np.linspace(a, b, n + 1)
+        d[-1] = np.nextafter(b, a)
+        v = np.asarray(g(d), dtype=float)
+        i = int(np.nanargmax(v))
+        lo, hi = float(d[max(i - 1, 0)]), float(d[min(i + 1, n)])
+        top = Extremum(float(v[i]), float(d[i]))
+        if hi > lo:
+            top = max(top, _golden(g, lo, hi, xtol), key=lambda e: e.value)
+            if slope is not None and lo < top.delta < hi:
+                top = _polish(g, slope, lo, hi, top)
+        if best is None or top.value > best.value:
+            best = top
+    assert best is not None
+    return best
+
+
+def _golden(g, lo: float, hi: float, xtol: float) -> Extremum:
+    x1, x2 = hi - _GOLD * (hi - lo), lo + _GOLD * (hi - lo)
+    f1, f2 = (float(t) for t in g(np.array([x1, x2])))
+    while hi - lo > xtol:
+        if f1 >= f2:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - _GOLD * (hi - lo)
+            f1 = float(g(np.array([x1]))[0])
+        else:
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + _GOLD * (hi - lo)
+            f2 = float(g(np.array([x2]))[0])
+    return Extremum(f1, float(x1)) if f1 >= f2 else Extremum(f2, float(x2))
+
+
+def _polish(g, slope, lo: float, hi: float, top: Extremum) -> Extremum:
+    """Bisection on the slope's sign from + (at lo) to − (at hi) about ``top``."""
+    w = 1e-6
+    a, b = max(lo, top.delta - w), min(hi, top.delta + w)
+    sa, sb = (float(t) for t in slope(np.array([a, b])))
+    if not (sa > 0.0 >= sb):
+        return top
+    while True:
+        m = 0.5 * (a + b)
+        if not a < m < b:
+            break
+        if float(slope(np.array([m]))[0]) > 0.0:
+            a = m
+        else:
+            b = m
+    val = float(g(np.array([a]))[0])
+    return Extremum(max(val, top.value), a) if val >= top.value - 1e-14 * abs(top.value) else top
+
+
+def pressure_angle(c6: Curve6, ux: np.ndarray, uy: np.ndarray) -> np.ndarray:
+    """Pressure angle (radians, 0 … π/2) between the curve's normal at the contact and the follower's
+    velocity direction (ux, uy): atan2(|T·u|, |T×u|), T the tangent.
+
+    Examples
+    --------
+    >>> one, zero = np.ones(1), np.zeros(1)
+    >>> c6 = (zero, zero, one, one, zero, zero)            # tangent at 45°
+    >>> round(float(np.degrees(pressure_angle(c6, zero, one))[0]), 12)
+    45.0
+    """
+    _, _, dx, dy = c6[:4]
+    return np.arctan2(np.abs(dx * ux + dy * uy), np.abs(dx * uy - dy * ux))
+
+
+def pressure_angle_slope(c6: Curve6, ux: np.ndarray, uy: np.ndarray, omega: np.ndarray | float) -> np.ndarray:
+    """dα/dδ of :func:`pressure_angle` when the direction u turns at ``omega`` rad per rad of cam angle:
+    (κ|P′| − ω)·sign((T·u)(T×u))."""
+    _, _, dx, dy = c6[:4]
+    return (curvature(c6) * np.hypot(dx, dy) - omega) * np.sign((dx * ux + dy * uy) * (dx * uy - dy * ux))
+
+
+def rho_min(curve: PitchCurve) -> Extremum:
+    """The smallest radius of curvature of the convex parts of ``curve`` (inf if none), and where.
+
+    Examples
+    --------
+    >>> def ellipse(d):
+    ...     return 50 * np.cos(d), 30 * np.sin(d), -50 * np.sin(d), 30 * np.cos(d), -50 * np.cos(d), -30 * np.sin(d)
+    >>> round(rho_min(PitchCurve(ellipse)).value, 12)     # b²/a
+    18.0
+    """
+    sigma = curve.orientation
+    top = maximise(lambda d: sigma * curvature(curve.eval(d)), curve.pieces())
+    return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+
+
+def rho_min_concave(curve: PitchCurve) -> Extremum:
+    """The smallest |ρ| on the concave parts of ``curve`` (inf if it has none), and where."""
+    sigma = curve.orientation
+    top = maximise(lambda d: -sigma * curvature(curve.eval(d)), curve.pieces())
+    return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+
+
+@dataclass(frozen=True)
+class Corner:
+    """A corner of the pitch curve at a break (a velocity jump of the follower): ``turn`` is the jump of the
+    tangent direction (radians), positive when it turns the convex way (the roller then cannot follow it
+    exactly)."""
+
+    delta: float
+    turn: float
+
+
+def corners(curve: PitchCurve, *, rel: float = 1e-12) -> tuple[Corner, ...]:
+    """The corners of the curve: breaks where the tangent direction jumps by more than ``rel`` radians."""
+    sigma, out = curve.orientation, []
+    for b in [0.0] + sorted(curve.breaks):
+        before = curve.eval(np.array([np.nextafter(b if b > 0.0 else TWO_PI, 0.0)]))
+        after = curve.eval(np.array([b]))
+        t0, t1 = (before[2][0], before[3][0]), (after[2][0], after[3][0])
+        turn = math.atan2(t0[0] * t1[1] - t0[1] * t1[0], t0[0] * t1[0] + t0[1] * t1[1])
+        if abs(turn) > rel:
+            out.append(Corner(b, sigma * turn))
+    return tuple(out)
+
+
+def sample_count(curve: PitchCurve, rr: float = 0.0, tolerance: float = TOLERANCE) -> int:
+    """The number of profile samples over a turn so that every chord of the roller profile (offset ``rr``)
+    is within ``tolerance`` of the exact curve.
+
+    A chord c on radius ρ deviates by c²/8ρ. With samples Δδ apart, c ≈ |P_a′|Δδ and ρ = ρ_a, the offset
+    curve's radius of curvature; |P_a′|²/ρ_a = |P′|²·|κ|·|1 − rr·σκ|, so
+    Δδ = √(8·tolerance / max(|P′|²·|κ|·|1 − rr·σκ|)) — set by the sharpest bend (ρmin), not fixed.
+    """
+    return sum(len(d) for d in _angles(curve.pieces(), _sample_step(curve, rr, tolerance)))
+
+
+def _sample_step(curve: PitchCurve, rr: float, tolerance: float) -> float:
+    sigma = curve.orientation
+
+    def bend(d):
+        c6 = curve.eval(d)
+        k = curvature(c6)
+        return (c6[2] ** 2 + c6[3] ** 2) * np.abs(k) * np.abs(1.0 - rr * sigma * k)
+
+    return _step(maximise(bend, curve.pieces()).value, tolerance)
+
+
+def _step(bend: float, tolerance: float) -> float:
+    """Largest sample spacing (radians) keeping the chord error ≤ tolerance where |P′|²/ρ ≤ ``bend``."""
+    if not tolerance > 0.0:
+        raise NotAMechanism(f"tolerance must be > 0 mm, got {tolerance!r}")
+    return math.sqrt(8.0 * tolerance / bend) if bend > 0.0 else math.inf
+
+
+def _angles(pieces, step: float) -> list[np.ndarray]:
+    """The sample angles of each piece, at most ``step`` apart, both ends included (the right end
+    one-sided)."""
+    out = []
+    for a, b in pieces:
+        n = max(2, int(math.ceil((b - a) / step)))
+        d = np.linspace(a, b, n + 1)
+        d[-1] = np.nextafter(b, a)
+        out.append(d)
+    n = sum(len(d) for d in out)
+    if n > MAX_SAMPLES:
+        raise NotAMechanism(f"the profile tolerance needs {n} samples (> {MAX_SAMPLES}); use a larger tolerance")
+    return out
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A sampled cam profile.
+
+    Attributes
+    ----------
+    xy : (N, 2) array
+        The profile as a closed ring (last point not repeated), in δ order, loops trimmed.
+    delta : (N,) array
+        The cam angle (radians) of each point (of the pitch point whose roller or face touches there).
+    raw : (M, 2) array
+        The offset before trimming (with the roller arcs filling the gaps at corners).
+    trimmed : bool
+        True when loops (undercut, corners) had to be cut away.
+    undercut : bool
+        True when the follower cannot be reproduced: rr ≥ ρmin on a convex part (roller) or the envelope
+        is not convex (flat face).
+    tolerance : float
+        The chord tolerance (mm) the sampling honours.
+    """
+
+    xy: np.ndarray
+    delta: np.ndarray
+    raw: np.ndarray
+    trimmed: bool
+    undercut: bool
+    tolerance: float
+    info: dict = field(default_factory=dict)
+
+    def ring(self) -> LinearRing:
+        """The profile as a shapely ring."""
+        return LinearRing(self.xy)
+
+    def csv(self) -> str:
+        """``x,y,delta`` lines (mm, mm, degrees) with a header: the profile for manufacture."""
+        rows = ["x_mm,y_mm,delta_deg"]
+        rows += [f"{x:.9f},{y:.9f},{math.degrees(d):.9f}" for (x, y), d in zip(self.xy, self.delta)]
+        return "\n".join(rows) + "\n"
+
+
+def _arc(center, r, a0: float, a1: float, chord: float) -> np.ndarray:
+    """Points strictly inside the shorter arc from polar angle a0 to a1 about ``center``."""
+    if r == 0.0:
+        return np.empty((0, 2))
+    sweep = math.remainder(a1 - a0, TWO_PI)
+    n = max(1, int(math.ceil(abs(sweep) * r / chord)))
+    t = a0 + sweep * np.arange(1, n) / n
+    return np.column_stack([center[0] + r * np.cos(t), center[1] + r * np.sin(t)])
+
+
+def roller_profile(curve: PitchCurve, rr: float, tolerance: float = TOLERANCE) -> Profile:
+    """The actual profile of a roller of radius ``rr``: the pitch curve offset by rr along the exact unit
+    normal towards the cam centre (the inner envelope of the roller circles), sampled per
+    :func:`sample_count`; at a corner of the pitch curve the gap is bridged by the roller's arc, and loops
+    (undercut, convex corners) are trimmed with shapely. ``rr = 0`` gives the pitch curve itself (a knife
+    edge's profile).
+
+    Examples
+    --------
+    >>> def ellipse(d):
+    ...     return 50 * np.cos(d), 30 * np.sin(d), -50 * np.sin(d), 30 * np.cos(d), -50 * np.cos(d), -30 * np.sin(d)
+    >>> p = roller_profile(PitchCurve(ellipse), 20.0)     # ρmin = 18 < rr: loops at the ends of the long axis
+    >>> p.undercut, p.trimmed, p.ring().is_simple
+    (True, True, True)
+    """
+    if not rr >= 0.0:
+        raise NotAMechanism(f"roller radius rr must be ≥ 0 mm, got {rr!r}")
+    sigma, pieces = curve.orientation, curve.pieces()
+    angles = _angles(pieces, _sample_step(curve, rr, tolerance))
+    count = sum(len(d) for d in angles)
+    chord = math.sqrt(8.0 * tolerance * max(rr, tolerance))
+    xs, ds = [], []
+    for d in angles:
+        x, y, dx, dy = curve.eval(d)[:4]
+        speed = np.hypot(dx, dy)
+        nx, ny = -sigma * dy / speed, sigma * dx / speed       # unit normal towards the inside
+        pts = np.column_stack([x + rr * nx, y + rr * ny])
+        if xs:                                                  # bridge the corner with the roller's arc
+            c = (x[0], y[0])
+            prev = xs[-1][-1]
+            a0, a1 = math.atan2(prev[1] - c[1], prev[0] - c[0]), math.atan2(pts[0, 1] - c[1], pts[0, 0] - c[0])
+            arc = _arc(c, rr, a0, a1, chord)
+            xs.append(arc)
+            ds.append(np.full(len(arc), d[0]))
+        xs.append(pts)
+        ds.append(d)
+    first, last = xs[0][0], xs[-1][-1]
+    c = curve.eval(np.array([0.0]))
+    arc = _arc((c[0][0], c[1][0]), rr, math.atan2(last[1] - c[1][0], last[0] - c[0][0]),
+               math.atan2(first[1] - c[1][0], first[0] - c[0][0]), chord)
+    xs.append(arc)
+    ds.append(np.full(len(arc), TWO_PI))
+    raw, delta = np.vstack(xs), np.concatenate(ds)
+    rmin = rho_min(curve)
+    undercut = rr >= rmin.value
+    xy, dl, trimmed = trim_loops(raw, delta)
+    return Profile(xy, dl, raw, trimmed, undercut, tolerance,
+                   {"rho_min_pitch": rmin, "samples": count, "corners": corners(curve)})
+
+
+def trim_loops(raw: np.ndarray, delta: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
+    """Cut the loops of a self-intersecting closed polyline: node it with shapely, polygonize the pieces and
+    keep the boundary of the largest face (the cam body; loops are the small faces cut off).
+
+    Returns the ring's points (δ order, last not repeated), the cam angle of each (from the nearest place
+    on the raw polyline) and whether anything was cut.
+    """
+    keep = np.ones(len(raw), dtype=bool)
+    keep[1:] = np.any(np.diff(raw, axis=0) != 0.0, axis=1)
+    raw, delta = raw[keep], delta[keep]
+    if LinearRing(raw).is_simple:
+        return raw, delta, False
+    faces = list(shapely.polygonize([shapely.unary_union(LineString(np.vstack([raw, raw[:1]])))]).geoms)
+    body = max(faces, key=lambda f: f.area)
+    pts = np.asarray(body.exterior.coords)[:-1]
+    index = {tuple(p): i for i, p in enumerate(raw.tolist())}
+    idx = np.array([index.get(tuple(p), -1) for p in pts.tolist()], dtype=float)
+    known = idx >= 0
+    if known.sum() < 3:
+        raise NotAMechanism("the cam profile collapses: its loops leave no body (roller far too large)")
+    pos = np.arange(len(pts), dtype=float)
+    # the cut points (crossings) get the place of their neighbours on the ring
+    idx = np.interp(pos, pos[known], idx[known], period=len(pts))
+    if np.median(np.diff(idx[known])) < 0:
+        pts, idx = pts[::-1], idx[::-1]
+    start = int(np.argmin(idx))
+    pts, idx = np.roll(pts, -start, axis=0), np.roll(idx, -start)
+    return pts, np.interp(idx, np.arange(len(raw)), delta), True
+
+
+def validate_roller(profile: Profile, curve: PitchCurve, rr: float, *, count: int = 720) -> dict:
+    """Check a roller profile: the ring is simple, and every roller circle (centres sampled on the pitch
+    curve) touches it: distance centre–profile = rr within the tolerance (interference would be less;
+    a roller that lifts off at an undercut or a convex corner more).
+
+    Returns ``{"simple", "max_interference", "max_lift", "lift_at"}`` (mm, and the cam angles in radians of
+    the centres that lift off by more than the tolerance).
+    """
+    d = np.linspace(0.0, TWO_PI, count, endpoint=False)
+    x, y = curve.eval(d)[:2]
+    ring = profile.ring()
+    dist = shapely.distance(shapely.points(np.column_stack([x, y])), ring)
+    lift = dist - rr
+    return {"simple": bool(ring.is_simple), "max_interference": float(max(0.0, -lift.min())),
+            "max_lift": float(max(0.0, lift.max())), "lift_at": d[lift > profile.tolerance]}
+
+
+# ------------------------------------------------------------------ flat faces: envelopes of lines
+LineFn = Callable[[np.ndarray], tuple[np.ndarray, ...]]
+
+
+@dataclass(frozen=True)
+class LineFamily:
+    """A one-parameter family of lines X·n(δ) = p(δ), n = (cos φ, sin φ) pointing away from the cam body:
+    ``fn(delta) -> (φ, φ′, φ″, p, p′, p″)`` (radians, derivatives by δ), with ``breaks`` as for
+    :class:`PitchCurve`. The face of a flat-faced follower in its inverted positions is such a family."""
+
+    fn: LineFn
+    breaks: tuple[float, ...] = ()
+
+    def pieces(self) -> list[tuple[float, float]]:
+        """The smooth pieces of the turn."""
+        return PitchCurve(lambda d: d, self.breaks).pieces()
+
+    def eval(self, delta) -> tuple[np.ndarray, ...]:
+        """(φ, φ′, φ″, p, p′, p″) at ``delta`` (radians)."""
+        return tuple(np.asarray(v, dtype=float) for v in self.fn(np.asarray(delta, dtype=float)))
+
+
+def envelope(fam: LineFamily, delta) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Contact points of the envelope of the lines, where each line touches it.
+
+    With t = dn/dφ = (−sin φ, cos φ) and ' = d/dδ: X = p·n + λ·t, λ = p′/φ′ (the contact's place along the
+    line from the foot of the perpendicular from O), and the envelope's radius of curvature
+    ρ = p + d²p/dφ² = p + (p″φ′ − p′φ″)/φ′³ (> 0 where the profile is convex).
+
+    Returns (x, y, λ, ρ).
+
+    Examples
+    --------
+    Circle of radius 30 as the envelope of its tangents:
+
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, 0 * d, 0 * d))
+    >>> [round(float(v[0]), 12) for v in envelope(fam, np.array([0.0]))]
+    [30.0, 0.0, 0.0, 30.0]
+    """
+    phi, dphi, ddphi, p, dp, ddp = fam.eval(delta)
+    lam = dp / dphi
+    rho = p + (ddp * dphi - dp * ddphi) / dphi ** 3
+    c, s = np.cos(phi), np.sin(phi)
+    return p * c - lam * s, p * s + lam * c, lam, rho
+
+
+def envelope_rho_min(fam: LineFamily) -> Extremum:
+    """The smallest radius of curvature ρ of the envelope over the turn (≤ 0: not convex), and where."""
+    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces())
+    return Extremum(-low.value, low.delta)
+
+
+def flat_profile(fam: LineFamily, tolerance: float = TOLERANCE) -> Profile:
+    """The profile cut by a flat face: the envelope of the family, sampled so that every chord is within
+    ``tolerance`` (|X′|²/ρ = |ρ|·φ′²), loops of a non-convex envelope (ρ < 0 somewhere: the face cannot
+    follow the motion) trimmed. ``info`` holds ``rho_min`` (an :class:`Extremum` of ρ), ``lam_min`` and
+    ``lam_max`` (the contact's extreme places along the face, Extremum each).
+
+    Examples
+    --------
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, 0 * d, 0 * d))
+    >>> p = flat_profile(fam)
+    >>> p.undercut, round(p.info["rho_min"].value, 12)
+    (False, 30.0)
+    """
+    pieces = fam.pieces()
+    rmin = envelope_rho_min(fam)
+    bend = maximise(lambda d: np.abs(envelope(fam, d)[3]) * fam.eval(d)[1] ** 2, pieces).value
+    angles = np.concatenate(_angles(pieces, _step(bend, tolerance)))
+    count = len(angles)
+    x, y = envelope(fam, angles)[:2]
+    raw = np.column_stack([x, y])
+    xy, dl, trimmed = trim_loops(raw, angles)
+    hi = maximise(lambda d: envelope(fam, d)[2], pieces)
+    lo = maximise(lambda d: -envelope(fam, d)[2], pieces)
+    back = backward_jumps(fam)
+    return Profile(xy, dl, raw, trimmed, rmin.value <= 0.0 or bool(back), tolerance,
+                   {"rho_min": rmin, "lam_max": hi, "lam_min": Extremum(-lo.value, lo.delta), "samples": count,
+                    "backward_jumps": back})
+
+
+def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
+    """Breaks where the contact jumps back along the face (a velocity drop of the follower, e.g. the end
+    of a uniform rise): the envelope then has a loop there, and the face cannot reproduce the motion.
+    Each as an :class:`Extremum` (the jump, mm, and the cam angle)."""
+    out = []
+    for b in [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]:
+        before = envelope(fam, np.array([np.nextafter(b if b > 0.0 else TWO_PI, 0.0)]))[2][0]
+        after, dphi = envelope(fam, np.array([b]))[2][0], fam.eval(np.array([b]))[1][0]
+        jump = (after - before) * math.copysign(1.0, dphi)
+        if jump < -1e-12 * max(1.0, abs(before), abs(after)):
+            out.append(Extremum(float(jump), b))
+    return tuple(out)
+
+
+def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> float:
+    """The largest deviation (mm) of a closed roller profile from the exact envelope, measured without the
+    envelope itself: every point of the exact inner envelope lies at distance rr from the pitch curve, so
+    the error of a vertex or edge midpoint is |distance to the pitch curve − rr| (``pitch_dense``: exact
+    pitch points, much denser than the profile; rr = 0 measures a knife edge's profile).
+    """
+    mid = 0.5 * (profile_xy + np.roll(profile_xy, -1, axis=0))
+    pts = shapely.points(np.vstack([profile_xy, mid]))
+    ends = np.stack([pitch_dense, np.roll(pitch_dense, -1, axis=0)], axis=1)
+    pieces = shapely.linestrings(ends)                  # one short segment each: the nearest is found by a tree
+    tree = shapely.STRtree(pieces)
+    which, _ = tree.query_nearest(pts, return_distance=True, all_matches=False)
+    dist = shapely.distance(pts[which[0]], pieces[which[1]])
+    return float(np.abs(dist - rr).max())
+
+
+__all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise",
+           "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "corners", "sample_count",
+           "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
+           "chord_error", "TOLERANCE", "STRICT_TOLERANCE"]

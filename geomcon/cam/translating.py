@@ -1,0 +1,202 @@
+"""Closed forms of the disc cam with a translating follower: the analytic twin of ``cam.translating``.
+
+Frame: the cam centre O at the origin, the follower's axis vertical, moving up, at x = e (e > 0: right of O)
+in the drawing of the starting position; the follower starts (δ = 0) at the bottom of its stroke, on the
+base circle r0 of the pitch curve, at height s0 = √(r0² − e²). k = +1 for a cam turning counter-clockwise,
+−1 clockwise. With S = s0 + s and E = s′ − k·e (′ = d/dδ, per radian):
+
+- pitch point (inversion, the follower turned by −kδ): ccw (S sin δ + e cos δ, S cos δ − e sin δ),
+  cw (−S sin δ + e cos δ, S cos δ + e sin δ);
+- pressure angle tan α = |E| / S (so an offset on the side k·e > 0 lowers the rise's α: 逆转右偏, 顺转左偏);
+- radius of curvature of the pitch curve ρ = (S² + E²)^{3/2} / (S² + E(E + s′) − S·s″), > 0 where convex;
+- flat face (perpendicular to the axis, r0 = base circle of the profile): contact at k·s′ from O's line,
+  k·s′ − e from the axis; profile radius of curvature r0 + s + s″ (convex when > 0 everywhere).
+
+This module imports nothing from the geometry, the scene or the profile machinery; maxima are located by
+bisection on the sign of their exact derivative, ρmin by successive parabolic interpolation.
+
+Examples
+--------
+>>> from geomcon.cam.program import parse_program
+>>> prog = parse_program([{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60},
+...                       {"kind": "return", "angle": 90, "law": "uniform"}, {"kind": "dwell", "angle": 90}])
+>>> cam = TranslatingCam(prog, h=16.0, r0=30.0, e=0.0)
+>>> [round(float(v), 9) for v in cam.pitch(0.0)]
+[0.0, 30.0]
+>>> round(float(cam.alpha(60.0)), 6)                  # tan α = s′/(s0 + s) = 12/38
+17.525568
+>>> [round(v, 6) for v in cam.alpha_max("rise") + cam.alpha_max("return")]
+[17.901969, 51.897868, 18.753919, 270.0]
+>>> round(cam.rho_min_pitch(), 9), round(cam.flat_rho_min(), 9), cam.face_extent()
+(28.714034069, 28.0, (10.185916357881302, 12.0))
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from ..errors import NotAMechanism
+from .program import Program
+
+_DENSE = 4096
+
+
+@dataclass(frozen=True)
+class TranslatingCam:
+    """A disc cam with a translating follower (see the module docstring for the conventions)."""
+
+    program: Program
+    h: float
+    r0: float
+    e: float = 0.0
+    rotation: str = "ccw"
+
+    @property
+    def k(self) -> float:
+        """+1 for a counter-clockwise cam, −1 for a clockwise one."""
+        return 1.0 if self.rotation == "ccw" else -1.0
+
+    @property
+    def s0(self) -> float:
+        """Height of the follower's lowest position above O: √(r0² − e²)."""
+        if abs(self.e) >= self.r0:
+            raise NotAMechanism(f"offset |e| = {abs(self.e):g} must be smaller than r0 = {self.r0:g}")
+        return math.sqrt((self.r0 - self.e) * (self.r0 + self.e))
+
+    def motion(self, delta_deg) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(s, s′, s″) at cam angles in degrees."""
+        return self.program.motion(self.h, delta_deg)
+
+    def pitch(self, delta_deg) -> tuple[np.ndarray, np.ndarray]:
+        """The pitch point (roller centre, knife tip) in the cam's frame."""
+        d = np.radians(delta_deg)
+        S = self.s0 + self.motion(delta_deg)[0]
+        c, s = np.cos(d), np.sin(d)
+        return self.k * S * s + self.e * c, S * c - self.k * self.e * s
+
+    def alpha(self, delta_deg) -> np.ndarray:
+        """Pressure angle (degrees) of a knife or roller follower at cam angles ``delta_deg``."""
+        s, v, _ = self.motion(delta_deg)
+        return np.degrees(np.arctan2(np.abs(v - self.k * self.e), self.s0 + s))
+
+    def _rad(self, d):
+        return self.program.motion(self.h, d, radians=True)
+
+    def alpha_max(self, kind: str) -> tuple[float, float]:
+        """(α_max, δ where it occurs) in degrees over the rise or the return (knife or roller)."""
+        seg = self.program.rise if kind == "rise" else self.program.ret
+        if seg is None:
+            return 0.0, 0.0
+
+        def g(d):
+            s, v, _ = self._rad(d)
+            return np.abs(v - self.k * self.e) / (self.s0 + s)
+
+        def dg(d):                    # sign of d/dδ (|E|/S) = sign(E)(s″S − E s′)/S²
+            s, v, a = self._rad(d)
+            E = v - self.k * self.e
+            return np.sign(E) * (a * (self.s0 + s) - E * v)
+
+        best, at = _max_by_root(g, dg, math.radians(seg.start), math.radians(seg.end))
+        return math.degrees(math.atan(best)), math.degrees(at)
+
+    def pitch_curvature(self, d_rad) -> np.ndarray:
+        """1/ρ of the pitch curve at cam angles in radians, positive where convex."""
+        s, v, a = self._rad(d_rad)
+        S, E = self.s0 + s, v - self.k * self.e
+        return (S * S + E * (E + v) - S * a) / (S * S + E * E) ** 1.5
+
+    def rho_min_pitch(self) -> float:
+        """Smallest radius of curvature of the convex parts of the pitch curve."""
+        top = max(_max_by_parabola(self.pitch_curvature, a, b) for a, b in self._pieces())
+        return 1.0 / top if top > 0 else math.inf
+
+    def flat_rho(self, d_rad) -> np.ndarray:
+        """r0 + s + s″: radius of curvature of a flat-faced follower's profile (r0 its base circle)."""
+        s, _, a = self._rad(d_rad)
+        return self.r0 + s + a
+
+    def flat_rho_min(self) -> float:
+        """min (r0 + s + s″) over the turn."""
+        return -max(_max_by_parabola(lambda d: -self.flat_rho(d), a, b) for a, b in self._pieces())
+
+    def face_extent(self) -> tuple[float, float]:
+        """(left, right): how far the flat face's contact goes left and right of the follower's axis (mm),
+        max(e − k·s′) and max(k·s′ − e), each at least 0."""
+        d = np.concatenate([_grid(a, b) for a, b in self._pieces()])
+        v = self._rad(d)[1]
+        # s′ is extreme where s″ = 0 or at segment ends: refine by bisection on s″
+        ext = [float(x) for x in v]
+        for a, b in self._pieces():
+            for sign in (1.0, -1.0):
+                best, _ = _max_by_root(lambda x: sign * self._rad(x)[1], lambda x: sign * self._rad(x)[2], a, b)
+                ext.append(sign * best)
+        rel = [self.k * x - self.e for x in ext]
+        return max(0.0, -min(rel)), max(0.0, max(rel))
+
+    def _pieces(self) -> list[tuple[float, float]]:
+        """Smooth pieces (radians): the segments, parabolic ones cut in half (s″ jumps there)."""
+        out = []
+        for seg in self.program.segments:
+            cut = seg.law is not None and seg.law.name == "parabolic"
+            ends = [seg.start, seg.start + seg.angle / 2, seg.end] if cut else [seg.start, seg.end]
+            out += [(math.radians(a), math.radians(b)) for a, b in zip(ends, ends[1:])]
+        return out
+
+
+def _grid(a: float, b: float, n: int = _DENSE // 4) -> np.ndarray:
+    d = np.linspace(a, b, n + 1)
+    d[-1] = np.nextafter(b, a)
+    return d
+
+
+def _max_by_root(g: Callable, dg: Callable, a: float, b: float) -> tuple[float, float]:
+    """Max of g on [a, b) (right end one-sided): the ends and every place where dg changes sign from + to −,
+    found by bisection to the last bit."""
+    d = _grid(a, b)
+    slope = dg(d)
+    cands = [d[0], d[-1]]
+    for i in np.nonzero((slope[:-1] > 0) & (slope[1:] <= 0))[0]:
+        lo, hi = float(d[i]), float(d[i + 1])
+        while True:
+            mid = 0.5 * (lo + hi)
+            if mid <= lo or mid >= hi:
+                break
+            if float(dg(np.array([mid]))[0]) > 0:
+                lo = mid
+            else:
+                hi = mid
+        cands.append(lo)
+    vals = g(np.array(cands, dtype=float))
+    i = int(np.argmax(vals))
+    return float(vals[i]), float(cands[i])
+
+
+def _max_by_parabola(g: Callable, a: float, b: float) -> float:
+    """Max of g on [a, b): dense samples, then successive parabolic interpolation about the best one."""
+    d = _grid(a, b)
+    v = g(d)
+    i = int(np.argmax(v))
+    best = float(v[i])
+    if not 0 < i < len(d) - 1:
+        return best
+    (x0, x1, x2), (y0, y1, y2) = (float(t) for t in d[i - 1:i + 2]), (float(t) for t in v[i - 1:i + 2])
+    for _ in range(100):
+        den = (x1 - x0) * (y1 - y2) - (x1 - x2) * (y1 - y0)
+        if den == 0.0 or x2 - x0 < 1e-14:
+            break
+        t = x1 - 0.5 * ((x1 - x0) ** 2 * (y1 - y2) - (x1 - x2) ** 2 * (y1 - y0)) / den
+        if not x0 < t < x2 or t == x1:
+            break
+        yt = float(g(np.array([t]))[0])
+        if yt >= y1:        # t becomes the middle point
+            (x0, y0, x2, y2) = (x1, y1, x2, y2) if t > x1 else (x0, y0, x1, y1)
+            x1, y1 = t, yt
+        elif t > x1:
+            x2, y2 = t, yt
+        else:
+            x0, y0 = t, yt
+    return max(best, y1)

@@ -1,0 +1,234 @@
+"""Step operations and drawing helpers shared by the cam recipes (inversion method, 反转法).
+
+Conventions: the cam centre O at the origin, the cam held still and the follower turned about O by −δ
+(``inv = −1`` for a cam turning counter-clockwise, +1 clockwise: every inverted point is ``rotate(p, O,
+inv·δ)``). Cam angles in degrees in the givens and the steps' captions, radians inside the profile
+machinery (:mod:`geomcon.cam.profile`).
+
+A cam recipe names the step holding its manufactured profile ``"profile"`` (a
+:class:`~geomcon.cam.profile.Profile`): ``geomcon solve --profile-csv`` writes it.
+
+Examples
+--------
+>>> from geomcon.cam.program import parse_program
+>>> prog = parse_program([{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60},
+...                       {"kind": "return", "angle": 90, "law": "uniform"}, {"kind": "dwell", "angle": 90}])
+>>> division_angles(prog)
+(15.0, 30.0, 45.0, 60.0, 75.0, 90.0, 105.0, 120.0, 180.0, 195.0, 210.0, 225.0, 240.0, 255.0, 270.0)
+>>> inversion_sign("ccw"), inversion_sign("cw")
+(-1.0, 1.0)
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from ..cam.profile import Extremum, PitchCurve, Profile, TOLERANCE, STRICT_TOLERANCE
+from ..cam.program import Program
+from ..errors import NotAMechanism, ProblemError
+from ..geometry import Point, Polyline, Segment, circle, rotate, segment
+from ..scene import Ref, Role, Scene
+from ..scene import marks
+from .base import Quantity
+from .common import add_pivot
+
+PROFILE_KEY = "profile"
+"""The step key of a cam recipe's manufactured profile (a :class:`~geomcon.cam.profile.Profile`)."""
+DRAW_POINTS = 1500
+"""Largest number of points of a curve as drawn (the profile itself keeps all its samples)."""
+
+ROTATION = Quantity("rotation", "choice", "sense of rotation of the cam", required=False, default="ccw",
+                    minimum=None, choices=("ccw", "cw"))
+PROGRAM = Quantity("program", "table[]", "motion program: [{kind = rise|dwell|return, angle = deg, law = …}, …] "
+                   "over 360°", minimum=None)
+AT = Quantity("at", "deg[]", "cam angles at which to report s and α", required=False, default=(), minimum=None,
+              inclusive=True)
+TOL = Quantity("tolerance", "mm", "largest chord error of the sampled profile", required=False, default=TOLERANCE)
+STRICT = Quantity("strict", "bool", f"strict profile tolerance ({STRICT_TOLERANCE:g} mm)", required=False,
+                  default=False, minimum=None)
+
+
+def profile_csv(scene: Scene, recipe: str) -> str:
+    """The CSV text of a scene's manufactured profile (``x_mm,y_mm,delta_deg``); a scene without one raises
+    :class:`~geomcon.errors.ProblemError`."""
+    if PROFILE_KEY not in scene:
+        raise ProblemError(f"recipe {recipe} has no cam profile to export (--profile-csv is for cam recipes)")
+    return scene.value(PROFILE_KEY).csv()
+
+
+def profile_tolerance(g) -> float:
+    """The profile tolerance the givens ask for: ``strict`` wins over ``tolerance``."""
+    return STRICT_TOLERANCE if g.get("strict") else float(g.get("tolerance", TOLERANCE) or TOLERANCE)
+
+
+def inversion_sign(rotation: str) -> float:
+    """−1 for a cam turning counter-clockwise (the follower is turned clockwise, by −δ), +1 for cw."""
+    return -1.0 if rotation == "ccw" else 1.0
+
+
+def division_angles(program: Program, max_step: float = 15.0) -> tuple[float, ...]:
+    """The textbook's equal divisions: each rise and return cut into equal parts of at most ``max_step``
+    degrees, dwells only at their ends; the cam angles (deg) of the division points after δ = 0, up to the
+    start of the last dwell (or 360°)."""
+    out: list[float] = []
+    for seg in program.segments:
+        n = 1 if seg.kind == "dwell" else max(1, int(math.ceil(seg.angle / max_step - 1e-9)))
+        out += [seg.start + seg.angle * i / n for i in range(1, n + 1)]
+    return tuple(round(d, 9) for d in out if d < 360.0 - 1e-9)
+
+
+def require_full(program: Program) -> None:
+    """Refuse a program that does not fill the turn (a cam needs all 360°)."""
+    if not program.full:
+        end = program.segments[-1].end
+        raise NotAMechanism(f"program: the segment angles add up to {end:g}°; a cam profile needs 360° "
+                            f"(add a dwell of {360.0 - end:g}°)")
+
+
+def program_breaks(program: Program) -> tuple[float, ...]:
+    """Where the follower's motion has a jump of s′ or s″, in radians (the breaks of the pitch curve): the
+    segment boundaries and the middle of every parabolic segment (its acceleration changes sign there)."""
+    cuts = [s.start for s in program.segments[1:]]
+    cuts += [s.start + s.angle / 2 for s in program.segments if s.law is not None and s.law.name == "parabolic"]
+    return tuple(sorted(math.radians(c) for c in cuts))
+
+
+# ---------------------------------------------------------------------------------------------- step operations
+def turned(p: Point, O: Point, inv: float, delta_deg: float) -> Point:
+    """``p`` turned about O by inv·δ: a point of the follower in its inverted position."""
+    return rotate(p, O, inv * math.radians(delta_deg))
+
+
+def pitch_polyline(curve: PitchCurve, n: int = 720) -> Polyline:
+    """The pitch curve drawn through ``n`` exact points."""
+    d = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    x, y = curve.eval(d)[:2]
+    return Polyline(tuple(Point(a, b) for a, b in zip(x, y)), closed=True)
+
+
+def profile_polyline(profile: Profile) -> Polyline:
+    """The profile as drawn (at most :data:`DRAW_POINTS` of its points)."""
+    step = max(1, len(profile.xy) // DRAW_POINTS)
+    return Polyline(tuple(Point(x, y) for x, y in profile.xy[::step]), closed=True)
+
+
+def extremum_value(e: Extremum) -> float:
+    """The value of an extremum (a measurement step)."""
+    return e.value
+
+
+def extremum_deg(e: Extremum) -> float:
+    """The place of an extremum, in degrees of cam angle."""
+    return e.delta_deg
+
+
+def minus(a: float, b: float) -> float:
+    """a − b."""
+    return a - b
+
+
+def at_least(a: float, b: float) -> bool:
+    """a ≥ b."""
+    return a >= b
+
+
+def positive(a: float) -> bool:
+    """a > 0."""
+    return a > 0.0
+
+
+def lifted_tuple(fn: Callable[..., float], *args: Any) -> tuple[float, ...]:
+    """``fn`` evaluated at each member of the last argument (a tuple): a list answer."""
+    *fixed, xs = args
+    return tuple(float(fn(*fixed, x)) for x in xs)
+
+
+def pressure_mark(P: Point, normal: Point, velocity: Point, value: float, size: float) -> marks.AngleMark:
+    """The pressure-angle mark at the contact P between the common normal and the follower's velocity
+    (the normal's sense chosen so that the marked angle is the acute α)."""
+    n = normal.unit()
+    if n.dot(velocity) < 0.0:
+        n = -n
+    return marks.AngleMark(P, P + n * size, P + velocity.unit() * size, "α", value, None)
+
+
+def normal_segment(P: Point, normal: Point, size: float) -> Segment:
+    """The common normal through P, ``size`` either side."""
+    n = normal.unit() * size
+    return Segment(P - n, P + n)
+
+
+# ---------------------------------------------------------------------------------------------- drawing helpers
+def add_cam_centre(sc: Scene) -> Ref:
+    """The cam centre O (a fixed pivot at the origin)."""
+    return add_pivot(sc, "O", Point(0.0, 0.0), ("Cam centre O", "凸轮回转中心 O"))
+
+
+def add_base_circle(sc: Scene, O: Ref, r0: float, what: tuple[str, str] = ("pitch curve", "理论廓线")) -> Ref:
+    """The base circle r0 about O."""
+    return sc.add("base_circle", circle, O, r0, style="given", role=Role.GIVEN,
+                  caption=(f"Base circle of the {what[0]}, r0 = {r0:g}", f"以 O 为圆心、r0 = {r0:g} 作{what[1]}的基圆"))
+
+
+def add_division_labels(sc: Scene, key: str, points: Sequence[Ref], labels: Sequence[str], caption: tuple[str, str],
+                        style: str = "point") -> None:
+    """Label a row of points already built (the first step carries the caption)."""
+    for i, (p, lab) in enumerate(zip(points, labels)):
+        sc.add(f"{key}{i}", _same, p, style=style, label=lab, caption=caption if i == 0 else ("", ""))
+
+
+def _same(p: Point) -> Point:
+    return p
+
+
+def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, width: float, scale: float,
+                       divisions: Sequence[float], *, symbol: str = "s", unit: str = "mm") -> None:
+    """The s–δ diagram beside the cam, in model mm: δ axis ``width`` long for 360°, s drawn ``scale`` mm
+    per unit of h (1 for a translating follower: the displacements carry over with the compasses), the
+    curve, and the division lines 1, 2, … from the δ axis up to the curve."""
+    per_deg = width / 360.0
+
+    def at(d: float, s: float) -> Point:
+        return Point(origin.x + d * per_deg, origin.y + s * scale)
+
+    top = h * scale * 1.25
+    sc.add("sd_delta_axis", segment, origin, at(372.0, 0.0), style="given", role=Role.ANNOTATION,
+           caption=(f"Displacement diagram {symbol}–δ beside the cam: δ axis, 360° = {width:.4g} mm",
+                    f"在凸轮旁作位移线图 {symbol}–δ:δ 轴,360° 对应 {width:.4g} mm"))
+    sc.add("sd_s_axis", segment, origin, Point(origin.x, origin.y + top), style="given", role=Role.ANNOTATION)
+    sc.given("sd_delta_label", at(372.0, 0.0), label="δ", visible=True, style="point")
+    sc.given("sd_s_label", Point(origin.x, origin.y + top), label=f"{symbol} ({unit})" if unit else symbol, style="point")
+    d = np.linspace(0.0, 360.0, 721)
+    s = program.motion(h, d)[0]
+    sc.add("sd_curve", _polyline, tuple(at(a, b) for a, b in zip(d, s)), style="link", role=Role.RESULT,
+           caption=(f"Plot {symbol}(δ) of the motion program", f"按运动规律画出 {symbol}(δ) 曲线"))
+    for i, dv in enumerate(divisions, 1):
+        sv = float(program.motion(h, dv)[0])
+        foot = sc.given(f"sd_div{i}", at(dv, 0.0), label=str(i), style="point")
+        if abs(sv) * scale > 1e-9 * width:
+            sc.add(f"sd_ord{i}", segment, foot, at(dv, sv), style="construction",
+                   caption=("Divide the δ axis as the cam angle and erect the ordinates 1, 2, … (the displacements)",
+                            "将 δ 轴按凸轮转角等分,作各分点的纵坐标 1, 2, …(即各位移)") if i == 1 else ("", ""))
+
+
+def _polyline(pts: tuple[Point, ...]) -> Polyline:
+    return Polyline(pts)
+
+
+def add_profile_steps(sc: Scene, make: Callable[..., Profile], args: tuple, caption: tuple[str, str],
+                      style: str = "link") -> Ref:
+    """The manufactured profile: a step :data:`PROFILE_KEY` holding the :class:`Profile` (computed only when
+    drawn or exported) and a step drawing it."""
+    prof = sc.add(PROFILE_KEY, make, *args, visible=False)
+    sc.add("profile_curve", profile_polyline, prof, style=style, role=Role.RESULT, caption=caption)
+    return prof
+
+
+def add_roller_circles(sc: Scene, centres: Sequence[Ref], rr: float) -> None:
+    """A few roller circles about pitch points (their inner envelope is the actual profile)."""
+    for i, c in enumerate(centres):
+        sc.add(f"roller{i}", circle, c, rr, style="path",
+               caption=(f"Roller circles of radius rr = {rr:g} about points of the pitch curve",
+                        f"以理论廓线上各点为圆心、rr = {rr:g} 为半径作一系列滚子圆") if i == 0 else ("", ""))

@@ -1,0 +1,576 @@
+"""``cam.eccentric``: the eccentric-circle disc cam (偏心圆凸轮) — base circle, stroke, rise and return angles,
+and displacement, pressure angle and velocity at a given position.
+
+Frame: the cam's rotation centre O at the origin; a translating follower moves up (+y) along the line x = e
+(e > 0: its axis right of O; D = (e, 0) is the foot of the offset); an oscillating follower's pivot Q is at
+(0, a) with the arm on the ``arm`` side. The disc (radius R) has its centre A at OA from O. The drawing shows
+the mechanism in the **state** position, chosen by at most one of
+
+- ``delta``: the cam turned by δ (deg, in the sense of rotation) from the follower's lowest position;
+- ``A_angle``: "the position shown" as a polar angle of O→A (deg, counter-clockwise from +x, follower up):
+  0 = A to the right of O with OA perpendicular to a translating follower's guide, 90 = A straight above O;
+- ``contact_angle`` (translating only): the cam touches the follower at the disc point (the roller centre
+  at the pitch-circle point) on the ray from A at this angle (deg, counter-clockwise) from the ray O→A:
+  0 = the far end of the line of centres (the highest point), ±90 = the ends of the diameter ⊥ OA;
+
+then turned further by ``turn`` degrees in the sense of rotation ("after turning 90° from the shown
+position"). Without a state the drawing shows the lowest position (δ = 0).
+
+Construction (the inversion, 反转法: the cam stands still, the follower turns about O by −δ): AO extended
+meets the pitch circle (R + rr about A; the disc itself for a knife) at B0, the point nearest O: r0 = OB0
+(the base circle of the pitch curve; ``r0_actual`` = R − OA is the base circle of the disc itself); OA
+extended meets it at B1, the farthest point. The follower's lines through B0 and B1 tangent to the offset
+circle (their feet K0, K1 on the right of O→B for e > 0, on the left for e < 0: the follower's own
+orientation) are its lowest and highest positions, turned back; h = K1B1 − K0B0, the rise angle is ∠K0OK1
+measured against ω. The follower meets the pitch circle at B (the meeting point farther along its motion);
+δ = ∠K0OD against ω, s = DB − K0B0, α = the acute angle between the normal AB (a circle's normal passes its
+centre) and the guide; the instant centre P, where AB meets the line through O perpendicular to the guide,
+gives v = ω·OP. The extremes of α lie where OA ⊥ the guide (feet M± on line OA) or at the ends of a stroke;
+α = 0 where the follower's line passes through A (the tangents from A to the offset circle).
+
+Flat face (perpendicular to the guide): it touches the disc where the disc's radius is parallel to the
+guide, α ≡ 0, r0 = R − OA, h = 2·OA, rise and return 180°; s does not depend on R.
+
+Oscillating roller: B is where the arm circle (Q, L) meets the pitch circle, on the arm's side of Q→A; at the
+lowest and highest positions the inverted pivot Q0, Q1 lies on the circle of radius a about O at L from B0,
+B1; ψ0 = ∠OQ0B0, ψmax = ∠OQ1B1 − ψ0; α is the acute angle between the normal AB and the roller's velocity
+(⊥ QB). The extremes of α over the rise and the return are found on the constructed α(δ) numerically.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from ..cam.eccentric import Oscillating, Translating, check_disc
+from ..cam.profile import maximise
+from ..errors import NotAMechanism
+from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, circle, circle_circle, line_circle, line_line,
+                        line_through, rotate, segment, thales_circle)
+from ..geometry.measure import angle_at, signed_angle
+from ..scene import Ref, Role, Scene, marks
+from .base import Construction, Quantity, Recipe
+from .common import add_pivot, angle_deg, difference, length
+
+UP = Point(0.0, 1.0)
+STATES = ("delta", "A_angle", "contact_angle")
+
+GIVENS = (
+    Quantity("R", "mm", "radius of the disc"),
+    Quantity("OA", "mm", "eccentricity: distance from the rotation centre O to the disc's centre A"),
+    Quantity("follower", "choice", "knife, roller or flat (face perpendicular to the guide)", required=False,
+             default="knife", minimum=None, choices=("knife", "roller", "flat")),
+    Quantity("rr", "mm", "roller radius (roller followers)", required=False, default=0.0, inclusive=True),
+    Quantity("e", "mm", "offset of a translating follower: > 0 puts its axis right of O (follower moving up)",
+             required=False, default=0.0, minimum=None),
+    Quantity("rotation", "choice", "sense of rotation of the cam", required=False, default="ccw", minimum=None,
+             choices=("ccw", "cw")),
+    Quantity("omega", "", "angular speed of the cam, rad/s (gives the follower's velocity v)", required=False),
+    Quantity("delta", "deg", "state: cam angle turned from the lowest position", required=False, minimum=None),
+    Quantity("A_angle", "deg", "state: polar angle of O→A in the figure (0: A right of O, OA ⊥ the guide)",
+             required=False, minimum=None),
+    Quantity("contact_angle", "deg", "state: contact on the ray from A at this angle from the ray O→A",
+             required=False, minimum=None),
+    Quantity("turn", "deg", "turn the state further by this cam angle (in the sense of rotation)", required=False,
+             default=0.0, minimum=None),
+    Quantity("a", "mm", "oscillating follower: distance from O to the arm's pivot Q", required=False),
+    Quantity("L", "mm", "oscillating follower: arm length QB", required=False),
+    Quantity("arm", "choice", "oscillating follower: side of the line Q→O the roller lies on", required=False,
+             default="left", minimum=None, choices=("left", "right")),
+)
+ANSWERS = (
+    Quantity("r0", "mm", "base circle radius of the pitch curve (knife, roller); of the profile (flat)"),
+    Quantity("r0_actual", "mm", "base circle radius of the actual profile (the disc), R − OA"),
+    Quantity("h", "mm", "stroke of a translating follower"),
+    Quantity("psi0", "deg", "oscillating: the arm's initial angle ∠OQ0B0"),
+    Quantity("psi_max", "deg", "oscillating: angular stroke"),
+    Quantity("rise_angle", "deg", "cam angle of the rise (推程运动角)"),
+    Quantity("return_angle", "deg", "cam angle of the return (回程运动角)"),
+    Quantity("alpha_max_rise", "deg", "largest pressure angle of the rise"),
+    Quantity("delta_alpha_max_rise", "deg", "cam angle (from the lowest position) where it occurs (translating)"),
+    Quantity("alpha_min_rise", "deg", "smallest pressure angle of the rise (translating)"),
+    Quantity("alpha_max_return", "deg", "largest pressure angle of the return"),
+    Quantity("delta_alpha_max_return", "deg", "cam angle where it occurs (translating)"),
+    Quantity("alpha_max", "deg", "largest pressure angle of the turn"),
+    Quantity("offset_correct", "bool", "the offset lowers the rise's pressure angle (逆转右偏, 顺转左偏)"),
+    Quantity("delta", "deg", "state: cam angle from the lowest position"),
+    Quantity("s", "mm", "state: displacement from the lowest position (translating)"),
+    Quantity("psi", "deg", "state: the arm's swing from its lowest position (oscillating)"),
+    Quantity("alpha", "deg", "state: pressure angle"),
+    Quantity("v", "", "state: follower velocity, mm/s (> 0 moving away from O), when omega is given"),
+)
+
+
+# ---------------------------------------------------------------------------- validation
+def _state(g: Mapping[str, Any]) -> str | None:
+    given = [k for k in STATES if g.get(k) is not None]
+    if len(given) > 1:
+        raise NotAMechanism(f"give at most one state ({', '.join(STATES)}), got {', '.join(given)}")
+    return given[0] if given else None
+
+
+def _oscillating(g: Mapping[str, Any]) -> bool:
+    if (g.get("a") is None) != (g.get("L") is None):
+        raise NotAMechanism("an oscillating follower needs both a and L")
+    return g.get("a") is not None
+
+
+def twin_cam(g: Mapping[str, Any]) -> Translating | Oscillating:
+    """The analytic model of the givens (validates them)."""
+    rr = g.get("rr") or 0.0
+    if g.get("follower", "knife") == "roller" and rr <= 0:
+        raise NotAMechanism("a roller follower needs rr > 0")
+    if g.get("follower", "knife") != "roller" and rr > 0:
+        raise NotAMechanism(f"rr = {rr:g} given for a {g.get('follower', 'knife')} follower")
+    if _oscillating(g):
+        if g.get("follower", "knife") == "flat":
+            raise NotAMechanism("an oscillating flat-faced follower is not supported")
+        if g.get("e"):
+            raise NotAMechanism(f"e = {g['e']:g} given for an oscillating follower (it has a and L)")
+        if g.get("contact_angle") is not None:
+            raise NotAMechanism("contact_angle is a state of translating followers only")
+        return Oscillating(g["R"], g["OA"], g["a"], g["L"], rr, g.get("rotation", "ccw"), g.get("arm", "left"))
+    return Translating(g["R"], g["OA"], g.get("e") or 0.0, rr, g.get("follower", "knife"), g.get("rotation", "ccw"))
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    check_disc(g["R"], g["OA"])
+    _state(g)
+    twin_cam(g)
+    return []
+
+
+# ---------------------------------------------------------------------------- step operations
+def turned_against(o: Point, p: Point, q: Point, sense: float) -> float:
+    """The cam angle (deg, [0, 360)) from ray o→p to ray o→q measured against the cam's rotation (the
+    follower's inverted motion): clockwise for a counter-clockwise cam."""
+    d = math.degrees(-sense * signed_angle(p - o, q - o)) % 360.0
+    return 0.0 if 360.0 - d < 1e-9 else d
+
+
+def guide_pressure(a: Point, b: Point, direction: Point) -> float:
+    """Acute angle (deg) between the normal a–b and a direction."""
+    x = math.degrees(angle_at(Point(0.0, 0.0), b - a, direction))
+    return min(x, 180.0 - x)
+
+
+def arm_pressure(a: Point, b: Point, q: Point) -> float:
+    """Acute angle (deg) between the normal b–a and the roller's velocity (⊥ q–b)."""
+    return abs(90.0 - math.degrees(angle_at(b, a, q)))
+
+
+def follower_line(foot: Point, e: float) -> Line:
+    """The follower's line with its foot on the offset circle: tangent there, oriented so that O lies on
+    its left for e > 0 (axis right of O), on its right for e < 0."""
+    n = foot.unit() if e > 0 else -foot.unit()
+    return Line(foot, n.perp())
+
+
+def foot_on_OA(o: Point, a: Point, e: float, sign: float) -> Point:
+    """The point of line OA at distance |e| from O, on the side of A (sign = +1) or opposite (−1)."""
+    return o + (a - o).unit() * (sign * abs(e))
+
+
+def state_A(R: float, E: float, Rp: float, e: float, sense: float, flat: bool, state: str | None, value: float,
+            turn: float) -> Point:
+    """Where A is drawn: the state position (see the module docstring), by the inversion's geometry."""
+    O = Point(0.0, 0.0)
+    if state == "A_angle":
+        A = Point(E * math.cos(math.radians(value)), E * math.sin(math.radians(value)))
+    elif state == "contact_angle":
+        Aref = Point(E, 0.0)
+        K = rotate(Aref + Point(Rp, 0.0), Aref, math.radians(value))
+        if flat:
+            up = signed_angle(K - Aref, UP)
+        elif e == 0.0:
+            up = signed_angle(K, UP)
+        else:
+            foot = RightOf(O, K) if e > 0 else LeftOf(O, K)
+            F = foot.choose(circle_circle(thales_circle(O, K), circle(O, abs(e))))
+            up = signed_angle(F, Point(e, 0.0))
+        A = rotate(Aref, O, up)
+    else:   # the lowest position: the follower's axis meets the base circle at B0, A lies on B0O extended
+        if flat:
+            B0 = Point(0.0, R - E)       # a flat face is lowest when it touches the disc straight above O
+        else:
+            B0 = Ahead(Point(e, 0.0), Point(e, 1.0)).choose(line_circle(Line(Point(e, 0.0), UP), circle(O, Rp - E)))
+        A = O + (O - B0).unit() * E
+        if state == "delta":
+            A = rotate(A, O, sense * math.radians(value))
+    return rotate(A, O, sense * math.radians(turn))
+
+
+def velocity(A: Point, B: Point, sense: float, omega: float) -> float:
+    """v = ω·OP with P where the normal AB meets the line through O perpendicular to the guide (the
+    relative instant centre); positive when that cam point moves up (away from O)."""
+    P = line_line(line_through(A, B) if A != B else Line(A, UP), Line(Point(0.0, 0.0), Point(1.0, 0.0)))[0]
+    return sense * omega * P.x
+
+
+def largest_in(values: tuple[float, ...], deltas: tuple[float, ...], lo: float, hi: float, pick: str) -> tuple:
+    """(value, δ) of the largest (``pick`` = "max") or smallest value whose δ lies in [lo, hi]."""
+    rows = [(v, d) for v, d in zip(values, deltas) if lo - 1e-9 <= d <= hi + 1e-9]
+    return max(rows) if pick == "max" else min(rows)
+
+
+def first(pair: tuple) -> float:
+    """The value of a (value, δ) pair."""
+    return pair[0]
+
+
+def second(pair: tuple) -> float:
+    """The δ of a (value, δ) pair."""
+    return pair[1]
+
+
+def offset_correct(e: float, sense: float) -> bool:
+    """逆转右偏, 顺转左偏: the axis on the side where the instant centre lies during the rise."""
+    return e * sense > 0
+
+
+def complement_turn(x: float) -> float:
+    """360° − x."""
+    return 360.0 - x
+
+
+def arm_angle(q: Point, o: Point, b: Point) -> float:
+    """∠OQB (deg)."""
+    return angle_deg(q, o, b)
+
+
+def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool) -> tuple[Ref, Ref]:
+    """The line of centres AO meets the pitch circle at B0 (nearest O: r0 = OB0, the base circle) and B1
+    (farthest); for a roller, the disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
+    lineAO = sc.add("lineAO", line_through, A, O, style="construction", caption=("Draw the line of centres AO", "作中心线 AO"))
+    B0 = sc.add("B0", line_circle, lineAO, pitch, branch=Ahead(A, O), style="point", label="B0",
+                caption=("AO extended meets the pitch curve at B0, its point nearest O", "AO 延长交理论廓线于 B0(离 O 最近)"))
+    r0 = sc.add("r0", length, O, B0, role=Role.MEASUREMENT, unit="mm",
+                caption=("r0 = OB0: the base circle", "基圆半径 r0 = OB0"))
+    sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
+    if roller:
+        E0 = sc.add("E0", line_circle, lineAO, Ref("disc"), branch=Ahead(A, O), style="point", label="E0",
+                    caption=("AO extended meets the disc at E0", "AO 延长交实际廓线于 E0"))
+        sc.add("r0_actual", length, O, E0, role=Role.MEASUREMENT, unit="mm",
+               caption=("r0 of the actual profile = OE0 = R − OA", "实际廓线基圆半径 OE0 = R − OA"))
+    else:
+        sc.add("r0_actual", length, O, B0, role=Role.MEASUREMENT, unit="mm", visible=False)
+    B1 = sc.add("B1", line_circle, lineAO, pitch, branch=Ahead(O, A), style="point", label="B1",
+                caption=("OA extended meets it at B1, its farthest point", "OA 延长交理论廓线于 B1(离 O 最远)"))
+    return B0, B1
+
+
+# ---------------------------------------------------------------------------- construction
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build the eccentric cam's construction at the state position."""
+    if _oscillating(g):
+        return _construct_oscillating(g)
+    R, E, e = g["R"], g["OA"], g.get("e") or 0.0
+    follower, rr = g.get("follower", "knife"), g.get("rr") or 0.0
+    sense = 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0
+    flat = follower == "flat"
+    Rp = R + rr if follower == "roller" else R
+    st = _state(g)
+    sc = Scene("Eccentric-circle cam")
+    O = add_pivot(sc, "O", Point(0.0, 0.0), ("Rotation centre O of the cam", "凸轮回转中心 O"))
+    how = {"delta": (f"turned by δ = {g.get('delta')}° from the lowest position", f"自最低位置转过 δ = {g.get('delta')}°"),
+           "A_angle": (f"as shown: O→A at {g.get('A_angle')}° from the horizontal", f"如图:O→A 与水平线成 {g.get('A_angle')}°"),
+           "contact_angle": (f"touching the follower at {g.get('contact_angle')}° from the ray O→A about A",
+                             f"与从动件在 A 处自 OA 射线转 {g.get('contact_angle')}° 的点接触"),
+           None: ("at the follower's lowest position", "位于从动件最低位置")}[st]
+    A = sc.given("A", state_A(R, E, Rp, e, sense, flat, st, g.get(st) if st else 0.0, g.get("turn") or 0.0),
+                 caption=(f"Disc centre A at OA = {E:g} from O, {how[0]}", f"圆盘中心 A,OA = {E:g},{how[1]}"),
+                 style="joint")
+    sc.add("OA_seg", segment, O, A, role=Role.RESULT, style="link", caption=("", ""))
+    sc.add("disc", circle, A, R, role=Role.RESULT, style="link",
+           caption=(f"The cam: the circle about A with radius R = {R:g}", f"凸轮廓线:以 A 为圆心、R = {R:g} 的圆"))
+    pitch = sc.add("pitch", circle, A, Rp, style="path",
+                   caption=(f"Pitch curve: the circle about A with radius R + rr = {Rp:g}",
+                            f"理论廓线:以 A 为圆心、R + rr = {Rp:g} 的圆")) if follower == "roller" else Ref("disc")
+    D = sc.given("D", Point(e, 0.0), style="point", label="D" if e else None,
+                 caption=(f"Foot D of the follower's axis, OD = e = {e:g}", f"导路垂足 D,OD = e = {e:g}"))
+    axis = sc.add("axis", Line, D, UP, role=Role.GIVEN, style="frame",
+                  caption=("The follower's guide through D, perpendicular to OD", "过 D 作导路(垂直于 OD)"))
+    if e:
+        sc.add("offset_circle", circle, O, abs(e), style="construction",
+               caption=(f"Offset circle about O with radius |e| = {abs(e):g}", f"以 O 为圆心、|e| 为半径作偏距圆"))
+    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller")
+    if flat:
+        return _finish_flat(sc, g, O, A, D, axis, B0, B1, sense)
+    if e:
+        rule0 = RightOf(O, B0) if e > 0 else LeftOf(O, B0)
+        rule1 = RightOf(O, B1) if e > 0 else LeftOf(O, B1)
+        th0 = sc.add("th0", thales_circle, O, B0, style="construction", visible=False)
+        K0 = sc.add("K0", circle_circle, th0, Ref("offset_circle"), branch=rule0, style="point", label="K0",
+                    caption=("The follower through B0 tangent to the offset circle at K0: its lowest position, turned back",
+                             "过 B0 作偏距圆切线,切点 K0:从动件最低位置(反转后)"))
+        th1 = sc.add("th1", thales_circle, O, B1, style="construction", visible=False)
+        K1 = sc.add("K1", circle_circle, th1, Ref("offset_circle"), branch=rule1, style="point", label="K1",
+                    caption=("…and through B1, foot K1: its highest position", "过 B1 作切线,切点 K1:最高位置"))
+        ref0, ref1, ref = K0, K1, D
+        low = sc.add("low_len", length, K0, B0, visible=False, unit="mm")
+        high = sc.add("high_len", length, K1, B1, visible=False, unit="mm")
+    else:
+        ref0, ref1 = B0, B1
+        low = sc.add("low_len", length, O, B0, visible=False, unit="mm")
+        high = sc.add("high_len", length, O, B1, visible=False, unit="mm")
+    sc.add("K0B0", segment, ref0 if e else O, B0, style="ghost", caption=("", ""))
+    sc.add("K1B1", segment, ref1 if e else O, B1, style="ghost", caption=("", ""))
+    sc.add("h", difference, high, low, role=Role.MEASUREMENT, unit="mm",
+           caption=("h = K1B1 − K0B0" if e else "h = OB1 − OB0", "行程 h = K1B1 − K0B0" if e else "行程 h = OB1 − OB0"))
+    rise = sc.add("rise_angle", turned_against, O, ref0, ref1, sense, role=Role.MEASUREMENT, unit="deg",
+                  caption=("Rise angle: ∠K0OK1 against ω" if e else "Rise angle: ∠B0OB1 against ω",
+                           "推程运动角:逆 ω 方向量 ∠K0OK1" if e else "推程运动角 ∠B0OB1(逆 ω)"))
+    sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
+    up = sc.add("up", lambda d: d + UP, D, visible=False, label="D + ↑")
+    B = sc.add("B", line_circle, axis, pitch, branch=Ahead(D, up), role=Role.RESULT, style="joint",
+               label="B", caption=("The follower meets the pitch curve at B", "导路交理论廓线于 B(从动件位置)"))
+    if follower == "roller":
+        sc.add("roller", circle, B, rr, role=Role.RESULT, style="link", caption=("", ""))
+    top = sc.add("top", lambda b, k: b + UP * k, B, 0.6 * R, visible=False)
+    sc.add("stem", segment, B, top, role=Role.RESULT, style="link", caption=("", ""))
+    sc.add("guide_mark", lambda b: marks.Guide(b + UP * (0.25 * R), b + UP * (0.55 * R), 1), B,
+           role=Role.ANNOTATION, style="guide")
+    sc.add("delta", turned_against, O, ref0, D if e else B, sense, role=Role.MEASUREMENT, unit="deg",
+           caption=("Cam angle from the lowest position: δ = ∠K0OD against ω" if e else "δ = ∠B0OB against ω",
+                    "自最低位置的凸轮转角 δ = ∠K0OD(逆 ω)" if e else "凸轮转角 δ = ∠B0OB(逆 ω)"))
+    DB = sc.add("DB", length, D if e else O, B, visible=False, unit="mm")
+    s = sc.add("s", difference, DB, low, role=Role.MEASUREMENT, unit="mm",
+               caption=("Displacement s = DB − K0B0" if e else "s = OB − OB0", "位移 s = DB − K0B0" if e else "位移 s = OB − OB0"))
+    sc.add("normal", line_through, A, B, style="construction", caption=("The normal at B passes the centre A", "B 点法线过圆心 A"))
+    al = sc.add("alpha", guide_pressure, A, B, UP, role=Role.MEASUREMENT, unit="deg",
+                caption=("Pressure angle α between the normal AB and the guide", "压力角 α:法线 AB 与导路所夹锐角"))
+    sc.add("mark_alpha", lambda b, a, v: marks.AngleMark(b, b + UP, b * 2.0 - a if (b - a).y < 0 else a, "α", v),
+           B, A, al, role=Role.ANNOTATION, style="angle")
+    sc.add("dim_s", lambda b, v, lo: marks.Dimension(b - UP * v, b, "s", v, 0.35 * R), B, s, low,
+           role=Role.ANNOTATION, style="dim", caption=("Dimension s from the lowest position", "标注位移 s"))
+    answers = {n: n for n in ("r0", "r0_actual", "h", "rise_angle", "return_angle", "delta", "s", "alpha")}
+    if g.get("omega") is not None:
+        sc.add("v", velocity, A, B, sense, g["omega"], role=Role.MEASUREMENT, unit="",
+               caption=("Instant centre P: AB meets the line through O ⊥ the guide; v = ω·OP",
+                        "瞬心 P:AB 与过 O 垂直于导路的直线之交点;v = ω·OP"))
+        answers["v"] = "v"
+    answers.update(_alpha_extremes(sc, O, A, pitch, B0, B1, ref0, e, sense, rise))
+    if e:
+        sc.add("offset_correct", offset_correct, e, sense, role=Role.MEASUREMENT, visible=False)
+        answers["offset_correct"] = "offset_correct"
+    points = {"O": "O", "A": "A", "B": "B", "B0": "B0", "B1": "B1"}
+    return Construction(sc, answers, points)
+
+
+def _alpha_extremes(sc: Scene, O: Ref, A: Ref, pitch: Ref, B0: Ref, B1: Ref, ref0: Ref, e: float, sense: float,
+                    rise: Ref) -> dict[str, str]:
+    """The candidate positions of α's extremes: the ends of the strokes, the follower ⊥ OA (feet M± on line
+    OA, or the lines through O ⊥ OA when e = 0), and the follower through A (α = 0); α and δ at each."""
+    vals = [sc.add(f"alpha_B{k}", lambda a, b, seg: guide_pressure(a, b, seg.b - seg.a), A, Bk, Ref(f"K{k}B{k}"),
+                   role=Role.MEASUREMENT, unit="deg", visible=False) for k, Bk in (("0", B0), ("1", B1))]
+    rise_d, ret_d = [0.0, rise], [360.0, rise]
+    for tag, sign in (("p", 1.0), ("m", -1.0)):
+        if e:
+            M = sc.add(f"M{tag}", foot_on_OA, O, A, e, sign, visible=False)
+            ln = sc.add(f"perp{tag}", follower_line, M, e, visible=False)
+        else:
+            ln = sc.add(f"perp{tag}", lambda o, a, sg: Line(o, (a - o).perp() * sg), O, A, sign, visible=False)
+        p0 = sc.add(f"perp{tag}_0", lambda l: l.point, ln, visible=False)
+        p1 = sc.add(f"perp{tag}_1", lambda l: l.at(1.0), ln, visible=False)
+        Bm = sc.add(f"Bperp{tag}", line_circle, ln, pitch, branch=Ahead(p0, p1), visible=False)
+        vals.append(sc.add(f"alpha_perp{tag}", lambda a, b, l: guide_pressure(a, b, l.direction), A, Bm, ln,
+                           role=Role.MEASUREMENT, unit="deg", visible=False))
+        d = sc.add(f"delta_perp{tag}", turned_against, O, ref0, Ref(f"M{tag}") if e else Bm, sense, visible=False)
+        rise_d.append(d)
+        ret_d.append(d)
+    if e:
+        th = sc.add("thA", thales_circle, O, A, visible=False)
+        for i, rule in enumerate((LeftOf(O, A), RightOf(O, A))):
+            N = sc.add(f"N{i}", circle_circle, th, Ref("offset_circle"), branch=rule, optional=True, visible=False)
+            vals.append(sc.add(f"alpha_N{i}", lambda n: 0.0 if n is not None else 90.0, N, visible=False))
+            d = sc.add(f"delta_N{i}", lambda o, k, n, sg: turned_against(o, k, n, sg) if n is not None else -1.0,
+                       O, ref0, N, sense, visible=False)
+            rise_d.append(d)
+            ret_d.append(d)
+    vt = sc.add("alpha_cands", lambda *v: tuple(v), *vals, visible=False)
+    dt = sc.add("delta_cands", lambda *v: tuple(v), *rise_d, visible=False)
+    drt = sc.add("delta_cands_ret", lambda *v: tuple(v), *ret_d, visible=False)
+    rmax = sc.add("rise_max", largest_in, vt, dt, 0.0, rise, "max", visible=False)
+    rmin = sc.add("rise_min", largest_in, vt, dt, 0.0, rise, "min", visible=False)
+    tmax = sc.add("ret_max", largest_in, vt, drt, rise, 360.0, "max", visible=False)
+    sc.add("alpha_max_rise", first, rmax, role=Role.MEASUREMENT, unit="deg",
+           caption=("Largest rise pressure angle: at an end of the rise or with OA ⊥ the guide",
+                    "推程最大压力角:在推程起止位置或 OA ⊥ 导路时"))
+    sc.add("delta_alpha_max_rise", second, rmax, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("alpha_min_rise", first, rmin, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("alpha_max_return", first, tmax, role=Role.MEASUREMENT, unit="deg",
+           caption=("Largest return pressure angle, likewise", "回程最大压力角(同理)"))
+    sc.add("delta_alpha_max_return", second, tmax, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("alpha_max", max, Ref("alpha_max_rise"), Ref("alpha_max_return"), role=Role.MEASUREMENT, unit="deg",
+           visible=False)
+    return {n: n for n in ("alpha_max_rise", "delta_alpha_max_rise", "alpha_min_rise", "alpha_max_return",
+                           "delta_alpha_max_return", "alpha_max")}
+
+
+def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: Ref, B0: Ref, B1: Ref,
+                 sense: float) -> Construction:
+    """The flat face: it touches the disc where the disc's radius is parallel to the guide (above A)."""
+    R = g["R"]
+    vA = sc.add("vA", Line, A, UP, style="construction",
+                caption=("The line through A parallel to the guide", "过 A 作导路的平行线"))
+    Aup = sc.add("A_up", lambda a: a + UP, A, visible=False, label="A + ↑")
+    K = sc.add("K", line_circle, vA, Ref("disc"), branch=Ahead(A, Aup), role=Role.RESULT, style="joint", label="K",
+               caption=("It meets the disc at K: the contact point", "交圆盘于接触点 K"))
+    F = sc.add("F", lambda l1, l2: line_line(l1, l2)[0], axis, sc.add("face_line", Line, K, Point(1.0, 0.0), visible=False),
+               style="point", label="F", caption=("The face through K ⊥ the guide meets the axis at F",
+                                                  "过 K 作平底(⊥ 导路),交导路于 F"))
+    sc.add("face_seg", lambda k, f: segment(Point(min(k.x, f.x) - 0.3 * R, f.y), Point(max(k.x, f.x) + 0.3 * R, f.y)),
+           K, F, role=Role.RESULT, style="link", caption=("", ""))
+    sc.add("stem", lambda f: segment(f, f + UP * (0.6 * R)), F, role=Role.RESULT, style="link", caption=("", ""))
+    rise = sc.add("rise_angle", turned_against, O, B0, B1, sense, role=Role.MEASUREMENT, unit="deg",
+                  caption=("Rise angle ∠B0OB1 against ω (the face ⊥ OB0 lowest, ⊥ OB1 highest)",
+                           "推程运动角 ∠B0OB1(逆 ω;平底 ⊥ OB0 最低,⊥ OB1 最高)"))
+    sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
+    r0 = Ref("r0")
+    sc.add("h", lambda b1, b0: abs(b1) - abs(b0), B1, B0, role=Role.MEASUREMENT, unit="mm",
+           caption=("h = OB1 − OB0", "行程 h = OB1 − OB0"))
+    Oup = sc.add("O_up", lambda o: o + UP, O, visible=False)
+    sc.add("delta", turned_against, O, B0, Oup, sense, role=Role.MEASUREMENT, unit="deg",
+           caption=("δ = angle from OB0 to the guide's direction, against ω", "凸轮转角 δ:自 OB0 至导路方向(逆 ω)"))
+    DF = sc.add("DF", length, D, F, visible=False, unit="mm")
+    s = sc.add("s", difference, DF, r0, role=Role.MEASUREMENT, unit="mm",
+               caption=("s = DF − r0", "位移 s = DF − r0"))
+    sc.add("alpha", guide_pressure, A, K, UP, role=Role.MEASUREMENT, unit="deg",
+                caption=("α between the normal KA and the guide: 0", "压力角 α(法线 KA 平行于导路)= 0"))
+    sc.add("dim_s", lambda f, v: marks.Dimension(f - UP * v, f, "s", v, 0.35 * R), F, s,
+           role=Role.ANNOTATION, style="dim", caption=("Dimension s", "标注位移 s"))
+    answers = {n: n for n in ("r0", "r0_actual", "h", "rise_angle", "return_angle", "delta", "s", "alpha")}
+    answers.update({"alpha_max_rise": "alpha", "alpha_max_return": "alpha", "alpha_min_rise": "alpha",
+                    "alpha_max": "alpha"})
+    if g.get("omega") is not None:
+        sc.add("v", velocity, A, K, sense, g["omega"], role=Role.MEASUREMENT, unit="",
+               caption=("Instant centre P below A on the line through O ⊥ the guide; v = ω·OP",
+                        "瞬心 P(法线与过 O 垂直导路之线的交点);v = ω·OP"))
+        answers["v"] = "v"
+    return Construction(sc, answers, {"O": "O", "A": "A", "K": "K", "F": "F"})
+
+
+def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
+    """The oscillating roller (or knife) follower."""
+    R, E, a, L = g["R"], g["OA"], g["a"], g["L"]
+    rr = g.get("rr") or 0.0
+    sense = 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0
+    left = g.get("arm", "left") == "left"
+    Rp = R + rr
+    st = _state(g)
+    sc = Scene("Eccentric-circle cam, oscillating follower")
+    O = add_pivot(sc, "O", Point(0.0, 0.0), ("Rotation centre O of the cam", "凸轮回转中心 O"))
+    Q = add_pivot(sc, "Q", Point(0.0, a), (f"Arm pivot Q at a = {a:g} above O", f"摆杆回转中心 Q,OQ = a = {a:g}"))
+    A = sc.given("A", _osc_A(E, Rp, a, L, left, sense, st, g.get(st) if st else 0.0, g.get("turn") or 0.0),
+                 style="joint", caption=(f"Disc centre A at OA = {E:g} from O", f"圆盘中心 A,OA = {E:g}"))
+    sc.add("OA_seg", segment, O, A, role=Role.RESULT, style="link", caption=("", ""))
+    sc.add("disc", circle, A, R, role=Role.RESULT, style="link",
+           caption=(f"The cam: the circle about A with radius R = {R:g}", f"凸轮:以 A 为圆心、R = {R:g} 的圆"))
+    pitch = sc.add("pitch", circle, A, Rp, style="path", caption=(f"Pitch circle about A, R + rr = {Rp:g}",
+                                                                  f"理论廓线:以 A 为圆心、R + rr = {Rp:g} 的圆")) \
+        if rr else Ref("disc")
+    armc = sc.add("arm_circle", circle, Q, L, style="construction",
+                  caption=(f"Arc about Q with radius L = {L:g}", f"以 Q 为圆心、L = {L:g} 为半径作弧"))
+    side = RightOf if left else LeftOf
+    B = sc.add("B", circle_circle, armc, pitch, branch=side(Q, A), role=Role.RESULT, style="joint", label="B",
+               caption=("It meets the pitch circle at the roller centre B", "交理论廓线于滚子中心 B"))
+    sc.add("arm", segment, Q, B, role=Role.RESULT, style="link", caption=("", ""))
+    if rr:
+        sc.add("roller", circle, B, rr, role=Role.RESULT, style="link", caption=("", ""))
+    B0, B1 = add_base_circle(sc, O, A, pitch, bool(rr))
+    kq = sc.add("pivot_circle", circle, O, a, style="construction",
+                caption=(f"Circle about O through Q (radius a = {a:g}): the inverted pivot's path",
+                         f"以 O 为圆心、a 为半径作圆(反转后摆杆中心轨迹)"))
+    rule = LeftOf if left else RightOf
+    Qs = []
+    for k, Bk in (("0", B0), ("1", B1)):
+        c = sc.add(f"kL{k}", circle, Bk, L, visible=False)
+        Qk = sc.add(f"Q{k}", circle_circle, kq, c, branch=rule(Bk, A), style="point", label=f"Q{k}",
+                    caption=(f"Arc about B{k} with radius L meets it at Q{k}: the arm's {'lowest' if k == '0' else 'highest'} position",
+                             f"以 B{k} 为圆心、L 为半径作弧交之于 Q{k}:摆杆{'最低' if k == '0' else '最高'}位置"))
+        sc.add(f"Q{k}B{k}", segment, Qk, Bk, style="ghost", caption=("", ""))
+        Qs.append(Qk)
+    p0 = sc.add("psi0", arm_angle, Qs[0], O, B0, role=Role.MEASUREMENT, unit="deg",
+                caption=("Initial arm angle ψ0 = ∠OQ0B0", "初始位置角 ψ0 = ∠OQ0B0"))
+    p1 = sc.add("psi1", arm_angle, Qs[1], O, B1, visible=False)
+    sc.add("psi_max", difference, p1, p0, role=Role.MEASUREMENT, unit="deg",
+           caption=("Angular stroke ψmax = ∠OQ1B1 − ψ0", "最大摆角 ψmax = ∠OQ1B1 − ψ0"))
+    rise = sc.add("rise_angle", turned_against, O, Qs[0], Qs[1], sense, role=Role.MEASUREMENT, unit="deg",
+                  caption=("Rise angle ∠Q0OQ1 against ω", "推程运动角 ∠Q0OQ1(逆 ω)"))
+    sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("delta", turned_against, O, Qs[0], Q, sense, role=Role.MEASUREMENT, unit="deg",
+           caption=("δ = ∠Q0OQ against ω", "凸轮转角 δ = ∠Q0OQ(逆 ω)"))
+    pq = sc.add("psi_now", arm_angle, Q, O, B, visible=False)
+    sc.add("psi", difference, pq, p0, role=Role.MEASUREMENT, unit="deg",
+           caption=("Swing ψ = ∠OQB − ψ0", "摆角 ψ = ∠OQB − ψ0"))
+    sc.add("alpha", arm_pressure, A, B, Q, role=Role.MEASUREMENT, unit="deg",
+           caption=("α between the normal AB and B's velocity (⊥ QB)", "压力角 α:法线 AB 与 B 点速度(⊥ QB)所夹锐角"))
+    for part in ("rise", "return"):
+        sc.add(f"alpha_max_{part}", _osc_alpha_max, Qs[0], A, O, B0, L, Rp, left, sense, rise, part,
+               role=Role.MEASUREMENT, unit="deg",
+               caption=(f"Largest {part} pressure angle, replaying the inversion over the {part}",
+                        f"{'推' if part == 'rise' else '回'}程最大压力角(反转逐点作图)"))
+    sc.add("alpha_max", max, Ref("alpha_max_rise"), Ref("alpha_max_return"), role=Role.MEASUREMENT, unit="deg",
+           visible=False)
+    names = ("r0", "r0_actual", "psi0", "psi_max", "rise_angle", "return_angle", "alpha_max_rise",
+             "alpha_max_return", "alpha_max", "delta", "psi", "alpha")
+    return Construction(sc, {n: n for n in names}, {"O": "O", "Q": "Q", "A": "A", "B": "B", "B0": "B0", "B1": "B1"})
+
+
+def _osc_A(E: float, Rp: float, a: float, L: float, left: bool, sense: float, st: str | None, value: float,
+           turn: float) -> Point:
+    """A at the state: given directly, or the lowest position (B0 where the arm circle meets the base circle
+    on the arm's side, A on B0O extended) turned by δ."""
+    O = Point(0.0, 0.0)
+    if st == "A_angle":
+        A = Point(E * math.cos(math.radians(value)), E * math.sin(math.radians(value)))
+    else:
+        Q = Point(0.0, a)
+        B0 = (Leftmost() if left else Rightmost()).choose(circle_circle(circle(O, Rp - E), circle(Q, L)))
+        A = O + (O - B0).unit() * E
+        if st == "delta":
+            A = rotate(A, O, sense * math.radians(value))
+    return rotate(A, O, sense * math.radians(turn))
+
+
+def _osc_alpha_max(Q0: Point, A: Point, O: Point, B0: Point, L: float, Rp: float, left: bool, sense: float,
+                   rise: float, part: str) -> float:
+    """The largest α over a stroke: the pivot turned back by δ about O (inversion), B where its arc meets
+    the pitch circle, α measured; maximised over δ."""
+    side = RightOf if left else LeftOf
+    kp = circle(A, Rp)
+
+    def alpha_at(d: float) -> float:
+        Qd = rotate(Q0, O, -sense * d)
+        B = side(Qd, A).choose(circle_circle(circle(Qd, L), kp))
+        return arm_pressure(A, B, Qd)
+
+    lo, hi = (0.0, math.radians(rise)) if part == "rise" else (math.radians(rise), 2 * math.pi)
+    return maximise(np.vectorize(alpha_at), [(lo, hi)], dense=720).value
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """The closed forms of :mod:`geomcon.cam.eccentric`."""
+    cam = twin_cam(g)
+    out = cam.cycle()
+    st = _state(g)
+    kw = {st: g[st]} if st else {}
+    phi = cam.phi_from(turn=g.get("turn") or 0.0, **kw)
+    if isinstance(cam, Translating):
+        out.update(cam.state(phi, g.get("omega")))
+    else:
+        out.update(cam.state(phi))
+    return [out]
+
+
+RECIPE = Recipe(
+    name="cam.eccentric",
+    title="Eccentric-circle cam: r0, h, rise and return angles, s, α, v at a position",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=("O", "A", "B", "B0", "B1"),
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+)

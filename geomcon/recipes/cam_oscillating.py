@@ -1,0 +1,391 @@
+"""``cam.oscillating``: the disc cam of an oscillating (swinging-arm) follower by the inversion method (反转法).
+
+Construction (conventions of :mod:`geomcon.cam.oscillating`: O at the origin, the arm's pivot A0 on +y at
+OA0 = a, the roller on the ``arm`` side of A0→O): the arm's circle of radius L about A0 meets the base circle
+at B0, the start of the rise, and ψ0 = ∠OA0B0. Holding the cam still, the frame turns by −δ about O: at the
+textbook's equal divisions of the rise and the return the pivot comes to A0′ on the circle of radius a
+(labelled 1′, 2′, …), the initial arm A0B0 to A0′C (C on the base circle), and the displacement ψ(δ) is laid
+off at A0′ from A0′C by turning C about A0′ through ψ in the arm's rise sense: the pitch point B. Every point
+is a rotation of a given one. The pitch curve joins them; for a roller the actual profile is the inner
+envelope of the roller circles (:func:`geomcon.cam.profile.roller_profile`). The pressure angle is measured
+at its worst positions: the contact normal passes through the relative instant centre P of cam and arm on
+the line OA0′, A0′P = a/(1 − εψ′), and α is its angle with the roller's velocity (perpendicular to the arm).
+
+The analytic twin uses the closed forms by separate routes: ψ0 by the half-angle formula, α and its worst
+place from the complex form of the tangent, ρmin from the complex form of the curvature.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from ..cam.oscillating import OscillatingCam, levels, psi0_rad, segment_motion
+from ..cam.profile import rho_min, roller_profile
+from ..cam.program import parse_program
+from ..errors import NotAMechanism
+from ..geometry import LeftOf, Line, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, rotate, segment
+from ..scene import Ref, Role, Scene
+from .base import Construction, Quantity, Recipe
+from .cam_common import (AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
+                         add_profile_steps, add_roller_circles, at_least, division_angles, extremum_value, minus,
+                         normal_segment, pitch_polyline, pressure_mark, profile_tolerance, require_full, turned)
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg
+
+GIVENS = (
+    Quantity("follower", "choice", "follower type", minimum=None, choices=("knife", "roller")),
+    Quantity("a", "mm", "centre distance OA0 from the cam centre to the arm's pivot"),
+    Quantity("L", "mm", "arm length A0B (pivot to roller centre or knife edge)"),
+    Quantity("r0", "mm", "base-circle radius of the pitch curve"),
+    Quantity("h", "deg", "angular stroke ψmax of the arm"),
+    PROGRAM,
+    Quantity("rr", "mm", "roller radius (roller followers only)", required=False, default=None),
+    ROTATION,
+    Quantity("arm", "choice", "side of the line A0→O the roller lies on (A0 drawn above O)", required=False,
+             default="left", minimum=None, choices=("left", "right")),
+    AT,
+    Quantity("alpha_allow", "deg", "allowed pressure angle on the rise (a warning when exceeded)", required=False),
+    Quantity("alpha_allow_return", "deg", "allowed pressure angle on the return (default alpha_allow)",
+             required=False),
+    Quantity("divisions", "", "equal divisions of the rise and of the return in the drawing (default: parts of at "
+             "most 15°)", required=False),
+    TOL,
+    STRICT,
+)
+ANSWERS = (
+    Quantity("psi_max", "deg", "angular stroke ψmax, measured between the arm's first and top positions"),
+    Quantity("psi0", "deg", "initial arm angle ψ0 = ∠OA0B0"),
+    Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
+    Quantity("delta_alpha_max_rise", "deg", "cam angle where it occurs"),
+    Quantity("alpha_max_return", "deg", "largest pressure angle during the return"),
+    Quantity("delta_alpha_max_return", "deg", "cam angle where it occurs"),
+    Quantity("rho_min_pitch", "mm", "smallest radius of curvature of the convex parts of the pitch curve"),
+    Quantity("rho_min_actual", "mm", "of the actual profile: ρmin − rr (roller; ≤ 0 when undercut), ρmin (knife)"),
+    Quantity("undercut", "bool", "rr ≥ ρmin: the roller cannot reproduce the motion (profile trimmed)"),
+    Quantity("psi", "deg[]", "arm angle ψ at the cam angles of `at`"),
+    Quantity("alpha", "deg[]", "pressure angle α at the cam angles of `at`"),
+    Quantity("pitch_x", "mm[]", "x of the pitch point (cam frame) at the cam angles of `at`"),
+    Quantity("pitch_y", "mm[]", "y of the pitch point (cam frame) at the cam angles of `at`"),
+    Quantity("profile_x", "mm[]", "x of the actual profile's point (roller) at the cam angles of `at`"),
+    Quantity("profile_y", "mm[]", "y of the actual profile's point (roller) at the cam angles of `at`"),
+)
+POINTS = ("O", "A0", "B0")
+ROLLER_WARN = 3.0
+"""A warning when ρmin of the pitch curve is below this many roller radii (the profile's curvature is sharp)."""
+
+
+# ---------------------------------------------------------------------------------------------- givens
+def cam_of(g: Mapping[str, Any]) -> OscillatingCam:
+    """The cam described by the givens (program parsed and checked to fill the turn with a return)."""
+    prog = parse_program(g["program"])
+    require_full(prog)
+    if prog.ret is None:
+        raise NotAMechanism("program: a cam needs a return segment (the arm must swing back)")
+    return OscillatingCam(g["a"], g["L"], g["r0"], g["h"], prog, g.get("rotation", "ccw"), g.get("arm", "left"))
+
+
+def _division_angles(g: Mapping[str, Any], cam: OscillatingCam) -> tuple[float, ...]:
+    """The cam angles (deg) of the drawing's divisions: ``divisions`` equal parts of the rise and of the
+    return when given, else the shared rule (parts of at most 15°, dwell ends)."""
+    n = g.get("divisions")
+    if n is None:
+        return division_angles(cam.program)
+    if n != int(n) or not 1 <= n <= 24:
+        raise NotAMechanism(f"divisions must be a whole number from 1 to 24, got {n:g}")
+    out = {seg.start + seg.angle * i / int(n) for seg in cam.program.segments if seg.kind != "dwell"
+           for i in range(int(n) + 1)}
+    return tuple(sorted(d for d in out if 0.0 < d < 360.0))
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    """Refuse cams that cannot be assembled; warn about pressure angles beyond the allowance and undercut."""
+    a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
+    cam = cam_of(g)
+    _division_angles(g, cam)
+    if r0 >= a + L:
+        raise NotAMechanism(f"r0 = {r0:g} ≥ a + L = {a + L:g}: the arm cannot reach the base circle")
+    if r0 <= abs(a - L):
+        raise NotAMechanism(f"r0 = {r0:g} ≤ |a − L| = {abs(a - L):g}: the arm's circle about A0 does not cross "
+                            "the base circle (no initial position, ψ0 undefined)")
+    if r0 >= a:
+        raise NotAMechanism(f"r0 = {r0:g} ≥ a = {a:g}: the arm's pivot A0 lies inside the base circle")
+    psi0 = math.degrees(psi0_rad(a, L, r0))
+    if psi0 + h >= 180.0:
+        raise NotAMechanism(f"ψ0 + h = {psi0:.6g}° + {h:g}° ≥ 180°: the arm would swing through the line A0O")
+    roller = g["follower"] == "roller"
+    rr = g.get("rr")
+    if roller and rr is None:
+        raise NotAMechanism("a roller follower needs rr (the roller radius)")
+    if not roller and rr is not None:
+        raise NotAMechanism(f"rr = {rr:g} is given for a knife-edge follower: only a roller follower has a roller")
+    rr = rr or 0.0
+    if rr >= r0:
+        raise NotAMechanism(f"rr = {rr:g} ≥ r0 = {r0:g}: the actual profile's base circle r0 − rr would vanish")
+    out = []
+    r_top = math.sqrt(a * a + L * L - 2.0 * a * L * math.cos(math.radians(psi0 + h)))
+    if r_top - rr >= a:
+        out.append(f"the cam reaches {r_top - rr:.4g} mm from O at the top of the stroke, beyond the arm's pivot "
+                   f"(a = {a:g}): it would hit the pivot")
+    allow = {"rise": g.get("alpha_allow"), "return": g.get("alpha_allow_return") or g.get("alpha_allow")}
+    for part in ("rise", "return"):
+        alpha, at = cam.worst_pressure(part)
+        if allow[part] is not None and alpha > allow[part]:
+            out.append(f"α_max of the {part} = {alpha:.4g}° exceeds the allowance {allow[part]:g}° (at δ = {at:.4g}°)")
+    if roller:
+        rho, at = cam.rho_min()
+        if rr >= rho:
+            out.append(f"undercut: rr = {rr:g} ≥ ρmin = {rho:.4g} of the pitch curve (at δ = {at:.4g}°); the profile "
+                       "is trimmed and the follower's motion is distorted there (增大基圆或减小滚子半径)")
+        elif rho < ROLLER_WARN * rr:
+            out.append(f"ρmin = {rho:.4g} of the pitch curve is below {ROLLER_WARN:g}·rr = {ROLLER_WARN * rr:g}: "
+                       f"the actual profile's ρa = {rho - rr:.4g} is small (wear, contact stress)")
+    return out
+
+
+# ---------------------------------------------------------------------------------------------- step ops
+def arm_normal(A: Point, B: Point, O: Point, k: float) -> Point:
+    """Direction of the contact normal at the roller centre B of an arm pivoted at A: towards the relative
+    instant centre P of cam and arm on the line A→O, AP = |AO|/(1 − k) (k = the arm's angular velocity over
+    the cam's, signed), written without the division, (O − A) + (1 − k)(A − B), so that it stays finite
+    when P goes to infinity."""
+    return (O - A) + (A - B) * (1.0 - k)
+
+
+def arm_pressure_deg(A: Point, B: Point, O: Point, k: float) -> float:
+    """Pressure angle (deg) at the roller centre B of an arm pivoted at A: the acute angle between the
+    contact normal (:func:`arm_normal`) and the roller's velocity, perpendicular to AB.
+
+    Examples
+    --------
+    >>> round(arm_pressure_deg(Point(0, 0), Point(0, -10), Point(0, -20), 0.0), 12)   # B on AO: normal ⊥ v
+    90.0
+    >>> round(arm_pressure_deg(Point(0, 100), Point(-30, 60), Point(0, 0), 0.0), 9)  # dwell: normal through O
+    26.565051177
+    """
+    n, v = arm_normal(A, B, O, k), (B - A).perp()
+    return math.degrees(math.atan2(abs(n.cross(v)), abs(n.dot(v))))
+
+
+def arm_velocity(A: Point, B: Point, sense: int) -> Point:
+    """The roller's velocity direction at B: perpendicular to the arm AB, turned the way the arm swings
+    (``sense`` = +1 counter-clockwise, −1 clockwise)."""
+    return (B - A).perp() * sense
+
+
+def velocity_segment(B: Point, v: Point, size: float) -> Segment:
+    """The roller's direction of motion drawn from B, ``size`` long."""
+    return Segment(B, B + v.unit() * size)
+
+
+def laid_off(C: Point, A: Point, cam: OscillatingCam, delta_deg: float) -> Point:
+    """The pitch point: C (the arm's initial end in its inverted position) turned about A0′ by ψ(δ) in the
+    arm's rise sense."""
+    return rotate(C, A, cam.tau * float(cam.motion(delta_deg).psi))
+
+
+def speed_ratio(cam: OscillatingCam, delta_deg: float, part: str | None = None) -> float:
+    """k = εψ′(δ): the arm's angular velocity over the cam's, signed (same sense positive); with ``part``
+    ("rise", "return") the value inside that segment (one-sided at its ends, where ψ′ may jump)."""
+    if part is None:
+        return cam.eps * float(cam.motion(delta_deg).d1)
+    k = next(i for i, s in enumerate(cam.program.segments) if s.kind == part)
+    seg = cam.program.segments[k]
+    x = min(max((delta_deg - seg.start) / seg.angle, 0.0), 1.0)
+    return cam.eps * float(segment_motion(seg, levels(cam.program, cam.h)[k], cam.h, x).d1)
+
+
+def worst(cam: OscillatingCam, part: str) -> tuple[float, float]:
+    """(α_max, δ) of the rise or the return (closed form, exact-derivative search)."""
+    return cam.worst_pressure(part)
+
+
+def pick(pair: tuple[float, float], i: int) -> float:
+    """One member of a pair."""
+    return pair[i]
+
+
+def collect(*values: Any) -> tuple[float, ...]:
+    """The values as a tuple (a list answer)."""
+    return tuple(float(v) for v in values)
+
+
+def coord(p: Point, axis: int) -> float:
+    """x (axis 0) or y (axis 1) of a point."""
+    return p.x if axis == 0 else p.y
+
+
+def normal_line(A: Point, B: Point, O: Point, k: float) -> Line:
+    """The contact normal through B (for the roller's contact point)."""
+    return Line(B, arm_normal(A, B, O, k))
+
+
+# ---------------------------------------------------------------------------------------------- construction
+class _Inversion:
+    """Adds the steps of one inverted position: pivot A0′, initial arm end C, pitch point B."""
+
+    def __init__(self, sc: Scene, cam: OscillatingCam, O: Ref, A0: Ref, B0: Ref) -> None:
+        self.sc, self.cam, self.O, self.A0, self.B0 = sc, cam, O, A0, B0
+
+    def position(self, key: str, delta: Any, *, label: str | None = None, caption: tuple[str, str] = ("", ""),
+                 visible: bool = True) -> tuple[Ref, Ref, Ref]:
+        """(A0′, C, B) at cam angle ``delta`` (deg, a number or a reference)."""
+        sc, inv = self.sc, -float(self.cam.sigma)
+        A = sc.add(f"A_{key}", turned, self.A0, self.O, inv, delta, label=label, style="point", caption=caption,
+                   visible=visible)
+        C = sc.add(f"C_{key}", turned, self.B0, self.O, inv, delta, style="point", visible=visible)
+        B = sc.add(f"B_{key}", laid_off, C, A, self.cam, delta, style="point", visible=visible)
+        return A, C, B
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build the inversion construction."""
+    cam = cam_of(g)
+    a, L, r0, h, prog = cam.a, cam.L, cam.r0, cam.h, cam.program
+    roller = g["follower"] == "roller"
+    rr = float(g.get("rr") or 0.0)
+    back = ("clockwise", "顺时针") if cam.sigma > 0 else ("counter-clockwise", "逆时针")
+    sc = Scene(f"Disc cam with an oscillating {g['follower']} follower: inversion")
+    O = add_cam_centre(sc)
+    A0 = add_pivot(sc, "A0", Point(0.0, a), (f"Arm pivot A0 with OA0 = a = {a:g}", f"摆杆转轴 A0,OA0 = a = {a:g}"),
+                   ground_angle=math.pi / 2)
+    sc.add("OA0", segment, O, A0, role=Role.GIVEN, style="frame")
+    base = add_base_circle(sc, O, r0)
+    kL = sc.add("kL0", circle, A0, L, caption=(f"Arc about A0 with radius L = {L:g}", f"以 A0 为圆心、L = {L:g} 为半径作弧"))
+    side = RightOf(A0, O) if cam.tau < 0 else LeftOf(A0, O)
+    B0 = sc.add("B0", circle_circle, kL, base, branch=side, role=Role.RESULT, style="joint", label="B0",
+                caption=("It meets the base circle at B0: the arm's lowest position A0B0",
+                         "交基圆于 B0,得摆杆起始位置 A0B0"))
+    add_bar(sc, "arm0", A0, B0)
+    psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
+                  caption=("Measure ψ0 = ∠OA0B0", "量得初始摆角 ψ0 = ∠OA0B0"))
+    add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
+    sc.add("kA", circle, O, a, caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
+                                        f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
+    inv = _Inversion(sc, cam, O, A0, B0)
+    divs = _division_angles(g, cam)
+    R = max(a, r0 + math.radians(h) * L + rr)
+    add_motion_diagram(sc, prog, h, Point(1.55 * R, -0.5 * R), 2.2 * R, 0.5 * R / h, divs, symbol="ψ", unit="°")
+    n = len(divs)
+    As = [sc.add(f"A_d{i}", turned, A0, O, -float(cam.sigma), d, label=f"{i}′", style="point", caption=(
+        f"Divide the circle of radius a {back[0]} (−ω) from A0 as the cam angles of the divisions: 1′ … {n}′ "
+        "(the pivot's inverted positions)",
+        f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′(摆杆转轴的反转位置)")
+        if i == 1 else ("", "")) for i, d in enumerate(divs, 1)]
+    Cs = []
+    for i, (A, d) in enumerate(zip(As, divs), 1):
+        Cs.append(sc.add(f"C_d{i}", turned, B0, O, -float(cam.sigma), d, style="point", caption=(
+            f"Arcs of radius L about 1′ … {n}′ meet the base circle at C1 … C{n} (the arm's initial position "
+            "turned with the frame)", f"以 1′ … {n}′ 为圆心、L 为半径作弧交基圆于 C1 … C{n}(摆杆起始位置随机架反转)")
+            if i == 1 else ("", "")))
+        sc.add(f"arc_d{i}", circle, A, L)
+    Bs = []
+    for i, (A, C, d) in enumerate(zip(As, Cs, divs), 1):
+        Bs.append(sc.add(f"B_d{i}", laid_off, C, A, cam, d, style="point", caption=(
+            "Lay off the arm angles ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, …: ∠CiA0′Bi = ψi, A0′Bi = L, "
+            "points B1 … B" + str(n), "在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …:∠Ci A0′ Bi = ψi,得 B1 … B"
+            + str(n)) if i == 1 else ("", "")))
+        sc.add(f"arm_d{i}", segment, A, Bs[-1], style="ghost")
+    top = prog.rise.end
+    At, Ct, Bt = inv.position("top", top, visible=False)
+    sc.add("psi_max", angle_deg, At, Ct, Bt, role=Role.MEASUREMENT, unit="deg",
+           caption=(f"Measure the stroke ψmax = ∠CA0′B at the end of the rise, δ = {top:g}°",
+                    f"量得推程终点(δ = {top:g}°)的最大摆角 ψmax = ∠CA0′B"))
+    curve = sc.given("pitch", cam.pitch_curve(), visible=False)
+    sc.add("pitch_curve", pitch_polyline, curve, style="frame" if roller else "link", role=Role.RESULT,
+           caption=("Join B1, B2, … by a smooth curve: the pitch curve" + ("" if roller else " (the knife edge's profile)"),
+                    "将 B1、B2 … 连成光滑曲线,即理论廓线" + ("" if roller else "(尖顶从动件的实际廓线)")))
+    rho = sc.add("rho_pitch", rho_min, curve, visible=False)
+    sc.add("rho_min_pitch", extremum_value, rho, role=Role.MEASUREMENT, unit="mm",
+           caption=("ρmin of the pitch curve, from its exact derivatives", "由精确导数求理论廓线的最小曲率半径 ρmin"))
+    sc.add("rho_min_actual", minus, Ref("rho_min_pitch"), rr, role=Role.MEASUREMENT, unit="mm", visible=False)
+    sc.add("undercut", at_least, rr, Ref("rho_min_pitch"), visible=False) if roller else \
+        sc.add("undercut", bool, False, visible=False)
+    tol = profile_tolerance(g)
+    if roller:
+        add_roller_circles(sc, Bs, rr)
+        add_profile_steps(sc, roller_profile, (curve, rr, tol),
+                          ("Draw the inner envelope of the roller circles: the actual profile",
+                           "作滚子圆族的内包络线,即凸轮的实际廓线"))
+    else:
+        add_profile_steps(sc, roller_profile, (curve, 0.0, tol), ("", ""), style="link")
+    answers = {q: q for q in ("psi_max", "psi0", "rho_min_pitch", "rho_min_actual", "undercut")}
+    for part, zh in (("rise", "推程"), ("return", "回程")):
+        w = sc.add(f"worst_{part}", worst, cam, part, visible=False)
+        where = sc.add(f"delta_alpha_max_{part}", pick, w, 1, role=Role.MEASUREMENT, unit="deg", visible=False)
+        A, _, B = inv.position(f"w_{part}", where, caption=(
+            f"The {part}'s worst position (largest α): the arm A0′B and the common normal at B, through the relative "
+            "instant centre P of cam and arm on OA0′ (A0′P = a/(1 − εψ′))",
+            f"{zh}压力角最大的位置:摆杆 A0′B;过 B 的公法线通过凸轮与摆杆的相对瞬心 P(在 OA0′ 上,A0′P = a/(1 − εψ′))"))
+        add_bar(sc, f"warm_{part}", A, B, style="link-alt")
+        k = sc.add(f"k_{part}", speed_ratio, cam, where, part, visible=False)
+        n = sc.add(f"n_{part}", arm_normal, A, B, O, k, visible=False)
+        v = sc.add(f"v_{part}", arm_velocity, A, B, cam.tau if part == "rise" else -cam.tau, visible=False)
+        sc.add(f"normal_{part}", normal_segment, B, n, 0.6 * L, style="path")
+        sc.add(f"velocity_{part}", velocity_segment, B, v, 0.45 * L, style="ghost")
+        al = sc.add(f"alpha_max_{part}", arm_pressure_deg, A, B, O, k, role=Role.MEASUREMENT, unit="deg",
+                    caption=(f"α between the normal and the velocity of B (⊥ A0′B): the {part}'s α_max",
+                             f"法线与 B 点速度方向(⊥ A0′B)之夹角:{zh}最大压力角"))
+        sc.add(f"mark_alpha_{part}", pressure_mark, B, n, v, al, 0.3 * L, role=Role.ANNOTATION, style="angle")
+        answers[f"alpha_max_{part}"] = f"alpha_max_{part}"
+        answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
+    at = tuple(g.get("at") or ())
+    if at:
+        lists: dict[str, list[Ref]] = {k: [] for k in ("psi", "alpha", "pitch_x", "pitch_y", "profile_x", "profile_y")}
+        for j, d in enumerate(at):
+            A, C, B = inv.position(f"at{j}", d, visible=False)
+            k = sc.add(f"k_at{j}", speed_ratio, cam, d, visible=False)
+            lists["psi"].append(sc.add(f"psi_at{j}", angle_deg, A, C, B, visible=False))
+            lists["alpha"].append(sc.add(f"alpha_at{j}", arm_pressure_deg, A, B, O, k, visible=False))
+            lists["pitch_x"].append(sc.add(f"x_at{j}", coord, B, 0, visible=False))
+            lists["pitch_y"].append(sc.add(f"y_at{j}", coord, B, 1, visible=False))
+            if roller:
+                nl = sc.add(f"n_at{j}", normal_line, A, B, O, k, visible=False)
+                kr = sc.add(f"roller_at{j}", circle, B, rr, visible=False)
+                P = sc.add(f"P_at{j}", line_circle, nl, kr, branch=NearestTo(O), visible=False)
+                lists["profile_x"].append(sc.add(f"px_at{j}", coord, P, 0, visible=False))
+                lists["profile_y"].append(sc.add(f"py_at{j}", coord, P, 1, visible=False))
+        for name, refs in lists.items():
+            if refs:
+                sc.add(name, collect, *refs, role=Role.MEASUREMENT, visible=False)
+                answers[name] = name
+    return Construction(sc, answers, {p: p for p in POINTS})
+
+
+# ---------------------------------------------------------------------------------------------- twin
+def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """The closed forms by their separate routes (see the module docstring)."""
+    cam = cam_of(g)
+    roller = g["follower"] == "roller"
+    rr = float(g.get("rr") or 0.0)
+    rho = cam.rho_min(cam.convex_curvature_complex)[0]
+    out: dict[str, Any] = {
+        "psi_max": math.degrees(float(cam.motion(cam.program.rise.end).psi)),
+        "psi0": math.degrees(cam.psi0),
+        "rho_min_pitch": float(rho), "rho_min_actual": float(rho - rr), "undercut": bool(rr >= rho),
+    }
+    for kind in ("rise", "return"):
+        out[f"alpha_max_{kind}"], out[f"delta_alpha_max_{kind}"] = cam.worst_pressure(kind, route="arg")
+    at = tuple(g.get("at") or ())
+    if at:
+        d = np.asarray(at, dtype=float)
+        m = cam.motion(d)
+        x, y = cam.pitch_of(m)[:2]
+        out.update(psi=collect(*np.degrees(m.psi)), alpha=collect(*cam.pressure_arg(m)), pitch_x=collect(*x),
+                   pitch_y=collect(*y))
+        if roller:
+            px, py = cam.roller_contact(d, rr)
+            out.update(profile_x=collect(*px), profile_y=collect(*py))
+    return [out]
+
+
+RECIPE = Recipe(
+    name="cam.oscillating",
+    title="Disc cam with an oscillating follower: inversion, ψ0, pressure angle, ρmin, undercut",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=POINTS,
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+)

@@ -1,0 +1,441 @@
+"""``cam.translating``: a disc cam with a translating knife-edge, roller or flat-faced follower, drawn by the
+inversion method (反转法).
+
+Construction (O at the origin; the follower's axis vertical at x = e, moving up; δ = 0 is its lowest
+position B0 on the base circle): the follower is turned about O by −δ (cam turning counter-clockwise; +δ
+clockwise) to the textbook's equal divisions, its axis then tangent to the offset circle of radius |e|;
+the displacement s(δ) is laid off along each inverted axis from the base circle (1′, 2′, …); the pitch
+curve joins them (computed from the exact parametric form); the roller circles about it have the actual
+profile as inner envelope (a flat face: the envelope of the face lines). The pressure angle is measured on
+the pitch curve at its worst place (between the common normal and the follower's velocity), ρmin from the
+exact derivatives. ``r0`` is the base circle of the pitch curve (knife, roller) or of the profile (flat
+face, whose reference point is where its axis meets the face).
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+import numpy as np
+
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, backward_jumps, corners, envelope, envelope_rho_min,
+                           flat_profile, inverted, maximise, pressure_angle, pressure_angle_slope, rho_min,
+                           roller_profile)
+from ..cam.program import Program, parse_program
+from ..cam.translating import TranslatingCam
+from ..errors import NotAMechanism
+from ..geometry import Point, Segment, circle, distance, segment
+from ..scene import Ref, Role, Scene
+from ..scene import marks
+from .base import Construction, Quantity, Recipe
+from .cam_common import (AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
+                         add_profile_steps, add_roller_circles, at_least, division_angles, extremum_deg, extremum_value,
+                         inversion_sign, minus, normal_segment, pitch_polyline, positive, pressure_mark,
+                         profile_tolerance, program_breaks, require_full, turned)
+
+GIVENS = (
+    Quantity("follower", "choice", "follower type", minimum=None, choices=("knife", "roller", "flat")),
+    Quantity("r0", "mm", "base circle radius (of the pitch curve; of the profile for a flat face)"),
+    Quantity("h", "mm", "stroke of the follower"),
+    PROGRAM,
+    Quantity("e", "mm", "offset: e > 0 puts the follower's axis right of O (follower moving up)", required=False,
+             default=0.0, minimum=None),
+    Quantity("rr", "mm", "roller radius (roller followers only)", required=False, default=None),
+    ROTATION,
+    AT,
+    Quantity("alpha_allow", "deg", "allowed pressure angle (a warning when exceeded)", required=False, default=None),
+    TOL,
+    STRICT,
+)
+ANSWERS = (
+    Quantity("h", "mm", "stroke, measured between the lowest and highest inverted positions"),
+    Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
+    Quantity("delta_alpha_max_rise", "deg", "cam angle where it occurs"),
+    Quantity("alpha_max_return", "deg", "largest pressure angle during the return"),
+    Quantity("delta_alpha_max_return", "deg", "cam angle where it occurs"),
+    Quantity("rho_min_pitch", "mm", "smallest radius of curvature of the convex parts of the pitch curve"),
+    Quantity("rho_min_actual", "mm", "of the actual profile: ρmin − rr (roller), ρmin (knife), min(r0 + s + s″) (flat)"),
+    Quantity("undercut", "bool", "the profile cannot reproduce the motion (rr ≥ ρmin; flat face not convex)"),
+    Quantity("convex", "bool", "flat face: r0 + s + s″ > 0 everywhere and no velocity drop"),
+    Quantity("face_width_left", "mm", "flat face: reach of the contact left of the axis, max(e − k·s′)"),
+    Quantity("face_width_right", "mm", "flat face: reach of the contact right of the axis, max(k·s′ − e)"),
+    Quantity("face_width", "mm", "flat face: the face length the contact sweeps (left + right)"),
+    Quantity("s", "mm[]", "displacement at the cam angles of `at`"),
+    Quantity("alpha", "deg[]", "pressure angle at the cam angles of `at`"),
+)
+RISE_WARN = 3.0
+"""A warning when ρmin of the pitch curve is below this many roller radii."""
+
+
+def _givens(g: Mapping[str, Any]) -> tuple[Program, float, float, float, float, str, str]:
+    prog = parse_program(g["program"])
+    return prog, float(g["h"]), float(g["r0"]), float(g.get("e") or 0.0), float(g.get("rr") or 0.0), \
+        g.get("rotation", "ccw"), g["follower"]
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    prog, h, r0, e, rr, rot, follower = _givens(g)
+    require_full(prog)
+    if prog.ret is None:
+        raise NotAMechanism("program: a cam needs a return segment (the follower must come back down)")
+    if follower != "roller" and g.get("rr") is not None:
+        raise NotAMechanism(f"rr = {rr:g} is given for a {follower} follower: only a roller follower has a roller")
+    if follower == "roller" and g.get("rr") is None:
+        raise NotAMechanism("a roller follower needs rr (the roller radius)")
+    if follower != "flat" and abs(e) >= r0:
+        raise NotAMechanism(f"offset |e| = {abs(e):g} ≥ r0 = {r0:g}: the follower's axis misses the base circle")
+    if rr >= r0:
+        raise NotAMechanism(f"rr = {rr:g} ≥ r0 = {r0:g}: the actual profile's base circle r0 − rr would vanish")
+    out = []
+    ans = analytic(g)[0]
+    if follower == "roller":
+        rho = ans["rho_min_pitch"]
+        if ans["undercut"]:
+            out.append(f"undercut: rr = {rr:g} ≥ ρmin = {rho:.4g} of the pitch curve; the profile is trimmed and "
+                       "the follower's motion is distorted there (增大基圆或减小滚子半径)")
+        elif rho < RISE_WARN * rr:
+            out.append(f"ρmin = {rho:.4g} of the pitch curve is below {RISE_WARN:g}·rr = {RISE_WARN * rr:g}: "
+                       f"the actual profile's ρa = {rho - rr:.4g} is small (wear, contact stress)")
+    if follower in ("knife", "roller"):
+        curve = _pitch_curve(prog, h, e, math.sqrt(r0 * r0 - e * e), inversion_sign(rot))
+        convex = [c for c in corners(curve) if c.turn > 0]
+        if convex:
+            at = ", ".join(f"{math.degrees(c.delta):g}°" for c in convex)
+            out.append(f"the pitch curve has a convex corner at δ = {at} (velocity drop, rigid impact)"
+                       + (": the roller cannot follow it exactly there" if follower == "roller" else ""))
+    if follower == "flat" and not ans["convex"]:
+        out.append(f"the flat face cannot follow the motion: min(r0 + s + s″) = {ans['rho_min_actual']:.4g}"
+                   + (" and the velocity drops suddenly (s′ jumps down)" if _s_drops(prog, h) else "")
+                   + "; the profile is trimmed (增大基圆 r0)")
+    allow = g.get("alpha_allow")
+    for part in ("rise", "return"):
+        a = ans[f"alpha_max_{part}"]
+        if allow is not None and a > allow:
+            out.append(f"α_max of the {part} = {a:.4g}° exceeds alpha_allow = {allow:g}° "
+                       f"(at δ = {ans.get(f'delta_alpha_max_{part}', 0.0):.4g}°)")
+    return out
+
+
+def _s_drops(prog: Program, h: float) -> bool:
+    return any(i.kind == "rigid" and i.jump < 0 for i in prog.impacts(h))
+
+
+# ---------------------------------------------------------------------------------------------- the curves
+def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> PitchCurve:
+    """The pitch curve: the follower's point (e, s0 + s) turned about O by inv·δ, exact derivatives."""
+    rotation = "ccw" if inv < 0 else "cw"
+
+    def fn(d):
+        s, v, a = prog.motion(h, d, radians=True)
+        z = np.zeros_like(d)
+        return inverted(d, rotation, (e + z, s0 + s), (z, v), (z, a))
+
+    return PitchCurve(fn, program_breaks(prog))
+
+
+def _face_family(prog: Program, h: float, r0: float, inv: float) -> LineFamily:
+    """The flat face's lines: normal n = (cos φ, sin φ), φ = 90° + inv·δ, at distance p = r0 + s from O."""
+
+    def fn(d):
+        s, v, a = prog.motion(h, d, radians=True)
+        z = np.zeros_like(d)
+        return math.pi / 2 + inv * d, inv + z, z, r0 + s, v, a
+
+    return LineFamily(fn, program_breaks(prog))
+
+
+def _axis(inv: float, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Unit direction of the follower's motion in its inverted position."""
+    return -np.sin(inv * d), np.cos(inv * d)
+
+
+def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float) -> Extremum:
+    """The largest pressure angle (deg) over cam angles [start, end), measured on the pitch curve between
+    the normal and the follower's velocity, and where (radians)."""
+
+    def g(d):
+        return np.degrees(pressure_angle(curve.eval(d), *_axis(inv, d)))
+
+    def slope(d):
+        return pressure_angle_slope(curve.eval(d), *_axis(inv, d), inv)
+
+    return maximise(g, [(math.radians(start_deg), math.radians(end_deg))], slope=slope)
+
+
+def alphas_at(curve: PitchCurve, inv: float, at: tuple[float, ...]) -> tuple[float, ...]:
+    """Pressure angles (deg) at the cam angles ``at`` (deg), measured on the pitch curve."""
+    d = np.radians(np.asarray(at, dtype=float))
+    return tuple(float(x) for x in np.degrees(pressure_angle(curve.eval(d), *_axis(inv, d))))
+
+
+def flat_alphas_at(fam: LineFamily, inv: float, at: tuple[float, ...]) -> tuple[float, ...]:
+    """Pressure angles (deg) of the flat face at ``at``: between the face's normal and the velocity."""
+    d = np.radians(np.asarray(at, dtype=float))
+    phi = fam.eval(d)[0]
+    ux, uy = _axis(inv, d)
+    return tuple(float(x) for x in np.degrees(np.arctan2(np.abs(np.cos(phi) * uy - np.sin(phi) * ux),
+                                                         np.abs(np.cos(phi) * ux + np.sin(phi) * uy))))
+
+
+def displacements(O: Point, prog: Program, h: float, e: float, s0: float, inv: float, at: tuple[float, ...]) -> tuple[float, ...]:
+    """s at ``at``: the distance from the base circle to the inverted follower point, along the inverted axis."""
+    out = []
+    for dv in at:
+        s = float(prog.motion(h, dv)[0])
+        C, B = turned(Point(e, s0), O, inv, dv), turned(Point(e, s0 + s), O, inv, dv)
+        u = turned(Point(0.0, 1.0), Point(0.0, 0.0), inv, dv)
+        out.append((B - C).dot(u))
+    return tuple(out)
+
+
+def stroke(C: Point, B: Point) -> float:
+    """The stroke read off the inversion: |CB| at the end of the rise."""
+    return distance(C, B)
+
+
+def face_extents(fam: LineFamily, prog: Program, h: float, r0: float, e: float, inv: float) -> tuple[float, float]:
+    """(left, right) reach of the contact along the face from the follower's axis, measured on the envelope."""
+
+    def offset(d):
+        x, y, _, _ = envelope(fam, d)
+        s = prog.motion(h, d, radians=True)[0]
+        c, sn = np.cos(inv * d), np.sin(inv * d)
+        ax, ay = c * e - sn * (r0 + s), sn * e + c * (r0 + s)          # the axis on the face
+        return (x - ax) * c + (y - ay) * sn                            # along the turned +x
+
+    right = maximise(offset, fam.pieces()).value
+    left = maximise(lambda d: -offset(d), fam.pieces()).value
+    return max(0.0, left), max(0.0, right)
+
+
+def largest_extremum(*extrema: Extremum) -> Extremum:
+    """The extremum of largest value."""
+    return max(extrema, key=lambda x: x.value)
+
+
+def negate(b: bool) -> bool:
+    """not b."""
+    return not b
+
+
+def pick(pair: tuple[float, float], i: int) -> float:
+    """One member of a pair."""
+    return pair[i]
+
+
+def flat_convex(fam: LineFamily, rho: Extremum) -> bool:
+    """The flat face's profile is convex: ρ > 0 everywhere and the contact never jumps back."""
+    return rho.value > 0.0 and not backward_jumps(fam)
+
+
+def worst_point(O: Point, prog: Program, h: float, e: float, s0: float, inv: float, w: Extremum) -> Point:
+    """The inverted follower point at the worst cam angle."""
+    return turned(Point(e, s0 + float(prog.motion(h, w.delta, radians=True)[0])), O, inv, w.delta_deg)
+
+
+def worst_normal(curve: PitchCurve, w: Extremum) -> Point:
+    """The pitch curve's normal at the worst cam angle."""
+    c6 = curve.eval(np.array([w.delta]))
+    return Point(-float(c6[3][0]), float(c6[2][0]))
+
+
+def worst_axis(inv: float, w: Extremum) -> Point:
+    """The follower's velocity direction at the worst cam angle."""
+    ux, uy = _axis(inv, np.array([w.delta]))
+    return Point(float(ux[0]), float(uy[0]))
+
+
+def axis_segment(P: Point, u: Point, back: float, ahead: float) -> Segment:
+    """The follower's axis through P: ``back`` behind, ``ahead`` in front."""
+    return Segment(P - u * back, P + u * ahead)
+
+
+def face_segment(B: Point, O: Point, inv: float, delta_deg: float, left: float, right: float) -> Segment:
+    """The flat face through B in its inverted position, reaching ``left`` and ``right`` of the axis."""
+    x = turned(Point(1.0, 0.0), Point(0.0, 0.0), inv, delta_deg)
+    return Segment(B - x * left, B + x * right)
+
+
+def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr: float, r0: float, B0) -> None:
+    """The follower in its lowest position: stem, guide, roller or face."""
+    top = Point(e, s0 + h + 0.55 * r0 + rr)
+    sc.add("stem", segment, B0 if follower != "roller" else Point(e, s0 + rr), top, style="link", role=Role.RESULT,
+           caption=("The follower in its lowest position", "从动件处于最低位置"))
+    half = 0.06 * r0 + 1.0
+    g0, g1 = Point(e, s0 + h + 0.2 * r0 + rr), Point(e, s0 + h + 0.45 * r0 + rr)
+    sc.add("guide_l", marks.guide, g0 - Point(half, 0), g1 - Point(half, 0), -1, role=Role.ANNOTATION, style="guide")
+    sc.add("guide_r", marks.guide, g0 + Point(half, 0), g1 + Point(half, 0), 1, role=Role.ANNOTATION, style="guide")
+    if follower == "roller":
+        sc.add("roller_start", circle, B0, rr, style="link", role=Role.RESULT)
+    if follower == "flat":
+        w = 0.45 * r0
+        sc.add("face_start", segment, Point(e - w, s0), Point(e + w, s0), style="link", role=Role.RESULT)
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build the inversion."""
+    prog, h, r0, e, rr, rot, follower = _givens(g)
+    require_full(prog)
+    inv, flat = inversion_sign(rot), follower == "flat"
+    s0 = r0 if flat else math.sqrt((r0 - e) * (r0 + e))
+    tol = profile_tolerance(g)
+    at = tuple(g.get("at") or ())
+    turn_en, turn_zh = ("clockwise", "顺时针") if inv < 0 else ("counter-clockwise", "逆时针")
+    sc = Scene(f"Disc cam with a translating {follower} follower: inversion")
+    O = add_cam_centre(sc)
+    add_base_circle(sc, O, r0, ("profile", "实际廓线") if flat else ("pitch curve", "理论廓线"))
+    if e != 0.0:
+        sc.add("offset_circle", circle, O, abs(e), style="path",
+               caption=(f"Offset circle of radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
+    B0 = sc.given("B0", Point(e, s0), label="B0", style="joint",
+                  caption=(f"B0: the follower's lowest point, on its axis x = e = {e:g}",
+                           f"B0:从动件最低位置,导路 x = e = {e:g}"))
+    _start_follower(sc, follower, e, s0, h, rr, r0, B0)
+    divs = division_angles(prog)
+    R = r0 + h + rr
+    add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 2.2 * R, 1.0, divs)
+    # the inversion: the follower's axis turned about O by −δ (ccw cam) to every division
+    foot = Point(e, 0.0)
+    for i, dv in enumerate(divs, 1):
+        K = sc.add(f"K{i}", turned, foot, O, inv, dv, visible=False)
+        E = sc.add(f"E{i}", turned, Point(e, s0 + h + 0.12 * r0), O, inv, dv, visible=False)
+        sc.add(f"L{i}", segment, K, E, style="construction",
+               caption=(f"Turn the follower about O {turn_en} (−ω) to the divisions 1, 2, …: its axis stays tangent "
+                        f"to the offset circle" if e else f"Turn the follower about O {turn_en} (−ω) to the divisions 1, 2, …",
+                        f"按 −ω 方向({turn_zh})将从动件导路绕 O 转到各等分位置 1, 2, …" + ("(与偏距圆相切)" if e else "")) if i == 1 else ("", ""))
+    Bs, Cs = [], []
+    for i, dv in enumerate(divs, 1):
+        s = float(prog.motion(h, dv)[0])
+        Cs.append(sc.add(f"C{i}", turned, B0, O, inv, dv, visible=False))
+        Bs.append(sc.add(f"B{i}", turned, Point(e, s0 + s), O, inv, dv, style="point", label=f"{i}′",
+                         caption=("Lay off the displacements s1, s2, … from the base circle along the inverted axes: "
+                                  "points 1′, 2′, …", "在各反转导路上自基圆量取位移 s1, s2, …,得 1′, 2′, …") if i == 1 else ("", "")))
+    rise_end = divs.index(round(prog.rise.end, 9)) if round(prog.rise.end, 9) in divs else None
+    if rise_end is None:
+        raise NotAMechanism("program: the rise must end before 360°")
+    sc.add("h", stroke, Cs[rise_end], Bs[rise_end], role=Role.MEASUREMENT, unit="mm", visible=False)
+    answers = {"h": "h", "rho_min_actual": "rho_min_actual", "undercut": "undercut",
+               "alpha_max_rise": "alpha_max_rise", "alpha_max_return": "alpha_max_return"}
+    ret = prog.ret
+    if flat:
+        fam = sc.given("faces", _face_family(prog, h, r0, inv), visible=False)
+        ext = sc.add("face_ext", face_extents, fam, prog, h, r0, e, inv, visible=False)
+        sc.add("face_width_left", pick, ext, 0, role=Role.MEASUREMENT, unit="mm", visible=False)
+        sc.add("face_width_right", pick, ext, 1, role=Role.MEASUREMENT, unit="mm", visible=False)
+        sc.add("face_width", sum, ext, role=Role.MEASUREMENT, unit="mm", visible=False)
+        rho = sc.add("rho_flat", envelope_rho_min, fam, visible=False)
+        sc.add("rho_min_actual", extremum_value, rho, role=Role.MEASUREMENT, unit="mm", visible=False)
+        sc.add("convex", flat_convex, fam, rho, visible=False)
+        sc.add("undercut", negate, sc_ref("convex"), visible=False)
+        sc.add("alpha_max_rise", float, 0.0, visible=False)
+        sc.add("alpha_max_return", float, 0.0, visible=False)
+        answers.update({k: k for k in ("face_width_left", "face_width_right", "face_width", "convex")})
+        for i, (B, dv) in enumerate(zip(Bs, divs)):
+            sc.add(f"F{i + 1}", face_segment, B, O, inv, dv, 0.3 * r0, 0.3 * r0, style="path",
+                   caption=("Draw the face in each inverted position, perpendicular to the axis",
+                            "过 1′, 2′, … 作各反转位置的平底(垂直于导路)") if i == 0 else ("", ""))
+        add_profile_steps(sc, flat_profile, (fam, tol),
+                          ("Draw the envelope of the faces: the actual profile", "作各平底直线的包络线,即凸轮的实际廓线"))
+        if at:
+            sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
+            sc.add("alpha", flat_alphas_at, fam, inv, at, visible=False)
+    else:
+        curve = sc.given("pitch", _pitch_curve(prog, h, e, s0, inv), visible=False)
+        sc.add("pitch_curve", pitch_polyline, curve, style="frame" if follower == "roller" else "link",
+               role=Role.RESULT,
+               caption=("Join 1′, 2′, … by a smooth curve: the pitch curve" +
+                        (" (the profile of a knife edge)" if follower == "knife" else ""),
+                        "将 1′, 2′, … 连成光滑曲线,即理论廓线" + ("(尖顶从动件的实际廓线)" if follower == "knife" else "")))
+        rho = sc.add("rho_pitch", rho_min, curve, visible=False)
+        sc.add("rho_min_pitch", extremum_value, rho, role=Role.MEASUREMENT, unit="mm", visible=False)
+        answers["rho_min_pitch"] = "rho_min_pitch"
+        sc.add("rho_min_actual", minus, sc_ref("rho_min_pitch"), rr, role=Role.MEASUREMENT, unit="mm", visible=False)
+        sc.add("undercut", at_least, rr, sc_ref("rho_min_pitch"), visible=False) if follower == "roller" else \
+            sc.add("undercut", bool, False, visible=False)
+        for part, seg in (("rise", prog.rise), ("return", ret)):
+            if seg is None:
+                sc.add(f"alpha_max_{part}", float, 0.0, visible=False)
+                continue
+            w = sc.add(f"worst_{part}", worst_alpha, curve, inv, seg.start, seg.end, visible=False)
+            sc.add(f"alpha_max_{part}", extremum_value, w, role=Role.MEASUREMENT, unit="deg", visible=False)
+            sc.add(f"delta_alpha_max_{part}", extremum_deg, w, role=Role.MEASUREMENT, unit="deg", visible=False)
+            answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
+        if follower == "roller":
+            add_roller_circles(sc, Bs, rr)
+            add_profile_steps(sc, roller_profile, (curve, rr, tol),
+                              ("Draw the inner envelope of the roller circles: the actual profile",
+                               "作滚子圆族的内包络线,即凸轮的实际廓线"))
+        else:
+            add_profile_steps(sc, roller_profile, (curve, 0.0, tol), ("", ""), style="link")
+        _mark_worst(sc, O, prog, h, e, s0, inv, r0, curve)
+        if at:
+            sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
+            sc.add("alpha", alphas_at, curve, inv, at, visible=False)
+    if at:
+        answers.update({"s": "s", "alpha": "alpha"})
+    return Construction(sc, answers, {"O": "O", "B0": "B0"})
+
+
+def sc_ref(key: str) -> Ref:
+    """A reference to an earlier step."""
+    return Ref(key)
+
+
+def _mark_worst(sc: Scene, O, prog: Program, h: float, e: float, s0: float, inv: float, r0: float, curve) -> None:
+    """The pressure angle marked where it is largest (rise or return)."""
+    parts = [p for p in ("rise", "return") if f"worst_{p}" in sc]
+    worst = sc.add("worst", largest_extremum, *[sc_ref(f"worst_{p}") for p in parts], visible=False)
+    P = sc.add("P_alpha", worst_point, O, prog, h, e, s0, inv, worst, style="joint", label="B*",
+               caption=("The largest pressure angle: position B*", "最大压力角位置 B*"))
+    n = sc.add("n_alpha", worst_normal, curve, worst, visible=False)
+    u = sc.add("u_alpha", worst_axis, inv, worst, visible=False)
+    size = 0.35 * r0
+    sc.add("normal_alpha", normal_segment, P, n, size, style="construction",
+           caption=("Common normal n–n at B*", "过 B* 作公法线 n–n"))
+    sc.add("axis_alpha", axis_segment, P, u, 0.2 * r0, size, style="construction")
+    value = sc.add("alpha_worst", extremum_value, worst, visible=False)
+    sc.add("mark_alpha", pressure_mark, P, n, u, value, 0.25 * r0, role=Role.ANNOTATION, style="angle")
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """The closed forms of :mod:`geomcon.cam.translating`."""
+    prog, h, r0, e, rr, rot, follower = _givens(g)
+    at = tuple(g.get("at") or ())
+    flat = follower == "flat"
+    cam = TranslatingCam(prog, h, r0, 0.0 if flat else e, rot)
+    out: dict[str, Any] = {"h": h}
+    if flat:
+        left, right = TranslatingCam(prog, h, r0, e, rot).face_extent()
+        rho = cam.flat_rho_min()
+        convex = rho > 0.0 and not _s_drops(prog, h)
+        out.update({"alpha_max_rise": 0.0, "alpha_max_return": 0.0, "rho_min_actual": rho, "convex": convex,
+                    "undercut": not convex, "face_width_left": left, "face_width_right": right,
+                    "face_width": left + right})
+        if at:
+            out["s"] = tuple(float(x) for x in prog.motion(h, np.asarray(at, dtype=float))[0])
+            out["alpha"] = tuple(0.0 for _ in at)
+        return [out]
+    rho = cam.rho_min_pitch()
+    out.update({"rho_min_pitch": rho, "rho_min_actual": rho - rr, "undercut": follower == "roller" and rr >= rho})
+    for part, seg in (("rise", prog.rise), ("return", prog.ret)):
+        if seg is None:
+            out[f"alpha_max_{part}"] = 0.0
+            continue
+        a, d = cam.alpha_max(part)
+        out[f"alpha_max_{part}"], out[f"delta_alpha_max_{part}"] = a, d
+    if at:
+        out["s"] = tuple(float(x) for x in prog.motion(h, np.asarray(at, dtype=float))[0])
+        out["alpha"] = tuple(float(x) for x in cam.alpha(np.asarray(at, dtype=float)))
+    return [out]
+
+
+RECIPE = Recipe(
+    name="cam.translating",
+    title="Disc cam, translating follower (knife, roller, flat face): profile by inversion, α, ρmin, undercut",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=("O", "B0"),
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+)
