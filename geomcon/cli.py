@@ -50,6 +50,9 @@ def cmd_solve(args: argparse.Namespace) -> int:
         if args.steps:
             for k, frame in enumerate(sol.frames(), 1):
                 files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
+        if getattr(args, "profile_csv", None):
+            from .recipes.cam_common import profile_csv
+            files[Path(args.profile_csv)] = profile_csv(sol.scene, sol.recipe.name)
         write_all(files)
     except GeomconError as exc:
         return _fail(path, str(exc))
@@ -123,6 +126,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--svg", metavar="OUT", help="write the annotated drawing")
     s.add_argument("--steps", metavar="DIR", help="write one SVG per construction step")
     s.add_argument("--html", metavar="OUT", help="write a self-contained step player page")
+    s.add_argument("--profile-csv", metavar="OUT", help="cam recipes: write the actual profile as x,y,delta (mm, mm, deg)")
     s.set_defaults(func=cmd_solve)
     r = sub.add_parser("recipes", help="list recipes with their given and answer names")
     r.add_argument("--json", action="store_true")
@@ -144,6 +148,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
         return args.func(args)
+    except BrokenPipeError:     # `geomcon recipes | head`: the reader has gone; nothing is wrong
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except Exception as exc:  # a defect of geomcon, not of the input: still one line, no traceback
         if os.environ.get("GEOMCON_DEBUG"):
             raise

@@ -14,10 +14,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..fileio import write_all
+from .cam import cam_table, measure_cam
 from .exact import exact_table, measure_exact
 from .measure import CASES, FULL, QUICK, Case, Config, DrawRow, ErrorRow, measure_drawing, measure_extremes
 from .plot import render_plot
 from .report import report
+from .synthesis import measure_synthesis, synthesis_table
 
 
 def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
@@ -34,6 +36,8 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
     extremes = measure_extremes(config)
     drawing = measure_drawing(config)
     text = report(extremes, drawing, quick=quick) + "\n\n" + exact_table(measure_exact(1 if quick else 3))
+    text += "\n\n" + synthesis_table(measure_synthesis(1 if quick else 3))
+    text += "\n\n" + cam_table(measure_cam(quick))
     write_all({out: render_plot(extremes, quick=quick)})
     print(text + f"\nplot written to {out}")
     return 0
