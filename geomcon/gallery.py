@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from .cam.laws import LAW_NAMES
 from .errors import GeomconError
 from .problems import load_problem
 from .solve import Solution, solve
@@ -43,10 +44,15 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
         files[f"{pid}.json"] = to_json_text(sol)       # answers first: the JSON's stats show the lazy count
         files[f"{pid}.svg"] = sol.svg()
         files[f"{pid}.html"] = sol.html()
-        answers = ", ".join(f"{k} = {v:.4g}" for k, v in list(sol.answers.items())[:4])
+        extra = ""
+        if "program" in sol.problem.given and sol.problem.given.get("h") is not None:
+            files[f"{pid}_motion.svg"] = problem_motion_svg(sol)
+            extra = f" ([s–v–a]({pid}_motion.svg))"
+        answers = ", ".join(f"{k} = {_short(v)}" for k, v in list(sol.answers.items())[:4])
         devs = "; ".join(_deviation(r) for r in sol.published) or "—"
-        rows.append(f"| [{pid}]({pid}.svg) ([player]({pid}.html)) | `{sol.recipe.name}` | {answers} | {devs} |")
+        rows.append(f"| [{pid}]({pid}.svg) ([player]({pid}.html)){extra} | `{sol.recipe.name}` | {answers} | {devs} |")
     files["004-02_best_by_K_table.md"] = best_by_k_table()
+    files.update(law_diagrams())
     files["README.md"] = "\n".join([
         "# Gallery",
         "",
@@ -56,12 +62,48 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
         "The full optimum table of seed 004 (crank-slider, best working-stroke transmission angle) is in "
         "[004-02_best_by_K_table.md](004-02_best_by_K_table.md).",
         "",
+        "The five motion laws' s–v–a diagrams (rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm): "
+        + ", ".join(f"[{n}](law_{n}.svg)" for n in LAW_NAMES) + ".",
+        "",
         "| problem | recipe | answers | printed answers (deviation from exact) |",
         "|---|---|---|---|",
         *rows,
         "",
     ])
     return files
+
+
+def _short(v) -> str:
+    """An answer for the index table: 4 significant digits, lists and bools as they read."""
+    if isinstance(v, bool):
+        return str(v).lower()
+    if isinstance(v, (tuple, list)):
+        return "[" + ", ".join(f"{x:.4g}" for x in v[:4]) + (", …]" if len(v) > 4 else "]")
+    return f"{v:.4g}"
+
+
+def problem_motion_svg(sol: Solution) -> str:
+    """The s–v–a diagrams of a cam problem's motion program."""
+    from .cam.diagrams import motion_diagrams_svg
+    from .cam.program import parse_program
+
+    g = sol.problem.given
+    unit = "°" if sol.recipe.name == "cam.oscillating" else "mm"
+    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=f"{sol.problem.id}: s–δ, v–δ, a–δ", unit=unit)
+
+
+def law_diagrams() -> dict[str, str]:
+    """One s–v–a sheet per motion law: rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm."""
+    from .cam.diagrams import motion_diagrams_svg
+    from .cam.laws import LAWS
+    from .cam.program import parse_program
+
+    out = {}
+    for name, lw in LAWS.items():
+        prog = parse_program([{"kind": "rise", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90},
+                              {"kind": "return", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90}])
+        out[f"law_{name}.svg"] = motion_diagrams_svg(prog, 20.0, title=f"{name} ({lw.zh}), impact: {lw.impact}")
+    return out
 
 
 def best_by_k_table(H: float = 100.0) -> str:

@@ -208,16 +208,20 @@ class Solution:
             if q.name not in self.answers:
                 continue
             unit = {"deg": "°", "mm": " mm"}.get(q.unit.removesuffix("[]"), "")
-            for name, v, _ in _pairs(q.name, self.answers[q.name], self.answers[q.name]):
-                row = next((r for r in self.checks if r["quantity"] == name), None)
-                mark = "" if row is None else (" ✓ twin" if row["ok"] else " ✗ twin")
-                shown = str(v).lower() if isinstance(v, bool) else f"{v:.4f}{unit}"
-                line = f"{name} = {shown}{mark}"
-                if name in pub:
-                    p = pub[name]
-                    rel = "" if p["rel_deviation"] is None else f", {100 * p['rel_deviation']:+.2f} %"
-                    line += f"  (printed {p['published']:g}{rel})"
-                lines.append(line)
+            parts = _pairs(q.name, self.answers[q.name], self.answers[q.name])
+            rows = [r for r in self.checks if any(r["quantity"] == name for name, _, _ in parts)]
+            mark = "" if not rows else (" ✓ twin" if all(r["ok"] for r in rows) else " ✗ twin")
+            shown = ", ".join(str(v).lower() if isinstance(v, bool) else f"{v:.4f}" for _, v, _ in parts)
+            shown = f"[{shown}]{unit}" if len(parts) > 1 or q.unit.endswith("[]") else shown + ("" if isinstance(parts[0][1], bool) else unit)
+            line = f"{q.name} = {shown}{mark}"
+            printed = [pub[name] for name, _, _ in parts if name in pub]
+            if printed:
+                rels = [p["rel_deviation"] for p in printed if p["rel_deviation"] is not None]
+                worst = f", worst {100 * max(rels, key=abs):+.2f} %" if rels and len(parts) > 1 else (
+                    f", {100 * rels[0]:+.2f} %" if rels else "")
+                values = ", ".join(f"{p['published']:g}" for p in printed)
+                line += f"  (printed {values}{worst})"
+            lines.append(line)
         return lines
 
     def title(self) -> str:

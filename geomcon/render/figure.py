@@ -30,7 +30,7 @@ from .placement import Placer
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
-from .view import FIG_MARGIN, Box, View, choose_scale, grow
+from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
 CROWDED = 0.5              # a text placed with less clearance (paper mm) tries its shorter form
@@ -137,21 +137,22 @@ def content_box(scene: Scene, steps: list[tuple[int, Step]], values: dict[str, A
     return (x0 - dw, y0 - dh, x1 + dw, y1 + dh)
 
 
-def fit_view(content: Box) -> Box:
+def fit_view(content: Box, target: float = FIG_TARGET) -> Box:
     """The view box: the content plus :data:`FIG_MARGIN` paper mm on every side at the scale chosen."""
     w, h = content[2] - content[0], content[3] - content[1]
-    mu = choose_scale(w, h, FIG_MARGIN)
+    mu = choose_scale(w, h, FIG_MARGIN, target)
     return grow(content, FIG_MARGIN * mu)
 
 
 # ---------------------------------------------------------------------------------------------- building
 def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
-                 origin: tuple[float, float] = (0.0, 0.0)) -> Figure:
-    """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted."""
+                 origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET) -> Figure:
+    """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted;
+    ``target`` is the paper width aimed at."""
     steps, n = shown_steps(scene, upto)
     values = scene.evaluate([s.key for _, s in steps])
-    box = viewbox or fit_view(content_box(scene, steps, values))
-    view = View(box, choose_scale(box[2] - box[0], box[3] - box[1]), origin)
+    box = viewbox or fit_view(content_box(scene, steps, values), target)
+    view = View(box, choose_scale(box[2] - box[0], box[3] - box[1], 0.0, target), origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
     ctx = Context(view, pts, _centre(view, pts))
     current = n if upto is not None else None

@@ -30,7 +30,7 @@ from .figure import Figure, build_figure, content_box, fit_view, shown_steps
 from .protocol import info_height, layout, render_info, render_protocol
 from .shapes import to_svg
 from .style import CSS, FONT_FAMILY, INFO_SIZE, INK, PAPER, TITLE_SIZE
-from .view import Box, fmt, nice_values
+from .view import FIG_TARGET, Box, figure_target, fmt, nice_values
 
 MARGIN = 10.0       # page margin, paper mm
 TITLE_H = 12.0      # title band
@@ -45,7 +45,7 @@ def model_extent(scene: Scene, upto: int | None = None) -> Box:
     """
     steps, _ = shown_steps(scene, upto)
     values = scene.evaluate([s.key for _, s in steps])
-    return fit_view(content_box(scene, steps, values))
+    return fit_view(content_box(scene, steps, values), figure_target(len(scene.frames())))
 
 
 def step_id(key: str) -> str:
@@ -78,7 +78,7 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
         The SVG document (UTF-8 text, sizes in mm).
     """
     origin = (MARGIN, MARGIN + TITLE_H)
-    fig = build_figure(scene, upto, viewbox, origin)
+    fig = build_figure(scene, upto, viewbox, origin, figure_target(len(scene.frames())) if protocol else FIG_TARGET)
     fig_w, fig_h = fig.view.size
     lay = layout(scene, fig_h + SCALE_H) if protocol else None
     proto_x = origin[0] + fig_w + GAP
