@@ -106,5 +106,5 @@ def measure_cam(quick: bool = False) -> list[CamRow]:
 def cam_table(rows: list[CamRow]) -> str:
     """The cam rows as a table (profile error in mm; for the solves, the largest |construction − twin|)."""
     body = [(r.method, r.parameter, str(r.points or ""), fmt_seconds(r.seconds), fmt_error(r.error)) for r in rows]
-    return ("(d) cam.translating, roller profile of 200-01 against the exact envelope\n"
+    return ("(e) cam.translating, roller profile of 200-01 against the exact envelope\n"
             + format_table(("method", "parameter", "points", "time", "error"), body, "llrrr"))
