@@ -293,7 +293,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     _start_follower(sc, follower, e, s0, h, rr, r0, B0)
     divs = division_angles(prog)
     R = r0 + h + rr
-    add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 2.2 * R, 1.0, divs)
+    add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 3.0 * R, 1.0, divs)
     # the inversion: the follower's axis turned about O by −δ (ccw cam) to every division
     foot = Point(e, 0.0)
     for i, dv in enumerate(divs, 1):

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from .labels import Runs, label_runs, text_width
-from .placement import Request
+from .placement import Request, half_extent
 from .shapes import Disc, ArcP, Pen, Poly, Shape
 from .style import LABEL_SIZE, PAPER, Style
 from .view import TAU, View, clip_arc, clip_interval
@@ -101,10 +101,18 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
     if label:
         runs = label_runs(label)
         sub = any(s for _, s in runs)
-        h = LABEL_SIZE * (0.95 if sub else 0.74)
-        away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
-        req = Request(c, text_width(runs, LABEL_SIZE) + 0.3, h, style.radius + 0.4, away)
-        out.texts.append(TextRequest(runs, LABEL_SIZE, req, italic=True))
+        size = style.label_size or LABEL_SIZE
+        h = size * (0.95 if sub else 0.74)
+        w, gap = text_width(runs, size) + 0.3, style.radius + 0.4
+        if style.label_dir is not None:     # a fixed place (axis ticks): there, or a line further out
+            u = (math.cos(style.label_dir), math.sin(style.label_dir))
+            d = gap + half_extent(u[0], u[1], w, h)
+            spots = tuple(_add(c, u, d + k * h) for k in (0, 1))
+            req = Request(c, w, h, gap, style.label_dir, candidates=spots)
+        else:
+            away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
+            req = Request(c, w, h, gap, away)
+        out.texts.append(TextRequest(runs, size, req, italic=True))
     return out
 
 

@@ -17,6 +17,8 @@ Examples
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass, replace
 
 from ..scene.step import Role
@@ -69,6 +71,11 @@ class Style:
     compass : bool
         Circles of this style are drawn as short compass arcs through the points lying on them (the
         textbook way of drawing an auxiliary circle) rather than whole.
+    label_dir : float or None
+        Where a point's label goes, radians on paper (y down: π/2 is below); None places it away from the
+        figure's centre. A fixed direction is held to firmly (tick labels of a diagram's axis).
+    label_size : float or None
+        Font size of a point's label, paper mm (None: :data:`LABEL_SIZE`).
     """
 
     name: str
@@ -81,6 +88,8 @@ class Style:
     layer: str = "given"
     opacity: float = 1.0
     compass: bool = False
+    label_dir: float | None = None
+    label_size: float | None = None
 
 
 STYLES: dict[str, Style] = {s.name: s for s in (
@@ -90,6 +99,7 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("point", marker="dot", radius=0.55),
     Style("candidate", stroke="#7d8590", marker="hollow", radius=1.0, marker_width=0.3, layer="construction"),
     Style("given", marker="dot", radius=0.75),
+    Style("tick", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6),
     # curves
     Style("frame", width=0.25, dash=(6.0, 1.2, 1.0, 1.2)),
     Style("construction", stroke="#8f959c", width=0.18, layer="construction", compass=True),
