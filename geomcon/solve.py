@@ -95,7 +95,9 @@ class Solution:
         maps = self.construction.solutions or (self.construction.answers,)
         vals = self.scene.evaluate([k for m in maps for k in m.values()])
         units = {q.name: q.unit for q in self.recipe.answers}
-        out = [{name: _value(units.get(name, ""), vals[key]) for name, key in m.items() if name != "_valid"}
+        rank = {name: i for i, name in enumerate(units)}          # answers in the recipe's declared order
+        out = [{name: _value(units.get(name, ""), vals[m[name]])
+                for name in sorted((n for n in m if n != "_valid"), key=lambda n: rank.get(n, len(rank)))}
                for m in maps if "_valid" not in m or vals[m["_valid"]]]
         if self.recipe.order is not None:
             out.sort(key=self.recipe.order)
