@@ -134,8 +134,88 @@ def psi0_rad(a: float, L: float, r0: float) -> float:
     return 2.0 * math.atan2(math.sqrt(p), math.sqrt(q))
 
 
+class ArmMotion:
+    """The motion and the senses of an arm follower, shared by the roller/knife arm (:class:`OscillatingCam`)
+    and the flat-faced arm (:class:`geomcon.cam.oscillating_flat.FlatArmCam`): a subclass has the fields
+    ``h`` (deg), ``program``, ``rotation`` and ``arm``."""
+
+    h: float
+    program: Program
+    rotation: str
+    arm: str
+
+    @property
+    def sigma(self) -> int:
+        """+1 for a ccw cam, −1 for cw."""
+        return 1 if self.rotation == "ccw" else -1
+
+    @property
+    def tau(self) -> int:
+        """The arm's rise sense: −1 (cw) for a left arm, +1 (ccw) for a right arm."""
+        return -1 if self.arm == "left" else 1
+
+    @property
+    def eps(self) -> int:
+        """+1 when the arm swings in the cam's sense during the rise, −1 when opposite."""
+        return self.sigma * self.tau
+
+    def motion(self, delta) -> Motion:
+        """ψ, ψ′, ψ″ (rad) at cam angles ``delta`` (deg), from the program (half-open segments)."""
+        d = np.asarray(delta, dtype=float)
+        s, v, acc = self.program.motion(self.h, d)
+        return Motion(np.radians(d), np.radians(s), np.radians(v), np.radians(acc))
+
+    def breaks(self) -> tuple[float, ...]:
+        """Cam angles (rad) where ψ′ or ψ″ may jump: segment ends and the parabolic law's midpoints."""
+        out = []
+        for seg in self.program.segments:
+            out += [math.radians(seg.start + seg.angle * x0) for x0, _ in pieces(seg)]
+        return tuple(sorted(set(out) - {0.0}))
+
+    def motion_rad(self, delta) -> Motion:
+        """The motion at cam angles ``delta`` in radians, segment ends compared in radians (so that
+        ``nextafter`` of a break, :meth:`breaks`, falls in the piece before it)."""
+        d = np.asarray(delta, dtype=float)
+        s, v, acc = self.program.motion(self.h, d, radians=True)
+        return Motion(d, np.radians(s), np.radians(v), np.radians(acc))
+
+    def segment_max(self, kind: str, g: Callable[[Motion], np.ndarray],
+                    slope: Callable[[Motion], np.ndarray]) -> tuple[float, float]:
+        """(max of ``g``, δ in degrees where it is reached) over the ``kind`` ("rise" or "return") segment.
+
+        Candidates are the ends of each smooth piece (one-sided values) and the interior roots of ``slope``
+        (a function with the sign of dg/dδ), located by bisection on its sign. Ties go to the smaller cam
+        angle.
+        """
+        k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
+        seg, level = self.program.segments[k], levels(self.program, self.h)[k]
+        best = (-math.inf, 0.0)
+        for x0, x1 in pieces(seg):
+            roots = _roots(lambda x: slope(segment_motion(seg, level, self.h, x)), x0, x1)
+            m = segment_motion(seg, level, self.h, roots + [x0, x1])
+            for a, delta in zip(g(m), np.degrees(m.delta)):
+                if a > best[0] + 1e-13 or (abs(a - best[0]) <= 1e-13 and delta < best[1]):
+                    best = (float(a), float(delta))
+        return best
+
+    def turn_max(self, f: Callable[[Motion], np.ndarray]) -> tuple[float, float]:
+        """(max of ``f``, δ in degrees) over the turn: the ends of every smooth piece and every grid maximum
+        inside refined by golden-section search (dwells: their ends)."""
+        best = (-math.inf, 0.0)
+        for seg, level in zip(self.program.segments, levels(self.program, self.h)):
+            for x0, x1 in pieces(seg):
+                def fx(x, seg=seg, level=level):
+                    return f(segment_motion(seg, level, self.h, x))
+                xs = (x0, x1) if seg.kind == "dwell" else _golden_maxima(fx, x0, x1)
+                for x in xs:
+                    val = float(fx(np.asarray([x]))[0])
+                    if val > best[0]:
+                        best = (val, seg.start + seg.angle * float(x))
+        return best
+
+
 @dataclass(frozen=True)
-class OscillatingCam:
+class OscillatingCam(ArmMotion):
     """An oscillating-follower disc cam: geometry plus motion program (see the module docstring).
 
     Parameters
@@ -161,46 +241,11 @@ class OscillatingCam:
     arm: str = "left"
 
     @property
-    def sigma(self) -> int:
-        """+1 for a ccw cam, −1 for cw."""
-        return 1 if self.rotation == "ccw" else -1
-
-    @property
-    def tau(self) -> int:
-        """The arm's rise sense: −1 (cw) for a left arm, +1 (ccw) for a right arm."""
-        return -1 if self.arm == "left" else 1
-
-    @property
-    def eps(self) -> int:
-        """+1 when the arm swings in the cam's sense during the rise, −1 when opposite."""
-        return self.sigma * self.tau
-
-    @property
     def psi0(self) -> float:
         """Initial arm angle ψ0 (rad)."""
         return psi0_rad(self.a, self.L, self.r0)
 
-    # ------------------------------------------------------------------ motion and pitch curve
-    def motion(self, delta) -> Motion:
-        """ψ, ψ′, ψ″ (rad) at cam angles ``delta`` (deg), from the program (half-open segments)."""
-        d = np.asarray(delta, dtype=float)
-        s, v, acc = self.program.motion(self.h, d)
-        return Motion(np.radians(d), np.radians(s), np.radians(v), np.radians(acc))
-
-    def breaks(self) -> tuple[float, ...]:
-        """Cam angles (rad) where ψ′ or ψ″ may jump: segment ends and the parabolic law's midpoints."""
-        out = []
-        for seg in self.program.segments:
-            out += [math.radians(seg.start + seg.angle * x0) for x0, _ in pieces(seg)]
-        return tuple(sorted(set(out) - {0.0}))
-
-    def motion_rad(self, delta) -> Motion:
-        """The motion at cam angles ``delta`` in radians, segment ends compared in radians (so that
-        ``nextafter`` of a break, :meth:`breaks`, falls in the piece before it)."""
-        d = np.asarray(delta, dtype=float)
-        s, v, acc = self.program.motion(self.h, d, radians=True)
-        return Motion(d, np.radians(s), np.radians(v), np.radians(acc))
-
+    # ------------------------------------------------------------------ pitch curve
     def pitch_of(self, m: Motion) -> tuple[np.ndarray, ...]:
         """(x, y, x′, y′, x″, y″) of the pitch curve for a motion ``m`` (derivatives per radian of δ)."""
         sg, tu = self.sigma, self.tau
@@ -267,24 +312,15 @@ class OscillatingCam:
         (``route = "tan"``), or :meth:`pressure_arg_slope` with α from :meth:`pressure_arg`
         (``route = "arg"``, the analytic twin's). Ties go to the smaller cam angle.
         """
-        k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
-        seg, level = self.program.segments[k], levels(self.program, self.h)[k]
         alpha = self.pressure_of if route == "tan" else self.pressure_arg
 
-        def slope(x):
-            m = segment_motion(seg, level, self.h, x)
+        def slope(m):
             if route == "tan":
                 n, d, n1, d1 = self.tan_pressure_parts(m)
                 return np.sign(n) * (n1 * d - n * d1)
             return self.pressure_arg_slope(m)
 
-        best = (-1.0, 0.0)
-        for x0, x1 in pieces(seg):
-            m = segment_motion(seg, level, self.h, _roots(slope, x0, x1) + [x0, x1])
-            for a, delta in zip(alpha(m), np.degrees(m.delta)):
-                if a > best[0] + 1e-13 or (abs(a - best[0]) <= 1e-13 and delta < best[1]):
-                    best = (float(a), float(delta))
-        return best
+        return self.segment_max(kind, alpha, slope)
 
     # ------------------------------------------------------------------ curvature
     def convex_curvature_of(self, m: Motion) -> np.ndarray:
@@ -318,17 +354,7 @@ class OscillatingCam:
 
         ``curvature`` (default :meth:`convex_curvature_of`) lets an independent formula use the same search.
         """
-        kappa = curvature or self.convex_curvature_of
-        best = (-math.inf, 0.0)
-        for seg, level in zip(self.program.segments, levels(self.program, self.h)):
-            for x0, x1 in pieces(seg):
-                def f(x, seg=seg, level=level):
-                    return kappa(segment_motion(seg, level, self.h, x))
-                xs = (x0, x1) if seg.kind == "dwell" else _golden_maxima(f, x0, x1)
-                for x in xs:
-                    val = float(f(np.asarray([x]))[0])
-                    if val > best[0]:
-                        best = (val, seg.start + seg.angle * float(x))
+        best = self.turn_max(curvature or self.convex_curvature_of)
         return (1.0 / best[0], best[1]) if best[0] > 0 else (math.inf, best[1])
 
     # ------------------------------------------------------------------ roller

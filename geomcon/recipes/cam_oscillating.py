@@ -23,9 +23,10 @@ import numpy as np
 
 from ..cam.oscillating import OscillatingCam, levels, psi0_rad, segment_motion
 from ..cam.profile import rho_min, roller_profile
-from ..cam.program import parse_program
+from ..cam.program import Program, parse_program
 from ..errors import NotAMechanism
-from ..geometry import LeftOf, Line, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, rotate, segment
+from ..geometry import (LeftOf, Line, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, rotate,
+                        segment)
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
 from .cam_common import (AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
@@ -34,13 +35,15 @@ from .cam_common import (AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, ad
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg
 
 GIVENS = (
-    Quantity("follower", "choice", "follower type", minimum=None, choices=("knife", "roller")),
+    Quantity("follower", "choice", "follower type", minimum=None, choices=("knife", "roller", "flat")),
     Quantity("a", "mm", "centre distance OA0 from the cam centre to the arm's pivot"),
-    Quantity("L", "mm", "arm length A0B (pivot to roller centre or knife edge)"),
-    Quantity("r0", "mm", "base-circle radius of the pitch curve"),
+    Quantity("L", "mm", "arm length A0B (pivot to roller centre or knife edge; not for a flat face)", required=False),
+    Quantity("r0", "mm", "base-circle radius of the pitch curve (of the profile for a flat face)"),
     Quantity("h", "deg", "angular stroke ψmax of the arm"),
     PROGRAM,
     Quantity("rr", "mm", "roller radius (roller followers only)", required=False, default=None),
+    Quantity("face_offset", "mm", "flat face: its distance from the pivot A0, towards the cam (0: through A0)",
+             required=False, default=None, minimum=None),
     ROTATION,
     Quantity("arm", "choice", "side of the line A0→O the roller lies on (A0 drawn above O)", required=False,
              default="left", minimum=None, choices=("left", "right")),
@@ -69,6 +72,12 @@ ANSWERS = (
     Quantity("pitch_y", "mm[]", "y of the pitch point (cam frame) at the cam angles of `at`"),
     Quantity("profile_x", "mm[]", "x of the actual profile's point (roller) at the cam angles of `at`"),
     Quantity("profile_y", "mm[]", "y of the actual profile's point (roller) at the cam angles of `at`"),
+    Quantity("convex", "bool", "flat face: the profile's ρ > 0 everywhere and the contact never jumps back"),
+    Quantity("face_min", "mm", "flat face: nearest place of the contact along the face from the pivot's foot"),
+    Quantity("face_max", "mm", "flat face: farthest place of the contact along the face from the pivot's foot"),
+    Quantity("face_length", "mm", "flat face: the face length the contact sweeps from the pivot's foot, "
+             "max(face_max, 0) − min(face_min, 0)"),
+    Quantity("face_contact", "mm[]", "flat face: place of the contact along the face at the cam angles of `at`"),
 )
 POINTS = ("O", "A0", "B0")
 ROLLER_WARN = 3.0
@@ -76,13 +85,19 @@ ROLLER_WARN = 3.0
 
 
 # ---------------------------------------------------------------------------------------------- givens
-def cam_of(g: Mapping[str, Any]) -> OscillatingCam:
-    """The cam described by the givens (program parsed and checked to fill the turn with a return)."""
+def program_of(g: Mapping[str, Any]) -> Program:
+    """The motion program of the givens, checked to fill the turn with a return."""
     prog = parse_program(g["program"])
     require_full(prog)
     if prog.ret is None:
         raise NotAMechanism("program: a cam needs a return segment (the arm must swing back)")
-    return OscillatingCam(g["a"], g["L"], g["r0"], g["h"], prog, g.get("rotation", "ccw"), g.get("arm", "left"))
+    return prog
+
+
+def cam_of(g: Mapping[str, Any]) -> OscillatingCam:
+    """The knife or roller cam described by the givens."""
+    return OscillatingCam(g["a"], g["L"], g["r0"], g["h"], program_of(g), g.get("rotation", "ccw"),
+                          g.get("arm", "left"))
 
 
 def _division_angles(g: Mapping[str, Any], cam: OscillatingCam) -> tuple[float, ...]:
@@ -100,6 +115,14 @@ def _division_angles(g: Mapping[str, Any], cam: OscillatingCam) -> tuple[float, 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
     """Refuse cams that cannot be assembled; warn about pressure angles beyond the allowance and undercut."""
+    if g["follower"] == "flat":
+        from .cam_oscillating_flat import validate_flat
+        return validate_flat(g)
+    if g.get("L") is None:
+        raise NotAMechanism(f"a {g['follower']} arm needs L (the arm length A0B)")
+    if g.get("face_offset") is not None:
+        raise NotAMechanism(f"face_offset = {g['face_offset']:g} is given for a {g['follower']} follower: only a "
+                            "flat-faced arm has a face")
     a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
     cam = cam_of(g)
     _division_angles(g, cam)
@@ -240,6 +263,9 @@ class _Inversion:
 
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build the inversion construction."""
+    if g["follower"] == "flat":
+        from .cam_oscillating_flat import construct_flat
+        return construct_flat(g)
     cam = cam_of(g)
     a, L, r0, h, prog = cam.a, cam.L, cam.r0, cam.h, cam.program
     roller = g["follower"] == "roller"
@@ -355,6 +381,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
 # ---------------------------------------------------------------------------------------------- twin
 def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The closed forms by their separate routes (see the module docstring)."""
+    if g["follower"] == "flat":
+        from .cam_oscillating_flat import analytic_flat
+        return analytic_flat(g)
     cam = cam_of(g)
     roller = g["follower"] == "roller"
     rr = float(g.get("rr") or 0.0)
