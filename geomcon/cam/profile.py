@@ -40,7 +40,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 import shapely
-from shapely.geometry import LinearRing, LineString, Point as SPoint, Polygon
+from shapely.geometry import LinearRing, LineString
 
 from ..errors import NotAMechanism
 

@@ -49,6 +49,16 @@ TOL = Quantity("tolerance", "mm", "largest chord error of the sampled profile", 
 STRICT = Quantity("strict", "bool", f"strict profile tolerance ({STRICT_TOLERANCE:g} mm)", required=False,
                   default=False, minimum=None)
 
+PRESSURE_ANSWERS = (
+    Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
+    Quantity("delta_alpha_max_rise", "deg", "cam angle where it occurs"),
+    Quantity("alpha_max_return", "deg", "largest pressure angle during the return"),
+    Quantity("delta_alpha_max_return", "deg", "cam angle where it occurs"),
+    Quantity("rho_min_pitch", "mm", "smallest radius of curvature of the convex parts of the pitch curve"),
+)
+"""The answers every inversion-drawn cam shares: the worst pressure angles of rise and return, where they occur,
+and ρmin of the pitch curve."""
+
 
 def profile_csv(scene: Scene, recipe: str) -> str:
     """The CSV text of a scene's manufactured profile (``x_mm,y_mm,delta_deg``); a scene without one raises

@@ -293,7 +293,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                   caption=("The follower's guide through D, perpendicular to OD", "过 D 作导路(垂直于 OD)"))
     if e:
         sc.add("offset_circle", circle, O, abs(e), style="construction",
-               caption=(f"Offset circle about O with radius |e| = {abs(e):g}", f"以 O 为圆心、|e| 为半径作偏距圆"))
+               caption=(f"Offset circle about O with radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
     B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller")
     if flat:
         return _finish_flat(sc, g, O, A, D, axis, B0, B1, sense)
@@ -307,7 +307,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         th1 = sc.add("th1", thales_circle, O, B1, style="construction", visible=False)
         K1 = sc.add("K1", circle_circle, th1, Ref("offset_circle"), branch=rule1, style="point", label="K1",
                     caption=("…and through B1, foot K1: its highest position", "过 B1 作切线,切点 K1:最高位置"))
-        ref0, ref1, ref = K0, K1, D
+        ref0, ref1 = K0, K1
         low = sc.add("low_len", length, K0, B0, visible=False, unit="mm")
         high = sc.add("high_len", length, K1, B1, visible=False, unit="mm")
     else:
@@ -481,7 +481,7 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
     B0, B1 = add_base_circle(sc, O, A, pitch, bool(rr))
     kq = sc.add("pivot_circle", circle, O, a, style="construction",
                 caption=(f"Circle about O through Q (radius a = {a:g}): the inverted pivot's path",
-                         f"以 O 为圆心、a 为半径作圆(反转后摆杆中心轨迹)"))
+                         f"以 O 为圆心、a = {a:g} 为半径作圆(反转后摆杆中心轨迹)"))
     rule = LeftOf if left else RightOf
     Qs = []
     for k, Bk in (("0", B0), ("1", B1)):

@@ -29,7 +29,7 @@ from ..geometry import (LeftOf, Line, NearestTo, Point, RightOf, Segment, circle
                         segment)
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
-from .cam_common import (AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
+from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
                          add_profile_steps, add_roller_circles, at_least, division_angles, extremum_value, minus,
                          normal_segment, pitch_polyline, pressure_mark, profile_tolerance, require_full, turned)
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg
@@ -59,11 +59,7 @@ GIVENS = (
 ANSWERS = (
     Quantity("psi_max", "deg", "angular stroke ψmax, measured between the arm's first and top positions"),
     Quantity("psi0", "deg", "initial arm angle ψ0 = ∠OA0B0"),
-    Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
-    Quantity("delta_alpha_max_rise", "deg", "cam angle where it occurs"),
-    Quantity("alpha_max_return", "deg", "largest pressure angle during the return"),
-    Quantity("delta_alpha_max_return", "deg", "cam angle where it occurs"),
-    Quantity("rho_min_pitch", "mm", "smallest radius of curvature of the convex parts of the pitch curve"),
+    *PRESSURE_ANSWERS,
     Quantity("rho_min_actual", "mm", "of the actual profile: ρmin − rr (roller; ≤ 0 when undercut), ρmin (knife)"),
     Quantity("undercut", "bool", "rr ≥ ρmin: the roller cannot reproduce the motion (profile trimmed)"),
     Quantity("psi", "deg[]", "arm angle ψ at the cam angles of `at`"),

@@ -28,9 +28,9 @@ from ..geometry import Point, Segment, circle, distance, segment
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 from .base import Construction, Quantity, Recipe
-from .cam_common import (AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
+from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
                          add_profile_steps, add_roller_circles, at_least, division_angles, extremum_deg, extremum_value,
-                         inversion_sign, minus, normal_segment, pitch_polyline, positive, pressure_mark,
+                         inversion_sign, minus, normal_segment, pitch_polyline, pressure_mark,
                          profile_tolerance, program_breaks, require_full, turned)
 
 GIVENS = (
@@ -49,11 +49,7 @@ GIVENS = (
 )
 ANSWERS = (
     Quantity("h", "mm", "stroke, measured between the lowest and highest inverted positions"),
-    Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
-    Quantity("delta_alpha_max_rise", "deg", "cam angle where it occurs"),
-    Quantity("alpha_max_return", "deg", "largest pressure angle during the return"),
-    Quantity("delta_alpha_max_return", "deg", "cam angle where it occurs"),
-    Quantity("rho_min_pitch", "mm", "smallest radius of curvature of the convex parts of the pitch curve"),
+    *PRESSURE_ANSWERS,
     Quantity("rho_min_actual", "mm", "of the actual profile: ρmin − rr (roller), ρmin (knife), min(r0 + s + s″) (flat)"),
     Quantity("undercut", "bool", "the profile cannot reproduce the motion (rr ≥ ρmin; flat face not convex)"),
     Quantity("convex", "bool", "flat face: r0 + s + s″ > 0 everywhere and no velocity drop"),

@@ -32,7 +32,7 @@ from ..geometry import (LeftOf, Line, Point, RightOf, circle, circle_circle, lin
                         point_along, segment, signed_angle)
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import CHECK_REL, REL_TOL, tol
-from .common import add_angle_mark, add_bar, length, transmission_deg
+from .common import add_bar, length, transmission_deg
 
 WARN_CONDITION = 100.0
 """Warn when R / h_min ≥ 100: a 0.1 mm drafting error of one position may move the pivot by 10 mm or more."""
