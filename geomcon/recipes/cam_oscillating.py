@@ -287,7 +287,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     inv = _Inversion(sc, cam, O, A0, B0)
     divs = _division_angles(g, cam)
     R = max(a, r0 + math.radians(h) * L + rr)
-    add_motion_diagram(sc, prog, h, Point(1.55 * R, -0.5 * R), 2.2 * R, 0.5 * R / h, divs, symbol="ψ", unit="°")
+    add_motion_diagram(sc, prog, h, Point(1.55 * R, -0.5 * R), 3.0 * R, 0.5 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
     As = [sc.add(f"A_d{i}", turned, A0, O, -float(cam.sigma), d, label=f"{i}′", style="point", caption=(
         f"Divide the circle of radius a {back[0]} (−ω) from A0 as the cam angles of the divisions: 1′ … {n}′ "

@@ -286,7 +286,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     inv_pos = _Inversion(sc, cam, O, A0, T1)
     divs = _division_angles(g, cam)
     R = a
-    add_motion_diagram(sc, prog, h, Point(1.25 * R, -0.6 * R), 1.6 * R, 0.4 * R / h, divs, symbol="ψ", unit="°")
+    add_motion_diagram(sc, prog, h, Point(1.25 * R, -0.6 * R), 2.4 * R, 0.4 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
     for i, d in enumerate(divs, 1):
         first = i == 1

@@ -31,7 +31,7 @@ TAU = 2.0 * math.pi
 NICE = (1.0, 2.0, 2.5, 5.0)
 FIG_MARGIN = 10.0       # paper mm around the drawn content (labels, ground symbols)
 FIG_TARGET = 150.0      # paper width aimed at, margins included
-FIG_MAX_W = 215.0
+FIG_MAX_W = 250.0
 FIG_MAX_H = 185.0
 
 
