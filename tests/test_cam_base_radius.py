@@ -8,14 +8,19 @@ import random
 import numpy as np
 import pytest
 
-from geomcon.cam.base_radius import best_base
+from geomcon.cam.base_radius import ArmProgram, ArmTwin, arm_a_min, arm_best, best_base, limits
+from geomcon.cam.oscillating import OscillatingCam, psi0_rad
 from geomcon.cam.program import parse_program
 from geomcon.cam.translating import TranslatingCam
 from geomcon.errors import NotAMechanism
+from geomcon.geometry import Point, rotate
 from geomcon.problems import load_problem, problem_from_dict
+from geomcon.recipes.cam_base_radius import arm_position, velocity_image
 from geomcon.solve import solve
 
 LAWS = ("parabolic", "cosine", "cycloidal", "poly345")
+ARM_PROGRAM = [{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60},
+               {"kind": "return", "angle": 120, "law": "cycloidal"}, {"kind": "dwell", "angle": 60}]
 
 
 def _solve(**given):
@@ -123,9 +128,107 @@ def test_answers_alone_do_not_draw():
     (dict(h=20, program=[{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 240}],
           alpha_allow=95), ["alpha_allow = 95°"]),
     (dict(h=20, program=[{"kind": "rise", "angle": 120, "law": "cosine"}], alpha_allow=30), ["full turn"]),
+    (dict(motion="oscillating", h=20, program=ARM_PROGRAM, alpha_allow=35), ["needs L"]),
+    (dict(motion="oscillating", L=100, h=20, program=ARM_PROGRAM, alpha_allow=35, e=5.0), ["e = 5", "no offset"]),
+    (dict(motion="oscillating", L=100, h=190, program=ARM_PROGRAM, alpha_allow=35), ["h = 190°"]),
+    (dict(motion="oscillating", L=100, h=20, program=ARM_PROGRAM, alpha_allow=35, a=40.0), ["a = 40 mm ≤", "no centre"]),
+    (dict(h=20, program=ARM_PROGRAM, alpha_allow=30, L=100), ["L = 100 is given for a translating follower"]),
 ])
 def test_refusals(given, words):
     with pytest.raises(NotAMechanism) as exc:
         _solve(**given).answers
+    assert "\n" not in str(exc.value)
     for w in words:
         assert w in str(exc.value)
+
+
+# ---------------------------------------------------------------------------- oscillating follower
+def _random_arm(rng, free):
+    rise, ret = rng.uniform(80, 160), rng.uniform(80, 150)
+    d1 = rng.uniform(0, 360 - rise - ret - 10)
+    prog = [{"kind": "rise", "angle": rise, "law": rng.choice(LAWS)}, {"kind": "dwell", "angle": d1 + 5},
+            {"kind": "return", "angle": ret, "law": rng.choice(LAWS)},
+            {"kind": "dwell", "angle": 360 - rise - ret - d1 - 5}]
+    g = dict(motion="oscillating", L=rng.uniform(60, 150), h=rng.uniform(10, 30), program=prog,
+             alpha_allow=rng.uniform(28, 45), rotation=rng.choice(["ccw", "cw"]), arm=rng.choice(["left", "right"]))
+    if rng.random() < 0.5:
+        g["alpha_allow_return"] = rng.uniform(40, 70)
+    if not free:
+        motion = ArmProgram(g["h"], parse_program(prog), g["rotation"], g["arm"])
+        lims = limits(motion.program, g["alpha_allow"], g.get("alpha_allow_return"))
+        g["a"] = arm_a_min(motion, g["L"], lims) * rng.uniform(1.05, 1.6)
+    return g
+
+
+def _arm_over(g, a, r0):
+    """Largest α − α_allow over the constrained parts by cam.oscillating (its tan route)."""
+    cam = OscillatingCam(a, g["L"], r0, g["h"], parse_program(g["program"]), g["rotation"], g["arm"])
+    over = cam.worst_pressure("rise")[0] - g["alpha_allow"]
+    if g.get("alpha_allow_return") is not None:
+        over = max(over, cam.worst_pressure("return")[0] - g["alpha_allow_return"])
+    return over
+
+
+def _smaller_violates(g, a, r0):
+    """Every centre at 0.999·r0 from B0 (at the given a, or at any a) breaks a limit."""
+    r = 0.999 * r0
+    for x in ([a] if "a" in g else np.linspace(abs(g["L"] - r), g["L"] + r, 41)[1:-1]):
+        cam_ok = psi0_rad(x, g["L"], r)
+        if math.isfinite(cam_ok) and math.degrees(cam_ok) + g["h"] < 180 and r < x:
+            assert _arm_over(g, x, r) > 0, (x, r)
+
+
+@pytest.mark.parametrize("seed, free", [(5200 + i, False) for i in range(12)] + [(5300 + i, True) for i in range(4)])
+def test_random_arm(seed, free):
+    """At a given a (12 programs) and with a free (4): the twin agrees, the limit is active, and no base
+    circle 0.1 % smaller is admissible."""
+    g = _random_arm(random.Random(seed), free=free)
+    sol = _solve(**g)
+    _ok(sol)
+    a = sol.answers
+    if not free:
+        assert a["a"] == pytest.approx(g["a"], rel=1e-12)
+    assert _arm_over(g, a["a"], a["r0"]) == pytest.approx(0.0, abs=1e-9)          # the limit is active
+    _smaller_violates(g, a["a"], a["r0"])
+
+
+def test_problem_200_12_both_limits_bind():
+    """The best centre is the vertex of the region: a rise position and a return position bind at once."""
+    sol = solve(load_problem("problems/200-12_oscillating_base_radius.toml"))
+    _ok(sol)
+    a = sol.answers
+    assert a["r0"] == pytest.approx(21.7916098892, rel=1e-9) and a["a"] == pytest.approx(106.826053834, rel=1e-9)
+    g = sol.problem.given
+    cam = OscillatingCam(a["a"], g["L"], a["r0"], g["h"], parse_program(g["program"]), g["rotation"], g["arm"])
+    assert cam.worst_pressure("rise")[0] == pytest.approx(35.0, abs=1e-9)
+    assert cam.worst_pressure("return")[0] == pytest.approx(45.0, abs=1e-9)
+    assert [p for p, _ in sol.scene.evaluate(["binding"])["binding"]] == ["rise", "return"]
+
+
+@pytest.mark.parametrize("rotation, arm", [("ccw", "left"), ("ccw", "right"), ("cw", "left"), ("cw", "right")])
+def test_velocity_image_line_makes_the_pressure_angle(rotation, arm):
+    """The line from K (BK = L·ψ′ on the arm) to O makes with the arm's normal the pressure angle of
+    cam.oscillating, at any cam angle and for any centre."""
+    prog = parse_program([{"kind": "rise", "angle": 140, "law": "poly345"}, {"kind": "dwell", "angle": 40},
+                          {"kind": "return", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60}])
+    cam = OscillatingCam(120.0, 90.0, 45.0, 25.0, prog, rotation, arm)
+    motion = ArmProgram(25.0, prog, rotation, arm)
+    A0, B0 = Point(0.0, 0.0), Point(motion.tau * 90.0, 0.0)
+    O = rotate(B0, A0, -motion.tau * cam.psi0).__mul__(120.0 / 90.0)
+    for d in (10.0, 55.0, 139.0, 200.0, 250.0):
+        m = cam.motion(d)
+        B = arm_position(B0, A0, motion.tau, math.degrees(float(m.psi)))
+        K = velocity_image(A0, B, motion.eps * float(m.d1))
+        u = (O - K).unit()
+        along = abs(u.dot((B - A0).unit()))
+        assert math.degrees(math.asin(min(along, 1.0))) == pytest.approx(float(cam.pressure_angle(d)), abs=1e-9)
+
+
+def test_twin_agrees_with_the_wedge_route():
+    prog = parse_program([{"kind": "rise", "angle": 120, "law": "cycloidal"}, {"kind": "dwell", "angle": 60},
+                          {"kind": "return", "angle": 120, "law": "poly345"}, {"kind": "dwell", "angle": 60}])
+    for a in (None, 150.0):
+        main = arm_best(prog, 25.0, 120.0, alpha_allow=40.0, rotation="cw", arm="right", a=a)
+        twin = ArmTwin(prog, 25.0, 120.0, alpha_allow=40.0, rotation="cw", arm="right").best(a)
+        for k in ("r0", "a", "psi0"):
+            assert main[k] == pytest.approx(twin[k], rel=1e-9)

@@ -1,5 +1,6 @@
 """``cam.base_radius``: the smallest base circle (and the best offset) of a disc cam with a translating knife
-or roller follower for an allowed pressure angle — the textbook's ds/dδ–s diagram.
+or roller follower for an allowed pressure angle — the textbook's ds/dδ–s diagram — and the best cam centre
+for an oscillating knife or roller follower (the arm's velocity images).
 
 Construction (the diagram is drawn in the follower's frame, B0 — the lowest pitch point — at the origin, the
 follower's axis vertical): every cam angle δ of a constrained part (the rise, and the return when
@@ -13,6 +14,16 @@ or the foot of the perpendicular from B0 on one of them when that foot is admiss
 a given offset e, O is the highest admissible point on the vertical x = −e. Then r0 = OB0, s0 = the height of
 B0 above O, e = the distance of O from the axis (e > 0: the axis right of O, the recipes' convention).
 
+Oscillating follower (``motion = "oscillating"``; ``h`` is then the angular stroke in degrees, ``L`` the arm,
+``arm`` and ``rotation`` as in cam.oscillating): drawn in the arm's frame, A0 at the origin and A0B0 = L along
+the x axis. The arm is turned to its positions A0Bi at every sixth of the rise (and of the return when it has
+a limit); on each, Ki with BiKi = L·ψ′i is laid off (towards A0 when the arm rises in the cam's sense, away
+from it otherwise), so that KiO is parallel to the contact normal (:mod:`geomcon.cam.base_radius`); through Ki
+the two lines at α_allow to the arm's normal bound the wedge O must lie in. O is the admissible point nearest
+B0 — the smallest base circle r0 = OB0 — or, with ``a`` given, the admissible point of the circle of radius
+a about A0 nearest B0; the binding positions (one, or two at a vertex of the region) are drawn with the
+line KO, which makes α_allow with their normal. Answers r0, a = OA0, ψ0 = ∠OA0B0, ρmin and rr_max.
+
 The roller bound: ρmin of the pitch curve of the designed cam (convex parts, exact derivatives), and the
 textbook rule rr ≤ 0.8·ρmin (``rr_max``; rr < ρmin is the bare undercut limit).
 """
@@ -23,18 +34,19 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.base_radius import RR_FACTOR, best_base
+from ..cam.base_radius import RR_FACTOR, ArmProgram, ArmTwin, arm_best, arm_psi0, arm_reach, best_base, limits, part_motion
+from ..cam.oscillating import OscillatingCam
 from ..cam.profile import PitchCurve, inverted, maximise, rho_min
 from ..cam.program import Program, parse_program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
-from ..geometry import Line, Point, Polyline, circle, line_line, segment
+from ..geometry import Arc, Line, Point, Polyline, Segment, circle, line_line, rotate, segment
 from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
-from .common import length
+from .common import add_angle_mark, add_bar, angle_deg, length
 
 GIVENS = (
-    Quantity("h", "mm", "stroke"),
+    Quantity("h", "mm", "stroke: mm (translating), or the arm's angular stroke ψmax in degrees (oscillating)"),
     Quantity("program", "table[]", "motion program: rise, dwells, return (a full turn)"),
     Quantity("alpha_allow", "deg", "allowed pressure angle of the rise"),
     Quantity("alpha_allow_return", "deg", "allowed pressure angle of the return (unconstrained when absent)",
@@ -43,6 +55,12 @@ GIVENS = (
              choices=("ccw", "cw")),
     Quantity("e", "mm", "a fixed offset (> 0: the axis right of O); absent: the best offset", required=False,
              minimum=None),
+    Quantity("motion", "choice", "the follower moves along a guide (translating) or swings on an arm (oscillating)",
+             required=False, default="translating", minimum=None, choices=("translating", "oscillating")),
+    Quantity("L", "mm", "oscillating: arm length A0B (pivot to roller centre or knife edge)", required=False),
+    Quantity("a", "mm", "oscillating: a fixed centre distance OA0; absent: the best one", required=False),
+    Quantity("arm", "choice", "oscillating: side of the line A0→O the roller lies on, as in cam.oscillating",
+             required=False, default="left", minimum=None, choices=("left", "right")),
 )
 ANSWERS = (
     Quantity("r0", "mm", "smallest base circle radius of the pitch curve"),
@@ -50,6 +68,8 @@ ANSWERS = (
     Quantity("s0", "mm", "height of the lowest pitch point B0 above O, √(r0² − e²)"),
     Quantity("rho_min_pitch", "mm", "smallest radius of curvature of the pitch curve (convex parts)"),
     Quantity("rr_max", "mm", "largest roller radius by the rule rr ≤ 0.8·ρmin"),
+    Quantity("a", "mm", "oscillating: the centre distance OA0 (best, or as given)"),
+    Quantity("psi0", "deg", "oscillating: the arm's initial angle ψ0 = ∠OA0B0"),
 )
 
 
@@ -65,6 +85,22 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     for key in ("alpha_allow", "alpha_allow_return"):
         if g.get(key) is not None and not 0.0 < g[key] < 90.0:
             raise NotAMechanism(f"{key} = {g[key]:g}° must lie in (0°, 90°)")
+    if g.get("motion", "translating") == "translating":
+        for key in ("L", "a"):
+            if g.get(key) is not None:
+                raise NotAMechanism(f"{key} = {g[key]:g} is given for a translating follower: only an oscillating "
+                                    "one (motion = \"oscillating\") has an arm")
+        return []
+    if g.get("L") is None:
+        raise NotAMechanism("an oscillating follower needs L (the arm length A0B)")
+    if g.get("e") is not None:
+        raise NotAMechanism(f"e = {g['e']:g} is given for an oscillating follower: it has no offset (give a, the "
+                            "centre distance, or nothing)")
+    if not g["h"] < 180.0:
+        raise NotAMechanism(f"h = {g['h']:g}°: an arm's angular stroke must be below 180°")
+    prog = _program(g)
+    arm_reach(ArmProgram(g["h"], prog, g.get("rotation", "ccw"), g.get("arm", "left")), g["L"],
+              limits(prog, g["alpha_allow"], g.get("alpha_allow_return")), g.get("a"))
     return []
 
 
@@ -128,7 +164,10 @@ def pitch_rho_min(prog: Program, h: float, rotation: str, e: float, s0: float) -
 
 # ---------------------------------------------------------------------------- construction
 def construct(g: Mapping[str, Any]) -> Construction:
-    """The ds/dδ–s diagram, the support lines at α_allow, the best O and the base circle."""
+    """The ds/dδ–s diagram, the support lines at α_allow, the best O and the base circle (translating), or
+    the arm's positions with their velocity-image points (oscillating, :func:`construct_arm`)."""
+    if g.get("motion", "translating") == "oscillating":
+        return construct_arm(g)
     prog, h = _program(g), g["h"]
     rotation = g.get("rotation", "ccw")
     k = 1.0 if rotation == "ccw" else -1.0
@@ -178,8 +217,15 @@ def construct(g: Mapping[str, Any]) -> Construction:
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
-    """Minimise r0(e)² = e² + s0(e)² (:mod:`geomcon.cam.base_radius`); ρmin from cam.translating's closed form."""
+    """Minimise r0(e)² = e² + s0(e)² (:mod:`geomcon.cam.base_radius`); ρmin from cam.translating's closed form.
+    Oscillating: :class:`~geomcon.cam.base_radius.ArmTwin`, ρmin by cam.oscillating's complex route."""
     prog = _program(g)
+    if g.get("motion", "translating") == "oscillating":
+        out = ArmTwin(prog, g["h"], g["L"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
+                      arm=g.get("arm", "left"), alpha_allow_return=g.get("alpha_allow_return")).best(g.get("a"))
+        cam = arm_cam(g, out["a"], out["r0"])
+        rho = cam.rho_min(cam.convex_curvature_complex)[0]
+        return [{**out, "rho_min_pitch": rho, "rr_max": RR_FACTOR * rho}]
     out = best_base(prog, g["h"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
                     alpha_allow_return=g.get("alpha_allow_return"), e=g.get("e"))
     rho = TranslatingCam(prog, g["h"], out["r0"], out["e"], g.get("rotation", "ccw")).rho_min_pitch()
@@ -188,8 +234,14 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """The designed cam's largest pressure angles (cam.translating's closed form): the active limit is
-    reached exactly, the other is not exceeded."""
+    reached exactly, the other is not exceeded (oscillating: cam.oscillating's α_max)."""
     prog = _program(g)
+    if g.get("motion", "translating") == "oscillating":
+        cam = arm_cam(g, ans["a"], ans["r0"])
+        over = cam.worst_pressure("rise")[0] - g["alpha_allow"]
+        if g.get("alpha_allow_return") is not None and prog.ret is not None:
+            over = max(over, cam.worst_pressure("return")[0] - g["alpha_allow_return"])
+        return [("alpha_max − alpha_allow (the active limit)", over, 0.0, "deg")]
     cam = TranslatingCam(prog, g["h"], ans["r0"], ans["e"], g.get("rotation", "ccw"))
     over = cam.alpha_max("rise")[0] - g["alpha_allow"]
     if g.get("alpha_allow_return") is not None:
@@ -197,9 +249,174 @@ def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str
     return [("alpha_max − alpha_allow (the active limit)", over, 0.0, "deg")]
 
 
+# ---------------------------------------------------------------------------- oscillating follower
+def arm_cam(g: Mapping[str, Any], a: float, r0: float) -> OscillatingCam:
+    """The designed oscillating cam (centre distance a, base circle r0) of the givens."""
+    return OscillatingCam(a, g["L"], r0, g["h"], _program(g), g.get("rotation", "ccw"), g.get("arm", "left"))
+
+
+def arm_position(B0: Point, A0: Point, tau: float, psi_deg: float) -> Point:
+    """The arm's end turned about A0 from A0B0 through ψ in its rise sense (τ = +1 ccw)."""
+    return rotate(B0, A0, tau * math.radians(psi_deg))
+
+
+def velocity_image(A0: Point, B: Point, k: float) -> Point:
+    """K on the arm A0B with BK = k·L towards A0 (k = εψ′): the line through O parallel to the contact
+    normal meets the arm there (triangles A0KO and A0BP, P the relative instant centre, A0P = a/(1 − k))."""
+    return A0 + (B - A0) * (1.0 - k)
+
+
+def image_curve(motion: ArmProgram, A0: Point, B0: Point, lo: float, hi: float, n: int = 240) -> Polyline:
+    """The velocity-image points K(δ) over cam angles [lo, hi] (deg)."""
+    d = np.linspace(lo, hi, n + 1)
+    d[-1] = np.nextafter(hi, lo)
+    m = motion.motion(d)
+    return Polyline(tuple(velocity_image(A0, arm_position(B0, A0, motion.tau, math.degrees(p)), motion.eps * v)
+                          for p, v in zip(m.psi, m.d1)))
+
+
+def wedge_ray(A0: Point, B: Point, K: Point, alpha: float, side: float, tau: float, O: Point) -> Segment:
+    """One side of the admissible wedge at K: from K at α_allow (deg) to the arm's normal on O's side,
+    turned towards B (side = +1) or towards A0 (side = −1); drawn 1.3·KO long."""
+    u = (B - A0).unit()
+    n = u.perp() * -tau                                    # the normal towards O's side
+    t = math.tan(math.radians(alpha))
+    return Segment(K, K + (n + u * (side * t)).unit() * (1.3 * abs(O - K)))
+
+
+def best_arm_centre(prog: Program, g: Mapping[str, Any], A0: Point, B0: Point) -> Point:
+    """The admissible centre O nearest B0 (or at the given distance a): :func:`arm_best`, laid off from A0
+    at ψ0 from A0B0 on the side away from the swing."""
+    out = arm_best(prog, g["h"], g["L"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
+                   arm=g.get("arm", "left"), alpha_allow_return=g.get("alpha_allow_return"), a=g.get("a"))
+    tau = 1.0 if g.get("arm", "left") == "right" else -1.0
+    return A0 + (rotate(B0, A0, -tau * math.radians(out["psi0"])) - A0).unit() * out["a"]
+
+
+def binding_positions(prog: Program, g: Mapping[str, Any], a: float) -> tuple[tuple[str, float], ...]:
+    """(part, δ) of the positions whose wedge bounds O: the binding one at a, and at a kink of r0(a) (two
+    positions binding at once) the one binding just beside it."""
+    motion = ArmProgram(g["h"], prog, g.get("rotation", "ccw"), g.get("arm", "left"))
+    lims = limits(prog, g["alpha_allow"], g.get("alpha_allow_return"))
+    out = []
+    for x in ((a,) if g.get("a") is not None else (a * (1 - 1e-7), a * (1 + 1e-7))):
+        _, part, at, _ = arm_psi0(motion, g["L"], x, lims)
+        if not any(p == part and abs(d - at) < 1e-3 for p, d in out):
+            out.append((part, at))
+    return tuple(out)
+
+
+def arc_through(C: Point, P: Point, half: float) -> Arc:
+    """The arc about C through P, ``half`` radians either side of it."""
+    d = P - C
+    return Arc(C, abs(d), math.atan2(d.y, d.x) - half, 2 * half)
+
+
+def same_point(p: Point) -> Point:
+    """The point itself (computed ahead of its step in the protocol)."""
+    return p
+
+
+def pick_position(binds: tuple[tuple[str, float], ...], j: int) -> tuple[str, float] | None:
+    """The j-th binding position, or None."""
+    return binds[j] if j < len(binds) else None
+
+
+def beyond(P: Point, Q: Point, extra: float) -> Segment:
+    """The segment PQ extended beyond Q by ``extra``·|PQ|."""
+    return Segment(P, Q + (Q - P) * extra)
+
+
+def binding_image(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float]) -> Point:
+    """K at a binding position (part, δ) (one-sided motion inside its part)."""
+    m = part_motion(motion, *pos)
+    B = arm_position(B0, A0, motion.tau, math.degrees(float(m.psi[0])))
+    return velocity_image(A0, B, motion.eps * float(m.d1[0]))
+
+
+def binding_arm(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float]) -> Segment:
+    """The arm A0Bi at a binding position (part, δ)."""
+    m = part_motion(motion, *pos)
+    return segment(A0, arm_position(B0, A0, motion.tau, math.degrees(float(m.psi[0]))))
+
+
+def construct_arm(g: Mapping[str, Any]) -> Construction:
+    """The arm's positions, the velocity-image points K, the wedges at α_allow, the best O and r0."""
+    prog, h, L = _program(g), g["h"], g["L"]
+    motion = ArmProgram(h, prog, g.get("rotation", "ccw"), g.get("arm", "left"))
+    tau, eps = float(motion.tau), float(motion.eps)
+    sc = Scene("Base circle of an oscillating-follower cam from the arm's velocity images")
+    A0 = sc.given("A0", Point(0.0, 0.0), style="pivot", caption=("A0: the arm's pivot", "A0:摆杆转轴"))
+    B0 = sc.given("B0", Point(tau * L, 0.0), style="joint", caption=(
+        f"A0B0 = L = {L:g}: the arm at the start of the rise", f"A0B0 = L = {L:g}:推程起始时的摆杆"))
+    add_bar(sc, "arm0", A0, B0)
+    O = sc.add("O_best", best_arm_centre, prog, g, A0, B0, visible=False)
+    parts = [("rise", prog.rise, g["alpha_allow"])]
+    if g.get("alpha_allow_return") is not None and prog.ret is not None:
+        parts.append(("return", prog.ret, g["alpha_allow_return"]))
+    same = eps > 0
+    for part, seg, allow in parts:
+        zh = "推程" if part == "rise" else "回程"
+        divs = [seg.start + seg.angle * i / 6 for i in range(7)]
+        divs[-1] = float(np.nextafter(seg.end, seg.start))
+        for i, d in enumerate(divs):
+            m = part_motion(motion, part, d)
+            psi, k = math.degrees(float(m.psi[0])), eps * float(m.d1[0])
+            first = i == 0
+            B = sc.add(f"B_{part}{i}", arm_position, B0, A0, tau, psi, style="point", caption=(
+                f"Turn the arm about A0 to its {part} positions A0B1, A0B2, … (ψ at every sixth of the {part})",
+                f"将摆杆绕 A0 转到{zh}各位置 A0B1、A0B2 …(按{zh}角六等分取 ψ)") if first and part == "rise" else
+                ("", ""))
+            sc.add(f"arm_{part}{i}", segment, A0, B, style="ghost")
+            K = sc.add(f"K_{part}{i}", velocity_image, A0, B, k, style="point", caption=(
+                "On each A0Bi lay off BiKi = L·ψ′i (ψ′ = dψ/dδ) " + ("towards A0 (the arm swings with the cam's sense "
+                "in the rise)" if same else "away from A0 (the arm swings against the cam's sense in the rise)"),
+                "在各 A0Bi 上截取 BiKi = L·ψ′i(ψ′ = dψ/dδ)," + ("向 A0 方向(推程中摆杆与凸轮同向转动)" if same else
+                                                              "背离 A0(推程中摆杆与凸轮反向转动)")) if first and part == "rise"
+                else ("", ""))
+            for side in (1.0, -1.0):
+                sc.add(f"wedge_{part}{i}_{'ab'[side < 0]}", wedge_ray, A0, B, K, allow, side, tau, O,
+                       style="construction", caption=(
+                           f"Through every Ki draw the two lines at α_allow = {allow:g}° to the arm's normal: O must lie "
+                           f"between them ({part})", f"过各 Ki 作与摆杆法线成 [α] = {allow:g}° 的两直线,O 须在其间({zh})")
+                       if first and side > 0 else ("", ""))
+        sc.add(f"K_curve_{part}", image_curve, motion, A0, B0, seg.start, seg.end, style="path")
+    O = sc.add("O", same_point, O, role=Role.RESULT, style="pivot", label="O", caption=(
+        ("The admissible point nearest B0 is the best centre O" if g.get("a") is None else
+         f"The admissible point of the circle of radius a = {g['a']:g} about A0 nearest B0: the centre O"),
+        ("可行域内离 B0 最近的点即最佳凸轮中心 O" if g.get("a") is None else
+         f"以 A0 为圆心、a = {g['a']:g} 为半径的圆在可行域内离 B0 最近的点即凸轮中心 O")))
+    if g.get("a") is not None:
+        sc.add("a_arc", arc_through, A0, O, 0.35, style="construction")
+    a = sc.add("a", length, O, A0, role=Role.MEASUREMENT, unit="mm", caption=("a = OA0", "中心距 a = OA0"))
+    sc.add("OA0", segment, O, A0, style="frame")
+    binds = sc.add("binding", binding_positions, prog, g, a, visible=False)
+    for j in range(2):
+        pos = sc.add(f"bind{j}", pick_position, binds, j, visible=False)
+        sc.add(f"bind_arm{j}", binding_arm, A0, B0, motion, pos, style="link-alt", optional=True,
+               caption=("The binding position(s) of the arm, where the region's boundary passes through O",
+                        "起作用的摆杆位置:可行域边界在该处通过 O") if j == 0 else ("", ""))
+        K = sc.add(f"bind_K{j}", binding_image, A0, B0, motion, pos, style="joint", label="K*", optional=True)
+        sc.add(f"bind_line{j}", beyond, K, O, 0.25, style="admissible", optional=True)
+    r0 = sc.add("r0", length, O, B0, role=Role.MEASUREMENT, unit="mm", caption=("r0 = OB0", "基圆半径 r0 = OB0"))
+    sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
+    sc.add("OB0", segment, O, B0, style="construction")
+    psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
+                  caption=("ψ0 = ∠OA0B0", "初始摆角 ψ0 = ∠OA0B0"))
+    add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
+    rho = sc.add("rho_min_pitch", lambda o_a, r: rho_min(arm_cam(g, o_a, r).pitch_curve()).value, a, r0,
+                 role=Role.MEASUREMENT, unit="mm", caption=("ρmin of the pitch curve of the designed cam",
+                                                            "所得凸轮理论廓线的最小曲率半径 ρmin"))
+    sc.add("rr_max", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm",
+           caption=("rr ≤ 0.8·ρmin", "滚子半径 rr ≤ 0.8ρmin"))
+    names = ("r0", "a", "psi0", "rho_min_pitch", "rr_max")
+    return Construction(sc, {n: n for n in names}, {"O": "O", "A0": "A0", "B0": "B0"})
+
+
 RECIPE = Recipe(
     name="cam.base_radius",
-    title="Disc cam, translating follower: smallest base circle and best offset for an allowed pressure angle",
+    title="Disc cam: smallest base circle for an allowed pressure angle (translating: best offset; oscillating: best "
+          "centre)",
     givens=GIVENS,
     answers=ANSWERS,
     points=("O", "B0"),
