@@ -132,10 +132,8 @@ def test_crank_rocker_design_seeds(given, expected, n):
         assert sol.answers[k] == pytest.approx(v, abs=1e-4)
 
 
-@pytest.mark.parametrize("i", range(40))
-def test_random_crank_rocker_designs(i):
-    rng = random.Random(5000 + i)
-    # a random crank-rocker gives its own K, ψ and closing values: the design must find it again
+def _random_crank_rocker(rng: random.Random) -> tuple[float, ...]:
+    """AB, BC, CD, AD of a random Grashof crank-rocker (5 mm from the Grashof limit) and its own K and ψ."""
     while True:
         AB = rng.uniform(10, 50)
         BC, CD, AD = (rng.uniform(AB * 1.2, 300) for _ in range(3))
@@ -144,6 +142,14 @@ def test_random_crank_rocker_designs(i):
             break
     ex = _solve("crank_rocker.extremes", AB=AB, BC=BC, CD=CD, AD=AD)
     K, psi = ex.answers["K"], ex.answers["psi"]
+    return AB, BC, CD, AD, K, psi
+
+
+@pytest.mark.parametrize("i", range(40))
+def test_random_crank_rocker_designs(i):
+    rng = random.Random(5000 + i)
+    # a random crank-rocker gives its own K, ψ and closing values: the design must find it again
+    AB, BC, CD, AD, K, psi = _random_crank_rocker(rng)
     if K < 1 + 1e-6:
         pytest.skip("this random linkage has no quick return")
     which = rng.choice(["BC", "AB"])
@@ -158,14 +164,7 @@ def test_random_crank_rocker_designs(i):
 def test_random_crank_rocker_links_form(i):
     """Links form (AB, BC, K, ψ → CD, AD): a random crank-rocker's own K and ψ must give its CD and AD back."""
     rng = random.Random(7000 + i)
-    while True:
-        AB = rng.uniform(10, 50)
-        BC, CD, AD = (rng.uniform(AB * 1.2, 300) for _ in range(3))
-        ls = sorted([BC, CD, AD])
-        if AB + ls[2] < ls[0] + ls[1] - 5:
-            break
-    ex = _solve("crank_rocker.extremes", AB=AB, BC=BC, CD=CD, AD=AD)
-    K, psi = ex.answers["K"], ex.answers["psi"]
+    AB, BC, CD, AD, K, psi = _random_crank_rocker(rng)
     if K < 1 + 1e-3:
         pytest.skip("this random linkage has (almost) no quick return")
     sol = _solve("crank_rocker.design_by_K", K=K, AB=AB, BC=BC, psi=psi)
