@@ -37,6 +37,9 @@ class Quantity:
         Givens only: smallest admissible value.
     inclusive : bool
         Givens only: whether ``minimum`` itself is admissible (e ≥ 0) or not (AB > 0).
+    maximum : float or None
+        Givens only: largest admissible value (inclusive), on top of the unit's global range
+        (:data:`geomcon.problems.RANGES`); for lists, of every element.
     choices : tuple of str
         Givens of unit "choice": the admissible words.
     """
@@ -48,6 +51,7 @@ class Quantity:
     default: Any = None
     minimum: float | None = 0.0
     inclusive: bool = False
+    maximum: float | None = None
     choices: tuple[str, ...] = ()
 
 
