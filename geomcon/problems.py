@@ -13,6 +13,9 @@ A problem file looks like::
     H = 64.6
 
 Everything is validated here, so that a bad file fails with one line naming the key and the value.
+Problem files are untrusted: nothing in them is evaluated, and every size is limited up front
+(:data:`LIMITS`); every number must lie in its unit's range (:data:`RANGES`), and a recipe may narrow it
+(``Quantity.minimum``/``maximum``).
 
 Examples
 --------
@@ -27,7 +30,10 @@ geomcon.errors.ProblemError: given 'AB' must be > 0, got -1
 from __future__ import annotations
 
 import math
+import os
+import stat
 import tomllib
+import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
@@ -36,6 +42,24 @@ from .errors import ProblemError
 from .recipes import Quantity, Recipe, get_recipe
 
 TOP_KEYS = ("recipe", "title", "source", "seed", "statement", "notes", "given", "published")
+
+LIMITS = {
+    "file_bytes": 1 << 20,       # a problem file is at most 1 MiB
+    "list_items": 1000,          # elements of a list given or a published list
+    "table_rows": 100,           # rows of a table given (a cam's motion program)
+    "text_chars": 20000,         # characters of a text field (title, notes, …)
+}
+"""Size limits of a problem file, checked before anything is computed."""
+
+RANGES = {
+    "mm": (1e-6, 1e9),           # a nonzero length: 1 nm … 1000 km
+    "deg": (0.0, 3600.0),        # |angle| ≤ ten turns
+    "": (0.0, 1e6),              # ratios, speeds, counts
+}
+"""Magnitude range of every given number by unit (lengths: a nonzero |x| in [lo, hi]; others |x| ≤ hi)."""
+
+LENGTH_SPAN = 1e10
+"""No nonzero given length may be more than this many times smaller than the largest given length."""
 
 
 @dataclass(frozen=True)
@@ -54,12 +78,33 @@ class Problem:
     path: str | None = None
 
 
+def _short(value: Any, limit: int = 60) -> str:
+    """``repr`` of a value, cut to ``limit`` characters (hostile files hold huge values)."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10 ** 30:
+        return f"an integer of {len(str(abs(value)))} digits"
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def _number(value: Any, where: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ProblemError(f"{where} must be a number, got {value!r}")
+        raise ProblemError(f"{where} must be a number, got {_short(value)}")
+    if isinstance(value, int) and abs(value) > 1e300:
+        raise ProblemError(f"{where} is out of range ({_short(value)})")
     x = float(value)
     if not math.isfinite(x):
         raise ProblemError(f"{where} is not a finite number ({value!r})")
+    return x
+
+
+def _in_range(unit: str, x: float, where: str) -> float:
+    """Refuse a number outside its unit's range (:data:`RANGES`), naming the limit."""
+    lo, hi = RANGES.get(unit.removesuffix("[]"), RANGES[""])
+    if abs(x) > hi:
+        raise ProblemError(f"{where} = {x:g} is out of range: |{unit or 'value'}| ≤ {hi:g}"
+                           if unit else f"{where} = {x:g} is out of range: |value| ≤ {hi:g}")
+    if x != 0 and abs(x) < lo:
+        raise ProblemError(f"{where} = {x:g} mm is too small: a nonzero length is at least {lo:g} mm")
     return x
 
 
@@ -81,12 +126,12 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
         value = given[q.name]
         if q.unit == "bool":
             if not isinstance(value, bool):
-                raise ProblemError(f"given '{q.name}' must be true or false, got {value!r}")
+                raise ProblemError(f"given '{q.name}' must be true or false, got {_short(value)}")
             out[q.name] = value
             continue
         if q.unit == "choice":
             if value not in q.choices:
-                raise ProblemError(f"given '{q.name}' must be one of {', '.join(q.choices)}, got {value!r}")
+                raise ProblemError(f"given '{q.name}' must be one of {', '.join(q.choices)}, got {_short(value)}")
             out[q.name] = value
             continue
         if q.unit == "point":
@@ -97,11 +142,35 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
             continue
         if q.unit.endswith("[]"):
             if not isinstance(value, list) or not value:
-                raise ProblemError(f"given '{q.name}' must be a non-empty list of numbers, got {value!r}")
+                raise ProblemError(f"given '{q.name}' must be a non-empty list of numbers, got {_short(value)}")
+            if len(value) > LIMITS["list_items"]:
+                raise ProblemError(f"given '{q.name}' has {len(value)} elements; at most {LIMITS['list_items']}")
             out[q.name] = tuple(_bounded(q, v, f"given '{q.name}[{i}]'") for i, v in enumerate(value))
             continue
         out[q.name] = _bounded(q, value, f"given '{q.name}'")
+    _length_span(recipe, out)
     return out
+
+
+def _length_span(recipe: Recipe, given: Mapping[str, Any]) -> None:
+    """Refuse given lengths more than :data:`LENGTH_SPAN` apart (the smaller one would be lost in rounding)."""
+    lengths: list[tuple[float, str]] = []
+    for q in recipe.givens:
+        v = given.get(q.name)
+        if v is None:
+            continue
+        if q.unit == "mm":
+            lengths.append((abs(v), q.name))
+        elif q.unit == "mm[]":
+            lengths += [(abs(x), f"{q.name}[{i}]") for i, x in enumerate(v)]
+    nonzero = [t for t in lengths if t[0] > 0]
+    if not nonzero:
+        return
+    big, small = max(nonzero), min(nonzero)
+    if big[0] > LENGTH_SPAN * small[0]:
+        raise ProblemError(f"given '{small[1]}' = {small[0]:g} mm is more than {LENGTH_SPAN:g} times smaller than "
+                           f"'{big[1]}' = {big[0]:g} mm: lengths must lie within a ratio of {LENGTH_SPAN:g} "
+                           "(write 0 for none)")
 
 
 def _bounded(q: Quantity, value: Any, where: str) -> float:
@@ -110,21 +179,27 @@ def _bounded(q: Quantity, value: Any, where: str) -> float:
         bad = x < q.minimum if q.inclusive else x <= q.minimum
         if bad:
             op = "≥" if q.inclusive else ">"
-            raise ProblemError(f"{where} must be {op} {q.minimum:g}, got {value!r}")
-    return x
+            raise ProblemError(f"{where} must be {op} {q.minimum:g}, got {_short(value)}")
+    if q.maximum is not None and x > q.maximum:
+        raise ProblemError(f"{where} must be ≤ {q.maximum:g}, got {_short(value)}")
+    return _in_range(q.unit, x, where)
 
 
 def _point(value: Any, where: str) -> tuple[float, float]:
     """``[x, y]`` in mm."""
     if not isinstance(value, list) or len(value) != 2:
-        raise ProblemError(f"{where} must be a point [x, y], got {value!r}")
-    return (_number(value[0], f"{where}[0]"), _number(value[1], f"{where}[1]"))
+        raise ProblemError(f"{where} must be a point [x, y], got {_short(value)}")
+    return (_in_range("mm", _number(value[0], f"{where}[0]"), f"{where}[0]"),
+            _in_range("mm", _number(value[1], f"{where}[1]"), f"{where}[1]"))
 
 
 def _tables(value: Any, where: str) -> tuple[dict[str, Any], ...]:
     """A non-empty list of tables (e.g. a cam's motion program); the recipe checks their contents."""
     if not isinstance(value, list) or not value or not all(isinstance(v, Mapping) for v in value):
-        raise ProblemError(f"{where} must be a non-empty list of tables, e.g. [{{kind = \"rise\", angle = 120}}], got {value!r}")
+        raise ProblemError(f"{where} must be a non-empty list of tables, e.g. [{{kind = \"rise\", angle = 120}}], "
+                           f"got {_short(value)}")
+    if len(value) > LIMITS["table_rows"]:
+        raise ProblemError(f"{where} has {len(value)} rows; at most {LIMITS['table_rows']}")
     return tuple(dict(v) for v in value)
 
 
@@ -142,24 +217,42 @@ def problem_from_dict(data: Mapping[str, Any], *, name: str, path: str | None = 
     published_in = data.get("published", {})
     if not isinstance(published_in, Mapping):
         raise ProblemError("[published] must be a table of answer = value")
-    answers = [q.name for q in recipe.answers]
+    units = {q.name: q.unit for q in recipe.answers}
     published: dict[str, Any] = {}
     for k, v in published_in.items():
-        if k not in answers:
-            raise ProblemError(f"published '{k}' is not an answer of {recipe.name} (answers: {', '.join(answers)})")
-        if isinstance(v, list):
-            published[k] = tuple(_number(x, f"published '{k}[{i}]'") for i, x in enumerate(v))
-        elif isinstance(v, bool):
-            published[k] = v
-        else:
-            published[k] = _number(v, f"published '{k}'")
-    texts = {}
-    for k in ("title", "source", "seed", "statement", "notes"):
-        v = data.get(k, "")
-        if not isinstance(v, str):
-            raise ProblemError(f"'{k}' must be a string, got {v!r}")
-        texts[k] = v
+        if k not in units:
+            raise ProblemError(f"published '{k}' is not an answer of {recipe.name} (answers: {', '.join(units)})")
+        published[k] = _published(units[k], v, f"published '{k}'")
+    texts = {k: _text(data.get(k, ""), k) for k in ("title", "source", "seed", "statement", "notes")}
     return Problem(id=name, recipe=recipe.name, given=given, published=published, path=path, **texts)
+
+
+def _published(unit: str, value: Any, where: str) -> Any:
+    """A printed answer in its answer's shape: a list for list answers, true/false for bool answers."""
+    if unit == "bool":
+        if not isinstance(value, bool):
+            raise ProblemError(f"{where} must be true or false (the answer is a yes/no), got {_short(value)}")
+        return value
+    if unit.endswith("[]"):
+        if not isinstance(value, list) or not value:
+            raise ProblemError(f"{where} must be a non-empty list of numbers (the answer is a list), got {_short(value)}")
+        if len(value) > LIMITS["list_items"]:
+            raise ProblemError(f"{where} has {len(value)} elements; at most {LIMITS['list_items']}")
+        return tuple(_in_range(unit, _number(x, f"{where}[{i}]"), f"{where}[{i}]") for i, x in enumerate(value))
+    return _in_range(unit, _number(value, where), where)
+
+
+def _text(value: Any, key: str) -> str:
+    """A free-text field: a string of at most ``LIMITS['text_chars']`` characters, no control characters other
+    than tab and newline (they cannot be written to SVG or HTML)."""
+    if not isinstance(value, str):
+        raise ProblemError(f"'{key}' must be a string, got {_short(value)}")
+    if len(value) > LIMITS["text_chars"]:
+        raise ProblemError(f"'{key}' has {len(value)} characters; at most {LIMITS['text_chars']}")
+    for i, ch in enumerate(value):
+        if ch not in "\t\n" and (unicodedata.category(ch) in ("Cc", "Cs") or ch in "\ufffe\uffff"):
+            raise ProblemError(f"'{key}' holds the control character U+{ord(ch):04X} at position {i}")
+    return value
 
 
 def load_problem(path: str | Path) -> Problem:
@@ -172,12 +265,77 @@ def load_problem(path: str | Path) -> Problem:
         (the caller adds the file name).
     """
     p = Path(path)
+    data = parse_toml(read_limited(p))
+    return problem_from_dict(data, name=p.stem, path=str(p))
+
+
+def read_limited(path: Path, limit: int = LIMITS["file_bytes"]) -> str:
+    """The UTF-8 text of a regular file of at most ``limit`` bytes (a leading byte-order mark dropped).
+
+    A FIFO, a device (``/dev/zero``) or a directory is refused before it is opened, so nothing blocks or
+    reads without end.
+    """
     try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
+        st = os.stat(path)
+        if not stat.S_ISREG(st.st_mode):
+            what = "a directory" if stat.S_ISDIR(st.st_mode) else "not a regular file (a pipe or a device)"
+            raise ProblemError(f"cannot read the file: {what}")
+        if st.st_size > limit:
+            raise ProblemError(f"the file has {st.st_size} bytes; a problem file is at most {limit} bytes")
+        with open(path, "rb") as fh:
+            raw = fh.read(limit + 1)
     except OSError as exc:
         raise ProblemError(f"cannot read the file: {exc.strerror or exc}") from None
+    if len(raw) > limit:
+        raise ProblemError(f"the file has more than {limit} bytes; a problem file is at most {limit} bytes")
+    try:
+        text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise ProblemError(f"not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    return text.removeprefix("\ufeff")
+
+
+def parse_toml(text: str) -> dict[str, Any]:
+    """Parse TOML text; any failure (syntax, a number too long for Python, nesting too deep) is one line.
+
+    Examples
+    --------
+    >>> parse_toml("a = [[[]]]")
+    {'a': [[[]]]}
+    >>> parse_toml("a = " + "[" * 2000 + "]" * 2000)
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.ProblemError: malformed TOML: nested more than 32 levels deep
+    """
+    depth = max_nesting(text)
+    if depth > MAX_NESTING:
+        raise ProblemError(f"malformed TOML: nested more than {MAX_NESTING} levels deep")
+    try:
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ProblemError(f"malformed TOML: {exc}") from None
-    return problem_from_dict(data, name=p.stem, path=str(p))
+    except (ValueError, RecursionError, OverflowError) as exc:      # e.g. an integer of > 4300 digits
+        raise ProblemError(f"malformed TOML: {str(exc).splitlines()[0][:120]}") from None
+
+
+MAX_NESTING = 32
+"""Deepest nesting of arrays and inline tables accepted in a problem file."""
+
+
+def max_nesting(text: str) -> int:
+    """An upper bound of the bracket nesting depth of TOML text (brackets inside strings count too, so
+    the bound is safe: it never under-counts).
+
+    Examples
+    --------
+    >>> max_nesting('a = [[1, 2], {b = [3]}]')
+    3
+    """
+    depth = best = 0
+    for ch in text:
+        if ch in "[{":
+            depth += 1
+            best = max(best, depth)
+        elif ch in "]}":
+            depth = max(depth - 1, 0)
+    return best
