@@ -37,6 +37,17 @@ from ..tolerance import tol
 from .primitives import Circle, Line, Point
 
 
+def _sum_less(x: float, y: float, z: float) -> float:
+    """x + y − z for x, y, z ≥ 0, z subtracted from the larger of x, y first: exact (Sterbenz) when z is
+    near it, so a Heron factor keeps its relative accuracy when one radius is tiny beside the others.
+
+    >>> _sum_less(1e-9, 500.0, 500.0)
+    1e-09
+    """
+    big, small = (x, y) if x >= y else (y, x)
+    return (big - z) + small
+
+
 def line_line(l1: Line, l2: Line) -> tuple[Point, ...]:
     """Intersect two lines: ``()`` if parallel, one point otherwise.
 
@@ -94,9 +105,12 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
         return (c1.center + u * a,)
     if outer > 0 or inner > 0:
         return ()
-    a = 0.5 * (d + (r1 - r2) * (r1 + r2) / d)
-    s, m = r1 + r2, r1 - r2
-    h2 = (s - d) * (d - m) * (d + m) * (d + s)
+    # a = (d² + r1² − r2²)/(2d): the cancellation is between r2² and the larger of d², r1², so that
+    # difference is formed as a product of a near-exact difference (a tiny circle on a large one keeps its
+    # relative accuracy: a ≈ r1²/2d, not ε·d)
+    big, small = (d, r1) if d >= r1 else (r1, d)
+    a = ((big - r2) * (big + r2) + small * small) / (2.0 * d)
+    h2 = _sum_less(r1, r2, d) * _sum_less(d, r2, r1) * _sum_less(d, r1, r2) * (d + r1 + r2)
     h = math.sqrt(h2) / (2.0 * d)
     foot = u * a                             # still local: translate once, at the very end
     n = u.perp() * h
