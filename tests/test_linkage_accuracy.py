@@ -25,7 +25,7 @@ def test_a_tiny_circle_on_a_large_one_keeps_its_relative_accuracy(r1, R):
     p, q = circle_circle(Circle(Point(0, 0), r1), Circle(Point(0, -R), R))
     y = -mpmath.mpf(r1) ** 2 / (2 * R)
     x = mpmath.sqrt(mpmath.mpf(r1) ** 2 - y * y)
-    for pt, sx in ((p, -1), (q, 1)):
+    for pt, sx in ((p, 1), (q, -1)):            # left of the centre line downwards first: +x
         assert abs(pt.y - y) <= 4e-16 * abs(y)
         assert abs(pt.x - sx * x) <= 4e-16 * x
 
