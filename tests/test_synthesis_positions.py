@@ -187,14 +187,60 @@ def test_nearly_collinear_positions_warn_with_the_condition_number():
     assert sol.answers["sens_A"] > 10
 
 
-def test_non_rigid_coupler_is_refused():
-    with pytest.raises(NotAMechanism, match="not rigid"):
-        _solve(R1, B1=(0, 0), B2=(-10, 30), B3=(-10, 0), C1=(0, 50), C2=(4, 78), C3=(40, 1))
+def test_non_rigid_coupler_is_refused_beyond_one_percent():
+    with pytest.raises(NotAMechanism, match=r"not rigid.*1 %"):
+        _solve(R1, B1=(0, 0), B2=(-10, 30), B3=(-10, 0), C1=(0, 50), C2=(4, 78), C3=(40, 10))    # |B3C3| = 50.99
 
 
-def test_input_link_of_changing_length_is_refused():
-    with pytest.raises(NotAMechanism, match=r"AB1 = 20.*AB2 = 20\.1"):
-        _solve(R2, A=(0, 0), D=(50, 0), B1=(20, 0), B2=(0, 20.1), B3=(-20, 0), coupler_angles=[0, 10, 20])
+def test_input_link_of_changing_length_is_refused_beyond_one_percent():
+    with pytest.raises(NotAMechanism, match=r"AB1 = 20.*AB2 = 20\.3.*1 %"):
+        _solve(R2, A=(0, 0), D=(50, 0), B1=(20, 0), B2=(0, 20.3), B3=(-20, 0), coupler_angles=[0, 10, 20])
+
+
+def _drafted(rng, decimals=4):
+    """A clean design, its positions rounded to ``decimals`` as a textbook prints them."""
+    A, D, AB, BC, CD, pos = _clean(rng)
+    r = lambda p: tuple(round(c, decimals) for c in p)     # noqa: E731
+    return A, D, AB, BC, CD, [(r(B), r(C)) for B, C in pos]
+
+
+@pytest.mark.parametrize("i", range(10))
+def test_drafted_positions_are_fitted_to_a_rigid_coupler(i):
+    # rounded to 4 decimals, |B_iC_i| differ by ~1e-5 mm: accepted with a warning, C_i slid along B_iC_i to
+    # the mean BC, and every check (twin and back-substitution) passes on the fitted positions
+    A, D, AB, BC, CD, pos = _drafted(random.Random(8400 + i))
+    g = {f"B{k}": p[0] for k, p in enumerate(pos, 1)} | {f"C{k}": p[1] for k, p in enumerate(pos, 1)}
+    sol = _solve(R1, **g)
+    _all_ok(sol)
+    lens = [math.dist(B, C) for B, C in pos]
+    assert sol.answers["BC"] == pytest.approx(sum(lens) / 3, rel=1e-12)
+    assert any("not rigid" in w and "mean BC" in w for w in sol.warnings) or max(lens) - min(lens) <= 1e-9 * BC
+    # the fitted design is the drafted one to within the rounding, propagated through the conditioning
+    tol = 3 * 5 * math.sqrt(2) * 5e-5 * (max(sol.answers["sens_A"], sol.answers["sens_D"]) / 0.1)
+    assert math.dist(sol.answers["A"], A) <= tol and math.dist(sol.answers["D"], D) <= tol
+
+
+@pytest.mark.parametrize("i", range(10))
+def test_drafted_input_positions_are_fitted_to_the_crank_circle(i):
+    A, D, AB, BC, CD, pos = _drafted(random.Random(8500 + i))
+    r = lambda p: [round(c, 4) for c in p]     # noqa: E731
+    off = random.Random(i).uniform(-90, 90)
+    sol = _solve(R2, A=r(A), D=r(D), **{f"B{k}": p[0] for k, p in enumerate(pos, 1)},
+                 coupler_angles=[round(angle_of(B, C) + off, 4) for B, C in pos])
+    _all_ok(sol)
+    lens = [math.dist(r(A), B) for B, _ in pos]
+    assert sol.answers["AB"] == pytest.approx(sum(lens) / 3, rel=1e-12)
+    assert any("does not keep its length" in w and "mean AB" in w for w in sol.warnings)
+    assert math.dist(sol.answers["C1"], pos[0][1]) <= 1e-3 * (1 + sol.answers["sens_C"] / 0.1)
+
+
+def test_twin_fits_drafted_data_like_the_construction():
+    from geomcon.analytic.synthesis import rigid_fit, three_positions_fixed_pivots
+    pts = rigid_fit([(0.0, 0.0)] * 3, [(20.0, 0.0), (0.0, 20.01), (-19.995, 0.0)])
+    assert [math.hypot(*p) for p in pts] == pytest.approx([(20 + 20.01 + 19.995) / 3] * 3, rel=1e-15)
+    sol = _solve(R2, A=(0, 0), D=(50, 0), B1=(20, 0), B2=(0, 20.01), B3=(-19.995, 0), coupler_angles=[0, 10, 20])
+    twin = three_positions_fixed_pivots((0, 0), (50, 0), [(20, 0), (0, 20.01), (-19.995, 0)], angles=[0, 10, 20])
+    assert math.dist(sol.answers["C1"], twin["C1"]) <= 1e-12 * 50 and sol.ok
 
 
 @pytest.mark.parametrize("extra, words", [

@@ -18,9 +18,9 @@ Examples
 --------
 >>> circumcentre((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0))
 (0.0, 0.0)
->>> r = three_positions((0, 30), (-20, 40), (-45, 35), (60, 60), (50, 84), (34, 101))
+>>> r = three_positions((0, 0), (-10, 30), (-10, 0), (0, 50), (4, 78), (40, 0))
 >>> [round(r[k], 6) for k in ("AB", "BC", "CD", "AD")]
-[36.874027, 67.082039, 68.850583, 46.203783]
+[15.811388, 50.0, 58.933356, 75.651441]
 >>> r["crank"], r["branch_ok"], r["order_ok"]          # C2 lies on the other side of B→D: a branch defect
 (True, False, True)
 """
@@ -138,10 +138,30 @@ def linkage_report(A: XY, D: XY, Bs: Sequence[XY], Cs: Sequence[XY]) -> dict[str
     }
 
 
+# ------------------------------------------------------------------------------------------ drafted data
+def rigid_fit(anchors: Sequence[XY], pts: Sequence[XY]) -> list[XY]:
+    """Drafted positions of one rigid link (anchor_i → point_i) made rigid: the link's length is the mean
+    of the three drawn lengths and each point is moved along its own line from its anchor to it — the rule
+    the recipes document (their code is separate).
+
+    >>> rigid_fit([(0.0, 0.0)] * 3, [(3.0, 4.0), (0.0, 5.003), (-5.003, 0.0)])[1]
+    (0.0, 5.002)
+    """
+    lens = [math.hypot(p[0] - a[0], p[1] - a[1]) for a, p in zip(anchors, pts)]
+    r = math.fsum(lens) / 3.0
+    out = []
+    for a, p, d in zip(anchors, pts, lens):
+        k = r / d if d > 0.0 else 1.0
+        out.append((a[0] + (p[0] - a[0]) * k, a[1] + (p[1] - a[1]) * k) if k != 1.0 else tuple(p))
+    return out
+
+
 # ------------------------------------------------------------------------------------------ the two twins
 def three_positions(B1: XY, B2: XY, B3: XY, C1: XY, C2: XY, C3: XY) -> dict[str, Any]:
-    """``four_bar.three_positions``: A and D as circumcentres, the linkage report and the sensitivities."""
-    Bs, Cs = [B1, B2, B3], [C1, C2, C3]
+    """``four_bar.three_positions``: A and D as circumcentres, the linkage report and the sensitivities.
+    Drafted data (|B_iC_i| not quite equal) are made rigid by :func:`rigid_fit` (C_i moved along B_iC_i)."""
+    Bs = [B1, B2, B3]
+    Cs = rigid_fit(Bs, [C1, C2, C3])
     A = tuple(float(v) for v in circumcentre(*Bs))
     D = tuple(float(v) for v in circumcentre(*Cs))
     out = linkage_report(A, D, Bs, Cs)
@@ -160,8 +180,14 @@ def coupler_directions(Bs: Sequence[XY], Ks: Sequence[XY] | None, angles: Sequen
 def three_positions_fixed_pivots(A: XY, D: XY, Bs: Sequence[XY], Ks: Sequence[XY] | None = None,
                                  angles: Sequence[float] | None = None) -> dict[str, Any]:
     """``four_bar.three_positions_fixed_pivots``: C1 by the coupler-frame solve, C2 and C3 by carrying it with
-    the coupler, the linkage report and the sensitivity of C1 (to D, the B_i and the K_i; A does not enter)."""
+    the coupler, the linkage report and the sensitivity of C1 (to D, the B_i and the K_i; A does not enter).
+    Drafted B_i (|AB_i| not quite equal) are made rigid by :func:`rigid_fit` (moved along AB_i); the coupler's
+    directions B_iK_i are those drawn (K_i moves with B_i)."""
     us = coupler_directions(Bs, Ks, angles)
+    fitted = rigid_fit([A] * 3, Bs)
+    if Ks is not None:
+        Ks = [(K[0] + F[0] - B[0], K[1] + F[1] - B[1]) for B, F, K in zip(Bs, fitted, Ks)]
+    Bs = fitted
     C1 = tuple(float(v) for v in coupler_hinge(D, Bs, us))
     u1 = _unit(us[0])
     # C1 in the coupler frame of position 1, then carried to positions 2 and 3

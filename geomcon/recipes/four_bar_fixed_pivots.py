@@ -10,7 +10,13 @@ C2 and C3 follow by carrying C1 with the coupler (the triangle B1K1C1 copied ont
 
 The coupler's positions are given by a point K of it (``K1, K2, K3``) or by the angle of the coupler line
 (``coupler_angles``, deg); with angles, K_i is marked on the coupler line at the distance B1D/2 from B_i
-(any point of the line serves). The sensitivity ``sens_C`` is the worst shift of C1 when one given point
+(any point of the line serves).
+
+Drafted data: coordinates rounded as a textbook prints them leave |AB1|, |AB2|, |AB3| (and |B_iK_i|) a little
+unequal. Up to 1 % of the longest (:data:`~.synthesis_common.DRAFT_REFUSE_REL`) this is accepted with a
+warning and fitted by one documented rule (:func:`~.synthesis_common.fit_rigid`): each B_i slides along AB_i
+to the mean length AB, and K_i moves with it (the coupler's drawn direction B_iK_i is kept); only the
+directions B_iK_i are used. The twin fits the same way; beyond 1 % the data are refused. The sensitivity ``sens_C`` is the worst shift of C1 when one given point
 (D, a B_i or a K_i) is misplaced by 0.1 mm, from the Jacobian of the construction: each point of the
 circle moves the centre along the bisector of the other two, and D2′, D3′ move rigidly with D, B_i, K_i.
 
@@ -36,8 +42,9 @@ from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot, length
 from .four_bar_positions import REPORT
-from .synthesis_common import (DRAFT, add_bisector_centre, add_positions, add_report, evaluate_defects,
-                               positions_back_check, require_distinct_noncollinear, require_equal)
+from .synthesis_common import (DRAFT, DRAFT_REFUSE_REL, add_bisector_centre, add_positions, add_report,
+                               evaluate_defects, fit_rigid, positions_back_check, require_distinct_noncollinear,
+                               require_equal, xy)
 
 GIVENS = (
     Quantity("A", "point", "fixed pivot of the input link [x, y]", minimum=None),
@@ -48,10 +55,10 @@ GIVENS = (
     Quantity("coupler_angles", "deg[]", "directions of the coupler line BK in the three positions (or give K1..K3)",
              required=False, minimum=None),
 )
-ANSWERS = REPORT + (
+ANSWERS = (Quantity("C1", "mm[]", "hinge of coupler and output link in position 1 [x, y]"),) + REPORT + (
     Quantity("sens_C", "mm", "worst shift of C1 when one of D, B1..B3, K1..K3 is misplaced by 0.1 mm (mm per 0.1 mm)"),
 )
-K_REFUSE_REL = 0.01
+K_REFUSE_REL = DRAFT_REFUSE_REL
 """K1, K2, K3 whose distances from B differ by more than 1 % are not one point of a rigid coupler (refused);
 below that the difference is drafting error (warned): the construction and the twin use only the directions
 of B_iK_i."""
@@ -60,10 +67,12 @@ POINTS = ("A", "D", "B1", "B2", "B3", "K1", "K2", "K3", "C1", "C2", "C3")
 
 # ----------------------------------------------------------------------------------------- input
 def _coupler_points(g: Mapping[str, Any]) -> tuple[list[Point], list[Point], bool]:
-    """(B_i, K_i, K given): with angles, K_i at B1D/2 from B_i along the coupler line."""
-    Bs = [Point(*g[f"B{i}"]) for i in (1, 2, 3)]
+    """(B_i, K_i, K given), drafted B_i fitted onto the circle about A (:func:`fit_rigid`, K_i moved with B_i);
+    with angles, K_i at B1D/2 from B_i along the coupler line."""
+    raw = [Point(*g[f"B{i}"]) for i in (1, 2, 3)]
+    _, Bs = fit_rigid([Point(*g["A"])] * 3, raw)
     if g.get("K1") is not None:
-        return Bs, [Point(*g[f"K{i}"]) for i in (1, 2, 3)], True
+        return list(Bs), [Point(*g[f"K{i}"]) + (B - R) for i, B, R in zip((1, 2, 3), Bs, raw)], True
     L = abs(Point(*g["D"]) - Bs[0]) / 2.0
     return Bs, [B + Point(math.cos(math.radians(a)), math.sin(math.radians(a))) * L
                 for B, a in zip(Bs, g["coupler_angles"])], False
@@ -81,17 +90,25 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     A, D = Point(*g["A"]), Point(*g["D"])
     if A == D:
         raise NotAMechanism(f"A = D = ({A.x:g}, {A.y:g}): the frame has no length")
+    raw = [Point(*g[f"B{i}"]) for i in (1, 2, 3)]
+    for i, B in enumerate(raw, 1):
+        if B == A:
+            raise NotAMechanism(f"B{i} = A = ({A.x:g}, {A.y:g}): the input link has no length")
+    lens = {f"AB{i}": abs(B - A) for i, B in enumerate(raw, 1)}
+    warn_ab = require_equal("the input link does not keep its length", lens, refuse_rel=DRAFT_REFUSE_REL,
+                            why=f" (drafted data?): each B_i is slid along AB_i to the mean AB = "
+                                f"{sum(lens.values()) / 3:.10g} mm, K_i with it")
     Bs, Ks, given_k = _coupler_points(g)
-    require_equal("the input link does not keep its length", {f"AB{i}": abs(B - A) for i, B in enumerate(Bs, 1)})
     if given_k:
-        for i, (B, K) in enumerate(zip(Bs, Ks), 1):
-            if B == K:
+        for i, B in enumerate(raw, 1):
+            if B == Point(*g[f"K{i}"]):
                 raise NotAMechanism(f"K{i} = B{i} = ({B.x:g}, {B.y:g}): the coupler line B{i}K{i} is undefined")
         warn = require_equal("K is not one point of a rigid coupler",
                              {f"B{i}K{i}": abs(K - B) for i, (B, K) in enumerate(zip(Bs, Ks), 1)}, refuse_rel=K_REFUSE_REL,
                              why=" (drafting error?): only the directions B_iK_i, the coupler's angles, are used")
     else:
         warn = []
+    warn = warn_ab + warn
     for i in range(3):
         for j in range(i + 1, 3):
             if Bs[i] == Bs[j]:
@@ -236,6 +253,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
            caption=("Sensitivity of C1 per 0.1 mm of drafting error (Jacobian of the construction)",
                     "C1 对 0.1 mm 作图误差的敏感度"))
     answers["sens_C"] = "sens_C"
+    sc.add("C1_xy", xy, C1, visible=False)
+    answers["C1"] = "C1_xy"
     warnings += evaluate_defects(sc, Bs, Cs, D)
     return Construction(sc, answers, {n: n for n in POINTS}, warnings=tuple(warnings))
 

@@ -7,6 +7,13 @@ C1, C2, C3. The designed linkage is drawn in its three positions and measured (s
 drafting of the positions is reported: how far it moves, at worst, when one given point is misplaced by
 0.1 mm (DRAFT · R / h_min, h_min the smallest altitude of the triangle of the three positions).
 
+Drafted data. Coordinates copied from a drawing or a textbook are rounded, so |B1C1|, |B2C2|, |B3C3| differ a
+little. Up to 1 % of the longest (:data:`~.synthesis_common.DRAFT_REFUSE_REL`) they are accepted with a
+warning and fitted to a rigid coupler by one documented rule (:func:`~.synthesis_common.fit_rigid`): the
+B_i are kept and each C_i slides along B_iC_i to the mean length BC; D is the centre of the fitted C_i, and
+the back-substitution drives the linkage through the fitted positions. The twin fits the same way. Beyond
+1 % the coupler is refused as not rigid.
+
 Examples
 --------
 >>> from geomcon.problems import problem_from_dict
@@ -25,12 +32,14 @@ from __future__ import annotations
 from typing import Any, Mapping
 
 from ..analytic.synthesis import three_positions as twin
+from ..errors import NotAMechanism
 from ..geometry import Point, circle, segment
 from ..scene import Role, Scene
 from .base import Construction, Quantity, Recipe
 from .common import length
-from .synthesis_common import (add_bisector_centre, add_positions, add_report, centre_sensitivity, evaluate_defects,
-                               positions_back_check, require_distinct_noncollinear, require_equal)
+from .synthesis_common import (DRAFT_REFUSE_REL, add_bisector_centre, add_positions, add_report, centre_sensitivity,
+                               evaluate_defects, fit_rigid, positions_back_check, require_distinct_noncollinear,
+                               require_equal, xy)
 
 NAMES = ("B1", "B2", "B3", "C1", "C2", "C3")
 GIVENS = tuple(Quantity(n, "point", f"position {n[1]} of the moving pivot {n[0]} [x, y]", minimum=None) for n in NAMES)
@@ -49,20 +58,33 @@ REPORT = (
     Quantity("order_ok", "bool", "AB turns from B1 through B2 to B3 without meeting a dead point (no order defect)"),
     Quantity("phi", "deg[]", "directions of AB1, AB2, AB3 (deg, counter-clockwise from +x)"),
 )
-ANSWERS = REPORT + (
+ANSWERS = (
+    Quantity("A", "mm[]", "fixed pivot of the input link [x, y]: the centre of B1, B2, B3"),
+    Quantity("D", "mm[]", "fixed pivot of the output link [x, y]: the centre of C1, C2, C3 (fitted, for drafted data)"),
+) + REPORT + (
     Quantity("sens_A", "mm", "worst shift of A when one of B1, B2, B3 is misplaced by 0.1 mm (mm per 0.1 mm)"),
     Quantity("sens_D", "mm", "worst shift of D when one of C1, C2, C3 is misplaced by 0.1 mm (mm per 0.1 mm)"),
 )
 
 
 def _points(g: Mapping[str, Any]) -> dict[str, Point]:
-    return {n: Point(*g[n]) for n in NAMES}
+    """The given points, each C_i fitted onto the rigid coupler (slid along B_iC_i to the mean BC)."""
+    p = {n: Point(*g[n]) for n in NAMES}
+    _, fitted = fit_rigid([p[f"B{i}"] for i in (1, 2, 3)], [p[f"C{i}"] for i in (1, 2, 3)])
+    p.update({f"C{i}": C for i, C in enumerate(fitted, 1)})
+    return p
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
+    raw = {n: Point(*g[n]) for n in NAMES}
+    for i in (1, 2, 3):
+        if raw[f"B{i}"] == raw[f"C{i}"]:
+            raise NotAMechanism(f"B{i} = C{i} = ({raw[f'B{i}'].x:g}, {raw[f'B{i}'].y:g}): the coupler has no length")
+    lens = {f"B{i}C{i}": abs(raw[f"C{i}"] - raw[f"B{i}"]) for i in (1, 2, 3)}
+    warn = require_equal("the coupler is not rigid", lens, refuse_rel=DRAFT_REFUSE_REL,
+                         why=f" (drafted data?): each C_i is slid along B_iC_i to the mean BC = {sum(lens.values()) / 3:.10g} mm")
     p = _points(g)
-    require_equal("the coupler is not rigid", {f"B{i}C{i}": abs(p[f"C{i}"] - p[f"B{i}"]) for i in (1, 2, 3)})
-    warn = require_distinct_noncollinear(NAMES[:3], [p[n] for n in NAMES[:3]], "the fixed pivot A")
+    warn += require_distinct_noncollinear(NAMES[:3], [p[n] for n in NAMES[:3]], "the fixed pivot A")
     return warn + require_distinct_noncollinear(NAMES[3:], [p[n] for n in NAMES[3:]], "the fixed pivot D")
 
 
@@ -88,7 +110,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
            caption=("Sensitivity of A: 0.1 mm · R / smallest altitude of B1B2B3", "A 的敏感度:0.1 mm · R / B1B2B3 最小高"))
     sc.add("sens_D", centre_sensitivity, D, *Cs, role=Role.MEASUREMENT, unit="mm",
            caption=("Sensitivity of D: 0.1 mm · R / smallest altitude of C1C2C3", "D 的敏感度:0.1 mm · R / C1C2C3 最小高"))
-    answers |= {"sens_A": "sens_A", "sens_D": "sens_D"}
+    sc.add("A_xy", xy, A, visible=False)
+    sc.add("D_xy", xy, D, visible=False)
+    answers |= {"sens_A": "sens_A", "sens_D": "sens_D", "A": "A_xy", "D": "D_xy"}
     return Construction(sc, answers, {n: n for n in ("A", "D") + NAMES}, warnings=tuple(evaluate_defects(sc, Bs, Cs, D)))
 
 

@@ -6,6 +6,8 @@
   graded tones, and the numbers read off it (lengths, Grashof class, transmission angles, defects).
 - :func:`require_distinct_noncollinear`, :func:`require_equal`: refusals and warnings for near-degenerate
   input, with the condition number :func:`condition` = R / h_min.
+- :func:`fit_rigid`: drafted data (lengths of one link differing within :data:`DRAFT_REFUSE_REL`) fitted
+  to a rigid link by a documented rule, the same in the construction and the twin.
 - :func:`positions_back_check`: the designed linkage driven through the prescribed input angles.
 
 Conventions. The **assembly branch** of a position is the side of the directed line B→D on which C lies
@@ -95,8 +97,29 @@ def require_equal(what: str, named: Mapping[str, float], *, refuse_rel: float = 
         return []
     seq = ", ".join(f"{k} = {v:.10g}" for k, v in named.items())
     if spread > refuse_rel * max(vals):
-        raise NotAMechanism(f"{what}: {seq} differ by {spread:.3g} mm (more than {refuse_rel:g} relative)")
+        raise NotAMechanism(f"{what}: {seq} differ by {spread:.3g} mm (more than {refuse_rel:g} = "
+                            f"{100 * refuse_rel:g} % of the longest, the limit of drafting error)")
     return [f"{what}: {seq} differ by {spread:.3g} mm{why}"]
+
+
+DRAFT_REFUSE_REL = 0.01
+"""Lengths of one rigid link drawn in three positions that differ by more than 1 % of the longest are not
+one link (refused); up to that they are drafted data (coordinates rounded as a textbook prints them, warned)
+and fitted by :func:`fit_rigid`."""
+
+
+def fit_rigid(anchors: Sequence[Point], pts: Sequence[Point]) -> tuple[float, tuple[Point, ...]]:
+    """The documented fit of drafted data to a rigid link drawn as anchor_i → point_i in three positions:
+    the link's length is the mean of the drawn lengths, and each point slides along its own line from its
+    anchor to that length (the link's direction is kept). Exact data come back unchanged up to rounding.
+
+    >>> r, fitted = fit_rigid([Point(0, 0)] * 3, [Point(3, 4), Point(0, 5.003), Point(-5.003, 0)])
+    >>> round(r, 12), fitted[1]
+    (5.002, Point(x=0.0, y=5.002))
+    """
+    lens = [abs(p - a) for a, p in zip(anchors, pts)]
+    r = sum(lens) / len(lens)
+    return r, tuple(p if d == r or d == 0.0 else a + (p - a) * (r / d) for a, p, d in zip(anchors, pts, lens))
 
 
 # ----------------------------------------------------------------------------------------- step operations
@@ -207,6 +230,11 @@ def full_turn_gamma(crank: bool, Bn: Point, Cn: Point | None, Bf: Point, Cf: Poi
 def order_flag(crank: bool, work_ok: bool) -> bool:
     """No dead point between the positions: a crank never meets one; else the working arc must be clear."""
     return crank or work_ok
+
+
+def xy(p: Point) -> tuple[float, float]:
+    """A point as the answer pair (x, y)."""
+    return p.tuple()
 
 
 def directions(A: Point, *Bs: Point) -> tuple[float, ...]:
