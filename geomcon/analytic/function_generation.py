@@ -44,6 +44,10 @@ from .linkages import _tri_angle
 STEP = 1e-30
 """Complex-step size: f'(x) = Im f(x + i·STEP) / STEP, free of cancellation."""
 
+SINGULAR_REL = 1e-14
+"""The normalised 3×3 system with a relative determinant at or below this is singular to double precision
+(a backstop: the recipes refuse nearly collinear inverted points first, by :data:`REFUSE_FLAT`)."""
+
 REFUSE_FLAT = 1e-6
 """Refuse when the three inverted points (the circle the hinge is the centre of) are this flat: height of
 the triangle over its longest side, relative to that side (the hinge would lie ≳ 2.5·10⁵ chords away)."""
@@ -54,25 +58,38 @@ away and moves far per 0.1° of drafting error; the sensitivity answers say how 
 
 
 def solve3(M: Sequence[Sequence[complex]], r: Sequence[complex]) -> tuple[complex, complex, complex]:
-    """Solve the 3×3 system M·x = r by Cramer's rule (complex-safe).
+    """Solve the 3×3 system M·x = r by Cramer's rule (complex-safe), normalised first.
 
-    The relative determinant |det M| / (|row1|·|row2|·|row3|) (Hadamard's bound) below 1e-14 is refused.
+    The columns are scaled to unit size (unknowns of different units or sizes — lengths next to a pure
+    number, AD = 1e7 next to 1) and then the rows, so that the singularity test is relative and
+    scale-free: the relative determinant |det| / (|row1|·|row2|·|row3|) (Hadamard's bound, 1 for
+    orthogonal rows) of the normalised matrix at or below :data:`SINGULAR_REL` is refused.
 
     >>> [round(abs(v), 12) for v in solve3([[2, 0, 0], [0, 4, 0], [1, 0, 1]], [2, 8, 3])]
     [1.0, 2.0, 2.0]
+    >>> [float(f"{abs(v):.12g}") for v in solve3([[2e-7, 0, 1], [0, 4e-7, 1], [1e-7, 1e-7, 1]], [3, 3, 2.5])]
+    [10000000.0, 5000000.0, 1.0]
     """
     def det(m):
         return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
                 + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
 
-    D = det(M)
-    bound = math.prod(math.sqrt(sum(abs(v) ** 2 for v in row)) for row in M)
-    if not abs(D) > 1e-14 * bound:
-        raise NotAMechanism(f"the 3×3 linear system is singular (relative determinant {abs(D) / bound:.3g})")
+    col = [max(abs(M[i][k].real if isinstance(M[i][k], complex) else M[i][k]) for i in range(3)) for k in range(3)]
+    if not all(c > 0.0 for c in col):
+        raise NotAMechanism("the 3×3 linear system is singular (a column of zeros)")
+    Mc = [[M[i][k] / col[k] for k in range(3)] for i in range(3)]
+    row = [max(abs(v.real if isinstance(v, complex) else v) for v in Mc[i]) for i in range(3)]
+    Mn = [[v / row[i] for v in Mc[i]] for i in range(3)]
+    rn = [r[i] / row[i] for i in range(3)]
+    D = det(Mn)
+    bound = math.prod(math.sqrt(sum(abs(v) ** 2 for v in rw)) for rw in Mn)
+    if not abs(D) > SINGULAR_REL * bound:
+        raise NotAMechanism(f"the 3×3 linear system is singular (relative determinant {abs(D) / bound:.3g} ≤ "
+                            f"{SINGULAR_REL:g} after scaling rows and columns)")
     out = []
     for j in range(3):
-        Mj = [[r[i] if k == j else M[i][k] for k in range(3)] for i in range(3)]
-        out.append(det(Mj) / D)
+        Mj = [[rn[i] if k == j else Mn[i][k] for k in range(3)] for i in range(3)]
+        out.append(det(Mj) / D / col[j])
     return out[0], out[1], out[2]
 
 
