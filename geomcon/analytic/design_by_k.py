@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 
+from ..tolerance import REL_TOL
 from .linkages import theta_from_k
 
 
@@ -79,15 +80,18 @@ def crank_slider_design(K: float, H: float, *, e: float | None = None, AB: float
 
 # ---------------------------------------------------------------------------------------------- crank-rocker
 def _trilaterate(p: tuple[float, float], q: tuple[float, float], rp: float, rq: float) -> list[tuple[float, float]]:
-    """The points at distance rp from p and rq from q (0, 1 or 2), by the law of cosines in triangle p q A."""
+    """The points at distance rp from p and rq from q (0, 1 or 2): the angle at p of the triangle p q A by
+    Kahan's formula (accurate when the triangle is nearly flat), sides short of a triangle by REL_TOL only
+    taken as flat."""
+    from .linkages import _tri_angle
+
     dx, dy = q[0] - p[0], q[1] - p[1]
     d = math.hypot(dx, dy)
-    cos_p = (rp * rp + d * d - rq * rq) / (2 * rp * d)
-    if abs(cos_p) > 1 + 1e-12:
+    sides = sorted([rp, rq, d])
+    if sides[2] - (sides[0] + sides[1]) > REL_TOL * sides[2]:
         return []
-    cos_p = max(-1.0, min(1.0, cos_p))
     base = math.atan2(dy, dx)
-    turn = math.acos(cos_p)
+    turn = math.radians(_tri_angle(rp, d, rq))
     return [(p[0] + rp * math.cos(base + s * turn), p[1] + rp * math.sin(base + s * turn)) for s in (1, -1)]
 
 
@@ -143,35 +147,57 @@ def rocker_design_candidates(K: float, CD: float, c1: tuple[float, float], c2: t
 
 
 def _frame_line_points(c1, c2, th: float) -> list[tuple[float, float]]:
-    def f(x: float) -> float:
-        a = math.atan2(c1[1], c1[0] - x)
-        b = math.atan2(c2[1], c2[0] - x)
-        return abs(math.remainder(a - b, 2 * math.pi)) - th
+    """The points A = (x, 0) that see c1c2 under θ, in closed form.
 
-    span = 50 * max(math.hypot(*c1), math.hypot(*c2))
-    xs = [-span + 2 * span * i / 20000 for i in range(20001)]
-    roots = []
-    for x0, x1 in zip(xs, xs[1:]):
-        f0, f1 = f(x0), f(x1)
-        if f0 == 0.0:
-            roots.append(x0)
-        elif f0 * f1 < 0:
-            for _ in range(200):
-                xm = (x0 + x1) / 2
-                if f(x0) * f(xm) <= 0:
-                    x1 = xm
-                else:
-                    x0 = xm
-            roots.append((x0 + x1) / 2)
-    return [(x, 0.0) for x in roots]
+    With p = c1 − A, q = c2 − A, ∠c1Ac2 = θ exactly when σ·(p × q) > 0 and p·q = σ·(p × q)·cot θ for
+    σ = ±1; p·q is quadratic and p × q linear in x, so each σ gives sin θ·x² + βx + γ = 0 (roots by the
+    stable form); roots with σ·(p × q) ≤ 0 see the chord under 180° − θ and are dropped.
+    """
+    (x1, y1), (x2, y2) = c1, c2
+    s, c = math.sin(th), math.cos(th)
+    out = []
+    for sigma in (1.0, -1.0):
+        # p·q = x² − (x1 + x2)x + x1x2 + y1y2 ;  p × q = (x1y2 − y1x2) + x(y1 − y2)
+        qa = s
+        qb = -s * (x1 + x2) - sigma * c * (y1 - y2)
+        qc = s * (x1 * x2 + y1 * y2) - sigma * c * (x1 * y2 - y1 * x2)
+        disc = qb * qb - 4 * qa * qc
+        if disc < 0:
+            continue
+        t = -0.5 * (qb + math.copysign(math.sqrt(disc), qb))
+        for x in {t / qa, qc / t} if t != 0 else {0.0}:
+            if sigma * ((x1 * y2 - y1 * x2) + x * (y1 - y2)) > 0:
+                out.append((x, 0.0))
+    return sorted(out)
+
+
+def rocker_design_valid(a: float, b: float, CD: float, AD: float, h1: float, h2: float) -> bool:
+    """The one validity rule of a crank-rocker designed from its extreme positions (construction and twin).
+
+    ``a``, ``b``: crank and coupler; ``h1``, ``h2``: signed distances of the two extreme positions from the
+    frame line A→D. Valid when AB is a crank — 0 < a strictly shortest, and Grashof a + l ≤ p + q within
+    REL_TOL·l (the change-point boundary counts as a crank, as in ``crank_rocker.extremes``) — and both
+    extreme positions lie strictly on one side of AD, each farther than REL_TOL·max(b, CD, AD) from it
+    (otherwise they are not the extreme positions of one assembly of the linkage).
+
+    >>> rocker_design_valid(50, 70, 80, 90, 40.0, 60.0), rocker_design_valid(50, 70, 80, 90, 40.0, -1.0)
+    (True, False)
+    """
+    scale = max(b, CD, AD)
+    if not 0.0 < a or AD <= REL_TOL * scale:
+        return False
+    if h1 * h2 <= 0 or min(abs(h1), abs(h2)) <= REL_TOL * scale:
+        return False
+    ls = sorted([b, CD, AD])
+    return a < ls[0] and a + ls[2] <= ls[0] + ls[1] + REL_TOL * ls[2]
 
 
 def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float, float],
                   **closing: float | bool | None) -> list[dict[str, float]]:
     """Every valid crank-rocker for the rocker extremes c1, c2 (D at the origin) and one closing condition.
 
-    Valid: AB is a crank by Grashof (shortest, s + l ≤ p + q) and the two extremes lie on one side of the
-    frame line AD (otherwise the linkage's real extreme positions are not c1 and c2). Each solution gives
+    Valid by :func:`rocker_design_valid`: AB is a crank by Grashof and the two extremes lie on one side of
+    the frame line AD (otherwise the linkage's real extreme positions are not c1 and c2). Each solution gives
     A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage.
     """
     from .linkages import crank_rocker_extremes
@@ -181,14 +207,11 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
         d1, d2 = math.dist((ax, ay), c1), math.dist((ax, ay), c2)
         a, b = abs(d2 - d1) / 2, (d1 + d2) / 2
         ad = math.hypot(ax, ay)
-        if ad == 0 or a == 0:
+        if ad == 0:
             continue
-        s1 = ax * c1[1] - ay * c1[0]         # sides of the line A→D (D at origin): cross(D − A, C − A)
-        s2 = ax * c2[1] - ay * c2[0]
-        if s1 * s2 <= 0:
-            continue
-        ls = sorted([b, CD, ad])
-        if a >= ls[0] or a + ls[2] > (ls[0] + ls[1]) * (1 + 1e-12):
+        h1 = (ax * c1[1] - ay * c1[0]) / ad  # signed distances from the line A→D (D at the origin)
+        h2 = (ax * c2[1] - ay * c2[0]) / ad
+        if not rocker_design_valid(a, b, CD, ad, h1, h2):
             continue
         ext = crank_rocker_extremes(a, b, CD, ad)
         sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),

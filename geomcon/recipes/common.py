@@ -14,7 +14,9 @@ from __future__ import annotations
 
 import math
 
-from ..geometry import Point, angle_at, distance
+from typing import Any, Mapping
+
+from ..geometry import LeftOf, Point, RightOf, angle_at, circle, circle_circle, distance, point_along
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 
@@ -163,3 +165,91 @@ def add_theta_and_K(sc: Scene, A: Ref, C1: Ref, C2: Ref) -> Ref:
     sc.add("K", k_ratio, th, role=Role.MEASUREMENT,
            caption=("K = (180° + θ)/(180° − θ)", "行程速比系数 K = (180° + θ)/(180° − θ)"))
     return th
+
+
+# ------------------------------------------------------------------------------ crank-rocker designs
+# The candidates of a crank-rocker designed by K (positions, frame and links forms) and the textbook's
+# choice among them; shared by ``crank_rocker_design`` and ``crank_rocker_links``.
+def half_difference(A: Point, P: Point, Q: Point) -> float:
+    """|AQ − AP| / 2: the crank of a design whose extreme positions are P and Q."""
+    return abs(abs(Q - A) - abs(P - A)) / 2.0
+
+
+def half_sum(A: Point, P: Point, Q: Point) -> float:
+    """(AP + AQ) / 2: the coupler."""
+    return (abs(P - A) + abs(Q - A)) / 2.0
+
+
+def folded_flag(A: Point, P1: Point, P2: Point) -> float:
+    """1.0 when P1 is the folded extreme position (nearer to A)."""
+    return 1.0 if abs(P1 - A) < abs(P2 - A) else 0.0
+
+
+def near_flag(A: Point, C1: Point, C2: Point, D: Point) -> float:
+    """1.0 when A and D lie on the same side of the line C1C2."""
+    u = C2 - C1
+    return 1.0 if u.cross(A - C1) * u.cross(D - C1) > 0 else 0.0
+
+
+def one(*_: Any) -> float:
+    """1.0 (A_near of the frame family)."""
+    return 1.0
+
+
+def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int = 0) -> bool:
+    """A crank-rocker with extreme positions P1, P2, by the shared rule
+    :func:`geomcon.analytic.design_by_k.rocker_design_valid` (AB a crank by Grashof, P1 and P2 strictly on
+    one side of AD); with ``arc_side`` ±1, A must also lie strictly on that side of P1→P2 — the arc of its
+    θ-circle that sees P1P2 under θ (the rest of the circle sees it under 180° − θ).
+
+    >>> is_valid(Point(0, 0), Point(20, 60), Point(100, 79.37), Point(90, 0), 80.0, -1)
+    True
+    """
+    from ..analytic.design_by_k import rocker_design_valid
+    from ..tolerance import REL_TOL
+
+    AD = abs(D - A)
+    if AD == 0.0:
+        return False
+    a, b = half_difference(A, P1, P2), half_sum(A, P1, P2)
+    if arc_side:
+        chord = P2 - P1
+        if arc_side * chord.cross(A - P1) <= REL_TOL * abs(chord) * max(b, CD, AD):
+            return False
+    u = D - A
+    return rocker_design_valid(a, b, CD, AD, u.cross(P1 - A) / AD, u.cross(P2 - A) / AD)
+
+
+def gamma_min_of(A: Point, D: Point, P1: Point, CD: float, a: float, b: float) -> float:
+    """γmin of the designed linkage, read at the two positions with the crank along the frame, on the side of
+    AD where the extreme positions are (the construction of ``crank_rocker.extremes``)."""
+    side = LeftOf(A, D) if (D - A).cross(P1 - A) > 0 else RightOf(A, D)
+    kD = circle(D, CD)
+    out = []
+    for sign in (1.0, -1.0):
+        B = point_along(A, D, sign * a)
+        C = side.choose(circle_circle(circle(B, b), kD))
+        out.append(transmission_deg(B, C, D))
+    return min(out)
+
+
+def preference(sol: Mapping[str, float]) -> tuple[float, float, float]:
+    """The textbook's order of solutions: C1 folded first, then A on D's side, then the shorter frame."""
+    return (-sol["C1_folded"], -sol["A_near"], sol["AD"])
+
+
+def best_index(*flat: Any) -> int | None:
+    """Index of the preferred valid candidate; ``flat`` holds (valid, C1_folded, A_near, AD) per candidate."""
+    best = None
+    for i in range(0, len(flat), 4):
+        valid, f, n, ad = flat[i:i + 4]
+        if valid:
+            key = preference({"C1_folded": f, "A_near": n, "AD": ad})
+            if best is None or key < best[0]:
+                best = (key, i // 4)
+    return None if best is None else best[1]
+
+
+def pick(i: int | None, *values: Any) -> Any:
+    """The ``i``-th value (None when there is no valid candidate)."""
+    return None if i is None else values[i]

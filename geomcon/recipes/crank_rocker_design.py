@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from ..analytic.design_by_k import rocker_design
+from ..analytic.design_by_k import rocker_design, rocker_design_valid
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
 from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherThan, Point, RightOf, Rightmost,
@@ -32,7 +32,8 @@ from ..scene import Ref, Role, Scene, marks
 from ..tolerance import tol
 from . import crank_rocker_links
 from .base import Construction, Quantity, Recipe
-from .common import add_bar, angle_deg, length, transmission_deg
+from .common import (add_bar, angle_deg, best_index, folded_flag, gamma_min_of, half_difference, half_sum, is_valid,
+                     length, near_flag, one, pick, preference)
 from .crank_rocker import construct as extremes_construct
 from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
@@ -123,59 +124,6 @@ def extreme_positions(g: Mapping[str, Any]) -> tuple[Point, Point]:
 
 
 # ----------------------------------------------------------------------------------------- step operations
-def half_difference(A: Point, P: Point, Q: Point) -> float:
-    """|AQ − AP| / 2: the crank of a design whose extreme positions are P and Q."""
-    return abs(abs(Q - A) - abs(P - A)) / 2.0
-
-
-def half_sum(A: Point, P: Point, Q: Point) -> float:
-    """(AP + AQ) / 2: the coupler."""
-    return (abs(P - A) + abs(Q - A)) / 2.0
-
-
-def folded_flag(A: Point, P1: Point, P2: Point) -> float:
-    """1.0 when P1 is the folded extreme position (nearer to A)."""
-    return 1.0 if abs(P1 - A) < abs(P2 - A) else 0.0
-
-
-def near_flag(A: Point, C1: Point, C2: Point, D: Point) -> float:
-    """1.0 when A and D lie on the same side of the line C1C2."""
-    u = C2 - C1
-    return 1.0 if u.cross(A - C1) * u.cross(D - C1) > 0 else 0.0
-
-
-def one(*_: Any) -> float:
-    """1.0 (A_near of the frame family)."""
-    return 1.0
-
-
-def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float) -> bool:
-    """A crank-rocker with extreme positions P1, P2: AB is a crank by Grashof and P1, P2 lie on one side of AD."""
-    AD = abs(D - A)
-    a, b = half_difference(A, P1, P2), half_sum(A, P1, P2)
-    if AD <= tol(CD) or a <= tol(b):
-        return False
-    u = D - A
-    s1, s2 = u.cross(P1 - A), u.cross(P2 - A)
-    if s1 * s2 <= 0 or min(abs(s1), abs(s2)) <= tol(AD, CD) * AD:
-        return False
-    ls = sorted([b, CD, AD])
-    return a < ls[0] and a + ls[2] <= ls[0] + ls[1] + tol(ls[2])
-
-
-def gamma_min_of(A: Point, D: Point, P1: Point, CD: float, a: float, b: float) -> float:
-    """γmin of the designed linkage, read at the two positions with the crank along the frame, on the side of
-    AD where the extreme positions are (the construction of ``crank_rocker.extremes``)."""
-    side = LeftOf(A, D) if (D - A).cross(P1 - A) > 0 else RightOf(A, D)
-    kD = circle(D, CD)
-    out = []
-    for sign in (1.0, -1.0):
-        B = point_along(A, D, sign * a)
-        C = side.choose(circle_circle(circle(B, b), kD))
-        out.append(transmission_deg(B, C, D))
-    return min(out)
-
-
 def admissible_arcs(k, C1: Point, C2: Point, D: Point, CD: float, gamma_allow: float | None):
     """The arcs of a θ-circle where A gives a valid design (:func:`is_valid`, and γmin ≥ ``gamma_allow`` when
     given): the circle is sampled at 720 points and each boundary refined by bisection to 1e-12 of a turn."""
@@ -213,28 +161,6 @@ def admissible_arcs(k, C1: Point, C2: Point, D: Point, CD: float, gamma_allow: f
     return tuple(arcs)
 
 
-def preference(sol: Mapping[str, float]) -> tuple[float, float, float]:
-    """The textbook's order of solutions: C1 folded first, then A on D's side, then the shorter frame."""
-    return (-sol["C1_folded"], -sol["A_near"], sol["AD"])
-
-
-def best_index(*flat: Any) -> int | None:
-    """Index of the preferred valid candidate; ``flat`` holds (valid, C1_folded, A_near, AD) per candidate."""
-    best = None
-    for i in range(0, len(flat), 4):
-        valid, f, n, ad = flat[i:i + 4]
-        if valid:
-            key = preference({"C1_folded": f, "A_near": n, "AD": ad})
-            if best is None or key < best[0]:
-                best = (key, i // 4)
-    return None if best is None else best[1]
-
-
-def pick(i: int | None, *values: Any) -> Any:
-    """The ``i``-th value (None when there is no valid candidate)."""
-    return None if i is None else values[i]
-
-
 def nearer(A: Point, P: Point, Q: Point) -> Point:
     """The extreme position nearer to A (the folded one)."""
     return P if abs(P - A) < abs(Q - A) else Q
@@ -269,7 +195,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         cands = _frame_candidates(sc, g, th)
     D = Ref("D")
     sols, flat = [], []
-    for i, (A, P1, P2, near) in enumerate(cands, 1):
+    for i, (A, P1, P2, near, *arc) in enumerate(cands, 1):
         opt = dict(optional=True, visible=False)
         sc.add(f"AB_{i}", half_difference, A, P1, P2, unit="mm", **opt)
         sc.add(f"BC_{i}", half_sum, A, P1, P2, unit="mm", **opt)
@@ -277,7 +203,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add(f"psi_{i}", angle_deg, D, P1, P2, unit="deg", **opt)
         sc.add(f"C1_folded_{i}", folded_flag, A, P1, P2, **opt)
         sc.add(f"A_near_{i}", near, A, P1, P2, D, **opt)
-        sc.add(f"valid_{i}", is_valid, A, P1, P2, D, CD, **opt)
+        sc.add(f"valid_{i}", is_valid, A, P1, P2, D, CD, arc[0] if arc else 0, **opt)
         sc.add(f"gamma_min_{i}", gamma_min_of, A, D, P1, CD, Ref(f"AB_{i}"), Ref(f"BC_{i}"), unit="deg", **opt)
         sols.append({"AB": f"AB_{i}", "BC": f"BC_{i}", "AD": f"AD_{i}", "CD": "CD", "psi": f"psi_{i}",
                      "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
@@ -347,14 +273,14 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
         lc = sc.add("lC", line_through, C1, C2, caption=("K = 1: A lies on the line C1C2", "K = 1:A 在 C1C2 连线上"))
         if closing == "frame_line":
             out.append((sc.add("A_1", _meet_or_none, lc, xaxis, label="A", **opt,
-                               caption=("It meets the frame line at A", "交机架线于 A")), C1, C2, near_flag))
+                               caption=("It meets the frame line at A", "交机架线于 A")), C1, C2, one))
         else:
             kAD = sc.add("kAD", circle, D, g["AD"], caption=(f"Circle about D with radius AD = {g['AD']:g}",
                                                             f"以 D 为圆心、AD = {g['AD']:g} 为半径作圆"))
             rules = [(NearestTo(C1), "A")] + ([] if symmetric else [(NearestTo(C2), "A′")])
             for j, (rule, lab) in enumerate(rules, 1):
                 out.append((sc.add(f"A_{j}", line_circle, lc, kAD, branch=rule, label=lab, **opt,
-                                   caption=(f"It meets the line C1C2 at {lab}", f"交 C1C2 连线于 {lab}")), C1, C2, near_flag))
+                                   caption=(f"It meets the line C1C2 at {lab}", f"交 C1C2 连线于 {lab}")), C1, C2, one))
         return out
     sides = ((near_side, "n", "on D's side", "D 所在一侧", "P"), (-near_side, "f", "on the far side", "远离 D 的一侧", "P′"))
     shared: dict[str, Ref] = {}
@@ -380,7 +306,7 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
                            caption=(f"They meet at {flab}: AF = AC2 (the other end)", f"两圆交于 {flab}"))
                 lF = sc.add(f"lF_{n}", line_through, C1, F, optional=True, caption=("Join C1F", "连接 C1F"))
                 out.append((sc.add(f"A_{n}", line_circle, lF, kT, branch=OtherThan(C1), label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag))
+                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
         elif closing == "AB":
             beta = sc.add(f"{pre}beta", _plus, th, 0.5, 90.0, visible=False, unit="deg")
             kE = add_seeing_circle(sc, f"{pre}kE", C1, C2, beta, s, (f"Circle seeing C1C2 under 90° + θ/2, {en}",
@@ -395,7 +321,7 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
                            caption=("They meet at E (on AC of the extended end, AE = the folded distance)", "两圆交于 E"))
                 lE = sc.add(f"lE_{n}", line_through, far_end, E, optional=True, caption=(f"Join {nm}E", f"连接 {nm}E"))
                 out.append((sc.add(f"A_{n}", line_circle, lE, kT, branch=OtherThan(far_end), label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag))
+                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
         elif closing == "AC1":
             if "kA" not in shared:
                 shared["kA"] = sc.add("kA", circle, C1, g["AC1"], caption=(
@@ -403,12 +329,12 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
             for rule in (FarthestFrom(C2), NearestTo(C2)):
                 n += 1
                 out.append((sc.add(f"A_{n}", circle_circle, shared["kA"], kT, branch=rule, label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag))
+                                   caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
         else:  # frame_line
             for rule in (Leftmost(), Rightmost()):
                 n += 1
                 out.append((sc.add(f"A_{n}", line_circle, xaxis, kT, branch=rule, label=f"A{n}", **opt,
-                                   caption=("The frame line meets the θ-circle at A", "机架线交 θ 圆于 A")), C1, C2, near_flag))
+                                   caption=("The frame line meets the θ-circle at A", "机架线交 θ 圆于 A")), C1, C2, near_flag, s))
     return out
 
 
@@ -506,9 +432,9 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         def side(x: float, y: float) -> float:             # which side of the line c1→c2
             return (c2[0] - c1[0]) * (y - c1[1]) - (c2[1] - c1[1]) * (x - c1[0])
 
-        for s in sols:
+        for s in sols:                                      # K = 1: A on the line C1C2 counts as near
             s["C1_folded"] = s["c1_folded"]
-            s["A_near"] = float(side(s["Ax"], s["Ay"]) * side(0.0, 0.0) > 0)
+            s["A_near"] = float(K == 1.0 or side(s["Ax"], s["Ay"]) * side(0.0, 0.0) > 0)
     else:
         sols = _frame_family_twin(g)
     keep = ("AB", "BC", "AD", "CD", "psi", "gamma_min", "theta", "K", "C1_folded", "A_near")
@@ -520,7 +446,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 
 def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
-    """Frame given: |AC2| = w from w² − 2w·AD·cos β + AD² − CD² = 0 with β = ∠C1AD ± θ (law of cosines)."""
+    """Frame given: |AC2| = w from w² − 2w·AD·cos β + AD² − CD² = 0 with β = ∠C1AD ± θ (law of cosines);
+    valid by :func:`geomcon.analytic.design_by_k.rocker_design_valid`."""
     from ..analytic.linkages import crank_rocker_extremes
     CD, AD, phi, K = g["CD"], g["AD"], g["phi"], g["K"]
     th = theta_from_k(K)
@@ -531,15 +458,16 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
     out = []
     for beta in ({alpha1 + th, alpha1 - th} if th else {alpha1}):
         cb = math.cos(math.radians(beta))
-        disc = (AD * cb) ** 2 - (AD * AD - CD * CD)
+        disc = (AD * cb) ** 2 - (AD - CD) * (AD + CD)
         if disc < 0:
             continue
-        for w in (AD * cb - math.sqrt(disc), AD * cb + math.sqrt(disc)):
-            if w <= 0 or not 0 < beta < 180:
+        root = math.sqrt(disc)
+        near = (AD - CD) * (AD + CD) / (AD * cb + root) if AD * cb + root != 0 else 0.0
+        for w in (near, AD * cb + root):
+            if w <= 0:
                 continue
             a, b = abs(w - w1) / 2, (w + w1) / 2
-            ls = sorted([b, CD, AD])
-            if a <= 1e-12 * b or a >= ls[0] or a + ls[2] > (ls[0] + ls[1]) * (1 + 1e-12):
+            if not rocker_design_valid(a, b, CD, AD, y1, w * math.sin(math.radians(beta))):
                 continue
             ext = crank_rocker_extremes(a, b, CD, AD)
             out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": ext["psi"], "gamma_min": ext["gamma_min"],

@@ -19,11 +19,12 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
+from ..analytic.design_by_k import rocker_design_valid
 from ..analytic.linkages import crank_rocker_extremes, theta_from_k
 from ..geometry import Point, perpendicular_bisector, point_along, segment
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction
-from .common import add_bar, angle_deg, length
+from .common import add_bar, angle_deg, best_index, gamma_min_of, is_valid, length, near_flag, pick
 from .theta_circle import add_theta_step, complement_turn, meet_lines, ray_from
 
 SIDES = ((1, "on A's side of C1C2", "与 A 同侧"), (-1, "on the far side of C1C2", "在 C1C2 另一侧"))
@@ -35,7 +36,6 @@ def _half(x: float) -> float:
 
 def construct(g: Mapping[str, Any]) -> Construction:
     """Both candidates D and the drawing of the textbook's choice (see the module docstring)."""
-    from .crank_rocker_design import best_index, gamma_min_of, is_valid, near_flag, pick
     K, AB, BC, psi = g["K"], g["AB"], g["BC"], g["psi"]
     sc = Scene("Crank-rocker designed by K: new rocker and frame for the same crank and coupler")
     th = add_theta_step(sc, K)
@@ -82,7 +82,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     names = ("AD", "CD", "psi", "gamma_min", "A_near")
     for name in names:
         sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False)
-    _draw_choice(sc, idx, A, C1, C2, cands, pick, th, AB)
+    _draw_choice(sc, idx, A, C1, C2, cands, th, AB)
     answers = {name: f"chosen_{name}" for name in names}
     answers.update(AB="AB_given", BC="BC_given", theta="theta", K="K", C1_folded="one")
     points = {"A": "A", "D": "D", "C1": "C1", "C2": "C2", "B1": "B1", "B2": "B2"}
@@ -114,7 +114,7 @@ def _signed_complement(half_psi: float, a_side: int, s: int) -> float:
     return complement_turn(half_psi, a_side * s)
 
 
-def _draw_choice(sc: Scene, idx: Ref, A: Ref, C1: Ref, C2: Ref, cands: list, pick, th: Ref, AB: float) -> None:
+def _draw_choice(sc: Scene, idx: Ref, A: Ref, C1: Ref, C2: Ref, cands: list, th: Ref, AB: float) -> None:
     """The chosen design drawn in both extreme positions: D, B1, B2 and the rocker CD."""
     D = sc.add("D", pick, idx, *cands, role=Role.RESULT, style="pivot", label="D",
                caption=("The textbook's choice of D (the other valid point is a candidate)", "取 D(另一可行点为备选解)"))
@@ -137,24 +137,28 @@ def _draw_choice(sc: Scene, idx: Ref, A: Ref, C1: Ref, C2: Ref, cands: list, pic
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """Closed form: C1C2 by the law of cosines, CD = C1C2/(2 sin ψ/2), D at h = C1C2/(2 tan ψ/2) from the
     chord's midpoint M; A's foot on the chord lies (AC2² − AC1²)/(2·C1C2) from M and A is 2·area/C1C2 from the
-    chord, so AD = √(s² + (d ∓ h)²). Valid designs only (Grashof crank, C1 and C2 the extreme positions)."""
+    chord, so AD = √(s² + (d ∓ h)²). Valid designs only, by the rule shared with the construction
+    (:func:`geomcon.analytic.design_by_k.rocker_design_valid`: Grashof crank, C1 and C2 on one side of AD)."""
     K, a, b, psi = g["K"], g["AB"], g["BC"], g["psi"]
     th = theta_from_k(K)
     u, v = b - a, b + a
-    chord = math.sqrt(u * u + v * v - 2 * u * v * math.cos(math.radians(th)))
+    # C1C2² = (v − u)² + 2uv(1 − cos θ) = 4a² + 4uv·sin²(θ/2): no cancellation for small θ
+    chord = math.sqrt(4 * a * a + 4 * u * v * math.sin(math.radians(th) / 2) ** 2)
     half = math.radians(psi) / 2
     cd, h = chord / (2 * math.sin(half)), chord / (2 * math.tan(half))
-    s = (v * v - u * u) / (2 * chord)
+    s = (v - u) * (v + u) / (2 * chord)
     d = u * v * math.sin(math.radians(th)) / chord
+    # chord on the x axis, M at the origin, C1 = (−c/2, 0), C2 = (c/2, 0), A = (−s, d), D = (0, ±h)
+    c1, c2, A = (-chord / 2, 0.0), (chord / 2, 0.0), (-s, d)
     out = []
-    for near, dist in ((1.0, d - h), (0.0, d + h)):
-        ad = math.hypot(s, dist)
-        ls = sorted([b, cd, ad])
-        if not (a < ls[0] and a + ls[2] <= ls[0] + ls[1]):
+    for near, Dy in ((1.0, h), (0.0, -h)):
+        ux, uy = 0.0 - A[0], Dy - A[1]
+        ad = math.hypot(ux, uy)
+        h1 = (ux * (c1[1] - A[1]) - uy * (c1[0] - A[0])) / ad
+        h2 = (ux * (c2[1] - A[1]) - uy * (c2[0] - A[0])) / ad
+        if not rocker_design_valid(a, b, cd, ad, h1, h2):
             continue
         ext = crank_rocker_extremes(a, b, cd, ad)
-        if not math.isclose(ext["psi"], psi, rel_tol=1e-6):      # C1, C2 not the extreme positions of this D
-            continue
         out.append({"AB": a, "BC": b, "AD": ad, "CD": cd, "psi": ext["psi"], "gamma_min": ext["gamma_min"],
                     "theta": th, "K": K, "C1_folded": 1.0, "A_near": near})
     return out
