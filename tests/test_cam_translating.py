@@ -11,7 +11,8 @@ import pytest
 
 from geomcon.cam.diagrams import motion_diagrams_svg
 from geomcon.cam.laws import LAW_NAMES
-from geomcon.cam.profile import (STRICT_TOLERANCE, chord_error, curvature, pressure_angle, rho_min, validate_roller)
+from geomcon.cam.profile import (STRICT_TOLERANCE_REL, TOLERANCE_REL, chord_error, curvature, pressure_angle, rho_min,
+                                 validate_roller)
 from geomcon.cam.program import parse_program
 from geomcon.cam.translating import TranslatingCam
 from geomcon.cli import main
@@ -148,7 +149,8 @@ def test_profile_error_is_within_tolerance(strict):
                         {"kind": "return", "angle": 100, "law": "cosine"}, {"kind": "dwell", "angle": 80}]
         sol = _solve(**g, strict=strict)
         prof = sol.scene.value("profile")
-        assert prof.tolerance == (STRICT_TOLERANCE if strict else 1e-3)
+        size = g["r0"] + g["h"] + g.get("rr", 0.0)                # the tolerance scales with the cam
+        assert prof.tolerance == pytest.approx((STRICT_TOLERANCE_REL if strict else TOLERANCE_REL) * size, rel=1e-15)
         d = np.linspace(0.0, 2 * math.pi, 400_000, endpoint=False)
         x, y = sol.scene.value("pitch").eval(d)[:2]
         err = chord_error(prof.xy, np.column_stack([x, y]), g.get("rr", 0.0))

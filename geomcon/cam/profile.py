@@ -29,7 +29,7 @@ A circle of radius 40 about O traversed clockwise (the pitch curve of a dwell, c
 >>> prof = roller_profile(pc, 10.0)
 >>> prof.undercut, prof.trimmed, round(float(np.hypot(*prof.xy.T).max()), 9)
 (False, False, 30.0)
->>> len(prof.delta) == sample_count(pc, 10.0, 1e-3)
+>>> len(prof.delta) == sample_count(pc, 10.0)                 # 1e-5 of the size: 4e-4 mm
 True
 """
 from __future__ import annotations
@@ -49,10 +49,21 @@ CurveFn = Callable[[np.ndarray], Curve6]
 
 TWO_PI = 2.0 * math.pi
 TOLERANCE = 1e-3
-"""Default profile tolerance (mm): the largest distance between the sampled profile and the exact one."""
+"""The profile tolerance (mm) of a cam of size :data:`TOLERANCE_SIZE` (the largest distance between the
+sampled profile and the exact one); it scales with the cam (:data:`TOLERANCE_REL`)."""
 STRICT_TOLERANCE = 1e-5
-"""Strict-mode profile tolerance (mm)."""
-MAX_SAMPLES = 2_000_000
+"""Strict-mode profile tolerance (mm) of a cam of size :data:`TOLERANCE_SIZE` (:data:`STRICT_TOLERANCE_REL`)."""
+TOLERANCE_SIZE = 100.0
+"""The cam size (mm) at which the tolerances are :data:`TOLERANCE` and :data:`STRICT_TOLERANCE`."""
+TOLERANCE_REL = TOLERANCE / TOLERANCE_SIZE
+"""Default chord tolerance relative to the cam's size (1e-5: 1e-3 mm on a 100 mm cam, 10 mm on a 1000 km one)."""
+STRICT_TOLERANCE_REL = STRICT_TOLERANCE / TOLERANCE_SIZE
+"""Strict chord tolerance relative to the cam's size (1e-7)."""
+MAX_SAMPLES = 1_000_000
+"""Most points a sampled profile may have; a tolerance that needs more is refused (before any is computed)."""
+JUMP_REL = 1e-9
+"""A jump of the flat face's contact counts when it exceeds this fraction of the contact's range over the
+turn (a law's end value f′(1) = 1.9e-16 instead of 0 is roundoff, not a velocity drop)."""
 _DENSE = 1440               # samples per turn for locating extrema before refining
 _GOLD = (math.sqrt(5.0) - 1.0) / 2.0
 
@@ -113,6 +124,13 @@ class PitchCurve:
         return d
 
     @property
+    def size(self) -> float:
+        """The curve's largest distance from O (over 1440 samples): the scale of its tolerances."""
+        d = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
+        x, y = self.eval(d)[:2]
+        return float(np.hypot(x, y).max())
+
+    @property
     def orientation(self) -> int:
         """+1 when the curve goes counter-clockwise round O, −1 clockwise (sign of its area)."""
         d = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
@@ -139,12 +157,28 @@ class Extremum:
         return math.degrees(self.delta)
 
 
+REFINE = 3
+"""Without a slope, the largest few local maxima of the samples of each piece are refined (a peak between
+samples can overtake the best sample's, so more than one is refined)."""
+SLOPE_NOISE = 1e-9
+"""A slope within this fraction of its largest sampled magnitude is roundoff (no root is sought there)."""
+TIE_REL = 1e-12
+"""Two candidate maxima whose values agree to this relative tolerance tie; the smaller cam angle wins (a
+maximum that is flat to roundoff has no better-defined place)."""
+
+
 def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float, float]],
              dense: int = _DENSE, xtol: float = 1e-11, slope: Callable[[np.ndarray], np.ndarray] | None = None) -> Extremum:
-    """The maximum of a function smooth on each piece: dense samples, then golden-section search about
-    the best sample of each piece to ``xtol`` radians (the value is then right to ~xtol² relative). Values
-    alone place an interior maximum only to ~1e-8 rad; with ``slope`` (a function with the sign of g′) the
-    place is then polished by bisection on the slope's sign change.
+    """The maximum of a function smooth on each piece, and where.
+
+    With ``slope`` (a function with the sign of g′, from exact derivatives) the candidates are the ends of
+    each piece (the right end one-sided) and the places where the slope changes sign from + to − between
+    dense samples, each located by bisection on the slope's sign to the last bit: no comparison of values
+    decides where an interior maximum lies, and a maximum at a piece's end is that end exactly. Without
+    ``slope`` every local maximum of the dense samples is refined by golden-section search to ``xtol``
+    radians (the value is then right to ~xtol² relative, its place only to ~1e-8 rad); of each piece the
+    :data:`REFINE` largest local maxima of the samples are refined. Candidates whose
+    values tie (:data:`TIE_REL`) go to the smallest cam angle.
 
     Examples
     --------
@@ -154,25 +188,67 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     >>> m = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, TWO_PI)], slope=lambda d: np.cos(d) - np.sin(d))
     >>> abs(m.delta - math.pi / 4) < 1e-15
     True
+    >>> maximise(lambda d: -(d - 1.0) ** 4, [(0.0, 1.0)], slope=lambda d: -(d - 1.0) ** 3).delta < 1.0   # flat at the end
+    True
     """
-    best: Extremum | None = None
     total = sum(b - a for a, b in pieces)
+    grids = []
     for a, b in pieces:
         n = max(16, int(math.ceil(dense * (b - a) / total)))
         d = np.linspace(a, b, n + 1)
         d[-1] = np.nextafter(b, a)
+        grids.append(d)
+    cands: list[Extremum] = []
+    if slope is not None:
+        slopes = [np.asarray(slope(d), dtype=float) for d in grids]
+        noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
+        for d, sl in zip(grids, slopes):
+            places = [float(d[0]), float(d[-1])] + _sign_changes(slope, d, sl, noise)
+            vals = np.asarray(g(np.asarray(places)), dtype=float)
+            cands += [Extremum(float(v), x) for v, x in zip(vals, places)]
+        return best_of(cands)
+    for d in grids:
         v = np.asarray(g(d), dtype=float)
-        i = int(np.nanargmax(v))
-        lo, hi = float(d[max(i - 1, 0)]), float(d[min(i + 1, n)])
-        top = Extremum(float(v[i]), float(d[i]))
-        if hi > lo:
-            top = max(top, _golden(g, lo, hi, xtol), key=lambda e: e.value)
-            if slope is not None and lo < top.delta < hi:
-                top = _polish(g, slope, lo, hi, top)
-        if best is None or top.value > best.value:
-            best = top
-    assert best is not None
-    return best
+        cands += [Extremum(float(v[0]), float(d[0])), Extremum(float(v[-1]), float(d[-1]))]
+        n = len(d) - 1
+        w = np.concatenate([[-np.inf], v, [-np.inf]])             # the ends compare with one neighbour
+        peaks = np.nonzero((w[1:-1] >= w[:-2]) & (w[1:-1] >= w[2:]) & ((w[1:-1] > w[:-2]) | (w[1:-1] > w[2:])))[0]
+        for i in sorted(peaks.tolist(), key=lambda j: -v[j])[:REFINE]:
+            top = max(Extremum(float(v[i]), float(d[i])),
+                      _golden(g, float(d[max(i - 1, 0)]), float(d[min(i + 1, n)]), xtol), key=lambda e: e.value)
+            cands.append(top)
+    return best_of(cands)
+
+
+def best_of(cands: Sequence[Extremum]) -> Extremum:
+    """The largest of candidate extrema; ties (:data:`TIE_REL`) go to the smallest cam angle."""
+    finite = [c for c in cands if not math.isnan(c.value)]
+    if not finite:
+        return cands[0]
+    top = max(c.value for c in finite)
+    return min((c for c in finite if c.value >= top - TIE_REL * abs(top)), key=lambda c: c.delta)
+
+
+def _sign_changes(slope: Callable[[np.ndarray], np.ndarray], d: np.ndarray, sl: np.ndarray, noise: float) -> list[float]:
+    """The places in (d[0], d[-1]) where ``slope`` (``sl`` at the samples ``d``) goes from > 0 to ≤ 0, by
+    bisection to the last bit. A change between two samples both within ``noise`` of 0 (a dwell, where the
+    slope is roundoff) is not bisected: the sample there stands for itself."""
+    out = []
+    for i in np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0].tolist():
+        lo, hi = float(d[i]), float(d[i + 1])
+        if max(abs(sl[i]), abs(sl[i + 1])) <= noise:
+            out.append(lo)
+            continue
+        while True:
+            m = 0.5 * (lo + hi)
+            if not lo < m < hi:
+                break
+            if float(np.asarray(slope(np.array([m])))[0]) > 0.0:
+                lo = m
+            else:
+                hi = m
+        out.append(hi)
+    return out
 
 
 def _golden(g, lo: float, hi: float, xtol: float) -> Extremum:
@@ -188,25 +264,6 @@ def _golden(g, lo: float, hi: float, xtol: float) -> Extremum:
             x2 = lo + _GOLD * (hi - lo)
             f2 = float(g(np.array([x2]))[0])
     return Extremum(f1, float(x1)) if f1 >= f2 else Extremum(f2, float(x2))
-
-
-def _polish(g, slope, lo: float, hi: float, top: Extremum) -> Extremum:
-    """Bisection on the slope's sign from + (at lo) to − (at hi) about ``top``."""
-    w = 1e-6
-    a, b = max(lo, top.delta - w), min(hi, top.delta + w)
-    sa, sb = (float(t) for t in slope(np.array([a, b])))
-    if not (sa > 0.0 >= sb):
-        return top
-    while True:
-        m = 0.5 * (a + b)
-        if not a < m < b:
-            break
-        if float(slope(np.array([m]))[0]) > 0.0:
-            a = m
-        else:
-            b = m
-    val = float(g(np.array([a]))[0])
-    return Extremum(max(val, top.value), a) if val >= top.value - 1e-14 * abs(top.value) else top
 
 
 def pressure_angle(c6: Curve6, ux: np.ndarray, uy: np.ndarray) -> np.ndarray:
@@ -276,15 +333,23 @@ def corners(curve: PitchCurve, *, rel: float = 1e-12) -> tuple[Corner, ...]:
     return tuple(out)
 
 
-def sample_count(curve: PitchCurve, rr: float = 0.0, tolerance: float = TOLERANCE) -> int:
+def sample_count(curve: PitchCurve, rr: float = 0.0, tolerance: float | None = None) -> int:
     """The number of profile samples over a turn so that every chord of the roller profile (offset ``rr``)
     is within ``tolerance`` of the exact curve.
 
     A chord c on radius ρ deviates by c²/8ρ. With samples Δδ apart, c ≈ |P_a′|Δδ and ρ = ρ_a, the offset
     curve's radius of curvature; |P_a′|²/ρ_a = |P′|²·|κ|·|1 − rr·σκ|, so
     Δδ = √(8·tolerance / max(|P′|²·|κ|·|1 − rr·σκ|)) — set by the sharpest bend (ρmin), not fixed.
+    ``tolerance = None``: :data:`TOLERANCE_REL` of the curve's size. More than :data:`MAX_SAMPLES` samples
+    are refused (:class:`NotAMechanism` naming the cap) before any is computed.
     """
-    return sum(len(d) for d in _angles(curve.pieces(), _sample_step(curve, rr, tolerance)))
+    tolerance = curve_tolerance(curve, tolerance)
+    return sum(_counts(curve.pieces(), _sample_step(curve, rr, tolerance)))
+
+
+def curve_tolerance(curve: PitchCurve, tolerance: float | None) -> float:
+    """``tolerance``, or :data:`TOLERANCE_REL` of the curve's size when it is None."""
+    return TOLERANCE_REL * curve.size if tolerance is None else tolerance
 
 
 def _sample_step(curve: PitchCurve, rr: float, tolerance: float) -> float:
@@ -305,18 +370,24 @@ def _step(bend: float, tolerance: float) -> float:
     return math.sqrt(8.0 * tolerance / bend) if bend > 0.0 else math.inf
 
 
+def _counts(pieces, step: float) -> list[int]:
+    """Samples per piece (both ends) at most ``step`` apart; more than :data:`MAX_SAMPLES` in all are
+    refused before anything is allocated."""
+    need = sum(max(2.0, (b - a) / step) + 1.0 for a, b in pieces) if step > 0.0 else math.inf
+    if not need <= MAX_SAMPLES:
+        raise NotAMechanism(f"the profile tolerance needs {need:.3g} samples, more than the cap of {MAX_SAMPLES}; "
+                            "give a larger tolerance")
+    return [max(2, int(math.ceil((b - a) / step))) + 1 for a, b in pieces]
+
+
 def _angles(pieces, step: float) -> list[np.ndarray]:
     """The sample angles of each piece, at most ``step`` apart, both ends included (the right end
     one-sided)."""
     out = []
-    for a, b in pieces:
-        n = max(2, int(math.ceil((b - a) / step)))
-        d = np.linspace(a, b, n + 1)
+    for (a, b), n in zip(pieces, _counts(pieces, step)):
+        d = np.linspace(a, b, n)
         d[-1] = np.nextafter(b, a)
         out.append(d)
-    n = sum(len(d) for d in out)
-    if n > MAX_SAMPLES:
-        raise NotAMechanism(f"the profile tolerance needs {n} samples (> {MAX_SAMPLES}); use a larger tolerance")
     return out
 
 
@@ -365,15 +436,19 @@ def _arc(center, r, a0: float, a1: float, chord: float) -> np.ndarray:
     if r == 0.0:
         return np.empty((0, 2))
     sweep = math.remainder(a1 - a0, TWO_PI)
-    n = max(1, int(math.ceil(abs(sweep) * r / chord)))
+    need = abs(sweep) * r / chord
+    if not need <= MAX_SAMPLES:
+        raise NotAMechanism(f"the roller's arc at a corner needs {need:.3g} points, more than the cap of "
+                            f"{MAX_SAMPLES}; give a larger tolerance")
+    n = max(1, int(math.ceil(need)))
     t = a0 + sweep * np.arange(1, n) / n
     return np.column_stack([center[0] + r * np.cos(t), center[1] + r * np.sin(t)])
 
 
-def roller_profile(curve: PitchCurve, rr: float, tolerance: float = TOLERANCE) -> Profile:
+def roller_profile(curve: PitchCurve, rr: float, tolerance: float | None = None) -> Profile:
     """The actual profile of a roller of radius ``rr``: the pitch curve offset by rr along the exact unit
     normal towards the cam centre (the inner envelope of the roller circles), sampled per
-    :func:`sample_count`; at a corner of the pitch curve the gap is bridged by the roller's arc, and loops
+    :func:`sample_count` (``tolerance = None``: :data:`TOLERANCE_REL` of the curve's size); at a corner of the pitch curve the gap is bridged by the roller's arc, and loops
     (undercut, convex corners) are trimmed with shapely. ``rr = 0`` gives the pitch curve itself (a knife
     edge's profile).
 
@@ -387,6 +462,7 @@ def roller_profile(curve: PitchCurve, rr: float, tolerance: float = TOLERANCE) -
     """
     if not rr >= 0.0:
         raise NotAMechanism(f"roller radius rr must be ≥ 0 mm, got {rr!r}")
+    tolerance = curve_tolerance(curve, tolerance)
     sigma, pieces = curve.orientation, curve.pieces()
     angles = _angles(pieces, _sample_step(curve, rr, tolerance))
     count = sum(len(d) for d in angles)
@@ -484,6 +560,11 @@ class LineFamily:
         """The smooth pieces of the turn."""
         return PitchCurve(lambda d: d, self.breaks).pieces()
 
+    @property
+    def size(self) -> float:
+        """The lines' largest distance from O (over 1440 samples): the scale of their tolerances."""
+        return float(np.abs(self.eval(np.linspace(0.0, TWO_PI, _DENSE, endpoint=False))[3]).max())
+
     def eval(self, delta) -> tuple[np.ndarray, ...]:
         """(φ, φ′, φ″, p, p′, p″) at ``delta`` (radians)."""
         return tuple(np.asarray(v, dtype=float) for v in self.fn(np.asarray(delta, dtype=float)))
@@ -519,11 +600,12 @@ def envelope_rho_min(fam: LineFamily) -> Extremum:
     return Extremum(-low.value, low.delta)
 
 
-def flat_profile(fam: LineFamily, tolerance: float = TOLERANCE) -> Profile:
+def flat_profile(fam: LineFamily, tolerance: float | None = None) -> Profile:
     """The profile cut by a flat face: the envelope of the family, sampled so that every chord is within
     ``tolerance`` (|X′|²/ρ = |ρ|·φ′²), loops of a non-convex envelope (ρ < 0 somewhere: the face cannot
     follow the motion) trimmed. ``info`` holds ``rho_min`` (an :class:`Extremum` of ρ), ``lam_min`` and
-    ``lam_max`` (the contact's extreme places along the face, Extremum each).
+    ``lam_max`` (the contact's extreme places along the face, Extremum each). ``tolerance = None``:
+    :data:`TOLERANCE_REL` of the family's size (the largest distance of a line from O).
 
     Examples
     --------
@@ -533,6 +615,8 @@ def flat_profile(fam: LineFamily, tolerance: float = TOLERANCE) -> Profile:
     (False, 30.0)
     """
     pieces = fam.pieces()
+    if tolerance is None:
+        tolerance = TOLERANCE_REL * fam.size
     rmin = envelope_rho_min(fam)
     bend = maximise(lambda d: np.abs(envelope(fam, d)[3]) * fam.eval(d)[1] ** 2, pieces).value
     angles = np.concatenate(_angles(pieces, _step(bend, tolerance)))
@@ -551,13 +635,27 @@ def flat_profile(fam: LineFamily, tolerance: float = TOLERANCE) -> Profile:
 def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
     """Breaks where the contact jumps back along the face (a velocity drop of the follower, e.g. the end
     of a uniform rise): the envelope then has a loop there, and the face cannot reproduce the motion.
-    Each as an :class:`Extremum` (the jump, mm, and the cam angle)."""
+    Each as an :class:`Extremum` (the jump, mm, and the cam angle). A jump counts when it exceeds
+    :data:`JUMP_REL` of the contact's range over the turn (sampled at 1440 places and every break).
+
+    Examples
+    --------
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, np.where(d < 1.0, 5.0, 0.0), 0 * d), (1.0,))
+    >>> [(round(j.value, 12), j.delta) for j in backward_jumps(fam)]
+    [(-5.0, 1.0)]
+    """
+    cuts = [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]
+    after = np.array(cuts)
+    before = np.nextafter(np.array([b if b > 0.0 else TWO_PI for b in cuts]), 0.0)
+    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
+    lam = envelope(fam, np.concatenate([after, before, grid]))[2]
+    span = float(np.nanmax(lam) - np.nanmin(lam))
+    la, lb = lam[:len(cuts)], lam[len(cuts):2 * len(cuts)]
+    dphi = fam.eval(after)[1]
     out = []
-    for b in [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]:
-        before = envelope(fam, np.array([np.nextafter(b if b > 0.0 else TWO_PI, 0.0)]))[2][0]
-        after, dphi = envelope(fam, np.array([b]))[2][0], fam.eval(np.array([b]))[1][0]
-        jump = (after - before) * math.copysign(1.0, dphi)
-        if jump < -1e-12 * max(1.0, abs(before), abs(after)):
+    for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(), dphi.tolist()):
+        jump = (x1 - x0) * math.copysign(1.0, w)
+        if jump < -JUMP_REL * span:
             out.append(Extremum(float(jump), b))
     return tuple(out)
 
@@ -581,4 +679,5 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
-           "chord_error", "TOLERANCE", "STRICT_TOLERANCE"]
+           "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
+           "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any, Mapping, Sequence
 
 import numpy as np
@@ -37,6 +38,8 @@ from .laws import Law, law
 KINDS = ("rise", "dwell", "return")
 FULL_TURN_REL = 1e-9
 """The segment angles must add up to 360° to this relative tolerance."""
+MAX_SEGMENTS = 64
+"""Most segments a program may have (a textbook program has at most a handful; the rest would be dwells)."""
 
 
 @dataclass(frozen=True)
@@ -86,33 +89,56 @@ class Program:
         """The (first) return segment, if any."""
         return next((s for s in self.segments if s.kind == "return"), None)
 
+    @cached_property
+    def _table(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Segment starts (deg, rad) and the follower's level (in units of h) at each start."""
+        level, levels = 0.0, []
+        for seg in self.segments:
+            levels.append(level)
+            level += {"rise": 1.0, "return": -1.0}.get(seg.kind, 0.0)
+        starts = [s.start for s in self.segments]
+        return np.array(starts), np.radians(starts), np.array(levels)
+
     def motion(self, h: float, delta, *, radians: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(s, ds/dδ, d²s/dδ²) at cam angles ``delta`` (deg, scalar or array, taken modulo 360°); s in the
         unit of ``h``, derivatives per radian of cam angle. With ``radians=True`` the angles are radians
         (modulo 2π) and the segment ends are compared in radians, so that ``nextafter`` of an end in
-        radians stays in the segment it approaches (one-sided values for the profile machinery)."""
+        radians stays in the segment it approaches (one-sided values for the profile machinery).
+
+        The segment of each angle is found by bisection on the segment starts, and each law is evaluated
+        once on the angles of its segment: the cost is linear in the number of angles whatever the number
+        of segments.
+        """
         conv = math.radians if radians else float
         turn = conv(360.0)
         raw = np.asarray(delta, dtype=float)
+        shape = raw.shape
+        raw = raw.reshape(-1)
         d = np.mod(raw, turn)
         d = np.where((d == 0.0) & (raw > 0.0), turn, d)
-        s, v, a = np.zeros_like(d), np.zeros_like(d), np.zeros_like(d)
-        level = 0.0                 # the follower's height at the start of each segment (0 or h)
-        last = len(self.segments) - 1
-        for i, seg in enumerate(self.segments):
-            start, end = conv(seg.start), conv(seg.end)
-            inside = (d >= start) & ((d < end) | ((i == last) & (d <= end)))
+        starts_deg, starts_rad, levels = self._table
+        starts = starts_rad if radians else starts_deg
+        idx = np.searchsorted(starts, d, side="right") - 1
+        idx = np.clip(idx, 0, len(self.segments) - 1)
+        s = levels[idx] * h
+        v, a = np.zeros_like(d), np.zeros_like(d)
+        for i in np.unique(idx).tolist():
+            seg = self.segments[i]
             if seg.kind == "dwell":
-                s = np.where(inside, level, s)
                 continue
-            span = math.radians(seg.angle)
-            f, f1, f2 = seg.law.derivatives(np.clip((d - start) / conv(seg.angle), 0.0, 1.0))
+            inside = idx == i
+            start, span = conv(seg.start), math.radians(seg.angle)
+            f, f1, f2 = seg.law.derivatives(np.clip((d[inside] - start) / conv(seg.angle), 0.0, 1.0))
             sign = 1.0 if seg.kind == "rise" else -1.0
-            s = np.where(inside, level + sign * h * f, s)
-            v = np.where(inside, sign * h * f1 / span, v)
-            a = np.where(inside, sign * h * f2 / span ** 2, a)
-            level += sign * h
-        return np.where(d > conv(self.segments[-1].end), level, s), v, a
+            s[inside] = s[inside] + sign * h * f
+            v[inside] = sign * h * f1 / span
+            a[inside] = sign * h * f2 / span ** 2
+        past = d > conv(self.segments[-1].end)
+        if np.any(past):
+            final = levels[-1] + {"rise": 1.0, "return": -1.0}.get(self.segments[-1].kind, 0.0)
+            s = np.where(past, final * h, s)
+            v, a = np.where(past, 0.0, v), np.where(past, 0.0, a)
+        return s.reshape(shape), v.reshape(shape), a.reshape(shape)
 
     def impacts(self, h: float) -> list[Impact]:
         """Every jump of velocity (rigid impact) or acceleration (soft impact) over the turn, including the
@@ -147,6 +173,8 @@ def _end_values(seg: Segment, h: float, *, at_end: bool) -> tuple[float, float]:
 def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") -> Program:
     """Validate a program given as tables (see the module docstring); a bad entry raises
     :class:`NotAMechanism` naming ``program[i]`` and the value."""
+    if len(tables) > MAX_SEGMENTS:
+        raise NotAMechanism(f"{key} has {len(tables)} segments; at most {MAX_SEGMENTS}")
     segs, start = [], 0.0
     rises = returns = 0
     for i, t in enumerate(tables):

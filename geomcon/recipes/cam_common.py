@@ -25,8 +25,10 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..cam.profile import Extremum, PitchCurve, Profile, TOLERANCE, STRICT_TOLERANCE
-from ..cam.program import Program
+from ..cam.oscillating import ArmMotion, levels, segment_motion
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, Profile, STRICT_TOLERANCE_REL, TOLERANCE_REL,
+                           backward_jumps)
+from ..cam.program import Program, parse_program
 from ..errors import NotAMechanism, ProblemError
 from ..geometry import Point, Polyline, Segment, circle, rotate, segment
 from ..scene import Ref, Role, Scene
@@ -45,9 +47,11 @@ PROGRAM = Quantity("program", "table[]", "motion program: [{kind = rise|dwell|re
                    "over 360°", minimum=None)
 AT = Quantity("at", "deg[]", "cam angles at which to report s and α", required=False, default=(), minimum=None,
               inclusive=True)
-TOL = Quantity("tolerance", "mm", "largest chord error of the sampled profile", required=False, default=TOLERANCE)
-STRICT = Quantity("strict", "bool", f"strict profile tolerance ({STRICT_TOLERANCE:g} mm)", required=False,
-                  default=False, minimum=None)
+TOL = Quantity("tolerance", "mm", "largest chord error of the sampled profile (default 1e-5 of the cam's size: "
+               "1e-3 mm on a 100 mm cam; a profile needing more than 1e6 points is refused)", required=False,
+               default=None)
+STRICT = Quantity("strict", "bool", f"strict profile tolerance ({STRICT_TOLERANCE_REL:g} of the cam's size: "
+                  "1e-5 mm on a 100 mm cam)", required=False, default=False, minimum=None)
 
 PRESSURE_ANSWERS = (
     Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
@@ -68,9 +72,18 @@ def profile_csv(scene: Scene, recipe: str) -> str:
     return scene.value(PROFILE_KEY).csv()
 
 
-def profile_tolerance(g) -> float:
-    """The profile tolerance the givens ask for: ``strict`` wins over ``tolerance``."""
-    return STRICT_TOLERANCE if g.get("strict") else float(g.get("tolerance", TOLERANCE) or TOLERANCE)
+def profile_tolerance(g, size: float) -> float:
+    """The profile tolerance (mm) the givens ask for on a cam of ``size`` mm: ``strict`` wins over
+    ``tolerance``; by default :data:`~geomcon.cam.profile.TOLERANCE_REL` of the size (every tolerance scales
+    with the cam).
+
+    >>> profile_tolerance({}, 100.0), profile_tolerance({"strict": True}, 100.0), profile_tolerance({"tolerance": 0.5}, 1.0)
+    (0.001, 1e-05, 0.5)
+    """
+    if g.get("strict"):
+        return STRICT_TOLERANCE_REL * size
+    given = g.get("tolerance")
+    return TOLERANCE_REL * size if given is None else float(given)
 
 
 def inversion_sign(rotation: str) -> float:
@@ -242,3 +255,92 @@ def add_roller_circles(sc: Scene, centres: Sequence[Ref], rr: float) -> None:
         sc.add(f"roller{i}", circle, c, rr, style="path",
                caption=(f"Roller circles of radius rr = {rr:g} about points of the pitch curve",
                         f"以理论廓线上各点为圆心、rr = {rr:g} 为半径作一系列滚子圆") if i == 0 else ("", ""))
+
+
+# ---------------------------------------------------------------------------------------------- arm followers
+# (shared by cam.oscillating's roller/knife arm and its flat-faced arm)
+def program_of(g: Mapping[str, Any]) -> Program:
+    """The motion program of the givens, checked to fill the turn with a return."""
+    prog = parse_program(g["program"])
+    require_full(prog)
+    if prog.ret is None:
+        raise NotAMechanism("program: a cam needs a return segment (the arm must swing back)")
+    return prog
+
+
+def arm_division_angles(g: Mapping[str, Any], cam: ArmMotion) -> tuple[float, ...]:
+    """The cam angles (deg) of the drawing's divisions: ``divisions`` equal parts of the rise and of the
+    return when given, else the shared rule (parts of at most 15°, dwell ends)."""
+    n = g.get("divisions")
+    if n is None:
+        return division_angles(cam.program)
+    if n != int(n) or not 1 <= n <= 24:
+        raise NotAMechanism(f"divisions must be a whole number from 1 to 24, got {n:g}")
+    out = {seg.start + seg.angle * i / int(n) for seg in cam.program.segments if seg.kind != "dwell"
+           for i in range(int(n) + 1)}
+    return tuple(sorted(d for d in out if 0.0 < d < 360.0))
+
+
+def laid_off(C: Point, A: Point, cam: ArmMotion, delta_deg: float) -> Point:
+    """The pitch point: C (the arm's initial end in its inverted position) turned about A0′ by ψ(δ) in the
+    arm's rise sense."""
+    return rotate(C, A, cam.tau * float(cam.motion(delta_deg).psi))
+
+
+def speed_ratio(cam: ArmMotion, delta_deg: float, part: str | None = None) -> float:
+    """k = εψ′(δ): the arm's angular velocity over the cam's, signed (same sense positive); with ``part``
+    ("rise", "return") the value inside that segment (one-sided at its ends, where ψ′ may jump)."""
+    if part is None:
+        return cam.eps * float(cam.motion(delta_deg).d1)
+    k = next(i for i, s in enumerate(cam.program.segments) if s.kind == part)
+    seg = cam.program.segments[k]
+    x = min(max((delta_deg - seg.start) / seg.angle, 0.0), 1.0)
+    return cam.eps * float(segment_motion(seg, levels(cam.program, cam.h)[k], cam.h, x).d1)
+
+
+def arm_velocity(A: Point, B: Point, sense: int) -> Point:
+    """The roller's velocity direction at B: perpendicular to the arm AB, turned the way the arm swings
+    (``sense`` = +1 counter-clockwise, −1 clockwise)."""
+    return (B - A).perp() * sense
+
+
+def velocity_segment(B: Point, v: Point, size: float) -> Segment:
+    """The roller's direction of motion drawn from B, ``size`` long."""
+    return Segment(B, B + v.unit() * size)
+
+
+def pick(pair: tuple[float, float], i: int) -> float:
+    """One member of a pair."""
+    return pair[i]
+
+
+def collect(*values: Any) -> tuple[float, ...]:
+    """The values as a tuple (a list answer)."""
+    return tuple(float(v) for v in values)
+
+
+def negate(b: bool) -> bool:
+    """not b."""
+    return not b
+
+
+def flat_convex(fam: LineFamily, rho: Extremum) -> bool:
+    """The flat face's profile is convex: ρ > 0 everywhere and the contact never jumps back."""
+    return rho.value > 0.0 and not backward_jumps(fam)
+
+
+class ArmInversion:
+    """Adds the steps of one inverted position: pivot A0′, initial arm end C, pitch point B."""
+
+    def __init__(self, sc: Scene, cam: ArmMotion, O: Ref, A0: Ref, B0: Ref) -> None:
+        self.sc, self.cam, self.O, self.A0, self.B0 = sc, cam, O, A0, B0
+
+    def position(self, key: str, delta: Any, *, label: str | None = None, caption: tuple[str, str] = ("", ""),
+                 visible: bool = True) -> tuple[Ref, Ref, Ref]:
+        """(A0′, C, B) at cam angle ``delta`` (deg, a number or a reference)."""
+        sc, inv = self.sc, -float(self.cam.sigma)
+        A = sc.add(f"A_{key}", turned, self.A0, self.O, inv, delta, label=label, style="point", caption=caption,
+                   visible=visible)
+        C = sc.add(f"C_{key}", turned, self.B0, self.O, inv, delta, style="point", visible=visible)
+        B = sc.add(f"B_{key}", laid_off, C, A, self.cam, delta, style="point", visible=visible)
+        return A, C, B

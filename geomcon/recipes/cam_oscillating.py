@@ -21,17 +21,18 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.oscillating import OscillatingCam, levels, psi0_rad, segment_motion
+from ..cam.oscillating import OscillatingCam, psi0_rad
 from ..cam.profile import rho_min, roller_profile
-from ..cam.program import Program, parse_program
 from ..errors import NotAMechanism
-from ..geometry import (LeftOf, Line, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, rotate,
-                        segment)
+from ..geometry import LeftOf, Line, NearestTo, Point, RightOf, circle, circle_circle, line_circle, segment
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
-from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
-                         add_profile_steps, add_roller_circles, at_least, division_angles, extremum_value, minus,
-                         normal_segment, pitch_polyline, pressure_mark, profile_tolerance, require_full, turned)
+from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, ArmInversion, add_base_circle,
+                         add_cam_centre, add_motion_diagram, add_profile_steps, add_roller_circles, arm_division_angles,
+                         arm_velocity, at_least, collect, extremum_value, laid_off, minus, normal_segment, pick,
+                         pitch_polyline, pressure_mark, profile_tolerance, program_of, speed_ratio, turned,
+                         velocity_segment)
+from .cam_oscillating_flat import analytic_flat, construct_flat, validate_flat
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg
 
 GIVENS = (
@@ -81,38 +82,15 @@ ROLLER_WARN = 3.0
 
 
 # ---------------------------------------------------------------------------------------------- givens
-def program_of(g: Mapping[str, Any]) -> Program:
-    """The motion program of the givens, checked to fill the turn with a return."""
-    prog = parse_program(g["program"])
-    require_full(prog)
-    if prog.ret is None:
-        raise NotAMechanism("program: a cam needs a return segment (the arm must swing back)")
-    return prog
-
-
 def cam_of(g: Mapping[str, Any]) -> OscillatingCam:
     """The knife or roller cam described by the givens."""
     return OscillatingCam(g["a"], g["L"], g["r0"], g["h"], program_of(g), g.get("rotation", "ccw"),
                           g.get("arm", "left"))
 
 
-def _division_angles(g: Mapping[str, Any], cam: OscillatingCam) -> tuple[float, ...]:
-    """The cam angles (deg) of the drawing's divisions: ``divisions`` equal parts of the rise and of the
-    return when given, else the shared rule (parts of at most 15°, dwell ends)."""
-    n = g.get("divisions")
-    if n is None:
-        return division_angles(cam.program)
-    if n != int(n) or not 1 <= n <= 24:
-        raise NotAMechanism(f"divisions must be a whole number from 1 to 24, got {n:g}")
-    out = {seg.start + seg.angle * i / int(n) for seg in cam.program.segments if seg.kind != "dwell"
-           for i in range(int(n) + 1)}
-    return tuple(sorted(d for d in out if 0.0 < d < 360.0))
-
-
 def _validate(g: Mapping[str, Any]) -> list[str]:
     """Refuse cams that cannot be assembled; warn about pressure angles beyond the allowance and undercut."""
     if g["follower"] == "flat":
-        from .cam_oscillating_flat import validate_flat
         return validate_flat(g)
     if g.get("L") is None:
         raise NotAMechanism(f"a {g['follower']} arm needs L (the arm length A0B)")
@@ -121,7 +99,7 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
                             "flat-faced arm has a face")
     a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
     cam = cam_of(g)
-    _division_angles(g, cam)
+    arm_division_angles(g, cam)
     if r0 >= a + L:
         raise NotAMechanism(f"r0 = {r0:g} ≥ a + L = {a + L:g}: the arm cannot reach the base circle")
     if r0 <= abs(a - L):
@@ -186,47 +164,9 @@ def arm_pressure_deg(A: Point, B: Point, O: Point, k: float) -> float:
     return math.degrees(math.atan2(abs(n.cross(v)), abs(n.dot(v))))
 
 
-def arm_velocity(A: Point, B: Point, sense: int) -> Point:
-    """The roller's velocity direction at B: perpendicular to the arm AB, turned the way the arm swings
-    (``sense`` = +1 counter-clockwise, −1 clockwise)."""
-    return (B - A).perp() * sense
-
-
-def velocity_segment(B: Point, v: Point, size: float) -> Segment:
-    """The roller's direction of motion drawn from B, ``size`` long."""
-    return Segment(B, B + v.unit() * size)
-
-
-def laid_off(C: Point, A: Point, cam: OscillatingCam, delta_deg: float) -> Point:
-    """The pitch point: C (the arm's initial end in its inverted position) turned about A0′ by ψ(δ) in the
-    arm's rise sense."""
-    return rotate(C, A, cam.tau * float(cam.motion(delta_deg).psi))
-
-
-def speed_ratio(cam: OscillatingCam, delta_deg: float, part: str | None = None) -> float:
-    """k = εψ′(δ): the arm's angular velocity over the cam's, signed (same sense positive); with ``part``
-    ("rise", "return") the value inside that segment (one-sided at its ends, where ψ′ may jump)."""
-    if part is None:
-        return cam.eps * float(cam.motion(delta_deg).d1)
-    k = next(i for i, s in enumerate(cam.program.segments) if s.kind == part)
-    seg = cam.program.segments[k]
-    x = min(max((delta_deg - seg.start) / seg.angle, 0.0), 1.0)
-    return cam.eps * float(segment_motion(seg, levels(cam.program, cam.h)[k], cam.h, x).d1)
-
-
 def worst(cam: OscillatingCam, part: str) -> tuple[float, float]:
     """(α_max, δ) of the rise or the return (closed form, exact-derivative search)."""
     return cam.worst_pressure(part)
-
-
-def pick(pair: tuple[float, float], i: int) -> float:
-    """One member of a pair."""
-    return pair[i]
-
-
-def collect(*values: Any) -> tuple[float, ...]:
-    """The values as a tuple (a list answer)."""
-    return tuple(float(v) for v in values)
 
 
 def coord(p: Point, axis: int) -> float:
@@ -240,27 +180,9 @@ def normal_line(A: Point, B: Point, O: Point, k: float) -> Line:
 
 
 # ---------------------------------------------------------------------------------------------- construction
-class _Inversion:
-    """Adds the steps of one inverted position: pivot A0′, initial arm end C, pitch point B."""
-
-    def __init__(self, sc: Scene, cam: OscillatingCam, O: Ref, A0: Ref, B0: Ref) -> None:
-        self.sc, self.cam, self.O, self.A0, self.B0 = sc, cam, O, A0, B0
-
-    def position(self, key: str, delta: Any, *, label: str | None = None, caption: tuple[str, str] = ("", ""),
-                 visible: bool = True) -> tuple[Ref, Ref, Ref]:
-        """(A0′, C, B) at cam angle ``delta`` (deg, a number or a reference)."""
-        sc, inv = self.sc, -float(self.cam.sigma)
-        A = sc.add(f"A_{key}", turned, self.A0, self.O, inv, delta, label=label, style="point", caption=caption,
-                   visible=visible)
-        C = sc.add(f"C_{key}", turned, self.B0, self.O, inv, delta, style="point", visible=visible)
-        B = sc.add(f"B_{key}", laid_off, C, A, self.cam, delta, style="point", visible=visible)
-        return A, C, B
-
-
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build the inversion construction."""
     if g["follower"] == "flat":
-        from .cam_oscillating_flat import construct_flat
         return construct_flat(g)
     cam = cam_of(g)
     a, L, r0, h, prog = cam.a, cam.L, cam.r0, cam.h, cam.program
@@ -284,8 +206,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
     sc.add("kA", circle, O, a, caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
                                         f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
-    inv = _Inversion(sc, cam, O, A0, B0)
-    divs = _division_angles(g, cam)
+    inv = ArmInversion(sc, cam, O, A0, B0)
+    divs = arm_division_angles(g, cam)
     R = max(a, r0 + math.radians(h) * L + rr)
     add_motion_diagram(sc, prog, h, Point(1.55 * R, -0.5 * R), 3.0 * R, 0.5 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
@@ -323,7 +245,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("rho_min_actual", minus, Ref("rho_min_pitch"), rr, role=Role.MEASUREMENT, unit="mm", visible=False)
     sc.add("undercut", at_least, rr, Ref("rho_min_pitch"), visible=False) if roller else \
         sc.add("undercut", bool, False, visible=False)
-    tol = profile_tolerance(g)
+    tol = profile_tolerance(g, max(a, r0 + rr))
     if roller:
         add_roller_circles(sc, Bs, rr)
         add_profile_steps(sc, roller_profile, (curve, rr, tol),
@@ -378,7 +300,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
 def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The closed forms by their separate routes (see the module docstring)."""
     if g["follower"] == "flat":
-        from .cam_oscillating_flat import analytic_flat
         return analytic_flat(g)
     cam = cam_of(g)
     roller = g["follower"] == "roller"

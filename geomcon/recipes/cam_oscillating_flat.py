@@ -1,8 +1,9 @@
 """``cam.oscillating`` with a flat-faced arm (平底摆动从动件): the profile is the envelope of the face lines in
 the inverted positions; closed forms in :mod:`geomcon.cam.oscillating_flat`.
 
-Split from :mod:`.cam_oscillating`, which dispatches here when ``follower = "flat"`` and whose shared steps
-(the inversion, the cam centre, the ψ–δ diagram) this module uses.
+Split from :mod:`.cam_oscillating`, which dispatches here when ``follower = "flat"``; the steps both share
+(the inversion of the arm, the cam centre, the ψ–δ diagram) live in :mod:`.cam_common`, so neither module
+imports the other's internals (cam_oscillating → cam_oscillating_flat → cam_common, no cycle).
 """
 from __future__ import annotations
 
@@ -18,12 +19,10 @@ from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circ
                         segment, thales_circle)
 from ..scene import Ref, Role, Scene
 from .base import Construction
-from .cam_common import (add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps, extremum_deg,
-                         extremum_value, pressure_mark, profile_tolerance)
-from .cam_translating import flat_convex, negate
+from .cam_common import (ArmInversion, add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps,
+                         arm_division_angles, arm_velocity, collect, extremum_deg, extremum_value, flat_convex, negate,
+                         pick, pressure_mark, profile_tolerance, program_of, speed_ratio, velocity_segment)
 from .common import add_angle_mark, add_pivot, angle_deg
-from .cam_oscillating import (_Inversion, _division_angles, arm_velocity, collect, pick, program_of, speed_ratio,
-                              velocity_segment)
 
 
 FLAT_SPEED_MIN = 1e-6
@@ -45,7 +44,7 @@ def validate_flat(g: Mapping[str, Any]) -> list[str]:
             raise NotAMechanism(f"{name} = {g[name]:g} is given for a flat-faced arm: it is not used ({why}); "
                                 "leave it out")
     cam = flat_cam_of(g)
-    _division_angles(g, cam)
+    arm_division_angles(g, cam)
     a, r0, f, h = cam.a, cam.r0, cam.offset, cam.h
     if r0 + f <= 0.0:
         raise NotAMechanism(f"face_offset = {f:g} ≤ −r0 = {-r0:g}: the face would lie beyond the pivot, away from "
@@ -283,8 +282,8 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     sc.add("kA", circle, O, a, style="construction",
            caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
                     f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
-    inv_pos = _Inversion(sc, cam, O, A0, T1)
-    divs = _division_angles(g, cam)
+    inv_pos = ArmInversion(sc, cam, O, A0, T1)
+    divs = arm_division_angles(g, cam)
     R = a
     add_motion_diagram(sc, prog, h, Point(1.25 * R, -0.6 * R), 2.4 * R, 0.4 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
@@ -306,7 +305,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     sc.add("psi_max", angle_deg, At, Ct, Dt, role=Role.MEASUREMENT, unit="deg",
            caption=(f"Measure the stroke ψmax at the end of the rise, δ = {top:g}°",
                     f"量得推程终点(δ = {top:g}°)的最大摆角 ψmax"))
-    add_profile_steps(sc, flat_profile, (fam, profile_tolerance(g)),
+    add_profile_steps(sc, flat_profile, (fam, profile_tolerance(g, a)),
                       ("Draw the envelope of the face lines: the actual profile", "作各平底直线的包络线,即凸轮的实际廓线"))
     rho = sc.add("rho_flat", envelope_rho_min, fam, visible=False)
     sc.add("rho_min_actual", extremum_value, rho, role=Role.MEASUREMENT, unit="mm", visible=False)
@@ -344,7 +343,7 @@ def face_place_at(fam: LineFamily, A0: Point, inv: float, tau: int, delta_deg: f
     return float(face_place(fam, A0, inv, tau, np.array([math.radians(delta_deg)]))[0])
 
 
-def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "_Inversion", O: Ref, f: float) -> None:
+def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O: Ref, f: float) -> None:
     """The worst positions: the face, the contact K, the relative instant centre P, the common normal KP and,
     for an offset face, α between the normal and K's velocity (⊥ A0′K). A face through the pivot has α ≡ 0:
     the position of the farthest contact is shown instead."""

@@ -18,7 +18,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.profile import (Extremum, LineFamily, PitchCurve, backward_jumps, corners, envelope, envelope_rho_min,
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, corners, envelope, envelope_rho_min,
                            flat_profile, inverted, maximise, pressure_angle, pressure_angle_slope, rho_min,
                            roller_profile)
 from ..cam.program import Program, parse_program
@@ -30,6 +30,7 @@ from ..scene import marks
 from .base import Construction, Quantity, Recipe
 from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
                          add_profile_steps, add_roller_circles, at_least, division_angles, extremum_deg, extremum_value,
+                         flat_convex, negate, pick,
                          inversion_sign, minus, normal_segment, pitch_polyline, pressure_mark,
                          profile_tolerance, program_breaks, require_full, turned)
 
@@ -209,19 +210,9 @@ def largest_extremum(*extrema: Extremum) -> Extremum:
     return max(extrema, key=lambda x: x.value)
 
 
-def negate(b: bool) -> bool:
-    """not b."""
-    return not b
-
-
 def pick(pair: tuple[float, float], i: int) -> float:
     """One member of a pair."""
     return pair[i]
-
-
-def flat_convex(fam: LineFamily, rho: Extremum) -> bool:
-    """The flat face's profile is convex: ρ > 0 everywhere and the contact never jumps back."""
-    return rho.value > 0.0 and not backward_jumps(fam)
 
 
 def worst_point(O: Point, prog: Program, h: float, e: float, s0: float, inv: float, w: Extremum) -> Point:
@@ -274,7 +265,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     require_full(prog)
     inv, flat = inversion_sign(rot), follower == "flat"
     s0 = r0 if flat else math.sqrt((r0 - e) * (r0 + e))
-    tol = profile_tolerance(g)
+    tol = profile_tolerance(g, r0 + h + rr)
     at = tuple(g.get("at") or ())
     turn_en, turn_zh = ("clockwise", "顺时针") if inv < 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with a translating {follower} follower: inversion")
