@@ -6,10 +6,22 @@ Examples
 True
 >>> audit_row("theta", 12.5, 12.5055860934)["deviation"]
 -0.0055860934
+>>> rounded(12.50558609341234, 1.0), rounded(3.1e-15, 1.0), rounded(1234567.891234567891, 100.0)
+(12.5055860934, 0.0, 1234567.89123)
 """
 from __future__ import annotations
 
-from .tolerance import CHECK_REL, agree
+import math
+
+from .tolerance import CHECK_REL
+
+DIGITS = 12
+"""Significant digits of every number geomcon writes, counted at the scale of the quantity (see
+:func:`rounded`): last-bit differences between CPUs and library versions never reach a file."""
+
+NOISE_REL = 1e-12
+"""Differences below this fraction of the compared magnitude are floating-point noise (they differ between
+CPUs): a check's ``abs_error`` under it is written as 0."""
 
 PUBLISHED_WARN_REL = 0.03
 """Published answers are drawn by hand: a deviation beyond 3 % is reported as a warning."""
@@ -21,25 +33,62 @@ def scale_for(unit: str, length_scale: float) -> float:
     return length_scale if unit == "mm" else 1.0
 
 
+def rounded(x: float, scale: float) -> float:
+    """``x`` to :data:`DIGITS` significant digits of ``max(|x|, scale)``: a length of 1e-15 mm in a linkage of
+    100 mm is 0, a length of 1234.5 keeps 12 digits.
+
+    Examples
+    --------
+    >>> rounded(-1e-17, 1.0), rounded(2.0 / 3.0, 1e-6)
+    (0.0, 0.666666666667)
+    """
+    if x == 0 or not math.isfinite(x):
+        return 0.0 if x == 0 else x
+    m = max(abs(x), abs(scale))
+    decimals = DIGITS - 1 - math.floor(math.log10(m))
+    out = float(f"{x:.{decimals}f}") if decimals >= 0 else float(f"{x:.{DIGITS}g}")
+    return out + 0.0                                    # never -0.0
+
+
+def error_text(err: float, magnitude: float) -> float:
+    """An ``abs_error`` as written: 0 below the noise floor (:data:`NOISE_REL` of ``magnitude``), else two
+    significant digits.
+
+    Examples
+    --------
+    >>> error_text(3.55e-15, 12.5), error_text(2.4e-9, 12.5)
+    (0.0, 2.4e-09)
+    """
+    if not math.isfinite(err) or err > NOISE_REL * magnitude:
+        return float(f"{err:.2g}")
+    return 0.0
+
+
 def check_row(quantity: str, construction: float, analytic: float, unit: str, length_scale: float) -> dict:
-    """One row of ``checks``: construction vs analytic to ``CHECK_REL`` relative."""
+    """One row of ``checks``: construction vs analytic to ``CHECK_REL`` of ``max(|a|, |b|, unit scale)``
+    (``tol``, the absolute error allowed; the solver may widen it by the problem's condition)."""
     err = abs(construction - analytic)
+    tol = CHECK_REL * max(abs(construction), abs(analytic), scale_for(unit, length_scale))
     return {
         "quantity": quantity,
         "construction": construction,
         "analytic": analytic,
         "abs_error": err,
-        "ok": agree(construction, analytic, scale=scale_for(unit, length_scale), rel=CHECK_REL),
+        "tol": tol,
+        "ok": math.isfinite(err) and err <= tol,
     }
 
 
-def audit_row(quantity: str, published: float, exact: float) -> dict:
-    """One row of ``published``: the printed value, the exact one and the deviation."""
-    dev = round(published - exact, 12)
+def audit_row(quantity: str, published: float, exact: float, scale: float = 1.0) -> dict:
+    """One row of ``published``: the printed value, the exact one and the deviation (both at the quantity's
+    scale, :func:`rounded`); ``rel_deviation`` is None where the exact value is 0 or the ratio not finite."""
+    exact = rounded(exact, scale)
+    dev = rounded(published - exact, scale)
+    rel = dev / abs(exact) if exact != 0 else None
     return {
         "quantity": quantity,
         "published": published,
         "exact": exact,
         "deviation": dev,
-        "rel_deviation": (dev / abs(exact)) if exact != 0 else None,
+        "rel_deviation": rel if rel is not None and math.isfinite(rel) else None,
     }

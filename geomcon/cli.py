@@ -9,6 +9,7 @@ import argparse
 import json
 import os
 import sys
+import warnings
 from pathlib import Path
 from typing import Sequence
 
@@ -18,8 +19,26 @@ EXIT_BAD_INPUT = 2
 EXIT_CHECK_FAILED = 1
 
 
+def one_line(text: str) -> str:
+    """``text`` with every control character escaped (``\\n``, ``\\x01``, ``\\u2028``…), so that a hostile
+    key, recipe or file name can never split the one error line.
+
+    Examples
+    --------
+    >>> one_line("given 'a\\nb'")
+    "given 'a\\\\nb'"
+    """
+    out = []
+    for ch in str(text):
+        if ch.isprintable() or ch == " ":
+            out.append(ch)
+        else:
+            out.append(ch.encode("unicode_escape").decode("ascii"))
+    return "".join(out)
+
+
 def _fail(where: str, msg: str) -> int:
-    print(f"error: {where}: {msg}", file=sys.stderr)
+    print(f"error: {one_line(where)}: {one_line(msg)}", file=sys.stderr)
     return EXIT_BAD_INPUT
 
 
@@ -38,26 +57,32 @@ def cmd_solve(args: argparse.Namespace) -> int:
     from .problems import load_problem
     from .solve import solve
 
+    from .fileio import check_targets
+
     path = args.file
+    outputs = {"--svg": args.svg, "--html": args.html, "--profile-csv": getattr(args, "profile_csv", None)}
     try:
-        sol = solve(load_problem(path))
-        text = to_json_text(sol) if args.json else _summary(sol) + "\n"
-        files: dict[Path, str] = {}
-        if args.svg:
-            files[Path(args.svg)] = sol.svg()
-        if args.html:
-            files[Path(args.html)] = sol.html()
-        if args.steps:
-            for k, frame in enumerate(sol.frames(), 1):
-                files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
-        if getattr(args, "profile_csv", None):
-            from .recipes.cam_common import profile_csv
-            files[Path(args.profile_csv)] = profile_csv(sol.scene, sol.recipe.name)
+        check_targets({k: v for k, v in outputs.items() if v}, {"--steps": args.steps} if args.steps else {})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")           # numpy's floating-point chatter never reaches stderr
+            sol = solve(load_problem(path))
+            text = to_json_text(sol) if args.json else _summary(sol) + "\n"
+            files: dict[Path, str] = {}
+            if args.svg:
+                files[Path(args.svg)] = sol.svg()
+            if args.html:
+                files[Path(args.html)] = sol.html()
+            if args.steps:
+                for k, frame in enumerate(sol.frames(), 1):
+                    files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
+            if getattr(args, "profile_csv", None):
+                from .recipes.cam_common import profile_csv
+                files[Path(args.profile_csv)] = profile_csv(sol.scene, sol.recipe.name)
         write_all(files)
     except GeomconError as exc:
         return _fail(path, str(exc))
     except OSError as exc:
-        return _fail(path, f"cannot write output: {exc}")
+        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
     sys.stdout.write(text)
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
@@ -155,8 +180,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         if os.environ.get("GEOMCON_DEBUG"):
             raise
         where = getattr(args, "file", None) or args.command
-        print(f"error: {where}: internal error ({type(exc).__name__}: {exc}); rerun with GEOMCON_DEBUG=1 "
-              "for the traceback", file=sys.stderr)
+        print(f"error: {one_line(where)}: internal error ({type(exc).__name__}: {one_line(str(exc))[:300]}); "
+              "rerun with GEOMCON_DEBUG=1 for the traceback", file=sys.stderr)
         return 3
 
 

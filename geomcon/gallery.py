@@ -16,7 +16,7 @@ from .solve import Solution, solve
 
 def to_json_text(sol: Solution) -> str:
     """The solution's JSON, as ``geomcon solve --json`` prints it."""
-    return json.dumps(sol.to_json(), ensure_ascii=False, indent=2) + "\n"
+    return json.dumps(sol.to_json(), ensure_ascii=False, indent=2, allow_nan=False) + "\n"
 
 
 def problem_files(problems_dir: Path) -> list[Path]:

@@ -22,17 +22,12 @@ import math
 from functools import cached_property
 from typing import Any
 
-from .check import PUBLISHED_WARN_REL, audit_row, check_row
-from .errors import NotAMechanism
+from .check import PUBLISHED_WARN_REL, audit_row, check_row, error_text, rounded, scale_for
+from .condition import KAPPA_REFUSE, sensitivities, solution_count_stable, STEP
+from .errors import NotAMechanism, ProblemError
+from .tolerance import CHECK_REL
 from .problems import Problem
 from .recipes import Construction, Recipe, get_recipe
-
-
-def _num(x: float) -> float:
-    """Round to 12 significant digits so that JSON is stable across platforms' last-bit differences."""
-    if x == 0 or not math.isfinite(x):
-        return 0.0 if x == 0 else x
-    return float(f"{x:.12g}")
 
 
 def _value(unit: str, v: Any) -> Any:
@@ -44,13 +39,14 @@ def _value(unit: str, v: Any) -> Any:
     return float(v)
 
 
-def _json(v: Any) -> Any:
-    """An answer value for JSON: numbers rounded by :func:`_num`, lists element by element, bools as they are."""
+def _json(v: Any, scale: float) -> Any:
+    """An answer value for JSON: numbers :func:`~geomcon.check.rounded` at ``scale``, lists element by
+    element, bools as they are."""
     if isinstance(v, bool):
         return v
     if isinstance(v, (tuple, list)):
-        return [_json(x) for x in v]
-    return _num(v)
+        return [_json(x, scale) for x in v]
+    return rounded(v, scale)
 
 
 def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
@@ -103,6 +99,12 @@ class Solution:
             out.sort(key=self.recipe.order)
         if not out:
             raise NotAMechanism(self.construction.no_solution or "no candidate of the construction is a valid mechanism")
+        for sol in out:
+            for k, v in sol.items():
+                bad = [x for x in (v if isinstance(v, tuple) else (v,)) if not math.isfinite(x)]
+                if bad:
+                    raise NotAMechanism(f"answer '{k}' is not a finite number ({bad[0]!r}): the givens are outside "
+                                        "the range where the construction holds in double precision")
         return out
 
     @property
@@ -121,26 +123,119 @@ class Solution:
         """The analytic twin's solutions."""
         return self.recipe.analytic(self.problem.given)
 
+    def unit_scale(self, unit: str) -> float:
+        """The scale of a quantity of ``unit``: the length scale for lengths, 1 otherwise."""
+        return scale_for(unit.removesuffix("[]"), self.length_scale)
+
+    @cached_property
+    def matching(self) -> list[tuple[int, int]]:
+        """Pairs ``(construction solution, twin solution)``: several solutions are compared as sets, each
+        construction solution with the nearest twin solution (greedy on the worst relative difference)."""
+        built, exact = self.solution_values, self.analytic
+        if len(built) <= 1 or len(exact) <= 1:
+            return [(i, i) for i in range(min(len(built), len(exact)))]
+        units = {q.name: q.unit for q in self.recipe.answers}
+
+        def cost(b: dict, e: dict) -> float:
+            worst = 0.0
+            for k in b.keys() & e.keys():
+                for _, x, y in _pairs(k, b[k], e[k]):
+                    worst = max(worst, abs(float(x) - float(y)) / max(abs(float(x)), abs(float(y)),
+                                                                       self.unit_scale(units.get(k, ""))))
+            return worst
+
+        ranked = sorted((cost(b, e), i, j) for i, b in enumerate(built) for j, e in enumerate(exact))
+        used_i: set[int] = set()
+        used_j: set[int] = set()
+        out = []
+        for _, i, j in ranked:
+            if i not in used_i and j not in used_j:
+                out.append((i, j))
+                used_i.add(i)
+                used_j.add(j)
+        return sorted(out)
+
+    @cached_property
+    def _sensitivities(self) -> list[dict[str, float]]:
+        """The twin's condition sums per solution (computed only when a plain check fails)."""
+        units = {q.name: q.unit for q in self.recipe.givens}
+        yes_no = frozenset(q.name for q in self.recipe.answers if q.unit == "bool")
+        return sensitivities(self.recipe.analytic, self.problem.given, units, self.length_scale, yes_no)
+
+    def _conditioned(self, row: dict, j: int, flat: str, unit: str) -> dict:
+        """Judge a failed answer row again at the problem's own condition (:mod:`geomcon.condition`)."""
+        sens = self._sensitivities
+        s = sens[j].get(flat) if j < len(sens) else None
+        if s is None:
+            return row
+        if unit == "bool":
+            return {**row, "ok": s == float("inf"), "condition": "undecidable"} if s == float("inf") else row
+        magnitude = max(abs(row["analytic"]), self.unit_scale(unit))
+        kappa = s / magnitude
+        if kappa > KAPPA_REFUSE:
+            raise NotAMechanism(f"answer '{flat}' is too ill-conditioned to check: it moves {kappa:.3g} times the "
+                                f"relative change of the givens (limit {KAPPA_REFUSE:g}); the data do not determine it")
+        tol = max(row["tol"], CHECK_REL * s)
+        return {**row, "tol": tol, "ok": row["abs_error"] <= tol, "condition": kappa}
+
+    def _back_conditioned(self, row: dict, name: str, i: int, given, built: dict) -> dict:
+        """Judge a failed back-substitution row again at the condition of the rebuild on the solution's answers:
+        ``Σ_j |∂r/∂a_j| · |a_j|`` from central differences of ``back_check``."""
+        def rebuilt(answers: dict) -> float | None:
+            try:
+                for n, value, _, _ in self.recipe.back_check(given, answers):
+                    if n == name:
+                        return float(value)
+            except (ArithmeticError, ValueError):
+                return None
+            return None
+
+        total = 0.0
+        for k, v in built.items():
+            if isinstance(v, (bool, tuple, list)) or v == 0:
+                continue
+            u = abs(float(v))
+            hp, hm = rebuilt({**built, k: v + STEP * u}), rebuilt({**built, k: v - STEP * u})
+            if hp is not None and hm is not None:
+                total += abs(hp - hm) / (2 * STEP)
+        tol = max(row["tol"], CHECK_REL * total)
+        return {**row, "tol": tol, "ok": row["abs_error"] <= tol,
+                "condition": total / max(abs(row["analytic"]), 1e-300)}
+
     @cached_property
     def checks(self) -> list[dict[str, Any]]:
-        """Construction vs analytic twin for every answer of every solution."""
+        """Construction vs analytic twin for every answer of every solution, each row judged at CHECK_REL and,
+        when it fails there, at the problem's own condition."""
         rows = []
-        for i, (built, exact) in enumerate(zip(self.solution_values, self.analytic)):
+        for i, j in self.matching:
+            built, exact = self.solution_values[i], self.analytic[j]
             prefix = f"solutions[{i}]." if i else ""
             for q in self.recipe.answers:
                 if q.name in built and q.name in exact:
-                    for name, b, e in _pairs(prefix + q.name, built[q.name], exact[q.name]):
-                        rows.append(check_row(name, b, e, q.unit.removesuffix("[]"), self.length_scale))
+                    unit = q.unit.removesuffix("[]")
+                    for (name, b, e), (flat, _, _) in zip(_pairs(prefix + q.name, built[q.name], exact[q.name]),
+                                                          _pairs(q.name, built[q.name], exact[q.name])):
+                        row = {**check_row(name, b, e, unit, self.length_scale), "unit": q.unit}
+                        if not row["ok"]:
+                            row = self._conditioned(row, j, flat, q.unit)
+                        rows.append(row)
         if self.recipe.back_check is not None:
             for i, built in enumerate(self.solution_values):
                 prefix = f"solutions[{i}]." if i else ""
                 for name, rebuilt, required, unit in self.recipe.back_check(self.problem.given, built):
-                    rows.append(check_row(f"{prefix}back_substitution.{name}", rebuilt, required, unit,
-                                          self.length_scale))
+                    row = {**check_row(f"{prefix}back_substitution.{name}", rebuilt, required, unit,
+                                       self.length_scale), "unit": unit}
+                    if not row["ok"]:
+                        row = self._back_conditioned(row, name, i, self.problem.given, built)
+                    rows.append(row)
         if len(self.solution_values) != len(self.analytic):
+            units = {q.name: q.unit for q in self.recipe.givens}
+            borderline = solution_count_stable(self.recipe.analytic, self.problem.given, units,
+                                               self.length_scale) is False
             rows.append({"quantity": "number of solutions", "construction": len(self.solution_values),
-                         "analytic": len(self.analytic), "abs_error": abs(len(self.solution_values) - len(self.analytic)),
-                         "ok": False})
+                         "analytic": len(self.analytic),
+                         "abs_error": abs(len(self.solution_values) - len(self.analytic)), "tol": 0, "unit": "",
+                         "ok": borderline, **({"condition": "undecidable"} if borderline else {})})
         return rows
 
     @property
@@ -151,8 +246,17 @@ class Solution:
     @cached_property
     def published(self) -> list[dict[str, Any]]:
         """The audit of the printed answers against the exact ones."""
-        return [audit_row(name, p, e) for k, v in self.problem.published.items()
-                for name, p, e in _pairs(k, v, self.answers[k])]
+        units = {q.name: q.unit for q in self.recipe.answers}
+        rows = []
+        for k, v in self.problem.published.items():
+            if k not in self.answers:
+                raise ProblemError(f"published '{k}' is not an answer of this form of {self.recipe.name} "
+                                   f"(its answers: {', '.join(self.answers)})")
+            have = self.answers[k]
+            if isinstance(have, tuple) and len(have) != len(v):
+                raise ProblemError(f"published '{k}' has {len(v)} values; the answer has {len(have)}")
+            rows += [audit_row(name, p, e, self.unit_scale(units[k])) for name, p, e in _pairs(k, v, have)]
+        return rows
 
     @property
     def warnings(self) -> list[str]:
@@ -166,6 +270,13 @@ class Solution:
         for r in self.checks:
             if not r["ok"]:
                 out.append(f"check failed: {r['quantity']} construction {r['construction']!r} vs analytic {r['analytic']!r}")
+            elif r.get("condition") == "undecidable":
+                out.append(f"{r['quantity']}: construction {r['construction']!r}, analytic {r['analytic']!r} — the data "
+                           f"lie on the boundary where it changes (it flips within a relative change of {STEP:g})")
+            elif "condition" in r:
+                out.append(f"{r['quantity']} is ill-conditioned: it moves {r['condition']:.3g} times the relative "
+                           f"change of the givens; construction and twin agree to {r['abs_error']:.2g} "
+                           f"(allowed {r['tol']:.2g})")
         for r in self.published:
             rel = r["rel_deviation"]
             if (rel is not None and abs(rel) > PUBLISHED_WARN_REL) or (rel is None and r["deviation"] != 0):
@@ -181,19 +292,29 @@ class Solution:
 
     def to_json(self) -> dict[str, Any]:
         """The public JSON object (angles in degrees, lengths in mm)."""
-        answers = {k: _json(v) for k, v in self.answers.items()}
+        units = {q.name: q.unit for q in self.recipe.answers}
+
+        def answers_json(sol: dict) -> dict:
+            return {k: _json(v, self.unit_scale(units.get(k, ""))) for k, v in sol.items()}
+
+        def check_json(r: dict) -> dict:
+            sc = self.unit_scale(r["unit"])
+            magnitude = max(abs(float(r["construction"])), abs(float(r["analytic"])), sc)
+            return {**r, "construction": _json(r["construction"], sc), "analytic": _json(r["analytic"], sc),
+                    "abs_error": error_text(r["abs_error"], magnitude), "tol": float(f"{r['tol']:.2g}"),
+                    **({"condition": float(f"{r['condition']:.2g}")} if isinstance(r.get("condition"), float) else {})}
+
         out = {
             "problem": self.problem.id,
             "recipe": self.recipe.name,
             "title": self.problem.title,
             "given": dict(self.problem.given),
-            "answers": answers,
-            "points": {k: [_num(x), _num(y)] for k, (x, y) in self.points.items()},
-            "solutions": [{k: _json(v) for k, v in s.items()} for s in self.solution_values],
-            "checks": [{**r, "construction": _json(r["construction"]), "analytic": _json(r["analytic"]),
-                        "abs_error": float(f"{r['abs_error']:.3g}")} for r in self.checks],
-            "published": [{**r, "exact": _json(r["exact"]),
-                           "rel_deviation": None if r["rel_deviation"] is None else float(f"{r['rel_deviation']:.4g}")}
+            "answers": answers_json(self.answers),
+            "points": {k: [rounded(x, self.length_scale), rounded(y, self.length_scale)]
+                       for k, (x, y) in self.points.items()},
+            "solutions": [answers_json(s) for s in self.solution_values],
+            "checks": [check_json(r) for r in self.checks],
+            "published": [{**r, "rel_deviation": None if r["rel_deviation"] is None else float(f"{r['rel_deviation']:.4g}")}
                           for r in self.published],
             "warnings": self.warnings,
         }
