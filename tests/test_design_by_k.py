@@ -9,7 +9,7 @@ import random
 
 import pytest
 
-from geomcon.errors import NotAMechanism
+from geomcon.errors import GeomconError, NotAMechanism
 from geomcon.problems import problem_from_dict
 from geomcon.solve import solve
 
@@ -59,13 +59,13 @@ def test_crank_slider_design_at_the_end_of_the_arc_is_tangent():
     (dict(K=1.5, H=50, e=80), ["e = 80", "(0, 68.8191]"]),
     (dict(K=1.5, H=50, AB=30), ["AB = 30", "[8.12299, 25)"]),
     (dict(K=1.5, H=50, BC=200), ["BC = 200", "(25, 76.9421]"]),
-    (dict(K=3.5, H=50, e=10), ["θ = 100°"]),
+    (dict(K=2.9975, H=50, e=10), ["≤ 2.99746", "2.9975"]),
     (dict(K=1.5, H=50), ["exactly one of e, AB, BC"]),
     (dict(K=1.5, H=50, e=10, AB=20), ["exactly one of e, AB, BC"]),
     (dict(K=1.0, H=50, e=10), ["K = 1"]),
 ])
 def test_crank_slider_design_refusals_name_the_range(given, words):
-    with pytest.raises(NotAMechanism) as exc:
+    with pytest.raises(GeomconError) as exc:
         _solve("crank_slider.design_by_K", **given)
     for w in words:
         assert w in str(exc.value)
@@ -89,7 +89,7 @@ def test_K_just_above_one_is_refused_clearly(recipe, given, K):
         _solve(recipe, K=K, **given)
 
 
-@pytest.mark.parametrize("K", [2.5, 2.9, 2.99])
+@pytest.mark.parametrize("K", [2.5, 2.9, 2.99, 2.9974])
 def test_crank_slider_design_K_near_three(K):
     th = math.radians(180 * (K - 1) / (K + 1))
     sol = _solve("crank_slider.design_by_K", K=K, H=50, e=0.5 * 50 / math.tan(th))
@@ -291,3 +291,16 @@ def test_output_arm_of_the_cutter_drive_seed_001_21():
 def test_output_arm_needs_the_positions_form():
     with pytest.raises(NotAMechanism, match="H_out"):
         _solve("crank_rocker.design_by_K", K=1.2, CD=50, AD=80, phi=60, H_out=30)
+
+
+@pytest.mark.parametrize("recipe, given, limit", [
+    ("crank_slider.design_by_K", dict(H=50, e=10), "2.99746"),
+    ("crank_slider.best_by_K", dict(H=50), "2.99746"),
+    ("guide_bar.design_by_K", dict(AC=50), "3"),
+    ("shaper.design_by_K", dict(H=50, AC=50), "3"),
+    ("slotter.design_by_K", dict(H=50, B1B2=30), "6282.19"),
+    ("crank_rocker.design_by_K", dict(CD=50, psi=40, BC=50), "6282.19"),
+])
+def test_every_design_by_K_names_its_largest_K(recipe, given, limit):
+    with pytest.raises(GeomconError, match=f"'K' must be ≤ {limit}, got"):
+        _solve(recipe, K=1e12, **given)

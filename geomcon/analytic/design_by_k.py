@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 
+from ..errors import NotAMechanism
 from ..tolerance import REL_TOL
 from .linkages import theta_from_k
 
@@ -27,19 +28,20 @@ from .linkages import theta_from_k
 def _sides_from_e(L: float, th: float, e: float) -> tuple[float, float]:
     """(u, v) of the triangle with base L seen under θ (rad) from a point at height e above the base."""
     uv = e * L / math.sin(th)
-    d = math.sqrt(L * L - 2.0 * uv * (1.0 - math.cos(th)))        # v − u
-    s = math.sqrt(L * L + 2.0 * uv * (1.0 + math.cos(th)))        # v + u
+    sh, ch = math.sin(th / 2.0), math.cos(th / 2.0)               # 1 ∓ cos θ = 2 sin²(θ/2), 2 cos²(θ/2)
+    d = math.sqrt(max(0.0, L * L - 4.0 * uv * sh * sh))           # v − u
+    s = math.sqrt(L * L + 4.0 * uv * ch * ch)                     # v + u
     return (s - d) / 2.0, (s + d) / 2.0
 
 
 def _sides_from_a(L: float, th: float, a: float) -> tuple[float, float]:
-    uv = (L * L - 4.0 * a * a) / (2.0 * (1.0 - math.cos(th)))
+    uv = (L - 2.0 * a) * (L + 2.0 * a) / (4.0 * math.sin(th / 2.0) ** 2)
     s = math.sqrt(4.0 * a * a + 4.0 * uv)
     return (s - 2.0 * a) / 2.0, (s + 2.0 * a) / 2.0
 
 
 def _sides_from_b(L: float, th: float, b: float) -> tuple[float, float]:
-    uv = (4.0 * b * b - L * L) / (2.0 * (1.0 + math.cos(th)))
+    uv = (2.0 * b - L) * (2.0 * b + L) / (4.0 * math.cos(th / 2.0) ** 2)
     d = math.sqrt(max(0.0, 4.0 * b * b - 4.0 * uv))
     return (2.0 * b - d) / 2.0, (2.0 * b + d) / 2.0
 
@@ -50,27 +52,27 @@ def crank_slider_design(K: float, H: float, *, e: float | None = None, AB: float
 
     The pivot A lies at height e above the guide and to the outside of the stroke (the foot of A is not
     between C1 and C2); the feasible ranges are 0 < e ≤ H·cot θ, (H/2)·tan(θ/2) ≤ AB < H/2 and
-    H/2 < BC ≤ (H/2)·cot(θ/2). Raises ValueError outside them.
+    H/2 < BC ≤ (H/2)·cot(θ/2). Raises NotAMechanism outside them.
     """
     th = math.radians(theta_from_k(K))
     if not 0.0 < th < math.pi / 2:
-        raise ValueError(f"θ = {math.degrees(th):g}° must lie in (0°, 90°) for a crank-slider designed by K")
+        raise NotAMechanism(f"θ = {math.degrees(th):g}° must lie in (0°, 90°) for a crank-slider designed by K")
     if e is not None:
         if not 0.0 < e <= H / math.tan(th) * (1 + 1e-12):
-            raise ValueError(f"e = {e:g} outside (0, H·cot θ = {H / math.tan(th):g}]")
+            raise NotAMechanism(f"e = {e:g} outside (0, H·cot θ = {H / math.tan(th):g}]")
         u, v = _sides_from_e(H, th, e)
     elif AB is not None:
         lo, hi = H / 2 * math.tan(th / 2), H / 2
         if not lo * (1 - 1e-12) <= AB < hi:
-            raise ValueError(f"AB = {AB:g} outside [H/2·tan(θ/2) = {lo:g}, H/2 = {hi:g})")
+            raise NotAMechanism(f"AB = {AB:g} outside [H/2·tan(θ/2) = {lo:g}, H/2 = {hi:g})")
         u, v = _sides_from_a(H, th, AB)
     elif BC is not None:
         lo, hi = H / 2, H / 2 / math.tan(th / 2)
         if not lo < BC <= hi * (1 + 1e-12):
-            raise ValueError(f"BC = {BC:g} outside (H/2 = {lo:g}, H/2·cot(θ/2) = {hi:g}]")
+            raise NotAMechanism(f"BC = {BC:g} outside (H/2 = {lo:g}, H/2·cot(θ/2) = {hi:g}]")
         u, v = _sides_from_b(H, th, BC)
     else:
-        raise ValueError("give exactly one of e, AB, BC")
+        raise NotAMechanism("give exactly one of e, AB, BC")
     a, b = (v - u) / 2.0, (v + u) / 2.0
     ecc = u * v * math.sin(th) / H
     gamma = math.degrees(math.atan2(math.sqrt(max(0.0, (b - a - ecc) * (b + a + ecc))), a + ecc))
@@ -118,14 +120,14 @@ def rocker_design_candidates(K: float, CD: float, c1: tuple[float, float], c2: t
             if disc < 0:
                 return []
             return [(c1[0] + t * ux, c1[1] + t * uy) for t in (-bq - math.sqrt(disc), -bq + math.sqrt(disc))]
-        raise ValueError("K = 1 needs AD or frame_line")
+        raise NotAMechanism("K = 1 needs AD or frame_line")
     pairs: list[tuple[float, float]] = []   # (distance to c1, distance to c2)
     if BC is not None or AB is not None:
         if BC is not None:
-            uv = (4 * BC * BC - L * L) / (2 * (1 + math.cos(th)))
+            uv = (2 * BC - L) * (2 * BC + L) / (4 * math.cos(th / 2) ** 2)
             s, d = 2 * BC, math.sqrt(max(0.0, 4 * BC * BC - 4 * uv))
         else:
-            uv = (L * L - 4 * AB * AB) / (2 * (1 - math.cos(th)))
+            uv = (L - 2 * AB) * (L + 2 * AB) / (4 * math.sin(th / 2) ** 2)
             d = 2 * AB
             s = math.sqrt(d * d + 4 * uv)
         u, v = (s - d) / 2, (s + d) / 2
@@ -139,7 +141,7 @@ def rocker_design_candidates(K: float, CD: float, c1: tuple[float, float], c2: t
     elif frame_line:                        # A = (x, 0) with ∠c1 A c2 = θ: bracket and bisect the angle
         return _frame_line_points(c1, c2, th)
     else:
-        raise ValueError("give one of BC, AB, AC1, frame_line")
+        raise NotAMechanism("give one of BC, AB, AC1, frame_line")
     for rp, rq in pairs:
         if rp > 0 and rq > 0:
             out += _trilaterate(c1, c2, rp, rq)
@@ -235,7 +237,7 @@ def guide_bar_design(K: float, *, AC: float | None = None, AB: float | None = No
     elif AB is not None:
         AC = AB / s
     else:
-        raise ValueError("give AC or AB")
+        raise NotAMechanism("give AC or AB")
     return {"AB": AB, "AC": AC, "psi": th, "theta": th, "K": K}
 
 

@@ -37,7 +37,9 @@ EXPECT_REL = 1e-7
 """Relative agreement required with the generating linkage (the twins are held to 1e-9)."""
 
 THETA_MIN = math.degrees(1e-3)
-"""θ below this (K < 1.00064) is refused by every θ-circle design (documented limit): generated θ stay above."""
+"""θ below this (K < 1.00064) is refused by every θ-circle design (documented limit): generated θ stay above.
+Crank-slider designs also keep θ ≤ 90° − THETA_MIN, crank-rocker and slotter designs θ ≤ 180° − THETA_MIN
+(the documented maxima of K)."""
 
 
 # ----------------------------------------------------------------------------------------------- helpers
@@ -252,7 +254,7 @@ def crank_slider_design(rng: random.Random) -> ValidCase:
                              _expect({"AB": a, "BC": b, "e": 0.0}, {"AB": b, "BC": b, "e": b}), "near-degenerate: K = 1")
         r = _mp_slider(a, b, e)
         th = float(r["theta"])
-        if not _theta_ok(th, 90.0):
+        if not _theta_ok(th, 90.0 - THETA_MIN):
             continue
         K, H = float(_k(r["theta"])), float(r["H"])
         which = rng.choice(["e", "AB", "BC"])
@@ -272,8 +274,8 @@ def crank_slider_best(rng: random.Random) -> ValidCase:
         th = THETA_MIN * rng.uniform(1.01, 2)
         kind = "near-degenerate: K → 1"
     elif r < 0.2:
-        th = 90 * (1 - 10 ** rng.uniform(-9, -3))
-        kind = "near-degenerate: θ → 90°"
+        th = (90 - THETA_MIN) * (1 - 10 ** rng.uniform(-9, -3))
+        kind = "near-degenerate: θ → its largest value"
     else:
         th = rng.uniform(1, 85)
     K = float(_k(mpmath.mpf(th)))
@@ -434,9 +436,9 @@ def slotter_design(rng: random.Random) -> ValidCase:
     if r < 0.1:
         ratio = 10 ** rng.uniform(-6, -2)          # AC ≪ AB: K → 1
         kind = "near-degenerate: K → 1"
-    elif r < 0.2:
-        ratio = math.cos(math.radians(rng.uniform(88.0, 88.2)))   # near the documented K ≤ 100
-        ratio = 1 / math.sqrt(1 + (1 / ratio ** 2 - 1))
+    elif r < 0.2:                                  # near the documented K ≤ 6282: 180° − θ → 0.057°
+        fast = math.radians(THETA_MIN) * rng.uniform(1.01, 3)  # the fast stroke's crank angle
+        ratio = math.cos(fast / 2)
         kind = "near-degenerate: K near its maximum"
     else:
         ratio = rng.uniform(0.05, 0.95)
@@ -445,7 +447,7 @@ def slotter_design(rng: random.Random) -> ValidCase:
     crank = 2 * mpmath.degrees(mpmath.atan2(half, AC))      # the crank angle of the fast stroke
     K = float((360 - crank) / crank)
     th = 180 * (K - 1) / (K + 1)
-    if not (THETA_MIN * 1.001 < th) or K > 100:
+    if not THETA_MIN * 1.001 < th < 180 - THETA_MIN * 1.001:
         return slotter_design(rng)
     CD = S * rng.uniform(0.2, 2)
     given: dict[str, Any] = {"K": K, "H": 2 * CD, "B1B2": float(2 * half)}

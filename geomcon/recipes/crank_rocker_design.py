@@ -35,10 +35,11 @@ from .base import Construction, Quantity, Recipe
 from .common import (add_bar, angle_deg, best_index, folded_flag, gamma_min_of, half_difference, half_sum, is_valid,
                      length, near_flag, one, pick, preference)
 from .crank_rocker import construct as extremes_construct
-from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
+from .theta_circle import K_MAX_OBTUSE, add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
 GIVENS = (
-    Quantity("K", "", "time-ratio coefficient", minimum=1.0, inclusive=True),
+    Quantity("K", "", "time-ratio coefficient, K = 1 or 1.00064 ≤ K ≤ 6282 (180° − θ ≥ 0.057°: the θ-circle's "
+             "radius stays within 500 chords)", minimum=1.0, inclusive=True, maximum=K_MAX_OBTUSE),
     Quantity("CD", "mm", "rocker (all forms but the links form)", required=False),
     Quantity("psi", "deg", "rocker swing ∠C1DC2 (positions given)", required=False),
     Quantity("phi1", "deg", "direction of DC1 from the horizontal through D, counter-clockwise", required=False, minimum=None),
@@ -103,8 +104,8 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
         raise NotAMechanism("H_out (the output arm DE) needs the rocker's extreme positions given (psi or phi1, phi2)")
     theta = theta_from_k(g["K"])
     refuse_tiny_theta(g["K"])
-    if theta >= 180.0 or g["K"] >= 1e12:
-        raise NotAMechanism(f"K = {g['K']:g} gives θ = {theta:g}°: too close to 180°")
+    if g["K"] > K_MAX_OBTUSE:
+        raise NotAMechanism(f"K = {g['K']:g} gives θ = {theta:g}°: 180° − θ must be at least 0.057° (K ≤ {K_MAX_OBTUSE:g})")
     if g.get("psi") is not None and not 0.0 < g["psi"] < 180.0:
         raise NotAMechanism(f"psi = {g['psi']:g}° must lie in (0°, 180°)")
     if g.get("phi1") is not None and math.isclose(g["phi1"] % 360, g["phi2"] % 360):

@@ -79,7 +79,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
                caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
     th = add_theta_and_K(sc, A, C1, C2)
-    add_pressure_angles(sc, A, B1, C1, gl, AB, BC)
+    add_pressure_angles(sc, A, B1, C1, gl, AB, BC, math.fsum((BC, -AB, -e)))
     add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
            caption=("Dimension the stroke H", "标注行程 H"))
@@ -87,11 +87,26 @@ def construct(g: Mapping[str, Any]) -> Construction:
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "B1", "C1", "B2", "C2")})
 
 
-def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC) -> Ref:
+def pressure_from_gap(BC: float, gap: float) -> float:
+    """The pressure angle (deg) at the slider with the crank perpendicular to the guide, away from it: B is
+    BC − gap from the guide, so cos α = √(gap·(2BC − gap))/BC. The gap is passed in, formed without
+    cancellation, so that α near 90° (the rod nearly perpendicular to the guide, gap → 0) keeps its accuracy
+    instead of going through the near-tangent circle about B3.
+
+    >>> round(pressure_from_gap(5.0, 1.0), 12), pressure_from_gap(5.0, 0.0)
+    (53.130102354156, 90.0)
+    """
+    gap = max(0.0, gap)
+    return math.degrees(math.atan2(BC - gap, math.sqrt(gap * (2.0 * BC - gap))))
+
+
+def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC, gap) -> Ref:
     """The pressure angles that decide γmin: crank perpendicular to the guide away from it (B3, the largest
     of the cycle, in the fast stroke) and towards it (B4), and the folded position C1 (slow stroke).
 
-    ``AB`` and ``BC`` are numbers or references to measured lengths. Adds ``alpha_max``, ``gamma_min``,
+    ``AB`` and ``BC`` are numbers or references to measured lengths; ``gap`` is BC − AB − e (a number or a
+    reference), how far B3 stays short of the guide by the rod's length, formed by the caller without
+    cancellation: αmax is measured from it (:func:`pressure_from_gap`). Adds ``alpha_max``, ``gamma_min``,
     ``gamma_min_fast``, ``gamma_min_slow`` and the αmax angle mark; returns ``gamma_min``.
     """
     nA = sc.add("nA", perpendicular, gl, A, caption=("Perpendicular to the guide through A", "过 A 作导路的垂线"))
@@ -105,8 +120,9 @@ def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC) ->
         add_bar(sc, f"AB{i}", A, B, style="ghost", role=Role.CONSTRUCTION)
         add_bar(sc, f"B{i}C{i}", B, C, style="ghost", role=Role.CONSTRUCTION)
         pos[i] = (B, C)
-    a3 = sc.add("alpha_3", pressure_deg, *pos[3], gl, role=Role.MEASUREMENT, unit="deg",
-                caption=("Pressure angle at C3 (largest of the cycle)", "C3 处压力角(全周最大)"))
+    a3 = sc.add("alpha_3", pressure_from_gap, BC, gap, role=Role.MEASUREMENT, unit="deg",
+                caption=("Pressure angle at C3 (largest of the cycle): cos α = √(g(2BC − g))/BC, B3 short of "
+                         "the guide by g = BC − AB − e", "C3 处压力角(全周最大):cos α = √(g(2BC − g))/BC"))
     a4 = sc.add("alpha_4", pressure_deg, *pos[4], gl, role=Role.MEASUREMENT, unit="deg",
                 caption=("Pressure angle at C4", "C4 处压力角"))
     a1 = sc.add("alpha_1", pressure_deg, B1, C1, gl, role=Role.MEASUREMENT, unit="deg",
@@ -137,4 +153,3 @@ RECIPE = Recipe(
     analytic=analytic,
     validate=_validate,
 )
-del math

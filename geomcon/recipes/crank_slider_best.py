@@ -22,10 +22,11 @@ from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
 from .crank_slider import construct as extremes_construct
 from .crank_slider_design import admissible_arc, finish_from_A
-from .theta_circle import add_theta_step, add_theta_circle, arc_from_to, refuse_tiny_theta
+from .theta_circle import K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to, refuse_tiny_theta
 
 GIVENS = (
-    Quantity("K", "", "time-ratio coefficient, 1 < K < 3", minimum=1.0),
+    Quantity("K", "", "time-ratio coefficient, 1.00064 ≤ K ≤ 2.99745 (θ ≤ 89.94°: the admissible arc QC1 is "
+             "H·cot θ high and vanishes at θ = 90°)", minimum=1.0, maximum=K_MAX_ACUTE),
     Quantity("H", "mm", "stroke of the slider"),
     Quantity("e_min", "mm", "smallest admissible offset", required=False, default=0.0, minimum=0.0, inclusive=True),
     Quantity("e_max", "mm", "largest admissible offset", required=False),

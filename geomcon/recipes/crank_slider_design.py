@@ -29,10 +29,11 @@ from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, along_line, angle_deg, length
 from .crank_slider import add_pressure_angles
 from .crank_slider import construct as extremes_construct
-from .theta_circle import add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
+from .theta_circle import K_MAX_ACUTE, add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
 
 GIVENS = (
-    Quantity("K", "", "time-ratio coefficient, 1 ≤ K < 3", minimum=1.0, inclusive=True),
+    Quantity("K", "", "time-ratio coefficient, K = 1 or 1.00064 ≤ K ≤ 2.99745 (θ ≤ 89.94°: the admissible arc "
+             "QC1 is H·cot θ high and vanishes at θ = 90°)", minimum=1.0, inclusive=True, maximum=K_MAX_ACUTE),
     Quantity("H", "mm", "stroke of the slider"),
     Quantity("e", "mm", "offset (give exactly one of e, AB, BC)", required=False, minimum=0.0, inclusive=True),
     Quantity("AB", "mm", "crank (give exactly one of e, AB, BC)", required=False),
@@ -193,12 +194,24 @@ def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: floa
         add_bar(sc, f"AB{i}", A, B, (f"Draw the designed linkage, {how[0]}: AB{i}C{i}", f"画出所设计机构的{how[1]}共线位置 AB{i}C{i}"), style=style)
         add_bar(sc, f"B{i}C{i}", B, C, style=style)
         sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
-    add_pressure_angles(sc, A, B1, C1, gl, AB, BC)
+    FC1 = sc.add("FC1", length, Fa, C1, visible=False, unit="mm")
+    gap = sc.add("gap", slack, FC1, u, Ref("e"), visible=False, unit="mm")
+    add_pressure_angles(sc, A, B1, C1, gl, AB, BC, gap)
     sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     sc.add("theta_at_A", angle_deg, A, C1, C2, visible=False, unit="deg")
     add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
     sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.15 * H, role=Role.ANNOTATION, style="dim",
            caption=("Dimension the stroke H", "标注行程 H"))
+
+
+def slack(fc1: float, ac1: float, e: float) -> float:
+    """BC − AB − e = AC1 − e of a design, as FC1²/(AC1 + e) (F the foot of A on the guide): no cancellation
+    when A is near the end Q of the arc (AC1 → e, the rod nearly perpendicular to the guide at B3).
+
+    >>> slack(3.0, 5.0, 4.0)
+    1.0
+    """
+    return fc1 * fc1 / (ac1 + e)
 
 
 def _neg(sc: Scene, x: Ref) -> Ref:

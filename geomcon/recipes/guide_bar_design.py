@@ -31,7 +31,8 @@ from .guide_bar import construct as guide_bar_extremes
 from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, meet_lines, ray_from
 
 GUIDE_GIVENS = (
-    Quantity("K", "", "time-ratio coefficient, 1 < K < 3 (θ < 90°)", minimum=1.0),
+    Quantity("K", "", "time-ratio coefficient, 1.00064 ≤ K < 3 (the guide bar swings through ψ = θ < 90°)",
+             minimum=1.0, maximum=3.0),
     Quantity("AC", "mm", "frame: crank pivot A to guide-bar pivot C (give AC or AB)", required=False),
     Quantity("AB", "mm", "crank (give AC or AB)", required=False),
 )

@@ -21,10 +21,11 @@ from ..geometry import Above, Line, Point, ToRightOf, circle, line_circle, perpe
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
-from .theta_circle import add_theta_step, refuse_tiny_theta, seeing_circle
+from .theta_circle import K_MAX_OBTUSE, add_theta_step, refuse_tiny_theta, seeing_circle
 
 GIVENS = (
-    Quantity("K", "", "time-ratio coefficient", minimum=1.0),
+    Quantity("K", "", "time-ratio coefficient, 1.00064 ≤ K ≤ 6282 (each stroke's crank angle, θ-circle "
+             "chord seen under 180° − θ, at least 0.057°)", minimum=1.0, maximum=K_MAX_OBTUSE),
     Quantity("H", "mm", "stroke S of the slider E"),
     Quantity("B1B2", "mm", "distance between the two points where B's path crosses the slider's path ee"),
     Quantity("alpha_allow", "deg", "largest admissible pressure angle at E: gives the shortest DE", required=False),

@@ -26,6 +26,16 @@ through C1 meets it again at A nearly tangentially, so A carries an error of abo
 2e-10 here, growing as 1/θ². Smaller θ are refused with the advice to give K = 1, the exact line."""
 
 
+K_MAX_ACUTE: float = (270.0 - math.degrees(THETA_MIN_RAD)) / (90.0 + math.degrees(THETA_MIN_RAD))
+"""Largest K (≈ 2.99745) of a design that needs θ < 90° with a usable θ-arc: at θ = 90° − 0.057° the arc QC1
+of a crank-slider design is 1e-3 of the stroke high (the pivot A, the offset and the folded distance all shrink
+to C1 as θ → 90°), and the guide-bar designs swing through ψ = θ < 90°."""
+
+K_MAX_OBTUSE: float = (360.0 - math.degrees(THETA_MIN_RAD)) / math.degrees(THETA_MIN_RAD)
+"""Largest K (≈ 6282) of a design whose construction sees a chord under θ or 180° − θ (crank-rocker,
+slotter): at 180° − θ = 0.057° the circle's radius is 500 chords, as at the smallest θ."""
+
+
 def refuse_tiny_theta(K: float) -> None:
     """Refuse 1 < K whose θ is below :data:`THETA_MIN_RAD` (K = 1 itself is handled as the line).
 
