@@ -39,6 +39,27 @@ from ..tolerance import REL_TOL
 
 XY = tuple[float, float]
 
+WARN_CONDITION = 100.0
+"""One policy for every three-position synthesis (the recipes and their twins): a centre of three points
+(a fixed pivot, or a hinge found by inversion) whose condition R / h_min — circumradius over the smallest
+altitude, the mm the centre moves per mm one point is misplaced — is at least 100 is warned."""
+
+REFUSE_CONDITION = 1e7
+"""… and at least 1e7 is refused: the centre lies some 1e7 chords away and double precision no longer
+delivers it to the 1e-9 the twin check asks for (the points count as collinear)."""
+
+
+def centre_condition(P1: XY, P2: XY, P3: XY) -> float:
+    """R / h_min of the triangle P1P2P3 (∞ for collinear or coincident points), from the side lengths:
+    R = abc / (4·area), h_min = 2·area / max side, so R / h_min = abc·max / (8·area²).
+
+    >>> round(centre_condition((0.0, 0.0), (1.0, 1.0), (2.0, 0.0)), 12)
+    1.0
+    """
+    a, b, c = math.dist(P2, P3), math.dist(P3, P1), math.dist(P1, P2)
+    area2 = abs((P2[0] - P1[0]) * (P3[1] - P1[1]) - (P2[1] - P1[1]) * (P3[0] - P1[0]))
+    return math.inf if area2 == 0.0 else (a * b * c * max(a, b, c)) / (2.0 * area2 * area2)
+
 
 def _circle_circle_side(P: XY, r: float, Q: XY, s: float, side: int) -> XY | None:
     """The meeting point of circle(P, r) and circle(Q, s) on ``side`` of the directed line P→Q

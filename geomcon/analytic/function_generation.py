@@ -38,7 +38,8 @@ import math
 from typing import Sequence
 
 from ..errors import NotAMechanism
-from .fourbar_drive import arc_through, bd_extremes, dead_point_free, turns_fully
+from .fourbar_drive import (REFUSE_CONDITION, WARN_CONDITION, arc_through, bd_extremes, centre_condition,
+                            dead_point_free, turns_fully)
 from .linkages import _tri_angle
 
 STEP = 1e-30
@@ -46,15 +47,10 @@ STEP = 1e-30
 
 SINGULAR_REL = 1e-14
 """The normalised 3×3 system with a relative determinant at or below this is singular to double precision
-(a backstop: the recipes refuse nearly collinear inverted points first, by :data:`REFUSE_FLAT`)."""
+(a backstop: the recipes refuse nearly collinear inverted points first, by :func:`check_inverted`)."""
 
 REFUSE_FLAT = 1e-6
-"""Refuse when the three inverted points (the circle the hinge is the centre of) are this flat: height of
-the triangle over its longest side, relative to that side (the hinge would lie ≳ 2.5·10⁵ chords away)."""
-
-WARN_FLAT = 0.02
-"""Warn when the inverted triangle's relative height is below this (the hinge lies over about 12 chords
-away and moves far per 0.1° of drafting error; the sensitivity answers say how far)."""
+"""Refuse when two of the three inverted points coincide: shortest side over the longest at or below this."""
 
 
 def solve3(M: Sequence[Sequence[complex]], r: Sequence[complex]) -> tuple[complex, complex, complex]:
@@ -135,25 +131,30 @@ def inverted_pins(AD: float, AB: float, phi: Sequence[float], psi: Sequence[floa
 
 
 def check_inverted(P: Sequence[tuple[float, float]], what: str, names: str) -> list[str]:
-    """Refuse (NotAMechanism) or warn when the three inverted points are coincident or nearly collinear.
+    """Refuse (NotAMechanism) or warn when the three inverted points are coincident or nearly collinear, by
+    the policy of every three-position synthesis: the condition R / h_min of the triangle
+    (:func:`~geomcon.analytic.fourbar_drive.centre_condition`) warned from
+    :data:`~geomcon.analytic.fourbar_drive.WARN_CONDITION` = 100, refused from
+    :data:`~geomcon.analytic.fourbar_drive.REFUSE_CONDITION` = 1e7.
 
     ``what`` names the sought hinge, ``names`` the three points (for the message).
 
     >>> check_inverted([(0, 0), (1, 0), (2, 1e-9)], "C1", "B1, B2′, B3′")
     Traceback (most recent call last):
     ...
-    geomcon.errors.NotAMechanism: the inverted points B1, B2′, B3′ are collinear (relative height 2.5e-10 < 1e-06): C1 would lie at infinity
+    geomcon.errors.NotAMechanism: the inverted points B1, B2′, B3′ are (nearly) collinear (R/h_min = 2e+18 ≥ 1e+07): C1 would lie at infinity
     """
     h, short = flatness(P)
+    k = centre_condition(*P)
     if short <= REFUSE_FLAT:
         raise NotAMechanism(f"two of the inverted points {names} coincide (shortest side {short:.3g} of the longest "
-                            f"< {REFUSE_FLAT:g}): {what} is not determined")
-    if h <= REFUSE_FLAT:
-        raise NotAMechanism(f"the inverted points {names} are collinear (relative height {h:.3g} < {REFUSE_FLAT:g}): "
-                            f"{what} would lie at infinity")
-    if h < WARN_FLAT:
-        return [f"the inverted points {names} are nearly collinear (relative height {h:.3g} < {WARN_FLAT:g}): "
-                f"{what} lies far away and is sensitive to drafting errors"]
+                            f"≤ {REFUSE_FLAT:g}): {what} is not determined")
+    if k >= REFUSE_CONDITION:
+        raise NotAMechanism(f"the inverted points {names} are (nearly) collinear (R/h_min = {k:.3g} ≥ "
+                            f"{REFUSE_CONDITION:g}): {what} would lie at infinity")
+    if k >= WARN_CONDITION:
+        return [f"the inverted points {names} are nearly collinear (R/h_min = {k:.4g} ≥ {WARN_CONDITION:g}): "
+                f"{what} moves up to {k:.4g} mm per mm of error in one of them"]
     return []
 
 

@@ -22,8 +22,9 @@ rocker collinear; always true when AB turns fully). ``sens_C1`` is how far C1 mo
 any one given angle and ``sens_C1_mm`` per 0.1 mm of AD or AB: first order, by sliding the centre along the
 fixed bisector when one of the three points moves.
 
-Refusals: two equal angle pairs, inverted points that coincide or lie on a line (relative height of the
-triangle B1B2′B3′ ≤ 1e-6; warned below 0.02), a hinge falling on D.
+Refusals: two equal angle pairs, inverted points that coincide or lie on a line (the
+triangle B1B2′B3′ with R/h_min ≥ 1e7, warned from 100 — the policy of every three-position synthesis), a hinge
+falling on D.
 """
 from __future__ import annotations
 

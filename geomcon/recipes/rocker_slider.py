@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
+from ..analytic.fourbar_drive import REFUSE_CONDITION, WARN_CONDITION
 from ..analytic.function_generation import check_inverted
 from ..analytic.rocker_slider import branch_of_pin, slider_position, three_positions, two_positions
 from ..errors import NotAMechanism
@@ -85,9 +86,21 @@ TWO_ANSWERS = (
     Quantity("sens_E1_mm", "mm", "how far E1 moves per 0.1 mm of error in D, F1, e or s (the largest)"),
 )
 REFUSE_PARALLEL = 1e-6
-WARN_FAR = 12.0
-"""Warn when the pin E1 lies more than this many chords F1F2′ from the chord's midpoint (the three-position
-forms warn at the same distance: a relative height of 0.02 puts the centre about 12 chords away)."""
+"""F2′ within 1e-6 (relative) of F1, or the chord F1F2′ within cos 1e-6 of perpendicular to the guide: the
+pin is not determined (refused with the numbers)."""
+
+
+def pin_condition(far: float, cos_: float) -> float:
+    """How many mm E1 moves per mm of error in F1 or F2′, at worst: moving a chord's end by δ shifts its
+    bisector by δ/2 and turns it by δ/chord, so the meeting point with the guide moves by
+    (1/2 + far)·δ / cos(chord, guide), ``far`` = |E1 − midpoint| / chord. Warned and refused by the policy
+    of every three-position synthesis (:data:`~geomcon.analytic.fourbar_drive.WARN_CONDITION`,
+    :data:`~geomcon.analytic.fourbar_drive.REFUSE_CONDITION`).
+
+    >>> pin_condition(0.0, 1.0), pin_condition(12.0, 0.5)
+    (0.5, 25.0)
+    """
+    return (0.5 + far) / cos_
 
 
 def _u(g: Mapping[str, Any]) -> tuple[float, float]:
@@ -140,9 +153,14 @@ def _validate_two(g: Mapping[str, Any]) -> list[str]:
                             "its bisector runs along the guide and meets it nowhere")
     E1 = two_positions(D, g["psi"], F1, g["e"], g["guide_angle"], g["s"])["E1"]
     far = math.dist(E1, (F1[0] + cx / 2, F1[1] + cy / 2)) / chord
-    if far > WARN_FAR:
-        return [f"the bisector of F1F2′ meets the guide far away ({far:.3g} chords from the chord's midpoint > "
-                f"{WARN_FAR:g}; cos(chord, guide) = {cos_:.3g}): E1 is sensitive to drafting errors"]
+    k = pin_condition(far, cos_)
+    where = f"{far:.3g} chords from the chord's midpoint, cos(chord, guide) = {cos_:.3g}"
+    if k >= REFUSE_CONDITION:
+        raise NotAMechanism(f"the bisector of F1F2′ meets the guide almost at infinity ({where}: E1 moves {k:.3g} mm "
+                            f"per mm ≥ {REFUSE_CONDITION:g}): the pin is not determined")
+    if k >= WARN_CONDITION:
+        return [f"the bisector of F1F2′ meets the guide far away ({where}): E1 moves up to {k:.4g} mm per mm of "
+                f"drafting error (≥ {WARN_CONDITION:g})"]
     return []
 
 

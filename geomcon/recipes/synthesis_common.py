@@ -28,20 +28,13 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping, Sequence
 
-from ..analytic.fourbar_drive import angle_of, assemble, branch_of
+from ..analytic.fourbar_drive import REFUSE_CONDITION, WARN_CONDITION, angle_of, assemble, branch_of
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, Line, Point, RightOf, circle, circle_circle, line_line, midpoint, perpendicular_bisector,
                         point_along, segment, signed_angle)
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import CHECK_REL, REL_TOL, tol
 from .common import add_bar, length, transmission_deg
-
-WARN_CONDITION = 100.0
-"""Warn when R / h_min ≥ 100: a 0.1 mm drafting error of one position may move the pivot by 10 mm or more."""
-
-REFUSE_CONDITION = 1e7
-"""Refuse when R / h_min ≥ 1e7: the pivot is farther than about 1e7 chords away and double precision no
-longer delivers it to the 1e-9 the twin check demands (treated as collinear)."""
 
 DRAFT = 0.1
 """The drafting error the sensitivities are quoted for, mm."""
