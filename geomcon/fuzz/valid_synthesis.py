@@ -14,9 +14,12 @@ double precision, ``ε·M`` for coordinates of magnitude M, or half a unit of th
 data — and the sought point moves by at most ``κ`` times that, where ``κ`` is the conditioning of the
 three points it is the centre of (circumradius over the smallest altitude, computed here from the
 generating linkage), or the conditioning of the bisector's meeting with the guide for two positions.
-Cases at or beyond a recipe's documented refusal limit (R/h_min ≥ 1e7, relative height of the inverted
-triangle ≤ 1e-6, a rigid-coupler spread over 1 %, the chord F1F2′ within 1e-6 of perpendicular to the guide)
-carry ``may_refuse``.
+Cases near or beyond a documented refusal limit carry ``may_refuse``: a condition R/h_min — or, for two
+positions, (1/2 + far)/cos — of :data:`ANSWER_CONDITION_BAND` or more (the recipes refuse at 1e7, the
+solver refuses an answer whose own relative condition passes 1e7, which happens from about 1e5 on), or a
+rigid-coupler spread over 1 %. Drafted data whose rounding, propagated, moves the answers by more than 5 %
+of the linkage's size do not determine the linkage: such a case expects no values (it must still solve
+without exit 1 or be refused with a number).
 
 Examples
 --------
@@ -45,8 +48,12 @@ DRAFT_HALF = 0.5 * 10.0 ** -DRAFT_DECIMALS
 """The largest rounding error of one drafted number."""
 REFUSE_CONDITION = 1e7
 """The recipes refuse three positions with R/h_min at or beyond this (documented in synthesis_common)."""
+ANSWER_CONDITION_BAND = 3e4
+"""From R/h_min ≈ 1e5 on, some answer's own relative condition (the sensitivities are derivatives, and angle
+givens count with their magnitude, up to 1260° here) can pass the solver's limit KAPPA_REFUSE = 1e7
+(:mod:`geomcon.condition`), which refuses the problem with the number: such cases may be refused."""
 REFUSE_FLAT = 1e-6
-"""The inversion recipes refuse an inverted triangle of relative height at or below this."""
+"""The recipes refuse two coincident points: a chord at or below this relative size."""
 
 
 # ----------------------------------------------------------------------------------------- small geometry
@@ -86,13 +93,6 @@ def condition(P1: XY, P2: XY, P3: XY) -> float:
     if area2 == 0.0:
         return math.inf
     return (a * b * c / (2 * area2)) / (area2 / max(a, b, c))
-
-
-def flatness(P1: XY, P2: XY, P3: XY) -> float:
-    """Twice the area over the longest side squared (the inversion recipes' refusal measure)."""
-    L = max(math.dist(P1, P2), math.dist(P2, P3), math.dist(P3, P1))
-    area2 = abs((P2[0] - P1[0]) * (P3[1] - P1[1]) - (P2[1] - P1[1]) * (P3[0] - P1[0]))
-    return area2 / (L * L)
 
 
 @dataclass(frozen=True)
@@ -184,6 +184,12 @@ def _tol(kappa: float, err: float, length: float) -> float:
     return 1e-9 * length + 8.0 * kappa * err
 
 
+def _determined(expect: dict, tol: float, length: float) -> dict:
+    """``expect``, or nothing when the propagated error passes 5 % of the linkage's size (first-order
+    propagation no longer holds: the data do not determine the linkage)."""
+    return expect if tol <= 0.05 * length else {}
+
+
 def gen_three_positions(rng: random.Random) -> ValidCase:
     """``four_bar.three_positions``: a four-bar driven to three positions; expect its pivots and lengths."""
     k, kscale = _scale(rng)
@@ -208,12 +214,12 @@ def gen_three_positions(rng: random.Random) -> ValidCase:
     else:
         errA = errD = 8 * EPS * M
         refuse = False
-    refuse = refuse or max(kA, kD) >= 0.3 * REFUSE_CONDITION
+    refuse = refuse or max(kA, kD) >= ANSWER_CONDITION_BAND
     tA, tD = _tol(kA, errA, L), _tol(kD, errD, L)
     Aw, Dw = f(A), f(D)
     expect = {"A": (Aw, tA), "D": (Dw, tD), "AB": (k * AB, tA + errA), "CD": (k * CD, tD + errD),
               "AD": (k, tA + tD), "BC": (k * BC, 1e-9 * L + 4 * errD)}
-    return ValidCase({"recipe": "four_bar.three_positions", "given": given}, expect,
+    return ValidCase({"recipe": "four_bar.three_positions", "given": given}, _determined(expect, max(tA, tD), L),
                      _kind(kscale, kspread, "drafted data rounded to 4 decimals" if drafted else ""), may_refuse=refuse)
 
 
@@ -244,7 +250,7 @@ def gen_fixed_pivots(rng: random.Random) -> ValidCase:
     kappa = condition(*Dp)
     M = max(abs(c) for p in Bs + Cs + [Aw, Dw] for c in p)
     L = k * max(AB, BC, CD, 1.0)
-    refuse = kappa >= 0.3 * REFUSE_CONDITION
+    refuse = kappa >= ANSWER_CONDITION_BAND
     if drafted:
         h = math.sqrt(2) * DRAFT_HALF
         # D′ moves with D, B1, B_i (h each) and the turn of B_iK_i (h / |BK| rad, or the angle's rounding)
@@ -260,7 +266,7 @@ def gen_fixed_pivots(rng: random.Random) -> ValidCase:
     t = _tol(kappa, err, L)
     expect = {"C1": (Cs[0], t), "BC": (k * BC, t + err), "CD": (k * CD, t + err),
               "AB": (k * AB, 1e-9 * L + 4 * err), "AD": (k, 1e-9 * L + 4 * err)}
-    return ValidCase({"recipe": "four_bar.three_positions_fixed_pivots", "given": given}, expect,
+    return ValidCase({"recipe": "four_bar.three_positions_fixed_pivots", "given": given}, _determined(expect, t, L),
                      _kind(kscale, kspread, "drafted data rounded to 4 decimals" if drafted else "",
                            "" if with_k else "coupler_angles"), may_refuse=refuse)
 
@@ -290,7 +296,7 @@ def gen_function_generation(rng: random.Random) -> ValidCase:
     Bs = [_polar((0.0, 0.0), AB, p) for p in phi]
     P = [Bs[0]] + [_add((1.0, 0.0), _rot(_sub(Bs[i], (1.0, 0.0)), math.radians(psi[0] - psi[i]))) for i in (1, 2)]
     kappa = condition(*P)
-    refuse = flatness(*P) <= 30 * REFUSE_FLAT or kappa >= 0.3 * REFUSE_CONDITION
+    refuse = kappa >= ANSWER_CONDITION_BAND
     L = k * max(AB, BC, CD, 1.0)
     ang = max(abs(v) for v in phi + psi) + 360.0
     # an angle error δ (rad) moves a point by ≤ δ·(|AD| + |AB| + |CD|)
@@ -302,7 +308,7 @@ def gen_function_generation(rng: random.Random) -> ValidCase:
     bt = t / (k * CD)                                     # rad
     expect = {"C1": (C1, t), "BC": (k * BC, 2 * t), "CD": (k * CD, t),
               "beta": (beta, math.degrees(bt) + 1e-9 * 180 + (math.degrees(dang) if drafted else 0.0))}
-    return ValidCase({"recipe": "four_bar.function_generation", "given": given}, expect,
+    return ValidCase({"recipe": "four_bar.function_generation", "given": given}, _determined(expect, t, L),
                      _kind(kscale, kspread, "angles rounded to 4 decimals" if drafted else ""), may_refuse=refuse)
 
 
@@ -371,7 +377,7 @@ def gen_rocker_slider_three(rng: random.Random) -> ValidCase:
     Es = [(x, 0.0) for x in xs]
     P = [Es[0]] + [_add(D, _rot(_sub(Es[i], D), math.radians(psis[0] - psis[i]))) for i in (1, 2)]
     kappa = condition(*P)
-    refuse = flatness(*P) <= 30 * REFUSE_FLAT or kappa >= 0.3 * REFUSE_CONDITION
+    refuse = kappa >= ANSWER_CONDITION_BAND
     L = k * max(DF, EF, math.hypot(*D), 1.0)
     M = max(abs(v) for v in (*Dw, e, *s)) + L
     if drafted:
@@ -382,7 +388,7 @@ def gen_rocker_slider_three(rng: random.Random) -> ValidCase:
     given = {"D": list(Dw), "psi": psi_w, "e": e, "guide_angle": alpha, "s": s}
     expect = {"F1": (f(Fs[0]), t), "DF": (k * DF, t + err), "EF": (k * EF, 2 * t + err),
               "beta": (beta, math.degrees(2 * t / (k * DF)) + 1e-7)}
-    return ValidCase({"recipe": "rocker_slider.three_positions", "given": given}, expect,
+    return ValidCase({"recipe": "rocker_slider.three_positions", "given": given}, _determined(expect, t, L),
                      _kind(kscale, kspread, "drafted data rounded to 4 decimals" if drafted else ""), may_refuse=refuse)
 
 
@@ -403,8 +409,8 @@ def gen_rocker_slider_two(rng: random.Random) -> ValidCase:
     chord = math.dist(Fs[0], F2p)
     cosg = abs(F2p[0] - Fs[0][0]) / chord
     mid = ((Fs[0][0] + F2p[0]) / 2, (Fs[0][1] + F2p[1]) / 2)
-    kappa = (1.0 + math.dist(mid, (xs[0], 0.0)) / chord) / max(cosg, 1e-300)
-    refuse = cosg <= 30 * REFUSE_FLAT or chord <= 30 * REFUSE_FLAT * max(DF, abs(xs[1] - xs[0]))
+    kappa = (0.5 + math.dist(mid, (xs[0], 0.0)) / chord) / max(cosg, 1e-300)
+    refuse = kappa >= ANSWER_CONDITION_BAND or chord <= 30 * REFUSE_FLAT * max(DF, abs(xs[1] - xs[0]))
     L = k * max(DF, EF, math.hypot(*D), 1.0)
     M = max(abs(v) for v in (*Dw, *F1w, e, *s)) + L
     if drafted:
@@ -415,7 +421,7 @@ def gen_rocker_slider_two(rng: random.Random) -> ValidCase:
     given = {"D": list(Dw), "psi": psi_w, "F1": list(F1w), "e": e, "guide_angle": alpha, "s": s}
     expect = {"E1": (f((xs[0], 0.0)), t), "s_E1": (t0 + k * xs[0], t), "EF": (k * EF, t + err),
               "DF": (k * DF, 1e-9 * L + 4 * err)}
-    return ValidCase({"recipe": "rocker_slider.two_positions", "given": given}, expect,
+    return ValidCase({"recipe": "rocker_slider.two_positions", "given": given}, _determined(expect, t, L),
                      _kind(kscale, kspread, "drafted data rounded to 4 decimals" if drafted else ""), may_refuse=refuse)
 
 
