@@ -225,7 +225,7 @@ def test_html_player_is_self_contained_and_has_every_step():
     sc = crank_rocker()
     page = render_html(sc, title="t", info=["θ = 12.5°"])
     urls = re.findall(r"https?://[^\"'\s<>)]+", page)
-    assert set(urls) <= {"http://www.w3.org/2000/svg", "http://www.w3.org/1999/xlink",
+    assert set(urls) <= {"http://www.w3.org/2000/svg", "http://www.w3.org/1999/xlink", "http://www.w3.org/1999/xhtml",
                          "http://www.w3.org/2001/xml-events"}, urls
     assert "<script src" not in page and "<link" not in page and "@import" not in page and "url(" not in page
     for s in sc.visible_steps():

@@ -3,7 +3,8 @@ keyboard arrows, a slider, and the current step's number and caption in English 
 
 The replay is pure CSS: every step group and protocol entry carries ``data-step``; the script only sets
 the classes ``future`` (hidden) and ``current`` (highlighted) by comparing it with the current step. No
-network: no external script, style sheet or font.
+network: no external script, style sheet or font. The page is polyglot markup: it parses as HTML and as XML
+(void elements closed, the script in a CDATA section), so any XML tool can read it.
 
 Examples
 --------
@@ -11,6 +12,9 @@ Examples
 >>> page = render_html(construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene, title="demo")
 >>> page.startswith("<!DOCTYPE html>") and "<script src" not in page and "<link" not in page
 True
+>>> import xml.etree.ElementTree as ET
+>>> ET.fromstring(page).tag
+'{http://www.w3.org/1999/xhtml}html'
 """
 from __future__ import annotations
 
@@ -87,10 +91,10 @@ _SCRIPT = """
 """
 
 _PAGE = """<!DOCTYPE html>
-<html lang="en">
+<html lang="en" xmlns="http://www.w3.org/1999/xhtml">
 <head>
-<meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta charset="utf-8" />
+<meta name="viewport" content="width=device-width, initial-scale=1" />
 <title>%(title)s</title>
 <style>%(css)s</style>
 </head>
@@ -101,14 +105,16 @@ _PAGE = """<!DOCTYPE html>
 <button id="play" type="button" title="play / pause (space)">\u25B6 play</button>
 <button id="next" type="button" title="next step (\u2192)">\u25B6</button>
 <button id="last" type="button" title="last step (End)">\u25B6|</button>
-<input id="slider" type="range" min="1" max="%(n)d" value="%(n)d" aria-label="step">
+<input id="slider" type="range" min="1" max="%(n)d" value="%(n)d" aria-label="step" />
 <span id="count">step %(n)d / %(n)d</span>
 </div>
 <div id="caption"><div class="en" id="cap-en"></div><div class="zh" id="cap-zh"></div></div>
 <div id="drawing">
 %(svg)s
 </div>
-<script>%(script)s</script>
+<script>//<![CDATA[
+%(script)s
+//]]></script>
 </body>
 </html>
 """
@@ -138,7 +144,7 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     """
     svg = render_svg(scene, title=title, info=info)
     svg = svg[svg.index("<svg"):]
-    steps = json.dumps(step_captions(scene), ensure_ascii=False).replace("</", "<\\/")
+    steps = json.dumps(step_captions(scene), ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
                                     for f in FONT_FAMILY.split(",")), "hl": HIGHLIGHT}
     return _PAGE % {"title": html.escape(title or scene.title), "css": css, "n": len(scene.frames()), "svg": svg,
