@@ -54,11 +54,13 @@ from typing import Callable
 import numpy as np
 
 from ..errors import NotAMechanism
-from .oscillating import ArmMotion, Motion, OscillatingCam, levels, segment_motion
-from .program import Program
+from .oscillating import ArmMotion, Motion, levels, piece_grid, pieces, segment_motion
+from .program import Program, Segment
 
 GRID = 2048
 """Grid (per constrained part) that brackets the roots of s″ ∓ tan α·s′ before bisection."""
+GRID_ARM = 240
+"""Grid of positions per smooth piece on which an arm's bounds are bracketed before root refinement."""
 RR_FACTOR = 0.8
 """The textbook's roller rule: rr ≤ 0.8·ρmin of the pitch curve (rr < ρmin avoids undercut; the margin keeps
 the actual profile's smallest radius of curvature ρmin − rr ≥ 0.2·ρmin)."""
@@ -179,20 +181,181 @@ class ArmProgram(ArmMotion):
     arm: str = "left"
 
 
-def _arm_ratio(arm: ArmProgram, L: float, a: float, alpha: float, m: Motion) -> tuple[np.ndarray, np.ndarray]:
-    """(μ, dμ/dδ) with μ = L(1 − εψ′)·cos α / a = cos β."""
-    ca = math.cos(alpha)
-    return L * (1.0 - arm.eps * m.d1) * ca / a, -arm.eps * L * m.d2 * ca / a
+@dataclass(frozen=True)
+class ArmPart:
+    """One constrained part (rise or return) of an arm follower's turn: its segment, ψ (deg) at its start and
+    the allowed pressure angle ``alpha`` (rad)."""
+
+    part: str
+    seg: Segment
+    level: float
+    alpha: float
+    grid: tuple[np.ndarray, Motion]
+
+
+def arm_parts(arm: ArmProgram, lims: list[Limit]) -> list[ArmPart]:
+    """The constrained parts of ``arm``'s program (the first rise, the first return when it has a limit)."""
+    out = []
+    for lim in lims:
+        k = next(i for i, s in enumerate(arm.program.segments) if s.kind == lim.part)
+        seg, level = arm.program.segments[k], levels(arm.program, arm.h)[k]
+        out.append(ArmPart(lim.part, seg, level, math.atan(lim.t), arm_grid(seg, level, arm.h)))
+    return out
+
+
+def part_motion(arm: ArmMotion, part: str, delta_deg: float) -> Motion:
+    """The motion at ``delta_deg`` inside the ``part`` segment (one-sided at its ends)."""
+    k = next(i for i, s in enumerate(arm.program.segments) if s.kind == part)
+    seg = arm.program.segments[k]
+    x = min(max((delta_deg - seg.start) / seg.angle, 0.0), 1.0)
+    return segment_motion(seg, levels(arm.program, arm.h)[k], arm.h, [x])
+
+
+def _fractions(seg: Segment, n: int) -> np.ndarray:
+    """A grid of fractions over every smooth piece of ``seg`` (each piece's right end just inside it)."""
+    return np.concatenate([piece_grid(x0, x1, n) for x0, x1 in pieces(seg)])
+
+
+def _falsi(fn: Callable[[float], float], lo: float, hi: float, flo: float, fhi: float, tol: float) -> float:
+    """A root of ``fn`` in [lo, hi] (fn(lo)·fn(hi) < 0) by regula falsi with the Illinois modification,
+    bisecting when a step leaves the bracket, until the bracket is narrower than ``tol``.
+
+    >>> round(_falsi(lambda x: x * x - 2.0, 0.0, 2.0, -2.0, 2.0, 1e-15), 15)
+    1.414213562373095
+    """
+    side = 0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if hi - lo <= tol or not lo < mid < hi:
+            break
+        c = (lo * fhi - hi * flo) / (fhi - flo)
+        if not lo < c < hi:
+            c = mid
+        fc = fn(c)
+        if fc == 0.0:
+            return c
+        if (fc > 0) == (flo > 0):
+            lo, flo = c, fc
+            if side < 0:
+                fhi *= 0.5
+            side = -1
+        else:
+            hi, fhi = c, fc
+            if side > 0:
+                flo *= 0.5
+            side = 1
+    return 0.5 * (lo + hi)
+
+
+ROOT_TOL = 1e-13
+"""Width (as a fraction of a segment) to which a stationary position is located: the value there is then
+exact to rounding (its error is quadratic), the slopes taken there to about 1e-13."""
+
+
+def stationary_max(seg: Segment, level: float, h: float, g: Callable[[Motion], np.ndarray],
+                   slope: Callable[[Motion], np.ndarray], n: int = GRID_ARM,
+                   grid: tuple[np.ndarray, Motion] | None = None) -> tuple[float, float]:
+    """(max of ``g`` over the segment, the fraction where): the grid, the ends of every smooth piece
+    (one-sided) and the roots of ``slope`` = dg/dδ (per radian) where it turns from + to − between grid
+    points, refined only where the grid values and slopes leave room for a value above the best so far.
+    ``grid`` = (fractions, their motion) may be given precomputed (:func:`arm_grid`)."""
+    xs, m = grid if grid is not None else arm_grid(seg, level, h, n)
+    v, sl = g(m), slope(m)
+    j = int(np.argmax(v))
+    best, where = float(v[j]), float(xs[j])
+    step = math.radians(seg.angle) * (xs[1:] - xs[:-1])
+    room = np.maximum(v[:-1], v[1:]) + step * np.maximum(sl[:-1], -sl[1:])
+    for i in np.nonzero((sl[:-1] > 0) & (sl[1:] < 0) & (step > 0) & ~(room < best))[0]:
+        f = lambda x: float(slope(segment_motion(seg, level, h, [x]))[0])
+        x = _falsi(f, float(xs[i]), float(xs[i + 1]), float(sl[i]), float(sl[i + 1]), ROOT_TOL)
+        val = float(g(segment_motion(seg, level, h, [x]))[0])
+        if val > best:
+            best, where = val, x
+    return best, where
+
+
+def arm_grid(seg: Segment, level: float, h: float, n: int = GRID_ARM) -> tuple[np.ndarray, Motion]:
+    """The fractions of :func:`_fractions` and the motion there (cached by the searches over a)."""
+    xs = _fractions(seg, n)
+    return xs, segment_motion(seg, level, h, xs)
+
+
+def _beta(mu: np.ndarray, dmu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """β = arccos μ and dβ/dδ (a large finite slope where |μ| = 1)."""
+    beta = np.arccos(np.clip(mu, -1.0, 1.0))
+    return beta, -dmu / np.sqrt(np.maximum(1.0 - mu * mu, 1e-300))
+
+
+@dataclass(frozen=True)
+class ArcBounds:
+    """What the wedges leave of the circle of radius ``a`` about A0: arm angles ψ0 (rad, from A0B0 towards
+    O) in [lo, hi]; the position binding ``lo`` (part, δ in degrees) and ∂lo/∂a there."""
+
+    a: float
+    lo: float
+    hi: float
+    part: str
+    delta: float
+    dlo_da: float
+
+    @property
+    def feasible(self) -> bool:
+        """True when the arc is not empty."""
+        return self.lo <= self.hi
+
+
+def arc_bounds(arm: ArmProgram, L: float, a: float, parts: list[ArmPart]) -> ArcBounds:
+    """The admissible arc at centre distance ``a`` (a ≥ :func:`arm_a_min`): at a position with arm angle
+    φ = ψ0 + ψ from A0O, the wedge meets the circle in |β − α| ≤ φ ≤ min(β + α, 2π − β − α), cos β =
+    L(1 − εψ′)·cos α/a; ψ0 is bounded below by the largest |β − α| − ψ and above by the smallest
+    min(β + α, 2π − β − α) − ψ over the constrained positions, each found at a part end or where its
+    derivative in δ changes sign (the exact ψ″)."""
+    eps = arm.eps
+    lo, hi, part, at, slope_a = -math.inf, math.inf, "", 0.0, 0.0
+    for p in parts:
+        al, ca = p.alpha, math.cos(p.alpha)
+
+        def beta(m, al=al, ca=ca):
+            return _beta(L * (1.0 - eps * m.d1) * ca / a, -eps * L * m.d2 * ca / a)
+
+        def g_lo(m, al=al):
+            return np.abs(beta(m)[0] - al) - m.psi
+
+        def s_lo(m, al=al):
+            b, db = beta(m)
+            return np.sign(b - al) * db - m.d1
+
+        def g_hi(m, al=al):
+            b = beta(m)[0]
+            return m.psi - np.minimum(b + al, 2.0 * math.pi - b - al)
+
+        def s_hi(m, al=al):
+            b, db = beta(m)
+            return m.d1 - np.where(b + al < math.pi, db, -db)
+
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            v, x = stationary_max(p.seg, p.level, arm.h, g_lo, s_lo, grid=p.grid)
+            w, _ = stationary_max(p.seg, p.level, arm.h, g_hi, s_hi, grid=p.grid)
+        hi = min(hi, -w)
+        if v > lo:
+            m = segment_motion(p.seg, p.level, arm.h, [x])
+            mu = float(L * (1.0 - eps * m.d1[0]) * ca / a)
+            b = math.acos(min(max(mu, -1.0), 1.0))
+            sb = math.sqrt(max(1.0 - mu * mu, 0.0))
+            d = math.copysign(1.0, b - al) * mu / (a * sb) if sb > 0 else math.copysign(math.inf, mu)
+            lo, part, at, slope_a = v, p.part, p.seg.start + p.seg.angle * x, d
+    return ArcBounds(a, lo, hi, part, at, slope_a)
 
 
 def arm_a_min(arm: ArmProgram, L: float, lims: list[Limit]) -> float:
     """The smallest centre distance for which every wedge reaches the circle of radius a about A0:
     max over the constrained parts of |K A0|·cos α_allow = L·|1 − εψ′|·cos α_allow."""
     out = 0.0
-    for lim in lims:
-        ca = math.cos(math.atan(lim.t))
-        out = max(out, arm.segment_max(lim.part, lambda m: L * np.abs(1.0 - arm.eps * m.d1) * ca,
-                                       lambda m: -np.sign(1.0 - arm.eps * m.d1) * arm.eps * m.d2)[0])
+    for p in arm_parts(arm, lims):
+        ca = math.cos(p.alpha)
+        out = max(out, stationary_max(p.seg, p.level, arm.h, lambda m: L * np.abs(1.0 - arm.eps * m.d1) * ca,
+                                      lambda m: -np.sign(1.0 - arm.eps * m.d1) * arm.eps * m.d2 * L * ca,
+                                      grid=p.grid)[0])
     return out
 
 
@@ -205,69 +368,101 @@ def arm_reach(arm: ArmProgram, L: float, lims: list[Limit], a: float | None) -> 
     return a_min
 
 
-def arm_lower(arm: ArmProgram, L: float, a: float, lim: Limit) -> tuple[float, float, float]:
-    """(the smallest admissible ψ0 (rad) for the part, δ (deg) of the binding position, ∂ψ0/∂a there).
-
-    At a position with arm angle φ = ψ0 + ψ from A0O, α ≤ α_allow ⟺ |β − α_allow| ≤ φ ≤ β + α_allow with
-    cos β = L(1 − εψ′)·cos α_allow / a; so ψ0 ≥ |β − α| − ψ, largest at a part end or where its
-    derivative sign(β − α)·β′ − ψ′ changes sign (bisection on the exact ψ″)."""
-    alpha = math.atan(lim.t)
-
-    def parts(m):
-        mu, dmu = _arm_ratio(arm, L, a, alpha, m)
-        beta = np.arccos(np.clip(mu, -1.0, 1.0))
-        root = np.sqrt(np.maximum(1.0 - mu * mu, 1e-300))
-        return mu, beta, -dmu / root, root
-
-    def g(m):
-        return np.abs(parts(m)[1] - alpha) - m.psi
-
-    def slope(m):
-        _, beta, dbeta, _ = parts(m)
-        return np.sign(beta - alpha) * dbeta - m.d1
-
-    val, at = arm.segment_max(lim.part, g, slope)
-    m = part_motion(arm, lim.part, at)
-    mu, beta, _, root = parts(m)
-    return val, at, float(np.sign(beta[0] - alpha) * mu[0] / (a * root[0]))
+def grad_r0(L: float, b: ArcBounds) -> float:
+    """d(r0²/2)/da along the arc's lower end ψ0 = lo(a): a − L cos ψ0 + aL sin ψ0·∂lo/∂a (the binding
+    position held, the envelope theorem; one-sided at a kink of lo(a))."""
+    return b.a - L * math.cos(b.lo) + b.a * L * math.sin(b.lo) * b.dlo_da
 
 
-def arm_upper_excess(arm: ArmProgram, L: float, a: float, lim: Limit, psi0: float) -> float:
-    """max over the part of ψ0 + ψ − min(β + α, 2π − β − α) (rad): > 0 when some position's upper bound on
-    φ is crossed (the admissible arc at this a is empty)."""
-    alpha = math.atan(lim.t)
-
-    def beta(m):
-        mu, dmu = _arm_ratio(arm, L, a, alpha, m)
-        return np.arccos(np.clip(mu, -1.0, 1.0)), -dmu / np.sqrt(np.maximum(1.0 - mu * mu, 1e-300))
-
-    def g(m):
-        b = beta(m)[0]
-        return psi0 + m.psi - np.minimum(b + alpha, 2 * math.pi - b - alpha)
-
-    def slope(m):
-        b, db = beta(m)
-        return m.d1 - np.where(b + alpha < 2 * math.pi - b - alpha, db, -db)
-
-    return arm.segment_max(lim.part, g, slope)[0]
+SCAN = 121
+"""Centre distances a_min·10^(6k/120), k = 0 … 120, scanned (on the grid of positions) for an admissible one."""
+REACH = 1e6
+"""The farthest centre distance searched, in units of a_min: a region of admissible centres that begins
+farther out (an arm stroke h all but equal to 2α_allow) is refused with these numbers."""
 
 
-def part_motion(arm: ArmMotion, part: str, delta_deg: float) -> Motion:
-    """The motion at ``delta_deg`` inside the ``part`` segment (one-sided at its ends)."""
-    k = next(i for i, s in enumerate(arm.program.segments) if s.kind == part)
-    seg = arm.program.segments[k]
-    x = min(max((delta_deg - seg.start) / seg.angle, 0.0), 1.0)
-    return segment_motion(seg, levels(arm.program, arm.h)[k], arm.h, [x])
+def _grid_widths(arm: ArmProgram, L: float, avals: np.ndarray, parts: list[ArmPart]) -> np.ndarray:
+    """hi(a) − lo(a) on the grid of positions only (no refinement), for many centre distances at once."""
+    lo, hi = np.full(avals.shape, -np.inf), np.full(avals.shape, np.inf)
+    for p in parts:
+        m = p.grid[1]
+        mu = np.clip(L * (1.0 - arm.eps * m.d1)[None, :] * math.cos(p.alpha) / avals[:, None], -1.0, 1.0)
+        b = np.arccos(mu)
+        lo = np.maximum(lo, np.max(np.abs(b - p.alpha) - m.psi, axis=1))
+        hi = np.minimum(hi, np.min(np.minimum(b + p.alpha, 2 * math.pi - b - p.alpha) - m.psi, axis=1))
+    return hi - lo
+
+
+def admissible_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: float) -> float:
+    """A centre distance whose circle meets the admissible region (the intersection of the wedges): the
+    widest arc of a log-spaced scan from a_min to REACH·a_min, refined by golden section between its
+    neighbours when the scan's grid of positions flattered it.
+
+    Raises
+    ------
+    NotAMechanism
+        When no circle up to REACH·a_min meets every wedge: the wedges have no common point there.
+    """
+    avals = a_min * np.logspace(0.0, math.log10(REACH), SCAN)
+    avals[0] = a_min * (1.0 + 1e-9)
+    widths = _grid_widths(arm, L, avals, parts)
+    k = int(np.argmax(widths))
+    width = lambda x: (lambda b: b.hi - b.lo)(arc_bounds(arm, L, x, parts))
+    if width(avals[k]) >= 0:
+        return float(avals[k])
+    lo, hi = avals[max(k - 1, 0)], avals[min(k + 1, SCAN - 1)]
+    inv = (math.sqrt(5.0) - 1.0) / 2.0
+    c, d = hi - inv * (hi - lo), lo + inv * (hi - lo)
+    fc, fd = width(c), width(d)
+    for _ in range(100):
+        if max(fc, fd) >= 0:
+            return c if fc >= fd else d
+        if fc > fd:
+            hi, d, fd = d, c, fc
+            c = hi - inv * (hi - lo)
+            fc = width(c)
+        else:
+            lo, c, fc = c, d, fd
+            d = lo + inv * (hi - lo)
+            fd = width(d)
+        if hi - lo <= 1e-15 * hi:
+            break
+    raise NotAMechanism(
+        f"no centre keeps the pressure angle within the limit: at every centre distance from a_min = {a_min:.6g} mm "
+        f"to {REACH:g}·a_min the wedges of the positions leave no common point (closest at a = {avals[k]:.6g} mm, "
+        f"a gap of {math.degrees(-max(fc, fd, widths[k])):.4g}°; an arm stroke h = {arm.h:g}° needs "
+        f"α_allow ≥ about h/2 for far centres)")
+
+
+def best_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: float) -> float:
+    """The centre distance of the smallest base circle: bisection on the sign of d(r0²)/da along the lower
+    end of the admissible arc. The distances whose circle meets the (convex) admissible region form an
+    interval, and r0 is unimodal on it (its sublevel sets are convex); a distance whose circle misses the
+    region counts as negative below an admissible one (:func:`admissible_distance`) and positive above it,
+    so the bisection ends at the smooth minimum, at a kink (two positions binding) or at the region's
+    nearest or farthest distance from A0."""
+    a_f = admissible_distance(arm, L, parts, a_min)
+
+    def sign(x: float) -> float:
+        b = arc_bounds(arm, L, x, parts)
+        if not b.feasible:
+            return -1.0 if x < a_f else 1.0
+        return grad_r0(L, b)
+
+    lo, hi = a_min * (1.0 + 1e-12), a_f
+    if sign(lo) >= 0:
+        return lo
+    for _ in range(2000):
+        if sign(hi) > 0:
+            break
+        lo, hi = hi, 2.0 * hi
+    return bisect_root(sign, lo, hi)
 
 
 def arm_psi0(arm: ArmProgram, L: float, a: float, lims: list[Limit]) -> tuple[float, str, float, float]:
     """(ψ0 (rad), part, δ (deg), ∂ψ0/∂a) of the smallest admissible arm angle at centre distance ``a``."""
-    best = (-math.inf, "", 0.0, 0.0)
-    for lim in lims:
-        val, at, slope = arm_lower(arm, L, a, lim)
-        if val > best[0]:
-            best = (val, lim.part, at, slope)
-    return best
+    b = arc_bounds(arm, L, a, arm_parts(arm, lims))
+    return b.lo, b.part, b.delta, b.dlo_da
 
 
 def arm_best(program: Program, h: float, L: float, *, alpha_allow: float, rotation: str = "ccw", arm: str = "left",
@@ -275,9 +470,8 @@ def arm_best(program: Program, h: float, L: float, *, alpha_allow: float, rotati
     """The smallest base circle r0 = OB0 of an oscillating roller/knife follower with arm length ``L`` (the
     wedge route, used by the construction): ``r0``, ``a``, ``psi0`` (deg) and the binding position.
 
-    With ``a`` given, the smallest r0 at that centre distance: r0² = a² + L² − 2aL·cos ψ0 grows with ψ0, so
-    ψ0 is the largest lower bound (:func:`arm_lower`). With ``a`` free, r0(a) is minimised by bisection on
-    the sign of d(r0²/2)/da = a − L cos ψ0 + aL sin ψ0·∂ψ0/∂a (one-sided at a kink).
+    With ``a`` given, the smallest r0 at that centre distance: r0² = a² + L² − 2aL cos ψ0 grows with ψ0, so
+    ψ0 is the lower end of the admissible arc (:func:`arc_bounds`). With ``a`` free, :func:`best_distance`.
 
     Examples
     --------
@@ -294,147 +488,230 @@ def arm_best(program: Program, h: float, L: float, *, alpha_allow: float, rotati
     """
     motion = ArmProgram(h, program, rotation, arm)
     lims = limits(program, alpha_allow, alpha_allow_return)
+    parts = arm_parts(motion, lims)
     a_min = arm_reach(motion, L, lims, a)
     if a is None:
-        def grad(x: float) -> float:
-            psi0, _, _, slope = arm_psi0(motion, L, x, lims)
-            return x - L * math.cos(psi0) + x * L * math.sin(psi0) * slope
-        lo = a_min * (1.0 + 1e-12) + 1e-300
-        hi = max(2.0 * a_min, L)
-        while grad(hi) < 0:
-            hi *= 2.0
-        a = lo if grad(lo) >= 0 else bisect_root(grad, lo, hi)
-    psi0, part, at, _ = arm_psi0(motion, L, a, lims)
+        a = best_distance(motion, L, parts, a_min)
+    b = arc_bounds(motion, L, a, parts)
+    if not b.feasible:
+        raise NotAMechanism(f"at a = {a:.6g} mm no arm angle ψ0 keeps α within the limit at every position: the "
+                            f"wedges leave ψ0 ≥ {math.degrees(b.lo):.6g}° and ψ0 ≤ {math.degrees(b.hi):.6g}°")
+    psi0 = b.lo
     if not psi0 > 1e-9:
         raise NotAMechanism(f"the best centre puts O on the arm's line A0B0 (ψ0 = {math.degrees(psi0):.6g}°, "
                             f"a = {a:.6g} mm): no proper cam")
-    if math.degrees(psi0) + h >= 180.0:
-        raise NotAMechanism(f"ψ0 + h = {math.degrees(psi0):.6g}° + {h:g}° ≥ 180° at a = {a:.6g} mm: the arm would "
-                            "swing through the line A0O")
-    for lim in lims:
-        over = arm_upper_excess(motion, L, a, lim, psi0)
-        if over > 1e-12:
-            raise NotAMechanism(f"at a = {a:.6g} mm no arm angle ψ0 satisfies every position of the {lim.part}: "
-                                f"its upper bound is crossed by {math.degrees(over):.4g}°")
-    r0 = math.sqrt(max((a - L) ** 2 + 4.0 * a * L * math.sin(psi0 / 2) ** 2, 0.0))
-    return {"r0": r0, "a": a, "psi0": math.degrees(psi0), "part": part, "delta": at}
+    r0 = math.sqrt((a - L) ** 2 + 4.0 * a * L * math.sin(psi0 / 2) ** 2)
+    return {"r0": r0, "a": a, "psi0": math.degrees(psi0), "part": b.part, "delta": b.delta}
 
 
 # ---------------------------------------------------------------------------- the oscillating twin
-def _illinois(f: Callable[[float], float], lo: float, flo: float, hi: float, fhi: float) -> float:
-    """The point where ``f`` turns from > 0 (at lo) to ≤ 0 (at hi), by regula falsi with the Illinois
-    modification to the last bits; returns the ≤ 0 side."""
-    side = 0
-    for _ in range(300):
-        c = (lo * fhi - hi * flo) / (fhi - flo)
-        if not min(lo, hi) < c < max(lo, hi):
-            c = 0.5 * (lo + hi)
-            if not min(lo, hi) < c < max(lo, hi):
-                break
-        fc = f(c)
-        if fc > 0:
-            lo, flo = c, fc
-            if side < 0:
-                fhi *= 0.5
-            side = -1
-        else:
-            hi, fhi = c, fc
-            if side > 0:
-                flo *= 0.5
-            side = 1
-        if abs(hi - lo) <= 4e-16 * abs(hi):
-            break
-    return hi
+TWIN_GRID = 128
+"""The twin's grid of positions per smooth piece; its local extrema are refined by golden section."""
+GOLDEN_STEPS = 44
+"""Golden-section steps refining a peak between two grid neighbours: 0.618^44 ≈ 6e-10 of the bracket, so the
+peak's value is exact to rounding (its error is quadratic) and its place to about 1e-11 of the part."""
+TWIN_SCAN = 128
+"""Arm angles ψ0 scanned by the twin (rays from A0) for one whose ray meets the admissible region."""
+_INV = (math.sqrt(5.0) - 1.0) / 2.0
 
 
-STEP = 0.02
-"""The twin's largest step (rad) in ψ0 while it looks for an admissible arm angle: the admissible interval of
-ψ0 at a centre distance is assumed wider than this (about 1.1°)."""
+def _golden_tops(fn: Callable[[np.ndarray], np.ndarray], xs: np.ndarray, grid: np.ndarray) -> list[tuple[float, float]]:
+    """For each row k of ``grid`` (the values of function k at ``xs``), (its largest value, where): the grid
+    maximum, with every interior local maximum that could exceed it refined by golden-section search
+    between its neighbours (all rows and peaks at once, :data:`GOLDEN_STEPS` steps). ``fn(z)`` returns
+    every row's values at the points z.
+
+    >>> xs = np.linspace(0.0, 3.0, 7)
+    >>> [(round(v, 12), round(x, 6)) for v, x in _golden_tops(lambda z: np.array([np.sin(z), -np.cos(z)]), xs,
+    ...                                                      np.array([np.sin(xs), -np.cos(xs)]))]
+    [(1.0, 1.570796), (0.9899924966, 3.0)]
+    """
+    out, rows, lo, hi = [], [], [], []
+    for k, v in enumerate(grid):
+        best = int(np.argmax(v))
+        out.append((float(v[best]), float(xs[best])))
+        mid = v[1:-1]
+        with np.errstate(invalid="ignore"):
+            room = mid + 2.0 * (mid - np.minimum(v[:-2], v[2:]))   # a smooth peak exceeds its grid value by ≤ ⅓ of it
+        i = np.nonzero((mid >= v[:-2]) & (mid >= v[2:]) & (xs[2:] > xs[:-2]) & ~(room < out[k][0]))[0] + 1
+        rows += [k] * i.size
+        lo.append(xs[i - 1])
+        hi.append(xs[i + 1])
+    if not rows:
+        return out
+    rows = np.array(rows)
+    pick = lambda z: fn(z)[rows, np.arange(rows.size)]
+    lo, hi = np.concatenate(lo), np.concatenate(hi)
+    c, d = hi - _INV * (hi - lo), lo + _INV * (hi - lo)
+    fc, fd = pick(c), pick(d)
+    for _ in range(GOLDEN_STEPS):
+        left = fc > fd                                          # the maximum lies in [lo, d]
+        hi, lo = np.where(left, d, hi), np.where(left, lo, c)
+        c, d = np.where(left, hi - _INV * (hi - lo), d), np.where(left, c, lo + _INV * (hi - lo))
+        f_new = pick(np.where(left, c, d))
+        fc, fd = np.where(left, f_new, fd), np.where(left, fc, f_new)
+    for x, f in ((c, fc), (d, fd)):
+        for j in range(rows.size):
+            if f[j] > out[rows[j]][0]:
+                out[rows[j]] = (float(f[j]), float(x[j]))
+    return out
 
 
 class ArmTwin:
-    """The twin of :func:`arm_best`: for a candidate centre (a, ψ0) the largest pressure angles of the rise
-    (and the return) by :meth:`OscillatingCam.worst_pressure` (its complex-tangent route, roots of dα/dδ);
-    ψ0(a) is where the largest excess over the allowance turns ≤ 0 (regula falsi), and with a free the
-    optimum is where d(r0²)/da changes sign (bisection), dψ0/da = c·sin φ / (a(a − c cos φ)) at the binding
-    position (c = L(1 − εψ′), by implicit differentiation of tan α = (c − a cos φ)/(a sin φ))."""
+    """The twin of :func:`arm_best`, written from the pressure-angle formula alone (no wedges, no circles
+    about A0): tan α = |c − a cos φ|/(a sin φ) with c = L(1 − εψ′) and φ = ψ0 + ψ.
+
+    With ``a`` free it walks rays from A0: on the ray at arm angle ψ0 the condition α ≤ α_allow is linear in
+    the distance a, a·(cos φ + tan α_allow·sin φ) ≥ c and a·(cos φ − tan α_allow·sin φ) ≤ c, so each
+    position admits an interval of a and the ray meets the admissible region in [a_in(ψ0), a_out(ψ0)]
+    (extremes over the positions on a grid refined by golden section). The nearest point of the ray to B0
+    is a = clip(L cos ψ0, a_in, a_out), and ψ0 is found by bisection on the sign of d(r0²)/dψ0 (the
+    binding position held), rays that miss the region counting as negative before an admissible ray
+    (found by a scan of ψ0) and positive after it.
+
+    With ``a`` given it minimises the largest excess α − α_allow over ψ0 by golden section (the excess is
+    unimodal in ψ0: its sublevel sets are arcs of one circle in a convex region) and then finds the smallest
+    admissible ψ0 by bisection on the sign of the excess."""
 
     def __init__(self, program: Program, h: float, L: float, *, alpha_allow: float, rotation: str = "ccw",
                  arm: str = "left", alpha_allow_return: float | None = None) -> None:
-        self.program, self.h, self.L, self.rotation, self.arm = program, h, L, rotation, arm
-        self.allow = {"rise": alpha_allow}
+        self.h, self.L = h, L
+        self.motion = ArmProgram(h, program, rotation, arm)
+        allow = {"rise": alpha_allow}
         if alpha_allow_return is not None and program.ret is not None:
-            self.allow["return"] = alpha_allow_return
-        self.hint: float | None = None          # the last ψ0 found, where the next search starts
-        self.moved = STEP                        # how far it moved from the one before
-        self.too_near = 0.0                      # the largest centre distance found inadmissible
+            allow["return"] = alpha_allow_return
+        self.parts = []
+        for part, value in allow.items():
+            k = next(i for i, s in enumerate(program.segments) if s.kind == part)
+            seg = program.segments[k]
+            xs = np.concatenate([piece_grid(x0, x1, TWIN_GRID) for x0, x1 in pieces(seg)])
+            level = levels(program, h)[k]
+            self.parts.append((part, seg, level, math.tan(math.radians(value)), xs, self._mot(seg, level, xs)))
 
-    def cam(self, a: float, psi0: float) -> OscillatingCam:
-        """The cam with centre distance a and initial arm angle ψ0 (rad)."""
-        r0 = math.sqrt((a - self.L) ** 2 + 4.0 * a * self.L * math.sin(psi0 / 2) ** 2)
-        return OscillatingCam(a, self.L, r0, self.h, self.program, self.rotation, self.arm)
+    def _mot(self, seg: Segment, level: float, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(ψ, c = L(1 − εψ′)) at fractions x of a segment."""
+        m = segment_motion(seg, level, self.h, x)
+        return m.psi, self.L * (1.0 - self.motion.eps * m.d1)
 
-    def excess(self, a: float, psi0: float) -> tuple[float, str, float]:
-        """(largest α_max − α_allow (deg) over the constrained parts, its part, its δ (deg))."""
-        cam = self.cam(a, psi0)
-        worst = {p: cam.worst_pressure(p, route="arg") for p in self.allow}
-        return max((worst[p][0] - v, p, worst[p][1]) for p, v in self.allow.items())
+    @staticmethod
+    def _ray(theta: float, t: float, psi: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(lowest, highest) admissible distance along the ray at ψ0 = θ for positions (ψ, c): from
+        a·p ≥ c and a·q ≤ c with p = cos φ + t sin φ, q = cos φ − t sin φ (±inf where no distance or every
+        distance passes)."""
+        phi = theta + psi
+        cs, sn = np.cos(phi), np.sin(phi)
+        p, q = cs + t * sn, cs - t * sn
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rp, rq = c / p, c / q
+        inf = np.inf
+        low = np.maximum(np.where(p > 0, rp, np.where(c > 0, inf, -inf)),
+                         np.where(q < 0, rq, np.where(c < 0, np.where(q > 0, -inf, inf), -inf)))
+        high = np.minimum(np.where(p < 0, rp, inf), np.where(q > 0, rq, inf))
+        return low, high
 
-    def psi0_at(self, a: float) -> float | None:
-        """The smallest admissible ψ0 (rad) at centre distance a; None when no ψ0 < π − h is admissible."""
-        f = lambda p: self.excess(a, p)[0]
+    def ray(self, theta: float) -> tuple[float, float, tuple]:
+        """(a_in, a_out, (part index, fraction) of the position binding a_in) on the ray at ψ0 = θ."""
+        a_in, a_out, bind = 0.0, math.inf, None
+        for k, (_, seg, level, t, xs, grid) in enumerate(self.parts):
+            def both(z, seg=seg, level=level, t=t):
+                low, high = self._ray(theta, t, *self._mot(seg, level, z))
+                return np.array([low, -high])
+            (v, x), (w, _) = _golden_tops(both, xs, np.array(self._ray(theta, t, *grid)) * [[1.0], [-1.0]])
+            if v > a_in:
+                a_in, bind = v, (k, x)
+            a_out = min(a_out, -w)
+        return a_in, a_out, bind
+
+    def _d_in(self, theta: float, bind: tuple) -> float:
+        """∂a_in/∂ψ0 with the binding position held: −c·p′/p² (or with q)."""
+        _, seg, level, t, _, _ = self.parts[bind[0]]
+        psi, c = self._mot(seg, level, np.array([bind[1]]))
+        phi, c = theta + float(psi[0]), float(c[0])
+        p, q = math.cos(phi) + t * math.sin(phi), math.cos(phi) - t * math.sin(phi)
+        if p > 0 and (q >= 0 or c / p >= c / q):
+            return -c * (-math.sin(phi) + t * math.cos(phi)) / (p * p)
+        return -c * (-math.sin(phi) - t * math.cos(phi)) / (q * q)
+
+    def _best_free(self) -> tuple[float, float]:
         top = math.pi - math.radians(self.h)
-        w = STEP if self.hint is None else min(max(2.0 * self.moved, 1e-14 * self.hint, 1e-300), STEP)
-        lo = 1e-9 if self.hint is None else self.hint - w
-        flo = f(lo)
-        while flo <= 0 and lo > 1e-9:
-            w = min(4.0 * w, STEP)
-            lo = max(lo - w, 1e-9)
-            flo = f(lo)
-        if flo <= 0:
-            return None
-        hi = lo
-        while True:
-            hi = min(hi + w, top)
-            fhi = f(hi)
-            if fhi <= 0:
+        thetas = np.linspace(0.0, top, TWIN_SCAN + 2)[1:-1]
+        score = []
+        for th in thetas:
+            a_in, a_out = 0.0, math.inf
+            for _, seg, level, t, xs, grid in self.parts:
+                low, high = self._ray(th, t, *grid)
+                a_in, a_out = max(a_in, float(np.max(low))), min(a_out, float(np.min(high)))
+            score.append(-math.inf if a_in == math.inf else math.inf if a_out == math.inf else
+                         (a_out - a_in) / max(a_in, 1e-300))
+        order = np.argsort(-np.array(score), kind="stable")
+        seed = None
+        for k in order[:8]:
+            a_in, a_out, _ = self.ray(float(thetas[k]))
+            if a_in <= a_out:
+                seed = float(thetas[k])
                 break
-            if hi >= top:
-                return None
-            lo, flo, w = hi, fhi, min(4.0 * w, STEP)
-        psi0 = _illinois(f, lo, flo, hi, fhi)
-        self.moved = abs(psi0 - self.hint) if self.hint is not None else STEP
-        self.hint = psi0
-        return psi0
+        if seed is None:
+            raise NotAMechanism("no cam centre keeps the pressure angle within the limit (no ray from the arm's "
+                                "pivot meets every position's admissible region)")
 
-    def grad(self, a: float) -> float:
-        """The sign-carrying d(r0²/2)/da; −1 where no centre at distance a is admissible (a too small: the
-        admissible distances from A0 are those of a convex region beyond ``too_near``)."""
-        if a <= self.too_near:
-            return -1.0
-        psi0 = self.psi0_at(a)
-        if psi0 is None:
-            self.too_near = a
-            return -1.0
-        _, part, at = self.excess(a, psi0)
-        m = part_motion(self.cam(a, psi0), part, at)
-        c, phi = self.L * (1.0 - self.cam(a, psi0).eps * float(m.d1[0])), psi0 + float(m.psi[0])
-        dpsi = c * math.sin(phi) / (a * (a - c * math.cos(phi)))
-        return a - self.L * math.cos(psi0) + a * self.L * math.sin(psi0) * dpsi
+        def sign(th: float) -> float:
+            if th <= 0.0:
+                return -1.0
+            if th >= top:
+                return 1.0
+            a_in, a_out, bind = self.ray(th)
+            if a_in > a_out:
+                return -1.0 if th < seed else 1.0
+            a = min(max(self.L * math.cos(th), a_in), a_out)
+            slope = self._d_in(th, bind) if a == a_in and bind is not None else 0.0
+            if a == a_out and a != a_in:
+                return 1.0 if a * self.L * math.sin(th) > 0 else -1.0   # the far end only grows r0 (rare)
+            return (a - self.L * math.cos(th)) * slope + a * self.L * math.sin(th)
+
+        theta = bisect_root(sign, 0.0, top)
+        a_in, a_out, _ = self.ray(theta)
+        return min(max(self.L * math.cos(theta), a_in), a_out), theta
+
+    def excess(self, a: float, theta: float) -> float:
+        """The largest α − α_allow (rad) over the constrained positions for the centre (a, ψ0 = θ)."""
+        worst = -math.inf
+        for _, seg, level, t, xs, grid in self.parts:
+            allow = math.atan(t)
+
+            def alpha(z, psi_c=None, seg=seg, level=level):
+                psi, c = psi_c if psi_c is not None else self._mot(seg, level, z)
+                phi = theta + psi
+                return np.arctan2(np.abs(c - a * np.cos(phi)), a * np.sin(phi))[None, :] - allow
+            worst = max(worst, _golden_tops(alpha, xs, alpha(xs, grid))[0][0])
+        return worst
+
+    def _psi0_at(self, a: float) -> float:
+        top = math.pi - math.radians(self.h)
+        f = lambda th: self.excess(a, th)
+        lo, hi = 0.0, top
+        c, d = hi - _INV * (hi - lo), lo + _INV * (hi - lo)
+        fc, fd = f(c), f(d)
+        for _ in range(120):
+            if min(fc, fd) <= 0:
+                break
+            if fc < fd:
+                hi, d, fd = d, c, fc
+                c = hi - _INV * (hi - lo)
+                fc = f(c)
+            else:
+                lo, c, fc = c, d, fd
+                d = lo + _INV * (hi - lo)
+                fd = f(d)
+        if min(fc, fd) > 0:
+            raise NotAMechanism(f"a = {a:g} mm: no arm angle keeps the pressure angle within the limit")
+        seed = c if fc <= 0 else d
+        return bisect_root(lambda th: -1.0 if th <= 0 else (1.0 if f(th) <= 0 else -1.0), 0.0, seed)
 
     def best(self, a: float | None = None) -> dict[str, float]:
         """``r0``, ``a``, ``psi0`` (deg) of the smallest base circle (at the given a, or the best a)."""
         if a is None:
-            lo = hi = self.L
-            if self.grad(hi) < 0:
-                while self.grad(hi) < 0:
-                    lo, hi = hi, 1.5 * hi
-            else:
-                while self.grad(lo) >= 0:
-                    lo, hi = 0.75 * lo, lo
-            a = bisect_root(self.grad, lo, hi)
-        psi0 = self.psi0_at(a)
-        if psi0 is None:
-            raise NotAMechanism(f"a = {a:g} mm: no arm angle keeps the pressure angle within the limit")
+            a, psi0 = self._best_free()
+        else:
+            psi0 = self._psi0_at(a)
         r0 = math.sqrt((a - self.L) ** 2 + 4.0 * a * self.L * math.sin(psi0 / 2) ** 2)
         return {"r0": r0, "a": a, "psi0": math.degrees(psi0)}
