@@ -335,6 +335,11 @@ def crank_rocker_design(rng: random.Random) -> ValidCase:
             given["H_out"] = H_out
             exp["DE"] = H_out / (2 * math.sin(math.radians(psi) / 2))
             units["DE"] = H_out
+    if kind == "near-degenerate: Grashof boundary":
+        # the generating linkage has an extreme position on its frame line (a dead point): by the validity rule
+        # it is not a design (the positions must lie strictly on one side of AD), and the problem may have no
+        # other solution or one too ill-conditioned to check; a clean refusal is acceptable
+        return ValidCase({"recipe": "crank_rocker.design_by_K", "given": given}, {}, kind, may_refuse=True)
     return ValidCase({"recipe": "crank_rocker.design_by_K", "given": given}, _expect(exp, units, rel), kind)
 
 
