@@ -8,8 +8,8 @@ condition from the twin and judges the row again at
 
     tol = CHECK_REL × max(scale, Σ_i |∂a/∂g_i| · u_i),
 
-where ``u_i`` is the magnitude of given ``i`` (lengths and point coordinates: the problem's length scale for
-coordinates; angles: at least 1°), and the partial derivatives are central differences of the twin at relative
+where ``u_i`` is the size of given ``i`` (a length or ratio: its magnitude; a point coordinate: the problem's
+length scale; an angle: one radian, whatever turn it is written in), and the partial derivatives are central differences of the twin at relative
 steps of :data:`STEP`. For a well-conditioned answer the sum is about ``|a|`` and nothing changes; when it is
 κ times larger the answer is allowed κ times the error, exactly as forward error ≤ condition × backward error.
 An answer whose condition exceeds :data:`KAPPA_REFUSE` is not worth checking: the problem is refused with the
@@ -32,12 +32,18 @@ from typing import Any, Callable, Mapping, Sequence
 
 from .errors import GeomconError
 
-STEP = 1e-6
-"""Relative step of the central differences (truncation O(STEP²), rounding O(ε/STEP) = 2e-10)."""
+STEPS = (1e-6, 1e-9, 1e-12)
+"""Relative steps of the differences, tried in turn where a side leaves the domain (truncation O(h²),
+rounding O(ε/h) ≤ 2e-4 of the derivative even at the smallest)."""
+
+STEP = STEPS[0]
 
 KAPPA_REFUSE = 1e7
 """An answer more than this many times as sensitive as its own size (relative condition) is refused: the
 data determine it to worse than CHECK_REL × 1e7 = 1 %."""
+
+DEGREE_SIZE = 180.0 / math.pi
+"""The size of every angle given: one radian (−295° and 65° are the same direction, equally well known)."""
 
 Twin = Callable[[Mapping[str, Any]], Sequence[Mapping[str, Any]]]
 
@@ -47,13 +53,13 @@ def _magnitude(unit: str, value: float, length_scale: float) -> float:
     if unit == "point":
         return length_scale
     if unit.removesuffix("[]") == "deg":
-        return max(abs(value), 1.0)
+        return DEGREE_SIZE
     return abs(value)
 
 
 def _variations(given: Mapping[str, Any], units: Mapping[str, str], length_scale: float):
-    """Yield ``(u, plus, minus)`` for every number in the givens: the magnitude and the givens with that number
-    moved by ± STEP·u (numbers of size 0 are exact and skipped)."""
+    """Yield ``(u, moved)`` for every number in the givens: its size and ``moved(d)``, the givens with that
+    number moved by ``d`` (numbers of size 0 are exact and skipped)."""
     for name, unit in units.items():
         value = given.get(name)
         if value is None or unit in ("bool", "choice", "table[]") or isinstance(value, (bool, str)):
@@ -62,12 +68,37 @@ def _variations(given: Mapping[str, Any], units: Mapping[str, str], length_scale
             for i, x in enumerate(value):
                 u = _magnitude(unit, float(x), length_scale)
                 if u > 0:
-                    yield u, *({**given, name: tuple(v + s * STEP * u if j == i else v for j, v in enumerate(value))}
-                               for s in (1.0, -1.0))
+                    yield u, (lambda d, name=name, i=i, value=value:
+                              {**given, name: tuple(v + d if j == i else v for j, v in enumerate(value))})
         else:
             u = _magnitude(unit, float(value), length_scale)
             if u > 0:
-                yield u, *({**given, name: value + s * STEP * u} for s in (1.0, -1.0))
+                yield u, (lambda d, name=name, value=value: {**given, name: value + d})
+
+
+def derivative(f: Callable[[float], float | None], u: float) -> float | None:
+    """``|f′(0)|·u`` by central differences at the first of the relative steps :data:`STEPS` at which both
+    sides evaluate (near the edge of the domain a smaller step stays inside), else one-sided at the largest
+    step with one side; None when nothing evaluates.
+
+    Examples
+    --------
+    >>> derivative(lambda d: 3.0 * d, 2.0)
+    6.0
+    >>> round(derivative(lambda d: (1e-7 - d) ** 0.5 if d < 1e-7 else None, 1.0))   # the 1e-6 step leaves it
+    1581
+    """
+    one_sided: tuple[float, float] | None = None
+    for h in STEPS:
+        p, m = f(h * u), f(-h * u)
+        if p is not None and m is not None:
+            return abs(p - m) / (2 * h)
+        if one_sided is None and (p is not None or m is not None):
+            one_sided = (h, p if p is not None else m)
+    if one_sided is None:
+        return None
+    f0 = f(0.0)
+    return None if f0 is None else abs(one_sided[1] - f0) / one_sided[0]
 
 
 def _scalars(sol: Mapping[str, Any]) -> dict[str, float]:
@@ -121,24 +152,29 @@ def sensitivities(twin: Twin, given: Mapping[str, Any], units: Mapping[str, str]
     """
     base = _safe(twin, given) or []
     sums = [dict.fromkeys(s, 0.0) for s in base]
-    for u, plus, minus in _variations(given, units, length_scale):
-        hp, hm = _safe(twin, plus), _safe(twin, minus)
+    for u, moved in _variations(given, units, length_scale):
+        cache: dict[float, list[dict[str, float]] | None] = {0.0: base}
+
+        def at(d: float) -> list[dict[str, float]] | None:
+            if d not in cache:
+                cache[d] = _safe(twin, moved(d))
+            return cache[d]
+
         for i, b in enumerate(base):
-            p = _nearest(b, hp) if hp else None
-            m = _nearest(b, hm) if hm else None
-            for k, v in b.items():
-                if p is not None and m is not None and k in p and k in m:
-                    d = abs(p[k] - m[k]) / (2 * STEP * u)
-                elif p is not None and k in p:
-                    d = abs(p[k] - v) / (STEP * u)
-                elif m is not None and k in m:
-                    d = abs(m[k] - v) / (STEP * u)
-                else:
+            for k in b:
+                def f(d: float, b=b, k=k) -> float | None:
+                    sols = at(d)
+                    if not sols:
+                        return None
+                    near = _nearest(b, sols)
+                    return near.get(k)
+                dk = derivative(f, u)
+                if dk is None:
                     continue
-                if k in yes_no and d > 0:
+                if k in yes_no and dk > 0:
                     sums[i][k] = math.inf          # a yes/no that flips within the step: undecidable here
                 else:
-                    sums[i][k] += d * u
+                    sums[i][k] += dk
     return sums
 
 
@@ -148,9 +184,9 @@ def solution_count_stable(twin: Twin, given: Mapping[str, Any], units: Mapping[s
     changes within the step means a candidate lies on the boundary of validity)."""
     base = _safe(twin, given)
     n = len(base) if base is not None else -1
-    for _, plus, minus in _variations(given, units, length_scale):
-        for g in (plus, minus):
-            h = _safe(twin, g)
+    for u, moved in _variations(given, units, length_scale):
+        for d in (STEP * u, -STEP * u):
+            h = _safe(twin, moved(d))
             if h is not None and len(h) != n:
                 return False
     return True

@@ -98,8 +98,12 @@ def _number(value: Any, where: str) -> float:
 
 
 def _in_range(unit: str, x: float, where: str) -> float:
-    """Refuse a number outside its unit's range (:data:`RANGES`), naming the limit."""
-    lo, hi = RANGES.get(unit.removesuffix("[]"), RANGES[""])
+    """Refuse a number outside its unit's range (:data:`RANGES`), naming the limit. Coordinates and list
+    elements (positions along a guide…) have no smallest size: 0.0000001 mm from the origin is a place, not a
+    length."""
+    lo, hi = RANGES.get(unit.removesuffix("[]"), RANGES["mm"] if unit == "point" else RANGES[""])
+    if unit.endswith("[]") or unit == "point":
+        lo = 0.0
     if abs(x) > hi:
         raise ProblemError(f"{where} = {x:g} is out of range: |{unit or 'value'}| ≤ {hi:g}"
                            if unit else f"{where} = {x:g} is out of range: |value| ≤ {hi:g}")
@@ -153,7 +157,8 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def _length_span(recipe: Recipe, given: Mapping[str, Any]) -> None:
-    """Refuse given lengths more than :data:`LENGTH_SPAN` apart (the smaller one would be lost in rounding)."""
+    """Refuse given lengths more than :data:`LENGTH_SPAN` apart (the smaller one would be lost in rounding);
+    coordinates and positions are not lengths and take no part."""
     lengths: list[tuple[float, str]] = []
     for q in recipe.givens:
         v = given.get(q.name)
@@ -161,8 +166,6 @@ def _length_span(recipe: Recipe, given: Mapping[str, Any]) -> None:
             continue
         if q.unit == "mm":
             lengths.append((abs(v), q.name))
-        elif q.unit == "mm[]":
-            lengths += [(abs(x), f"{q.name}[{i}]") for i, x in enumerate(v)]
     nonzero = [t for t in lengths if t[0] > 0]
     if not nonzero:
         return
@@ -189,8 +192,8 @@ def _point(value: Any, where: str) -> tuple[float, float]:
     """``[x, y]`` in mm."""
     if not isinstance(value, list) or len(value) != 2:
         raise ProblemError(f"{where} must be a point [x, y], got {_short(value)}")
-    return (_in_range("mm", _number(value[0], f"{where}[0]"), f"{where}[0]"),
-            _in_range("mm", _number(value[1], f"{where}[1]"), f"{where}[1]"))
+    return (_in_range("point", _number(value[0], f"{where}[0]"), f"{where}[0]"),
+            _in_range("point", _number(value[1], f"{where}[1]"), f"{where}[1]"))
 
 
 def _tables(value: Any, where: str) -> tuple[dict[str, Any], ...]:

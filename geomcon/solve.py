@@ -23,7 +23,7 @@ from functools import cached_property
 from typing import Any
 
 from .check import PUBLISHED_WARN_REL, audit_row, check_row, error_text, rounded, scale_for
-from .condition import KAPPA_REFUSE, sensitivities, solution_count_stable, STEP
+from .condition import KAPPA_REFUSE, STEP, derivative, sensitivities, solution_count_stable
 from .errors import NotAMechanism, ProblemError
 from .tolerance import CHECK_REL
 from .problems import Problem
@@ -77,9 +77,17 @@ class Solution:
 
     @cached_property
     def length_scale(self) -> float:
-        """The largest given length: the scale of relative comparisons of lengths."""
-        lengths = [v for q in self.recipe.givens if q.unit == "mm" and (v := self.problem.given.get(q.name)) is not None]
-        return max([abs(v) for v in lengths] + [1e-300])
+        """The largest given length or coordinate: the scale of relative comparisons of lengths."""
+        sizes = [1e-300]
+        for q in self.recipe.givens:
+            v = self.problem.given.get(q.name)
+            if v is None:
+                continue
+            if q.unit == "mm":
+                sizes.append(abs(v))
+            elif q.unit in ("point", "mm[]"):
+                sizes += [abs(x) for x in v]
+        return max(sizes)
 
     @cached_property
     def solution_values(self) -> list[dict[str, float]]:
@@ -186,7 +194,7 @@ class Solution:
                 for n, value, _, _ in self.recipe.back_check(given, answers):
                     if n == name:
                         return float(value)
-            except (ArithmeticError, ValueError):
+            except (ArithmeticError, ValueError):       # GeomconError is a ValueError: the rebuild left the domain
                 return None
             return None
 
@@ -194,10 +202,8 @@ class Solution:
         for k, v in built.items():
             if isinstance(v, (bool, tuple, list)) or v == 0:
                 continue
-            u = abs(float(v))
-            hp, hm = rebuilt({**built, k: v + STEP * u}), rebuilt({**built, k: v - STEP * u})
-            if hp is not None and hm is not None:
-                total += abs(hp - hm) / (2 * STEP)
+            d = derivative(lambda dv, k=k, v=v: rebuilt({**built, k: v + dv}), abs(float(v)))
+            total += d or 0.0
         tol = max(row["tol"], CHECK_REL * total)
         return {**row, "tol": tol, "ok": row["abs_error"] <= tol,
                 "condition": total / max(abs(row["analytic"]), 1e-300)}
