@@ -141,6 +141,40 @@ def cmd_bench(args: argparse.Namespace) -> int:
     return run_bench(quick=args.quick, out=Path(args.out))
 
 
+def cmd_fuzz(args: argparse.Namespace) -> int:
+    from .fuzz.runner import FAILURES, Report, all_generators, run_hostile, run_valid
+    from .gallery import problem_files
+
+    _limit_memory(args.memory_gib)
+    report = Report()
+    if args.hostile:
+        report.merge(run_hostile(problem_files(Path(args.problems)), args.hostile, args.seed))
+    if args.valid:
+        gens = {k: g for k, g in all_generators().items() if not args.only or args.only in k}
+        report.merge(run_valid(gens, args.valid, args.seed))
+    if args.json:
+        print(json.dumps(report.to_json(), ensure_ascii=False, indent=2))
+    else:
+        for name, n in report.cases.items():
+            print(f"{name}: {n} cases in {report.seconds.get(name, 0):.1f} s")
+        print("counts: " + ", ".join(f"{k} {v}" for k, v in sorted(report.counts.items())))
+        for k in FAILURES:
+            for ex in report.examples.get(k, []):
+                print(f"{k}: {one_line(ex)}")
+        print(f"{report.failures()} failures")
+    return 0 if report.failures() == 0 else EXIT_CHECK_FAILED
+
+
+def _limit_memory(gib: float) -> None:
+    """Cap the address space, so that a memory blow-up is a MemoryError (counted) and not a dead machine."""
+    try:
+        import resource
+        limit = int(gib * 2 ** 30)
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    except (ImportError, ValueError, OSError):
+        pass
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``geomcon`` command."""
     p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
@@ -165,6 +199,15 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--quick", action="store_true", help="fewer repetitions and sweep sizes")
     b.add_argument("--out", default="bench.svg", metavar="SVG", help="where to write the plot")
     b.set_defaults(func=cmd_bench)
+    f = sub.add_parser("fuzz", help="seeded fuzz: hostile problem files and random valid problems; exit 1 on any failure")
+    f.add_argument("--hostile", type=int, default=200, metavar="N", help="mutated problem files in all")
+    f.add_argument("--valid", type=int, default=50, metavar="N", help="random valid problems per generator")
+    f.add_argument("--seed", type=int, default=9)
+    f.add_argument("--only", default="", metavar="TEXT", help="only the generators whose name contains TEXT")
+    f.add_argument("--problems", default="problems", metavar="DIR")
+    f.add_argument("--memory-gib", type=float, default=4.0, help="address-space cap of the fuzzing process")
+    f.add_argument("--json", action="store_true")
+    f.set_defaults(func=cmd_fuzz)
     return p
 
 
