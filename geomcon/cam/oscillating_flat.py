@@ -50,6 +50,8 @@ import numpy as np
 from .oscillating import ArmMotion, Motion, levels, pieces, segment_motion
 from .program import Program
 
+DROP_REL = 1e-9
+"""A drop of ψ′ at a break counts when larger than this fraction of the largest |ψ′| of the turn."""
 END_TIE = 1e-12
 """A segment's nearest contact within this many a of a segment end is placed at that end (a law ending with
 ψ′ = ψ″ = 0 leaves l flat to roundoff over ~1e-5°, where the place is otherwise arbitrary)."""
@@ -178,17 +180,26 @@ class FlatArmCam(ArmMotion):
         return -v, at
 
     def backward_jumps(self) -> tuple[tuple[float, float], ...]:
-        """(ε·Δl, δ in degrees) at every break where the contact jumps backwards along the face."""
-        out = []
+        """(ε·Δl, δ in degrees) at every break where the contact jumps backwards along the face.
+
+        With 1 − εψ′ > 0 on both sides and cos φ > 0, ε·Δl = ε·a cos φ·(1/(1 − εψ′₊) − 1/(1 − εψ′₋)) has the
+        sign of ψ′₊ − ψ′₋: the contact jumps back exactly where ψ′ drops. A drop counts when it exceeds
+        :data:`DROP_REL` of the largest |ψ′| of the turn (a law's end value f′(1) ≈ 2e-16 is roundoff).
+        """
         segs, lev = self.program.segments, levels(self.program, self.h)
-        ends = []                                                  # (δ, l just before, l just after)
+        ends = []                                                  # (δ, m just before, m just after)
         for k, seg in enumerate(segs):
             for x0, x1 in pieces(seg):
                 m = segment_motion(seg, lev[k], self.h, [x0, x1])
-                ends.append((seg.start + seg.angle * x0, *(float(v) for v in self.contact_of(m))))
-        for (d0, _, before), (d1, after, _) in zip(ends[-1:] + ends[:-1], ends):
-            jump = self.eps * (after - before)
-            if jump < -1e-12 * max(1.0, abs(before), abs(after)):
+                ends.append((seg.start + seg.angle * x0, m))
+        peak = max(float(np.max(np.abs(segment_motion(seg, lev[k], self.h, np.linspace(0.0, 1.0, 65)).d1)))
+                   for k, seg in enumerate(segs))
+        out = []
+        for (_, prev), (d1, nxt) in zip(ends[-1:] + ends[:-1], ends):
+            w0, w1 = float(prev.d1[1]), float(nxt.d1[0])
+            if w1 - w0 < -DROP_REL * peak:
+                phi = self.psi0 + float(nxt.psi[0])
+                jump = self.eps * self.a * math.cos(phi) * (1.0 / (1.0 - self.eps * w1) - 1.0 / (1.0 - self.eps * w0))
                 out.append((jump, d1))
         return tuple(out)
 

@@ -66,6 +66,7 @@ JUMP_REL = 1e-9
 turn (a law's end value f′(1) = 1.9e-16 instead of 0 is roundoff, not a velocity drop)."""
 _DENSE = 1440               # samples per turn for locating extrema before refining
 _GOLD = (math.sqrt(5.0) - 1.0) / 2.0
+_NEAR_ENDS = np.logspace(-9.0, -2.0, 8)       # extra samples at these fractions of a piece from either end
 
 
 def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequence[np.ndarray],
@@ -173,7 +174,8 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
 
     With ``slope`` (a function with the sign of g′, from exact derivatives) the candidates are the ends of
     each piece (the right end one-sided) and the places where the slope changes sign from + to − between
-    dense samples, each located by bisection on the slope's sign to the last bit: no comparison of values
+    dense samples (denser towards the ends: 1e-2 … 1e-9 of the piece), each located by bisection on the
+    slope's sign to the last bit: no comparison of values
     decides where an interior maximum lies, and a maximum at a piece's end is that end exactly. Without
     ``slope`` every local maximum of the dense samples is refined by golden-section search to ``xtol``
     radians (the value is then right to ~xtol² relative, its place only to ~1e-8 rad); of each piece the
@@ -195,28 +197,40 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     grids = []
     for a, b in pieces:
         n = max(16, int(math.ceil(dense * (b - a) / total)))
-        d = np.linspace(a, b, n + 1)
+        near = (b - a) * _NEAR_ENDS                # a maximum squeezed against an end (where the slope is 0)
+        d = np.unique(np.concatenate([np.linspace(a, b, n + 1), a + near, b - near]))
         d[-1] = np.nextafter(b, a)
         grids.append(d)
-    cands: list[Extremum] = []
+    places: list[float] = []
     if slope is not None:
         slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
+        lo, hi = [], []
         for d, sl in zip(grids, slopes):
-            places = [float(d[0]), float(d[-1])] + _sign_changes(slope, d, sl, noise)
-            vals = np.asarray(g(np.asarray(places)), dtype=float)
-            cands += [Extremum(float(v), x) for v, x in zip(vals, places)]
-        return best_of(cands)
+            places += [float(d[0]), float(d[-1])]
+            for i in np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0].tolist():
+                if max(abs(sl[i]), abs(sl[i + 1])) <= noise:      # roundoff (a dwell): the sample stands
+                    places.append(float(d[i]))
+                else:
+                    lo.append(float(d[i]))
+                    hi.append(float(d[i + 1]))
+        places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
+        vals = np.asarray(g(np.asarray(places)), dtype=float)
+        return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
+    lo, hi, cands = [], [], []
     for d in grids:
         v = np.asarray(g(d), dtype=float)
-        cands += [Extremum(float(v[0]), float(d[0])), Extremum(float(v[-1]), float(d[-1]))]
         n = len(d) - 1
+        cands += [Extremum(float(v[0]), float(d[0])), Extremum(float(v[-1]), float(d[-1]))]
         w = np.concatenate([[-np.inf], v, [-np.inf]])             # the ends compare with one neighbour
         peaks = np.nonzero((w[1:-1] >= w[:-2]) & (w[1:-1] >= w[2:]) & ((w[1:-1] > w[:-2]) | (w[1:-1] > w[2:])))[0]
         for i in sorted(peaks.tolist(), key=lambda j: -v[j])[:REFINE]:
-            top = max(Extremum(float(v[i]), float(d[i])),
-                      _golden(g, float(d[max(i - 1, 0)]), float(d[min(i + 1, n)]), xtol), key=lambda e: e.value)
-            cands.append(top)
+            cands.append(Extremum(float(v[i]), float(d[i])))
+            lo.append(float(d[max(i - 1, 0)]))
+            hi.append(float(d[min(i + 1, n)]))
+    if lo:
+        x, v = _golden_all(g, np.array(lo), np.array(hi), xtol)
+        cands += [Extremum(float(a), float(b)) for a, b in zip(v, x)]
     return best_of(cands)
 
 
@@ -229,41 +243,35 @@ def best_of(cands: Sequence[Extremum]) -> Extremum:
     return min((c for c in finite if c.value >= top - TIE_REL * abs(top)), key=lambda c: c.delta)
 
 
-def _sign_changes(slope: Callable[[np.ndarray], np.ndarray], d: np.ndarray, sl: np.ndarray, noise: float) -> list[float]:
-    """The places in (d[0], d[-1]) where ``slope`` (``sl`` at the samples ``d``) goes from > 0 to ≤ 0, by
-    bisection to the last bit. A change between two samples both within ``noise`` of 0 (a dwell, where the
-    slope is roundoff) is not bisected: the sample there stands for itself."""
-    out = []
-    for i in np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0].tolist():
-        lo, hi = float(d[i]), float(d[i + 1])
-        if max(abs(sl[i]), abs(sl[i + 1])) <= noise:
-            out.append(lo)
-            continue
-        while True:
-            m = 0.5 * (lo + hi)
-            if not lo < m < hi:
-                break
-            if float(np.asarray(slope(np.array([m])))[0]) > 0.0:
-                lo = m
-            else:
-                hi = m
-        out.append(hi)
-    return out
+def _bisect_all(slope: Callable[[np.ndarray], np.ndarray], lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """For every bracket [lo, hi] with slope(lo) > 0 ≥ slope(hi): the place where the slope's sign changes,
+    by bisection to the last bit, all brackets at once (one call of ``slope`` per step)."""
+    lo, hi = lo.astype(float), hi.astype(float)
+    while lo.size:
+        m = 0.5 * (lo + hi)
+        live = (lo < m) & (m < hi)
+        if not live.any():
+            break
+        up = np.asarray(slope(m), dtype=float) > 0.0
+        lo = np.where(live & up, m, lo)
+        hi = np.where(live & ~up, m, hi)
+    return hi
 
 
-def _golden(g, lo: float, hi: float, xtol: float) -> Extremum:
+def _golden_all(g, lo: np.ndarray, hi: np.ndarray, xtol: float) -> tuple[np.ndarray, np.ndarray]:
+    """Golden-section search for a maximum in every interval [lo, hi] at once (one call of ``g`` per step
+    on all intervals); returns the places and the values."""
     x1, x2 = hi - _GOLD * (hi - lo), lo + _GOLD * (hi - lo)
-    f1, f2 = (float(t) for t in g(np.array([x1, x2])))
-    while hi - lo > xtol:
-        if f1 >= f2:
-            hi, x2, f2 = x2, x1, f1
-            x1 = hi - _GOLD * (hi - lo)
-            f1 = float(g(np.array([x1]))[0])
-        else:
-            lo, x1, f1 = x1, x2, f2
-            x2 = lo + _GOLD * (hi - lo)
-            f2 = float(g(np.array([x2]))[0])
-    return Extremum(f1, float(x1)) if f1 >= f2 else Extremum(f2, float(x2))
+    f1, f2 = np.asarray(g(x1), dtype=float), np.asarray(g(x2), dtype=float)
+    while np.any(hi - lo > xtol):
+        left = f1 >= f2                                    # the maximum is in [lo, x2], else in [x1, hi]
+        lo, hi = np.where(left, lo, x1), np.where(left, x2, hi)
+        xn = np.where(left, hi - _GOLD * (hi - lo), lo + _GOLD * (hi - lo))
+        fn = np.asarray(g(xn), dtype=float)
+        x1, f1, x2, f2 = (np.where(left, xn, x2), np.where(left, fn, f2), np.where(left, x1, xn),
+                          np.where(left, f1, fn))
+    top = f1 >= f2
+    return np.where(top, x1, x2), np.where(top, f1, f2)
 
 
 def pressure_angle(c6: Curve6, ux: np.ndarray, uy: np.ndarray) -> np.ndarray:
@@ -594,6 +602,19 @@ def envelope(fam: LineFamily, delta) -> tuple[np.ndarray, np.ndarray, np.ndarray
     return p * c - lam * s, p * s + lam * c, lam, rho
 
 
+def contact_slope(fam: LineFamily, delta) -> np.ndarray:
+    """dλ/dδ = (p″φ′ − p′φ″)/φ′² of the contact's place λ = p′/φ′ along the line (:func:`envelope`).
+
+    Examples
+    --------
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, 2 * d, 2 + 0 * d))
+    >>> float(contact_slope(fam, np.array([0.3]))[0])
+    2.0
+    """
+    _, dphi, ddphi, _, dp, ddp = fam.eval(delta)
+    return (ddp * dphi - dp * ddphi) / dphi ** 2
+
+
 def envelope_rho_min(fam: LineFamily) -> Extremum:
     """The smallest radius of curvature ρ of the envelope over the turn (≤ 0: not convex), and where."""
     low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces())
@@ -676,7 +697,7 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
     return float(np.abs(dist - rr).max())
 
 
-__all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise",
+__all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",

@@ -105,6 +105,10 @@ class Program:
         (modulo 2π) and the segment ends are compared in radians, so that ``nextafter`` of an end in
         radians stays in the segment it approaches (one-sided values for the profile machinery).
 
+        A parabolic segment's halves are told apart by comparing δ with its middle, conv(start + angle/2) —
+        the same number as the break of :func:`geomcon.recipes.cam_common.program_breaks` — so that a piece
+        starting there gets the decelerating half even when (δ − start)/angle rounds below ½.
+
         The segment of each angle is found by bisection on the segment starts, and each law is evaluated
         once on the angles of its segment: the cost is linear in the number of angles whatever the number
         of segments.
@@ -112,6 +116,8 @@ class Program:
         conv = math.radians if radians else float
         turn = conv(360.0)
         raw = np.asarray(delta, dtype=float)
+        if raw.size == 1:
+            return tuple(np.full(raw.shape, v) for v in self._motion1(h, float(raw.reshape(-1)[0]), radians))
         shape = raw.shape
         raw = raw.reshape(-1)
         d = np.mod(raw, turn)
@@ -128,7 +134,11 @@ class Program:
                 continue
             inside = idx == i
             start, span = conv(seg.start), math.radians(seg.angle)
-            f, f1, f2 = seg.law.derivatives(np.clip((d[inside] - start) / conv(seg.angle), 0.0, 1.0))
+            x = np.clip((d[inside] - start) / conv(seg.angle), 0.0, 1.0)
+            if seg.law.name == "parabolic":       # the half is decided on δ against the break itself
+                second = d[inside] >= conv(seg.start + seg.angle / 2)
+                x = np.where(second, np.maximum(x, 0.5), np.minimum(x, np.nextafter(0.5, 0.0)))
+            f, f1, f2 = seg.law.derivatives(x)
             sign = 1.0 if seg.kind == "rise" else -1.0
             s[inside] = s[inside] + sign * h * f
             v[inside] = sign * h * f1 / span
@@ -139,6 +149,30 @@ class Program:
             s = np.where(past, final * h, s)
             v, a = np.where(past, 0.0, v), np.where(past, 0.0, a)
         return s.reshape(shape), v.reshape(shape), a.reshape(shape)
+
+    def _motion1(self, h: float, raw: float, radians: bool) -> tuple[float, float, float]:
+        """:meth:`motion` at one angle, without array machinery (the searches evaluate one angle at a time);
+        the same arithmetic as the array path."""
+        conv = math.radians if radians else float
+        turn = conv(360.0)
+        d = raw % turn
+        if d == 0.0 and raw > 0.0:
+            d = turn
+        starts_deg, starts_rad, levels = self._table
+        i = min(max(int(np.searchsorted(starts_rad if radians else starts_deg, d, side="right")) - 1, 0),
+                len(self.segments) - 1)
+        seg = self.segments[i]
+        if d > conv(self.segments[-1].end):
+            last = self.segments[-1]
+            return (float(levels[-1]) + {"rise": 1.0, "return": -1.0}.get(last.kind, 0.0)) * h, 0.0, 0.0
+        if seg.kind == "dwell":
+            return float(levels[i]) * h, 0.0, 0.0
+        x = min(max((d - conv(seg.start)) / conv(seg.angle), 0.0), 1.0)
+        if seg.law.name == "parabolic":
+            x = max(x, 0.5) if d >= conv(seg.start + seg.angle / 2) else min(x, math.nextafter(0.5, 0.0))
+        f, f1, f2 = (float(np.asarray(v).reshape(-1)[0]) for v in seg.law.fn(np.array([x])))   # as the array path
+        sign, span = (1.0 if seg.kind == "rise" else -1.0), math.radians(seg.angle)
+        return float(levels[i]) * h + sign * h * f, sign * h * f1 / span, sign * h * f2 / span ** 2
 
     def impacts(self, h: float) -> list[Impact]:
         """Every jump of velocity (rigid impact) or acceleration (soft impact) over the turn, including the

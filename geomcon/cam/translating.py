@@ -42,6 +42,8 @@ from ..errors import NotAMechanism
 from .program import Program
 
 _DENSE = 4096
+TIE = 1e-12
+"""Maxima equal to this relative tolerance tie; the smallest cam angle is reported."""
 
 
 @dataclass(frozen=True)
@@ -157,9 +159,13 @@ def _max_by_root(g: Callable, dg: Callable, a: float, b: float) -> tuple[float, 
     """Max of g on [a, b) (right end one-sided): the ends and every place where dg changes sign from + to −,
     found by bisection to the last bit."""
     d = _grid(a, b)
+    w = (b - a) * np.array([1e-10, 1e-8, 1e-6, 1e-4, 1e-3])      # a maximum squeezed against an end
+    d = np.unique(np.concatenate([d, a + w, np.nextafter(b, a) - w]))
     slope = dg(d)
     cands = [d[0], d[-1]]
-    for i in np.nonzero((slope[:-1] > 0) & (slope[1:] <= 0))[0]:
+    up = slope[:-1] > 0
+    up[0] = slope[0] >= 0           # the slope is often exactly 0 at a segment's start (a law starting at rest)
+    for i in np.nonzero(up & (slope[1:] <= 0))[0]:
         lo, hi = float(d[i]), float(d[i + 1])
         while True:
             mid = 0.5 * (lo + hi)
@@ -170,19 +176,34 @@ def _max_by_root(g: Callable, dg: Callable, a: float, b: float) -> tuple[float, 
             else:
                 hi = mid
         cands.append(lo)
-    vals = g(np.array(cands, dtype=float))
-    i = int(np.argmax(vals))
-    return float(vals[i]), float(cands[i])
+    vals = np.asarray(g(np.array(cands, dtype=float)), dtype=float)
+    top = float(np.max(vals))
+    tied = [c for c, v in zip(cands, vals) if v >= top - TIE * abs(top)]     # equal to roundoff: earliest place
+    at = min(tied)
+    return float(vals[cands.index(at)]), float(at)
 
 
 def _max_by_parabola(g: Callable, a: float, b: float) -> float:
-    """Max of g on [a, b): dense samples, then successive parabolic interpolation about the best one."""
+    """Max of g on [a, b): dense samples, then successive parabolic interpolation about each of the few
+    best local maxima of the samples (a peak between samples may overtake the best sample's)."""
     d = _grid(a, b)
     v = g(d)
-    i = int(np.argmax(v))
+    best = float(np.max(v))
+    inner = [i for i in range(1, len(d) - 1) if v[i] >= v[i - 1] and v[i] >= v[i + 1]]
+    for i in sorted(inner, key=lambda j: -v[j])[:4]:
+        best = max(best, _parabola(g, d, v, i))
+    if v[0] > v[1]:                               # a peak between the first two samples
+        best = max(best, _parabola(g, np.array([d[0], 0.5 * (d[0] + d[1]), d[1]]),
+                                   g(np.array([d[0], 0.5 * (d[0] + d[1]), d[1]])), 1))
+    if v[-1] > v[-2]:
+        m = np.array([d[-2], 0.5 * (d[-2] + d[-1]), d[-1]])
+        best = max(best, _parabola(g, m, g(m), 1))
+    return best
+
+
+def _parabola(g: Callable, d: np.ndarray, v: np.ndarray, i: int) -> float:
+    """Successive parabolic interpolation from the samples i − 1, i, i + 1 (the middle one the highest or not)."""
     best = float(v[i])
-    if not 0 < i < len(d) - 1:
-        return best
     (x0, x1, x2), (y0, y1, y2) = (float(t) for t in d[i - 1:i + 2]), (float(t) for t in v[i - 1:i + 2])
     for _ in range(100):
         den = (x1 - x0) * (y1 - y2) - (x1 - x2) * (y1 - y0)

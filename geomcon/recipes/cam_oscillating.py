@@ -49,11 +49,12 @@ GIVENS = (
     Quantity("arm", "choice", "side of the line A0→O the roller lies on (A0 drawn above O)", required=False,
              default="left", minimum=None, choices=("left", "right")),
     AT,
-    Quantity("alpha_allow", "deg", "allowed pressure angle on the rise (a warning when exceeded)", required=False),
-    Quantity("alpha_allow_return", "deg", "allowed pressure angle on the return (default alpha_allow)",
-             required=False),
-    Quantity("divisions", "", "equal divisions of the rise and of the return in the drawing (default: parts of at "
-             "most 15°)", required=False),
+    Quantity("alpha_allow", "deg", "allowed pressure angle on the rise (a warning when exceeded), 0 < α ≤ 90°",
+             required=False, maximum=90.0),
+    Quantity("alpha_allow_return", "deg", "allowed pressure angle on the return (default alpha_allow), 0 < α ≤ 90°",
+             required=False, maximum=90.0),
+    Quantity("divisions", "", "equal divisions of the rise and of the return in the drawing, a whole number from 1 "
+             "to 24 (default: parts of at most 15°)", required=False, maximum=24.0),
     TOL,
     STRICT,
 )
@@ -125,9 +126,9 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
         out.append(f"the cam reaches {r_top - rr:.4g} mm from O at the top of the stroke, beyond the arm's pivot "
                    f"(a = {a:g}): it would hit the pivot")
     allow = {"rise": g.get("alpha_allow"), "return": g.get("alpha_allow_return") or g.get("alpha_allow")}
-    for part in ("rise", "return"):
+    for part in [p for p in ("rise", "return") if allow[p] is not None]:
         alpha, at = cam.worst_pressure(part)
-        if allow[part] is not None and alpha > allow[part]:
+        if alpha > allow[part]:
             out.append(f"α_max of the {part} = {alpha:.4g}° exceeds the allowance {allow[part]:g}° (at δ = {at:.4g}°)")
     if roller:
         rho, at = cam.rho_min()

@@ -67,9 +67,9 @@ def validate_flat(g: Mapping[str, Any]) -> list[str]:
         out.append(f"the profile reaches about {reach:.4g} mm from O, beyond the arm's pivot (a = {a:g}): it would "
                    "hit the pivot")
     allow = {"rise": g.get("alpha_allow"), "return": g.get("alpha_allow_return") or g.get("alpha_allow")}
-    for part in ("rise", "return"):
+    for part in [p for p in ("rise", "return") if allow[p] is not None]:
         alpha, where = cam.worst_pressure(part)
-        if allow[part] is not None and alpha > allow[part]:
+        if alpha > allow[part]:
             out.append(f"α_max of the {part} = {alpha:.4g}° exceeds the allowance {allow[part]:g}° (at δ = {where:.4g}°)")
     rho, where = cam.rho_min()
     jumps = cam.backward_jumps()

@@ -18,7 +18,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.profile import (Extremum, LineFamily, PitchCurve, corners, envelope, envelope_rho_min,
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope_rho_min,
                            flat_profile, inverted, maximise, pressure_angle, pressure_angle_slope, rho_min,
                            roller_profile)
 from ..cam.program import Program, parse_program
@@ -44,7 +44,8 @@ GIVENS = (
     Quantity("rr", "mm", "roller radius (roller followers only)", required=False, default=None),
     ROTATION,
     AT,
-    Quantity("alpha_allow", "deg", "allowed pressure angle (a warning when exceeded)", required=False, default=None),
+    Quantity("alpha_allow", "deg", "allowed pressure angle (a warning when exceeded), 0 < α_allow ≤ 90°", required=False,
+             default=None, maximum=90.0),
     TOL,
     STRICT,
 )
@@ -84,10 +85,11 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     if rr >= r0:
         raise NotAMechanism(f"rr = {rr:g} ≥ r0 = {r0:g}: the actual profile's base circle r0 − rr would vanish")
     out = []
-    ans = analytic(g)[0]
+    flat = follower == "flat"
+    cam = TranslatingCam(prog, h, r0, 0.0 if flat else e, rot)        # only what the warnings need
     if follower == "roller":
-        rho = ans["rho_min_pitch"]
-        if ans["undercut"]:
+        rho = cam.rho_min_pitch()
+        if rr >= rho:
             out.append(f"undercut: rr = {rr:g} ≥ ρmin = {rho:.4g} of the pitch curve; the profile is trimmed and "
                        "the follower's motion is distorted there (增大基圆或减小滚子半径)")
         elif rho < RISE_WARN * rr:
@@ -100,16 +102,16 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
             at = ", ".join(f"{math.degrees(c.delta):g}°" for c in convex)
             out.append(f"the pitch curve has a convex corner at δ = {at} (velocity drop, rigid impact)"
                        + (": the roller cannot follow it exactly there" if follower == "roller" else ""))
-    if follower == "flat" and not ans["convex"]:
-        out.append(f"the flat face cannot follow the motion: min(r0 + s + s″) = {ans['rho_min_actual']:.4g}"
+    rho_flat = cam.flat_rho_min() if flat else math.inf
+    if flat and not (rho_flat > 0.0 and not _s_drops(prog, h)):
+        out.append(f"the flat face cannot follow the motion: min(r0 + s + s″) = {rho_flat:.4g}"
                    + (" and the velocity drops suddenly (s′ jumps down)" if _s_drops(prog, h) else "")
                    + "; the profile is trimmed (增大基圆 r0)")
     allow = g.get("alpha_allow")
-    for part in ("rise", "return"):
-        a = ans[f"alpha_max_{part}"]
-        if allow is not None and a > allow:
-            out.append(f"α_max of the {part} = {a:.4g}° exceeds alpha_allow = {allow:g}° "
-                       f"(at δ = {ans.get(f'delta_alpha_max_{part}', 0.0):.4g}°)")
+    for part in ("rise", "return") if allow is not None and not flat else ():
+        a, where = cam.alpha_max(part)
+        if a > allow:
+            out.append(f"α_max of the {part} = {a:.4g}° exceeds alpha_allow = {allow:g}° (at δ = {where:.4g}°)")
     return out
 
 
@@ -200,8 +202,11 @@ def face_extents(fam: LineFamily, prog: Program, h: float, r0: float, e: float, 
         ax, ay = c * e - sn * (r0 + s), sn * e + c * (r0 + s)          # the axis on the face
         return (x - ax) * c + (y - ay) * sn                            # along the turned +x
 
-    right = maximise(offset, fam.pieces()).value
-    left = maximise(lambda d: -offset(d), fam.pieces()).value
+    def slope(d):                        # the axis's own place on the face is fixed: only λ moves, t = −x̂
+        return -contact_slope(fam, d)
+
+    right = maximise(offset, fam.pieces(), slope=slope).value
+    left = maximise(lambda d: -offset(d), fam.pieces(), slope=lambda d: -slope(d)).value
     return max(0.0, left), max(0.0, right)
 
 
