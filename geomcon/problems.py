@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import stat
 import tomllib
 import unicodedata
@@ -78,11 +79,22 @@ class Problem:
     path: str | None = None
 
 
+def _g(x: float) -> str:
+    """A number as people write it: ``1e+12`` → ``1e12``.
+
+    Examples
+    --------
+    >>> _g(1e12), _g(2.5e-7), _g(90.0), _g(2e9)
+    ('1e12', '2.5e-7', '90', '2e9')
+    """
+    return re.sub(r"e\+?(-?)0*(\d)", r"e\1\2", f"{x:g}")
+
+
 def _short(value: Any, limit: int = 60) -> str:
     """``repr`` of a value, cut to ``limit`` characters (hostile files hold huge values)."""
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) > 10 ** 30:
         return f"an integer of {len(str(abs(value)))} digits"
-    text = repr(value)
+    text = _g(value) if isinstance(value, float) else repr(value)
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
@@ -105,10 +117,12 @@ def _in_range(unit: str, x: float, where: str) -> float:
     if unit.endswith("[]") or unit == "point":
         lo = 0.0
     if abs(x) > hi:
-        raise ProblemError(f"{where} = {x:g} is out of range: |{unit or 'value'}| ≤ {hi:g}"
-                           if unit else f"{where} = {x:g} is out of range: |value| ≤ {hi:g}")
+        what = {"mm": "a length", "point": "a coordinate", "deg": "an angle"}.get(unit.removesuffix("[]"), "a value")
+        unit_text = {"mm": " mm", "point": " mm", "deg": "°"}.get(unit.removesuffix("[]"), "")
+        raise ProblemError(f"{where} = {_g(x)}{unit_text} is out of range: {what} is at most {_g(hi)}{unit_text} "
+                           "in size")
     if x != 0 and abs(x) < lo:
-        raise ProblemError(f"{where} = {x:g} mm is too small: a nonzero length is at least {lo:g} mm")
+        raise ProblemError(f"{where} = {_g(x)} mm is too small: a nonzero length is at least {_g(lo)} mm")
     return x
 
 
@@ -171,8 +185,8 @@ def _length_span(recipe: Recipe, given: Mapping[str, Any]) -> None:
         return
     big, small = max(nonzero), min(nonzero)
     if big[0] > LENGTH_SPAN * small[0]:
-        raise ProblemError(f"given '{small[1]}' = {small[0]:g} mm is more than {LENGTH_SPAN:g} times smaller than "
-                           f"'{big[1]}' = {big[0]:g} mm: lengths must lie within a ratio of {LENGTH_SPAN:g} "
+        raise ProblemError(f"given '{small[1]}' = {_g(small[0])} mm is more than {_g(LENGTH_SPAN)} times smaller "
+                           f"than '{big[1]}' = {_g(big[0])} mm: lengths must lie within a ratio of {_g(LENGTH_SPAN)} "
                            "(write 0 for none)")
 
 
@@ -182,9 +196,9 @@ def _bounded(q: Quantity, value: Any, where: str) -> float:
         bad = x < q.minimum if q.inclusive else x <= q.minimum
         if bad:
             op = "≥" if q.inclusive else ">"
-            raise ProblemError(f"{where} must be {op} {q.minimum:g}, got {_short(value)}")
+            raise ProblemError(f"{where} must be {op} {_g(q.minimum)}, got {_short(value)}")
     if q.maximum is not None and x > q.maximum:
-        raise ProblemError(f"{where} must be ≤ {q.maximum:g}, got {_short(value)}")
+        raise ProblemError(f"{where} must be ≤ {_g(q.maximum)}, got {_short(value)}")
     return _in_range(q.unit, x, where)
 
 
