@@ -24,12 +24,13 @@ import numpy as np
 from ..cam.oscillating import OscillatingCam, psi0_rad
 from ..cam.profile import rho_min, roller_profile
 from ..errors import NotAMechanism
-from ..geometry import LeftOf, Line, NearestTo, Point, RightOf, circle, circle_circle, line_circle, segment
+from ..geometry import LeftOf, Point, RightOf, circle, circle_circle, segment
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
 from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, ArmInversion, add_base_circle,
                          add_cam_centre, add_motion_diagram, add_profile_steps, add_roller_circles, arm_division_angles,
-                         arm_velocity, at_least, collect, extremum_value, laid_off, minus, normal_segment, pick,
+                         arm_at, arm_contacts, arm_pressures, arm_velocity, at_least, collect, column,
+                         extremum_value, laid_off, minus, normal_segment, pick,
                          pitch_polyline, pressure_mark, profile_tolerance, program_of, speed_ratio, turned,
                          velocity_segment)
 from .cam_oscillating_flat import analytic_flat, construct_flat, validate_flat
@@ -175,9 +176,9 @@ def coord(p: Point, axis: int) -> float:
     return p.x if axis == 0 else p.y
 
 
-def normal_line(A: Point, B: Point, O: Point, k: float) -> Line:
-    """The contact normal through B (for the roller's contact point)."""
-    return Line(B, arm_normal(A, B, O, k))
+def collect_all(values) -> tuple[float, ...]:
+    """An array as a list answer."""
+    return tuple(float(v) for v in values)
 
 
 # ---------------------------------------------------------------------------------------------- construction
@@ -275,25 +276,18 @@ def construct(g: Mapping[str, Any]) -> Construction:
         answers[f"alpha_max_{part}"] = f"alpha_max_{part}"
         answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
     at = tuple(g.get("at") or ())
-    if at:
-        lists: dict[str, list[Ref]] = {k: [] for k in ("psi", "alpha", "pitch_x", "pitch_y", "profile_x", "profile_y")}
-        for j, d in enumerate(at):
-            A, C, B = inv.position(f"at{j}", d, visible=False)
-            k = sc.add(f"k_at{j}", speed_ratio, cam, d, visible=False)
-            lists["psi"].append(sc.add(f"psi_at{j}", angle_deg, A, C, B, visible=False))
-            lists["alpha"].append(sc.add(f"alpha_at{j}", arm_pressure_deg, A, B, O, k, visible=False))
-            lists["pitch_x"].append(sc.add(f"x_at{j}", coord, B, 0, visible=False))
-            lists["pitch_y"].append(sc.add(f"y_at{j}", coord, B, 1, visible=False))
-            if roller:
-                nl = sc.add(f"n_at{j}", normal_line, A, B, O, k, visible=False)
-                kr = sc.add(f"roller_at{j}", circle, B, rr, visible=False)
-                P = sc.add(f"P_at{j}", line_circle, nl, kr, branch=NearestTo(O), visible=False)
-                lists["profile_x"].append(sc.add(f"px_at{j}", coord, P, 0, visible=False))
-                lists["profile_y"].append(sc.add(f"py_at{j}", coord, P, 1, visible=False))
-        for name, refs in lists.items():
-            if refs:
-                sc.add(name, collect, *refs, role=Role.MEASUREMENT, visible=False)
-                answers[name] = name
+    if at:                          # every position of `at` in one step (1000 angles: one evaluation)
+        pos = sc.add("at_positions", arm_at, Point(0.0, a), B0, cam, at, visible=False)
+        sc.add("at_alpha", arm_pressures, pos, cam.eps, visible=False)
+        cols = {"psi": (pos, "psi"), "alpha": (Ref("at_alpha"), None), "pitch_x": (pos, "Bx"), "pitch_y": (pos, "By")}
+        if roller:
+            sc.add("at_contacts", lambda p, e, c, r: dict(zip(("x", "y"), arm_contacts(p, e, c, r))), pos, cam.eps,
+                   curve, rr, visible=False)
+            cols.update(profile_x=(Ref("at_contacts"), "x"), profile_y=(Ref("at_contacts"), "y"))
+        for name, (ref, key) in cols.items():
+            sc.add(name, column if key else collect_all, ref, *((key,) if key else ()), role=Role.MEASUREMENT,
+                   visible=False)
+            answers[name] = name
     return Construction(sc, answers, {p: p for p in POINTS})
 
 

@@ -20,7 +20,7 @@ from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circ
 from ..scene import Ref, Role, Scene
 from .base import Construction
 from .cam_common import (ArmInversion, add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps,
-                         arm_division_angles, arm_velocity, collect, extremum_deg, extremum_value, flat_convex, negate,
+                         arm_at, arm_division_angles, arm_velocity, collect, column, extremum_deg, extremum_value, flat_convex, negate,
                          pick, pressure_mark, profile_tolerance, program_of, speed_ratio, velocity_segment)
 from .common import add_angle_mark, add_pivot, angle_deg
 
@@ -323,24 +323,29 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
             answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
     _mark_flat(sc, cam, fam, inv_pos, O, f)
     at = tuple(g.get("at") or ())
-    if at:
-        lists: dict[str, list[Ref]] = {k: [] for k in ("psi", "alpha", "face_contact")}
-        for j, d in enumerate(at):
-            A, C, D = inv_pos.position(f"at{j}", d, visible=False)
-            K = sc.add(f"K_at{j}", envelope_point, fam, d, visible=False)
-            nv = sc.add(f"n_at{j}", face_normal, fam, d, visible=False)
-            lists["psi"].append(sc.add(f"psi_at{j}", angle_deg, A, C, D, visible=False))
-            lists["alpha"].append(sc.add(f"alpha_at{j}", face_pressure_deg, A, K, nv, visible=False))
-            lists["face_contact"].append(sc.add(f"l_at{j}", face_place_at, fam, A0, inv, tau, d, visible=False))
-        for name, refs in lists.items():
-            sc.add(name, collect, *refs, role=Role.MEASUREMENT, visible=False)
-            answers[name] = name
+    if at:                          # every position of `at` in one step (1000 angles: one evaluation)
+        pos = sc.add("at_positions", arm_at, A0, T1, cam, at, visible=False)
+        sc.add("psi", column, pos, "psi", role=Role.MEASUREMENT, visible=False)
+        sc.add("alpha", face_pressures_at, fam, pos, role=Role.MEASUREMENT, visible=False)
+        sc.add("face_contact", face_places_at, fam, A0, inv, tau, at, role=Role.MEASUREMENT, visible=False)
+        answers.update({k: k for k in ("psi", "alpha", "face_contact")})
     return Construction(sc, answers, {"O": "O", "A0": "A0", "T0": "T0"})
 
 
-def face_place_at(fam: LineFamily, A0: Point, inv: float, tau: int, delta_deg: float) -> float:
-    """:func:`face_place` at one cam angle in degrees."""
-    return float(face_place(fam, A0, inv, tau, np.array([math.radians(delta_deg)]))[0])
+def face_pressures_at(fam: LineFamily, pos: dict) -> tuple[float, ...]:
+    """:func:`face_pressure_deg` at every position of :func:`~.cam_common.arm_at`: the contact K on the
+    envelope, the face normal, K's velocity ⊥ A0′K."""
+    d = np.radians(pos["delta"])
+    kx, ky = envelope(fam, d)[:2]
+    beta = fam.eval(d)[0]
+    nx, ny = np.cos(beta), np.sin(beta)
+    vx, vy = -(ky - pos["Ay"]), kx - pos["Ax"]
+    return tuple(float(v) for v in np.degrees(np.arctan2(np.abs(nx * vy - ny * vx), np.abs(nx * vx + ny * vy))))
+
+
+def face_places_at(fam: LineFamily, A0: Point, inv: float, tau: int, at: tuple[float, ...]) -> tuple[float, ...]:
+    """:func:`face_place` at the cam angles ``at`` (deg)."""
+    return tuple(float(v) for v in face_place(fam, A0, inv, tau, np.radians(np.asarray(at, dtype=float))))
 
 
 def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O: Ref, f: float) -> None:

@@ -177,14 +177,14 @@ def flat_alphas_at(fam: LineFamily, inv: float, at: tuple[float, ...]) -> tuple[
 
 
 def displacements(O: Point, prog: Program, h: float, e: float, s0: float, inv: float, at: tuple[float, ...]) -> tuple[float, ...]:
-    """s at ``at``: the distance from the base circle to the inverted follower point, along the inverted axis."""
-    out = []
-    for dv in at:
-        s = float(prog.motion(h, dv)[0])
-        C, B = turned(Point(e, s0), O, inv, dv), turned(Point(e, s0 + s), O, inv, dv)
-        u = turned(Point(0.0, 1.0), Point(0.0, 0.0), inv, dv)
-        out.append((B - C).dot(u))
-    return tuple(out)
+    """s at ``at``: the distance from the base circle to the inverted follower point, along the inverted axis
+    (the points (e, s0) and (e, s0 + s) and the axis (0, 1) turned about O by inv·δ, all angles at once)."""
+    d = np.asarray(at, dtype=float)
+    s = prog.motion(h, d)[0]
+    c, sn = np.cos(inv * np.radians(d)), np.sin(inv * np.radians(d))
+    cx, cy = c * e - sn * s0 + O.x, sn * e + c * s0 + O.y
+    bx, by = c * e - sn * (s0 + s) + O.x, sn * e + c * (s0 + s) + O.y
+    return tuple(float(v) for v in (bx - cx) * -sn + (by - cy) * c)
 
 
 def stroke(C: Point, B: Point) -> float:
