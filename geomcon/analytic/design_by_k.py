@@ -26,24 +26,67 @@ from .linkages import theta_from_k
 
 
 def _sides_from_e(L: float, th: float, e: float) -> tuple[float, float]:
-    """(u, v) of the triangle with base L seen under θ (rad) from a point at height e above the base."""
+    """(u, v) of the triangle with base L seen under θ (rad) from a point at height e above the base.
+
+    (v − u)² = L² − 4uv·sin²(θ/2) = L(L − 2e·tan(θ/2)) and (v + u)² = L(L + 2e·cot(θ/2)) (uv = eL/sin θ);
+    u = uv/v, not (s − d)/2, which cancels when A is near C1."""
     uv = e * L / math.sin(th)
-    sh, ch = math.sin(th / 2.0), math.cos(th / 2.0)               # 1 ∓ cos θ = 2 sin²(θ/2), 2 cos²(θ/2)
-    d = math.sqrt(max(0.0, L * L - 4.0 * uv * sh * sh))           # v − u
-    s = math.sqrt(L * L + 4.0 * uv * ch * ch)                     # v + u
-    return (s - d) / 2.0, (s + d) / 2.0
+    d = math.sqrt(max(0.0, L * (L - 2.0 * e * math.tan(th / 2.0))))   # v − u
+    s = math.sqrt(L * (L + 2.0 * e / math.tan(th / 2.0)))             # v + u
+    return 2.0 * uv / (s + d), (s + d) / 2.0
 
 
 def _sides_from_a(L: float, th: float, a: float) -> tuple[float, float]:
     uv = (L - 2.0 * a) * (L + 2.0 * a) / (4.0 * math.sin(th / 2.0) ** 2)
     s = math.sqrt(4.0 * a * a + 4.0 * uv)
-    return (s - 2.0 * a) / 2.0, (s + 2.0 * a) / 2.0
+    return 2.0 * uv / (s + 2.0 * a), (s + 2.0 * a) / 2.0
 
 
 def _sides_from_b(L: float, th: float, b: float) -> tuple[float, float]:
+    """(v − u)² = 4b² − 4uv = (L − 2b·sin(θ/2))(L + 2b·sin(θ/2)) / cos²(θ/2): no cancellation as θ → 0."""
     uv = (2.0 * b - L) * (2.0 * b + L) / (4.0 * math.cos(th / 2.0) ** 2)
-    d = math.sqrt(max(0.0, 4.0 * b * b - 4.0 * uv))
-    return (2.0 * b - d) / 2.0, (2.0 * b + d) / 2.0
+    sh = math.sin(th / 2.0)
+    d = math.sqrt(max(0.0, (L - 2.0 * b * sh) * (L + 2.0 * b * sh))) / math.cos(th / 2.0)
+    return 2.0 * uv / (2.0 * b + d), (2.0 * b + d) / 2.0
+
+
+def _foot_from_e(L: float, th: float, e: float) -> float:
+    """X = FC1, the distance of C1 from the foot F of A on the guide, given the offset e.
+
+    The vertical through F meets the θ-circle at heights e and H·cot θ − e, so the power of F gives
+    X(X + L) = e(L·cot θ − e); the root is taken as 2c/(L + √(L² + 4c)), without cancellation.
+
+    >>> round(_foot_from_e(1.0, math.pi / 4, 0.5), 12), round((math.sqrt(2.0) - 1.0) / 2.0, 12)
+    (0.207106781187, 0.207106781187)
+    """
+    c = e * (L / math.tan(th) - e)
+    return 2.0 * max(0.0, c) / (L + math.sqrt(L * L + 4.0 * max(0.0, c)))
+
+
+def _foot_from_a(L: float, th: float, a: float, s: float) -> float:
+    """X = FC1 given the crank a (s = AC1 + AC2): X = ((2a·s)² − L⁴)/(2L(2a·s + L²)) with the numerator
+    factored exactly, (L² − 4a²)·cot²(θ/2)·(2a − L·tan(θ/2))(2a + L·tan(θ/2)): zero at Q (a = (L/2)·tan(θ/2))
+    without the cancellation of 2a·s − L²."""
+    t2 = math.tan(th / 2.0)
+    num = (L - 2.0 * a) * (L + 2.0 * a) * (2.0 * a - L * t2) * (2.0 * a + L * t2) / (t2 * t2)
+    return max(0.0, num) / (2.0 * L * (2.0 * a * s + L * L))
+
+
+def _foot_from_b(L: float, th: float, b: float, d: float) -> float:
+    """X = FC1 given the coupler b (d = AC2 − AC1): X = ((2b·d)² − L⁴)/(2L(2b·d + L²)) with the numerator
+    (4b² − L²)·tan²(θ/2)·(L·cot(θ/2) − 2b)(L·cot(θ/2) + 2b): zero at Q (b = (L/2)·cot(θ/2))."""
+    t2 = math.tan(th / 2.0)
+    num = (2.0 * b - L) * (2.0 * b + L) * t2 * t2 * (L / t2 - 2.0 * b) * (L / t2 + 2.0 * b)
+    return max(0.0, num) / (2.0 * L * (2.0 * b * d + L * L))
+
+
+def _gamma_min(u: float, v: float, e: float, X: float) -> float:
+    """γmin (deg) of the crank-slider with AC1 = u, AC2 = v, offset e and FC1 = X: the crank perpendicular
+    to the guide away from it, cos γ = (a + e)/b, with b − a − e = u − e = X²/(u + e) (never u − e itself,
+    which cancels near the end Q of the arc) and b + a + e = v + e."""
+    a = (v - u) / 2.0
+    gap = X * X / (u + e) if u + e > 0 else 0.0
+    return math.degrees(math.atan2(math.sqrt(gap * (v + e)), a + e))
 
 
 def crank_slider_design(K: float, H: float, *, e: float | None = None, AB: float | None = None,
@@ -52,7 +95,8 @@ def crank_slider_design(K: float, H: float, *, e: float | None = None, AB: float
 
     The pivot A lies at height e above the guide and to the outside of the stroke (the foot of A is not
     between C1 and C2); the feasible ranges are 0 < e ≤ H·cot θ, (H/2)·tan(θ/2) ≤ AB < H/2 and
-    H/2 < BC ≤ (H/2)·cot(θ/2). Raises NotAMechanism outside them.
+    H/2 < BC ≤ (H/2)·cot(θ/2). Raises NotAMechanism outside them. γmin comes from the distance FC1 of C1
+    from the foot of A, in a closed form of the given condition that vanishes at Q without cancellation.
     """
     th = math.radians(theta_from_k(K))
     if not 0.0 < th < math.pi / 2:
@@ -61,21 +105,24 @@ def crank_slider_design(K: float, H: float, *, e: float | None = None, AB: float
         if not 0.0 < e <= H / math.tan(th) * (1 + 1e-12):
             raise NotAMechanism(f"e = {e:g} outside (0, H·cot θ = {H / math.tan(th):g}]")
         u, v = _sides_from_e(H, th, e)
+        X = _foot_from_e(H, th, e)
     elif AB is not None:
         lo, hi = H / 2 * math.tan(th / 2), H / 2
         if not lo * (1 - 1e-12) <= AB < hi:
             raise NotAMechanism(f"AB = {AB:g} outside [H/2·tan(θ/2) = {lo:g}, H/2 = {hi:g})")
         u, v = _sides_from_a(H, th, AB)
+        X = _foot_from_a(H, th, AB, u + v)
     elif BC is not None:
         lo, hi = H / 2, H / 2 / math.tan(th / 2)
         if not lo < BC <= hi * (1 + 1e-12):
             raise NotAMechanism(f"BC = {BC:g} outside (H/2 = {lo:g}, H/2·cot(θ/2) = {hi:g}]")
         u, v = _sides_from_b(H, th, BC)
+        X = _foot_from_b(H, th, BC, v - u)
     else:
         raise NotAMechanism("give exactly one of e, AB, BC")
     a, b = (v - u) / 2.0, (v + u) / 2.0
     ecc = u * v * math.sin(th) / H
-    gamma = math.degrees(math.atan2(math.sqrt(max(0.0, (b - a - ecc) * (b + a + ecc))), a + ecc))
+    gamma = _gamma_min(u, v, ecc, X)
     return {"AB": a, "BC": b, "e": ecc, "theta": math.degrees(th), "K": K, "alpha_max": 90.0 - gamma,
             "gamma_min": gamma, "AC1": u, "AC2": v}
 
@@ -200,7 +247,9 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
 
     Valid by :func:`rocker_design_valid`: AB is a crank by Grashof and the two extremes lie on one side of
     the frame line AD (otherwise the linkage's real extreme positions are not c1 and c2). Each solution gives
-    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage.
+    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage; ψ is
+    ∠c1Dc2 of the given positions (read back from the designed lengths it would lose an extreme position
+    that lies within rounding of the frame line).
     """
     from .linkages import crank_rocker_extremes
 
@@ -216,8 +265,9 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
         if not rocker_design_valid(a, b, CD, ad, h1, h2):
             continue
         ext = crank_rocker_extremes(a, b, CD, ad)
+        psi = math.degrees(math.atan2(abs(c1[0] * c2[1] - c1[1] * c2[0]), c1[0] * c2[0] + c1[1] * c2[1]))
         sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),
-                     "theta": ext["theta"], "K": K, "psi": ext["psi"], "gamma_min": ext["gamma_min"]})
+                     "theta": ext["theta"], "K": K, "psi": psi, "gamma_min": ext["gamma_min"]})
     return sols
 
 
@@ -262,18 +312,34 @@ def shaper_design(K: float, H: float, *, AC: float | None = None, AB: float | No
 
 
 # ---------------------------------------------------------------------------------------------- optimum
+def _working_parts(H: float, th: float, a: float) -> tuple[float, float, float, float, float, float]:
+    """(γ_fold, γ_near in radians, u, v, e, X) of the crank-slider with crank ``a`` on the θ-circle.
+
+    γ_fold = atan2(X, e) at the folded position (√(u² − e²) is X itself); γ_near with the crank
+    perpendicular to the guide towards it, cos γ = |a − e|/b, where b − |a − e| is u + e or v − e exactly."""
+    u, v = _sides_from_a(H, th, a)
+    e = u * v * math.sin(th) / H
+    X = _foot_from_a(H, th, a, u + v)
+    b = (u + v) / 2.0
+    d = abs(a - e)
+    near_gap = u + e if a >= e else v - e              # b − |a − e|
+    g_fold = math.atan2(X, e)
+    g_near = math.atan2(math.sqrt(max(0.0, near_gap * (b + d))), d)
+    return g_fold, g_near, u, v, e, X
+
+
 def working_stroke_gamma(K: float, H: float, a: float) -> tuple[float, float, float, float]:
     """(γ_w,min, BC, e, γmin) of the crank-slider with crank ``a`` on the θ-circle: the working (slow) stroke's
-    smallest transmission angle is the smaller of the one at the folded position, atan2(√(u² − e²), e), and
-    the one with the crank perpendicular to the guide towards it, acos(|a − e| / b)."""
+    smallest transmission angle is the smaller of the one at the folded position, atan2(FC1, e), and
+    the one with the crank perpendicular to the guide towards it, acos(|a − e| / b); γmin of the cycle by
+    :func:`_gamma_min` (no cancellation in b − a − e).
+
+    >>> [round(x, 6) for x in working_stroke_gamma(1.5, 100, 48.593)]
+    [49.562104, 61.757413, 8.538747, 22.316648]
+    """
     th = math.radians(theta_from_k(K))
-    u, v = _sides_from_a(H, th, a)
-    b, e = (u + v) / 2, u * v * math.sin(th) / H
-    g_fold = math.degrees(math.atan2(math.sqrt(max(0.0, (u - e) * (u + e))), e))
-    d = abs(a - e)
-    g_near = math.degrees(math.atan2(math.sqrt(max(0.0, (b - d) * (b + d))), d))
-    g_glob = math.degrees(math.atan2(math.sqrt(max(0.0, (b - a - e) * (b + a + e))), a + e))
-    return min(g_fold, g_near), b, e, g_glob
+    g_fold, g_near, u, v, e, X = _working_parts(H, th, a)
+    return math.degrees(min(g_fold, g_near)), (u + v) / 2.0, e, _gamma_min(u, v, e, X)
 
 
 def crank_slider_best(K: float, H: float, *, e_min: float = 0.0, e_max: float = math.inf) -> dict[str, float]:
@@ -289,24 +355,17 @@ def crank_slider_best(K: float, H: float, *, e_min: float = 0.0, e_max: float = 
     th = math.radians(theta_from_k(K))
     lo, hi = H / 2 * math.tan(th / 2), H / 2
 
-    def parts(a: float) -> tuple[float, float]:
-        u, v = _sides_from_a(H, th, a)
-        b, e = (u + v) / 2, u * v * math.sin(th) / H
-        d = abs(a - e)
-        return (math.degrees(math.atan2(math.sqrt(max(0.0, (u - e) * (u + e))), e)),
-                math.degrees(math.atan2(math.sqrt(max(0.0, (b - d) * (b + d))), d)))
-
     x0, x1 = lo * (1 + 1e-15), hi * (1 - 1e-15)
     for _ in range(300):
         m = (x0 + x1) / 2
-        f, n = parts(m)
+        f, n = _working_parts(H, th, m)[:2]
         if f < n:
             x0 = m
         else:
             x1 = m
     a = (x0 + x1) / 2
     # offsets decrease from e(lo) to 0 as a grows: clamp to the allowed band
-    e_of = lambda x: working_stroke_gamma(K, H, x)[2]  # noqa: E731
+    e_of = lambda x: _working_parts(H, th, x)[4]  # noqa: E731
     if e_of(a) > e_max or e_of(a) < e_min:
         target = e_max if e_of(a) > e_max else e_min
         y0, y1 = lo * (1 + 1e-15), hi * (1 - 1e-15)

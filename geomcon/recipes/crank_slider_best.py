@@ -22,7 +22,8 @@ from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
 from .crank_slider import construct as extremes_construct
 from .crank_slider_design import admissible_arc, finish_from_A
-from .theta_circle import K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to, refuse_tiny_theta
+from .theta_circle import (K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to, arc_point_from_end,
+                           refuse_tiny_theta)
 
 GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1.00064 ≤ K ≤ 2.99745 (θ ≤ 89.94°: the admissible arc QC1 is "
@@ -59,26 +60,37 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
 
 def working_gamma(A: Point, C1: Point, C2: Point) -> float:
     """γ_w,min (deg) for pivot A: the smaller transmission angle at the folded position and with the crank
-    perpendicular to the guide, towards it (the guide through C1 and C2 horizontal)."""
+    perpendicular to the guide, towards it (the guide through C1 and C2 horizontal). At the folded position
+    tan γ = FC1/e (F the foot of A); with the crank towards the guide cos γ = |a − e|/b, and b − |a − e| is
+    AC1 + e or AC2 − e, formed as such (no cancellation when the rod is nearly along the crank)."""
     u, v = abs(A - C1), abs(A - C2)
     a, b, e = (v - u) / 2, (v + u) / 2, abs(A.y - C1.y)
-    g_fold = math.atan2(math.sqrt(max(0.0, (u - e) * (u + e))), e)
+    g_fold = math.atan2(abs(A.x - C1.x), e)
     d = abs(a - e)
-    g_near = math.atan2(math.sqrt(max(0.0, (b - d) * (b + d))), d)
+    gap = u + e if a >= e else v - e
+    g_near = math.atan2(math.sqrt(max(0.0, gap * (b + d))), d)
     return math.degrees(min(g_fold, g_near))
 
 
 def best_on_arc(k, Q: Point, C1: Point, C2: Point, e_min: float, e_max: float | None) -> Point:
-    """A* on the arc QC1: golden-section search of :func:`working_gamma` within the offset band."""
+    """A* on the arc QC1: golden-section search of :func:`working_gamma` within the offset band.
+
+    Points are placed back from C1 along the arc (:func:`arc_point_from_end`, parameter s = 0 at C1 and 1 at
+    Q): near θ = 90° A lies within 1e-6 of the stroke from C1, where points formed from the circle's centre
+    would carry the centre's rounding (ε·H) into FC1 and misplace the kink of γ_w,min. The search runs to
+    the resolution of s itself (relative, not 4e-16 of the arc)."""
     arc = arc_from_to(k, Q, C1)
 
-    def e_at(t: float) -> float:
-        return abs(arc.at(t).y - C1.y)
+    def at(s: float) -> Point:
+        return arc_point_from_end(arc, C1, s)
 
-    # e falls from Q (t = 0) to C1 (t = 1): the band e_min ≤ e ≤ e_max is an interval of t
-    t0 = crossing(lambda t: e_at(t) > e_max, 0.0, 1.0) if e_max is not None and e_max < e_at(0.0) else 0.0
-    t1 = crossing(lambda t: e_at(t) > e_min, 0.0, 1.0) if e_min > 0 else 1.0
-    return arc.at(maximise(lambda t: working_gamma(arc.at(t), C1, C2), t0, t1))
+    def e_at(s: float) -> float:
+        return abs(at(s).y - C1.y)
+
+    # e rises from C1 (s = 0) to Q (s = 1): the band e_min ≤ e ≤ e_max is an interval of s
+    s1 = crossing(lambda s: e_at(s) <= e_max, 0.0, 1.0) if e_max is not None and e_max < e_at(1.0) else 1.0
+    s0 = crossing(lambda s: e_at(s) < e_min, 0.0, 1.0) if e_min > 0 else 0.0
+    return at(maximise(lambda s: working_gamma(at(s), C1, C2), s0, s1, width=0.0, iterations=400))
 
 
 def construct(g: Mapping[str, Any]) -> Construction:

@@ -98,6 +98,22 @@ def arc_from_to(circle: Circle, start: Point, end: Point) -> Arc:
     return Arc(circle.center, circle.r, a0, sweep)
 
 
+def arc_point_from_end(arc: Arc, end: Point, s: float) -> Point:
+    """The point of ``arc`` a fraction ``s`` of its sweep back from its end ``end`` (s = 0: ``end``), formed as
+    ``end`` plus the chord 2r·sin(δ/2) (δ = s·sweep): accurate relative to its distance from ``end`` — the
+    centre's coordinates, r from ``end``, are not subtracted, so a point 1e-9 of r from the end keeps its digits.
+
+    >>> from geomcon.geometry import Arc
+    >>> p = arc_point_from_end(Arc(Point(0.0, 0.0), 1.0, 0.0, math.pi / 2), Point(0.0, 1.0), 0.5)
+    >>> round(p.x, 12), round(p.y, 12)
+    (0.707106781187, 0.707106781187)
+    """
+    half = s * arc.sweep / 2.0
+    phi = polar_angle(arc.center, end) - half
+    chord = 2.0 * arc.r * math.sin(half)
+    return Point(end.x + chord * math.sin(phi), end.y - chord * math.cos(phi))
+
+
 def theta_of_k(K: float) -> float:
     """θ = 180°(K − 1)/(K + 1) (a step operation)."""
     from ..analytic.linkages import theta_from_k
@@ -138,5 +154,5 @@ def add_seeing_circle(sc: Scene, key: str, C1: Ref, C2: Ref, beta: Ref, side: in
     return sc.add(key, seeing_circle, C1, C2, beta, side, caption=caption)
 
 
-__all__ = ["add_seeing_circle", "add_theta_circle", "arc_from_to", "meet_lines", "perpendicular_at", "ray_from",
+__all__ = ["add_seeing_circle", "add_theta_circle", "arc_from_to", "arc_point_from_end", "meet_lines", "perpendicular_at", "ray_from",
            "seeing_circle", "Role"]
