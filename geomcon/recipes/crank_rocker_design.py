@@ -350,7 +350,7 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
     A = sc.given("A_0", Point(0.0, 0.0), style="pivot", label="A", caption=("Fixed pivot A", "固定铰链 A"))
     D = sc.given("D", Point(AD, 0.0), style="pivot", caption=(f"Fixed pivot D with AD = {AD:g}", f"取 AD = {AD:g} 得固定铰链 D"))
     sc.add("AD_frame", segment, A, D, role=Role.GIVEN, style="frame", caption=("The frame AD", "机架 AD"))
-    c = Point(AD + CD * math.cos(math.radians(180.0 - phi)), CD * math.sin(math.radians(180.0 - phi)))
+    c = Point(AD - CD * math.cos(math.radians(phi)), CD * math.sin(math.radians(phi)))   # not 180° − φ: keeps a tiny φ
     C1 = sc.given("C1", c, style="joint", caption=(f"The given extreme position DC1 at ∠ADC1 = {phi:g}°",
                                                    f"作已知极限位置 DC1,∠ADC1 = {phi:g}°"))
     add_bar(sc, "DC1", D, C1, ("Rocker DC1", "摇杆 DC1"), role=Role.GIVEN)
@@ -448,7 +448,11 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """Frame given: |AC2| = w from w² − 2w·AD·cos β + AD² − CD² = 0 with β = ∠C1AD ± θ (law of cosines);
-    valid by :func:`geomcon.analytic.design_by_k.rocker_design_valid`."""
+    valid by :func:`geomcon.analytic.design_by_k.rocker_design_valid`.
+
+    ψ = |∠ADC2 − ∠ADC1| from the given φ = ∠ADC1 and C2 = w·(cos β, sin β) itself, not from the designed
+    lengths: with C1 within 1e-8 of the frame line (φ ≈ 4e-7°) AC1 = |AD − CD| + O(φ²) holds φ only below
+    its last bit, and ψ read back from AB, BC, CD, AD (the extremes' law of cosines) loses φ entirely."""
     from ..analytic.linkages import crank_rocker_extremes
     CD, AD, phi, K = g["CD"], g["AD"], g["phi"], g["K"]
     th = theta_from_k(K)
@@ -456,6 +460,7 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
     y1 = CD * math.sin(math.radians(phi))
     w1 = math.hypot(x1, y1)
     alpha1 = math.degrees(math.atan2(y1, x1))           # ∠C1AD, C1 above the frame
+    adc1 = math.degrees(math.atan2(abs(y1), CD * math.cos(math.radians(phi))))   # φ itself, folded into [0°, 180°]
     out = []
     for beta in ({alpha1 + th, alpha1 - th} if th else {alpha1}):
         cb = math.cos(math.radians(beta))
@@ -471,7 +476,9 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
             if not rocker_design_valid(a, b, CD, AD, y1, w * math.sin(math.radians(beta))):
                 continue
             ext = crank_rocker_extremes(a, b, CD, AD)
-            out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": ext["psi"], "gamma_min": ext["gamma_min"],
+            y2 = w * math.sin(math.radians(beta))
+            adc2 = math.degrees(math.atan2(abs(y2), AD - w * math.cos(math.radians(beta))))
+            out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": abs(adc2 - adc1), "gamma_min": ext["gamma_min"],
                         "theta": th, "K": K, "C1_folded": float(w1 < w), "A_near": 1.0})
     return out
 
