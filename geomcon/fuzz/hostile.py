@@ -65,7 +65,10 @@ def m_scale(data: dict, rng: random.Random) -> str:
         if isinstance(v, bool) or isinstance(v, str):
             return v
         if isinstance(v, (int, float)):
-            return v * f
+            try:
+                return v * f
+            except OverflowError:           # an integer beyond any float stays as it is
+                return v
         if isinstance(v, list):
             return [scaled(x) for x in v]
         if isinstance(v, dict):
