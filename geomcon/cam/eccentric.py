@@ -206,8 +206,9 @@ class Translating(_Turning):
     def state(self, phi: float, omega: float | None = None) -> dict[str, float]:
         """δ, s, α (and v = ω·ds/dδ, mm/s with ω in rad/s) at the position φ."""
         out = {"delta": self.delta_of(phi), "s": self.y(phi) - self.y_low, "alpha": self.alpha(phi)}
-        if omega is not None:
-            out["v"] = self.sense * omega * self.dy(phi)    # ds/dt = dy/dφ · dφ/dt, dφ/dt = ±ω
+        if omega is not None:                               # ds/dt = dy/dφ · dφ/dt, dφ/dt = ±ω; at rest at the
+            rest = out["delta"] in (0.0, self.rise_angle)   # ends of the stroke (dy/dφ there is roundoff)
+            out["v"] = 0.0 if rest else self.sense * omega * self.dy(phi)
         return out
 
     # -------------------------------------------------------------- extremes of α

@@ -253,7 +253,8 @@ def eccentric(rng: random.Random) -> ValidCase:
     if rng.random() < 0.2:
         given["turn"] = round(rng.uniform(-180.0, 180.0), 4)
     if follower == "flat":
-        expect.update(r0=(R - OA, 1e-9 * R), h=(2 * OA, 1e-9 * R), rise_angle=(180.0, 1e-9), alpha=(0.0, 0.0))
+        expect.update(r0=(R - OA, 1e-9 * R), h=(2 * OA, 1e-9 * R), rise_angle=(180.0, 1e-9 * R / (R - OA)),
+                      alpha=(0.0, 0.0))
     else:
         hi_, lo_ = math.sqrt((Rp + OA) ** 2 - e * e), math.sqrt((Rp - OA) ** 2 - e * e)
         expect.update(r0=(r0, 1e-9 * R), h=(hi_ - lo_, 1e-8 * R))

@@ -47,6 +47,7 @@ from ..cam.eccentric import Oscillating, Translating, check_disc
 from ..cam.profile import maximise
 from ..errors import NotAMechanism
 from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, circle, circle_circle, line_circle, line_line,
+                        point_along,
                         line_through, rotate, segment, thales_circle)
 from ..geometry.measure import angle_at, signed_angle
 from ..scene import Ref, Role, Scene, marks
@@ -202,9 +203,13 @@ def state_A(R: float, E: float, Rp: float, e: float, sense: float, flat: bool, s
     return rotate(A, O, sense * math.radians(turn))
 
 
-def velocity(A: Point, B: Point, sense: float, omega: float) -> float:
+def velocity(A: Point, B: Point, sense: float, omega: float, delta: float, rise: float) -> float:
     """v = ω·OP with P where the normal AB meets the line through O perpendicular to the guide (the
-    relative instant centre); positive when that cam point moves up (away from O)."""
+    relative instant centre); positive when that cam point moves up (away from O). At the ends of the
+    stroke (δ = 0 or the rise angle, as measured) the follower is at rest: P is O itself, and the
+    intersection would only give roundoff of the cam's size."""
+    if delta in (0.0, rise):
+        return 0.0
     P = line_line(line_through(A, B) if A != B else Line(A, UP), Line(Point(0.0, 0.0), Point(1.0, 0.0)))[0]
     return sense * omega * P.x
 
@@ -244,20 +249,29 @@ def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool) -> tupl
     """The line of centres AO meets the pitch circle at B0 (nearest O: r0 = OB0, the base circle) and B1
     (farthest); for a roller, the disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
     lineAO = sc.add("lineAO", line_through, A, O, style="construction", caption=("Draw the line of centres AO", "作中心线 AO"))
-    B0 = sc.add("B0", line_circle, lineAO, pitch, branch=Ahead(A, O), style="point", label="B0",
-                caption=("AO extended meets the pitch curve at B0, its point nearest O", "AO 延长交理论廓线于 B0(离 O 最近)"))
+    # B0, E0 and B1 are laid off from O along the line of centres (|OB0| = Rp − OA …): the same points as the
+    # line meeting the circles, but their direction from O is exact even when OB0 ≪ R (OA → R), where an
+    # intersection's ε·R error would turn OB0 by ε·R/r0 and with it every angle measured from B0
+    Rp = sc.add("Rp_len", lambda c: c.r, pitch, visible=False)
+    OA = sc.add("OA_len", length, O, A, visible=False)
+    away = sc.add("A_opposite", lambda o, a: o + (o - a), O, A, visible=False)
+    B0 = sc.add("B0", point_along, O, away, sc.add("OB0_len", difference, Rp, OA, visible=False), style="point",
+                label="B0", caption=("AO extended meets the pitch curve at B0, its point nearest O (OB0 = Rp − OA)",
+                                     "AO 延长交理论廓线于 B0(离 O 最近,OB0 = Rp − OA)"))
     r0 = sc.add("r0", length, O, B0, role=Role.MEASUREMENT, unit="mm",
                 caption=("r0 = OB0: the base circle", "基圆半径 r0 = OB0"))
     sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
     if roller:
-        E0 = sc.add("E0", line_circle, lineAO, Ref("disc"), branch=Ahead(A, O), style="point", label="E0",
-                    caption=("AO extended meets the disc at E0", "AO 延长交实际廓线于 E0"))
+        R = sc.add("R_len", lambda c: c.r, Ref("disc"), visible=False)
+        E0 = sc.add("E0", point_along, O, away, sc.add("OE0_len", difference, R, OA, visible=False), style="point",
+                    label="E0", caption=("AO extended meets the disc at E0", "AO 延长交实际廓线于 E0"))
         sc.add("r0_actual", length, O, E0, role=Role.MEASUREMENT, unit="mm",
                caption=("r0 of the actual profile = OE0 = R − OA", "实际廓线基圆半径 OE0 = R − OA"))
     else:
         sc.add("r0_actual", length, O, B0, role=Role.MEASUREMENT, unit="mm", visible=False)
-    B1 = sc.add("B1", line_circle, lineAO, pitch, branch=Ahead(O, A), style="point", label="B1",
-                caption=("OA extended meets it at B1, its farthest point", "OA 延长交理论廓线于 B1(离 O 最远)"))
+    B1 = sc.add("B1", point_along, O, A, sc.add("OB1_len", lambda r, d: r + d, Rp, OA, visible=False), style="point",
+                label="B1", caption=("OA extended meets it at B1, its farthest point (OB1 = Rp + OA)",
+                                     "OA 延长交理论廓线于 B1(离 O 最远,OB1 = Rp + OA)"))
     return B0, B1
 
 
@@ -347,7 +361,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
            role=Role.ANNOTATION, style="dim", caption=("Dimension s from the lowest position", "标注位移 s"))
     answers = {n: n for n in ("r0", "r0_actual", "h", "rise_angle", "return_angle", "delta", "s", "alpha")}
     if g.get("omega") is not None:
-        sc.add("v", velocity, A, B, sense, g["omega"], role=Role.MEASUREMENT, unit="",
+        sc.add("v", velocity, A, B, sense, g["omega"], Ref("delta"), Ref("rise_angle"), role=Role.MEASUREMENT, unit="",
                caption=("Instant centre P: AB meets the line through O ⊥ the guide; v = ω·OP",
                         "瞬心 P:AB 与过 O 垂直于导路的直线之交点;v = ω·OP"))
         answers["v"] = "v"
@@ -445,7 +459,7 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
     answers.update({"alpha_max_rise": "alpha", "alpha_max_return": "alpha", "alpha_min_rise": "alpha",
                     "alpha_max": "alpha"})
     if g.get("omega") is not None:
-        sc.add("v", velocity, A, K, sense, g["omega"], role=Role.MEASUREMENT, unit="",
+        sc.add("v", velocity, A, K, sense, g["omega"], Ref("delta"), Ref("rise_angle"), role=Role.MEASUREMENT, unit="",
                caption=("Instant centre P below A on the line through O ⊥ the guide; v = ω·OP",
                         "瞬心 P(法线与过 O 垂直导路之线的交点);v = ω·OP"))
         answers["v"] = "v"
