@@ -12,7 +12,7 @@ from geomcon.cam.base_radius import ArmProgram, ArmTwin, arm_a_min, arm_best, be
 from geomcon.cam.oscillating import OscillatingCam, psi0_rad
 from geomcon.cam.program import parse_program
 from geomcon.cam.translating import TranslatingCam
-from geomcon.errors import NotAMechanism
+from geomcon.errors import GeomconError, NotAMechanism
 from geomcon.geometry import Point, rotate
 from geomcon.problems import load_problem, problem_from_dict
 from geomcon.recipes.cam_base_radius import arm_position, velocity_image
@@ -126,7 +126,9 @@ def test_answers_alone_do_not_draw():
 
 @pytest.mark.parametrize("given, words", [
     (dict(h=20, program=[{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 240}],
-          alpha_allow=95), ["alpha_allow = 95°"]),
+          alpha_allow=95), ["'alpha_allow'", "≤ 90", "95"]),
+    (dict(h=20, program=[{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 240}],
+          alpha_allow=90), ["alpha_allow = 90°", "(0°, 90°)"]),
     (dict(h=20, program=[{"kind": "rise", "angle": 120, "law": "cosine"}], alpha_allow=30), ["full turn"]),
     (dict(motion="oscillating", h=20, program=ARM_PROGRAM, alpha_allow=35), ["needs L"]),
     (dict(motion="oscillating", L=100, h=20, program=ARM_PROGRAM, alpha_allow=35, e=5.0), ["e = 5", "no offset"]),
@@ -135,7 +137,7 @@ def test_answers_alone_do_not_draw():
     (dict(h=20, program=ARM_PROGRAM, alpha_allow=30, L=100), ["L = 100 is given for a translating follower"]),
 ])
 def test_refusals(given, words):
-    with pytest.raises(NotAMechanism) as exc:
+    with pytest.raises(GeomconError) as exc:
         _solve(**given).answers
     assert "\n" not in str(exc.value)
     for w in words:

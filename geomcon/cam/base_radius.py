@@ -129,6 +129,11 @@ def candidates(program: Program, h: float, lim: Limit) -> tuple[np.ndarray, np.n
     return s, v
 
 
+S0_MIN = 1e-9
+"""Smallest height s0 of B0 above O, in units of h: below it the base circle all but touches the offset
+circle (α_allow within about 0.001° of 90° makes the limit no constraint)."""
+
+
 def s0_needed(cands: list[tuple[np.ndarray, np.ndarray, float]], ke: float) -> tuple[float, float]:
     """(s0(e), ds0/de·k) for ``ke`` = k·e: the largest |s′ − ke|/t − s and its slope in ke at the maximiser."""
     best, slope = -math.inf, 0.0
@@ -164,9 +169,10 @@ def best_base(program: Program, h: float, *, alpha_allow: float, rotation: str =
     else:
         ke = k * e
     s0 = s0_needed(cands, ke)[0]
-    if not s0 > 1e-9 * h:
-        raise NotAMechanism(f"the best centre puts B0 at s0 = {s0:.6g} mm from the offset circle's tangent point "
-                            f"(e = {k * ke:.6g} mm): no proper cam; give the offset e")
+    if not s0 > S0_MIN * h:
+        raise NotAMechanism(f"the {'best ' if e is None else ''}centre puts B0 at s0 = {s0:.6g} mm ≤ {S0_MIN:g}·h "
+                            f"from the offset circle's tangent point (e = {k * ke:.6g} mm): no proper cam — the limit "
+                            f"α_allow = {alpha_allow:g}° hardly constrains it" + ("; give the offset e" if e is None else ""))
     return {"r0": math.hypot(ke, s0), "e": k * ke, "s0": s0}
 
 
@@ -286,6 +292,11 @@ def _beta(mu: np.ndarray, dmu: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return beta, -dmu / np.sqrt(np.maximum(1.0 - mu * mu, 1e-300))
 
 
+ARC_TOL = 1e-13
+"""Radians by which the ends of an admissible arc may cross (rounding at a tangency) and still count as one
+point: the arm's angle is then determined to this, far below any drawing or check."""
+
+
 @dataclass(frozen=True)
 class ArcBounds:
     """What the wedges leave of the circle of radius ``a`` about A0: arm angles ψ0 (rad, from A0B0 towards
@@ -300,8 +311,9 @@ class ArcBounds:
 
     @property
     def feasible(self) -> bool:
-        """True when the arc is not empty."""
-        return self.lo <= self.hi
+        """True when the arc is not empty; an arc shorter than :data:`ARC_TOL` the wrong way round counts as
+        the single point where the circle touches the region (the arcs' ends are exact to rounding)."""
+        return self.lo <= self.hi + ARC_TOL
 
 
 def arc_bounds(arm: ArmProgram, L: float, a: float, parts: list[ArmPart]) -> ArcBounds:
@@ -456,7 +468,23 @@ def best_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: float)
         if sign(hi) > 0:
             break
         lo, hi = hi, 2.0 * hi
-    return bisect_root(sign, lo, hi)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if sign(mid) > 0:
+            hi = mid
+        else:
+            lo = mid
+    ends = [b for b in (arc_bounds(arm, L, x, parts) for x in (lo, hi)) if b.feasible]
+    if not ends:
+        return hi
+    return min(ends, key=lambda b: (b.a - L) ** 2 + 4.0 * b.a * L * math.sin(b.lo / 2) ** 2).a
+
+
+PSI0_MIN = 1e-9
+"""Smallest initial arm angle (rad) of a designed cam: below it O lies on the arm's line A0B0 (the pressure
+angle is then no constraint: α_allow → 90°, or an all but vanishing stroke)."""
 
 
 def arm_psi0(arm: ArmProgram, L: float, a: float, lims: list[Limit]) -> tuple[float, str, float, float]:
@@ -497,9 +525,10 @@ def arm_best(program: Program, h: float, L: float, *, alpha_allow: float, rotati
         raise NotAMechanism(f"at a = {a:.6g} mm no arm angle ψ0 keeps α within the limit at every position: the "
                             f"wedges leave ψ0 ≥ {math.degrees(b.lo):.6g}° and ψ0 ≤ {math.degrees(b.hi):.6g}°")
     psi0 = b.lo
-    if not psi0 > 1e-9:
-        raise NotAMechanism(f"the best centre puts O on the arm's line A0B0 (ψ0 = {math.degrees(psi0):.6g}°, "
-                            f"a = {a:.6g} mm): no proper cam")
+    if not psi0 > PSI0_MIN:
+        raise NotAMechanism(f"the best centre puts O on the arm's line A0B0 (ψ0 = {math.degrees(psi0):.6g}° ≤ "
+                            f"{math.degrees(PSI0_MIN):.3g}°, a = {a:.6g} mm): no proper cam — the limit α_allow = "
+                            f"{alpha_allow:g}° hardly constrains it; give a")
     r0 = math.sqrt((a - L) ** 2 + 4.0 * a * L * math.sin(psi0 / 2) ** 2)
     return {"r0": r0, "a": a, "psi0": math.degrees(psi0), "part": b.part, "delta": b.delta}
 
@@ -609,28 +638,64 @@ class ArmTwin:
         high = np.minimum(np.where(p < 0, rp, inf), np.where(q > 0, rq, inf))
         return low, high
 
-    def ray(self, theta: float) -> tuple[float, float, tuple]:
-        """(a_in, a_out, (part index, fraction) of the position binding a_in) on the ray at ψ0 = θ."""
-        a_in, a_out, bind = 0.0, math.inf, None
+    def ray(self, theta: float) -> tuple[float, float, tuple, tuple]:
+        """(a_in, a_out, (part index, fraction) of the positions binding a_in and a_out) on the ray at
+        ψ0 = θ."""
+        a_in, a_out, bind_in, bind_out = 0.0, math.inf, None, None
         for k, (_, seg, level, t, xs, grid) in enumerate(self.parts):
             def both(z, seg=seg, level=level, t=t):
                 low, high = self._ray(theta, t, *self._mot(seg, level, z))
                 return np.array([low, -high])
-            (v, x), (w, _) = _golden_tops(both, xs, np.array(self._ray(theta, t, *grid)) * [[1.0], [-1.0]])
+            (v, x), (w, y) = _golden_tops(both, xs, np.array(self._ray(theta, t, *grid)) * [[1.0], [-1.0]])
             if v > a_in:
-                a_in, bind = v, (k, x)
-            a_out = min(a_out, -w)
-        return a_in, a_out, bind
+                a_in, bind_in = v, (k, x)
+            if -w < a_out:
+                a_out, bind_out = -w, (k, y)
+        return a_in, a_out, bind_in, bind_out
 
-    def _d_in(self, theta: float, bind: tuple) -> float:
-        """∂a_in/∂ψ0 with the binding position held: −c·p′/p² (or with q)."""
+    def _bound_slope(self, theta: float, k: int, x: float, upper: bool) -> float:
+        """d/dδ of the binding bound c/p (or c/q) at fraction x of part k: (c′p − c·p′)/p², c′ = −εLψ″,
+        p′ = (−sin φ ± t cos φ)·ψ′ — the lower bound's largest, the upper's smallest of the two."""
+        _, seg, level, t, _, _ = self.parts[k]
+        m = segment_motion(seg, level, self.h, [x])
+        phi = theta + float(m.psi[0])
+        c, dc = self.L * (1.0 - self.motion.eps * float(m.d1[0])), -self.motion.eps * self.L * float(m.d2[0])
+        cs, sn, w = math.cos(phi), math.sin(phi), float(m.d1[0])
+        opts = []
+        for p, dp, ok in ((cs + t * sn, (-sn + t * cs) * w, lambda v: v < 0 if upper else v > 0),
+                          (cs - t * sn, (-sn - t * cs) * w, lambda v: v > 0 if upper else v < 0)):
+            if ok(p):
+                opts.append((c / p, (dc * p - c * dp) / (p * p)))
+        return (min if upper else max)(opts)[1] if opts else 0.0
+
+    def _polish(self, theta: float, bind: tuple | None, upper: bool) -> tuple | None:
+        """The binding position located to :data:`ROOT_TOL` by regula falsi on the bound's exact slope
+        (golden section alone leaves a flat peak's place uncertain by about √ε, and d a/dψ0 with it)."""
+        if bind is None:
+            return None
+        k, x = bind
+        sign = -1.0 if upper else 1.0
+        f = lambda z: sign * self._bound_slope(theta, k, z, upper)
+        w = 2.0 / TWIN_GRID
+        lo, hi = max(x - w, 0.0), min(x + w, 1.0)
+        flo, fhi = f(lo), f(hi)
+        if not (flo > 0 > fhi):
+            return bind
+        return k, _falsi(f, lo, hi, flo, fhi, ROOT_TOL)
+
+    def _d_bound(self, theta: float, bind: tuple, upper: bool) -> float:
+        """∂a/∂ψ0 of the bound a = c/p or c/q binding at ``bind`` (the position held): −c·p′/p²."""
         _, seg, level, t, _, _ = self.parts[bind[0]]
         psi, c = self._mot(seg, level, np.array([bind[1]]))
         phi, c = theta + float(psi[0]), float(c[0])
-        p, q = math.cos(phi) + t * math.sin(phi), math.cos(phi) - t * math.sin(phi)
-        if p > 0 and (q >= 0 or c / p >= c / q):
-            return -c * (-math.sin(phi) + t * math.cos(phi)) / (p * p)
-        return -c * (-math.sin(phi) - t * math.cos(phi)) / (q * q)
+        cs, sn = math.cos(phi), math.sin(phi)
+        p, dp, q, dq = cs + t * sn, -sn + t * cs, cs - t * sn, -sn - t * cs
+        opts = []
+        if (p < 0) if upper else (p > 0):
+            opts.append((c / p, -c * dp / (p * p)))
+        if (q > 0) if upper else (q < 0):
+            opts.append((c / q, -c * dq / (q * q)))
+        return (min if upper else max)(opts)[1] if opts else 0.0
 
     def _best_free(self) -> tuple[float, float]:
         top = math.pi - math.radians(self.h)
@@ -646,7 +711,7 @@ class ArmTwin:
         order = np.argsort(-np.array(score), kind="stable")
         seed = None
         for k in order[:8]:
-            a_in, a_out, _ = self.ray(float(thetas[k]))
+            a_in, a_out, _, _ = self.ray(float(thetas[k]))
             if a_in <= a_out:
                 seed = float(thetas[k])
                 break
@@ -659,17 +724,20 @@ class ArmTwin:
                 return -1.0
             if th >= top:
                 return 1.0
-            a_in, a_out, bind = self.ray(th)
+            a_in, a_out, b_in, b_out = self.ray(th)
             if a_in > a_out:
                 return -1.0 if th < seed else 1.0
             a = min(max(self.L * math.cos(th), a_in), a_out)
-            slope = self._d_in(th, bind) if a == a_in and bind is not None else 0.0
-            if a == a_out and a != a_in:
-                return 1.0 if a * self.L * math.sin(th) > 0 else -1.0   # the far end only grows r0 (rare)
+            if a == a_in and b_in is not None:
+                slope = self._d_bound(th, self._polish(th, b_in, False), upper=False)
+            elif a == a_out and b_out is not None:
+                slope = self._d_bound(th, self._polish(th, b_out, True), upper=True)
+            else:
+                slope = 0.0                                     # the foot of B0 on the ray: r0 = L sin ψ0
             return (a - self.L * math.cos(th)) * slope + a * self.L * math.sin(th)
 
         theta = bisect_root(sign, 0.0, top)
-        a_in, a_out, _ = self.ray(theta)
+        a_in, a_out, _, _ = self.ray(theta)
         return min(max(self.L * math.cos(theta), a_in), a_out), theta
 
     def excess(self, a: float, theta: float) -> float:

@@ -30,11 +30,12 @@ textbook rule rr ≤ 0.8·ρmin (``rr_max``; rr < ρmin is the bare undercut lim
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.base_radius import RR_FACTOR, ArmProgram, ArmTwin, arm_best, arm_psi0, arm_reach, best_base, limits, part_motion
+from ..cam.base_radius import RR_FACTOR, S0_MIN, ArmProgram, ArmTwin, arm_best, arm_psi0, arm_reach, best_base, limits, part_motion
 from ..cam.oscillating import OscillatingCam
 from ..cam.profile import PitchCurve, inverted, maximise, rho_min
 from ..cam.program import Program, parse_program
@@ -48,9 +49,10 @@ from .common import add_angle_mark, add_bar, angle_deg, length
 GIVENS = (
     Quantity("h", "mm", "stroke: mm (translating), or the arm's angular stroke ψmax in degrees (oscillating)"),
     Quantity("program", "table[]", "motion program: rise, dwells, return (a full turn)"),
-    Quantity("alpha_allow", "deg", "allowed pressure angle of the rise"),
-    Quantity("alpha_allow_return", "deg", "allowed pressure angle of the return (unconstrained when absent)",
-             required=False),
+    Quantity("alpha_allow", "deg", "allowed pressure angle of the rise, 0° < α_allow < 90° (an arm needs about "
+             "α_allow > h/2 for the wedges to meet)", maximum=90.0),
+    Quantity("alpha_allow_return", "deg", "allowed pressure angle of the return (unconstrained when absent), "
+             "0° < α < 90°", required=False, maximum=90.0),
     Quantity("rotation", "choice", "sense of rotation of the cam", required=False, default="ccw", minimum=None,
              choices=("ccw", "cw")),
     Quantity("e", "mm", "a fixed offset (> 0: the axis right of O); absent: the best offset", required=False,
@@ -128,7 +130,8 @@ def below_all(p: Point, lines: tuple[Line, ...], scale: float) -> bool:
     """True when p lies on or below every line (the admissible side, away from the curve)."""
     for ln in lines:
         d = ln.direction
-        if p.y - (ln.point.y + (p.x - ln.point.x) * d.y / d.x) > 1e-12 * scale:
+        size = max(scale, abs(p.x), abs(p.y), abs(ln.point.x), abs(ln.point.y))
+        if p.y - (ln.point.y + (p.x - ln.point.x) * d.y / d.x) > 1e-12 * size * (1.0 + abs(d.y / d.x)):
             return False
     return True
 
@@ -160,6 +163,15 @@ def pitch_rho_min(prog: Program, h: float, rotation: str, e: float, s0: float) -
         if seg.law is not None and seg.law.name == "parabolic":
             breaks.append(math.radians(seg.start + seg.angle / 2))
     return rho_min(PitchCurve(fn, tuple(b for b in breaks if 0 < b < 2 * math.pi))).value
+
+
+def height_above(O: Point, h: float, alpha_allow: float) -> float:
+    """s0 = the height of B0 above O; refused at or below S0_MIN·h (the base circle all but touches the
+    offset circle: the limit α_allow hardly constrains the cam)."""
+    if not -O.y > S0_MIN * h:
+        raise NotAMechanism(f"the centre puts B0 at s0 = {-O.y:.6g} mm ≤ {S0_MIN:g}·h from the offset circle's "
+                            f"tangent point: no proper cam — the limit α_allow = {alpha_allow:g}° hardly constrains it")
+    return -O.y
 
 
 # ---------------------------------------------------------------------------- construction
@@ -204,7 +216,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("OB0", segment, O, B0, style="construction", caption=("", ""))
     e = sc.add("e", lambda o: -o.x, O, role=Role.MEASUREMENT, unit="mm",
                caption=("e = the distance of O from the axis (> 0: the axis right of O)", "偏距 e(导路在 O 右侧为正)"))
-    s0 = sc.add("s0", lambda o: -o.y, O, role=Role.MEASUREMENT, unit="mm", caption=("s0 = height of B0 above O",
+    s0 = sc.add("s0", height_above, O, h, g["alpha_allow"], role=Role.MEASUREMENT, unit="mm",
+                caption=("s0 = height of B0 above O",
                                                                                    "s0:B0 在 O 上方的高度"))
     rho = sc.add("rho_min_pitch", pitch_rho_min, prog, h, rotation, e, s0, role=Role.MEASUREMENT, unit="mm",
                  caption=("ρmin of the pitch curve (convex parts, exact derivatives)", "理论廓线最小曲率半径 ρmin"))
@@ -223,7 +236,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     if g.get("motion", "translating") == "oscillating":
         out = ArmTwin(prog, g["h"], g["L"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
                       arm=g.get("arm", "left"), alpha_allow_return=g.get("alpha_allow_return")).best(g.get("a"))
-        cam = arm_cam(g, out["a"], out["r0"])
+        cam = arm_cam(g, out["a"], out["r0"], out["psi0"])
         rho = cam.rho_min(cam.convex_curvature_complex)[0]
         return [{**out, "rho_min_pitch": rho, "rr_max": RR_FACTOR * rho}]
     out = best_base(prog, g["h"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
@@ -237,7 +250,7 @@ def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str
     reached exactly, the other is not exceeded (oscillating: cam.oscillating's α_max)."""
     prog = _program(g)
     if g.get("motion", "translating") == "oscillating":
-        cam = arm_cam(g, ans["a"], ans["r0"])
+        cam = arm_cam(g, ans["a"], ans["r0"], ans["psi0"])
         over = cam.worst_pressure("rise")[0] - g["alpha_allow"]
         if g.get("alpha_allow_return") is not None and prog.ret is not None:
             over = max(over, cam.worst_pressure("return")[0] - g["alpha_allow_return"])
@@ -250,9 +263,22 @@ def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str
 
 
 # ---------------------------------------------------------------------------- oscillating follower
-def arm_cam(g: Mapping[str, Any], a: float, r0: float) -> OscillatingCam:
-    """The designed oscillating cam (centre distance a, base circle r0) of the givens."""
-    return OscillatingCam(a, g["L"], r0, g["h"], _program(g), g.get("rotation", "ccw"), g.get("arm", "left"))
+@dataclass(frozen=True)
+class ArmCamAt(OscillatingCam):
+    """cam.oscillating's cam placed by its initial arm angle ``psi0_deg`` instead of recovering ψ0 from the
+    triangle a, L, r0 (which loses digits when r0 ≪ L or a ≫ L: the designed centre is known by a and ψ0)."""
+
+    psi0_deg: float = 0.0
+
+    @property
+    def psi0(self) -> float:
+        """Initial arm angle ψ0 (rad), as designed."""
+        return math.radians(self.psi0_deg)
+
+
+def arm_cam(g: Mapping[str, Any], a: float, r0: float, psi0: float) -> OscillatingCam:
+    """The designed oscillating cam (centre distance a, base circle r0, initial arm angle ψ0 in degrees)."""
+    return ArmCamAt(a, g["L"], r0, g["h"], _program(g), g.get("rotation", "ccw"), g.get("arm", "left"), psi0)
 
 
 def arm_position(B0: Point, A0: Point, tau: float, psi_deg: float) -> Point:
@@ -404,7 +430,7 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
     psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
                   caption=("ψ0 = ∠OA0B0", "初始摆角 ψ0 = ∠OA0B0"))
     add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
-    rho = sc.add("rho_min_pitch", lambda o_a, r: rho_min(arm_cam(g, o_a, r).pitch_curve()).value, a, r0,
+    rho = sc.add("rho_min_pitch", lambda o_a, r, p: rho_min(arm_cam(g, o_a, r, p).pitch_curve()).value, a, r0, psi0,
                  role=Role.MEASUREMENT, unit="mm", caption=("ρmin of the pitch curve of the designed cam",
                                                             "所得凸轮理论廓线的最小曲率半径 ρmin"))
     sc.add("rr_max", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm",
