@@ -29,11 +29,20 @@ normal (on O's side of the arm). On the circle of radius a about A0 that wedge i
 
 (with a > L·|1 − εψ′|·cos α_allow, else the circle misses the wedge). What is minimised is r0 = OB0, the
 base circle of the pitch curve; r0² = a² + L² − 2aL·cos ψ0 grows with ψ0, so at a given a the answer is the
-smallest admissible ψ0 = max_δ(|β − α_allow| − ψ) (:func:`arm_best`, the construction's route), and with a
-free the a where d(r0²)/da changes sign. The admissible region (an intersection of wedges) is convex, so r0(a)
-is unimodal and the optimum unique; it is often a vertex where two positions bind at once (a kink of r0(a)).
-The twin (:class:`ArmTwin`) never uses the wedges: it measures the largest α of a candidate cam with
-cam.oscillating's complex-tangent route and solves α_max(ψ0) = α_allow by regula falsi.
+smallest admissible ψ0 = max_δ(|β − α_allow| − ψ) (:func:`arc_bounds`, the construction's route), provided it
+does not exceed the arc's upper end min_δ(min(β + α, 2π − β − α) − ψ). With a free: the admissible region (an
+intersection of wedges) is convex, so the distances from A0 at which the circle meets it form an interval
+and r0 is unimodal on it (it is often a vertex where two positions bind at once, a kink of r0(a)). The
+interval is found from one admissible distance (a log-spaced scan, :func:`admissible_distance`); the optimum
+by bisection on the sign of d(r0²)/da, distances that miss the region counting as negative below it and
+positive above it (:func:`best_distance`): the result is the smooth minimum, the kink, or the distance at
+which the circle touches the region.
+
+The twin (:class:`ArmTwin`) uses neither wedges nor circles: from tan α = |c − a cos φ|/(a sin φ) alone, each
+position's condition is linear in a along a ray from A0, so it walks rays (bisection on dr0²/dψ0 with the
+nearest admissible point of each ray, its near or its far end), and at a given a it minimises the excess
+α − α_allow over ψ0 and bisects on its sign. Extremes over the positions: a grid refined by golden section
+(the construction: roots of the exact slopes by regula falsi).
 
 Examples
 --------
