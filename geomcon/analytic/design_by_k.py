@@ -220,6 +220,16 @@ def _frame_line_points(c1, c2, th: float) -> list[tuple[float, float]]:
     return sorted(out)
 
 
+def angle_deg_at(v: tuple[float, float], p: tuple[float, float], q: tuple[float, float]) -> float:
+    """The unsigned angle pvq (deg) by atan2 of the cross and dot products.
+
+    >>> angle_deg_at((0.0, 0.0), (1.0, 0.0), (0.0, 2.0))
+    90.0
+    """
+    px, py, qx, qy = p[0] - v[0], p[1] - v[1], q[0] - v[0], q[1] - v[1]
+    return math.degrees(math.atan2(abs(px * qy - py * qx), px * qx + py * qy))
+
+
 def rocker_design_valid(a: float, b: float, CD: float, AD: float, h1: float, h2: float) -> bool:
     """The one validity rule of a crank-rocker designed from its extreme positions (construction and twin).
 
@@ -247,11 +257,12 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
 
     Valid by :func:`rocker_design_valid`: AB is a crank by Grashof and the two extremes lie on one side of
     the frame line AD (otherwise the linkage's real extreme positions are not c1 and c2). Each solution gives
-    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage; ψ is
-    ∠c1Dc2 of the given positions (read back from the designed lengths it would lose an extreme position
-    that lies within rounding of the frame line).
+    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage: θ = ∠c1Ac2,
+    ψ = ∠c1Dc2 and γmin (:func:`geomcon.analytic.linkages.crank_rocker_gamma_from_positions`) from the points,
+    not read back from the designed lengths, which lose an extreme position lying within rounding of the frame
+    line (the Grashof boundary).
     """
-    from .linkages import crank_rocker_extremes
+    from .linkages import crank_rocker_gamma_from_positions
 
     sols = []
     for ax, ay in rocker_design_candidates(K, CD, c1, c2, **closing):
@@ -264,10 +275,10 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
         h2 = (ax * c2[1] - ay * c2[0]) / ad
         if not rocker_design_valid(a, b, CD, ad, h1, h2):
             continue
-        ext = crank_rocker_extremes(a, b, CD, ad)
-        psi = math.degrees(math.atan2(abs(c1[0] * c2[1] - c1[1] * c2[0]), c1[0] * c2[0] + c1[1] * c2[1]))
+        psi = angle_deg_at((0.0, 0.0), c1, c2)
         sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),
-                     "theta": ext["theta"], "K": K, "psi": psi, "gamma_min": ext["gamma_min"]})
+                     "theta": angle_deg_at((ax, ay), c1, c2), "K": K, "psi": psi,
+                     "gamma_min": crank_rocker_gamma_from_positions((ax, ay), (0.0, 0.0), *((c1, c2) if d1 < d2 else (c2, c1)))})
     return sols
 
 

@@ -78,6 +78,46 @@ def crank_rocker_extremes(AB: float, BC: float, CD: float, AD: float) -> dict[st
     }
 
 
+def _excess(v: tuple[float, float], p: tuple[float, float], q: tuple[float, float]) -> float:
+    """|vp| + |vq| − |pq| of the triangle v p q, as 4·|vp|·|vq|·sin²(δ/2)/perimeter with δ = 180° − ∠pvq
+    taken by atan2 from the coordinates: no cancellation when v lies nearly on the segment pq."""
+    px, py, qx, qy = p[0] - v[0], p[1] - v[1], q[0] - v[0], q[1] - v[1]
+    x, y, z = math.hypot(px, py), math.hypot(qx, qy), math.hypot(q[0] - p[0], q[1] - p[1])
+    if x + y + z == 0.0:
+        return 0.0
+    delta = math.atan2(abs(px * qy - py * qx), -(px * qx + py * qy))
+    return 4.0 * x * y * math.sin(delta / 2.0) ** 2 / (x + y + z)
+
+
+def crank_rocker_gamma_from_positions(A, D, Cf, Ce) -> float:
+    """γmin (deg) of the crank-rocker with pivots A, D, folded extreme position Cf and extended Ce (points).
+
+    With the crank along the frame (BD = AD ∓ AB) the triangle B C D has sides BC, CD, BD, and
+    tan²(γ/2) = E_BC·E_CD / (P·E_BD) (E_x: the other two sides minus x, P the perimeter). Each E is an
+    excess of the triangle A D Cf or A D Ce (e.g. BC + (AD − AB) − CD = ACf + AD − DCf), taken from the
+    positions by :func:`_excess`: near the Grashof boundary an extreme position lies within rounding of the
+    frame line and the excess, O(h²), is lost in the lengths but not in the points (γ stays ∝ h).
+
+    >>> import math
+    >>> A, D = (0.0, 0.0), (90.0, 0.0)
+    >>> ex = crank_rocker_extremes(50, 70, 80, 90)
+    >>> Cf = (20 * math.cos(math.radians(ex["angle_C1AD"])), 20 * math.sin(math.radians(ex["angle_C1AD"])))
+    >>> Ce = (120 * math.cos(math.radians(ex["angle_C2AD"])), 120 * math.sin(math.radians(ex["angle_C2AD"])))
+    >>> round(crank_rocker_gamma_from_positions(A, D, Cf, Ce), 9) == round(ex["gamma_min"], 9)
+    True
+    """
+    a = abs(math.dist(A, Ce) - math.dist(A, Cf)) / 2.0
+    b = (math.dist(A, Ce) + math.dist(A, Cf)) / 2.0
+    c, d = math.dist(D, Cf), math.dist(A, D)
+    out = []
+    for e_b, e_c, e_bd, per in (
+            (_excess(D, A, Ce), _excess(A, D, Cf), _excess(Ce, A, D), b + c + d - a),    # B towards D
+            (_excess(D, A, Cf), _excess(A, D, Ce), _excess(Cf, A, D), b + c + d + a)):   # B away from D
+        g = math.degrees(2.0 * math.atan2(math.sqrt(max(0.0, e_b * e_c)), math.sqrt(max(0.0, per * e_bd))))
+        out.append(min(g, 180.0 - g))
+    return min(out)
+
+
 def crank_slider_extremes(AB: float, BC: float, e: float) -> dict[str, float]:
     """Extreme positions of an offset crank-slider from right triangles.
 

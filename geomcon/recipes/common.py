@@ -16,7 +16,7 @@ import math
 
 from typing import Any, Mapping
 
-from ..geometry import LeftOf, Point, RightOf, angle_at, circle, circle_circle, distance, point_along
+from ..geometry import Point, angle_at, distance, point_along
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 
@@ -220,16 +220,40 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     return rocker_design_valid(a, b, CD, AD, u.cross(P1 - A) / AD, u.cross(P2 - A) / AD)
 
 
-def gamma_min_of(A: Point, D: Point, P1: Point, CD: float, a: float, b: float) -> float:
-    """γmin of the designed linkage, read at the two positions with the crank along the frame, on the side of
-    AD where the extreme positions are (the construction of ``crank_rocker.extremes``)."""
-    side = LeftOf(A, D) if (D - A).cross(P1 - A) > 0 else RightOf(A, D)
-    kD = circle(D, CD)
+def excess_by_foot(V: Point, P: Point, Q: Point) -> float:
+    """|VP| + |VQ| − |PQ| measured with the foot F of V on PQ: when F lies inside PQ it is
+    h²/(|VP| + |PF|) + h²/(|VQ| + |QF|) (h = |VF|), which keeps its digits when V is nearly on PQ;
+    otherwise the angle at V is acute and the plain difference does not cancel.
+
+    >>> round(excess_by_foot(Point(1, 1e-9), Point(0, 0), Point(2, 0)), 30)
+    1e-18
+    """
+    x, y, pq = abs(P - V), abs(Q - V), Q - P
+    z = abs(pq)
+    if z == 0.0:
+        return x + y
+    t = (V - P).dot(pq) / (z * z)
+    if not 0.0 < t < 1.0:
+        return x + y - z
+    h = abs(pq.cross(V - P)) / z
+    return h * h / (x + t * z) + h * h / (y + (1.0 - t) * z)
+
+
+def gamma_min_of(A: Point, D: Point, P1: Point, P2: Point) -> float:
+    """γmin of the designed linkage with pivots A, D and extreme positions P1, P2, read at the two positions
+    with the crank along the frame: the triangle B C D there has sides BC, CD, AD ∓ AB, and each of its
+    excesses (two sides minus the third) is one of the triangles A D C_folded, A D C_extended (e.g.
+    BC + (AD − AB) − CD = AC_f + AD − DC_f), measured by :func:`excess_by_foot`; then
+    tan²(γ/2) = E_BC·E_CD/(perimeter·E_BD). Near the Grashof boundary an extreme position lies within rounding
+    of the frame line: its excess, O(h²), survives in the points but not in the lengths AB, BC (γ ∝ h)."""
+    Cf, Ce = (P1, P2) if abs(P1 - A) < abs(P2 - A) else (P2, P1)
+    a, b = half_difference(A, P1, P2), half_sum(A, P1, P2)
+    c, d = abs(Cf - D), abs(A - D)
     out = []
-    for sign in (1.0, -1.0):
-        B = point_along(A, D, sign * a)
-        C = side.choose(circle_circle(circle(B, b), kD))
-        out.append(transmission_deg(B, C, D))
+    for e_b, e_c, e_bd, per in ((excess_by_foot(D, A, Ce), excess_by_foot(A, D, Cf), excess_by_foot(Ce, A, D), b + c + d - a),
+                                (excess_by_foot(D, A, Cf), excess_by_foot(A, D, Ce), excess_by_foot(Cf, A, D), b + c + d + a)):
+        g = math.degrees(2.0 * math.atan2(math.sqrt(max(0.0, e_b * e_c)), math.sqrt(max(0.0, per * e_bd))))
+        out.append(min(g, 180.0 - g))
     return min(out)
 
 

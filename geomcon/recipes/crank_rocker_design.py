@@ -136,7 +136,7 @@ def admissible_arcs(k, C1: Point, C2: Point, D: Point, CD: float, gamma_allow: f
             return False
         if gamma_allow is None:
             return True
-        return gamma_min_of(A, D, C1, CD, half_difference(A, C1, C2), half_sum(A, C1, C2)) >= gamma_allow
+        return gamma_min_of(A, D, C1, C2) >= gamma_allow
 
     n = 720
     ts = [2 * math.pi * i / n for i in range(n)]
@@ -205,7 +205,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add(f"C1_folded_{i}", folded_flag, A, P1, P2, **opt)
         sc.add(f"A_near_{i}", near, A, P1, P2, D, **opt)
         sc.add(f"valid_{i}", is_valid, A, P1, P2, D, CD, arc[0] if arc else 0, **opt)
-        sc.add(f"gamma_min_{i}", gamma_min_of, A, D, P1, CD, Ref(f"AB_{i}"), Ref(f"BC_{i}"), unit="deg", **opt)
+        sc.add(f"gamma_min_{i}", gamma_min_of, A, D, P1, P2, unit="deg", **opt)
         sols.append({"AB": f"AB_{i}", "BC": f"BC_{i}", "AD": f"AD_{i}", "CD": "CD", "psi": f"psi_{i}",
                      "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
@@ -452,8 +452,9 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
     ψ = |∠ADC2 − ∠ADC1| from the given φ = ∠ADC1 and C2 = w·(cos β, sin β) itself, not from the designed
     lengths: with C1 within 1e-8 of the frame line (φ ≈ 4e-7°) AC1 = |AD − CD| + O(φ²) holds φ only below
-    its last bit, and ψ read back from AB, BC, CD, AD (the extremes' law of cosines) loses φ entirely."""
-    from ..analytic.linkages import crank_rocker_extremes
+    its last bit, and ψ read back from AB, BC, CD, AD (the extremes' law of cosines) loses φ entirely; γmin,
+    ∝ φ there, likewise comes from the positions."""
+    from ..analytic.linkages import crank_rocker_gamma_from_positions
     CD, AD, phi, K = g["CD"], g["AD"], g["phi"], g["K"]
     th = theta_from_k(K)
     x1 = AD - CD * math.cos(math.radians(phi))
@@ -475,10 +476,11 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
             a, b = abs(w - w1) / 2, (w + w1) / 2
             if not rocker_design_valid(a, b, CD, AD, y1, w * math.sin(math.radians(beta))):
                 continue
-            ext = crank_rocker_extremes(a, b, CD, AD)
             y2 = w * math.sin(math.radians(beta))
             adc2 = math.degrees(math.atan2(abs(y2), AD - w * math.cos(math.radians(beta))))
-            out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": abs(adc2 - adc1), "gamma_min": ext["gamma_min"],
+            c1, c2 = (x1, y1), (w * math.cos(math.radians(beta)), y2)
+            gmin = crank_rocker_gamma_from_positions((0.0, 0.0), (AD, 0.0), *((c1, c2) if w1 < w else (c2, c1)))
+            out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": abs(adc2 - adc1), "gamma_min": gmin,
                         "theta": th, "K": K, "C1_folded": float(w1 < w), "A_near": 1.0})
     return out
 

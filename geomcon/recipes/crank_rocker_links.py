@@ -19,8 +19,8 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from ..analytic.design_by_k import rocker_design_valid
-from ..analytic.linkages import crank_rocker_extremes, theta_from_k
+from ..analytic.design_by_k import angle_deg_at, rocker_design_valid
+from ..analytic.linkages import crank_rocker_gamma_from_positions, theta_from_k
 from ..geometry import Point, perpendicular_bisector, point_along, segment
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction
@@ -72,7 +72,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add(f"psi_{i}", angle_deg, D, C1, C2, unit="deg", **opt)
         sc.add(f"A_near_{i}", near_flag, A, C1, C2, D, **opt)
         sc.add(f"valid_{i}", is_valid, A, C1, C2, D, Ref(f"CD_{i}"), **opt)
-        sc.add(f"gamma_min_{i}", gamma_min_of, A, D, C1, Ref(f"CD_{i}"), AB, BC, unit="deg", **opt)
+        sc.add(f"gamma_min_{i}", gamma_min_of, A, D, C1, C2, unit="deg", **opt)
         sols.append({"AB": "AB_given", "BC": "BC_given", "AD": f"AD_{i}", "CD": f"CD_{i}", "psi": f"psi_{i}",
                      "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": "one",
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
@@ -158,7 +158,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         h2 = (ux * (c2[1] - A[1]) - uy * (c2[0] - A[0])) / ad
         if not rocker_design_valid(a, b, cd, ad, h1, h2):
             continue
-        ext = crank_rocker_extremes(a, b, cd, ad)
-        out.append({"AB": a, "BC": b, "AD": ad, "CD": cd, "psi": ext["psi"], "gamma_min": ext["gamma_min"],
+        gmin = crank_rocker_gamma_from_positions(A, (0.0, Dy), c1, c2)    # γmin from the points, not the lengths
+        psi_d = angle_deg_at((0.0, Dy), c1, c2)                          # ψ of the points as well
+        out.append({"AB": a, "BC": b, "AD": ad, "CD": cd, "psi": psi_d, "gamma_min": gmin,
                     "theta": th, "K": K, "C1_folded": 1.0, "A_near": near})
     return out
