@@ -257,8 +257,9 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
 
     Valid by :func:`rocker_design_valid`: AB is a crank by Grashof and the two extremes lie on one side of
     the frame line AD (otherwise the linkage's real extreme positions are not c1 and c2). Each solution gives
-    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage: θ = ∠c1Ac2,
-    ψ = ∠c1Dc2 and γmin (:func:`geomcon.analytic.linkages.crank_rocker_gamma_from_positions`) from the points,
+    A, which extreme is folded, AB, BC, AD and the extreme-position figures of the designed linkage: θ as the
+    answer defines it, 180°(K − 1)/(K + 1) (as the frame and links forms; the designed linkage's own θ is the
+    back-substitution's K), ψ = ∠c1Dc2 and γmin (:func:`geomcon.analytic.linkages.crank_rocker_gamma_from_positions`) from the points,
     not read back from the designed lengths, which lose an extreme position lying within rounding of the frame
     line (the Grashof boundary).
     """
@@ -277,7 +278,7 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
             continue
         psi = angle_deg_at((0.0, 0.0), c1, c2)
         sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),
-                     "theta": angle_deg_at((ax, ay), c1, c2), "K": K, "psi": psi,
+                     "theta": theta_from_k(K), "K": K, "psi": psi,
                      "gamma_min": crank_rocker_gamma_from_positions((ax, ay), (0.0, 0.0), *((c1, c2) if d1 < d2 else (c2, c1)))})
     return sols
 
