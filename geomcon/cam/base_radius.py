@@ -565,16 +565,24 @@ def _golden_tops(fn: Callable[[np.ndarray], np.ndarray], xs: np.ndarray, grid: n
     [(1.0, 1.570796), (0.9899924966, 3.0)]
     """
     out, rows, lo, hi = [], [], [], []
+    gap = np.diff(xs)
+    # the pieces' seams (a right end just below the next piece's start): a peak beside a seam is searched on
+    # its own side only, between the end and its neighbour inside the piece
+    seam = np.concatenate([[True], gap <= 1e-9 * (xs[-1] - xs[0]), [True]])
+    left_x = np.where(seam[:-1], xs, np.concatenate([[xs[0]], xs[:-1]]))
+    right_x = np.where(seam[1:], xs, np.concatenate([xs[1:], [xs[-1]]]))
     for k, v in enumerate(grid):
         best = int(np.argmax(v))
         out.append((float(v[best]), float(xs[best])))
-        mid = v[1:-1]
+        left = np.where(seam[:-1], -np.inf, np.concatenate([[-np.inf], v[:-1]]))
+        right = np.where(seam[1:], -np.inf, np.concatenate([v[1:], [-np.inf]]))
+        near = np.minimum(np.where(np.isfinite(left), left, right), np.where(np.isfinite(right), right, left))
         with np.errstate(invalid="ignore"):
-            room = mid + 2.0 * (mid - np.minimum(v[:-2], v[2:]))   # a smooth peak exceeds its grid value by ≤ ⅓ of it
-        i = np.nonzero((mid >= v[:-2]) & (mid >= v[2:]) & (xs[2:] > xs[:-2]) & ~(room < out[k][0]))[0] + 1
+            room = v + 2.0 * (v - near)                     # a smooth peak exceeds its grid value by ≤ ⅓ of it
+        i = np.nonzero((v >= left) & (v >= right) & (right_x > left_x) & ~(room < out[k][0]))[0]
         rows += [k] * i.size
-        lo.append(xs[i - 1])
-        hi.append(xs[i + 1])
+        lo.append(left_x[i])
+        hi.append(right_x[i])
     if not rows:
         return out
     rows = np.array(rows)
@@ -593,6 +601,21 @@ def _golden_tops(fn: Callable[[np.ndarray], np.ndarray], xs: np.ndarray, grid: n
             if f[j] > out[rows[j]][0]:
                 out[rows[j]] = (float(f[j]), float(x[j]))
     return out
+
+
+def arm_rho_min(cam, n: int = 4 * TWIN_GRID) -> float:
+    """ρmin of an oscillating cam's pitch curve over its convex parts by the twin's route: the complex-form
+    curvature (:meth:`OscillatingCam.convex_curvature_complex`) on a grid of every smooth piece, peaks refined
+    by golden section, a peak beside a piece's end searched on its own side; ``inf`` when nowhere convex."""
+    top = -math.inf
+    for seg, level in zip(cam.program.segments, levels(cam.program, cam.h)):
+        if seg.kind == "dwell":
+            xs = np.array([0.0, 0.5, np.nextafter(1.0, 0.0)])
+        else:
+            xs = np.concatenate([piece_grid(x0, x1, n) for x0, x1 in pieces(seg)])
+        kappa = lambda z, seg=seg, level=level: cam.convex_curvature_complex(segment_motion(seg, level, cam.h, z))[None, :]
+        top = max(top, _golden_tops(kappa, xs, kappa(xs))[0][0])
+    return 1.0 / top if top > 0 else math.inf
 
 
 class ArmTwin:
@@ -745,9 +768,27 @@ class ArmTwin:
                 slope = 0.0                                     # the foot of B0 on the ray: r0 = L sin ψ0
             return (a - self.L * math.cos(th)) * slope + a * self.L * math.sin(th)
 
-        theta = bisect_root(sign, 0.0, top)
-        a_in, a_out, _, _ = self.ray(theta)
-        return min(max(self.L * math.cos(theta), a_in), a_out), theta
+        lo, hi = 0.0, top
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if not lo < mid < hi:
+                break
+            if sign(mid) > 0:
+                hi = mid
+            else:
+                lo = mid
+        best = None                                     # the end of the last bracket whose ray meets the region
+        for th in (lo, hi):
+            a_in, a_out, _, _ = self.ray(th)
+            if 0.0 < th < top and a_in <= a_out * (1.0 + 1e-13):
+                a = min(max(self.L * math.cos(th), a_in), a_out)
+                r2 = (a - self.L) ** 2 + 4.0 * a * self.L * math.sin(th / 2) ** 2
+                if best is None or r2 < best[0]:
+                    best = (r2, a, th)
+        if best is None:
+            raise NotAMechanism(f"no ray from the arm's pivot near ψ0 = {math.degrees(hi):.6g}° meets the admissible "
+                                "region")
+        return best[1], best[2]
 
     def excess(self, a: float, theta: float) -> float:
         """The largest α − α_allow (rad) over the constrained positions for the centre (a, ψ0 = θ)."""

@@ -246,7 +246,7 @@ def oscillating(rng: random.Random) -> ValidCase:
             parts = _arm_arrays(g, N_GRID)
             avals = free[1] * np.logspace(-1.0, 1.0, 401)
             lo, hi = _arm_interval(parts, avals)
-            ok = avals[lo + 1e-6 < hi]
+            ok = avals[(lo + 1e-6 < hi) & (avals <= 1e9)]
             if ok.size == 0:
                 continue
             if near:

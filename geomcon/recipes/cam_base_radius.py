@@ -35,7 +35,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.base_radius import RR_FACTOR, S0_MIN, ArmProgram, ArmTwin, arm_best, arm_psi0, arm_reach, best_base, limits, part_motion
+from ..cam.base_radius import RR_FACTOR, S0_MIN, ArmProgram, ArmTwin, arm_best, arm_rho_min, arm_psi0, arm_reach, best_base, limits, part_motion
 from ..cam.oscillating import OscillatingCam
 from ..cam.profile import PitchCurve, inverted, maximise, rho_min
 from ..cam.program import Program, parse_program
@@ -237,7 +237,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         out = ArmTwin(prog, g["h"], g["L"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
                       arm=g.get("arm", "left"), alpha_allow_return=g.get("alpha_allow_return")).best(g.get("a"))
         cam = arm_cam(g, out["a"], out["r0"], out["psi0"])
-        rho = cam.rho_min(cam.convex_curvature_complex)[0]
+        rho = arm_rho_min(cam)
         return [{**out, "rho_min_pitch": rho, "rr_max": RR_FACTOR * rho}]
     out = best_base(prog, g["h"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
                     alpha_allow_return=g.get("alpha_allow_return"), e=g.get("e"))
