@@ -368,8 +368,11 @@ class OscillatingCam(ArmMotion):
 
 
 def _roots(fn: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
-    """Interior points of [x0, x1) where ``fn`` changes sign, refined by bisection to the last bit."""
-    xs = piece_grid(x0, x1, n)
+    """Interior points of [x0, x1) where ``fn`` changes sign, refined by bisection to the last bit. The grid
+    is denser towards the ends (1e-3 … 1e-9 of the piece), where a law starting or ending at rest makes the
+    slope 0 and a maximum may hide within the first or last cell."""
+    near = (x1 - x0) * np.logspace(-9.0, -3.0, 7)
+    xs = np.unique(np.concatenate([piece_grid(x0, x1, n), x0 + near, np.nextafter(x1, x0) - near]))
     g = fn(xs)
     out = []
     for i in np.nonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]:
@@ -388,14 +391,16 @@ def _roots(fn: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
 
 
 def _golden_maxima(f: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
-    """The ends of [x0, x1) and every grid maximum of ``f`` refined by golden-section search."""
+    """The ends of [x0, x1) and every grid maximum of ``f`` (an end included when it beats its neighbour)
+    refined by golden-section search."""
     xs = piece_grid(x0, x1, n)
     v = f(xs)
     out = [float(xs[0]), float(xs[-1])]
     inv = (math.sqrt(5.0) - 1.0) / 2.0
-    for i in range(1, n - 1):
-        if v[i] > v[i - 1] and v[i] >= v[i + 1]:
-            lo, hi = float(xs[i - 1]), float(xs[i + 1])
+    for i in range(n):
+        left, right = v[i - 1] if i > 0 else -np.inf, v[i + 1] if i < n - 1 else -np.inf
+        if v[i] > left and v[i] >= right:            # an end beating its neighbour: a peak may hide inside
+            lo, hi = float(xs[max(i - 1, 0)]), float(xs[min(i + 1, n - 1)])
             c, d = hi - inv * (hi - lo), lo + inv * (hi - lo)
             fc, fd = f(np.asarray([c]))[0], f(np.asarray([d]))[0]
             while hi - lo > 1e-12 * max(1.0, abs(hi)):

@@ -93,9 +93,9 @@ class TranslatingCam:
         if seg is None:
             return 0.0, 0.0
 
-        def g(d):
+        def g(d):                     # α itself (deg): ties are judged on α, not on tan α (huge near 90°)
             s, v, _ = self._rad(d)
-            return np.abs(v - self.k * self.e) / (self.s0 + s)
+            return np.degrees(np.arctan2(np.abs(v - self.k * self.e), self.s0 + s))
 
         def dg(d):                    # sign of d/dδ (|E|/S) = sign(E)(s″S − E s′)/S²
             s, v, a = self._rad(d)
@@ -103,7 +103,7 @@ class TranslatingCam:
             return np.sign(E) * (a * (self.s0 + s) - E * v)
 
         best, at = _max_by_root(g, dg, math.radians(seg.start), math.radians(seg.end))
-        return math.degrees(math.atan(best)), math.degrees(at)
+        return best, math.degrees(at)
 
     def pitch_curvature(self, d_rad) -> np.ndarray:
         """1/ρ of the pitch curve at cam angles in radians, positive where convex."""
