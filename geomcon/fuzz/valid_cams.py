@@ -243,7 +243,8 @@ def eccentric(rng: random.Random) -> ValidCase:
     r0 = Rp - OA
     e = 0.0
     if follower != "flat" and rng.random() < 0.6:
-        e = round(rng.uniform(-0.9, 0.9) * r0, 4)
+        x = rng.uniform(-0.9, 0.9) * r0
+        e = round(x, 4) if abs(round(x, 4)) < 0.95 * r0 else x          # r0 → 0 when OA → R: no rounding
         given["e"] = e
     if rng.random() < 0.3:
         given["omega"] = round(rng.uniform(0.1, 100.0), 4)
