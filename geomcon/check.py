@@ -2,7 +2,7 @@
 
 Examples
 --------
->>> check_row("theta", 12.5055860934, 12.5055860934, "deg", 90.0)["ok"]
+>>> check_row("theta", 12.5055860934, 12.5055860934, 1.0)["ok"]
 True
 >>> audit_row("theta", 12.5, 12.5055860934)["deviation"]
 -0.0055860934
@@ -27,10 +27,20 @@ PUBLISHED_WARN_REL = 0.03
 """Published answers are drawn by hand: a deviation beyond 3 % is reported as a warning."""
 
 
-def scale_for(unit: str, length_scale: float) -> float:
-    """The value below which relative comparison is replaced by an absolute one: 1° for angles, the
-    problem's length scale for lengths, 1 for ratios."""
-    return length_scale if unit == "mm" else 1.0
+def scale_for(unit: str, length_scale: float, omega: float = 1.0) -> float:
+    """The value below which relative comparison is replaced by an absolute one: the problem's length scale
+    for lengths, length scale × |ω| for speeds (mm/s), 1 for angles (degrees) and ratios.
+
+    Examples
+    --------
+    >>> scale_for("mm", 90.0), scale_for("deg", 90.0), scale_for("mm/s", 90.0, 2.0)
+    (90.0, 1.0, 180.0)
+    """
+    if unit == "mm":
+        return length_scale
+    if unit == "mm/s":
+        return length_scale * abs(omega)
+    return 1.0
 
 
 def rounded(x: float, scale: float) -> float:
@@ -64,11 +74,11 @@ def error_text(err: float, magnitude: float) -> float:
     return 0.0
 
 
-def check_row(quantity: str, construction: float, analytic: float, unit: str, length_scale: float) -> dict:
-    """One row of ``checks``: construction vs analytic to ``CHECK_REL`` of ``max(|a|, |b|, unit scale)``
-    (``tol``, the absolute error allowed; the solver may widen it by the problem's condition)."""
+def check_row(quantity: str, construction: float, analytic: float, scale: float) -> dict:
+    """One row of ``checks``: construction vs analytic to ``CHECK_REL`` of ``max(|a|, |b|, scale)`` (``tol``,
+    the absolute error allowed; the solver may widen it by the problem's condition)."""
     err = abs(construction - analytic)
-    tol = CHECK_REL * max(abs(construction), abs(analytic), scale_for(unit, length_scale))
+    tol = CHECK_REL * max(abs(construction), abs(analytic), scale)
     return {
         "quantity": quantity,
         "construction": construction,

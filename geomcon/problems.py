@@ -55,7 +55,8 @@ LIMITS = {
 RANGES = {
     "mm": (1e-6, 1e9),           # a nonzero length: 1 nm … 1000 km
     "deg": (0.0, 3600.0),        # |angle| ≤ ten turns
-    "": (0.0, 1e6),              # ratios, speeds, counts
+    "": (0.0, 1e6),              # ratios, angular speeds (rad/s), counts
+    "mm/s": (0.0, 1e14),         # a follower's speed (printed answers only)
 }
 """Magnitude range of every given number by unit (lengths: a nonzero |x| in [lo, hi]; others |x| ≤ hi)."""
 

@@ -132,8 +132,9 @@ class Solution:
         return self.recipe.analytic(self.problem.given)
 
     def unit_scale(self, unit: str) -> float:
-        """The scale of a quantity of ``unit``: the length scale for lengths, 1 otherwise."""
-        return scale_for(unit.removesuffix("[]"), self.length_scale)
+        """The scale of a quantity of ``unit`` (:func:`~geomcon.check.scale_for`; speeds take the given ω)."""
+        omega = self.problem.given.get("omega")
+        return scale_for(unit.removesuffix("[]"), self.length_scale, omega if isinstance(omega, float) else 1.0)
 
     @cached_property
     def matching(self) -> list[tuple[int, int]]:
@@ -221,7 +222,7 @@ class Solution:
                     unit = q.unit.removesuffix("[]")
                     for (name, b, e), (flat, _, _) in zip(_pairs(prefix + q.name, built[q.name], exact[q.name]),
                                                           _pairs(q.name, built[q.name], exact[q.name])):
-                        row = {**check_row(name, b, e, unit, self.length_scale), "unit": q.unit}
+                        row = {**check_row(name, b, e, self.unit_scale(unit)), "unit": q.unit}
                         if not row["ok"]:
                             row = self._conditioned(row, j, flat, q.unit)
                         rows.append(row)
@@ -229,8 +230,8 @@ class Solution:
             for i, built in enumerate(self.solution_values):
                 prefix = f"solutions[{i}]." if i else ""
                 for name, rebuilt, required, unit in self.recipe.back_check(self.problem.given, built):
-                    row = {**check_row(f"{prefix}back_substitution.{name}", rebuilt, required, unit,
-                                       self.length_scale), "unit": unit}
+                    row = {**check_row(f"{prefix}back_substitution.{name}", rebuilt, required,
+                                       self.unit_scale(unit)), "unit": unit}
                     if not row["ok"]:
                         row = self._back_conditioned(row, name, i, self.problem.given, built)
                     rows.append(row)
@@ -336,7 +337,7 @@ class Solution:
         for q in self.recipe.answers:
             if q.name not in self.answers:
                 continue
-            unit = {"deg": "°", "mm": " mm"}.get(q.unit.removesuffix("[]"), "")
+            unit = {"deg": "°", "mm": " mm", "mm/s": " mm/s"}.get(q.unit.removesuffix("[]"), "")
             parts = _pairs(q.name, self.answers[q.name], self.answers[q.name])
             rows = [r for r in self.checks if any(r["quantity"] == name for name, _, _ in parts)]
             mark = "" if not rows else (" ✓ twin" if all(r["ok"] for r in rows) else " ✗ twin")

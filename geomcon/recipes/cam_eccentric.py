@@ -100,7 +100,7 @@ ANSWERS = (
     Quantity("s", "mm", "state: displacement from the lowest position (translating)"),
     Quantity("psi", "deg", "state: the arm's swing from its lowest position (oscillating)"),
     Quantity("alpha", "deg", "state: pressure angle"),
-    Quantity("v", "", "state: follower velocity, mm/s (> 0 moving away from O), when omega is given"),
+    Quantity("v", "mm/s", "state: follower velocity, mm/s (> 0 moving away from O), when omega is given"),
 )
 
 
