@@ -88,16 +88,20 @@ def derivative(f: Callable[[float], float | None], u: float) -> float | None:
     >>> round(derivative(lambda d: (1e-7 - d) ** 0.5 if d < 1e-7 else None, 1.0))   # the 1e-6 step leaves it
     1581
     """
+    def g(d: float) -> float | None:
+        v = f(d)
+        return v if v is not None and math.isfinite(v) else None      # a NaN or inf is outside the domain too
+
     one_sided: tuple[float, float] | None = None
     for h in STEPS:
-        p, m = f(h * u), f(-h * u)
+        p, m = g(h * u), g(-h * u)
         if p is not None and m is not None:
             return abs(p - m) / (2 * h)
         if one_sided is None and (p is not None or m is not None):
             one_sided = (h, p if p is not None else m)
     if one_sided is None:
         return None
-    f0 = f(0.0)
+    f0 = g(0.0)
     return None if f0 is None else abs(one_sided[1] - f0) / one_sided[0]
 
 

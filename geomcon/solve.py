@@ -49,6 +49,21 @@ def _json(v: Any, scale: float) -> Any:
     return rounded(v, scale)
 
 
+def _finite(v: Any) -> Any:
+    """A number for standard JSON: NaN and ±inf (a failed check's twin value, say) become null.
+
+    Examples
+    --------
+    >>> _finite(1.5), _finite(float("nan")), _finite([1.0, float("inf")]), _finite(True)
+    (1.5, None, [1.0, None], True)
+    """
+    if isinstance(v, list):
+        return [_finite(x) for x in v]
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
 def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     """Matching scalar parts of two answer values: ``("s[0]", a[0], b[0])``… for lists;
     bools compare as the numbers 1 and 0.
@@ -307,9 +322,11 @@ class Solution:
         def check_json(r: dict) -> dict:
             sc = self.unit_scale(r["unit"])
             magnitude = max(abs(float(r["construction"])), abs(float(r["analytic"])), sc)
-            return {**r, "construction": _json(r["construction"], sc), "analytic": _json(r["analytic"], sc),
-                    "abs_error": error_text(r["abs_error"], magnitude), "tol": float(f"{r['tol']:.2g}"),
-                    **({"condition": float(f"{r['condition']:.2g}")} if isinstance(r.get("condition"), float) else {})}
+            return {**r, "construction": _finite(_json(r["construction"], sc)),
+                    "analytic": _finite(_json(r["analytic"], sc)),
+                    "abs_error": _finite(error_text(r["abs_error"], magnitude)), "tol": _finite(float(f"{r['tol']:.2g}")),
+                    **({"condition": _finite(float(f"{r['condition']:.2g}"))}
+                       if isinstance(r.get("condition"), float) else {})}
 
         out = {
             "problem": self.problem.id,
