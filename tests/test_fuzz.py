@@ -39,10 +39,8 @@ GENERATORS = all_generators()
 def test_every_recipe_family_has_a_generator():
     from geomcon.recipes import RECIPES
 
-    covered = {name.split(":")[0] for name in GENERATORS}
     recipes_of = {name for name in RECIPES if any(g.startswith(name) for g in GENERATORS)}
     assert recipes_of == set(RECIPES), sorted(set(RECIPES) - recipes_of)
-    assert covered
 
 
 @pytest.mark.parametrize("name", sorted(GENERATORS))
