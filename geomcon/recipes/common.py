@@ -223,7 +223,9 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
 def excess_by_foot(V: Point, P: Point, Q: Point) -> float:
     """|VP| + |VQ| − |PQ| measured with the foot F of V on PQ: when F lies inside PQ it is
     h²/(|VP| + |PF|) + h²/(|VQ| + |QF|) (h = |VF|), which keeps its digits when V is nearly on PQ;
-    otherwise the angle at V is acute and the plain difference does not cancel.
+    otherwise the angle at V is acute and the plain difference does not cancel. PF is taken as
+    (V − P)·(Q − P)/|PQ|, never divided by |PQ|² (which underflows to 0 when P and Q are 1e-200 apart, as
+    a subnormal rocker angle puts them).
 
     >>> round(excess_by_foot(Point(1, 1e-9), Point(0, 0), Point(2, 0)), 30)
     1e-18
@@ -232,11 +234,11 @@ def excess_by_foot(V: Point, P: Point, Q: Point) -> float:
     z = abs(pq)
     if z == 0.0:
         return x + y
-    t = (V - P).dot(pq) / (z * z)
-    if not 0.0 < t < 1.0:
+    s = (V - P).dot(pq) / z
+    if not 0.0 < s < z:
         return x + y - z
     h = abs(pq.cross(V - P)) / z
-    return h * h / (x + t * z) + h * h / (y + (1.0 - t) * z)
+    return h * h / (x + s) + h * h / (y + (z - s))
 
 
 def gamma_min_of(A: Point, D: Point, P1: Point, P2: Point) -> float:

@@ -10,7 +10,8 @@ Two families of exam problems:
   ``AC1`` (the circle about C1 of that radius), ``frame_line`` (A on the horizontal through D).
   K = 1 puts A on the line C1C2 itself (with ``AD`` or ``frame_line``).
 - **frame given** (``AD`` and the angle ``phi`` = ∠ADC of one extreme position C1): the other extreme
-  position lies on the rocker circle where a line through A at ±θ to AC1 meets it.
+  position lies on the rocker circle where a line through A at ±θ to AC1 meets it (K = 1: the line AC1's
+  second meeting with the rocker circle — C1 itself would be a crank of length 0).
 - **links** (no ``CD``; ``AB``, ``BC`` and ``psi`` given): the triangle AC1C2 from AC1 = BC − AB,
   AC2 = AB + BC and θ, then D on the bisector of C1C2 seeing it under ψ (:mod:`.crank_rocker_links`).
 
@@ -64,7 +65,9 @@ ANSWERS = (
     Quantity("gamma_min", "deg", "smallest transmission angle of the designed linkage"),
     Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
     Quantity("K", "", "time-ratio coefficient (as given)"),
-    Quantity("C1_folded", "", "1 when the extreme position C1 is the folded one (AC1 = BC − AB), else 0"),
+    Quantity("C1_folded", "", "1 when the extreme position C1 is the folded one (AC1 = BC − AB), else 0; at K = 1 "
+             "too (A, C1, C2 on one line, the folded position the nearer to A): with the frame given, C2 is the "
+             "second meeting of the line AC1 with the rocker circle, never C1 itself"),
     Quantity("A_near", "", "1 when A lies on D's side of C1C2 (always 1 when the frame is given)"),
     Quantity("DE", "mm", "arm of the output stage, H_out / (2 sin ψ/2) (only with H_out)"),
 )
@@ -365,7 +368,10 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
         r = sc.add(f"ray{int(sign)}", ray_from, A, C1, turn, caption=(f"Through A a line at θ to AC1, turned {en}",
                                                                       f"过 A 作与 AC1 成 θ 角的直线({zh})"))
         line = sc.add(f"line{int(sign)}", ray_line, r, visible=False)
-        for rule in (NearestTo(A), FarthestFrom(A)):
+        # K = 1: the line is AC1 itself and meets the rocker circle at C1 and at C2 (a candidate C2 = C1 would
+        # be a crank of length 0 and no swing; rounding made it a "design" whose C1_folded was a coin toss)
+        rules = (OtherThan(C1),) if g["K"] == 1.0 else (NearestTo(A), FarthestFrom(A))
+        for rule in rules:
             n += 1
             Cn = sc.add(f"C2_{n}", line_circle, line, kD, branch=rule, label=f"C2,{n}", optional=True, style="candidate",
                         caption=("It meets the rocker circle at a candidate C2", "交摇杆圆得 C2 的候选位置"))
@@ -448,7 +454,9 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """Frame given: |AC2| = w from w² − 2w·AD·cos β + AD² − CD² = 0 with β = ∠C1AD ± θ (law of cosines);
-    valid by :func:`geomcon.analytic.design_by_k.rocker_design_valid`.
+    valid by :func:`geomcon.analytic.design_by_k.rocker_design_valid`. K = 1 (θ = 0): C2 is the other meeting
+    of the line AC1 with the rocker circle, |AC2| = (AD² − CD²)/|AC1| (the power of A); C1 itself is no
+    candidate (AB = 0, ψ = 0), as in the construction.
 
     ψ = |∠ADC2 − ∠ADC1| from the given φ = ∠ADC1 and C2 = w·(cos β, sin β) itself, not from the designed
     lengths: with C1 within 1e-8 of the frame line (φ ≈ 4e-7°) AC1 = |AD − CD| + O(φ²) holds φ only below
@@ -465,12 +473,15 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
     out = []
     for beta in ({alpha1 + th, alpha1 - th} if th else {alpha1}):
         cb = math.cos(math.radians(beta))
-        disc = (AD * cb) ** 2 - (AD - CD) * (AD + CD)
-        if disc < 0:
-            continue
-        root = math.sqrt(disc)
-        near = (AD - CD) * (AD + CD) / (AD * cb + root) if AD * cb + root != 0 else 0.0
-        for w in (near, AD * cb + root):
+        if th == 0.0:                                   # K = 1: the other root of the line AC1, AC1·AC2 = power of A
+            roots: tuple[float, ...] = ((AD - CD) * (AD + CD) / w1,)
+        else:
+            disc = (AD * cb) ** 2 - (AD - CD) * (AD + CD)
+            if disc < 0:
+                continue
+            root = math.sqrt(disc)
+            roots = ((AD - CD) * (AD + CD) / (AD * cb + root) if AD * cb + root != 0 else 0.0, AD * cb + root)
+        for w in roots:
             if w <= 0:
                 continue
             a, b = abs(w - w1) / 2, (w + w1) / 2
