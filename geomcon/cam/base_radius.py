@@ -154,6 +154,31 @@ def s0_needed(cands: list[tuple[np.ndarray, np.ndarray, float]], ke: float) -> t
     return best, slope
 
 
+def s0_at_optimum(cands: list[tuple[np.ndarray, np.ndarray, float]], ke: float) -> float:
+    """s0 at the best offset ``ke`` (found to its last bit), read off the best-conditioned of the constraints
+    that bind there.
+
+    Each |s′ − ke|/t − s carries the rounding of ke magnified by 1/t; at a kink of s0 (two constraints binding
+    at once, the usual optimum) a steep one (small α_allow) and a shallow one meet, and the steep one's value is
+    ε·|ke|/t uncertain (5e-9 relative at α_allow = 1e-6°). Among the constraints within their rounding of the
+    largest, the one with the largest t gives the value.
+
+    >>> cands = [(np.array([0.0]), np.array([1.0]), 1e-8), (np.array([0.0]), np.array([-1.0]), 1.0)]
+    >>> ke = 1.0 - 2e-8 / (1.0 + 1e-8)                   # where |1 − ke|/1e-8 = |−1 − ke|/1: the kink
+    >>> abs(s0_at_optimum(cands, ke) - 2.0 / (1.0 + 1e-8)) < 1e-15
+    True
+    """
+    eps = np.finfo(float).eps
+    rows = []
+    for s, v, t in cands:
+        q = np.abs(v - ke) / t - s
+        err = 4.0 * eps * ((np.abs(v) + abs(ke)) / t + np.abs(s) + np.abs(q))
+        rows += list(zip(q.tolist(), err.tolist(), [t] * len(q)))
+    top = max(rows)
+    near = [r for r in rows if r[0] + r[1] >= top[0] - top[1]]
+    return max(near, key=lambda r: (r[2], r[0]))[0]
+
+
 def best_base(program: Program, h: float, *, alpha_allow: float, rotation: str = "ccw",
               alpha_allow_return: float | None = None, e: float | None = None) -> dict[str, float]:
     """``r0``, ``e`` and ``s0`` of the smallest base circle (of the pitch curve) that keeps α within the
@@ -177,7 +202,7 @@ def best_base(program: Program, h: float, *, alpha_allow: float, rotation: str =
         ke = bisect_root(grad, lo, hi)
     else:
         ke = k * e
-    s0 = s0_needed(cands, ke)[0]
+    s0 = s0_needed(cands, ke)[0] if e is not None else s0_at_optimum(cands, ke)
     if not s0 > S0_MIN * h:
         raise NotAMechanism(f"the {'best ' if e is None else ''}centre puts B0 at s0 = {s0:.6g} mm ≤ {S0_MIN:g}·h "
                             f"from the offset circle's tangent point (e = {k * ke:.6g} mm): no proper cam — the limit "

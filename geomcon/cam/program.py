@@ -38,6 +38,9 @@ from .laws import Law, law
 KINDS = ("rise", "dwell", "return")
 FULL_TURN_REL = 1e-9
 """The segment angles must add up to 360° to this relative tolerance."""
+MIN_ANGLE = 1e-6
+"""Smallest segment angle (deg): above the tolerance of the full turn (FULL_TURN_REL·360° = 3.6e-7°), which a
+smaller segment would be lost in (a rise over 1e-12° drew a cam whose stroke rounded away)."""
 MAX_SEGMENTS = 64
 """Most segments a program may have (a textbook program has at most a handful; the rest would be dwells)."""
 
@@ -204,6 +207,28 @@ def _end_values(seg: Segment, h: float, *, at_end: bool) -> tuple[float, float]:
     return sign * h * float(f1) / span, sign * h * float(f2) / span ** 2
 
 
+def _angle(value: Any, where: str) -> float:
+    """A segment's angle through the checks every given number passes (a number, finite, within the range of
+    angles: :func:`geomcon.problems._number`, :func:`geomcon.problems._in_range`), then ≥ :data:`MIN_ANGLE`.
+
+    >>> _angle(2 ** 1100, "program[0].angle")
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.ProblemError: program[0].angle is out of range (an integer of 332 digits)
+    >>> _angle(4000, "program[1].angle")
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.ProblemError: program[1].angle = 4000° is out of range: an angle is at most 3600° in size
+    """
+    from ..problems import _in_range, _number       # here: geomcon.problems imports the recipes, which import us
+    if value is None:
+        raise NotAMechanism(f"{where} is missing (degrees of cam rotation)")
+    angle = _in_range("deg", _number(value, where), where)
+    if not angle >= MIN_ANGLE:
+        raise NotAMechanism(f"{where} must be ≥ {MIN_ANGLE:g}° (degrees of cam rotation), got {angle:g}")
+    return angle
+
+
 def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") -> Program:
     """Validate a program given as tables (see the module docstring); a bad entry raises
     :class:`NotAMechanism` naming ``program[i]`` and the value."""
@@ -219,9 +244,7 @@ def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") 
         kind = t.get("kind")
         if kind not in KINDS:
             raise NotAMechanism(f"{where}: kind must be one of {', '.join(KINDS)}, got {kind!r}")
-        angle = t.get("angle")
-        if isinstance(angle, bool) or not isinstance(angle, (int, float)) or not math.isfinite(angle) or angle <= 0:
-            raise NotAMechanism(f"{where}: angle must be a number > 0 (degrees of cam rotation), got {angle!r}")
+        angle = _angle(t.get("angle"), f"{where}.angle")
         if kind == "dwell":
             if "law" in t:
                 raise NotAMechanism(f"{where}: a dwell has no law (got law = {t['law']!r})")

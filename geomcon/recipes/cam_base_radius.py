@@ -46,13 +46,19 @@ from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, angle_deg, length
 
+ALPHA_MIN = 1e-6
+"""Smallest allowed pressure angle (deg): the two lines at ±α_allow through a point of the diagram stay 3.5e-8
+rad apart, far from the 1e-13 at which intersections call lines parallel (a base circle that large is refused
+by :func:`r0_floor` for most programs anyway)."""
+
 GIVENS = (
     Quantity("h", "mm", "stroke: mm (translating), or the arm's angular stroke ψmax in degrees (oscillating)"),
     Quantity("program", "table[]", "motion program: rise, dwells, return (a full turn)"),
-    Quantity("alpha_allow", "deg", "allowed pressure angle of the rise, 0° < α_allow < 90° (an arm needs about "
-             "α_allow > h/2 for the wedges to meet)", maximum=90.0),
+    Quantity("alpha_allow", "deg", "allowed pressure angle of the rise, 1e-6° ≤ α_allow < 90° (below, the lines "
+             "at ±α_allow are within 1e-8 rad of each other; an arm needs about α_allow > h/2 for the wedges to meet)",
+             minimum=ALPHA_MIN, inclusive=True, maximum=90.0),
     Quantity("alpha_allow_return", "deg", "allowed pressure angle of the return (unconstrained when absent), "
-             "0° < α < 90°", required=False, maximum=90.0),
+             "1e-6° ≤ α < 90°", required=False, minimum=ALPHA_MIN, inclusive=True, maximum=90.0),
     Quantity("rotation", "choice", "sense of rotation of the cam", required=False, default="ccw", minimum=None,
              choices=("ccw", "cw")),
     Quantity("e", "mm", "a fixed offset (> 0: the axis right of O); absent: the best offset", required=False,
@@ -92,6 +98,7 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
             if g.get(key) is not None:
                 raise NotAMechanism(f"{key} = {g[key]:g} is given for a translating follower: only an oscillating "
                                     "one (motion = \"oscillating\") has an arm")
+        r0_floor(_program(g), g["h"], limits(_program(g), g["alpha_allow"], g.get("alpha_allow_return")))
         return []
     if g.get("L") is None:
         raise NotAMechanism("an oscillating follower needs L (the arm length A0B)")
@@ -104,6 +111,55 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     arm_reach(ArmProgram(g["h"], prog, g.get("rotation", "ccw"), g.get("arm", "left")), g["L"],
               limits(prog, g["alpha_allow"], g.get("alpha_allow_return")), g.get("a"))
     return []
+
+
+R0_SPAN = 1e10
+"""Largest base circle of a translating follower's design, in units of h: the global span of one problem's
+lengths (:data:`geomcon.problems.LENGTH_SPAN`). Beyond it the support lines at α_allow are within rounding of
+the axis's direction (tan α_allow ~ h/r0) and their meeting points are lost in it."""
+
+
+def r0_floor(prog: Program, h: float, lims: list) -> float:
+    """A lower bound of the base circle whatever the offset, refused beyond :data:`R0_SPAN`·h.
+
+    A cam angle with velocity s′ in a part limited to tan α_allow = t needs s0 ≥ |s′ − k·e|/t − s. Two such
+    angles (of the same part or of the rise and the return) with s′1 > s′2 cannot both have |s′i − k·e| below
+    (s′1 − s′2)·ti/(t1 + t2), so r0 ≥ s0 ≥ (s′1 − s′2)/(t1 + t2) − h for any e. The extreme s′ of each part
+    are taken on a grid (values the motion really takes, so the bound stays a bound).
+
+    Examples
+    --------
+    >>> from geomcon.cam.base_radius import limits
+    >>> prog = parse_program([{"kind": "rise", "angle": 180, "law": "cosine"}, {"kind": "dwell", "angle": 180}])
+    >>> r0_floor(prog, 10.0, limits(prog, 45.0)) == 0.0        # the limit binds nowhere near the bound
+    True
+    >>> try:
+    ...     r0_floor(prog, 10.0, limits(prog, 1e-12))
+    ... except NotAMechanism as exc:
+    ...     print(str(exc)[:70])
+    alpha_allow = 1e-12° needs a base circle r0 ≥ 1.43239e+14 mm, more th
+    """
+    parts = []
+    for lim in lims:
+        d = np.linspace(lim.lo, lim.hi, 257)
+        d[-1] = np.nextafter(lim.hi, lim.lo)
+        v = prog.motion(h, d, radians=True)[1]
+        parts.append((float(np.min(v)), float(np.max(v)), lim))
+    out, worst = 0.0, None
+    for _, hi, a in parts:
+        for lo, _, b in parts:
+            floor = (hi - lo) / (a.t + b.t) - h
+            if floor > out:
+                out, worst = floor, (a, b)
+    if out > R0_SPAN * h:
+        names = " and ".join(dict.fromkeys(
+            f"{'alpha_allow' if x.part == 'rise' else 'alpha_allow_return'} = {math.degrees(math.atan(x.t)):g}°"
+            for x in worst))
+        span = f"{R0_SPAN:g}".replace("e+", "e")
+        raise NotAMechanism(f"{names} need{'s' if ' and ' not in names else ''} a base circle r0 ≥ {out:g} mm, more "
+                            f"than {span}·h (h = {h:g}): the lines at α_allow are within rounding of the axis — allow "
+                            "a larger pressure angle")
+    return out
 
 
 # ---------------------------------------------------------------------------- step operations
