@@ -61,14 +61,16 @@ def centre_condition(P1: XY, P2: XY, P3: XY) -> float:
     return math.inf if area2 == 0.0 else (a * b * c * max(a, b, c)) / (2.0 * area2 * area2)
 
 
-def _circle_circle_side(P: XY, r: float, Q: XY, s: float, side: int) -> XY | None:
+def _circle_circle_side(P: XY, r: float, Q: XY, s: float, side: int, nearest: bool = False) -> XY | None:
     """The meeting point of circle(P, r) and circle(Q, s) on ``side`` of the directed line P→Q
-    (+1 left, −1 right); None when they do not meet (a tangency counts as meeting)."""
+    (+1 left, −1 right); None when they do not meet (a tangency counts as meeting) — or, with ``nearest``,
+    the point of circle(P, r) nearest to circle(Q, s), on the line PQ (None only when P = Q)."""
     dx, dy = Q[0] - P[0], Q[1] - P[1]
     d = math.hypot(dx, dy)
-    if d == 0.0 or d > r + s or d < abs(r - s):
+    if d == 0.0 or (not nearest and (d > r + s or d < abs(r - s))):
         return None
     x = (d * d + r * r - s * s) / (2.0 * d)                 # along P→Q
+    x = min(r, max(-r, x))                                  # apart or nested: the end of P's circle nearest Q's
     h = math.sqrt(max(0.0, (r + x) * (r - x)))              # across, no cancellation in r² − x²
     ux, uy = dx / d, dy / d
     return (P[0] + x * ux - side * h * uy, P[1] + x * uy + side * h * ux)
@@ -80,11 +82,21 @@ def crank_point(A: XY, AB: float, phi: float) -> XY:
     return (A[0] + AB * math.cos(t), A[1] + AB * math.sin(t))
 
 
-def assemble(A: XY, D: XY, AB: float, BC: float, CD: float, phi: float, branch: int) -> tuple[XY, XY] | None:
+def assemble(A: XY, D: XY, AB: float, BC: float, CD: float, phi: float, branch: int,
+             nearest: bool = False) -> tuple[XY, XY] | None:
     """(B, C) of the four-bar ABCD at crank angle ``phi`` on ``branch`` (+1: C left of B→D), or None when
-    the linkage cannot be assembled there (BD outside [|BC − CD|, BC + CD])."""
+    the linkage cannot be assembled there (BD outside [|BC − CD|, BC + CD]).
+
+    With ``nearest`` a position that cannot be assembled gives the dead point nearest to it instead: C on the
+    line BD at CD from D, on the side nearest to the circle of radius BC about B (so a back-substitution reads
+    a finite angle that misses by what the linkage misses, never NaN); None only when B falls on D.
+
+    >>> B, C = assemble((0.0, 0.0), (90.0, 0.0), 50.0, 10.0, 10.0, 90.0, +1, nearest=True)
+    >>> [round(v, 9) for v in C]
+    [81.258427239, 4.856429312]
+    """
     B = crank_point(A, AB, phi)
-    C = _circle_circle_side(D, CD, B, BC, -branch)          # left of B→D = right of D→B
+    C = _circle_circle_side(D, CD, B, BC, -branch, nearest)   # left of B→D = right of D→B
     return None if C is None else (B, C)
 
 

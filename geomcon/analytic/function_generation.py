@@ -39,7 +39,7 @@ from typing import Sequence
 
 from ..errors import NotAMechanism
 from .fourbar_drive import (REFUSE_CONDITION, WARN_CONDITION, arc_through, bd_extremes, centre_condition,
-                            dead_point_free, turns_fully)
+                            dead_point_free, on_arc, turns_fully)
 from .linkages import _tri_angle
 
 STEP = 1e-30
@@ -164,6 +164,32 @@ def _branch(B, C, D) -> int:
     return (s > 0) - (s < 0)
 
 
+def transmission_at(a: float, b: float, c: float, d: float, W: float, phi: float) -> float:
+    """The acute transmission angle (deg) of the linkage a, b, c, d at crank angle ``phi`` (deg), from the
+    triangle B C D with sides b, c and BD(φ) = √((a − d)² + 4ad·sin²(φ/2)) by Kahan's factors
+    tan²(∠BCD/2) = (c − δ)(b + BD − c) / ((b + c + BD)(c + δ)), δ = b − BD.
+
+    δ is never the difference of the two floats b and BD when they are the longer sides: with AD = 1e9 and
+    CD = 150 both are ~1e9 and hold δ only to their last bit (1e-7 mm, 1e-6° of a 0.4° γ); it is
+    (b² − BD²)/(b + BD) with b² − BD² = c² − 2ad(W − cos φ) from Freudenstein's W (b² = a² + c² + d² − 2adW).
+
+    >>> W = (50**2 + 80**2 + 90**2 - 70**2) / (2 * 50 * 90)        # a crank-rocker 50, 70, 80, 90
+    >>> round(transmission_at(50.0, 70.0, 80.0, 90.0, W, 0.0), 9), round(_tri_angle(70.0, 80.0, 40.0), 9)
+    (29.994725527, 29.994725527)
+    """
+    t = math.radians(phi)
+    s = math.sin(t / 2.0)
+    bd = math.sqrt((a - d) ** 2 + 4.0 * a * d * s * s)
+    if c >= max(b, bd):
+        delta = b - bd                                     # c is the longest: b − BD does not cancel against it
+    else:
+        delta = (c * c - 2.0 * a * d * (W - math.cos(t))) / (b + bd)
+    big = (b - c) + bd if b >= bd else (bd - c) + b        # b + BD − c, exact where c ≈ b + BD (Sterbenz)
+    g = math.degrees(2.0 * math.atan2(math.sqrt(max(0.0, (c - delta) * big)),
+                                      math.sqrt(max(0.0, (b + c + bd) * (c + delta)))))
+    return min(g, 180.0 - g)
+
+
 def function_generation(AD: float, AB: float, phi: Sequence[float], psi: Sequence[float]) -> dict:
     """Every answer of ``four_bar.function_generation`` by the linear Freudenstein system.
 
@@ -187,7 +213,9 @@ def function_generation(AD: float, AB: float, phi: Sequence[float], psi: Sequenc
     start, swept = (0.0, 360.0) if crank else arc_through(*phi)
     lo, hi = bd_extremes((0.0, 0.0), (d, 0.0), a, start, swept)
     free = dead_point_free(lo, hi, b, c)
-    gammas = [min(g, 180.0 - g) for g in (_tri_angle(b, c, lo), _tri_angle(b, c, hi))]
+    # γ is extreme where BD is: with the crank along the frame (on the arc) or at the ends of the arc
+    at = [f for f in (0.0, 180.0) if crank or on_arc(f, start, swept)] + ([] if crank else [phi[0], phi[2]])
+    gammas = [transmission_at(a, b, c, d, W, f) for f in at]
     sens = []
     for k in range(8):          # φ1..3, ψ1..3 (rad), AD, AB (mm)
         gk = [complex(v) for v in (*rad, d, a)]

@@ -405,7 +405,8 @@ def analytic_two(g: Mapping[str, Any]) -> list[dict[str, Any]]:
 
 def _drive(g: Mapping[str, Any], F1: tuple[float, float], EF: float, pins: list[float]) -> list[tuple[str, float, float, str]]:
     """Turn the rocker to each ψi, assemble the slider on the branch of position 1 (or, for a position designed
-    on the other branch, on its own: ``s[i].own_branch``) and read the pin's position."""
+    on the other branch, on its own: ``s[i].own_branch``) and read the pin's position; a rod that cannot
+    reach the guide reads the foot of F (the nearest position: a finite s that misses, never NaN)."""
     D, psi, al = g["D"], g["psi"], g["guide_angle"]
     Fs = []
     for p in psi:
@@ -416,8 +417,8 @@ def _drive(g: Mapping[str, Any], F1: tuple[float, float], EF: float, pins: list[
     rows = []
     for i, (F, s) in enumerate(zip(Fs, pins)):
         side = sides[0] if sides[i] == sides[0] else sides[i]
-        got, ok = slider_position(F, EF, g["e"], al, side)
-        rows.append((f"s[{i}]" if side == sides[0] else f"s[{i}].own_branch", got if ok else math.nan, s, "mm"))
+        got, _ = slider_position(F, EF, g["e"], al, side)    # out of reach: the foot, the nearest (finite) s
+        rows.append((f"s[{i}]" if side == sides[0] else f"s[{i}].own_branch", got, s, "mm"))
     return rows
 
 

@@ -353,19 +353,20 @@ def positions_back_check(A: Point, D: Point, AB: float, BC: float, CD: float, Bs
     to each prescribed input angle on the branch of position 1 and compare what it reaches with the
     prescribed positions: |AB_i| = AB (the crank passes B_i), |DC_i| = CD, the direction of DC_i and, with
     coupler points K_i, the direction of B_iK_i (the coupler's angle). A position on the other branch is
-    assembled on its own branch and named so (the branch defect is reported separately)."""
+    assembled on its own branch and named so (the branch defect is reported separately). A position the
+    linkage cannot be assembled at reads the nearest dead point (``assemble(..., nearest=True)``): a finite
+    direction that misses by what the linkage misses, never NaN."""
     a, d = A.tuple(), D.tuple()
     b1 = branch_of(Bs[0].tuple(), Cs[0].tuple(), d)
     rows = []
     for i, (B, C) in enumerate(zip(Bs, Cs), 1):
         br = branch_of(B.tuple(), C.tuple(), d)
         tag = "" if br == b1 else " (other branch)"
-        got = assemble(a, d, AB, BC, CD, angle_of(a, B.tuple()), br or b1)
+        got = assemble(a, d, AB, BC, CD, angle_of(a, B.tuple()), br or b1, nearest=True)
         rows.append((f"|AB{i}|", abs(B - A), AB, "mm"))
         rows.append((f"|DC{i}|", abs(C - D), CD, "mm"))
         if got is None:
-            rows.append((f"C{i} direction from D{tag}", math.nan, angle_of(d, C.tuple()), "deg"))
-            continue
+            raise NotAMechanism(f"the designed crank pin B{i} falls on D: the rocker's direction is undefined")
         Bg, Cg = got
         rows.append((f"C{i} direction from D{tag}", _wrapped(angle_of(d, Cg), angle_of(d, C.tuple())),
                      angle_of(d, C.tuple()), "deg"))

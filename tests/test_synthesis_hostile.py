@@ -1,0 +1,96 @@
+"""Regression tests for defects the hostile fuzz found in the synthesis recipes: four_bar.function_generation
+with AD = 1e9 (γmin from two sides of 1e9 mm that hold their difference only to the last bit, in both routes)
+and back-substitutions that read NaN where the rebuilt linkage (at perturbed answers) cannot be assembled."""
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+
+import mpmath
+import pytest
+
+from geomcon.analytic.fourbar_drive import assemble
+from geomcon.problems import problem_from_dict
+from geomcon.recipes import four_bar_function, four_bar_positions, rocker_slider
+from geomcon.solve import solve
+
+PROBLEMS = Path(__file__).resolve().parent.parent / "problems"
+
+
+def _given(stem: str) -> dict:
+    with open(PROBLEMS / f"{stem}.toml", "rb") as fh:
+        return tomllib.load(fh)
+
+
+def _mp_function_generation(AD, AB, phi, psi):
+    """(BC, CD, γmin) at 50 digits: Freudenstein's linear system, γ at the ends of the crank's arc (no full turn,
+    the frame line not on the arc in the cases below)."""
+    with mpmath.workdps(50):
+        d, a = mpmath.mpf(AD), mpmath.mpf(AB)
+        ph = [mpmath.radians(mpmath.mpf(v)) for v in phi]
+        ps = [mpmath.radians(mpmath.mpf(v)) for v in psi]
+        M = mpmath.matrix([[mpmath.cos(p) / a - mpmath.cos(f - p) / d, -(mpmath.sin(p) / a + mpmath.sin(f - p) / d), 1]
+                           for f, p in zip(ph, ps)])
+        U, V, W = mpmath.lu_solve(M, mpmath.matrix([mpmath.cos(f) for f in ph]))
+        c = mpmath.sqrt(U * U + V * V)
+        b = mpmath.sqrt(a * a + c * c + d * d - 2 * a * d * W)
+        gammas = []
+        for f in (ph[0], ph[2]):
+            bd2 = a * a + d * d - 2 * a * d * mpmath.cos(f)
+            g = mpmath.degrees(mpmath.acos((b * b + c * c - bd2) / (2 * b * c)))
+            gammas.append(min(g, 180 - g))
+        return float(b), float(c), float(min(gammas))
+
+
+@pytest.mark.parametrize("AD", [80.0, 1e6, 1e8, 1e9])
+def test_function_generation_with_a_long_frame(AD):
+    """problems/100-06 with the frame stretched to 1e9 mm (BC ~ 1e9, CD ~ 150): γmin of the twin to 1e-11 of
+    itself against 50 digits, the construction's to its C1 (the circumcentre of points 1e9 mm from A, beta
+    to ~2e-7°), and no check fails."""
+    g = {**_given("100-06_four_bar_function_log")["given"], "AD": AD}
+    sol = solve(problem_from_dict({"recipe": "four_bar.function_generation", "given": g}, name="t"))
+    bad = [c for c in sol.checks if not c["ok"]]
+    assert not bad, bad
+    b, c, gamma = _mp_function_generation(AD, g["AB"], g["phi"], g["psi"])
+    twin = sol.analytic[0]
+    assert twin["gamma_min"] == pytest.approx(gamma, rel=1e-11)
+    assert twin["CD"] == pytest.approx(c, rel=1e-12)
+    assert sol.answers["gamma_min"] == pytest.approx(gamma, rel=1e-6 if AD >= 1e8 else 1e-9)
+    assert all(math.isfinite(r["construction"]) for r in sol.checks)
+
+
+def test_function_generation_back_check_is_finite_off_the_assembly_range():
+    """The solver's condition of a back-substitution row rebuilds the linkage at answers moved by 1e-6 of
+    themselves; at AD = 1e9 that is BC ± 1000 mm and the linkage cannot be assembled: the rows read the
+    nearest dead point, a finite angle that misses, not NaN."""
+    g = {**_given("100-06_four_bar_function_log")["given"], "AD": 1e9}
+    ans = dict(solve(problem_from_dict({"recipe": "four_bar.function_generation", "given": g}, name="t")).answers)
+    for k in (1 + 1e-6, 1 - 1e-6):
+        rows = four_bar_function.back_check(g, {**ans, "BC": ans["BC"] * k})
+        assert all(math.isfinite(v) for _, v, _, _ in rows)
+        assert max(abs(v - want) for _, v, want, _ in rows) > 1e-3       # it misses, visibly
+
+
+def test_assemble_nearest_is_the_dead_point_nearest_to_the_position():
+    """BD = 103 > BC + CD = 20: C on the line D→B at CD from D; nested circles: C on the side nearest the
+    other circle; assemblable positions are unchanged by ``nearest``."""
+    A, D = (0.0, 0.0), (90.0, 0.0)
+    B, C = assemble(A, D, 50.0, 10.0, 10.0, 90.0, +1, nearest=True)
+    bd = math.dist(B, D)
+    assert C == pytest.approx((D[0] + 10.0 * (B[0] - D[0]) / bd, D[1] + 10.0 * (B[1] - D[1]) / bd), rel=1e-15)
+    B, C = assemble(A, D, 50.0, 500.0, 10.0, 90.0, +1, nearest=True)         # circle about D inside B's
+    assert math.dist(B, C) == pytest.approx(math.dist(B, D) + 10.0, rel=1e-15)
+    assert assemble(A, D, 50.0, 70.0, 80.0, 90.0, +1, nearest=True) == assemble(A, D, 50.0, 70.0, 80.0, 90.0, +1)
+
+
+@pytest.mark.parametrize("stem,module,key", [("100-01_four_bar_three_positions", four_bar_positions, "BC"),
+                                             ("100-07_rocker_slider_three_positions", rocker_slider, "EF")])
+def test_other_back_checks_are_finite_off_the_assembly_range(stem, module, key):
+    """A rebuilt linkage that cannot reach its positions (a rod 1/1000 of its length) reads finite numbers."""
+    data = _given(stem)
+    sol = solve(problem_from_dict({"recipe": data["recipe"], "given": data["given"]}, name="t"))
+    ans = dict(sol.answers)
+    recipe = module.RECIPE if module is four_bar_positions else module.THREE
+    rows = recipe.back_check(sol.problem.given, {**ans, key: ans[key] * 1e-3})
+    assert rows and all(math.isfinite(v) for _, v, _, _ in rows)
