@@ -99,3 +99,24 @@ def test_base_radius_at_the_smallest_pressure_angle_against_its_closed_form(h):
     vr, vt = h / math.radians(150), -h / math.radians(120)
     s0 = (vr - vt) / (math.tan(math.radians(1e-6)) + math.tan(math.radians(70)))
     assert ans["s0"] == pytest.approx(s0, rel=1e-12)
+
+
+UNIFORM_KNIFE = "001-23a_cam_knife_uniform.toml"
+
+
+@pytest.mark.parametrize("r0", [30.0, 300.0, 1e4])
+def test_knife_with_a_stroke_far_below_its_base_circle_finds_alpha_max_at_the_return_end(r0):
+    """h = 1e-6 mm: α′ ~ (s′/r0)² ~ 1e-16 lies below the rounding of κ|P′| − ω (both ≈ 1); the slope is the
+    tangent's turn relative to the follower's frame. Uniform law: α = s′/(r0 + s) grows as s falls, so the
+    largest α of the return is at its end (300°) and of the rise at its start."""
+    ans = _solved(UNIFORM_KNIFE, h=1e-6, r0=r0)
+    assert ans["delta_alpha_max_return"] == pytest.approx(300.0, abs=1e-9)
+    assert ans["delta_alpha_max_rise"] == 0.0
+
+
+@pytest.mark.parametrize("law", ["cosine", "cycloidal", "parabolic"])
+def test_alpha_max_place_of_a_tiny_stroke_agrees_with_the_twin(law):
+    prog = [{"kind": "rise", "angle": 120, "law": law}, {"kind": "dwell", "angle": 60},
+            {"kind": "return", "angle": 120, "law": law}, {"kind": "dwell", "angle": 60}]
+    ans = _solved(UNIFORM_KNIFE, h=1e-6, r0=1e4, program=prog)         # 2.5e-6° apart before
+    assert 0.0 < ans["delta_alpha_max_rise"] < 120.0 and 180.0 < ans["delta_alpha_max_return"] < 300.0

@@ -101,12 +101,40 @@ def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequ
     return (c * qx - s * qy, s * qx + c * qy, c * vx - s * vy, s * vx + c * vy, c * ax - s * ay, s * ax + c * ay)
 
 
+def inverted_relative(delta: np.ndarray, rotation: str, dq: Sequence[np.ndarray], ddq: Sequence[np.ndarray]
+                      ) -> tuple[np.ndarray, np.ndarray]:
+    """P″ − kJP′ = R(q″ + kJq′): the acceleration of the inverted point relative to the turning frame (the
+    frame's own turn taken out), formed in the follower's frame before it is turned.
+
+    The turn of the tangent relative to the frame, P′ × (P″ − kJP′) = P′ × P″ − k|P′|², is what a pressure
+    angle measured against a direction fixed in the follower's frame changes by. Formed from P″ it is a
+    difference of two terms of size |P′|² (r0² for a cam whose stroke is far below its base circle: all its
+    digits lost at h/r0 ~ 1e-8); formed from q′ and q″ it is as accurate as they are.
+
+    Examples
+    --------
+    >>> d = np.array([0.3])
+    >>> q, dq, ddq = (0 * d + 2.0, 30.0 + 0 * d), (0 * d, 0.5 + 0 * d), (0 * d, -0.1 + 0 * d)
+    >>> P = inverted(d, "ccw", q, dq, ddq)
+    >>> rx, ry = inverted_relative(d, "ccw", dq, ddq)
+    >>> bool(np.allclose([P[4] - P[3], P[5] + P[2]], [rx, ry], rtol=1e-12))     # k = −1: −kJP′ = (−P′y, P′x)
+    True
+    """
+    k = -1.0 if rotation == "ccw" else 1.0
+    c, s = np.cos(k * delta), np.sin(k * delta)
+    (dx, dy), (ex, ey) = dq, ddq
+    wx, wy = ex - k * dy, ey + k * dx                          # q″ + kJq′
+    return c * wx - s * wy, s * wx + c * wy
+
+
 @dataclass(frozen=True)
 class PitchCurve:
-    """A closed curve traced once as δ goes from 0 to 2π (see the module docstring)."""
+    """A closed curve traced once as δ goes from 0 to 2π (see the module docstring). ``relative``, when
+    given, is :func:`inverted_relative` of the same point (the follower-frame turn of the tangent)."""
 
     fn: CurveFn
     breaks: tuple[float, ...] = ()
+    relative: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None
 
     def pieces(self) -> list[tuple[float, float]]:
         """The smooth pieces [a, b] of the turn, in order."""
@@ -173,7 +201,8 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     """The maximum of a function smooth on each piece, and where.
 
     With ``slope`` (a function with the sign of g′, from exact derivatives) the candidates are the ends of
-    each piece (the right end one-sided) and the places where the slope changes sign from + to − between
+    each piece (the right end one-sided) where the slope does not lead into the piece, and the places where
+    the slope changes sign from + to − between
     dense samples (denser towards the ends: 1e-2 … 1e-9 of the piece), each located by bisection on the
     slope's sign to the last bit: no comparison of values
     decides where an interior maximum lies, and a maximum at a piece's end is that end exactly. Without
@@ -207,7 +236,10 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
         lo, hi = [], []
         for d, sl in zip(grids, slopes):
-            places += [float(d[0]), float(d[-1])]
+            # an end is a candidate unless the slope, beyond its noise, leads into the piece (g grows there):
+            # values that tie to roundoff (α nearly constant over a long piece) must not pick the wrong end
+            places += [float(d[0])] if not sl[0] > noise else []
+            places += [float(d[-1])] if not sl[-1] < -noise else []
             for i in np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0].tolist():
                 if max(abs(sl[i]), abs(sl[i + 1])) <= noise:      # roundoff (a dwell): the sample stands
                     places.append(float(d[i]))
@@ -294,6 +326,27 @@ def pressure_angle_slope(c6: Curve6, ux: np.ndarray, uy: np.ndarray, omega: np.n
     (κ|P′| − ω)·sign((T·u)(T×u))."""
     _, _, dx, dy = c6[:4]
     return (curvature(c6) * np.hypot(dx, dy) - omega) * np.sign((dx * ux + dy * uy) * (dx * uy - dy * ux))
+
+
+def frame_pressure_angle_slope(c6: Curve6, rel: tuple[np.ndarray, np.ndarray], ux: np.ndarray,
+                               uy: np.ndarray) -> np.ndarray:
+    """dα/dδ of :func:`pressure_angle` for a direction u fixed in the follower's (turning) frame, from the
+    relative acceleration ``rel`` (:func:`inverted_relative`): (P′ × rel)/|P′|²·sign((T·u)(T×u)) — the same
+    as :func:`pressure_angle_slope` with ω the frame's turn, without its cancellation of κ|P′| against ω
+    (whose rounding, ε·|ω|, swamps α′ ~ (h/r0)² of a small stroke on a large base circle).
+
+    Examples
+    --------
+    >>> d = np.linspace(0.2, 1.0, 5)
+    >>> q, dq, ddq = (0 * d, 30.0 + np.sin(d)), (0 * d, np.cos(d)), (0 * d, -np.sin(d))
+    >>> c6, rel = inverted(d, "cw", q, dq, ddq), inverted_relative(d, "cw", dq, ddq)
+    >>> ux, uy = -np.sin(d), np.cos(d)                       # the axis, turned with the frame (k = +1)
+    >>> bool(np.allclose(frame_pressure_angle_slope(c6, rel, ux, uy), pressure_angle_slope(c6, ux, uy, 1.0)))
+    True
+    """
+    _, _, dx, dy = c6[:4]
+    rx, ry = rel
+    return (dx * ry - dy * rx) / (dx * dx + dy * dy) * np.sign((dx * ux + dy * uy) * (dx * uy - dy * ux))
 
 
 def rho_min(curve: PitchCurve) -> Extremum:
@@ -698,7 +751,8 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 
 
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
-           "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "corners", "sample_count",
+           "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
+           "inverted_relative", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
            "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]

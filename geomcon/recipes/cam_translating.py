@@ -19,8 +19,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope_rho_min,
-                           flat_profile, inverted, maximise, pressure_angle, pressure_angle_slope, rho_min,
-                           roller_profile)
+                           flat_profile, frame_pressure_angle_slope, inverted, inverted_relative, maximise,
+                           pressure_angle, rho_min, roller_profile)
 from ..cam.program import Program, parse_program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
@@ -129,7 +129,12 @@ def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> Pi
         z = np.zeros_like(d)
         return inverted(d, rotation, (e + z, s0 + s), (z, v), (z, a))
 
-    return PitchCurve(fn, program_breaks(prog))
+    def relative(d):
+        _, v, a = prog.motion(h, d, radians=True)
+        z = np.zeros_like(d)
+        return inverted_relative(d, rotation, (z, v), (z, a))
+
+    return PitchCurve(fn, program_breaks(prog), relative)
 
 
 def _face_family(prog: Program, h: float, r0: float, inv: float) -> LineFamily:
@@ -155,8 +160,8 @@ def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float)
     def g(d):
         return np.degrees(pressure_angle(curve.eval(d), *_axis(inv, d)))
 
-    def slope(d):
-        return pressure_angle_slope(curve.eval(d), *_axis(inv, d), inv)
+    def slope(d):                 # the axis turns with the follower's frame: its relative turn, no cancellation
+        return frame_pressure_angle_slope(curve.eval(d), curve.relative(d), *_axis(inv, d))
 
     return maximise(g, [(math.radians(start_deg), math.radians(end_deg))], slope=slope)
 
