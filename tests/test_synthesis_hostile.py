@@ -94,3 +94,26 @@ def test_other_back_checks_are_finite_off_the_assembly_range(stem, module, key):
     recipe = module.RECIPE if module is four_bar_positions else module.THREE
     rows = recipe.back_check(sol.problem.given, {**ans, key: ans[key] * 1e-3})
     assert rows and all(math.isfinite(v) for _, v, _, _ in rows)
+
+
+def test_rocker_slider_with_a_far_guide():
+    """problems/100-08 with the guide 1e9 mm from D (found by the hostile fuzz, β 2.6e-6° apart): the twin's
+    rows differenced before the squares of 1e9 are formed, β to 1e-12 of a 50-digit solution of the same
+    equations G·(Q_i − Q_1) = (|P_i|² − |P_1|²)/2 (G = F1 − D, P_i = E_i − D, Q_i = P_i turned by ψ1 − ψi)."""
+    data = _given("100-08_rocker_slider_inclined_guide")
+    g = {**data["given"], "e": 1e9}
+    sol = solve(problem_from_dict({"recipe": data["recipe"], "given": g}, name="t"))
+    bad = [c for c in sol.checks if not c["ok"]]
+    assert not bad, bad
+    with mpmath.workdps(50):
+        Dx, Dy = (mpmath.mpf(v) for v in g["D"])
+        a = mpmath.radians(g["guide_angle"])
+        P = [(si * mpmath.cos(a) - Dx, g["e"] + si * mpmath.sin(a) - Dy) for si in map(mpmath.mpf, g["s"])]
+        t = [mpmath.radians(g["psi"][0] - p) for p in g["psi"]]
+        Q = [(x * mpmath.cos(ti) - y * mpmath.sin(ti), x * mpmath.sin(ti) + y * mpmath.cos(ti)) for (x, y), ti in zip(P, t)]
+        M = mpmath.matrix([[Q[i][0] - Q[0][0], Q[i][1] - Q[0][1]] for i in (1, 2)])
+        r = mpmath.matrix([(P[i][0] ** 2 + P[i][1] ** 2 - P[0][0] ** 2 - P[0][1] ** 2) / 2 for i in (1, 2)])
+        G = mpmath.lu_solve(M, r)
+        beta = float(mpmath.degrees(mpmath.atan2(G[1], G[0])) - g["psi"][0])
+    assert sol.analytic[0]["beta"] == pytest.approx(beta, rel=1e-12)
+    assert sol.answers["beta"] == pytest.approx(beta, rel=1e-7)      # the construction's F1 from points 1e9 mm out

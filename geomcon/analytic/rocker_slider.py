@@ -51,13 +51,23 @@ def _pins(e, alpha, s):
 
 
 def _three(Dx, Dy, psi, e, alpha, s):
-    """(F1x, F1y, U, V, W): angles in radians; complex-safe."""
-    rows, rhs = [], []
+    """(F1x, F1y, U, V, W): angles in radians; complex-safe.
+
+    Rows 2 and 3 are taken minus row 1 with |DE_i|² − |DE_1|² = (E_i − E_1)·(E_i + E_1 − 2D) and
+    E_i − E_1 = (s_i − s_1)·u: with the guide 1e9 mm from D the squares are 1e18 and their difference, which
+    carries F1 (16 mm from D), kept only 1e2 of it (β 1.6e-6° off)."""
+    rows, rhs, XY = [], [], []
+    ux, uy = cmath.cos(alpha), cmath.sin(alpha)
     for (ex, ey), p in zip(_pins(e, alpha, s), psi):
         X, Y = ex - Dx, ey - Dy
         c, sn = cmath.cos(p), cmath.sin(p)
         rows.append([2 * (X * c + Y * sn), 2 * (Y * c - X * sn), -1.0])
         rhs.append(X * X + Y * Y)
+        XY.append((X, Y))
+    for i in (1, 2):
+        dx, dy = (s[i] - s[0]) * ux, (s[i] - s[0]) * uy
+        rows[i] = [rows[i][0] - rows[0][0], rows[i][1] - rows[0][1], 0.0]
+        rhs[i] = dx * (XY[i][0] + XY[0][0]) + dy * (XY[i][1] + XY[0][1])
     U, V, W = solve3(rows, rhs)
     fx, fy = _rot(U, V, psi[0])
     return Dx + fx, Dy + fy, U, V, W
@@ -70,7 +80,8 @@ def _two(Dx, Dy, psi, F1x, F1y, e, alpha, s):
     F2x, F2y = Dx + vx, Dy + vy
     px, py = -F1x, e - F1y
     qx, qy = (s[1] - s[0]) * ux - F2x, e + (s[1] - s[0]) * uy - F2y
-    t = (qx * qx + qy * qy - px * px - py * py) / (2 * ((px - qx) * ux + (py - qy) * uy))
+    dx, dy = (s[1] - s[0]) * ux - (F2x - F1x), (s[1] - s[0]) * uy - (F2y - F1y)     # q − p, not of two 1e9s
+    t = (dx * (qx + px) + dy * (qy + py)) / (-2 * (dx * ux + dy * uy))               # |q|² − |p|² = (q − p)·(q + p)
     return t * ux, e + t * uy, t
 
 
