@@ -120,3 +120,19 @@ def test_alpha_max_place_of_a_tiny_stroke_agrees_with_the_twin(law):
             {"kind": "return", "angle": 120, "law": law}, {"kind": "dwell", "angle": 60}]
     ans = _solved(UNIFORM_KNIFE, h=1e-6, r0=1e4, program=prog)         # 2.5e-6° apart before
     assert 0.0 < ans["delta_alpha_max_rise"] < 120.0 and 180.0 < ans["delta_alpha_max_return"] < 300.0
+
+
+ECCENTRIC = "001-26_eccentric_knife_offset.toml"
+
+
+@pytest.mark.parametrize("R, e", [(1e9, -10.0), (1e9, 10.0), (3e8, -1.0), (1e9, 300.0)])
+def test_eccentric_cam_at_a_huge_radius_measures_delta_from_an_exact_tangent_point(R, e):
+    """OA = 10, the state A_angle = 0: δ is the turn of O→A from its lowest position, atan2(−√(r0² − e²), −e).
+    K0, the follower's foot at its lowest position, was the Thales circle on OB0 (radius 5e8) meeting the
+    offset circle (radius 10): turned by ε·5e8/10, δ 2.3e-7° off."""
+    ans = _solved(ECCENTRIC, R=R, e=e)
+    r0 = R - 10.0
+    y_low = math.sqrt((r0 - e) * (r0 + e))
+    phi_low = math.atan2(-y_low, -e)                       # O→A at the lowest position (ccw cam)
+    delta = math.degrees(0.0 - phi_low) % 360.0            # the state A_angle = 0
+    assert ans["delta"] == pytest.approx(delta, abs=1e-11)

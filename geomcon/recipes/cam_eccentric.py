@@ -169,6 +169,25 @@ def follower_line(foot: Point, e: float) -> Line:
     return Line(foot, n.perp())
 
 
+def tangent_foot(o: Point, p: Point, r: float, side: float) -> Point | None:
+    """Where a tangent from ``p`` touches the circle about ``o`` of radius ``r``, on the right of the directed
+    line o→p (side = +1) or on its left (side = −1); None when p lies inside the circle. The Thales circle on
+    op meets the circle there, but that intersection (radii |op|/2 and r) carries ε·|op| into a point at r
+    from o, turning it by ε·|op|/r (4e-9 rad at |op| = 1e9, r = 10); here the point is laid off at the angle
+    β = atan2(√(|op|² − r²), r) from o→p, as accurate as its data.
+
+    >>> k = tangent_foot(Point(0.0, 0.0), Point(0.0, 20.0), 10.0, 1.0)
+    >>> round(k.x, 12), round(k.y, 12)                        # 60° from o→p, on its right
+    (8.660254037844, 5.0)
+    """
+    d = p - o
+    dist = abs(d)
+    if dist < r:
+        return None
+    beta = math.atan2(math.sqrt((dist - r) * (dist + r)), r)
+    return o + rotate(d.unit(), Point(0.0, 0.0), -side * beta) * r
+
+
 def foot_on_OA(o: Point, a: Point, e: float, sign: float) -> Point:
     """The point of line OA at distance |e| from O, on the side of A (sign = +1) or opposite (−1)."""
     return o + (a - o).unit() * (sign * abs(e))
@@ -313,14 +332,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if flat:
         return _finish_flat(sc, g, O, A, D, axis, B0, B1, sense)
     if e:
-        rule0 = RightOf(O, B0) if e > 0 else LeftOf(O, B0)
-        rule1 = RightOf(O, B1) if e > 0 else LeftOf(O, B1)
-        th0 = sc.add("th0", thales_circle, O, B0, style="construction", visible=False)
-        K0 = sc.add("K0", circle_circle, th0, Ref("offset_circle"), branch=rule0, style="point", label="K0",
+        side = 1.0 if e > 0 else -1.0               # the tangent point right of O→B for e > 0, left for e < 0
+        K0 = sc.add("K0", tangent_foot, O, B0, abs(e), side, style="point", label="K0",
                     caption=("The follower through B0 tangent to the offset circle at K0: its lowest position, turned back",
                              "过 B0 作偏距圆切线,切点 K0:从动件最低位置(反转后)"))
-        th1 = sc.add("th1", thales_circle, O, B1, style="construction", visible=False)
-        K1 = sc.add("K1", circle_circle, th1, Ref("offset_circle"), branch=rule1, style="point", label="K1",
+        K1 = sc.add("K1", tangent_foot, O, B1, abs(e), side, style="point", label="K1",
                     caption=("…and through B1, foot K1: its highest position", "过 B1 作切线,切点 K1:最高位置"))
         ref0, ref1 = K0, K1
         low = sc.add("low_len", length, K0, B0, visible=False, unit="mm")
@@ -395,9 +411,8 @@ def _alpha_extremes(sc: Scene, O: Ref, A: Ref, pitch: Ref, B0: Ref, B1: Ref, ref
         rise_d.append(d)
         ret_d.append(d)
     if e:
-        th = sc.add("thA", thales_circle, O, A, visible=False)
-        for i, rule in enumerate((LeftOf(O, A), RightOf(O, A))):
-            N = sc.add(f"N{i}", circle_circle, th, Ref("offset_circle"), branch=rule, optional=True, visible=False)
+        for i in range(2):                          # the tangents from A: left of O→A, then right
+            N = sc.add(f"N{i}", tangent_foot, O, A, abs(e), -1.0 if i == 0 else 1.0, optional=True, visible=False)
             vals.append(sc.add(f"alpha_N{i}", lambda n: 0.0 if n is not None else 90.0, N, visible=False))
             d = sc.add(f"delta_N{i}", lambda o, k, n, sg: turned_against(o, k, n, sg) if n is not None else -1.0,
                        O, ref0, N, sense, visible=False)
