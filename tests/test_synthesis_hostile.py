@@ -117,3 +117,26 @@ def test_rocker_slider_with_a_far_guide():
         beta = float(mpmath.degrees(mpmath.atan2(G[1], G[0])) - g["psi"][0])
     assert sol.analytic[0]["beta"] == pytest.approx(beta, rel=1e-12)
     assert sol.answers["beta"] == pytest.approx(beta, rel=1e-7)      # the construction's F1 from points 1e9 mm out
+
+
+def test_function_generation_with_every_angle_within_a_tenth_of_a_degree():
+    """problems/100-06 with every given × 0.001 (found by the hostile fuzz): the U column of Freudenstein's
+    system is the W column plus O(angle²); the twin's rows differenced as products of sines keep C1 and β to
+    1e-12 of a 50-digit solution (the construction had them; the twin lost C1's height to 4e-4)."""
+    data = _given("100-06_four_bar_function_log")
+    g = {k: ([x * 1e-3 for x in v] if isinstance(v, list) else v * 1e-3) for k, v in data["given"].items()}
+    sol = solve(problem_from_dict({"recipe": data["recipe"], "given": g}, name="t"))
+    bad = [c for c in sol.checks if not c["ok"]]
+    assert not bad, bad
+    with mpmath.workdps(50):
+        d, a = mpmath.mpf(g["AD"]), mpmath.mpf(g["AB"])
+        ph = [mpmath.radians(mpmath.mpf(v)) for v in g["phi"]]
+        ps = [mpmath.radians(mpmath.mpf(v)) for v in g["psi"]]
+        M = mpmath.matrix([[mpmath.cos(p) / a - mpmath.cos(f - p) / d, -(mpmath.sin(p) / a + mpmath.sin(f - p) / d), 1]
+                           for f, p in zip(ph, ps)])
+        U, V, _ = mpmath.lu_solve(M, mpmath.matrix([mpmath.cos(f) for f in ph]))
+        y = float(U * mpmath.sin(ps[0]) + V * mpmath.cos(ps[0]))
+        beta = float(mpmath.degrees(mpmath.atan2(V, U)))
+    for values in (sol.answers, sol.analytic[0]):
+        assert values["C1"][1] == pytest.approx(y, rel=1e-9)
+        assert values["beta"] == pytest.approx(beta, rel=1e-12)
