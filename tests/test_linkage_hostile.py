@@ -69,3 +69,18 @@ def test_frame_form_at_K_1_has_one_design_per_line(AD, CD, phi):
         assert values["psi"] == pytest.approx(psi, rel=1e-9)
         assert values["C1_folded"] == folded
         assert values["A_near"] == 1.0
+
+
+@pytest.mark.parametrize("recipe,given", [("slotter.design_by_K", dict(K=1.5, H=154, B1B2=308)),
+                                          ("shaper.design_by_K", dict(K=2, H=300, AB=75))])
+def test_alpha_allow_below_its_documented_minimum_is_refused(recipe, given):
+    """alpha_allow = 5e-324 (subnormal: sin α = 0, DE a division by zero) is refused naming the limit; just
+    above the limit DE = x / sin α is 1e10·x at most and both routes agree."""
+    from geomcon.recipes.common import ALPHA_ALLOW_MIN
+
+    for alpha in (5e-324, 1e-300, ALPHA_ALLOW_MIN / 2):
+        with pytest.raises(GeomconError, match="below 5.72958e-09"):
+            _solve(recipe, {**given, "alpha_allow": alpha}).answers
+    sol = _solve(recipe, {**given, "alpha_allow": ALPHA_ALLOW_MIN * 1.01})
+    assert sol.ok, [c for c in sol.checks if not c["ok"]]
+    assert sol.answers["DE"] == pytest.approx(sol.analytic[0]["DE"], rel=1e-9)

@@ -191,6 +191,31 @@ def near_flag(A: Point, C1: Point, C2: Point, D: Point) -> float:
     return 1.0 if u.cross(A - C1) * u.cross(D - C1) > 0 else 0.0
 
 
+ALPHA_ALLOW_MIN = math.degrees(math.asin(1e-10))
+"""The smallest ``alpha_allow`` (5.73e-9°) of the slotter and the shaper: the shortest coupler DE = x / sin α
+(x the arm or the deviation it is sized for) stays within 1e10 of x, the global ratio of lengths (a subnormal
+α made sin α = 0 and DE a division by zero)."""
+
+
+def refuse_alpha_allow(alpha: float | None) -> None:
+    """Refuse ``alpha_allow`` outside [:data:`ALPHA_ALLOW_MIN`, 90°), naming the limit.
+
+    >>> refuse_alpha_allow(5e-324)
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.NotAMechanism: alpha_allow = 4.94066e-324° is below 5.72958e-09°: the shortest coupler DE = x / sin α would exceed 1e10 times x
+    """
+    from ..errors import NotAMechanism
+
+    if alpha is None:
+        return
+    if not 0 < alpha < 90:
+        raise NotAMechanism(f"alpha_allow = {alpha:g}° must lie in (0°, 90°)")
+    if alpha < ALPHA_ALLOW_MIN:
+        raise NotAMechanism(f"alpha_allow = {alpha:g}° is below {ALPHA_ALLOW_MIN:g}°: the shortest coupler "
+                            "DE = x / sin α would exceed 1e10 times x")
+
+
 def one(*_: Any) -> float:
     """1.0 (A_near of the frame family)."""
     return 1.0

@@ -26,7 +26,7 @@ from ..geometry import (Ahead, Line, NearestTo, Point, circle, foot, line_circle
                         point_on_ray, reflect)
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length, refuse_alpha_allow
 from .guide_bar import construct as guide_bar_extremes
 from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, meet_lines, ray_from
 
@@ -44,7 +44,7 @@ GUIDE_ANSWERS = (
     Quantity("K", "", "time-ratio coefficient (as given)"),
 )
 SHAPER_GIVENS = GUIDE_GIVENS[:1] + (Quantity("H", "mm", "stroke of the ram (slider E)"),) + GUIDE_GIVENS[1:] + (
-    Quantity("alpha_allow", "deg", "largest admissible pressure angle at the ram: gives the shortest DE",
+    Quantity("alpha_allow", "deg", "largest admissible pressure angle at the ram: gives the shortest DE (5.73e-9° ≤ α < 90°: DE within 1e10 of the length it is sized for)",
              required=False),
     Quantity("DE", "mm", "coupler, when chosen: gives the largest pressure angle", required=False),
 )
@@ -71,8 +71,7 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     if th >= 90.0:
         raise NotAMechanism(f"K = {g['K']:g} gives θ = {th:g}° ≥ 90°: the guide bar would swing through ψ = θ ≥ 90°, "
                             "more than a guide-bar quick-return drive is built for; use K < 3")
-    if g.get("alpha_allow") is not None and not 0 < g["alpha_allow"] < 90:
-        raise NotAMechanism(f"alpha_allow = {g['alpha_allow']:g}° must lie in (0°, 90°)")
+    refuse_alpha_allow(g.get("alpha_allow"))
     if g.get("alpha_allow") is not None and g.get("DE") is not None:
         raise NotAMechanism("give alpha_allow (to size DE) or DE (to check the pressure angle), not both")
     return []

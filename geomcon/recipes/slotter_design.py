@@ -20,7 +20,7 @@ from ..errors import NotAMechanism
 from ..geometry import Above, Line, Point, ToRightOf, circle, line_circle, perpendicular, point_along
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length, refuse_alpha_allow
 from .theta_circle import K_MAX_OBTUSE, add_theta_step, refuse_tiny_theta, seeing_circle
 
 GIVENS = (
@@ -28,7 +28,7 @@ GIVENS = (
              "chord seen under 180° − θ, at least 0.057°)", minimum=1.0, maximum=K_MAX_OBTUSE),
     Quantity("H", "mm", "stroke S of the slider E"),
     Quantity("B1B2", "mm", "distance between the two points where B's path crosses the slider's path ee"),
-    Quantity("alpha_allow", "deg", "largest admissible pressure angle at E: gives the shortest DE", required=False),
+    Quantity("alpha_allow", "deg", "largest admissible pressure angle at E: gives the shortest DE (5.73e-9° ≤ α < 90°: DE within 1e10 of the length it is sized for)", required=False),
 )
 ANSWERS = (
     Quantity("AB", "mm", "crank"),
@@ -42,8 +42,7 @@ ANSWERS = (
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
     refuse_tiny_theta(g["K"])
-    if g.get("alpha_allow") is not None and not 0 < g["alpha_allow"] < 90:
-        raise NotAMechanism(f"alpha_allow = {g['alpha_allow']:g}° must lie in (0°, 90°)")
+    refuse_alpha_allow(g.get("alpha_allow"))
     return []
 
 
