@@ -110,6 +110,22 @@ def _number(value: Any, where: str) -> float:
     return x
 
 
+def check_number(unit: str, value: Any, where: str) -> float:
+    """A number from an untrusted file, as every given is checked: a number (not a bool), finite, within its
+    unit's range (:data:`RANGES`); the refusal names ``where``.
+
+    Examples
+    --------
+    >>> check_number("deg", 30, "program[0].angle")
+    30.0
+    >>> check_number("deg", 2 ** 1100, "program[0].angle")
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.ProblemError: program[0].angle is out of range (an integer of 332 digits)
+    """
+    return _in_range(unit, _number(value, where), where)
+
+
 def _in_range(unit: str, x: float, where: str) -> float:
     """Refuse a number outside its unit's range (:data:`RANGES`), naming the limit. Coordinates and list
     elements (positions along a guide…) have no smallest size: 0.0000001 mm from the origin is a place, not a

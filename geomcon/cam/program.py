@@ -209,7 +209,7 @@ def _end_values(seg: Segment, h: float, *, at_end: bool) -> tuple[float, float]:
 
 def _angle(value: Any, where: str) -> float:
     """A segment's angle through the checks every given number passes (a number, finite, within the range of
-    angles: :func:`geomcon.problems._number`, :func:`geomcon.problems._in_range`), then ≥ :data:`MIN_ANGLE`.
+    angles: :func:`geomcon.problems.check_number`), then ≥ :data:`MIN_ANGLE`.
 
     >>> _angle(2 ** 1100, "program[0].angle")
     Traceback (most recent call last):
@@ -220,10 +220,10 @@ def _angle(value: Any, where: str) -> float:
     ...
     geomcon.errors.ProblemError: program[1].angle = 4000° is out of range: an angle is at most 3600° in size
     """
-    from ..problems import _in_range, _number       # here: geomcon.problems imports the recipes, which import us
+    from ..problems import check_number            # here: geomcon.problems imports the recipes, which import us
     if value is None:
         raise NotAMechanism(f"{where} is missing (degrees of cam rotation)")
-    angle = _in_range("deg", _number(value, where), where)
+    angle = check_number("deg", value, where)
     if not angle >= MIN_ANGLE:
         raise NotAMechanism(f"{where} must be ≥ {MIN_ANGLE:g}° (degrees of cam rotation), got {angle:g}")
     return angle
