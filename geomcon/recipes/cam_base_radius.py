@@ -136,8 +136,8 @@ def r0_floor(prog: Program, h: float, lims: list) -> float:
     >>> try:
     ...     r0_floor(prog, 10.0, limits(prog, 1e-12))
     ... except NotAMechanism as exc:
-    ...     print(str(exc)[:70])
-    alpha_allow = 1e-12° needs a base circle r0 ≥ 1.43239e+14 mm, more th
+    ...     print(str(exc).split(",")[0])
+    alpha_allow = 1e-12° needs a base circle r0 ≥ 1.43239e+14 mm
     """
     parts = []
     for lim in lims:
