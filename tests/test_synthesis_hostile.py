@@ -140,3 +140,27 @@ def test_function_generation_with_every_angle_within_a_tenth_of_a_degree():
     for values in (sol.answers, sol.analytic[0]):
         assert values["C1"][1] == pytest.approx(y, rel=1e-9)
         assert values["beta"] == pytest.approx(beta, rel=1e-12)
+
+
+def test_function_generation_with_a_tiny_crank():
+    """problems/100-06 with AB = 1e-6 (AD = 80; the hinge falls 5e-6 mm from D): the bisectors met in the
+    drawing's coordinates held C1 only to the last bit of |D| (1e-14 mm), β 5.8e-7° and γmin 5.8e-7° off and
+    the check failed (exit 1); the hinge found from D keeps β, CD and γmin to 1e-11 of 50 digits."""
+    g = {**_given("100-06_four_bar_function_log")["given"], "AB": 1e-6}
+    sol = solve(problem_from_dict({"recipe": "four_bar.function_generation", "given": g}, name="t"))
+    bad = [c for c in sol.checks if not c["ok"]]
+    assert not bad, bad
+    b, c, gamma = _mp_function_generation(g["AD"], g["AB"], g["phi"], g["psi"])
+    with mpmath.workdps(50):
+        d, a = mpmath.mpf(g["AD"]), mpmath.mpf(g["AB"])
+        ph = [mpmath.radians(mpmath.mpf(v)) for v in g["phi"]]
+        ps = [mpmath.radians(mpmath.mpf(v)) for v in g["psi"]]
+        M = mpmath.matrix([[mpmath.cos(p) / a - mpmath.cos(f - p) / d, -(mpmath.sin(p) / a + mpmath.sin(f - p) / d), 1]
+                           for f, p in zip(ph, ps)])
+        U, V, _ = mpmath.lu_solve(M, mpmath.matrix([mpmath.cos(f) for f in ph]))
+        beta = float(mpmath.degrees(mpmath.atan2(V, U)))
+    for values in (sol.answers, sol.analytic[0]):
+        assert values["beta"] == pytest.approx(beta, rel=1e-12)
+        assert values["CD"] == pytest.approx(c, rel=1e-11)
+        assert values["BC"] == pytest.approx(b, rel=1e-13)
+        assert values["gamma_min"] == pytest.approx(gamma, rel=1e-11)

@@ -242,19 +242,22 @@ def farther_by(P: Point, Q: Point, R: Point) -> float:
     return (Q - R).dot((Q - P) + (R - P)) / (abs(Q - P) + abs(R - P))
 
 
-def design_transmission(B: Point, D: Point, B1: Point, C1: Point) -> float:
+def design_transmission(B: Point, D: Point, B1: Point, C1: Point, DC1: Point | None = None) -> float:
     """The acute transmission angle (deg) of the designed linkage (BC = |B1C1|, CD = |DC1|) with its crank pin
     at B: the triangle B C D's angle at C from Kahan's factors, each a side plus or minus a difference of
     sides read from nearby points (:func:`farther_by`). Re-intersecting the circles about B and D put C off by
     the last bit of BC over sin γ: with AD = 1e9 and CD = 150, BC (1e9) holds only 1e-7 mm, and a 0.4° γmin
-    came out 1.3e-6° off.
+    came out 1.3e-6° off. ``DC1`` is the rocker C1 − D as found from D (:func:`hinge_from`; default the
+    difference of the points): with CD = 5e-6 and AD = 80, C1 − D read from C1 holds only 1e-8 of CD.
 
     >>> round(design_transmission(Point(50, 0), Point(90, 0), Point(0, 50), Point(64.995527349, 75.991949228)), 6)
     29.994726
     """
-    x, y, z = abs(C1 - B1), abs(C1 - D), abs(D - B)                   # BC, CD, BD
+    u = C1 - D if DC1 is None else DC1
+    x, y, z = abs(C1 - B1), abs(u), abs(D - B)                        # BC, CD, BD
     d_xy = farther_by(C1, B1, D)                                      # BC − CD
-    d_xz = farther_by(B1, C1, D) + farther_by(D, B1, B)               # BC − BD
+    d_bc = u.dot((C1 - B1) + (D - B1)) / (x + abs(D - B1))            # |B1C1| − |B1D|, from C1 − D
+    d_xz = d_bc + farther_by(D, B1, B)                                # BC − BD
     d_yz = farther_by(D, C1, B1) + farther_by(D, B1, B)               # CD − BD
     f1 = y - d_xz if y <= z else z - d_xy                             # y + z − x
     f2 = x - d_yz if x <= z else z + d_xy                             # x + z − y
@@ -263,8 +266,42 @@ def design_transmission(B: Point, D: Point, B1: Point, C1: Point) -> float:
     return min(g, 180.0 - g)
 
 
+def hinge_from(D: Point, X: Sequence[Point], P: Sequence[Point]) -> Point:
+    """The centre of the circle through the inverted points P1 = X1, P2′, P3′ (Pi = Xi turned about D), as the
+    vector from D: the meet of the two perpendicular bisectors written from D, o·(Pi − P1) = (|Pi − D|² −
+    |P1 − D|²)/2, whose right sides are (Xi − X1)·((Xi − D) + (X1 − D))/2 (the turn keeps |Pi − D| = |Xi − D|):
+    a product with the difference of the nearby points Xi, X1, never the difference of two squares.
+
+    The bisectors met in the drawing's coordinates hold the hinge only to the last bit of |D| (1e-14 mm at
+    AD = 80): with AB = 1e-6 the hinge is 5e-6 mm from D and β came out 5.8e-7° off.
+
+    >>> X = (Point(1, 0), Point(3, 0), Point(2, 1))                     # no turn: Pi = Xi
+    >>> hinge_from(Point(0, 0), X, X)
+    Point(x=2.0, y=0.0)
+    """
+    rows, rhs = [], []
+    for i in (1, 2):
+        rows.append(P[i] - P[0])
+        rhs.append((X[i] - X[0]).dot((X[i] - D) + (X[0] - D)) / 2.0)
+    det = rows[0].cross(rows[1])
+    if det == 0.0:
+        raise NotAMechanism("the inverted points lie on a line: the hinge would lie at infinity")
+    return Point((rhs[0] * rows[1].y - rhs[1] * rows[0].y) / det, (rows[0].x * rhs[1] - rows[1].x * rhs[0]) / det)
+
+
+def from_D(D: Point, u: Point) -> Point:
+    """The point D + u."""
+    return D + u
+
+
+def signed_deg_of(D: Point, E: Point, u: Point) -> float:
+    """The angle from DE to the vector u, counter-clockwise, degrees in (−180°, 180°]."""
+    a = math.degrees(math.atan2(u.y, u.x) - polar_angle(D, E))
+    return (a + 180.0) % 360.0 - 180.0 if (a + 180.0) % 360.0 != 0.0 else 180.0
+
+
 def worst_transmission(A: Point, D: Point, AB: float, BC: float, CD: float, B1: Point, B2: Point, B3: Point,
-                       side: int, dead: tuple, C1: Point) -> tuple[float, Point, Point]:
+                       side: int, dead: tuple, C1: Point, DC1: Point | None = None) -> tuple[float, Point, Point]:
     """(γmin, B, C) over the motion: the transmission angle is extreme where BD is, i.e. with the crank along
     the frame line (both ways for a crank; those on the turn otherwise) or at the ends of the turn; a dead
     point on the turn gives 0. γ is measured by :func:`design_transmission` (C drawn by the circles)."""
@@ -281,7 +318,7 @@ def worst_transmission(A: Point, D: Point, AB: float, BC: float, CD: float, B1: 
     best = None
     for B in cands:
         C = rule(B, D).choose(circle_circle(circle(B, BC), circle(D, CD)))
-        g = design_transmission(B, D, B1, C1)
+        g = design_transmission(B, D, B1, C1, DC1)
         if best is None or g < best[0]:
             best = (g, B, C)
     return best
@@ -330,16 +367,25 @@ def add_turned(sc: Scene, D: Ref, X: Ref, deg: float, name: str, caption: tuple[
     return Xp
 
 
-def add_circumcentre(sc: Scene, key: str, P: Sequence[Ref], names: Sequence[str], caption: tuple[str, str]) -> Ref:
+def add_circumcentre(sc: Scene, key: str, P: Sequence[Ref], names: Sequence[str], caption: tuple[str, str],
+                     centre: Ref | None = None) -> Ref:
     """The centre of the circle through P1, P2, P3 by the textbook's two perpendicular bisectors (chords
-    P1P2 and P2P3, each bisector with its right-angle mark); the result step is ``key``."""
+    P1P2 and P2P3, each bisector with its right-angle mark); the result step is ``key``: the bisectors' meet,
+    or with ``centre`` (a step holding the same point found more exactly) that point."""
     bis = []
     for k, (p, q, n) in enumerate(((P[0], P[1], names[0] + names[1]), (P[1], P[2], names[1] + names[2])), 1):
         sc.add(f"chord{k}", segment, p, q, style="construction", caption=(f"Join {n}", f"连接 {n}"))
         bis.append(sc.add(f"bis{k}", perpendicular_bisector, p, q, style="construction",
                           caption=(f"Draw the perpendicular bisector of {n}", f"作 {n} 的中垂线")))
         sc.add(f"bis{k}_mark", bisector_mark, p, q, role=Role.ANNOTATION, style="right-angle")
-    return sc.add(key, meet_lines, bis[0], bis[1], role=Role.RESULT, style="joint", label=key, caption=caption)
+    if centre is None:
+        return sc.add(key, meet_lines, bis[0], bis[1], role=Role.RESULT, style="joint", label=key, caption=caption)
+    return sc.add(key, _same, centre, role=Role.RESULT, style="joint", label=key, caption=caption)
+
+
+def _same(x: Any) -> Any:
+    """The value itself (a result step that shows a point computed by an earlier step)."""
+    return x
 
 
 def add_inversion(sc: Scene, D: Ref, X: Sequence[Ref], K1: Ref, psi: Sequence[float], letters: tuple[str, str, str],
@@ -356,14 +402,16 @@ def add_inversion(sc: Scene, D: Ref, X: Sequence[Ref], K1: Ref, psi: Sequence[fl
         P.append(add_turned(sc, D, X[i - 1], rot, f"{x}{i}",
                             (f"Hold the rocker at D{k}1 and turn △D{k}{i}{x}{i} about D through ψ1 − ψ{i} = {rot:g}°",
                              f"刚化反转:将 △D{k}{i}{x}{i} 绕 D 转过 ψ1 − ψ{i} = {rot:g}°,使 D{k}{i} 与 D{k}1 重合")))
+    u = sc.add(f"{h}1_from_D", hinge_from, D, tuple(X), tuple(P), visible=False)
     H1 = add_circumcentre(sc, f"{h}1", P, (f"{x}1", f"{x}2′", f"{x}3′"),
                           (f"The bisectors meet at {h}1, {what_en} (centre of the circle {x}1{x}2′{x}3′)",
-                           f"两中垂线交于 {h}1,即{what_zh}(△{x}1{x}2′{x}3′ 外接圆圆心)"))
+                           f"两中垂线交于 {h}1,即{what_zh}(△{x}1{x}2′{x}3′ 外接圆圆心)"),
+                          centre=sc.add(f"{h}1_at", from_D, D, u, visible=False))
     r = sc.add(rod, length, X[0], H1, role=Role.MEASUREMENT, unit="mm",
                caption=(f"Measure {rod} = {x}1{h}1", f"量得{rod_zh} {rod} = {x}1{h}1"))
     sc.add("k_inv", circle, H1, r, style="construction")
-    sc.add(arm, length, D, H1, role=Role.MEASUREMENT, unit="mm", caption=(f"Measure {arm} = D{h}1", f"量得{arm_zh} {arm} = D{h}1"))
-    sc.add("beta", signed_deg, D, K1, H1, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add(arm, abs, u, role=Role.MEASUREMENT, unit="mm", caption=(f"Measure {arm} = D{h}1", f"量得{arm_zh} {arm} = D{h}1"))
+    sc.add("beta", signed_deg_of, D, K1, u, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add(f"{h}1_xy", as_xy, H1, visible=False)
     H = [H1] + [sc.add(f"{h}{i}", turn, H1, D, psi[i - 1] - psi[0], role=Role.RESULT, style="joint", label=f"{h}{i}",
                        caption=(f"The rocker carries {h}1 to {h}{i} (through ψ{i} − ψ1)", f"摇杆带 {h}1 转到 {h}{i}"))
@@ -408,7 +456,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("order_ok", order_free, A, B[0], B[1], B[2], dead, role=Role.MEASUREMENT, visible=False)
     sc.add("dead_at", dead_text, A, dead, visible=False)
     worst = sc.add("worst", worst_transmission, A, D, AB, BC, CD, B[0], B[1], B[2], sides[0], dead, C[0],
-                   visible=False)
+                   Ref("C1_from_D"), visible=False)
     gm = sc.add("gamma_min", first, worst, role=Role.MEASUREMENT, unit="deg",
                 caption=("γmin: crank along the frame line (and at the ends of the motion unless AB is a crank)",
                          "最小传动角:曲柄与机架共线位置(非曲柄时另比较运动两端位置)"))
