@@ -36,6 +36,16 @@ TANGENT = {"motion": "oscillating", "L": 140.64764102036543, "h": 33.76891190469
                        {"kind": "return", "angle": 134.39829506036565, "law": "poly345"},
                        {"kind": "dwell", "angle": 100.15450449475799}]}
 
+# fuzz --seed 77, case 120: the rise binds at the parabolic law's midpoint, a corner of ψ′; the brute force's
+# parabolic peak lift rounded that corner into a vertex 0.0085 mm too high (it expected r0 41.12927, the
+# construction's 41.12078 is admissible and smallest)
+CORNER = {"motion": "oscillating", "L": 151.42938680163394, "h": 32.640306892613644,
+          "alpha_allow": 43.12403842773959, "rotation": "cw", "arm": "left",
+          "program": [{"kind": "rise", "angle": 96.6368870587166, "law": "parabolic"},
+                      {"kind": "dwell", "angle": 79.84775285623796},
+                      {"kind": "return", "angle": 125.4073167788987, "law": "poly345"},
+                      {"kind": "dwell", "angle": 58.10804330614677}]}
+
 
 def _solve(**given):
     return solve(problem_from_dict({"recipe": "cam.base_radius", "given": given}, name="t"))
@@ -59,13 +69,30 @@ def _over(g, a, psi0_deg):
     return over
 
 
-@pytest.mark.parametrize("given", [FAR_SIDE, TANGENT], ids=["far-side", "tangent"])
+@pytest.mark.parametrize("given", [FAR_SIDE, TANGENT, CORNER], ids=["far-side", "tangent", "corner"])
 def test_fuzz_regressions_agree_with_brute_force(given):
     sol = _solve(**given)
     assert sol.ok, [c for c in sol.checks if not c["ok"]]
     brute = _arm_best(given, 3201)
     assert sol.answers["r0"] == pytest.approx(brute[0], rel=1e-7)
     assert _over(given, sol.answers["a"], sol.answers["psi0"]) <= 1e-9
+
+
+def test_corner_binding_r0_is_admissible_and_smallest():
+    """The seed-77 case binds at the corner of ψ′; no nearby (a, smallest ψ0) does better, and the brute force
+    (its grid cut at the corner) agrees to its own grid error."""
+    sol = _solve(**CORNER)
+    r0, a, psi0 = sol.answers["r0"], sol.answers["a"], sol.answers["psi0"]
+    assert r0 == pytest.approx(41.1207811, abs=1e-6)
+    assert -1e-6 <= _over(CORNER, a, psi0) <= 1e-9           # admissible, and the limit is active
+    assert _over(CORNER, a, psi0 - 1e-4) > 0                  # a smaller ψ0 at this a is not
+    for f in (0.99, 1.01):                                    # nor a smaller r0 at a nearby distance
+        lo, hi = 0.0, psi0 + 5.0
+        for _ in range(40):
+            lo, hi = (lo, (lo + hi) / 2) if _over(CORNER, f * a, (lo + hi) / 2) <= 0 else ((lo + hi) / 2, hi)
+        r = math.sqrt((f * a) ** 2 + CORNER["L"] ** 2 - 2 * f * a * CORNER["L"] * math.cos(math.radians(hi)))
+        assert r > r0
+    assert _arm_best(CORNER, 1601)[0] == pytest.approx(r0, rel=1e-9)
 
 
 def test_no_common_point_is_refused_with_numbers():

@@ -57,6 +57,21 @@ def _law(name: str, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return 10 * x ** 3 - 15 * x ** 4 + 6 * x ** 5, 30 * x * x * (1 - x) ** 2
 
 
+KINKS = {"parabolic": (0.5,)}
+"""Interior points of a law where f′ has a corner (f″ jumps): the brute force cuts its grid there, so that
+:func:`_peak` never rounds a corner into a parabola (that overshoots the true maximum by O(Δ))."""
+
+
+def _pieces(name: str, n: int) -> list[np.ndarray]:
+    """Grids of n points on each smooth piece of a law on [0, 1] (ends and corners included).
+
+    >>> [(float(x[0]), float(x[-1])) for x in _pieces("parabolic", 5)]
+    [(0.0, 0.5), (0.5, 1.0)]
+    """
+    cuts = (0.0, *KINKS.get(name, ()), 1.0)
+    return [np.linspace(lo, hi, n) for lo, hi in zip(cuts[:-1], cuts[1:])]
+
+
 def _program(rng: random.Random) -> list[dict[str, Any]]:
     """Rise, dwell, return, dwell (dwells sometimes absent), random laws and angles."""
     rise, ret = rng.uniform(60, 200), rng.uniform(60, 160)
@@ -77,18 +92,19 @@ def _program(rng: random.Random) -> list[dict[str, Any]]:
 
 
 def _parts(program: list[dict[str, Any]], g: dict[str, Any], n: int) -> list[tuple[np.ndarray, np.ndarray, float]]:
-    """(s, s′ per radian, tan α_allow) on n cam angles (ends included) of each constrained part; s in the unit
-    of h (mm, or radians for an arm)."""
+    """(s, s′ per radian, tan α_allow) on n cam angles (ends included) of each smooth piece of each constrained
+    part; s in the unit of h (mm, or radians for an arm)."""
     out, level = [], 0.0
     h = g["h"] if g.get("motion", "translating") == "translating" else math.radians(g["h"])
     for seg in program:
         if seg["kind"] != "dwell":
             allow = g["alpha_allow"] if seg["kind"] == "rise" else g.get("alpha_allow_return")
             if allow is not None and not any(p[3] == seg["kind"] for p in out):
-                f, f1 = _law(seg["law"], np.linspace(0.0, 1.0, n))
                 sign = 1.0 if seg["kind"] == "rise" else -1.0
-                out.append((level + sign * h * f, sign * h * f1 / math.radians(seg["angle"]),
-                            math.tan(math.radians(allow)), seg["kind"]))
+                for x in _pieces(seg["law"], n):
+                    f, f1 = _law(seg["law"], x)
+                    out.append((level + sign * h * f, sign * h * f1 / math.radians(seg["angle"]),
+                                math.tan(math.radians(allow)), seg["kind"]))
             level += h if seg["kind"] == "rise" else -h
     return [p[:3] for p in out]
 
