@@ -188,23 +188,31 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def _length_span(recipe: Recipe, given: Mapping[str, Any]) -> None:
-    """Refuse given lengths more than :data:`LENGTH_SPAN` apart (the smaller one would be lost in rounding);
-    coordinates and positions are not lengths and take no part."""
+    """Refuse given lengths more than :data:`LENGTH_SPAN` apart (the smaller one would be lost in rounding).
+    The distances between given points are lengths too (A and D 1e-15 mm apart in a 25 mm problem are one
+    point to double precision); coordinates themselves are places, not lengths, and take no part."""
     lengths: list[tuple[float, str]] = []
+    points: list[tuple[str, tuple[float, float]]] = []
     for q in recipe.givens:
         v = given.get(q.name)
         if v is None:
             continue
         if q.unit == "mm":
-            lengths.append((abs(v), q.name))
+            lengths.append((abs(v), f"'{q.name}'"))
+        elif q.unit == "point":
+            points.append((q.name, v))
+    for i, (n1, p1) in enumerate(points):
+        for n2, p2 in points[i + 1:]:
+            lengths.append((math.hypot(p1[0] - p2[0], p1[1] - p2[1]), f"the distance {n1}{n2}"))
     nonzero = [t for t in lengths if t[0] > 0]
     if not nonzero:
         return
     big, small = max(nonzero), min(nonzero)
     if big[0] > LENGTH_SPAN * small[0]:
-        raise ProblemError(f"given '{small[1]}' = {_g(small[0])} mm is more than {_g(LENGTH_SPAN)} times smaller "
-                           f"than '{big[1]}' = {_g(big[0])} mm: lengths must lie within a ratio of {_g(LENGTH_SPAN)} "
-                           "(write 0 for none)")
+        what = f"given {small[1]}" if small[1].startswith("'") else small[1]
+        raise ProblemError(f"{what} = {_g(small[0])} mm is more than {_g(LENGTH_SPAN)} times smaller "
+                           f"than {big[1]} = {_g(big[0])} mm: lengths must lie within a ratio of {_g(LENGTH_SPAN)} "
+                           "(write 0 for none, or one point for two)")
 
 
 def _bounded(q: Quantity, value: Any, where: str) -> float:

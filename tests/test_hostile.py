@@ -49,6 +49,8 @@ def _refused(tmp_path: Path, capsys, text: str | bytes, *extra: str, name: str =
     (CRANK.replace("AB = 50", "AB = 1e-15"), "too small"),
     (CRANK.replace("AB = 50", "AB = 1.8e9"), "out of range"),
     ('recipe = "guide_bar.extremes"\n[given]\nAB = 1e-6\nAC = 1e5\n', "times smaller"),
+    ('recipe = "four_bar.three_positions_fixed_pivots"\n[given]\nA = [0, 0]\nD = [1e-15, 0]\nB1 = [0.02, 0.015]\n'
+     'B2 = [0, 0.025]\nB3 = [-0.02, 0.015]\ncoupler_angles = [10, 0, 0]\n', "the distance AD"),
     ('recipe = "slotter.design_by_K"\n[given]\nK = 1e12\nH = 100\nB1B2 = 50\n', "K"),
     ('recipe = "four_bar.function_generation"\n[given]\nAD = 1e300\nAB = 30\nphi = [0, 30, 60]\npsi = [60, 75, 90]\n',
      "out of range"),
