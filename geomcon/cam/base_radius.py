@@ -502,6 +502,24 @@ def best_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: float)
         if sign(hi) > 0:
             break
         lo, hi = hi, 2.0 * hi
+    lo, hi = sign_change(sign, lo, hi)
+    ends = [b for b in (arc_bounds(arm, L, x, parts) for x in (lo, hi)) if b.feasible]
+    if not ends:
+        return hi
+    return min(ends, key=lambda b: (b.a - L) ** 2 + 4.0 * b.a * L * math.sin(b.lo / 2) ** 2).a
+
+
+
+def sign_change(sign, lo: float, hi: float) -> tuple[float, float]:
+    """The last representable bracket ``[lo, hi]`` of the place where ``sign`` turns positive (``sign(lo) ≤ 0 <
+    sign(hi)``), by bisection until the midpoint is no longer between them.
+
+    Examples
+    --------
+    >>> lo, hi = sign_change(lambda x: x - 2.0, 0.0, 8.0)
+    >>> lo <= 2.0 <= hi and hi - lo <= 4.5e-16
+    True
+    """
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if not lo < mid < hi:
@@ -510,11 +528,7 @@ def best_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: float)
             hi = mid
         else:
             lo = mid
-    ends = [b for b in (arc_bounds(arm, L, x, parts) for x in (lo, hi)) if b.feasible]
-    if not ends:
-        return hi
-    return min(ends, key=lambda b: (b.a - L) ** 2 + 4.0 * b.a * L * math.sin(b.lo / 2) ** 2).a
-
+    return lo, hi
 
 PSI0_MIN = 1e-9
 """Smallest initial arm angle (rad) of a designed cam: below it O lies on the arm's line A0B0 (the pressure
@@ -793,15 +807,7 @@ class ArmTwin:
                 slope = 0.0                                     # the foot of B0 on the ray: r0 = L sin ψ0
             return (a - self.L * math.cos(th)) * slope + a * self.L * math.sin(th)
 
-        lo, hi = 0.0, top
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if not lo < mid < hi:
-                break
-            if sign(mid) > 0:
-                hi = mid
-            else:
-                lo = mid
+        lo, hi = sign_change(sign, 0.0, top)
         best = None                                     # the end of the last bracket whose ray meets the region
         for th in (lo, hi):
             a_in, a_out, _, _ = self.ray(th)
