@@ -77,7 +77,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
                     files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
             if getattr(args, "profile_csv", None):
                 from .recipes.cam_common import profile_csv
-                files[Path(args.profile_csv)] = profile_csv(sol.scene, sol.recipe.name)
+                files[Path(args.profile_csv)] = profile_csv(sol.drawing_scene, sol.recipe.name)
         write_all(files)
     except GeomconError as exc:
         return _fail(path, str(exc))

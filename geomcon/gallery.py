@@ -8,7 +8,6 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from .cam.laws import LAW_NAMES
 from .errors import GeomconError
 from .problems import load_problem
 from .solve import Solution, solve
@@ -17,6 +16,12 @@ from .solve import Solution, solve
 def to_json_text(sol: Solution) -> str:
     """The solution's JSON, as ``geomcon solve --json`` prints it."""
     return json.dumps(sol.to_json(), ensure_ascii=False, indent=2, allow_nan=False) + "\n"
+
+
+def _law_names() -> tuple[str, ...]:
+    """The motion laws' names (imported here: a linkage solve never loads the cam modules, nor numpy)."""
+    from .cam.laws import LAW_NAMES
+    return LAW_NAMES
 
 
 def problem_files(problems_dir: Path) -> list[Path]:
@@ -63,7 +68,7 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
         "[004-02_best_by_K_table.md](004-02_best_by_K_table.md).",
         "",
         "The five motion laws' s–v–a diagrams (rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm): "
-        + ", ".join(f"[{n}](law_{n}.svg)" for n in LAW_NAMES) + ".",
+        + ", ".join(f"[{n}](law_{n}.svg)" for n in _law_names()) + ".",
         "",
         "| problem | recipe | answers | printed answers (deviation from exact) |",
         "|---|---|---|---|",

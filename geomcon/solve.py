@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
-from typing import Any
+from typing import Any, Callable, TypeVar
 
 from .check import PUBLISHED_WARN_REL, audit_row, check_row, error_text, rounded, scale_for
 from .condition import KAPPA_REFUSE, STEP, derivative, sensitivities, solution_count_stable
@@ -28,6 +28,9 @@ from .errors import NotAMechanism, ProblemError
 from .tolerance import CHECK_REL
 from .problems import Problem
 from .recipes import Construction, Recipe, get_recipe
+from .scene import PlanMiss, lean_scenes
+
+T = TypeVar("T")
 
 
 def _value(unit: str, v: Any) -> Any:
@@ -80,6 +83,26 @@ def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     return [(name, a, b)]
 
 
+def planned(plan: str, fn: Callable[..., T], *args: Any) -> T:
+    """``fn(*args)`` with the scenes it builds lean and following the evaluation plan ``plan`` (a recipe's
+    name); when a scene needs a step the plan left out, ``fn`` runs again with scenes that teach the plan.
+
+    Examples
+    --------
+    >>> from geomcon.recipes import get_recipe
+    >>> r = get_recipe("guide_bar.extremes")
+    >>> c = planned(r.name, r.construct, {"AB": 145.0, "AC": 290.0})
+    >>> c.scene.lean, round(c.scene.value("theta"), 9)
+    (True, 60.0)
+    """
+    try:
+        with lean_scenes(plan):
+            return fn(*args)
+    except PlanMiss:
+        with lean_scenes(plan, learn=True):
+            return fn(*args)
+
+
 class Solution:
     """The solved problem; every property computes only what it needs, once."""
 
@@ -89,6 +112,13 @@ class Solution:
         self.construction = construction
         self.scene = construction.scene
         self._warnings = list(warnings) + list(construction.warnings)
+
+        given = problem.given
+        self.scene.rebuild_with(lambda: recipe.construct(given).scene)   # a skipped step completes the scene
+
+    def evaluate(self, keys) -> dict[str, Any]:
+        """Values of the scene's steps ``keys``."""
+        return self.scene.evaluate(keys)
 
     @cached_property
     def length_scale(self) -> float:
@@ -112,7 +142,7 @@ class Solution:
         whose ``_valid`` is false are left out.
         """
         maps = self.construction.solutions or (self.construction.answers,)
-        vals = self.scene.evaluate([k for m in maps for k in m.values()])
+        vals = self.evaluate(k for m in maps for k in m.values())
         units = {q.name: q.unit for q in self.recipe.answers}
         rank = {name: i for i, name in enumerate(units)}          # answers in the recipe's declared order
         out = [{name: _value(units.get(name, ""), vals[m[name]])
@@ -138,7 +168,7 @@ class Solution:
     @cached_property
     def points(self) -> dict[str, tuple[float, float]]:
         """The named points of the chosen solution."""
-        vals = self.scene.evaluate(self.construction.points.values())
+        vals = self.evaluate(self.construction.points.values())
         return {name: vals[key].tuple() for name, key in self.construction.points.items()}
 
     @cached_property
@@ -207,7 +237,7 @@ class Solution:
         ``Σ_j |∂r/∂a_j| · |a_j|`` from central differences of ``back_check``."""
         def rebuilt(answers: dict) -> float | None:
             try:
-                for n, value, _, _ in self.recipe.back_check(given, answers):
+                for n, value, _, _ in planned(self.recipe.name, self.recipe.back_check, given, answers):
                     if n == name:
                         return float(value)
             except (ArithmeticError, ValueError):       # GeomconError is a ValueError: the rebuild left the domain
@@ -244,7 +274,8 @@ class Solution:
         if self.recipe.back_check is not None:
             for i, built in enumerate(self.solution_values):
                 prefix = f"solutions[{i}]." if i else ""
-                for name, rebuilt, required, unit in self.recipe.back_check(self.problem.given, built):
+                for name, rebuilt, required, unit in planned(self.recipe.name, self.recipe.back_check,
+                                                             self.problem.given, built):
                     row = {**check_row(f"{prefix}back_substitution.{name}", rebuilt, required,
                                        self.unit_scale(unit)), "unit": unit}
                     if not row["ok"]:
@@ -375,21 +406,27 @@ class Solution:
         """Title for drawings."""
         return self.problem.title or self.scene.title
 
+    @property
+    def drawing_scene(self):
+        """The full scene, annotations included (the answers' scene is lean: it skips what only a drawing needs,
+        and is built once more in full, keeping its values, when a drawing asks for it)."""
+        return self.scene.complete()
+
     def svg(self, *, upto: int | None = None, viewbox=None) -> str:
         """The annotated drawing (frame ``upto`` when given)."""
         from .render import render_svg
-        return render_svg(self.scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines())
+        return render_svg(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines())
 
     def html(self) -> str:
         """The self-contained step player page."""
         from .render import render_html
-        return render_html(self.scene, title=self.title(), info=self.info_lines())
+        return render_html(self.drawing_scene, title=self.title(), info=self.info_lines())
 
     def frames(self) -> list[str]:
         """One SVG per numbered step, all with the full drawing's view box."""
         from .render import model_extent
-        box = model_extent(self.scene)
-        n = len(self.scene.frames())
+        box = model_extent(self.drawing_scene)
+        n = len(self.drawing_scene.frames())
         return [self.svg(upto=k, viewbox=box) for k in range(1, n + 1)]
 
 
@@ -402,5 +439,5 @@ def solve(problem: Problem) -> Solution:
         When the givens describe no mechanism of the recipe's kind.
     """
     recipe = get_recipe(problem.recipe)
-    warnings = recipe.validate(problem.given) if recipe.validate else []
-    return Solution(problem, recipe, recipe.construct(problem.given), warnings)
+    warnings = planned(recipe.name, recipe.validate, problem.given) if recipe.validate else []
+    return Solution(problem, recipe, planned(recipe.name, recipe.construct, problem.given), warnings)

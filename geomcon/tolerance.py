@@ -47,7 +47,7 @@ def tol(*scales: float) -> float:
     >>> tol(3.0, -4.0) == 4.0 * REL_TOL
     True
     """
-    return REL_TOL * max(abs(s) for s in scales)
+    return REL_TOL * max(map(abs, scales))
 
 
 def is_zero(length: float, *scales: float) -> bool:

@@ -25,12 +25,13 @@ Point(x=4.0, y=-3.0)
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+import math
+from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..errors import AmbiguousBranch
 from ..tolerance import tol
-from .primitives import Point
+from .primitives import Point, unit_xy
 
 
 def _name(x: Any, label: Callable[[Any], str] | None) -> str:
@@ -47,25 +48,33 @@ def _pick(cands: tuple[Point, ...], score: Callable[[Point], float], what: str) 
         return cands[0]
     if len(cands) != 2:
         raise AmbiguousBranch(f"{what}: expected 1 or 2 candidates, got {len(cands)}")
-    s0, s1 = score(cands[0]), score(cands[1])
-    scale = max(abs(cands[0] - cands[1]), 1e-300)
+    c0, c1 = cands
+    s0, s1 = score(c0), score(c1)
+    scale = max(math.hypot(c0.x - c1.x, c0.y - c1.y), 1e-300)
     if abs(s0 - s1) <= tol(scale, abs(s0), abs(s1)):
         raise AmbiguousBranch(f"{what}: both intersections qualify equally (scores {s0:.6g}, {s1:.6g})")
     return cands[0] if s0 > s1 else cands[1]
 
 
-def _direction(a: Point, b: Point, what: str) -> Point:
+def _direction_xy(a: Point, b: Point, what: str) -> tuple[float, float]:
     """The unit direction ``a → b`` of a rule's dividing line; a zero-length one makes the rule undecidable."""
-    d = b - a
-    if d.x == 0.0 and d.y == 0.0:
+    dx, dy = b.x - a.x, b.y - a.y
+    if dx == 0.0 and dy == 0.0:
         raise AmbiguousBranch(f"{what}: the dividing line through ({a.x:.6g}, {a.y:.6g}) has zero length")
-    return d.unit()
+    return unit_xy(dx, dy)
 
 
 class Branch:
     """Base of the rules; subclasses are frozen dataclasses whose fields are points (or references)."""
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:  # pragma: no cover - abstract
+    def choose(self, cands: tuple[Point, ...]) -> Point:
+        """The candidate this rule names, its fields being points."""
+        return self.rule(cands, *self.refs())
+
+    @staticmethod
+    def rule(cands: tuple[Point, ...], *points: Point) -> Point:  # pragma: no cover - abstract
+        """Choose among ``cands`` given the rule's points (a scene passes resolved references, making no
+        new rule object per evaluation)."""
         raise NotImplementedError
 
     def describe(self, label: Callable[[Any], str] | None = None) -> tuple[str, str]:  # pragma: no cover
@@ -73,7 +82,7 @@ class Branch:
 
     def refs(self) -> tuple[Any, ...]:
         """The rule's points (or references), in field order."""
-        return tuple(getattr(self, f.name) for f in fields(self))  # type: ignore[arg-type]
+        return tuple([getattr(self, name) for name in self.__match_args__])  # type: ignore[attr-defined]
 
     def with_points(self, points: tuple[Point, ...]) -> Branch:
         """The same rule with its fields replaced by resolved points."""
@@ -87,9 +96,11 @@ class LeftOf(Branch):
     a: Any
     b: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        d = _direction(self.a, self.b, "left of a directed line")
-        return _pick(cands, lambda p: d.cross(p - self.a), "left of a directed line")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        dx, dy = _direction_xy(a, b, "left of a directed line")
+        return _pick(cands, lambda p: dx * (p.y - a.y) - dy * (p.x - a.x), "left of a directed line")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
@@ -103,20 +114,23 @@ class RightOf(Branch):
     a: Any
     b: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        d = _direction(self.a, self.b, "right of a directed line")
-        return _pick(cands, lambda p: -d.cross(p - self.a), "right of a directed line")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        dx, dy = _direction_xy(a, b, "right of a directed line")
+        return _pick(cands, lambda p: -(dx * (p.y - a.y) - dy * (p.x - a.x)), "right of a directed line")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
         return (f"right of the directed line {a}→{b}", f"位于有向线 {a}→{b} 右侧的交点")
 
 
-def _upward_normal(a: Point, b: Point) -> Point:
-    n = _direction(a, b, "above/below a line").perp()
-    if abs(n.y) <= tol(1.0):
+def _upward_normal(a: Point, b: Point) -> tuple[float, float]:
+    dx, dy = _direction_xy(a, b, "above/below a line")
+    nx, ny = -dy, dx                          # the direction turned by +90°
+    if abs(ny) <= tol(1.0):
         raise AmbiguousBranch("above/below a vertical line is undefined: use left/right of a directed line")
-    return n if n.y > 0 else -n
+    return (nx, ny) if ny > 0 else (-nx, -ny)
 
 
 @dataclass(frozen=True)
@@ -126,9 +140,11 @@ class Above(Branch):
     a: Any
     b: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        n = _upward_normal(self.a, self.b)
-        return _pick(cands, lambda p: n.dot(p - self.a), "above a line")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        nx, ny = _upward_normal(a, b)
+        return _pick(cands, lambda p: nx * (p.x - a.x) + ny * (p.y - a.y), "above a line")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
@@ -142,9 +158,11 @@ class Below(Branch):
     a: Any
     b: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        n = _upward_normal(self.a, self.b)
-        return _pick(cands, lambda p: -n.dot(p - self.a), "below a line")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        nx, ny = _upward_normal(a, b)
+        return _pick(cands, lambda p: -(nx * (p.x - a.x) + ny * (p.y - a.y)), "below a line")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
@@ -158,9 +176,11 @@ class Ahead(Branch):
     a: Any
     b: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        d = (self.b - self.a).unit()
-        return _pick(cands, lambda p: d.dot(p - self.a), "ahead along a direction")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        d = (b - a).unit()
+        return _pick(cands, lambda p: d.dot(p - a), "ahead along a direction")
 
     def describe(self, label=None) -> tuple[str, str]:
         a, b = _name(self.a, label), _name(self.b, label)
@@ -173,8 +193,10 @@ class ToRightOf(Branch):
 
     p: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        return _pick(cands, lambda q: q.x - self.p.x, "to the right of a point")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], p: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        return _pick(cands, lambda q: q.x - p.x, "to the right of a point")
 
     def describe(self, label=None) -> tuple[str, str]:
         p = _name(self.p, label)
@@ -187,8 +209,10 @@ class ToLeftOf(Branch):
 
     p: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        return _pick(cands, lambda q: self.p.x - q.x, "to the left of a point")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], p: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        return _pick(cands, lambda q: p.x - q.x, "to the left of a point")
 
     def describe(self, label=None) -> tuple[str, str]:
         p = _name(self.p, label)
@@ -199,7 +223,9 @@ class ToLeftOf(Branch):
 class Leftmost(Branch):
     """The left one of the two intersections in the drawing (smaller x)."""
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
+    @staticmethod
+    def rule(cands: tuple[Point, ...]) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
         return _pick(cands, lambda q: -q.x, "the left one")
 
     def describe(self, label=None) -> tuple[str, str]:
@@ -210,7 +236,9 @@ class Leftmost(Branch):
 class Rightmost(Branch):
     """The right one of the two intersections in the drawing (larger x)."""
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
+    @staticmethod
+    def rule(cands: tuple[Point, ...]) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
         return _pick(cands, lambda q: q.x, "the right one")
 
     def describe(self, label=None) -> tuple[str, str]:
@@ -223,8 +251,10 @@ class NearestTo(Branch):
 
     p: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        return _pick(cands, lambda q: -abs(q - self.p), "nearest to a point")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], p: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        return _pick(cands, lambda q: -abs(q - p), "nearest to a point")
 
     def describe(self, label=None) -> tuple[str, str]:
         p = _name(self.p, label)
@@ -237,8 +267,10 @@ class FarthestFrom(Branch):
 
     p: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        return _pick(cands, lambda q: abs(q - self.p), "farthest from a point")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], p: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        return _pick(cands, lambda q: abs(q - p), "farthest from a point")
 
     def describe(self, label=None) -> tuple[str, str]:
         p = _name(self.p, label)
@@ -251,8 +283,10 @@ class OtherThan(Branch):
 
     p: Any
 
-    def choose(self, cands: tuple[Point, ...]) -> Point:
-        return _pick(cands, lambda q: abs(q - self.p), "other than a known point")
+    @staticmethod
+    def rule(cands: tuple[Point, ...], p: Point) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        return _pick(cands, lambda q: abs(q - p), "other than a known point")
 
     def describe(self, label=None) -> tuple[str, str]:
         p = _name(self.p, label)

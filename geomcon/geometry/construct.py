@@ -19,7 +19,7 @@ import math
 from ..errors import Coincident, Degenerate
 from ..tolerance import tol
 from .intersect import line_line
-from .primitives import Circle, Line, Point, Ray, Segment
+from .primitives import Circle, Line, Point, Ray, Segment, unit_xy
 
 
 def line_through(a: Point, b: Point) -> Line:
@@ -84,8 +84,15 @@ def ray_at_angle(origin: Point, toward: Point, angle: float) -> Ray:
 
 
 def point_along(origin: Point, toward: Point, dist: float) -> Point:
-    """The point at signed distance ``dist`` from ``origin`` on the ray towards ``toward``."""
-    return Ray.toward(origin, toward).at(dist)
+    """The point at signed distance ``dist`` from ``origin`` on the ray towards ``toward``.
+
+    >>> point_along(Point(1, 1), Point(4, 5), 10)
+    Point(x=7.0, y=9.0)
+    """
+    if origin == toward:
+        raise Degenerate("ray toward its own origin")
+    ux, uy = unit_xy(toward.x - origin.x, toward.y - origin.y)     # Ray.toward(origin, toward).at(dist)
+    return Point(origin.x + ux * dist, origin.y + uy * dist)
 
 
 def point_on_ray(ray: Ray, dist: float) -> Point:

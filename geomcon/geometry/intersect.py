@@ -67,18 +67,22 @@ def line_line(l1: Line, l2: Line) -> tuple[Point, ...]:
 
 def line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
     """Intersect a line and a circle: 0, 1 (tangent) or 2 points, ordered along the line's direction."""
-    u = line.direction
-    w = line.point - circle.center          # local frame: the circle's centre at the origin
-    t0 = -w.dot(u)                           # parameter of the foot of the perpendicular from the centre
-    p = u.cross(w)                           # signed distance of the centre's foot (|p| = distance to line)
+    # plain float arithmetic, in the order of the vector formulas in the comments (same bits)
+    ux, uy = line.direction.x, line.direction.y
+    px, py = line.point.x, line.point.y
+    wx, wy = px - circle.center.x, py - circle.center.y     # w: local frame, the circle's centre at the origin
+    t0 = -(wx * ux + wy * uy)                # −w·u: parameter of the foot of the perpendicular from the centre
+    p = ux * wy - uy * wx                    # u × w: signed distance of the centre's foot
     r = circle.r
-    gap = abs(p) - r
-    if abs(gap) <= tol(r, abs(p)):
-        return (line.point + u * t0,)
+    ap = abs(p)
+    gap = ap - r
+    if abs(gap) <= tol(r, ap):
+        return (Point(px + ux * t0, py + uy * t0),)
     if gap > 0:
         return ()
-    h = math.sqrt((r - abs(p)) * (r + abs(p)))
-    return (line.point + u * (t0 - h), line.point + u * (t0 + h))
+    h = math.sqrt((r - ap) * (r + ap))
+    t1, t2 = t0 - h, t0 + h
+    return (Point(px + ux * t1, py + uy * t1), Point(px + ux * t2, py + uy * t2))
 
 
 def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
@@ -90,19 +94,21 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
         When the circles coincide (same centre and radius within tolerance).
     """
     r1, r2 = c1.r, c2.r
-    v = c2.center - c1.center               # local frame: the first centre at the origin
-    d = abs(v)
+    ox, oy = c1.center.x, c1.center.y
+    vx, vy = c2.center.x - ox, c2.center.y - oy   # local frame: the first centre at the origin
+    d = math.hypot(vx, vy)
     scale = max(d, r1, r2)
-    if d <= tol(scale):
-        if abs(r1 - r2) <= tol(scale):
+    eps = tol(scale)
+    if d <= eps:
+        if abs(r1 - r2) <= eps:
             raise Coincident(f"the two circles coincide (radius {r1:.6g})")
         return ()
     outer = d - (r1 + r2)                    # > 0: apart
     inner = abs(r1 - r2) - d                 # > 0: one inside the other
-    u = v / d
-    if abs(outer) <= tol(scale) or abs(inner) <= tol(scale):
-        a = r1 if abs(outer) <= tol(scale) else (r1 if r1 > r2 else -r1)
-        return (c1.center + u * a,)
+    ux, uy = vx / d, vy / d
+    if abs(outer) <= eps or abs(inner) <= eps:
+        a = r1 if abs(outer) <= eps else (r1 if r1 > r2 else -r1)
+        return (Point(ox + ux * a, oy + uy * a),)
     if outer > 0 or inner > 0:
         return ()
     # a = (d² + r1² − r2²)/(2d): the cancellation is between r2² and the larger of d², r1², so that
@@ -112,6 +118,6 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     a = ((big - r2) * (big + r2) + small * small) / (2.0 * d)
     h2 = _sum_less(r1, r2, d) * _sum_less(d, r2, r1) * _sum_less(d, r1, r2) * (d + r1 + r2)
     h = math.sqrt(h2) / (2.0 * d)
-    foot = u * a                             # still local: translate once, at the very end
-    n = u.perp() * h
-    return (c1.center + (foot + n), c1.center + (foot - n))
+    fx, fy = ux * a, uy * a                  # the foot, still local: translated once, at the very end
+    nx, ny = -uy * h, ux * h                 # u turned by +90°, times h
+    return (Point(ox + (fx + nx), oy + (fy + ny)), Point(ox + (fx - nx), oy + (fy - ny)))

@@ -34,19 +34,28 @@ def signed_angle(u: Point, v: Point) -> float:
     >>> signed_angle(Point(-1, 0), Point(1, 0)) == math.pi      # a half turn is +π, never −π
     True
     """
-    if abs(u) == 0.0 or abs(v) == 0.0:
+    return _signed_angle_xy(u.x, u.y, v.x, v.y)
+
+
+def _signed_angle_xy(ux: float, uy: float, vx: float, vy: float) -> float:
+    if math.hypot(ux, uy) == 0.0 or math.hypot(vx, vy) == 0.0:
         raise Degenerate("angle of a zero-length vector")
-    return _half_open(math.atan2(u.cross(v), u.dot(v)))
+    return _half_open(math.atan2(ux * vy - uy * vx, ux * vx + uy * vy))
 
 
 def angle_between(u: Point, v: Point) -> float:
     """The unsigned angle between two vectors, in [0, π]."""
-    return abs(signed_angle(u, v))
+    return abs(_signed_angle_xy(u.x, u.y, v.x, v.y))
 
 
 def angle_at(vertex: Point, a: Point, b: Point) -> float:
-    """The unsigned angle ∠a-vertex-b in [0, π]."""
-    return angle_between(a - vertex, b - vertex)
+    """The unsigned angle ∠a-vertex-b in [0, π].
+
+    >>> round(math.degrees(angle_at(Point(0, 0), Point(1, 0), Point(1, 1))), 12)
+    45.0
+    """
+    ox, oy = vertex.x, vertex.y
+    return abs(_signed_angle_xy(a.x - ox, a.y - oy, b.x - ox, b.y - oy))
 
 
 def line_angle(l1: Line, l2: Line) -> float:

@@ -25,11 +25,27 @@ _SAFE_NORM = 2.0 ** -969
 """Below this length a vector's components may be subnormal and lose relative precision."""
 
 
+def unit_xy(x: float, y: float) -> tuple[float, float]:
+    """The vector (x, y) scaled to length 1, as two floats (the scalar core of :meth:`Point.unit`).
+
+    >>> unit_xy(3.0, 4.0)
+    (0.6, 0.8)
+    """
+    n = math.hypot(x, y)
+    if n == 0.0:
+        raise Degenerate("direction of a zero-length vector")
+    if not _SAFE_NORM <= n < math.inf:
+        m = max(abs(x), abs(y))
+        x, y = x / m, y / m
+        n = math.hypot(x, y)
+    return x / n, y / n
+
+
 def _finite(*values: float) -> bool:
     return all(math.isfinite(v) for v in values)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, init=False)
 class Point:
     """A point (or a free vector) of the plane, in mm.
 
@@ -44,11 +60,15 @@ class Point:
     x: float
     y: float
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "x", float(self.x))
-        object.__setattr__(self, "y", float(self.y))
-        if not _finite(self.x, self.y):
-            raise Degenerate(f"point with a non-finite coordinate ({self.x}, {self.y})")
+    def __init__(self, x: float, y: float) -> None:
+        # the hot path of every construction: coordinates stored through the slots' descriptors (a frozen
+        # dataclass's generated __init__ costs three times as much); x − x is 0 exactly when x is finite
+        x = float(x)
+        y = float(y)
+        if x - x != 0.0 or y - y != 0.0:
+            raise Degenerate(f"point with a non-finite coordinate ({x}, {y})")
+        _POINT_X(self, x)
+        _POINT_Y(self, y)
 
     def __add__(self, other: Point) -> Point:
         return Point(self.x + other.x, self.y + other.y)
@@ -93,19 +113,16 @@ class Point:
         >>> Point(3e-320, 4e-320).unit(), Point(1.5e308, 1.5e308).unit()
         (Point(x=0.6, y=0.8), Point(x=0.7071067811865475, y=0.7071067811865475))
         """
-        n = abs(self)
-        if n == 0.0:
-            raise Degenerate("direction of a zero-length vector")
-        if not _SAFE_NORM <= n < math.inf:
-            m = max(abs(self.x), abs(self.y))
-            x, y = self.x / m, self.y / m
-            n = math.hypot(x, y)
-            return Point(x / n, y / n)
-        return Point(self.x / n, self.y / n)
+        x, y = unit_xy(self.x, self.y)
+        return Point(x, y)
 
     def tuple(self) -> tuple[float, float]:
         """``(x, y)``."""
         return (self.x, self.y)
+
+
+_POINT_X = Point.__dict__["x"].__set__
+_POINT_Y = Point.__dict__["y"].__set__
 
 
 @dataclass(frozen=True, slots=True)
@@ -185,21 +202,27 @@ class Segment:
         return Point((self.a.x + self.b.x) / 2.0, (self.a.y + self.b.y) / 2.0)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, init=False)
 class Circle:
     """The circle of centre ``center`` and radius ``r`` > 0."""
 
     center: Point
     r: float
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "r", float(self.r))
-        if not math.isfinite(self.r) or self.r <= 0.0:
-            raise Degenerate(f"circle about ({self.center.x:.6g}, {self.center.y:.6g}) with radius {self.r:.6g}")
+    def __init__(self, center: Point, r: float) -> None:
+        r = float(r)
+        if not 0.0 < r < math.inf:
+            raise Degenerate(f"circle about ({center.x:.6g}, {center.y:.6g}) with radius {r:.6g}")
+        _CIRCLE_CENTER(self, center)
+        _CIRCLE_R(self, r)
 
     def at(self, angle: float) -> Point:
         """The point at polar ``angle`` (radians, counter-clockwise from +x)."""
         return Point(self.center.x + self.r * math.cos(angle), self.center.y + self.r * math.sin(angle))
+
+
+_CIRCLE_CENTER = Circle.__dict__["center"].__set__
+_CIRCLE_R = Circle.__dict__["r"].__set__
 
 
 @dataclass(frozen=True, slots=True)

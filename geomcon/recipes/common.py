@@ -16,7 +16,7 @@ import math
 
 from typing import Any, Mapping
 
-from ..geometry import Point, angle_at, distance, point_along
+from ..geometry import Point, angle_at, circle, distance, point_along, segment
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 
@@ -79,7 +79,6 @@ def add_pivot(sc: Scene, key: str, at: Point, caption: tuple[str, str], *, groun
 def add_bar(sc: Scene, key: str, a: Ref, b: Ref, name: tuple[str, str] = ("", ""), *, style: str = "link",
             role: Role = Role.RESULT) -> Ref:
     """A link drawn as a bar between two joints (an empty caption draws it with the step before)."""
-    from ..geometry import segment
     return sc.add(key, segment, a, b, role=role, style=style, caption=name)
 
 
@@ -136,8 +135,6 @@ def add_collinear_extremes(sc: Scene, A: Ref, path: Ref, AB: float, BC: float, b
     line) at C1 (folded), the circle of radius BC + AB at C2 (extended); B1 lies on C1A extended beyond A and
     B2 on AC2, both at AB from A. Returns ``(B1, C1, B2, C2)``.
     """
-    from ..geometry import circle, point_along
-
     en, zh = path_name
     cs = []
     for i, (r_key, op, r, sign, how_en, how_zh) in enumerate((("r1", difference, "BC − AB", -1, "folded", "重叠"),

@@ -1,6 +1,6 @@
 """Scenes: lazy construction DAGs of steps with explicit references."""
 from .marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
-from .scene import Scene
+from .scene import PlanMiss, Scene, lean_scenes
 from .step import Ref, Role, Step
 
-__all__ = ["AngleMark", "Dimension", "Ground", "Guide", "Ref", "RightAngleMark", "Role", "Scene", "Slider", "Step"]
+__all__ = ["AngleMark", "Dimension", "Ground", "Guide", "PlanMiss", "Ref", "RightAngleMark", "Role", "Scene", "Slider", "Step", "lean_scenes"]

@@ -24,24 +24,32 @@ Point(x=4.0, y=3.0)
 """
 from __future__ import annotations
 
-from typing import Any, Callable, Iterable
+from contextlib import contextmanager
+from contextvars import ContextVar
+from typing import Any, Callable, Iterable, Iterator
 
 from ..errors import GeomconError, NoIntersection, Unbuildable
 from ..geometry.branch import Branch
 from ..geometry.primitives import Circle, Line, Point
-from .step import Ref, Role, Step
+from .step import Ref, Role, Step, collect_refs
 
 
 def _resolve(x: Any, memo: dict[str, Any]) -> Any:
-    if isinstance(x, Ref):
-        return memo[x.key]
-    if isinstance(x, tuple):
+    t = type(x)
+    if t is Ref:
+        return memo[x[0]]
+    if t is tuple:
         return tuple(_resolve(y, memo) for y in x)
-    if isinstance(x, list):
+    if t is list:
         return [_resolve(y, memo) for y in x]
     if isinstance(x, Branch):
         return x.with_points(tuple(_resolve(y, memo) for y in x.refs()))
     return x
+
+
+_PLAIN, _TOP, _DEEP = 0, 1, 2
+"""How a step's arguments are resolved: no references at all; references only as top-level positional
+arguments; references anywhere (nested tuples, lists, keyword values)."""
 
 
 def _describe(obj: Any) -> str:
@@ -66,8 +74,70 @@ def _no_meet_message(a: Any, b: Any) -> str:
     return f"{_describe(a)} and {_describe(b)} do not meet"
 
 
+class PlanMiss(Exception):
+    """A planned scene was asked for a step its plan left out (a recipe built a new shape of scene): the
+    solver builds the scene again unplanned, which teaches the plan the missing steps. Never a user error."""
+
+
+_LEAN: ContextVar[tuple[str, bool] | None] = ContextVar("geomcon_lean_scenes", default=None)
+
+
+@contextmanager
+def lean_scenes(plan: str = "", *, learn: bool = False) -> Iterator[None]:
+    """Within this block, new scenes are *lean* and, when ``plan`` names the work (a recipe's name), *planned*.
+
+    A lean scene counts but does not store its annotation steps (angle arcs, ground symbols, dimensions: only a
+    drawing needs them). A planned scene also skips every step that no scene of the same plan and title has
+    needed so far: the first solve of a recipe learns which steps its answers need (the evaluation plan),
+    later solves build only those. When a solve needs a step outside its plan, the scene raises
+    :class:`PlanMiss` and is built again with ``learn=True`` (every step, and what it evaluates is added to the
+    plan), so the plan only ever saves work and never changes a value. Solving for answers builds planned
+    scenes; a drawing builds the full scene again.
+
+    Examples
+    --------
+    >>> from geomcon.geometry import Point
+    >>> with lean_scenes():
+    ...     sc = Scene("demo")
+    >>> A = sc.given("A", Point(0, 0))
+    >>> _ = sc.add("mark", repr, A, role=Role.ANNOTATION)
+    >>> sc.lean, "mark" in sc, sc.stats["steps_total"]
+    (True, True, 2)
+    """
+    token = _LEAN.set((plan, learn))
+    try:
+        yield
+    finally:
+        _LEAN.reset(token)
+
+
+@contextmanager
+def _full() -> Iterator[None]:
+    token = _LEAN.set(None)
+    try:
+        yield
+    finally:
+        _LEAN.reset(token)
+
+
+_KEEP: dict[tuple[str, str], set[str]] = {}
+"""Evaluation plans learned across solves: (plan name, scene title) → the keys some solve has evaluated."""
+
+_PLANS: dict[tuple[int, tuple[str, ...]], list[str]] = {}
+"""Culled, ordered evaluation lists reused across scenes: (the scene's structure signature, the keys asked
+for) → the keys to compute, in order."""
+_CACHE_MAX = 4096
+_ANNOTATION = Role.ANNOTATION
+_new_ref = tuple.__new__
+
+
 class Scene:
     """An ordered mapping key → :class:`Step` with lazy, memoised evaluation.
+
+    Each step is stored as a light record (operation, arguments, the keys it depends on, computed once when
+    the step is added); the :class:`Step` object a drawing reads is made on demand. The structure of the scene
+    (keys and dependencies) is summed up in a signature as it is built, and the evaluation plan of a request
+    (which steps, in which order) is cached by that signature across scenes.
 
     Parameters
     ----------
@@ -77,8 +147,55 @@ class Scene:
 
     def __init__(self, title: str = "") -> None:
         self.title = title
-        self._steps: dict[str, Step] = {}
+        mode = _LEAN.get()
+        self.lean = mode is not None
+        self._rec: dict[str, tuple] = {}
+        self._step: dict[str, Step] = {}
         self._memo: dict[str, Any] = {}
+        self._skip: set[str] = set()
+        self._sig = 0
+        self._learn: set[str] | None = None     # the plan this scene teaches (an unplanned lean scene)
+        self._keep: set[str] | None = None      # the plan this scene follows (a planned scene)
+        self._broken = False                    # a kept step refers to a step the plan skipped
+        self._rebuild: Callable[[], Scene] | None = None
+        if mode is not None and mode[0]:
+            known = _KEEP.get((mode[0], title))
+            if known is None or mode[1]:
+                if known is None:
+                    if len(_KEEP) >= _CACHE_MAX:
+                        _KEEP.clear()
+                    known = _KEEP[(mode[0], title)] = set()
+                self._learn = known
+            else:
+                self._keep = known
+
+    def unplanned(self) -> bool:
+        """True unless this scene follows a plan (it stores every step but, when lean, the annotations)."""
+        return self._keep is None
+
+    def rebuild_with(self, build: Callable[[], Scene]) -> None:
+        """Let a lean or planned scene complete itself: when a step it skipped is asked for (a drawing, an
+        annotation, a step outside the plan), ``build()`` makes the same scene in full and this scene takes its
+        steps, keeping every value computed so far (the same steps on the same givens give the same values).
+        Without it, asking for a skipped step raises :class:`PlanMiss`."""
+        self._rebuild = build
+
+    def complete(self) -> Scene:
+        """This scene with every step stored (built again in full once if it was lean); returns ``self``."""
+        if self.lean or self._keep is not None:
+            self._upgrade(None)
+        return self
+
+    def _upgrade(self, key: Any) -> None:
+        if self._rebuild is None:
+            raise PlanMiss(key)
+        with _full():
+            full = self._rebuild()
+        if full.title != self.title or full.lean:
+            raise AssertionError(f"rebuilding scene {self.title!r} gave {full.title!r}")
+        self._rec, self._skip, self._sig, self._step = full._rec, full._skip, full._sig, {}
+        self._learn = self._learn if self._keep is None else self._keep
+        self.lean, self._keep, self._broken, self._rebuild = False, None, False, None
 
     # ------------------------------------------------------------------ building
     def add(self, key: str, op: Callable[..., Any], *args: Any, caption: tuple[str, str] = ("", ""),
@@ -92,14 +209,49 @@ class Scene:
         KeyError
             When ``key`` exists already or a reference names a step not yet added.
         """
-        if key in self._steps:
+        rec = self._rec
+        if key in rec or key in self._skip:
             raise KeyError(f"step '{key}' defined twice")
-        step = Step(key, op, tuple(args), dict(kwargs), caption, role, style, label, branch, visible, unit, optional)
-        missing = [d for d in step.deps() if d not in self._steps]
-        if missing:
-            raise KeyError(f"step '{key}' refers to unknown step(s) {missing}")
-        self._steps[key] = step
-        return Ref(key)
+        keep = self._keep
+        if (keep is not None and key not in keep) or (role is _ANNOTATION and self.lean):
+            self._skip.add(key)
+            return _new_ref(Ref, (key,))
+        mode = _PLAIN
+        deps: list[str] = []
+        for a in args:
+            t = type(a)
+            if t is Ref:
+                mode = _TOP
+                deps.append(a[0])
+            elif t is tuple or t is list or isinstance(a, Branch):
+                mode = _DEEP
+                break
+        if kwargs and mode != _DEEP:
+            for a in kwargs.values():
+                t = type(a)
+                if t is Ref or t is tuple or t is list or isinstance(a, Branch):
+                    mode = _DEEP
+                    break
+        if mode == _DEEP:
+            deps = []
+            collect_refs(args, deps)
+            collect_refs(tuple(kwargs.values()), deps)
+        brefs: tuple = ()
+        if branch is not None:
+            brefs = branch.refs()
+            collect_refs(brefs, deps)
+        for d in deps:
+            if d not in rec:
+                if keep is not None and d in self._skip:     # the plan skipped a step this one needs
+                    self._broken = True
+                    self._skip.add(key)
+                    return _new_ref(Ref, (key,))
+                missing = [d for d in deps if d not in rec]
+                raise KeyError(f"step '{key}' refers to unknown step(s) {missing}")
+        rec[key] = (op, args, kwargs, mode, branch, brefs, optional, deps,
+                    (caption, role, style, label, visible, unit))
+        self._sig = hash((self._sig, key, *deps))
+        return _new_ref(Ref, (key,))
 
     def given(self, key: str, value: Any, *, caption: tuple[str, str] = ("", ""), style: str = "given",
               label: str | None = None, visible: bool = True, unit: str = "") -> Ref:
@@ -110,22 +262,32 @@ class Scene:
 
     # ------------------------------------------------------------------ reading
     def __contains__(self, key: str) -> bool:
-        return key in self._steps
+        return key in self._rec or key in self._skip
 
     def __len__(self) -> int:
-        return len(self._steps)
+        return len(self._rec)
 
     def __getitem__(self, key: str) -> Step:
-        return self._steps[key]
+        step = self._step.get(key)
+        if step is None:
+            if key in self._skip:
+                self._upgrade(key)
+            op, args, kwargs, _, branch, _, optional, _, meta = self._rec[key]
+            caption, role, style, label, visible, unit = meta
+            step = Step(key, op, args, kwargs, caption, role, style, label, branch, visible, unit, optional)
+            self._step[key] = step
+        return step
 
     @property
     def steps(self) -> tuple[Step, ...]:
         """All steps in insertion (drawing) order."""
-        return tuple(self._steps.values())
+        self.complete()
+        return tuple(self[k] for k in self._rec)
 
     def visible_steps(self) -> tuple[Step, ...]:
         """The steps that are drawn and numbered in the protocol, in order."""
-        return tuple(s for s in self._steps.values() if s.visible)
+        self.complete()
+        return tuple(self[k] for k, r in self._rec.items() if r[8][4])
 
     def frames(self) -> list[list[Step]]:
         """The visible steps grouped by protocol number: a step with an empty caption is drawn with the
@@ -148,37 +310,41 @@ class Scene:
     def label_of(self, x: Any) -> str:
         """The printed label of a referenced point (its step label, else its key)."""
         key = x.key if isinstance(x, Ref) else str(x)
-        step = self._steps.get(key)
-        return (step.label or key) if step else key
+        rec = self._rec.get(key)
+        return (rec[8][3] or key) if rec else key
 
     def caption(self, key: str) -> tuple[str, str]:
         """The step's caption with its branch rule appended, in English and Chinese."""
-        s = self._steps[key]
-        en, zh = s.caption
-        if s.branch is not None:
-            ben, bzh = s.branch.describe(self.label_of)
+        (en, zh), branch = self._rec[key][8][0], self._rec[key][4]
+        if branch is not None:
+            ben, bzh = branch.describe(self.label_of)
             en = f"{en} ({ben})" if en else ben
             zh = f"{zh}({bzh})" if zh else bzh
         return en, zh
 
     def closure(self, keys: Iterable[str]) -> list[str]:
         """The keys needed to compute ``keys`` (themselves included), in evaluation order."""
+        rec = self._rec
         need: set[str] = set()
         todo = list(keys)
         while todo:
             k = todo.pop()
             if k in need:
                 continue
-            if k not in self._steps:
-                raise KeyError(f"no step '{k}'")
+            r = rec.get(k)
+            if r is None:
+                if k not in self._skip:
+                    raise KeyError(f"no step '{k}'")
+                self._upgrade(k)
+                return self.closure(keys)
             need.add(k)
-            todo.extend(self._steps[k].deps())
-        return [k for k in self._steps if k in need]
+            todo.extend(r[7])
+        return [k for k in rec if k in need]
 
     # ------------------------------------------------------------------ evaluating
     def value(self, key: str) -> Any:
         """The value of one step, computing what it needs (once)."""
-        return self.evaluate([key])[key]
+        return self.evaluate((key,))[key]
 
     def evaluate(self, keys: Iterable[str]) -> dict[str, Any]:
         """Compute the requested steps and their dependencies; return ``{key: value}`` for ``keys``.
@@ -188,28 +354,46 @@ class Scene:
         Unbuildable
             When a step fails; the message names the step, its caption and the numbers.
         """
-        keys = list(keys)
-        for k in self.closure(keys):
-            if k not in self._memo:
-                self._memo[k] = self._compute(self._steps[k])
-        return {k: self._memo[k] for k in keys}
+        keys = tuple(keys)
+        if self._broken:
+            self._upgrade(keys)
+        memo = self._memo
+        plan_key = (self._sig, keys)
+        plan = _PLANS.get(plan_key)
+        if plan is None:
+            plan = self.closure(keys)
+            if len(_PLANS) >= _CACHE_MAX:
+                _PLANS.clear()
+            _PLANS[plan_key] = plan
+        if self._learn is not None:
+            self._learn.update(plan)
+        rec = self._rec
+        for k in plan:
+            if k not in memo:
+                memo[k] = self._compute(k, rec[k])
+        return {k: memo[k] for k in keys}
 
-    def _compute(self, step: Step) -> Any:
+    def _compute(self, key: str, rec: tuple) -> Any:
+        op, args, kwargs, mode, branch, brefs, optional, _, _ = rec
+        memo = self._memo
         try:
-            args = _resolve(step.args, self._memo)
-            kwargs = {n: _resolve(v, self._memo) for n, v in step.kwargs.items()}
-            if step.optional and _missing(step, args, kwargs):
+            if mode == _TOP:
+                args = [memo[a[0]] if type(a) is Ref else a for a in args]
+            elif mode == _DEEP:
+                args = _resolve(args, memo)
+                kwargs = {n: _resolve(v, memo) for n, v in kwargs.items()}
+            if optional and mode != _PLAIN and _missing(rec[1], args, rec[2], kwargs):
                 return None
-            out = step.op(*args, **kwargs)
-            if step.branch is not None:
-                if not out and step.optional:
-                    return None
+            out = op(*args, **kwargs)
+            if branch is not None:
                 if not out:
+                    if optional:
+                        return None
                     raise NoIntersection(_no_meet_message(*args[:2]))
-                out = _resolve(step.branch, self._memo).choose(out)
+                out = branch.rule(out, *[memo[r[0]] if type(r) is Ref else r for r in brefs])
             return out
         except GeomconError as exc:
-            raise Unbuildable(step.key, self.caption(step.key)[0], exc) from None
+            raise Unbuildable(key, self.caption(key)[0], exc) from None
 
     def is_evaluated(self, key: str) -> bool:
         """True when the step's value has been computed already."""
@@ -217,17 +401,18 @@ class Scene:
 
     @property
     def stats(self) -> dict[str, int]:
-        """``steps_total`` (all steps) and ``steps_evaluated`` (computed so far)."""
-        return {"steps_total": len(self._steps), "steps_evaluated": len(self._memo)}
+        """``steps_total`` (all steps, the annotations a lean scene skipped included) and ``steps_evaluated``
+        (computed so far)."""
+        return {"steps_total": len(self._rec) + len(self._skip), "steps_evaluated": len(self._memo)}
 
 
 def _constant(value: Any) -> Any:
     return value
 
 
-def _missing(step: Step, args: tuple, kwargs: dict) -> bool:
+def _missing(raw_args: tuple, args: Any, raw_kwargs: dict, kwargs: dict) -> bool:
     """True when a referenced value an optional step needs is None (a candidate that does not exist);
     a literal None argument (e.g. "default radius") does not count."""
-    refs = [v for a, v in zip(step.args, args) if isinstance(a, Ref)]
-    refs += [kwargs[n] for n, a in step.kwargs.items() if isinstance(a, Ref)]
+    refs = [v for a, v in zip(raw_args, args) if type(a) is Ref]
+    refs += [kwargs[n] for n, a in raw_kwargs.items() if type(a) is Ref]
     return any(v is None for v in refs)

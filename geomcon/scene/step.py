@@ -16,11 +16,35 @@ from typing import Any, Callable, Mapping
 from ..geometry.branch import Branch
 
 
-@dataclass(frozen=True, slots=True)
-class Ref:
-    """A reference to the value of another step of the same scene (never a bare string)."""
+class Ref(tuple):
+    """A reference to the value of another step of the same scene (never a bare string).
 
-    key: str
+    An immutable one-field record (a tuple underneath, so that making one costs a tenth of a frozen
+    dataclass: every step added returns one). It is never taken apart as a tuple: scenes test
+    ``type(x) is Ref`` before looking inside containers.
+
+    Examples
+    --------
+    >>> r = Ref("C1")
+    >>> r.key, r, r == Ref("C1")
+    ('C1', Ref(key='C1'), True)
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, key: str) -> Ref:
+        return tuple.__new__(cls, (key,))
+
+    @property
+    def key(self) -> str:
+        """The referenced step's key."""
+        return self[0]
+
+    def __repr__(self) -> str:
+        return f"Ref(key={self[0]!r})"
+
+    def __getnewargs__(self) -> tuple[str]:
+        return (self[0],)
 
 
 class Role(str, Enum):
@@ -33,14 +57,24 @@ class Role(str, Enum):
     ANNOTATION = "annotation"       # angle arcs, dimensions, symbols: drawing only
 
 
-def _collect(x: Any, out: list[str]) -> None:
-    if isinstance(x, Ref):
-        out.append(x.key)
-    elif isinstance(x, (tuple, list)):
+def collect_refs(x: Any, out: list[str]) -> None:
+    """Append the keys of every :class:`Ref` inside ``x`` (tuples, lists and branch rules included) to ``out``.
+
+    Examples
+    --------
+    >>> out = []
+    >>> collect_refs((Ref("A"), 2.0, [Ref("B"), (Ref("C"),)]), out)
+    >>> out
+    ['A', 'B', 'C']
+    """
+    t = type(x)
+    if t is Ref:
+        out.append(x[0])
+    elif t is tuple or t is list:
         for y in x:
-            _collect(y, out)
+            collect_refs(y, out)
     elif isinstance(x, Branch):
-        _collect(x.refs(), out)
+        collect_refs(x.refs(), out)
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,8 +126,8 @@ class Step:
     def deps(self) -> tuple[str, ...]:
         """Keys of the steps this step refers to, in order of appearance, without repeats."""
         out: list[str] = []
-        _collect(self.args, out)
-        _collect(tuple(self.kwargs.values()), out)
+        collect_refs(self.args, out)
+        collect_refs(tuple(self.kwargs.values()), out)
         if self.branch is not None:
-            _collect(self.branch, out)
+            collect_refs(self.branch, out)
         return tuple(dict.fromkeys(out))
