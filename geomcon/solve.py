@@ -312,6 +312,11 @@ class Solution:
         return rows
 
     @property
+    def construction_warnings(self) -> list[str]:
+        """The warnings of validation and construction alone (borderline geometry), without the checks."""
+        return list(self._warnings)
+
+    @property
     def warnings(self) -> list[str]:
         """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
         out = list(self._warnings)

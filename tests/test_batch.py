@@ -1,0 +1,67 @@
+"""The batch API: many variants of one recipe in one call give exactly the answers of one-by-one solves,
+errors in their places, rows and columns alike."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from geomcon.batch import Batch, solve_batch
+from geomcon.errors import ProblemError
+from geomcon.problems import problem_from_dict
+from geomcon.solve import solve
+
+ROWS = [
+    {"AB": 50, "BC": 70, "CD": 80, "AD": 90},
+    {"AB": 25.5, "BC": 61, "CD": 70, "AD": 80, "branch": "below"},
+    {"AB": 95, "BC": 70, "CD": 80, "AD": 90},          # AB is not the shortest: no crank-rocker
+    {"AB": 50, "BC": 70, "CD": 80},                     # AD missing: bad input
+    {"AB": 40, "BC": 75, "CD": 66, "AD": 86},
+]
+
+
+def _one(given: dict) -> dict | None:
+    try:
+        return solve(problem_from_dict({"recipe": "crank_rocker.extremes", "given": given}, name="one")).answers
+    except ProblemError:
+        return None
+    except ValueError:
+        return None
+
+
+def test_rows_give_the_answers_of_single_solves_and_errors_in_place():
+    b = solve_batch("crank_rocker.extremes", ROWS)
+    assert isinstance(b, Batch) and len(b) == len(ROWS) and b.recipe == "crank_rocker.extremes"
+    for row, got, err, ok in zip(ROWS, b.answers, b.errors, b.ok):
+        want = _one(row)
+        assert got == want                       # the same code path: identical floats, not just close
+        assert (err is None) == (want is not None) and ok == (want is not None)
+    assert "AD" in b.errors[3] and "not the strictly shortest" in b.errors[2]
+
+
+def test_columns_and_numpy_arrays_equal_rows():
+    rows = [r for r in ROWS if "AD" in r and "branch" not in r]
+    cols = {k: np.array([r[k] for r in rows], dtype=float) for k in ("AB", "BC", "CD", "AD")}
+    assert solve_batch("crank_rocker.extremes", cols).answers == solve_batch("crank_rocker.extremes", rows).answers
+
+
+def test_checks_off_still_answers_and_keeps_construction_warnings():
+    rows = [{"AB": 15, "BC": 50, "CD": 35, "AD": 30}]        # Grashof equality: a change-point warning
+    on, off = solve_batch("crank_rocker.extremes", rows), solve_batch("crank_rocker.extremes", rows, checks=False)
+    assert on.answers == off.answers and off.ok == [True]
+    assert any("Grashof equality" in w for w in off.warnings[0])
+
+
+def test_design_recipe_batch_back_substitutes():
+    rows = [{"K": k, "H": 50.0, "e": 20.0} for k in (1.2, 1.4, 1.6)]
+    b = solve_batch("crank_slider.design_by_K", rows)
+    assert b.ok == [True, True, True]
+    for row, got in zip(rows, b.answers):
+        assert got == solve(problem_from_dict({"recipe": "crank_slider.design_by_K", "given": row}, name="x")).answers
+
+
+def test_bad_calls_raise():
+    with pytest.raises(ProblemError, match="unknown recipe"):
+        solve_batch("no.such", [])
+    with pytest.raises(ValueError, match="different lengths"):
+        solve_batch("guide_bar.extremes", {"AB": [1.0, 2.0], "AC": [3.0]})
+    assert len(solve_batch("guide_bar.extremes", [])) == 0
