@@ -28,7 +28,7 @@ from .errors import NotAMechanism, ProblemError
 from .tolerance import CHECK_REL
 from .problems import Problem
 from .recipes import Construction, Recipe, get_recipe
-from .scene import PlanMiss, lean_scenes
+from .scene import LeanScenes, PlanMiss
 
 T = TypeVar("T")
 
@@ -67,6 +67,17 @@ def _finite(v: Any) -> Any:
     return v
 
 
+_UNITS: dict[str, dict[str, str]] = {}
+
+
+def _answer_units(recipe: Recipe) -> dict[str, str]:
+    """``{answer name: unit}`` in the recipe's declared order (made once per recipe)."""
+    units = _UNITS.get(recipe.name)
+    if units is None:
+        units = _UNITS[recipe.name] = {q.name: q.unit for q in recipe.answers}
+    return units
+
+
 def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     """Matching scalar parts of two answer values: ``("s[0]", a[0], b[0])``… for lists;
     bools compare as the numbers 1 and 0.
@@ -96,10 +107,10 @@ def planned(plan: str, fn: Callable[..., T], *args: Any) -> T:
     (True, 60.0)
     """
     try:
-        with lean_scenes(plan):
+        with LeanScenes(plan):
             return fn(*args)
     except PlanMiss:
-        with lean_scenes(plan, learn=True):
+        with LeanScenes(plan, learn=True):
             return fn(*args)
 
 
@@ -143,17 +154,27 @@ class Solution:
         """
         maps = self.construction.solutions or (self.construction.answers,)
         vals = self.evaluate(k for m in maps for k in m.values())
-        units = {q.name: q.unit for q in self.recipe.answers}
-        rank = {name: i for i, name in enumerate(units)}          # answers in the recipe's declared order
-        out = [{name: _value(units.get(name, ""), vals[m[name]])
-                for name in sorted((n for n in m if n != "_valid"), key=lambda n: rank.get(n, len(rank)))}
-               for m in maps if "_valid" not in m or vals[m["_valid"]]]
+        units = _answer_units(self.recipe)                         # in the recipe's declared order
+        out = []
+        for m in maps:
+            if "_valid" in m and not vals[m["_valid"]]:
+                continue
+            sol = {}
+            for name, unit in units.items():
+                key = m.get(name)
+                if key is not None:
+                    v = vals[key]
+                    sol[name] = v if type(v) is float and unit != "bool" else _value(unit, v)
+            sol.update((n, _value("", vals[k])) for n, k in m.items() if n not in units and n != "_valid")
+            out.append(sol)
         if self.recipe.order is not None:
             out.sort(key=self.recipe.order)
         if not out:
             raise NotAMechanism(self.construction.no_solution or "no candidate of the construction is a valid mechanism")
         for sol in out:
             for k, v in sol.items():
+                if type(v) is float and v - v == 0.0:      # finite: the common case, at once
+                    continue
                 bad = [x for x in (v if isinstance(v, tuple) else (v,)) if not math.isfinite(x)]
                 if bad:
                     raise NotAMechanism(f"answer '{k}' is not a finite number ({bad[0]!r}): the givens are outside "

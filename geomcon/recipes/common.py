@@ -72,7 +72,8 @@ def total(a: float, b: float) -> float:
 def add_pivot(sc: Scene, key: str, at: Point, caption: tuple[str, str], *, ground_angle: float = -math.pi / 2) -> Ref:
     """A fixed pivot: the given point plus its hatched ground symbol."""
     ref = sc.given(key, at, caption=caption, style="pivot")
-    sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
+    if sc.drawing:
+        sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
     return ref
 
 

@@ -91,17 +91,20 @@ def construct(g: Mapping[str, Any]) -> Construction:
     D = add_pivot(sc, "D", Point(AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
                                               f"在机架线上取 D,使 AD = {AD:g}"), ground_angle=ground)
     side = Below(A, D) if below else Above(A, D)
-    sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
+    drawing = sc.drawing                     # the links, ghost positions and marks only a drawing needs
+    if drawing:
+        sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
     kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}, the path of C",
                                                f"以 D 为圆心、CD = {CD:g} 为半径作圆(C 点轨迹)"))
     B1, C1, B2, C2 = add_collinear_extremes(sc, A, kD, AB, BC, side, circle_circle, ("the rocker circle", "摇杆圆"))
-    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
+    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1) if drawing else ():
         style = "link" if i == 1 else "link-alt"
         how = ("folded", "重叠") if i == 1 else ("extended", "拉直")
         add_bar(sc, f"AB{i}", A, B, (f"Draw the {how[0]} position AB{i}C{i}D", f"画出{how[1]}共线位置 AB{i}C{i}D"), style=style)
         add_bar(sc, f"B{i}C{i}", B, C, style=style)
         add_bar(sc, f"C{i}D", C, D, style=style)
-    sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
+    if drawing:
+        sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     th = add_theta_and_K(sc, A, C1, C2)
     ps = sc.add("psi", angle_deg, D, C1, C2, role=Role.MEASUREMENT, unit="deg",
                 caption=("Measure the swing ψ = ∠C1DC2", "量得摇杆摆角 ψ = ∠C1DC2"))
@@ -117,17 +120,18 @@ def construct(g: Mapping[str, Any]) -> Construction:
                                                         f"以 B{p} 为圆心、BC 为半径作圆"))
         Cg = sc.add(f"Cg{i}", circle_circle, kB, kD, branch=side, style="point", label=f"C{p}",
                     caption=(f"It meets the rocker circle at C{p}", f"交摇杆圆于 C{p}"))
-        for a, b, nm in ((A, Bg, f"AB{p}"), (Bg, Cg, f"B{p}C{p}"), (Cg, D, f"C{p}D")):
+        for a, b, nm in ((A, Bg, f"AB{p}"), (Bg, Cg, f"B{p}C{p}"), (Cg, D, f"C{p}D")) if drawing else ():
             add_bar(sc, f"g{i}_{nm}", a, b, style="ghost", role=Role.CONSTRUCTION)
         gk = sc.add(f"gamma_{i}", transmission_deg, Bg, Cg, D, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"Transmission angle γ{i} = ∠B{p}C{p}D (acute form)", f"传动角 γ{i} = ∠B{p}C{p}D(取锐角)"))
         gammas.append((gk, Bg, Cg))
     sc.add("gamma_min", smallest, gammas[0][0], gammas[1][0], role=Role.MEASUREMENT, unit="deg",
                 caption=("γmin = min(γ1, γ2)", "最小传动角 γmin = min(γ1, γ2)"))
-    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
-    add_angle_mark(sc, "mark_psi", D, C1, C2, "ψ", ps)
-    for i, (gk, Bg, Cg) in enumerate(gammas, 1):
-        sc.add(f"mark_gamma_{i}", transmission_mark, Cg, Bg, D, f"γ{i}", gk, role=Role.ANNOTATION, style="angle")
+    if drawing:
+        add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
+        add_angle_mark(sc, "mark_psi", D, C1, C2, "ψ", ps)
+        for i, (gk, Bg, Cg) in enumerate(gammas, 1):
+            sc.add(f"mark_gamma_{i}", transmission_mark, Cg, Bg, D, f"γ{i}", gk, role=Role.ANNOTATION, style="angle")
     answers = {q.name: q.name for q in ANSWERS}
     points = {n: n for n in ("A", "D", "B1", "C1", "B2", "C2")}
     return Construction(sc, answers, points)

@@ -82,33 +82,42 @@ class PlanMiss(Exception):
 _LEAN: ContextVar[tuple[str, bool] | None] = ContextVar("geomcon_lean_scenes", default=None)
 
 
-@contextmanager
-def lean_scenes(plan: str = "", *, learn: bool = False) -> Iterator[None]:
+class LeanScenes:
     """Within this block, new scenes are *lean* and, when ``plan`` names the work (a recipe's name), *planned*.
 
     A lean scene counts but does not store its annotation steps (angle arcs, ground symbols, dimensions: only a
     drawing needs them). A planned scene also skips every step that no scene of the same plan and title has
     needed so far: the first solve of a recipe learns which steps its answers need (the evaluation plan),
-    later solves build only those. When a solve needs a step outside its plan, the scene raises
-    :class:`PlanMiss` and is built again with ``learn=True`` (every step, and what it evaluates is added to the
-    plan), so the plan only ever saves work and never changes a value. Solving for answers builds planned
-    scenes; a drawing builds the full scene again.
+    later solves build only those. When a solve needs a step outside its plan, the scene completes itself
+    (:meth:`Scene.rebuild_with`) or raises :class:`PlanMiss`, and the work is done again with ``learn=True``
+    (every step but the annotations, and what it evaluates is added to the plan); so the plan only ever saves
+    work and never changes a value. Solving for answers builds planned scenes; a drawing completes them.
 
     Examples
     --------
     >>> from geomcon.geometry import Point
-    >>> with lean_scenes():
+    >>> with LeanScenes():
     ...     sc = Scene("demo")
     >>> A = sc.given("A", Point(0, 0))
     >>> _ = sc.add("mark", repr, A, role=Role.ANNOTATION)
     >>> sc.lean, "mark" in sc, sc.stats["steps_total"]
     (True, True, 2)
     """
-    token = _LEAN.set((plan, learn))
-    try:
-        yield
-    finally:
-        _LEAN.reset(token)
+
+    __slots__ = ("_mode", "_token")
+
+    def __init__(self, plan: str = "", *, learn: bool = False) -> None:
+        self._mode = (plan, learn)
+
+    def __enter__(self) -> None:
+        self._token = _LEAN.set(self._mode)
+
+    def __exit__(self, *exc: object) -> None:
+        _LEAN.reset(self._token)
+
+
+lean_scenes = LeanScenes
+"""The same as :class:`LeanScenes` (a lower-case name for use in ``with``)."""
 
 
 @contextmanager
@@ -223,6 +232,8 @@ class Scene:
             if t is Ref:
                 mode = _TOP
                 deps.append(a[0])
+            elif t is float or t is int or t is str or t is Point:
+                continue
             elif t is tuple or t is list or isinstance(a, Branch):
                 mode = _DEEP
                 break
@@ -370,7 +381,14 @@ class Scene:
         rec = self._rec
         for k in plan:
             if k not in memo:
-                memo[k] = self._compute(k, rec[k])
+                r = rec[k]
+                if r[3] == _TOP and r[4] is None and not r[6]:      # the common case, inline
+                    try:
+                        memo[k] = r[0](*[memo[a[0]] if type(a) is Ref else a for a in r[1]], **r[2])
+                    except GeomconError as exc:
+                        raise Unbuildable(k, self.caption(k)[0], exc) from None
+                else:
+                    memo[k] = self._compute(k, r)
         return {k: memo[k] for k in keys}
 
     def _compute(self, key: str, rec: tuple) -> Any:
@@ -400,9 +418,19 @@ class Scene:
         return key in self._memo
 
     @property
+    def drawing(self) -> bool:
+        """True when this scene may be drawn: recipes add drawing-only steps (links drawn as bars, ghost
+        positions, angle marks, labels) under ``if sc.drawing:``, so that solving for answers does not even
+        format their captions. A lean scene is not drawing; when a drawing asks for it, it is built again in
+        full (:meth:`complete`)."""
+        return not self.lean
+
+    @property
     def stats(self) -> dict[str, int]:
-        """``steps_total`` (all steps, the annotations a lean scene skipped included) and ``steps_evaluated``
-        (computed so far)."""
+        """``steps_total`` (every step of the full construction: a lean scene that can complete itself does so
+        to count them, keeping its values) and ``steps_evaluated`` (computed so far)."""
+        if self.lean and self._rebuild is not None:
+            self.complete()
         return {"steps_total": len(self._rec) + len(self._skip), "steps_evaluated": len(self._memo)}
 
 
