@@ -199,8 +199,17 @@ class Solution:
 
     def unit_scale(self, unit: str) -> float:
         """The scale of a quantity of ``unit`` (:func:`~geomcon.check.scale_for`; speeds take the given ω)."""
-        omega = self.problem.given.get("omega")
-        return scale_for(unit.removesuffix("[]"), self.length_scale, omega if isinstance(omega, float) else 1.0)
+        scales = self._scales
+        sc = scales.get(unit)
+        if sc is None:
+            omega = self.problem.given.get("omega")
+            sc = scales[unit] = scale_for(unit.removesuffix("[]"), self.length_scale,
+                                          omega if isinstance(omega, float) else 1.0)
+        return sc
+
+    @cached_property
+    def _scales(self) -> dict[str, float]:
+        return {}
 
     @cached_property
     def matching(self) -> list[tuple[int, int]]:
@@ -284,14 +293,21 @@ class Solution:
             built, exact = self.solution_values[i], self.analytic[j]
             prefix = f"solutions[{i}]." if i else ""
             for q in self.recipe.answers:
-                if q.name in built and q.name in exact:
-                    unit = q.unit.removesuffix("[]")
-                    for (name, b, e), (flat, _, _) in zip(_pairs(prefix + q.name, built[q.name], exact[q.name]),
-                                                          _pairs(q.name, built[q.name], exact[q.name])):
-                        row = {**check_row(name, b, e, self.unit_scale(unit)), "unit": q.unit}
-                        if not row["ok"]:
-                            row = self._conditioned(row, j, flat, q.unit)
-                        rows.append(row)
+                b, e = built.get(q.name), exact.get(q.name)
+                if b is None or e is None:
+                    continue
+                if type(b) is float and type(e) is float:               # a number: one row, at once
+                    parts: Any = ((prefix + q.name, b, e, q.name),)
+                else:
+                    parts = [(name, x, y, flat) for (name, x, y), (flat, _, _)
+                             in zip(_pairs(prefix + q.name, b, e), _pairs(q.name, b, e))]
+                scale = self.unit_scale(q.unit)
+                for name, x, y, flat in parts:
+                    row = check_row(name, x, y, scale)
+                    row["unit"] = q.unit
+                    if not row["ok"]:
+                        row = self._conditioned(row, j, flat, q.unit)
+                    rows.append(row)
         if self.recipe.back_check is not None:
             for i, built in enumerate(self.solution_values):
                 prefix = f"solutions[{i}]." if i else ""
