@@ -165,7 +165,6 @@ class Scene:
         self._sig = 0
         self._learn: set[str] | None = None     # the plan this scene teaches (an unplanned lean scene)
         self._keep: set[str] | None = None      # the plan this scene follows (a planned scene)
-        self._broken = False                    # a kept step refers to a step the plan skipped
         self._rebuild: Callable[[], Scene] | None = None
         if mode is not None and mode[0]:
             known = _KEEP.get((mode[0], title))
@@ -204,7 +203,7 @@ class Scene:
             raise AssertionError(f"rebuilding scene {self.title!r} gave {full.title!r}")
         self._rec, self._skip, self._sig, self._step = full._rec, full._skip, full._sig, {}
         self._learn = self._learn if self._keep is None else self._keep
-        self.lean, self._keep, self._broken, self._rebuild = False, None, False, None
+        self.lean, self._keep, self._rebuild = False, None, None
 
     # ------------------------------------------------------------------ building
     def add(self, key: str, op: Callable[..., Any], *args: Any, caption: tuple[str, str] = ("", ""),
@@ -250,14 +249,16 @@ class Scene:
         brefs: tuple = ()
         if branch is not None:
             brefs = branch.refs()
-            collect_refs(brefs, deps)
-        for d in deps:
-            if d not in rec:
-                if keep is not None and d in self._skip:     # the plan skipped a step this one needs
-                    self._broken = True
-                    self._skip.add(key)
-                    return _new_ref(Ref, (key,))
-                missing = [d for d in deps if d not in rec]
+            for r in brefs:
+                if type(r) is Ref:
+                    deps.append(r[0])
+                elif type(r) is not Point:
+                    collect_refs(r, deps)
+        if not self.lean:
+            # a full scene checks its references as it is built; a lean one finds a missing step when it
+            # culls (a plan that skipped a needed step completes the scene there)
+            missing = [d for d in deps if d not in rec]
+            if missing:
                 raise KeyError(f"step '{key}' refers to unknown step(s) {missing}")
         rec[key] = (op, args, kwargs, mode, branch, brefs, optional, deps,
                     (caption, role, style, label, visible, unit))
@@ -366,8 +367,6 @@ class Scene:
             When a step fails; the message names the step, its caption and the numbers.
         """
         keys = tuple(keys)
-        if self._broken:
-            self._upgrade(keys)
         memo = self._memo
         plan_key = (self._sig, keys)
         plan = _PLANS.get(plan_key)
