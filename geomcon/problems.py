@@ -159,6 +159,10 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
             out[q.name] = q.default
             continue
         value = given[q.name]
+        x = _plain(q, value)
+        if x is not None:                   # a plain number well inside every limit: no message to prepare
+            out[q.name] = x
+            continue
         if q.unit == "bool":
             if not isinstance(value, bool):
                 raise ProblemError(f"given '{q.name}' must be true or false, got {_short(value)}")
@@ -185,6 +189,32 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
         out[q.name] = _bounded(q, value, f"given '{q.name}'")
     _length_span(recipe, out)
     return out
+
+
+_SCALAR_UNITS = ("mm", "deg", "", "mm/s")
+
+
+def _plain(q: Quantity, value: Any) -> float | None:
+    """``value`` as a float when it is a number (not a bool) that passes every check of :func:`_bounded`;
+    None otherwise, and the slow path then refuses it with its message.
+
+    >>> _plain(Quantity("AB", "mm", "crank"), 50), _plain(Quantity("AB", "mm", "crank"), -1.0)
+    (50.0, None)
+    """
+    t = type(value)
+    if (t is not float and t is not int) or q.unit not in _SCALAR_UNITS:
+        return None
+    if t is int and not -1e300 <= value <= 1e300:
+        return None
+    x = float(value)
+    lo, hi = RANGES[q.unit]
+    if not (x - x == 0.0 and abs(x) <= hi and (x == 0.0 or abs(x) >= lo)):
+        return None
+    if q.minimum is not None and (x < q.minimum if q.inclusive else x <= q.minimum):
+        return None
+    if q.maximum is not None and x > q.maximum:
+        return None
+    return x
 
 
 def _length_span(recipe: Recipe, given: Mapping[str, Any]) -> None:
