@@ -1,5 +1,7 @@
 """``geomcon bench``: how fast and how exact is the construction, against the obvious numerical baseline?
 
+(0) The lean core's targets, each a ratio to a reference timed in the same run (:mod:`.lean`).
+
 (a) For three textbook problems — the crank-rocker 50/70/80/90, the offset crank-slider 120/250/60 and the
 guide-bar 145/290 — the construction (the recipe's scene built and evaluated for its answers) is timed and
 checked against the analytic twin, and so is sweeping the crank through N = 360 … 10⁶ steps with
@@ -16,6 +18,7 @@ from pathlib import Path
 from ..fileio import write_all
 from .cam import cam_table, measure_cam
 from .exact import exact_table, measure_exact
+from .lean import lean_table, measure_lean
 from .measure import CASES, FULL, QUICK, Case, Config, DrawRow, ErrorRow, measure_drawing, measure_extremes
 from .plot import render_plot
 from .report import report
@@ -35,7 +38,9 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
     config = QUICK if quick else FULL
     extremes = measure_extremes(config)
     drawing = measure_drawing(config)
-    text = report(extremes, drawing, quick=quick) + "\n\n" + exact_table(measure_exact(1 if quick else 3))
+    exact = measure_exact(1 if quick else 3)
+    lean = lean_table(measure_lean(quick, extremes, exact))
+    text = lean + "\n\n" + report(extremes, drawing, quick=quick) + "\n\n" + exact_table(exact)
     text += "\n\n" + synthesis_table(measure_synthesis(1 if quick else 3))
     text += "\n\n" + cam_table(measure_cam(quick))
     write_all({out: render_plot(extremes, quick=quick)})

@@ -44,11 +44,12 @@ def sympy_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
 
 def engine_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
     """AB, BC by geomcon's ``crank_slider.design_by_K`` construction (answers only)."""
-    from ..recipes import get_recipe
     from ..problems import validate_given
+    from ..recipes import get_recipe
+    from ..solve import planned
 
     r = get_recipe("crank_slider.design_by_K")
-    vals = r.construct(validate_given(r, {"K": K, "H": H, "e": e})).scene.evaluate(["AB", "BC"])
+    vals = planned(r.name, r.construct, validate_given(r, {"K": K, "H": H, "e": e})).scene.evaluate(["AB", "BC"])
     return vals["AB"], vals["BC"]
 
 

@@ -1,0 +1,289 @@
+"""``geomcon bench``, first table: the lean core's targets (issue 10), each measured as a ratio in one run.
+
+Every row times one thing and sets it beside a reference measured in the same run, so that the ratio, not the
+machine, is what counts:
+
+- answers only (``solve(problem).answers`` on a loaded problem) against the same construction written as a
+  plain lazy DAG of float code (:mod:`.plain`);
+- answers and twin checks, against the answers alone;
+- cam answers, against the recipe's analytic twin (a scalar route to the same numbers);
+- ``cam.base_radius`` with checks;
+- a whole ``geomcon solve`` process, against ``python -c pass``;
+- the construction against the same construction in sympy.geometry, and against a crank sweep with N chosen
+  for a relative error of 1e-9 in ψ or H (N from the order of convergence the sweep shows at its two largest
+  sizes, its time scaled linearly from the largest N measured);
+- the batch API's cost per variant, against one solve at a time.
+
+Timings are medians of repeated runs (the garbage collector on, as in use); tests check the arithmetic of the
+rows, never a time.
+
+Examples
+--------
+>>> r = LeanRow("answers", "x", 40e-6, "plain DAG", 30e-6, "≤ 50 µs, ≤ 1.5×", 50e-6, 1.5)
+>>> round(r.ratio, 12), r.met
+(1.333333333333, True)
+>>> LeanRow("vs sympy", "x", 1e-4, "sympy", 2.0, "≥ 10⁴×", None, None, speedup=1e4).met
+True
+"""
+from __future__ import annotations
+
+import math
+import random
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable, Mapping, Sequence
+
+from ..batch import solve_batch
+from ..problems import load_problem, problem_from_dict
+from ..recipes import get_recipe
+from ..solve import solve
+from .plain import PLAIN
+from .report import fmt_seconds, format_table
+
+PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
+"""The bundled problems (the bench runs from a checkout)."""
+
+LINKAGES: tuple[tuple[str, str, dict[str, Any]], ...] = (
+    ("001-08", "crank_rocker.extremes", {"AB": 50, "BC": 70, "CD": 80, "AD": 90}),
+    ("001-06", "crank_slider.extremes", {"AB": 120, "BC": 250, "e": 60}),
+    ("001-05", "guide_bar.extremes", {"AB": 145, "AC": 290}),
+    ("001-18", "crank_slider.design_by_K", {"K": 1.5, "H": 50, "e": 20}),
+    ("001-10", "crank_rocker.design_by_K", {"K": 1.25, "CD": 290, "psi": 32, "BC": 260}),
+)
+"""The linkage and design-by-K problems timed (givens as in the bundled files)."""
+
+CAMS = ("200-01_cam_roller_offset", "001-23b_cam_knife_parabolic", "200-05_oscillating_roller_cam",
+        "200-07_oscillating_flat_face")
+BASE_RADIUS = "200-12_oscillating_base_radius"
+WHOLE = "001-08_crank_rocker"
+SWEEP_TARGET = 1e-9
+
+
+@dataclass(frozen=True)
+class LeanRow:
+    """One target: what was timed, its time, the reference and its time, the target and whether it is met.
+
+    ``limit`` (seconds) and ``max_ratio`` bound a time and its ratio to the reference; ``speedup`` is instead a
+    smallest reference/time factor (the construction against sympy or a sweep).
+    """
+
+    what: str
+    case: str
+    seconds: float
+    reference: str
+    ref_seconds: float | None
+    target: str
+    limit: float | None
+    max_ratio: float | None
+    speedup: float | None = None
+    note: str = ""
+
+    @property
+    def ratio(self) -> float | None:
+        """Time over the reference's time (None without a reference)."""
+        return None if not self.ref_seconds else self.seconds / self.ref_seconds
+
+    @property
+    def met(self) -> bool:
+        """Whether every bound of the target holds."""
+        if self.speedup is not None:
+            return self.ratio is not None and 1.0 / self.ratio >= self.speedup
+        ok = self.limit is None or self.seconds <= self.limit
+        if self.max_ratio is not None:
+            ok = ok and self.ratio is not None and self.ratio <= self.max_ratio
+        return ok
+
+
+def median_time(fn: Callable[[], Any], *, number: int, repeat: int) -> float:
+    """The median over ``repeat`` runs of the mean time of ``number`` calls of ``fn`` (seconds)."""
+    fn()                                          # warm: imports, the recipe's evaluation plan
+    runs = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        runs.append((time.perf_counter() - t0) / number)
+    return statistics.median(runs)
+
+
+def _problem(recipe: str, given: Mapping[str, Any]):
+    return problem_from_dict({"recipe": recipe, "given": dict(given)}, name="bench")
+
+
+def linkage_rows(quick: bool) -> list[LeanRow]:
+    """Answers only against the plain DAG (where written), and answers with checks, per linkage problem."""
+    number, repeat = (200, 3) if quick else (1000, 7)
+    rows = []
+    for pid, recipe, given in LINKAGES:
+        p = _problem(recipe, given)
+        t = median_time(lambda: solve(p).answers, number=number, repeat=repeat)
+        plain = PLAIN.get(recipe)
+        if plain is not None:
+            g = p.given
+            ref = median_time(lambda: plain(g), number=number, repeat=repeat)
+            rows.append(LeanRow("answers only", f"{pid} {recipe}", t, "plain DAG", ref, "≤ 50 µs, ≤ 1.5×", 50e-6, 1.5))
+        else:
+            rows.append(LeanRow("answers only", f"{pid} {recipe}", t, "—", None, "≤ 50 µs", 50e-6, None,
+                                note="no plain replica"))
+        tc = median_time(lambda: solve(p).checks, number=number, repeat=repeat)
+        rows.append(LeanRow("answers + twin checks", f"{pid} {recipe}", tc, "answers only", t, "≤ 100 µs",
+                            100e-6, None))
+    return rows
+
+
+def cam_rows(quick: bool) -> list[LeanRow]:
+    """Cam answers against the twin; the base-radius design with its checks."""
+    rows = []
+    for pid in CAMS:
+        path = PROBLEMS / f"{pid}.toml"
+        if not path.exists():
+            continue
+        p = load_problem(path)
+        recipe = get_recipe(p.recipe)
+        n = 1 if quick else 3
+        t = median_time(lambda: solve(p).answers, number=n, repeat=3)
+        ref = median_time(lambda: recipe.analytic(p.given), number=n, repeat=3)
+        rows.append(LeanRow("cam answers only", f"{pid[:6]} {p.recipe}", t, "its analytic twin", ref, "≤ 2 ms",
+                            2e-3, None))
+    path = PROBLEMS / f"{BASE_RADIUS}.toml"
+    if path.exists():
+        p = load_problem(path)
+        t = median_time(lambda: solve(p).checks, number=1, repeat=1 if quick else 3)
+        rows.append(LeanRow("base radius + checks", f"{BASE_RADIUS[:6]} {p.recipe}", t, "—", None, "≤ 50 ms",
+                            50e-3, None))
+    return rows
+
+
+def process_rows(quick: bool) -> list[LeanRow]:
+    """A whole ``geomcon solve`` process against ``python -c pass``."""
+    path = PROBLEMS / f"{WHOLE}.toml"
+    if not path.exists():
+        return []
+    repeat = 3 if quick else 9
+
+    def run(*args: str) -> float:
+        times = []
+        for _ in range(repeat):
+            t0 = time.perf_counter()
+            subprocess.run([sys.executable, *args], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+            times.append(time.perf_counter() - t0)
+        return statistics.median(times)
+
+    base = run("-c", "pass")
+    t = run("-m", "geomcon", "solve", str(path))
+    return [LeanRow("whole process", f"geomcon solve {WHOLE[:6]}", t, "python -c pass", base, "≤ 120 ms", 0.120, None)]
+
+
+def sympy_rows(exact_rows: Sequence[Any] | None) -> list[LeanRow]:
+    """The construction against the same θ-circle design in sympy.geometry (the bench's part (c) rows)."""
+    if not exact_rows:
+        return []
+    out = []
+    by_given: dict[str, dict[str, float]] = {}
+    for r in exact_rows:
+        by_given.setdefault(", ".join(f"{k}={v:g}" for k, v in r.given.items()), {})[r.method] = r.seconds
+    for label, t in by_given.items():
+        if "geomcon" in t and "sympy.geometry" in t:
+            out.append(LeanRow("vs sympy.geometry", f"design by K {label}", t["geomcon"], "sympy.geometry",
+                               t["sympy.geometry"], "≥ 10⁴×", None, None, speedup=1e4))
+    return out
+
+
+def sweep_n_for(rows: Sequence[Any], quantity: str, target: float = SWEEP_TARGET) -> tuple[float, float, float] | None:
+    """The sweep size N at which ``quantity``'s relative error reaches ``target``, that sweep's time (s) and the
+    fitted order p, from part (a)'s sweep rows of one problem: the error is fitted as C/N^p through the two
+    largest N still above rounding (1e-13; p = 2 with one such row), the time scaled linearly in N from the
+    largest N measured. None without a usable row.
+
+    >>> class R:   # a sweep row: n, seconds, values, errors
+    ...     def __init__(self, n, s, e): self.n, self.seconds, self.values, self.errors = n, s, {"psi": 1.0}, {"psi": e}
+    >>> [round(x, 6) for x in sweep_n_for([R(100, 1e-4, 1e-5), R(1000, 1e-3, 1e-7)], "psi")]
+    [10000.0, 0.01, 2.0]
+    >>> [round(x, 6) for x in sweep_n_for([R(100, 1e-4, 1e-5), R(1000, 1e-3, 1e-6)], "psi")]
+    [1000000.0, 1.0, 1.0]
+    """
+    usable = [r for r in rows if r.n and abs(r.values[quantity]) > 0]
+    fit = sorted((r for r in usable if r.errors[quantity] / abs(r.values[quantity]) > 1e-13), key=lambda x: x.n)
+    if not fit:
+        return None
+
+    def rel(r: Any) -> float:
+        return r.errors[quantity] / abs(r.values[quantity])
+
+    last = fit[-1]
+    order = 2.0
+    if len(fit) >= 2 and rel(fit[-2]) > rel(last):
+        order = math.log(rel(fit[-2]) / rel(last)) / math.log(last.n / fit[-2].n)
+    n_star = last.n * (rel(last) / target) ** (1.0 / order)
+    biggest = max(usable, key=lambda x: x.n)
+    return n_star, biggest.seconds * n_star / biggest.n, order
+
+
+def sweep_rows(extremes: Sequence[Any]) -> list[LeanRow]:
+    """The construction against the sweep that reaches the same 1e-9 relative error in ψ or H."""
+    out = []
+    cases = {r.case.label: r.case for r in extremes}
+    for label, case in cases.items():
+        mine = [r for r in extremes if r.case.label == label]
+        built = next(r for r in mine if r.n is None)
+        q = case.quantities[1]
+        found = sweep_n_for([r for r in mine if r.n is not None], q)
+        if found is None:
+            continue
+        n_star, t_star, order = found
+        out.append(LeanRow(f"vs crank sweep ({q}, 1e-9)", label, built.seconds,
+                           f"sweep N ≈ {n_star:.2g} (error ∝ N^-{order:.2g})", t_star,
+                           "≥ 10⁴×", None, None, speedup=1e4,
+                           note="N and time extrapolated" if n_star > max(r.n for r in mine if r.n) else ""))
+    return out
+
+
+def _variants(recipe: str, n: int) -> list[dict[str, float]]:
+    rng = random.Random(2026)
+    if recipe == "crank_rocker.extremes":
+        return [{"AB": rng.uniform(20, 40), "BC": rng.uniform(60, 80), "CD": rng.uniform(60, 80),
+                 "AD": rng.uniform(70, 90)} for _ in range(n)]
+    return [{"K": rng.uniform(1.1, 1.8), "H": rng.uniform(30, 80), "e": rng.uniform(0, 25)} for _ in range(n)]
+
+
+def batch_rows(quick: bool) -> list[LeanRow]:
+    """The batch API's cost per variant, with and without checks, against one solve at a time."""
+    n = 200 if quick else 1000
+    out = []
+    for recipe in ("crank_rocker.extremes", "crank_slider.design_by_K"):
+        rows = _variants(recipe, n)
+        problems = [_problem(recipe, g) for g in rows]
+        single = median_time(lambda: [solve(p).answers for p in problems], number=1, repeat=3) / n
+        for checks in (False, True):
+            t = median_time(lambda: solve_batch(recipe, rows, checks=checks), number=1, repeat=3) / n
+            out.append(LeanRow(f"batch per variant{' + checks' if checks else ''}", f"{n} × {recipe}", t,
+                               "one solve at a time (answers)", single, "reported", None, None))
+    return out
+
+
+def measure_lean(quick: bool, extremes: Sequence[Any], exact_rows: Sequence[Any] | None) -> list[LeanRow]:
+    """Every row of the lean-core table (``extremes`` and ``exact_rows`` are parts (a) and (c) of the run)."""
+    return (linkage_rows(quick) + cam_rows(quick) + process_rows(quick) + sympy_rows(exact_rows)
+            + sweep_rows(extremes) + batch_rows(quick))
+
+
+def _ratio(r: LeanRow) -> str:
+    if r.ratio is None:
+        return "—"
+    return f"{1 / r.ratio:,.3g}× faster" if r.speedup is not None else f"{r.ratio:.3g}×"
+
+
+def lean_table(rows: Sequence[LeanRow]) -> str:
+    """The printed table: what, case, time, reference, ratio, target, met."""
+    body = [(r.what, r.case, fmt_seconds(r.seconds), f"{r.reference} {fmt_seconds(r.ref_seconds) if r.ref_seconds else ''}".strip(),
+             _ratio(r), r.target, ("" if r.target == "reported" else ("met" if r.met else "SHORT"))
+             + (f" ({r.note})" if r.note else "")) for r in rows]
+    met = sum(r.met for r in rows if r.target != "reported")
+    total = sum(1 for r in rows if r.target != "reported")
+    return ("(0) lean core: each target as a ratio to a reference timed in the same run (medians)\n\n"
+            + format_table(("measured", "case", "time", "reference", "ratio", "target", ""), body, "llrlrll")
+            + f"\n\n{met} of {total} targets met on this run.")

@@ -1,0 +1,79 @@
+"""The lean-core table is honest arithmetic: the plain-DAG reference really is the same construction (same
+answers), ratios and verdicts follow from the timings, the sweep's N for 1e-9 follows from its measured order.
+(Correctness only: times are reported, never asserted.)"""
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from geomcon.bench.lean import LeanRow, batch_rows, lean_table, sweep_n_for, sympy_rows
+from geomcon.bench.plain import PLAIN
+from geomcon.problems import problem_from_dict
+from geomcon.solve import solve
+
+
+def _variants(recipe: str, n: int):
+    rng = random.Random(7)
+    for _ in range(n):
+        if recipe == "crank_rocker.extremes":
+            yield {"AB": rng.uniform(15, 40), "BC": rng.uniform(55, 85), "CD": rng.uniform(55, 85),
+                   "AD": rng.uniform(65, 95), "branch": rng.choice(["above", "below"])}
+        else:
+            yield {"K": rng.uniform(1.05, 2.0), "H": rng.uniform(20, 300), "e": rng.uniform(0, 60)}
+
+
+@pytest.mark.parametrize("recipe", sorted(PLAIN))
+def test_the_plain_dag_is_the_same_construction(recipe):
+    checked = 0
+    for given in _variants(recipe, 40):
+        try:
+            sol = solve(problem_from_dict({"recipe": recipe, "given": given}, name="x"))
+            want = sol.answers
+        except ValueError:
+            continue
+        got = PLAIN[recipe](sol.problem.given)
+        assert set(got) == set(want)
+        for k, v in got.items():
+            assert abs(v - want[k]) <= 1e-12 * max(1.0, abs(want[k]), sol.length_scale), (given, k, v, want[k])
+        checked += 1
+    assert checked >= 20
+
+
+def test_ratios_and_verdicts_follow_from_the_times():
+    fast = LeanRow("answers only", "c", 40e-6, "plain DAG", 30e-6, "≤ 50 µs, ≤ 1.5×", 50e-6, 1.5)
+    slow_ratio = LeanRow("answers only", "c", 49e-6, "plain DAG", 30e-6, "≤ 50 µs, ≤ 1.5×", 50e-6, 1.5)
+    slow_time = LeanRow("answers + twin checks", "c", 101e-6, "answers only", 90e-6, "≤ 100 µs", 100e-6, None)
+    sym = LeanRow("vs sympy.geometry", "c", 100e-6, "sympy.geometry", 2.0, "≥ 10⁴×", None, None, speedup=1e4)
+    sym_short = LeanRow("vs sympy.geometry", "c", 100e-6, "sympy.geometry", 0.5, "≥ 10⁴×", None, None, speedup=1e4)
+    assert [r.met for r in (fast, slow_ratio, slow_time, sym, sym_short)] == [True, False, False, True, False]
+    text = lean_table([fast, slow_ratio, sym])
+    assert "2 of 3 targets met" in text and "SHORT" in text and "2e+04× faster" in text
+
+
+class _Sweep:
+    def __init__(self, n, seconds, value, error):
+        self.n, self.seconds, self.values, self.errors = n, seconds, {"H": value}, {"H": error}
+
+
+def test_sweep_n_for_fits_the_order_it_sees():
+    rows = [_Sweep(360, 1e-5, 100.0, 1e-2), _Sweep(3600, 1e-4, 100.0, 1e-4), _Sweep(36000, 1e-3, 100.0, 1e-6)]
+    n, t, order = sweep_n_for(rows, "H")
+    assert order == pytest.approx(2.0) and n == pytest.approx(36000 * 10 ** 0.5) and t == pytest.approx(1e-3 * n / 36000)
+    noisy = rows + [_Sweep(360000, 1e-2, 100.0, 1e-14)]           # at rounding: not used for the fit
+    assert sweep_n_for(noisy, "H")[2] == pytest.approx(2.0)
+    assert sweep_n_for([_Sweep(360, 1e-5, 100.0, 0.0)], "H") is None
+
+
+def test_sympy_rows_pair_the_two_routes():
+    class R:
+        def __init__(self, method, seconds):
+            self.given, self.method, self.seconds = {"K": 1.5, "H": 50, "e": 20}, method, seconds
+    rows = sympy_rows([R("geomcon", 1e-4), R("sympy.geometry", 2.0)])
+    assert len(rows) == 1 and rows[0].met and rows[0].ratio == pytest.approx(5e-5)
+    assert sympy_rows(None) == []
+
+
+def test_batch_rows_report_a_cost_per_variant():
+    rows = batch_rows(quick=True)
+    assert len(rows) == 4 and all(r.seconds > 0 and r.ref_seconds > 0 and r.target == "reported" for r in rows)
