@@ -66,6 +66,35 @@ def _poly345(x):
     return x2 * x * (10.0 - 15.0 * x + 6.0 * x2), 30.0 * x2 * (1.0 - x) ** 2, 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x)
 
 
+# The same formulas for one float, with math instead of numpy (the searches evaluate one angle at a time: a
+# numpy call on one number costs a hundred times the arithmetic). numpy's float64 sin and cos are the C
+# library's, as math's are, and x ** 2 is x·x both ways, so both paths give the same bits.
+def _uniform1(x: float) -> tuple[float, float, float]:
+    return x, 1.0, 0.0
+
+
+def _parabolic1(x: float) -> tuple[float, float, float]:
+    if x < 0.5:
+        return 2.0 * x * x, 4.0 * x, 4.0
+    y = 1.0 - x
+    return 1.0 - 2.0 * y * y, 4.0 * y, -4.0
+
+
+def _cosine1(x: float) -> tuple[float, float, float]:
+    t = math.pi * x
+    return math.sin(t / 2.0) ** 2, math.pi / 2.0 * math.sin(t), math.pi ** 2 / 2.0 * math.cos(t)
+
+
+def _cycloidal1(x: float) -> tuple[float, float, float]:
+    t = 2.0 * math.pi * x
+    return x - math.sin(t) / (2.0 * math.pi), 1.0 - math.cos(t), 2.0 * math.pi * math.sin(t)
+
+
+def _poly345_1(x: float) -> tuple[float, float, float]:
+    x2 = x * x
+    return x2 * x * (10.0 - 15.0 * x + 6.0 * x2), 30.0 * x2 * (1.0 - x) ** 2, 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x)
+
+
 @dataclass(frozen=True)
 class Law:
     """One normalised motion law.
@@ -80,16 +109,19 @@ class Law:
         ``"rigid"``, ``"soft"`` or ``"none"``: the shock at the ends of a rise between dwells.
     fn : callable
         ``fn(x) -> (f, f′, f″)`` on arrays.
+    fn1 : callable
+        The same on one float, returning floats (the scalar path; the same bits as ``fn``).
     """
 
     name: str
     zh: str
     impact: str
     fn: Callable
+    fn1: Callable[[float], tuple[float, float, float]]
 
     def f(self, x: float) -> float:
         """f(x) for one x in [0, 1]."""
-        return float(self.fn(np.asarray(float(x)))[0])
+        return self.fn1(float(x))[0]
 
     def derivatives(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(f, f′, f″) at ``x`` (scalar or array), each as a float array of x's shape."""
@@ -99,11 +131,11 @@ class Law:
 
 
 LAWS: dict[str, Law] = {l.name: l for l in (
-    Law("uniform", "等速运动规律", "rigid", _uniform),
-    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic),
-    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine),
-    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal),
-    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345),
+    Law("uniform", "等速运动规律", "rigid", _uniform, _uniform1),
+    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic, _parabolic1),
+    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine, _cosine1),
+    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal, _cycloidal1),
+    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345, _poly345_1),
 )}
 LAW_NAMES = tuple(LAWS)
 

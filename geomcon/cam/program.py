@@ -26,6 +26,7 @@ Examples
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any, Mapping, Sequence
@@ -43,6 +44,9 @@ MIN_ANGLE = 1e-6
 smaller segment would be lost in (a rise over 1e-12° drew a cam whose stroke rounded away)."""
 MAX_SEGMENTS = 64
 """Most segments a program may have (a textbook program has at most a handful; the rest would be dwells)."""
+
+
+_F64 = np.float64
 
 
 @dataclass(frozen=True)
@@ -118,6 +122,9 @@ class Program:
         """
         conv = math.radians if radians else float
         turn = conv(360.0)
+        if type(delta) is float:                    # one angle: the scalar path, numpy scalars out
+            s, v, a = self._motion1(h, delta, radians)
+            return _F64(s), _F64(v), _F64(a)
         raw = np.asarray(delta, dtype=float)
         if raw.size == 1:
             return tuple(np.full(raw.shape, v) for v in self._motion1(h, float(raw.reshape(-1)[0]), radians))
@@ -161,21 +168,25 @@ class Program:
         d = raw % turn
         if d == 0.0 and raw > 0.0:
             d = turn
-        starts_deg, starts_rad, levels = self._table
-        i = min(max(int(np.searchsorted(starts_rad if radians else starts_deg, d, side="right")) - 1, 0),
-                len(self.segments) - 1)
+        starts_deg, starts_rad, levels = self._scalar_table
+        i = min(max(bisect_right(starts_rad if radians else starts_deg, d) - 1, 0), len(self.segments) - 1)
         seg = self.segments[i]
         if d > conv(self.segments[-1].end):
             last = self.segments[-1]
-            return (float(levels[-1]) + {"rise": 1.0, "return": -1.0}.get(last.kind, 0.0)) * h, 0.0, 0.0
+            return (levels[-1] + {"rise": 1.0, "return": -1.0}.get(last.kind, 0.0)) * h, 0.0, 0.0
         if seg.kind == "dwell":
-            return float(levels[i]) * h, 0.0, 0.0
+            return levels[i] * h, 0.0, 0.0
         x = min(max((d - conv(seg.start)) / conv(seg.angle), 0.0), 1.0)
         if seg.law.name == "parabolic":
             x = max(x, 0.5) if d >= conv(seg.start + seg.angle / 2) else min(x, math.nextafter(0.5, 0.0))
-        f, f1, f2 = (float(np.asarray(v).reshape(-1)[0]) for v in seg.law.fn(np.array([x])))   # as the array path
+        f, f1, f2 = seg.law.fn1(x)                   # the array path's formulas on one float: the same bits
         sign, span = (1.0 if seg.kind == "rise" else -1.0), math.radians(seg.angle)
-        return float(levels[i]) * h + sign * h * f, sign * h * f1 / span, sign * h * f2 / span ** 2
+        return levels[i] * h + sign * h * f, sign * h * f1 / span, sign * h * f2 / span ** 2
+
+    @cached_property
+    def _scalar_table(self) -> tuple[list[float], list[float], list[float]]:
+        """:attr:`_table` as Python lists, for the scalar path."""
+        return tuple(a.tolist() for a in self._table)  # type: ignore[return-value]
 
     def impacts(self, h: float) -> list[Impact]:
         """Every jump of velocity (rigid impact) or acceleration (soft impact) over the turn, including the
