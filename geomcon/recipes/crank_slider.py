@@ -63,26 +63,29 @@ def construct(g: Mapping[str, Any]) -> Construction:
                  caption=(f"F below A with AF = e = {e:g}", f"在 A 下方取 AF = e = {e:g}"))
     gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given",
                 caption=("The slider's guide through F, perpendicular to AF", "过 F 作导路(垂直于 AF)"))
-    if e > 0:
+    drawing = sc.drawing                     # the links, sliders, marks and dimensions only a drawing needs
+    if e > 0 and drawing:
         # dimension on the left of F→A, away from the crank and the slider
         sc.add("dim_e", marks.dimension, F, A, "e", e, 0.25 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
                caption=("Dimension the offset e", "标注偏距 e"))
     B1, C1, B2, C2 = add_collinear_extremes(sc, A, gl, AB, BC, ToRightOf(A), line_circle, ("the guide", "导路"))
-    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
+    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1) if drawing else ():
         style = "link" if i == 1 else "link-alt"
         how = ("folded", "重叠") if i == 1 else ("extended", "拉直")
         add_bar(sc, f"AB{i}", A, B, (f"Draw the {how[0]} position AB{i}C{i}", f"画出{how[1]}共线位置 AB{i}C{i}"), style=style)
         add_bar(sc, f"B{i}C{i}", B, C, style=style)
         sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
-    sc.add("guide_mark", guide_between, C1, C2, gl, 0.2 * (BC + AB) / 2, role=Role.ANNOTATION, style="guide")
-    sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
+    if drawing:
+        sc.add("guide_mark", guide_between, C1, C2, gl, 0.2 * (BC + AB) / 2, role=Role.ANNOTATION, style="guide")
+        sc.add("AC2", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
                caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
     th = add_theta_and_K(sc, A, C1, C2)
     add_pressure_angles(sc, A, B1, C1, gl, AB, BC, math.fsum((BC, -AB, -e)))
-    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
-    sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
-           caption=("Dimension the stroke H", "标注行程 H"))
+    if drawing:
+        add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
+        sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
+               caption=("Dimension the stroke H", "标注行程 H"))
     names = [q.name for q in ANSWERS]
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "B1", "C1", "B2", "C2")})
 
@@ -109,16 +112,20 @@ def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC, ga
     cancellation: αmax is measured from it (:func:`pressure_from_gap`). Adds ``alpha_max``, ``gamma_min``,
     ``gamma_min_fast``, ``gamma_min_slow`` and the αmax angle mark; returns ``gamma_min``.
     """
+    drawing = sc.drawing
     nA = sc.add("nA", perpendicular, gl, A, caption=("Perpendicular to the guide through A", "过 A 作导路的垂线"))
     pos = {}
     for i, (sign, en, zh) in ((3, (1.0, "away from the guide", "远离导路")), (4, (-1.0, "towards the guide", "指向导路"))):
+        if i == 3 and not drawing:           # C3 is drawn; αmax is measured from the gap
+            continue
         B = sc.add(f"B{i}", along_line, nA, AB, sign, style="point", label=f"B{i}",
                    caption=(f"Crank perpendicular to the guide, {en}: B{i}", f"曲柄垂直于导路且{zh}:B{i}"))
         kB = sc.add(f"kB{i}", circle, B, BC, caption=(f"Circle about B{i} with radius BC", f"以 B{i} 为圆心、BC 为半径作圆"))
         C = sc.add(f"C{i}", line_circle, gl, kB, branch=ToRightOf(B), style="point", label=f"C{i}",
                    caption=(f"It meets the guide at C{i}", f"交导路于 C{i}"))
-        add_bar(sc, f"AB{i}", A, B, style="ghost", role=Role.CONSTRUCTION)
-        add_bar(sc, f"B{i}C{i}", B, C, style="ghost", role=Role.CONSTRUCTION)
+        if drawing:
+            add_bar(sc, f"AB{i}", A, B, style="ghost", role=Role.CONSTRUCTION)
+            add_bar(sc, f"B{i}C{i}", B, C, style="ghost", role=Role.CONSTRUCTION)
         pos[i] = (B, C)
     a3 = sc.add("alpha_3", pressure_from_gap, BC, gap, role=Role.MEASUREMENT, unit="deg",
                 caption=("Pressure angle at C3 (largest of the cycle): cos α = √(g(2BC − g))/BC, B3 short of "
@@ -134,7 +141,8 @@ def add_pressure_angles(sc: Scene, A: Ref, B1: Ref, C1: Ref, gl: Ref, AB, BC, ga
     slow = sc.add("alpha_slow", largest, a1, a4, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add("gamma_min_slow", complement_deg, slow, role=Role.MEASUREMENT, unit="deg",
            caption=("Slow stroke: γmin = 90° − max(α at C1, α at C4)", "慢行程最小传动角 = 90° − max(α1, α4)"))
-    sc.add("mark_alpha", guide_angle_mark, *reversed(pos[3]), gl, "αmax", a3, role=Role.ANNOTATION, style="angle")
+    if drawing:
+        sc.add("mark_alpha", guide_angle_mark, *reversed(pos[3]), gl, "αmax", a3, role=Role.ANNOTATION, style="angle")
     return Ref("gamma_min")
 
 

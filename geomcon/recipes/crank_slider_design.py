@@ -160,8 +160,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
         n1 = sc.add("n1", perpendicular, gl, C1, caption=("Perpendicular to the guide at C1", "过 C1 作导路的垂线"))
         Q = sc.add("Q", line_circle, n1, kT, branch=OtherThan(C1), style="point", label="Q",
                    caption=("It meets the θ-circle again at Q", "交 θ 圆于 Q"))
-        sc.add("arc_ok", admissible_arc, kT, Q, C1, C2, g.get("gamma_allow"), role=Role.ANNOTATION,
-               style="admissible", caption=(_arc_caption(g.get("gamma_allow"))))
+        if sc.drawing:
+            sc.add("arc_ok", admissible_arc, kT, Q, C1, C2, g.get("gamma_allow"), role=Role.ANNOTATION,
+                   style="admissible", caption=(_arc_caption(g.get("gamma_allow"))))
         A = _closing_step(sc, which, g[which], C1, C2, gl, kT, th)
     finish_from_A(sc, A, C1, C2, gl, th, H)
     names = {q.name: q.name for q in ANSWERS}
@@ -172,8 +173,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
 def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: float) -> None:
     """Everything after A is placed: AB and BC by the textbook's arcs, e, the designed linkage in both
     extreme positions, its pressure angles, the θ mark and the stroke's dimension."""
-    sc.add("AC1", segment, A, C1, style="construction", caption=("Join AC1", "连接 AC1"))
-    sc.add("AC2s", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
+    drawing = sc.drawing                     # the joins, links, sliders and marks only a drawing needs
+    if drawing:
+        sc.add("AC1", segment, A, C1, style="construction", caption=("Join AC1", "连接 AC1"))
+        sc.add("AC2s", segment, A, C2, style="construction", caption=("Join AC2", "连接 AC2"))
     u = sc.add("AC1_len", length, A, C1, visible=False, unit="mm")
     E = sc.add("Ea", point_along, A, C2, u, style="point", label="E",
                caption=("Arc about A through C1 meets AC2 at E: EC2 = 2·AB", "以 A 为圆心、AC1 为半径画弧交 AC2 于 E,EC2 = 2AB"))
@@ -188,7 +191,7 @@ def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: floa
                 caption=("B1 on C1A extended, AB1 = AB", "在 C1A 延长线上取 AB1 = AB"))
     B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",
                 caption=("B2 on AC2, AB2 = AB", "在 AC2 上取 AB2 = AB"))
-    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
+    for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1) if drawing else ():
         style = "link" if i == 1 else "link-alt"
         how = ("folded", "重叠") if i == 1 else ("extended", "拉直")
         add_bar(sc, f"AB{i}", A, B, (f"Draw the designed linkage, {how[0]}: AB{i}C{i}", f"画出所设计机构的{how[1]}共线位置 AB{i}C{i}"), style=style)
@@ -197,11 +200,13 @@ def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: floa
     FC1 = sc.add("FC1", length, Fa, C1, visible=False, unit="mm")
     gap = sc.add("gap", slack, FC1, u, Ref("e"), visible=False, unit="mm")
     add_pressure_angles(sc, A, B1, C1, gl, AB, BC, gap)
-    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
+    if drawing:
+        sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     sc.add("theta_at_A", angle_deg, A, C1, C2, visible=False, unit="deg")
-    add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
-    sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.15 * H, role=Role.ANNOTATION, style="dim",
-           caption=("Dimension the stroke H", "标注行程 H"))
+    if drawing:
+        add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
+        sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.15 * H, role=Role.ANNOTATION, style="dim",
+               caption=("Dimension the stroke H", "标注行程 H"))
 
 
 def slack(fc1: float, ac1: float, e: float) -> float:

@@ -41,7 +41,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc = Scene("Oscillating guide-bar: extreme positions")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Crank pivot A at the origin", "取曲柄转动中心 A 为原点"))
     C = add_pivot(sc, "C", Point(0.0, -AC), (f"Guide-bar pivot C below A, AC = {AC:g}", f"在 A 下方取 C,使 AC = {AC:g}"))
-    sc.add("AC", segment, A, C, role=Role.GIVEN, style="frame", caption=("Draw the frame AC", "作机架 AC"))
+    drawing = sc.drawing                     # the links, blocks, marks only a drawing needs
+    if drawing:
+        sc.add("AC", segment, A, C, role=Role.GIVEN, style="frame", caption=("Draw the frame AC", "作机架 AC"))
     kB = sc.add("kB", circle, A, AB, style="path", caption=(f"The path of B: circle about A with radius AB = {AB:g}",
                                                             f"以 A 为圆心、AB = {AB:g} 为半径作 B 点轨迹圆"))
     kT = sc.add("kT", thales_circle, A, C, caption=("Circle on AC as diameter (it sees AC at 90°)",
@@ -51,7 +53,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     B2 = sc.add("B2", circle_circle, kB, kT, branch=ToRightOf(A), role=Role.RESULT, style="joint", label="B2",
                 caption=("and at B2", "及 B2"))
     L = AC + AB
-    for i, B in enumerate((B1, B2), 1):
+    for i, B in enumerate((B1, B2), 1) if drawing else ():
         style = "link" if i == 1 else "link-alt"
         E = sc.add(f"E{i}", point_along, C, B, L, visible=False)
         add_bar(sc, f"AB{i}", A, B, (f"Extreme position {i}: crank AB{i}, guide bar CB{i}", f"极限位置 {i}:曲柄 AB{i}、导杆 CB{i}"), style=style)
@@ -59,14 +61,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add(f"slider{i}", _block_along, B, C, role=Role.ANNOTATION, style="slider")
         sc.add(f"right{i}", marks.right_angle, B, A, C, role=Role.ANNOTATION, style="right-angle")
     B1x = sc.add("B1x", point_along, A, B1, -AB, visible=False)
-    sc.add("ext1", segment, A, B1x, style="construction", caption=("Extend B1A beyond A", "延长 B1A"))
+    if drawing:
+        sc.add("ext1", segment, A, B1x, style="construction", caption=("Extend B1A beyond A", "延长 B1A"))
     ps = sc.add("psi", angle_deg, C, B1, B2, role=Role.MEASUREMENT, unit="deg",
                 caption=("Measure the swing ψ = ∠B1CB2", "量得导杆摆角 ψ = ∠B1CB2"))
     th = sc.add("theta", angle_deg, A, B1x, B2, role=Role.MEASUREMENT, unit="deg",
                 caption=("Measure θ between AB2 and B1A extended", "量得极位夹角 θ(AB2 与 B1A 延长线的夹角)"))
     sc.add("K", k_ratio, th, role=Role.MEASUREMENT, caption=("K = (180° + θ)/(180° − θ)", "K = (180° + θ)/(180° − θ)"))
-    add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
-    add_angle_mark(sc, "mark_theta", A, B1x, B2, "θ", th)
+    if drawing:
+        add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
+        add_angle_mark(sc, "mark_theta", A, B1x, B2, "θ", th)
     return Construction(sc, {q.name: q.name for q in ANSWERS}, {n: n for n in ("A", "C", "B1", "B2")})
 
 
