@@ -276,17 +276,47 @@ def best_of(cands: Sequence[Extremum]) -> Extremum:
 
 
 def _bisect_all(slope: Callable[[np.ndarray], np.ndarray], lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """For every bracket [lo, hi] with slope(lo) > 0 ≥ slope(hi): the place where the slope's sign changes,
-    by bisection to the last bit, all brackets at once (one call of ``slope`` per step)."""
+    """For every bracket [lo, hi] with slope(lo) > 0 ≥ slope(hi): the place where the slope's sign changes, to
+    the last bit (lo and hi adjacent floats; the answer is hi), all brackets at once (one call of ``slope`` per
+    step).
+
+    The steps are the Illinois variant of regula falsi on the slope's values (superlinear: about ten calls
+    instead of bisection's fifty-odd), with a plain halving every third step and wherever the secant leaves
+    the bracket, so that each bracket still at least halves every three steps and ends between adjacent
+    floats, where bisection would have ended.
+
+    >>> x = _bisect_all(lambda d: np.cos(d), np.array([1.0]), np.array([2.0]))[0].item()
+    >>> x, bool(math.cos(x) <= 0.0 < math.cos(math.nextafter(x, 0.0)))     # the sign changes just below x
+    (1.5707963267948968, True)
+    """
     lo, hi = lo.astype(float), hi.astype(float)
-    while lo.size:
-        m = 0.5 * (lo + hi)
+    if not lo.size:
+        return hi
+    flo = np.asarray(slope(lo), dtype=float)
+    fhi = np.asarray(slope(hi), dtype=float)
+    kept = np.zeros(lo.shape)                 # +1: lo moved last time, −1: hi moved (Illinois halves the other)
+    step = 0
+    while True:
+        half = 0.5 * (lo + hi)
+        with np.errstate(all="ignore"):
+            secant = hi - fhi * (hi - lo) / (fhi - flo)
+        use = (step % 3 != 2) & np.isfinite(secant) & (lo < secant) & (secant < hi)
+        m = np.where(use, secant, half)
         live = (lo < m) & (m < hi)
         if not live.any():
-            break
-        up = np.asarray(slope(m), dtype=float) > 0.0
-        lo = np.where(live & up, m, lo)
-        hi = np.where(live & ~up, m, hi)
+            m = half                           # the secant sits on an end: halve, or stop when adjacent
+            live = (lo < m) & (m < hi)
+            if not live.any():
+                break
+        fm = np.asarray(slope(m), dtype=float)
+        up = live & (fm > 0.0)
+        down = live & ~(fm > 0.0)
+        lo, flo = np.where(up, m, lo), np.where(up, fm, flo)
+        hi, fhi = np.where(down, m, hi), np.where(down, fm, fhi)
+        fhi = np.where(up & (kept > 0), 0.5 * fhi, fhi)
+        flo = np.where(down & (kept < 0), 0.5 * flo, flo)
+        kept = np.where(up, 1.0, np.where(down, -1.0, kept))
+        step += 1
     return hi
 
 
