@@ -253,14 +253,16 @@ def excess_by_foot(V: Point, P: Point, Q: Point) -> float:
     >>> round(excess_by_foot(Point(1, 1e-9), Point(0, 0), Point(2, 0)), 30)
     1e-18
     """
-    x, y, pq = abs(P - V), abs(Q - V), Q - P
-    z = abs(pq)
+    x, y = math.hypot(P.x - V.x, P.y - V.y), math.hypot(Q.x - V.x, Q.y - V.y)
+    pqx, pqy = Q.x - P.x, Q.y - P.y
+    z = math.hypot(pqx, pqy)
     if z == 0.0:
         return x + y
-    s = (V - P).dot(pq) / z
+    wx, wy = V.x - P.x, V.y - P.y                       # (V − P)·PQ and PQ × (V − P), as floats
+    s = (wx * pqx + wy * pqy) / z
     if not 0.0 < s < z:
         return x + y - z
-    h = abs(pq.cross(V - P)) / z
+    h = abs(pqx * wy - pqy * wx) / z
     return h * h / (x + s) + h * h / (y + (z - s))
 
 
