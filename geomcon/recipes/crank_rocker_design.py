@@ -395,28 +395,32 @@ def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
 
     Cf = sc.add("Cf", nearer, A, P1, P2, visible=False, optional=True)
     Ce = sc.add("Ce", farther, A, P1, P2, visible=False, optional=True)
-    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
-    sc.add("ACf", segment, A, Cf, style="construction", optional=True, caption=("Join A to both extreme positions", "连接 A 与两极限位置"))
-    sc.add("ACe", segment, A, Ce, style="construction", optional=True, caption=("", ""), visible=False)
+    drawing = sc.drawing                     # the joins, links, ground symbol and θ mark only a drawing needs
+    if drawing:
+        sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
+        sc.add("ACf", segment, A, Cf, style="construction", optional=True, caption=("Join A to both extreme positions", "连接 A 与两极限位置"))
+        sc.add("ACe", segment, A, Ce, style="construction", optional=True, caption=("", ""), visible=False)
     u = sc.add("u_len", length, A, Cf, visible=False, optional=True)
     E = sc.add("Echoice", point_along, A, Ce, u, style="point", label="N", optional=True,
                caption=("The arc about A through the folded position meets the other line at N", "以 A 为圆心、AC(折叠)为半径画弧交另一连线于 N"))
     M = sc.add("Mchoice", midpoint, E, Ce, style="point", label="M", optional=True,
                caption=("Bisect N and the extended position at M: AB = NM, BC = AM", "平分得 M:AB = NM,BC = AM"))
     AB = sc.add("AB_draw", length, E, M, visible=False, optional=True)
-    sc.add("AD_link", segment, A, Ref("D"), style="frame", optional=True, caption=("The frame AD", "机架 AD"))
+    if drawing:
+        sc.add("AD_link", segment, A, Ref("D"), style="frame", optional=True, caption=("The frame AD", "机架 AD"))
     mAB = sc.add("mAB", _times, AB, -1.0, visible=False, optional=True)
     B1 = sc.add("B1", point_along, A, Cf, mAB, role=Role.RESULT, style="joint", label="B1", optional=True,
                 caption=("B1 beyond A on the folded line, AB1 = AB", "在折叠共线位置上取 AB1 = AB"))
     B2 = sc.add("B2", point_along, A, Ce, AB, role=Role.RESULT, style="joint", label="B2", optional=True,
                 caption=("B2 on the extended line, AB2 = AB", "在拉直共线位置上取 AB2 = AB"))
-    for i, (B, C) in enumerate(((B1, Cf), (B2, Ce)), 1):
+    for i, (B, C) in enumerate(((B1, Cf), (B2, Ce)), 1) if drawing else ():
         style = "link" if i == 1 else "link-alt"
         sc.add(f"AB{i}", segment, A, B, role=Role.RESULT, style=style, optional=True,
                caption=(f"Draw the designed linkage in extreme position {i}", f"画出所设计机构的极限位置 {i}"))
         sc.add(f"B{i}C{i}", segment, B, C, role=Role.RESULT, style=style, optional=True)
         sc.add(f"C{i}D_design", segment, C, Ref("D"), role=Role.RESULT, style=style, optional=True)
-    sc.add("mark_theta", theta_mark, A, Cf, Ce, th, role=Role.ANNOTATION, style="angle", optional=True)
+    if drawing:
+        sc.add("mark_theta", theta_mark, A, Cf, Ce, th, role=Role.ANNOTATION, style="angle", optional=True)
 
 
 def theta_mark(A: Point, C1: Point, C2: Point, theta: float) -> marks.AngleMark | None:
