@@ -222,10 +222,15 @@ class Solution:
 
         def cost(b: dict, e: dict) -> float:
             worst = 0.0
-            for k in b.keys() & e.keys():
-                for _, x, y in _pairs(k, b[k], e[k]):
-                    worst = max(worst, abs(float(x) - float(y)) / max(abs(float(x)), abs(float(y)),
-                                                                       self.unit_scale(units.get(k, ""))))
+            for k, x in b.items():
+                y = e.get(k)
+                if y is None:
+                    continue
+                pairs = ((x, y),) if type(x) is float and type(y) is float else [(p, q) for _, p, q in _pairs(k, x, y)]
+                scale = self.unit_scale(units.get(k, ""))
+                for p, q in pairs:
+                    p, q = float(p), float(q)
+                    worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
             return worst
 
         ranked = sorted((cost(b, e), i, j) for i, b in enumerate(built) for j, e in enumerate(exact))
