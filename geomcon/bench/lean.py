@@ -195,32 +195,49 @@ def sympy_rows(exact_rows: Sequence[Any] | None) -> list[LeanRow]:
 
 def sweep_n_for(rows: Sequence[Any], quantity: str, target: float = SWEEP_TARGET) -> tuple[float, float, float] | None:
     """The sweep size N at which ``quantity``'s relative error reaches ``target``, that sweep's time (s) and the
-    fitted order p, from part (a)'s sweep rows of one problem: the error is fitted as C/N^p through the two
-    largest N still above rounding (1e-13; p = 2 with one such row), the time scaled linearly in N from the
-    largest N measured. None without a usable row.
+    order p of convergence used, from part (a)'s sweep rows of one problem. When a measured N reaches the target,
+    N is interpolated between it and the size before with the error fitted as C/N^p through both; otherwise the
+    fit goes through the two largest sizes and N is extrapolated (p = 2 when the fit is not a convergence: one
+    size, or errors at the sweep's rounding floor). The time is scaled linearly in N from the nearest measured
+    size. None without a usable row.
 
     >>> class R:   # a sweep row: n, seconds, values, errors
     ...     def __init__(self, n, s, e): self.n, self.seconds, self.values, self.errors = n, s, {"psi": 1.0}, {"psi": e}
-    >>> [round(x, 6) for x in sweep_n_for([R(100, 1e-4, 1e-5), R(1000, 1e-3, 1e-7)], "psi")]
+    >>> [round(x, 6) for x in sweep_n_for([R(100, 1e-4, 1e-5), R(1000, 1e-3, 1e-7)], "psi")]   # extrapolated
     [10000.0, 0.01, 2.0]
-    >>> [round(x, 6) for x in sweep_n_for([R(100, 1e-4, 1e-5), R(1000, 1e-3, 1e-6)], "psi")]
-    [1000000.0, 1.0, 1.0]
+    >>> [round(x, 6) for x in sweep_n_for([R(100, 1e-4, 1e-6), R(1000, 1e-3, 1e-10)], "psi")]  # interpolated
+    [562.341325, 0.000562, 4.0]
     """
-    usable = [r for r in rows if r.n and abs(r.values[quantity]) > 0]
-    fit = sorted((r for r in usable if r.errors[quantity] / abs(r.values[quantity]) > 1e-13), key=lambda x: x.n)
-    if not fit:
+    usable = sorted((r for r in rows if r.n and abs(r.values[quantity]) > 0), key=lambda x: x.n)
+    if not usable:
         return None
 
     def rel(r: Any) -> float:
         return r.errors[quantity] / abs(r.values[quantity])
 
+    def order(a: Any, b: Any) -> float:
+        if rel(b) > 0 and rel(a) > rel(b):
+            p = math.log(rel(a) / rel(b)) / math.log(b.n / a.n)
+            if p >= 0.5:
+                return p
+        return 2.0
+
+    reached = [i for i, r in enumerate(usable) if rel(r) <= target]
+    if reached:
+        i = reached[0]
+        if i == 0:
+            return float(usable[0].n), usable[0].seconds, 2.0
+        a, b = usable[i - 1], usable[i]
+        p = order(a, b)
+        n_star = a.n * (rel(a) / target) ** (1.0 / p)
+        return n_star, b.seconds * n_star / b.n, p
+    fit = [r for r in usable if rel(r) > 1e-13]
+    if not fit:
+        return None
     last = fit[-1]
-    order = 2.0
-    if len(fit) >= 2 and rel(fit[-2]) > rel(last):
-        order = math.log(rel(fit[-2]) / rel(last)) / math.log(last.n / fit[-2].n)
-    n_star = last.n * (rel(last) / target) ** (1.0 / order)
-    biggest = max(usable, key=lambda x: x.n)
-    return n_star, biggest.seconds * n_star / biggest.n, order
+    p = order(fit[-2], last) if len(fit) >= 2 else 2.0
+    n_star = last.n * (rel(last) / target) ** (1.0 / p)
+    return n_star, usable[-1].seconds * n_star / usable[-1].n, p
 
 
 def sweep_rows(extremes: Sequence[Any]) -> list[LeanRow]:
@@ -238,7 +255,8 @@ def sweep_rows(extremes: Sequence[Any]) -> list[LeanRow]:
         out.append(LeanRow(f"vs crank sweep ({q}, 1e-9)", label, built.seconds,
                            f"sweep N ≈ {n_star:.2g} (error ∝ N^-{order:.2g})", t_star,
                            "≥ 10⁴×", None, None, speedup=1e4,
-                           note="N and time extrapolated" if n_star > max(r.n for r in mine if r.n) else ""))
+                           note="N and time extrapolated" if n_star > max(r.n for r in mine if r.n) else
+                           "N interpolated between measured sizes"))
     return out
 
 
@@ -255,8 +273,10 @@ def batch_rows(quick: bool) -> list[LeanRow]:
     n = 200 if quick else 1000
     out = []
     for recipe in ("crank_rocker.extremes", "crank_slider.design_by_K"):
-        rows = _variants(recipe, n)
+        drawn = _variants(recipe, n)
+        rows = [g for g, err in zip(drawn, solve_batch(recipe, drawn, checks=False).errors) if err is None]
         problems = [_problem(recipe, g) for g in rows]
+        n = len(rows)                         # the valid variants (a random draw may fail Grashof)
         single = median_time(lambda: [solve(p).answers for p in problems], number=1, repeat=3) / n
         for checks in (False, True):
             t = median_time(lambda: solve_batch(recipe, rows, checks=checks), number=1, repeat=3) / n
