@@ -27,7 +27,9 @@ def _loaded(problem: str, *flags: str) -> tuple[int, set[str]]:
 
 
 @pytest.mark.parametrize("problem", ["001-08_crank_rocker.toml", "001-18_crank_slider_design_by_K.toml",
-                                     "001-10_crank_rocker_design_coupler.toml", "001-05_guide_bar.toml"])
+                                     "001-10_crank_rocker_design_coupler.toml", "001-05_guide_bar.toml",
+                                     "004-02_best_by_K_1_5.toml", "100-03_four_bar_fixed_pivots_coupler_point.toml",
+                                     "100-05_four_bar_function_generation.toml", "100-08_rocker_slider_inclined_guide.toml"])
 def test_a_linkage_solve_loads_no_numpy_shapely_svgwrite_or_cams(problem):
     for flags in ((), ("--json",)):
         rc, heavy = _loaded(problem, *flags)

@@ -29,7 +29,6 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Sequence
 
-import numpy as np
 
 from .fourbar_drive import (angle_of, arc_through, bd_extremes, branch_of, dead_point_free, turns_fully)
 from .linkages import _tri_angle
@@ -93,8 +92,20 @@ def worst_shift(f: Callable[[list], Sequence], points: Sequence[XY], which: Sequ
             moved[k][axis] += 1j * h
             out = f(moved)
             cols.append([out[0].imag / h, out[1].imag / h])
-        worst = max(worst, float(np.linalg.norm(np.array(cols).T, 2)))
+        worst = max(worst, _spectral_norm_2x2(cols[0][0], cols[1][0], cols[0][1], cols[1][1]))
     return DRAFT * worst
+
+
+def _spectral_norm_2x2(a: float, b: float, c: float, d: float) -> float:
+    """‖[[a, b], [c, d]]‖₂, the largest singular value, in closed form: σ² = (S + √((a² + b² − c² − d²)² +
+    4(ac + bd)²))/2 with S the sum of squares (no numpy: a linkage problem never loads it).
+
+    >>> _spectral_norm_2x2(3.0, 0.0, 0.0, -4.0), round(_spectral_norm_2x2(1.0, 1.0, 0.0, 1.0), 15)
+    (4.0, 1.618033988749895)
+    """
+    s = a * a + b * b + c * c + d * d
+    root = math.hypot(a * a + b * b - c * c - d * d, 2.0 * (a * c + b * d))
+    return math.sqrt((s + root) / 2.0)
 
 
 # ------------------------------------------------------------------------------------------ the designed linkage
