@@ -122,7 +122,8 @@ class Solution:
         self.recipe = recipe
         self.construction = construction
         self.scene = construction.scene
-        self._warnings = list(warnings) + list(construction.warnings)
+        self._validation = list(warnings)
+        self._built = list(construction.warnings)
 
         given = problem.given
         self.scene.rebuild_with(lambda: recipe.construct(given).scene)   # a skipped step completes the scene
@@ -355,13 +356,22 @@ class Solution:
 
     @property
     def construction_warnings(self) -> list[str]:
-        """The warnings of validation and construction alone (borderline geometry), without the checks."""
-        return list(self._warnings)
+        """The warnings of validation and construction alone (borderline geometry), without the checks and
+        without the recipe's costly advice (:attr:`advice`)."""
+        return self._validation + self._built
+
+    @cached_property
+    def advice(self) -> list[str]:
+        """The recipe's warnings that cost a computation (:attr:`~geomcon.recipes.Recipe.advise`): made when
+        the warnings are asked for, never for answers alone."""
+        if self.recipe.advise is None:
+            return []
+        return planned(self.recipe.name, self.recipe.advise, self.problem.given)
 
     @property
     def warnings(self) -> list[str]:
         """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
-        out = list(self._warnings)
+        out = self._validation + self.advice + self._built
         allow = self.problem.given.get("gamma_allow")
         for i, sol in enumerate(self.solution_values):
             if allow is not None and "gamma_min" in sol and sol["gamma_min"] < allow:

@@ -101,6 +101,10 @@ class Recipe:
     order : callable or None
         Sort key of a solution's answers: the textbook's order of preference among several solutions (the
         construction's valid candidates are sorted by it; the twin returns its solutions in that order).
+    advise : callable or None
+        ``advise(given) -> [str, ...]``: the warnings that cost a computation of their own (a cam's ρmin and
+        largest pressure angle against the allowance), made only when the warnings are asked for, never for
+        answers alone; they are listed right after ``validate``'s.
     """
 
     name: str
@@ -113,6 +117,7 @@ class Recipe:
     validate: Callable[[Mapping[str, Any]], list[str]] | None = None
     back_check: Callable[[Mapping[str, Any], Mapping[str, float]], list[tuple[str, float, float, str]]] | None = None
     order: Callable[[Mapping[str, float]], Any] | None = None
+    advise: Callable[[Mapping[str, Any]], list[str]] | None = None
 
     def given_names(self) -> tuple[str, ...]:
         """Names of all givens, required first."""

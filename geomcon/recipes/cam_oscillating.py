@@ -91,7 +91,8 @@ def cam_of(g: Mapping[str, Any]) -> OscillatingCam:
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
-    """Refuse cams that cannot be assembled; warn about pressure angles beyond the allowance and undercut."""
+    """Refuse cams that cannot be assembled (the warnings, which cost searches, are :func:`_advise`'s; a
+    flat-faced arm's validation makes both)."""
     if g["follower"] == "flat":
         return validate_flat(g)
     if g.get("L") is None:
@@ -121,6 +122,19 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     rr = rr or 0.0
     if rr >= r0:
         raise NotAMechanism(f"rr = {rr:g} ≥ r0 = {r0:g}: the actual profile's base circle r0 − rr would vanish")
+    return []
+
+
+def _advise(g: Mapping[str, Any]) -> list[str]:
+    """The warnings that cost a search (the arm hitting its pivot, α_max against the allowance, undercut): made
+    only when the warnings are asked for (the flat-faced arm's are made by its validation)."""
+    if g["follower"] == "flat":
+        return []
+    a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
+    cam = cam_of(g)
+    psi0 = math.degrees(psi0_rad(a, L, r0))
+    roller = g["follower"] == "roller"
+    rr = g.get("rr") or 0.0
     out = []
     r_top = math.sqrt(a * a + L * L - 2.0 * a * L * math.cos(math.radians(psi0 + h)))
     if r_top - rr >= a:
@@ -329,4 +343,5 @@ RECIPE = Recipe(
     construct=construct,
     analytic=analytic,
     validate=_validate,
+    advise=_advise,
 )

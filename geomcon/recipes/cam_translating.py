@@ -84,6 +84,13 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
         raise NotAMechanism(f"offset |e| = {abs(e):g} ≥ r0 = {r0:g}: the follower's axis misses the base circle")
     if rr >= r0:
         raise NotAMechanism(f"rr = {rr:g} ≥ r0 = {r0:g}: the actual profile's base circle r0 − rr would vanish")
+    return []
+
+
+def _advise(g: Mapping[str, Any]) -> list[str]:
+    """The warnings that cost a search (ρmin, convex corners, α_max against the allowance): made only when the
+    warnings are asked for."""
+    prog, h, r0, e, rr, rot, follower = _givens(g)
     out = []
     flat = follower == "flat"
     cam = TranslatingCam(prog, h, r0, 0.0 if flat else e, rot)        # only what the warnings need
@@ -435,4 +442,5 @@ RECIPE = Recipe(
     construct=construct,
     analytic=analytic,
     validate=_validate,
+    advise=_advise,
 )
