@@ -121,3 +121,21 @@ def test_planned_solves_equal_full_solves_bit_for_bit(name):
         assert got == want
         solved += not isinstance(want, str)
     assert solved >= 10
+
+
+def test_the_order_plans_are_learned_in_changes_no_byte_of_the_json():
+    """Solved after each other in any order (each following plans the others taught), the bundled problems
+    give their gallery JSON byte for byte."""
+    from pathlib import Path
+
+    from geomcon.gallery import problem_files, to_json_text
+    from geomcon.problems import load_problem
+
+    root = Path(__file__).resolve().parents[1]
+    files = [f for f in problem_files(root / "problems") if f.name[:3] in ("001", "004", "100")]
+    rng = random.Random(3)
+    for order in (files[::-1], rng.sample(files, len(files))):
+        scene_module._KEEP.clear()
+        for f in order:
+            sol = solve(load_problem(f))
+            assert to_json_text(sol) == (root / "gallery" / f"{sol.problem.id}.json").read_text(), f.name
