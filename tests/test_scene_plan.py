@@ -77,6 +77,16 @@ def test_a_scene_that_can_rebuild_completes_itself_and_keeps_its_values():
     assert sc.drawing and "mark" in [s.key for s in sc.steps] and sc.is_evaluated("C") and sc.value("C") is c
 
 
+def test_a_scene_that_completes_itself_while_culling_leaves_no_plan_for_lean_scenes_of_its_old_shape():
+    g = {"AD": 8.0, "r": 5.0, "small": True}
+    planned("toy", _toy, g).value("C")
+    first, second = planned("toy", _toy, g), planned("toy", _toy, g)     # the same lean shape
+    first.rebuild_with(lambda: _toy(g))
+    assert first.evaluate(["C", "unused"])["unused"].r == 1.0             # completes itself while culling
+    second.rebuild_with(lambda: _toy(g))
+    assert second.evaluate(["C", "unused"])["C"] == first.value("C")       # its own plan, not the full scene's
+
+
 def test_a_lean_scene_without_rebuild_refuses_skipped_annotations():
     with LeanScenes():
         sc = _toy({"AD": 8.0, "r": 5.0, "small": True})

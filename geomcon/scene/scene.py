@@ -368,13 +368,12 @@ class Scene:
         """
         keys = tuple(keys)
         memo = self._memo
-        plan_key = (self._sig, keys)
-        plan = _PLANS.get(plan_key)
+        plan = _PLANS.get((self._sig, keys))
         if plan is None:
-            plan = self.closure(keys)
+            plan = self.closure(keys)         # may complete the scene: cache under the signature it has now
             if len(_PLANS) >= _CACHE_MAX:
                 _PLANS.clear()
-            _PLANS[plan_key] = plan
+            _PLANS[(self._sig, keys)] = plan
         if self._learn is not None:
             self._learn.update(plan)
         rec = self._rec
