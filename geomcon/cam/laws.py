@@ -67,8 +67,9 @@ def _poly345(x):
 
 
 # The same formulas for one float, with math instead of numpy (the searches evaluate one angle at a time: a
-# numpy call on one number costs a hundred times the arithmetic). numpy's float64 sin and cos are the C
-# library's, as math's are, and x ** 2 is x·x both ways, so both paths give the same bits.
+# numpy call on one number costs a hundred times the arithmetic). numpy's float64 sin and cos give math's bits,
+# but a float's ** 2 is the C library's pow in Python and x·x in numpy (they differ in the last bit for about
+# one argument in a thousand), so squares are written as products: both paths give the same bits.
 def _uniform1(x: float) -> tuple[float, float, float]:
     return x, 1.0, 0.0
 
@@ -82,7 +83,8 @@ def _parabolic1(x: float) -> tuple[float, float, float]:
 
 def _cosine1(x: float) -> tuple[float, float, float]:
     t = math.pi * x
-    return math.sin(t / 2.0) ** 2, math.pi / 2.0 * math.sin(t), math.pi ** 2 / 2.0 * math.cos(t)
+    h = math.sin(t / 2.0)
+    return h * h, math.pi / 2.0 * math.sin(t), math.pi ** 2 / 2.0 * math.cos(t)
 
 
 def _cycloidal1(x: float) -> tuple[float, float, float]:
@@ -91,8 +93,8 @@ def _cycloidal1(x: float) -> tuple[float, float, float]:
 
 
 def _poly345_1(x: float) -> tuple[float, float, float]:
-    x2 = x * x
-    return x2 * x * (10.0 - 15.0 * x + 6.0 * x2), 30.0 * x2 * (1.0 - x) ** 2, 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x)
+    x2, y = x * x, 1.0 - x
+    return x2 * x * (10.0 - 15.0 * x + 6.0 * x2), 30.0 * x2 * (y * y), 60.0 * x * y * (1.0 - 2.0 * x)
 
 
 @dataclass(frozen=True)

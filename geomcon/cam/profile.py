@@ -127,14 +127,60 @@ def inverted_relative(delta: np.ndarray, rotation: str, dq: Sequence[np.ndarray]
     return c * wx - s * wy, s * wx + c * wy
 
 
+Curve1 = tuple[float, float, float, float, float, float]
+
+
+def inverted1(delta: float, rotation: str, q: tuple[float, float], dq: tuple[float, float],
+              ddq: tuple[float, float]) -> Curve1:
+    """:func:`inverted` at one cam angle, on floats (the searches' scalar path): the same operations in the
+    same order, so the same bits.
+
+    Examples
+    --------
+    >>> d, q, dq, ddq = 0.7, (3.0, 30.0), (0.5, 1.5), (-0.2, 0.1)
+    >>> vec = inverted(np.array([d]), "cw", *[(np.array([a]), np.array([b])) for a, b in (q, dq, ddq)])
+    >>> inverted1(d, "cw", q, dq, ddq) == tuple(float(v[0]) for v in vec)
+    True
+    """
+    k = -1.0 if rotation == "ccw" else 1.0
+    c, s = math.cos(k * delta), math.sin(k * delta)
+    (qx, qy), (dx, dy), (ex, ey) = q, dq, ddq
+    vx, vy = dx - k * qy, dy + k * qx
+    ax, ay = ex - 2.0 * k * dy - qx, ey + 2.0 * k * dx - qy
+    return (c * qx - s * qy, s * qx + c * qy, c * vx - s * vy, s * vx + c * vy, c * ax - s * ay, s * ax + c * ay)
+
+
+def inverted_relative1(delta: float, rotation: str, dq: tuple[float, float], ddq: tuple[float, float]
+                       ) -> tuple[float, float]:
+    """:func:`inverted_relative` at one cam angle, on floats (the same bits)."""
+    k = -1.0 if rotation == "ccw" else 1.0
+    c, s = math.cos(k * delta), math.sin(k * delta)
+    (dx, dy), (ex, ey) = dq, ddq
+    wx, wy = ex - k * dy, ey + k * dx
+    return c * wx - s * wy, s * wx + c * wy
+
+
+def sign1(x: float) -> float:
+    """``np.sign`` of one float: −1, 0 or +1 (nan for nan).
+
+    >>> sign1(-2.5), sign1(0.0), sign1(3.0), math.isnan(sign1(math.nan))
+    (-1.0, 0.0, 1.0, True)
+    """
+    return 1.0 if x > 0.0 else (-1.0 if x < 0.0 else (0.0 if x == 0.0 else math.nan))
+
+
 @dataclass(frozen=True)
 class PitchCurve:
     """A closed curve traced once as δ goes from 0 to 2π (see the module docstring). ``relative``, when
-    given, is :func:`inverted_relative` of the same point (the follower-frame turn of the tangent)."""
+    given, is :func:`inverted_relative` of the same point (the follower-frame turn of the tangent).
+    ``fn1`` and ``relative1``, when given, are ``fn`` and ``relative`` on one float, returning floats with the
+    same bits (the scalar path: the searches then refine one angle at a time without numpy)."""
 
     fn: CurveFn
     breaks: tuple[float, ...] = ()
     relative: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None
+    fn1: Callable[[float], Curve1] | None = None
+    relative1: Callable[[float], tuple[float, float]] | None = None
 
     def pieces(self) -> list[tuple[float, float]]:
         """The smooth pieces [a, b] of the turn, in order."""
@@ -173,6 +219,17 @@ def curvature(c6: Curve6) -> np.ndarray:
     return (dx * ey - dy * ex) / np.hypot(dx, dy) ** 3
 
 
+def curvature1(c6: Curve1) -> float:
+    """:func:`curvature` of one point's derivatives (floats; math's hypot and power round differently from
+    numpy's in the last bit, which only the refined values see).
+
+    >>> curvature1((0.0, 0.0, 2.0, 0.0, 0.0, 4.0))
+    1.0
+    """
+    _, _, dx, dy, ex, ey = c6
+    return (dx * ey - dy * ex) / math.hypot(dx, dy) ** 3
+
+
 @dataclass(frozen=True)
 class Extremum:
     """An extreme ``value`` reached at cam angle ``delta`` (radians)."""
@@ -197,7 +254,9 @@ maximum that is flat to roundoff has no better-defined place)."""
 
 
 def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float, float]],
-             dense: int = _DENSE, xtol: float = 1e-11, slope: Callable[[np.ndarray], np.ndarray] | None = None) -> Extremum:
+             dense: int = _DENSE, xtol: float = 1e-11, slope: Callable[[np.ndarray], np.ndarray] | None = None,
+             *, slope1: Callable[[float], float] | None = None, g1: Callable[[float], float] | None = None
+             ) -> Extremum:
     """The maximum of a function smooth on each piece, and where.
 
     With ``slope`` (a function with the sign of g′, from exact derivatives) the candidates are the ends of
@@ -211,13 +270,26 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     :data:`REFINE` largest local maxima of the samples are refined. Candidates whose
     values tie (:data:`TIE_REL`) go to the smallest cam angle.
 
+    The scalar path: ``slope1`` (the slope on one float, with the same bits as ``slope``) refines each sign
+    change one angle at a time, by the same steps as the array refinement (:func:`illinois1`), so to the same
+    place; ``g1`` (g on one float) refines each sampled peak by Brent's method (:func:`brent_max1`, about a
+    dozen calls where golden sections take forty-odd) to the same ``xtol``. The samples are evaluated in one
+    call of ``g`` or ``slope`` for all the pieces. Without them, every step of a refinement is one array call.
+
     Examples
     --------
     >>> m = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, 2.0), (2.0, TWO_PI)])
     >>> abs(m.delta - math.pi / 4) < 1e-7, abs(m.value - math.sin(math.pi / 4) * math.exp(-math.pi / 4)) < 1e-15
     (True, True)
+    >>> m1 = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, 2.0), (2.0, TWO_PI)],
+    ...               g1=lambda d: math.sin(d) * math.exp(-d))
+    >>> abs(m1.delta - math.pi / 4) < 1e-7, abs(m1.value - m.value) < 1e-16
+    (True, True)
     >>> m = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, TWO_PI)], slope=lambda d: np.cos(d) - np.sin(d))
     >>> abs(m.delta - math.pi / 4) < 1e-15
+    True
+    >>> maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, TWO_PI)], slope=lambda d: np.cos(d) - np.sin(d),
+    ...          slope1=lambda d: math.cos(d) - math.sin(d)) == m
     True
     >>> maximise(lambda d: -(d - 1.0) ** 4, [(0.0, 1.0)], slope=lambda d: -(d - 1.0) ** 3).delta < 1.0   # flat at the end
     True
@@ -232,9 +304,12 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         grids.append(d)
     places: list[float] = []
     if slope is not None:
-        slopes = [np.asarray(slope(d), dtype=float) for d in grids]
+        if slope1 is not None:                      # one call for all the pieces' samples
+            slopes = _split(np.asarray(slope(np.concatenate(grids)), dtype=float), grids)
+        else:
+            slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
-        lo, hi = [], []
+        lo, hi, flo, fhi = [], [], [], []
         for d, sl in zip(grids, slopes):
             # an end is a candidate unless the slope, beyond its noise, leads into the piece (g grows there):
             # values that tie to roundoff (α nearly constant over a long piece) must not pick the wrong end
@@ -246,12 +321,19 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
                 else:
                     lo.append(float(d[i]))
                     hi.append(float(d[i + 1]))
-        places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
+                    flo.append(float(sl[i]))
+                    fhi.append(float(sl[i + 1]))
+        if slope1 is not None:
+            places += [illinois1(slope1, *bracket) for bracket in zip(lo, hi, flo, fhi)]
+        else:
+            places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
         vals = np.asarray(g(np.asarray(places)), dtype=float)
         return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
     lo, hi, cands = [], [], []
-    for d in grids:
-        v = np.asarray(g(d), dtype=float)
+    mids, fmids = [], []
+    values = _split(np.asarray(g(np.concatenate(grids)), dtype=float), grids) if g1 is not None else None
+    for k, d in enumerate(grids):
+        v = values[k] if values is not None else np.asarray(g(d), dtype=float)
         n = len(d) - 1
         cands += [Extremum(float(v[0]), float(d[0])), Extremum(float(v[-1]), float(d[-1]))]
         w = np.concatenate([[-np.inf], v, [-np.inf]])             # the ends compare with one neighbour
@@ -260,10 +342,129 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
             cands.append(Extremum(float(v[i]), float(d[i])))
             lo.append(float(d[max(i - 1, 0)]))
             hi.append(float(d[min(i + 1, n)]))
-    if lo:
+            mids.append(float(d[i]))
+            fmids.append(float(v[i]))
+    if g1 is not None:
+        for a, x, b, fx in zip(lo, mids, hi, fmids):
+            at, top = brent_max1(g1, a, x, b, fx, xtol)
+            cands.append(Extremum(top, at))
+    elif lo:
         x, v = _golden_all(g, np.array(lo), np.array(hi), xtol)
         cands += [Extremum(float(a), float(b)) for a, b in zip(v, x)]
     return best_of(cands)
+
+
+def _split(values: np.ndarray, grids: Sequence[np.ndarray]) -> list[np.ndarray]:
+    """``values`` of the concatenated ``grids``, cut back into one array per grid."""
+    return np.split(values, np.cumsum([len(d) for d in grids])[:-1].tolist())
+
+
+def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float, fhi: float) -> float:
+    """The place where ``slope1`` changes sign from + (at lo, value flo) to − or 0 (at hi, value fhi), to the
+    last bit: the steps of :func:`_bisect_all` for one bracket, on floats (Illinois regula falsi, a plain
+    halving every third step and wherever the secant leaves the bracket), ending when lo and hi are adjacent
+    floats; the answer is hi.
+
+    >>> x = illinois1(math.cos, 1.0, 2.0, math.cos(1.0), math.cos(2.0))
+    >>> bool(x == _bisect_all(np.cos, np.array([1.0]), np.array([2.0]))[0]), math.cos(x) <= 0.0 < math.cos(math.nextafter(x, 0.0))
+    (True, True)
+    """
+    kept, step = 0, 0
+    while True:
+        half = 0.5 * (lo + hi)
+        den = fhi - flo
+        m = half
+        if step % 3 != 2 and den != 0.0:
+            secant = hi - fhi * (hi - lo) / den
+            if lo < secant < hi:                    # (a nan or infinite secant fails this test)
+                m = secant
+        if not lo < m < hi:
+            return hi                               # lo and hi are adjacent: the halving sits on an end
+        fm = slope1(m)
+        if fm > 0.0:
+            lo, flo = m, fm
+            if kept > 0:
+                fhi = 0.5 * fhi
+            kept = 1
+        else:
+            hi, fhi = m, fm
+            if kept < 0:
+                flo = 0.5 * flo
+            kept = -1
+        step += 1
+
+
+_CGOLD = 0.3819660112501051     # 2 − the golden ratio
+
+
+def brent_max1(g1: Callable[[float], float], a: float, x: float, b: float, fx: float,
+               xtol: float = 1e-11) -> tuple[float, float]:
+    """Brent's method for a maximum of ``g1`` in [a, b] from the point x inside (g1(x) = fx higher than at the
+    ends, as at a sampled peak): parabolic steps through the three best points, golden sections when they
+    fail, until the bracket is about ``xtol`` wide. Returns (the place, the value), the best point found.
+    A nan or a division by zero counts as lower than any number.
+
+    >>> x, v = brent_max1(lambda t: math.sin(t) * math.exp(-t), 0.0, 0.8, 2.0, math.sin(0.8) * math.exp(-0.8))
+    >>> abs(x - math.pi / 4) < 1e-8, abs(v - math.sin(math.pi / 4) * math.exp(-math.pi / 4)) < 1e-16
+    (True, True)
+    """
+    def f(t: float) -> float:                       # minimised: −g1
+        try:
+            y = -g1(t)
+        except ZeroDivisionError:
+            return math.inf
+        return y if y == y else math.inf
+
+    fx = -fx if fx == fx else math.inf
+    v = w = x
+    fv = fw = fx
+    d = e = 0.0
+    while True:
+        xm = 0.5 * (a + b)
+        tol1 = 0.25 * xtol + 4.0 * _EPS * abs(x)
+        tol2 = 2.0 * tol1
+        if abs(x - xm) <= tol2 - 0.5 * (b - a):
+            return x, -fx
+        golden = True
+        if abs(e) > tol1:                           # try the parabola through x, w, v
+            r = (x - w) * (fx - fv)
+            q = (x - v) * (fx - fw)
+            p = (x - v) * q - (x - w) * r
+            q = 2.0 * (q - r)
+            if q > 0.0:
+                p = -p
+            q = abs(q)
+            etemp, e = e, d
+            if abs(p) < abs(0.5 * q * etemp) and q * (a - x) < p < q * (b - x):
+                d = p / q
+                u = x + d
+                if u - a < tol2 or b - u < tol2:
+                    d = math.copysign(tol1, xm - x)
+                golden = False
+        if golden:
+            e = (a - x) if x >= xm else (b - x)
+            d = _CGOLD * e
+        u = x + d if abs(d) >= tol1 else x + math.copysign(tol1, d)
+        fu = f(u)
+        if fu <= fx:
+            if u >= x:
+                a = x
+            else:
+                b = x
+            v, w, x = w, x, u
+            fv, fw, fx = fw, fx, fu
+        else:
+            if u < x:
+                a = u
+            else:
+                b = u
+            if fu <= fw or w == x:
+                v, w, fv, fw = w, u, fw, fu
+            elif fu <= fv or v == x or v == w:
+                v, fv = u, fu
+
+
+_EPS = 2.220446049250313e-16
 
 
 def best_of(cands: Sequence[Extremum]) -> Extremum:
@@ -379,6 +580,23 @@ def frame_pressure_angle_slope(c6: Curve6, rel: tuple[np.ndarray, np.ndarray], u
     return (dx * ry - dy * rx) / (dx * dx + dy * dy) * np.sign((dx * ux + dy * uy) * (dx * uy - dy * ux))
 
 
+def frame_pressure_angle_slope1(c6: Curve1, rel: tuple[float, float], ux: float, uy: float) -> float:
+    """:func:`frame_pressure_angle_slope` at one point, on floats (the same bits; a tangent of length 0 gives
+    nan, as the array path's 0/0 does).
+
+    >>> c6, rel = (0.0, 30.0, -30.0, 0.5, 0.0, 0.0), (0.2, -0.1)
+    >>> arr = frame_pressure_angle_slope(tuple(np.array([v]) for v in c6), tuple(np.array([v]) for v in rel), 0.1, 1.0)
+    >>> frame_pressure_angle_slope1(c6, rel, 0.1, 1.0) == float(arr[0])
+    True
+    """
+    _, _, dx, dy = c6[:4]
+    rx, ry = rel
+    den = dx * dx + dy * dy
+    if den == 0.0:
+        return math.nan
+    return (dx * ry - dy * rx) / den * sign1((dx * ux + dy * uy) * (dx * uy - dy * ux))
+
+
 def rho_min(curve: PitchCurve) -> Extremum:
     """The smallest radius of curvature of the convex parts of ``curve`` (inf if none), and where.
 
@@ -390,14 +608,18 @@ def rho_min(curve: PitchCurve) -> Extremum:
     18.0
     """
     sigma = curve.orientation
-    top = maximise(lambda d: sigma * curvature(curve.eval(d)), curve.pieces())
+    fn1 = curve.fn1
+    top = maximise(lambda d: sigma * curvature(curve.eval(d)), curve.pieces(),
+                   g1=None if fn1 is None else lambda d: sigma * curvature1(fn1(d)))
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
 
 
 def rho_min_concave(curve: PitchCurve) -> Extremum:
     """The smallest |ρ| on the concave parts of ``curve`` (inf if it has none), and where."""
     sigma = curve.orientation
-    top = maximise(lambda d: -sigma * curvature(curve.eval(d)), curve.pieces())
+    fn1 = curve.fn1
+    top = maximise(lambda d: -sigma * curvature(curve.eval(d)), curve.pieces(),
+                   g1=None if fn1 is None else lambda d: -sigma * curvature1(fn1(d)))
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
 
 
@@ -782,7 +1004,8 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
-           "inverted_relative", "corners", "sample_count",
+           "inverted_relative", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
+           "illinois1", "brent_max1", "sign1", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
            "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]

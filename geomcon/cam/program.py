@@ -47,6 +47,7 @@ MAX_SEGMENTS = 64
 
 
 _F64 = np.float64
+_BELOW_HALF = math.nextafter(0.5, 0.0)
 
 
 @dataclass(frozen=True)
@@ -160,33 +161,61 @@ class Program:
             v, a = np.where(past, 0.0, v), np.where(past, 0.0, a)
         return s.reshape(shape), v.reshape(shape), a.reshape(shape)
 
-    def _motion1(self, h: float, raw: float, radians: bool) -> tuple[float, float, float]:
-        """:meth:`motion` at one angle, without array machinery (the searches evaluate one angle at a time);
-        the same arithmetic as the array path."""
-        conv = math.radians if radians else float
-        turn = conv(360.0)
-        d = raw % turn
-        if d == 0.0 and raw > 0.0:
+    def motion1(self, h: float, delta: float, radians: bool = False) -> tuple[float, float, float]:
+        """:meth:`motion` at one angle (a float), as three floats: the scalar path the searches use (a numpy
+        call on one number costs a hundred times the arithmetic). The same arithmetic as the array path, in
+        the same order, so the same bits.
+
+        Examples
+        --------
+        >>> p = parse_program([{"kind": "rise", "angle": 180, "law": "cosine"}, {"kind": "return", "angle": 180, "law": "poly345"}])
+        >>> p.motion1(10.0, 100.0) == tuple(float(v[1]) for v in p.motion(10.0, np.array([10.0, 100.0])))
+        True
+        >>> p.motion1(10.0, math.radians(270.0), radians=True)[0] == float(p.motion(10.0, 270.0)[0])
+        True
+        """
+        turn, starts, rows, last_end, final = self._rows1[radians]
+        d = delta % turn
+        if d == 0.0 and delta > 0.0:
             d = turn
-        starts_deg, starts_rad, levels = self._scalar_table
-        i = min(max(bisect_right(starts_rad if radians else starts_deg, d) - 1, 0), len(self.segments) - 1)
-        seg = self.segments[i]
-        if d > conv(self.segments[-1].end):
-            last = self.segments[-1]
-            return (levels[-1] + {"rise": 1.0, "return": -1.0}.get(last.kind, 0.0)) * h, 0.0, 0.0
-        if seg.kind == "dwell":
-            return levels[i] * h, 0.0, 0.0
-        x = min(max((d - conv(seg.start)) / conv(seg.angle), 0.0), 1.0)
-        if seg.law.name == "parabolic":
-            x = max(x, 0.5) if d >= conv(seg.start + seg.angle / 2) else min(x, math.nextafter(0.5, 0.0))
-        f, f1, f2 = seg.law.fn1(x)                   # the array path's formulas on one float: the same bits
-        sign, span = (1.0 if seg.kind == "rise" else -1.0), math.radians(seg.angle)
-        return levels[i] * h + sign * h * f, sign * h * f1 / span, sign * h * f2 / span ** 2
+        if d > last_end:
+            return final * h, 0.0, 0.0
+        i = bisect_right(starts, d) - 1
+        level, sign, start, angle, mid, fn1, span2, span = rows[i if i > 0 else 0]
+        if fn1 is None:
+            return level * h, 0.0, 0.0
+        x = (d - start) / angle
+        x = 0.0 if x < 0.0 else (1.0 if x > 1.0 else x)
+        if mid is not None:                         # the parabolic law's half, decided on δ against the break
+            x = (x if x > 0.5 else 0.5) if d >= mid else (x if x < _BELOW_HALF else _BELOW_HALF)
+        f, f1, f2 = fn1(x)
+        return level * h + sign * h * f, sign * h * f1 / span, sign * h * f2 / span2
+
+    def _motion1(self, h: float, raw: float, radians: bool) -> tuple[float, float, float]:
+        """:meth:`motion1` (the name the array path uses)."""
+        return self.motion1(h, raw, radians)
 
     @cached_property
-    def _scalar_table(self) -> tuple[list[float], list[float], list[float]]:
-        """:attr:`_table` as Python lists, for the scalar path."""
-        return tuple(a.tolist() for a in self._table)  # type: ignore[return-value]
+    def _rows1(self) -> dict[bool, tuple]:
+        """For :meth:`motion1`, in degrees (False) and radians (True): the turn, the segment starts, per segment
+        (level, sign, start, angle, parabolic middle or None, the law's scalar form or None for a dwell,
+        span², span) with every conversion done once (the same numbers the array path converts each time),
+        the end of the last segment and the level after it."""
+        out = {}
+        levels = self._table[2].tolist()
+        last = self.segments[-1]
+        final = levels[-1] + {"rise": 1.0, "return": -1.0}.get(last.kind, 0.0)
+        for radians in (False, True):
+            conv = math.radians if radians else float
+            rows = []
+            for seg, level in zip(self.segments, levels):
+                dwell = seg.kind == "dwell"
+                span = math.radians(seg.angle)
+                mid = conv(seg.start + seg.angle / 2) if not dwell and seg.law.name == "parabolic" else None
+                rows.append((level, 1.0 if seg.kind == "rise" else -1.0, conv(seg.start), conv(seg.angle), mid,
+                             None if dwell else seg.law.fn1, span ** 2, span))
+            out[radians] = (conv(360.0), [conv(s.start) for s in self.segments], rows, conv(last.end), final)
+        return out
 
     def impacts(self, h: float) -> list[Impact]:
         """Every jump of velocity (rigid impact) or acceleration (soft impact) over the turn, including the
