@@ -223,12 +223,10 @@ def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, wid
     sc.add("sd_s_axis", segment, origin, Point(origin.x, origin.y + top), style="given", role=Role.ANNOTATION)
     sc.given("sd_delta_label", at(372.0, 0.0), label="δ", visible=True, style="point")
     sc.given("sd_s_label", Point(origin.x, origin.y + top), label=f"{symbol} ({unit})" if unit else symbol, style="point")
-    d = np.linspace(0.0, 360.0, 721)
-    s = program.motion(h, d)[0]
-    sc.add("sd_curve", _polyline, tuple(at(a, b) for a, b in zip(d, s)), style="link", role=Role.RESULT,
+    sc.add("sd_curve", diagram_curve, program, h, origin, per_deg, scale, style="link", role=Role.RESULT,
            caption=(f"Plot {symbol}(δ) of the motion program", f"按运动规律画出 {symbol}(δ) 曲线"))
     for i, dv in enumerate(divisions, 1):
-        sv = float(program.motion(h, dv)[0])
+        sv = program.motion1(h, dv)[0]
         foot = sc.given(f"sd_div{i}", at(dv, 0.0), label=str(i), style="tick")
         if abs(sv) * scale > 1e-9 * width:
             sc.add(f"sd_ord{i}", segment, foot, at(dv, sv), style="construction",
@@ -236,8 +234,18 @@ def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, wid
                             "将 δ 轴按凸轮转角等分,作各分点的纵坐标 1, 2, …(即各位移)") if i == 1 else ("", ""))
 
 
-def _polyline(pts: tuple[Point, ...]) -> Polyline:
-    return Polyline(pts)
+def diagram_curve(program: Program, h: float, origin: Point, per_deg: float, scale: float) -> Polyline:
+    """The s–δ curve of :func:`add_motion_diagram` through 721 points (every ½°), computed when it is drawn (an
+    answer never needs it).
+
+    >>> prog = parse_program([{"kind": "rise", "angle": 180, "law": "uniform"}, {"kind": "return", "angle": 180, "law": "uniform"}])
+    >>> c = diagram_curve(prog, 10.0, Point(0.0, 0.0), 0.5, 2.0)
+    >>> len(c.points), c.points[360].tuple()
+    (721, (90.0, 20.0))
+    """
+    d = np.linspace(0.0, 360.0, 721)
+    s = program.motion(h, d)[0]
+    return Polyline(tuple(Point(origin.x + a * per_deg, origin.y + b * scale) for a, b in zip(d, s)))
 
 
 def add_profile_steps(sc: Scene, make: Callable[..., Profile], args: tuple, caption: tuple[str, str],

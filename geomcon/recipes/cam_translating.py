@@ -302,44 +302,37 @@ def construct(g: Mapping[str, Any]) -> Construction:
     at = tuple(g.get("at") or ())
     turn_en, turn_zh = ("clockwise", "顺时针") if inv < 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with a translating {follower} follower: inversion")
-    drawing = sc.drawing              # the circles, the follower, the s–δ diagram and the divisions: drawing only
     O = add_cam_centre(sc)
-    if drawing:
-        add_base_circle(sc, O, r0, ("profile", "实际廓线") if flat else ("pitch curve", "理论廓线"))
-        if e != 0.0:
-            sc.add("offset_circle", circle, O, abs(e), style="path",
-                   caption=(f"Offset circle of radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
+    add_base_circle(sc, O, r0, ("profile", "实际廓线") if flat else ("pitch curve", "理论廓线"))
+    if e != 0.0:
+        sc.add("offset_circle", circle, O, abs(e), style="path",
+               caption=(f"Offset circle of radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
     B0 = sc.given("B0", Point(e, s0), label="B0", style="joint",
                   caption=(f"B0: the follower's lowest point, on its axis x = e = {e:g}",
                            f"B0:从动件最低位置,导路 x = e = {e:g}"))
+    _start_follower(sc, follower, e, s0, h, rr, r0, B0)
     divs = division_angles(prog)
-    rise_end = divs.index(round(prog.rise.end, 9)) if round(prog.rise.end, 9) in divs else None
-    if rise_end is None:
-        raise NotAMechanism("program: the rise must end before 360°")
-    if drawing:
-        _start_follower(sc, follower, e, s0, h, rr, r0, B0)
-        R = r0 + h + rr
-        add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 3.0 * R, 1.0, divs)
-        # the inversion: the follower's axis turned about O by −δ (ccw cam) to every division
-        foot = Point(e, 0.0)
-        for i, dv in enumerate(divs, 1):
-            K = sc.add(f"K{i}", turned, foot, O, inv, dv, visible=False)
-            E = sc.add(f"E{i}", turned, Point(e, s0 + h + 0.12 * r0), O, inv, dv, visible=False)
-            sc.add(f"L{i}", segment, K, E, style="construction",
-                   caption=(f"Turn the follower about O {turn_en} (−ω) to the divisions 1, 2, …: its axis stays tangent "
-                            f"to the offset circle" if e else f"Turn the follower about O {turn_en} (−ω) to the divisions 1, 2, …",
-                            f"按 −ω 方向({turn_zh})将从动件导路绕 O 转到各等分位置 1, 2, …" + ("(与偏距圆相切)" if e else "")) if i == 1 else ("", ""))
+    R = r0 + h + rr
+    add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 3.0 * R, 1.0, divs)
+    # the inversion: the follower's axis turned about O by −δ (ccw cam) to every division
+    foot = Point(e, 0.0)
+    for i, dv in enumerate(divs, 1):
+        K = sc.add(f"K{i}", turned, foot, O, inv, dv, visible=False)
+        E = sc.add(f"E{i}", turned, Point(e, s0 + h + 0.12 * r0), O, inv, dv, visible=False)
+        sc.add(f"L{i}", segment, K, E, style="construction",
+               caption=(f"Turn the follower about O {turn_en} (−ω) to the divisions 1, 2, …: its axis stays tangent "
+                        f"to the offset circle" if e else f"Turn the follower about O {turn_en} (−ω) to the divisions 1, 2, …",
+                        f"按 −ω 方向({turn_zh})将从动件导路绕 O 转到各等分位置 1, 2, …" + ("(与偏距圆相切)" if e else "")) if i == 1 else ("", ""))
     Bs, Cs = [], []
     for i, dv in enumerate(divs, 1):
-        if not drawing and i != rise_end + 1:       # the answers read the stroke at the end of the rise only
-            continue
         s = prog.motion1(h, dv)[0]
         Cs.append(sc.add(f"C{i}", turned, B0, O, inv, dv, visible=False))
         Bs.append(sc.add(f"B{i}", turned, Point(e, s0 + s), O, inv, dv, style="point", label=f"{i}′",
                          caption=("Lay off the displacements s1, s2, … from the base circle along the inverted axes: "
                                   "points 1′, 2′, …", "在各反转导路上自基圆量取位移 s1, s2, …,得 1′, 2′, …") if i == 1 else ("", "")))
-    if not drawing:
-        Cs, Bs = [None] * rise_end + Cs, [None] * rise_end + Bs
+    rise_end = divs.index(round(prog.rise.end, 9)) if round(prog.rise.end, 9) in divs else None
+    if rise_end is None:
+        raise NotAMechanism("program: the rise must end before 360°")
     sc.add("h", stroke, Cs[rise_end], Bs[rise_end], role=Role.MEASUREMENT, unit="mm", visible=False)
     answers = {"h": "h", "rho_min_actual": "rho_min_actual", "undercut": "undercut",
                "alpha_max_rise": "alpha_max_rise", "alpha_max_return": "alpha_max_return"}
@@ -357,7 +350,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("alpha_max_rise", float, 0.0, visible=False)
         sc.add("alpha_max_return", float, 0.0, visible=False)
         answers.update({k: k for k in ("face_width_left", "face_width_right", "face_width", "convex")})
-        for i, (B, dv) in enumerate(zip(Bs, divs)) if drawing else ():
+        for i, (B, dv) in enumerate(zip(Bs, divs)):
             sc.add(f"F{i + 1}", face_segment, B, O, inv, dv, 0.3 * r0, 0.3 * r0, style="path",
                    caption=("Draw the face in each inverted position, perpendicular to the axis",
                             "过 1′, 2′, … 作各反转位置的平底(垂直于导路)") if i == 0 else ("", ""))
@@ -388,15 +381,13 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add(f"delta_alpha_max_{part}", extremum_deg, w, role=Role.MEASUREMENT, unit="deg", visible=False)
             answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
         if follower == "roller":
-            if drawing:
-                add_roller_circles(sc, Bs, rr)
+            add_roller_circles(sc, Bs, rr)
             add_profile_steps(sc, roller_profile, (curve, rr, tol),
                               ("Draw the inner envelope of the roller circles: the actual profile",
                                "作滚子圆族的内包络线,即凸轮的实际廓线"))
         else:
             add_profile_steps(sc, roller_profile, (curve, 0.0, tol), ("", ""), style="link")
-        if drawing:
-            _mark_worst(sc, O, prog, h, e, s0, inv, r0, curve)
+        _mark_worst(sc, O, prog, h, e, s0, inv, r0, curve)
         if at:
             sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
             sc.add("alpha", alphas_at, curve, inv, at, visible=False)
