@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Callable, Sequence
 
 import numpy as np
@@ -205,9 +206,9 @@ class PitchCurve:
         x, y = self.eval(d)[:2]
         return float(np.hypot(x, y).max())
 
-    @property
+    @cached_property
     def orientation(self) -> int:
-        """+1 when the curve goes counter-clockwise round O, −1 clockwise (sign of its area)."""
+        """+1 when the curve goes counter-clockwise round O, −1 clockwise (sign of its area; computed once)."""
         d = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
         x, y = self.eval(d)[:2]
         return 1 if float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)) > 0.0 else -1
@@ -248,6 +249,12 @@ REFINE = 3
 samples can overtake the best sample's, so more than one is refined)."""
 SLOPE_NOISE = 1e-9
 """A slope within this fraction of its largest sampled magnitude is roundoff (no root is sought there)."""
+PRUNE_GAIN = 4.0
+PRUNE_REL = 1e-9
+"""The scalar path refines a sampled peak only if its sample plus :data:`PRUNE_GAIN` times what the parabola
+through it and its neighbours gains (:func:`parabola_gain`) comes within :data:`PRUNE_REL` of the best sample:
+a peak far below cannot win (nor tie: :data:`TIE_REL` is much smaller), and a flat stretch (a dwell's constant
+curvature, whose samples differ by roundoff) is not searched for nothing."""
 TIE_REL = 1e-12
 """Two candidate maxima whose values agree to this relative tolerance tie; the smaller cam angle wins (a
 maximum that is flat to roundoff has no better-defined place)."""
@@ -330,7 +337,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         vals = np.asarray(g(np.asarray(places)), dtype=float)
         return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
     lo, hi, cands = [], [], []
-    mids, fmids = [], []
+    mids, fmids, gains = [], [], []
     values = _split(np.asarray(g(np.concatenate(grids)), dtype=float), grids) if g1 is not None else None
     for k, d in enumerate(grids):
         v = values[k] if values is not None else np.asarray(g(d), dtype=float)
@@ -344,14 +351,46 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
             hi.append(float(d[min(i + 1, n)]))
             mids.append(float(d[i]))
             fmids.append(float(v[i]))
+            if g1 is not None:
+                gains.append(parabola_gain(d, v, i))
     if g1 is not None:
-        for a, x, b, fx in zip(lo, mids, hi, fmids):
-            at, top = brent_max1(g1, a, x, b, fx, xtol)
-            cands.append(Extremum(top, at))
+        floor = max(c.value for c in cands if not math.isnan(c.value)) if cands else -math.inf
+        floor -= PRUNE_REL * abs(floor)
+        for a, x, b, fx, gain in zip(lo, mids, hi, fmids, gains):
+            if fx + PRUNE_GAIN * gain >= floor:     # else this peak cannot reach the best sample
+                at, top = brent_max1(g1, a, x, b, fx, xtol)
+                cands.append(Extremum(top, at))
     elif lo:
         x, v = _golden_all(g, np.array(lo), np.array(hi), xtol)
         cands += [Extremum(float(a), float(b)) for a, b in zip(v, x)]
     return best_of(cands)
+
+
+def parabola_gain(d: np.ndarray, v: np.ndarray, i: int) -> float:
+    """How much higher than the sample v[i] the parabola through it and its neighbours rises (0 when it
+    does not bend down; at an end of the samples, the parabola through the first or last three, counted
+    only when its top lies in the end cell): the scale of what refining a sampled peak can gain.
+
+    >>> d = np.linspace(0.0, 1.0, 11); v = -(d - 0.33) ** 2
+    >>> round(parabola_gain(d, v, 3), 12)      # the top at 0.33 is 0.0009 above the sample at 0.3
+    0.0009
+    """
+    n = len(d) - 1
+    if n < 2:
+        return 0.0
+    j = min(max(i, 1), n - 1)
+    x0, x1, x2 = float(d[j - 1]), float(d[j]), float(d[j + 1])
+    y0, y1, y2 = float(v[j - 1]), float(v[j]), float(v[j + 1])
+    s0, s1 = (y1 - y0) / (x1 - x0), (y2 - y1) / (x2 - x1)
+    c = (s1 - s0) / (x2 - x0)
+    if not c < 0.0:
+        return 0.0
+    b = s0 + c * (x1 - x0)                          # the parabola's slope at x1
+    top = x1 - b / (2.0 * c)
+    lo, hi = float(d[max(i - 1, 0)]), float(d[min(i + 1, n)])
+    if not lo <= top <= hi:
+        return 0.0
+    return max(0.0, y1 - b * b / (4.0 * c) - float(v[i]))
 
 
 def _split(values: np.ndarray, grids: Sequence[np.ndarray]) -> list[np.ndarray]:

@@ -47,6 +47,9 @@ MAX_SEGMENTS = 64
 
 
 _F64 = np.float64
+SCALAR_MAX = 16
+"""Arrays of at most this many angles are evaluated one angle at a time (:meth:`Program.motion1`, the same
+bits): below it the array machinery costs more than the arithmetic."""
 _BELOW_HALF = math.nextafter(0.5, 0.0)
 
 
@@ -129,12 +132,18 @@ class Program:
         raw = np.asarray(delta, dtype=float)
         if raw.size == 1:
             return tuple(np.full(raw.shape, v) for v in self._motion1(h, float(raw.reshape(-1)[0]), radians))
+        if raw.size <= SCALAR_MAX:                  # a few angles (the candidates of a search): one by one
+            out = np.array([self.motion1(h, x, radians) for x in raw.reshape(-1).tolist()]).reshape(-1, 3)
+            return tuple(out[:, i].reshape(raw.shape) for i in range(3))
         shape = raw.shape
         raw = raw.reshape(-1)
         d = np.mod(raw, turn)
         d = np.where((d == 0.0) & (raw > 0.0), turn, d)
         starts_deg, starts_rad, levels = self._table
         starts = starts_rad if radians else starts_deg
+        if d.size > 1 and bool(np.all(d[1:] >= d[:-1])):     # sorted (every grid): slices, not masks
+            s, v, a = self._motion_sorted(h, d, starts, radians)
+            return s.reshape(shape), v.reshape(shape), a.reshape(shape)
         idx = np.searchsorted(starts, d, side="right") - 1
         idx = np.clip(idx, 0, len(self.segments) - 1)
         s = levels[idx] * h
@@ -160,6 +169,35 @@ class Program:
             s = np.where(past, final * h, s)
             v, a = np.where(past, 0.0, v), np.where(past, 0.0, a)
         return s.reshape(shape), v.reshape(shape), a.reshape(shape)
+
+    def _motion_sorted(self, h: float, d: np.ndarray, starts: np.ndarray, radians: bool
+                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`motion` of sorted angles ``d`` (already reduced to the turn): each segment's angles are one
+        slice (found by bisecting the angles at the segment starts), evaluated by the same operations as the
+        array path's, so the same bits."""
+        turn, _, rows, last_end, final = self._rows1[radians]
+        n = d.size
+        edges = [0, *np.searchsorted(d, starts[1:], side="left").tolist(), n]
+        s, v, a = np.empty_like(d), np.zeros_like(d), np.zeros_like(d)
+        for (level, sign, start, angle, mid, fn1, span2, span), seg, j0, j1 in zip(rows, self.segments, edges, edges[1:]):
+            if j0 == j1:
+                continue
+            base = level * h
+            if fn1 is None:
+                s[j0:j1] = base
+                continue
+            dd = d[j0:j1]
+            x = np.clip((dd - start) / angle, 0.0, 1.0)
+            if mid is not None:                     # the half is decided on δ against the break itself
+                x = np.where(dd >= mid, np.maximum(x, 0.5), np.minimum(x, _BELOW_HALF))
+            f, f1, f2 = seg.law.derivatives(x)
+            s[j0:j1] = base + sign * h * f
+            v[j0:j1] = sign * h * f1 / span
+            a[j0:j1] = sign * h * f2 / span2
+        if d[-1] > last_end:                        # past a program shorter than a turn: at the top, at rest
+            past = d > last_end
+            s[past], v[past], a[past] = final * h, 0.0, 0.0
+        return s, v, a
 
     def motion1(self, h: float, delta: float, radians: bool = False) -> tuple[float, float, float]:
         """:meth:`motion` at one angle (a float), as three floats: the scalar path the searches use (a numpy

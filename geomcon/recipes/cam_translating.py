@@ -130,25 +130,35 @@ def _s_drops(prog: Program, h: float) -> bool:
 def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> PitchCurve:
     """The pitch curve: the follower's point (e, s0 + s) turned about O by inv·δ, exact derivatives."""
     rotation = "ccw" if inv < 0 else "cw"
+    last: list = [None, None]                  # the last angles and their motion: a slope asks for both forms
+
+    def motion(d):
+        if last[0] is not None and last[0].shape == d.shape and np.array_equal(last[0], d):
+            return last[1]
+        m = prog.motion(h, d, radians=True)
+        last[0], last[1] = np.array(d, dtype=float), m
+        return m
 
     def fn(d):
-        s, v, a = prog.motion(h, d, radians=True)
+        s, v, a = motion(d)
         z = np.zeros_like(d)
         return inverted(d, rotation, (e + z, s0 + s), (z, v), (z, a))
 
     def relative(d):
-        _, v, a = prog.motion(h, d, radians=True)
+        _, v, a = motion(d)
         z = np.zeros_like(d)
         return inverted_relative(d, rotation, (z, v), (z, a))
 
     motion1, ex = prog.motion1, e + 0.0                 # the scalar path (the same bits; e + 0 as e + zeros)
+    last1 = [math.nan, (0.0, 0.0, 0.0)]
 
     def fn1(d):
-        s, v, a = motion1(h, d, True)
+        s, v, a = m = motion1(h, d, True)
+        last1[0], last1[1] = d, m
         return inverted1(d, rotation, (ex, s0 + s), (0.0, v), (0.0, a))
 
     def relative1(d):
-        _, v, a = motion1(h, d, True)
+        _, v, a = last1[1] if d == last1[0] else motion1(h, d, True)
         return inverted_relative1(d, rotation, (0.0, v), (0.0, a))
 
     return PitchCurve(fn, program_breaks(prog), relative, fn1, relative1)
