@@ -71,7 +71,7 @@ _NEAR_ENDS = np.logspace(-9.0, -2.0, 8)       # extra samples at these fractions
 
 
 def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequence[np.ndarray],
-             ddq: Sequence[np.ndarray]) -> Curve6:
+             ddq: Sequence[np.ndarray], *, cs: tuple[np.ndarray, np.ndarray] | None = None) -> Curve6:
     """A point fixed to the follower's frame, ``q(δ)``, seen from the cam: P = R(∓δ)·q (inversion).
 
     Parameters
@@ -88,6 +88,9 @@ def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequ
     (x, y, x′, y′, x″, y″) : arrays
         P and its exact derivatives: P′ = R(q′ + kJq), P″ = R(q″ + 2kJq′ − q), k = ∓1, J the +90° turn.
 
+    ``cs``, when given, is (cos kδ, sin kδ) computed already (:func:`turn_of`): the same numbers, not
+    computed twice for the point and its relative form.
+
     Examples
     --------
     >>> d = np.array([math.pi / 2])
@@ -95,15 +98,21 @@ def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequ
     [30.0, 0.0, 0.0, -30.0, -30.0, -0.0]
     """
     k = -1.0 if rotation == "ccw" else 1.0
-    c, s = np.cos(k * delta), np.sin(k * delta)
+    c, s = turn_of(delta, rotation) if cs is None else cs
     (qx, qy), (dx, dy), (ex, ey) = q, dq, ddq
     vx, vy = dx - k * qy, dy + k * qx                          # q′ + kJq
     ax, ay = ex - 2.0 * k * dy - qx, ey + 2.0 * k * dx - qy    # q″ + 2kJq′ − q
     return (c * qx - s * qy, s * qx + c * qy, c * vx - s * vy, s * vx + c * vy, c * ax - s * ay, s * ax + c * ay)
 
 
-def inverted_relative(delta: np.ndarray, rotation: str, dq: Sequence[np.ndarray], ddq: Sequence[np.ndarray]
-                      ) -> tuple[np.ndarray, np.ndarray]:
+def turn_of(delta: np.ndarray, rotation: str) -> tuple[np.ndarray, np.ndarray]:
+    """(cos kδ, sin kδ), k = −1 for a "ccw" cam, +1 for "cw": the turn of the inversion (:func:`inverted`)."""
+    k = -1.0 if rotation == "ccw" else 1.0
+    return np.cos(k * delta), np.sin(k * delta)
+
+
+def inverted_relative(delta: np.ndarray, rotation: str, dq: Sequence[np.ndarray], ddq: Sequence[np.ndarray],
+                      *, cs: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, np.ndarray]:
     """P″ − kJP′ = R(q″ + kJq′): the acceleration of the inverted point relative to the turning frame (the
     frame's own turn taken out), formed in the follower's frame before it is turned.
 
@@ -122,7 +131,7 @@ def inverted_relative(delta: np.ndarray, rotation: str, dq: Sequence[np.ndarray]
     True
     """
     k = -1.0 if rotation == "ccw" else 1.0
-    c, s = np.cos(k * delta), np.sin(k * delta)
+    c, s = turn_of(delta, rotation) if cs is None else cs
     (dx, dy), (ex, ey) = dq, ddq
     wx, wy = ex - k * dy, ey + k * dx                          # q″ + kJq′
     return c * wx - s * wy, s * wx + c * wy
@@ -249,6 +258,7 @@ REFINE = 3
 samples can overtake the best sample's, so more than one is refined)."""
 SLOPE_NOISE = 1e-9
 """A slope within this fraction of its largest sampled magnitude is roundoff (no root is sought there)."""
+FLAT_REL = 1e-13
 PRUNE_GAIN = 4.0
 PRUNE_REL = 1e-9
 """The scalar path refines a sampled peak only if its sample plus :data:`PRUNE_GAIN` times what the parabola
@@ -345,7 +355,11 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         cands += [Extremum(float(v[0]), float(d[0])), Extremum(float(v[-1]), float(d[-1]))]
         w = np.concatenate([[-np.inf], v, [-np.inf]])             # the ends compare with one neighbour
         peaks = np.nonzero((w[1:-1] >= w[:-2]) & (w[1:-1] >= w[2:]) & ((w[1:-1] > w[:-2]) | (w[1:-1] > w[2:])))[0]
-        for i in sorted(peaks.tolist(), key=lambda j: -v[j])[:REFINE]:
+        if g1 is not None and not np.isnan(v[peaks]).any():   # the REFINE highest (stable: ties by place)
+            top = peaks[np.argsort(-v[peaks], kind="stable")[:REFINE]].tolist()
+        else:
+            top = sorted(peaks.tolist(), key=lambda j: -v[j])[:REFINE]
+        for i in top:
             cands.append(Extremum(float(v[i]), float(d[i])))
             lo.append(float(d[max(i - 1, 0)]))
             hi.append(float(d[min(i + 1, n)]))
@@ -357,7 +371,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         floor = max(c.value for c in cands if not math.isnan(c.value)) if cands else -math.inf
         floor -= PRUNE_REL * abs(floor)
         for a, x, b, fx, gain in zip(lo, mids, hi, fmids, gains):
-            if fx + PRUNE_GAIN * gain >= floor:     # else this peak cannot reach the best sample
+            if fx + PRUNE_GAIN * gain >= floor and gain >= 0.0:   # else it cannot reach the best sample
                 at, top = brent_max1(g1, a, x, b, fx, xtol)
                 cands.append(Extremum(top, at))
     elif lo:
@@ -369,7 +383,9 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
 def parabola_gain(d: np.ndarray, v: np.ndarray, i: int) -> float:
     """How much higher than the sample v[i] the parabola through it and its neighbours rises (0 when it
     does not bend down; at an end of the samples, the parabola through the first or last three, counted
-    only when its top lies in the end cell): the scale of what refining a sampled peak can gain.
+    only when its top lies in the end cell): the scale of what refining a sampled peak can gain; −1 when
+    the three samples agree to :data:`FLAT_REL` (a constant to roundoff, such as a dwell's curvature: a
+    search would only find roundoff).
 
     >>> d = np.linspace(0.0, 1.0, 11); v = -(d - 0.33) ** 2
     >>> round(parabola_gain(d, v, 3), 12)      # the top at 0.33 is 0.0009 above the sample at 0.3
@@ -381,6 +397,8 @@ def parabola_gain(d: np.ndarray, v: np.ndarray, i: int) -> float:
     j = min(max(i, 1), n - 1)
     x0, x1, x2 = float(d[j - 1]), float(d[j]), float(d[j + 1])
     y0, y1, y2 = float(v[j - 1]), float(v[j]), float(v[j + 1])
+    if max(abs(y1 - y0), abs(y1 - y2)) <= FLAT_REL * abs(y1):
+        return -1.0                                 # flat to roundoff: nothing to refine
     s0, s1 = (y1 - y0) / (x1 - x0), (y2 - y1) / (x2 - x1)
     c = (s1 - s0) / (x2 - x0)
     if not c < 0.0:
@@ -1043,7 +1061,7 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
-           "inverted_relative", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
+           "inverted_relative", "turn_of", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
            "illinois1", "brent_max1", "sign1", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",

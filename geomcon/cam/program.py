@@ -137,11 +137,16 @@ class Program:
             return tuple(out[:, i].reshape(raw.shape) for i in range(3))
         shape = raw.shape
         raw = raw.reshape(-1)
-        d = np.mod(raw, turn)
-        d = np.where((d == 0.0) & (raw > 0.0), turn, d)
         starts_deg, starts_rad, levels = self._table
         starts = starts_rad if radians else starts_deg
-        if d.size > 1 and bool(np.all(d[1:] >= d[:-1])):     # sorted (every grid): slices, not masks
+        if bool(np.all(raw[1:] >= raw[:-1])) and 0.0 <= raw[0] and raw[-1] < turn and \
+                (raw[0] != 0.0 or math.copysign(1.0, raw[0]) > 0.0):
+            # sorted within the turn (every grid): the reduction leaves them as they are; slices, not masks
+            s, v, a = self._motion_sorted(h, raw, starts, radians)
+            return s.reshape(shape), v.reshape(shape), a.reshape(shape)
+        d = np.mod(raw, turn)
+        d = np.where((d == 0.0) & (raw > 0.0), turn, d)
+        if bool(np.all(d[1:] >= d[:-1])):           # sorted once reduced (a grid that ends at the full turn)
             s, v, a = self._motion_sorted(h, d, starts, radians)
             return s.reshape(shape), v.reshape(shape), a.reshape(shape)
         idx = np.searchsorted(starts, d, side="right") - 1

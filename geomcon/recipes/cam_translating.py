@@ -20,7 +20,7 @@ import numpy as np
 
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope_rho_min,
                            flat_profile, frame_pressure_angle_slope, frame_pressure_angle_slope1, inverted, inverted1,
-                           inverted_relative, inverted_relative1, maximise, pressure_angle, rho_min, roller_profile)
+                           inverted_relative, inverted_relative1, maximise, pressure_angle, rho_min, roller_profile, turn_of)
 from ..cam.program import Program, parse_program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
@@ -132,22 +132,22 @@ def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> Pi
     rotation = "ccw" if inv < 0 else "cw"
     last: list = [None, None]                  # the last angles and their motion: a slope asks for both forms
 
-    def motion(d):
+    def motion(d):                             # (s, s′, s″) and the turn's (cos, sin) at d, once
         if last[0] is not None and last[0].shape == d.shape and np.array_equal(last[0], d):
             return last[1]
-        m = prog.motion(h, d, radians=True)
+        m = (prog.motion(h, d, radians=True), turn_of(d, rotation))
         last[0], last[1] = np.array(d, dtype=float), m
         return m
 
     def fn(d):
-        s, v, a = motion(d)
+        (s, v, a), cs = motion(d)
         z = np.zeros_like(d)
-        return inverted(d, rotation, (e + z, s0 + s), (z, v), (z, a))
+        return inverted(d, rotation, (e + z, s0 + s), (z, v), (z, a), cs=cs)
 
     def relative(d):
-        _, v, a = motion(d)
+        (_, v, a), cs = motion(d)
         z = np.zeros_like(d)
-        return inverted_relative(d, rotation, (z, v), (z, a))
+        return inverted_relative(d, rotation, (z, v), (z, a), cs=cs)
 
     motion1, ex = prog.motion1, e + 0.0                 # the scalar path (the same bits; e + 0 as e + zeros)
     last1 = [math.nan, (0.0, 0.0, 0.0)]
