@@ -105,10 +105,27 @@ def inverted(delta: np.ndarray, rotation: str, q: Sequence[np.ndarray], dq: Sequ
     return (c * qx - s * qy, s * qx + c * qy, c * vx - s * vy, s * vx + c * vy, c * ax - s * ay, s * ax + c * ay)
 
 
+_LAST_TURN: tuple = (None, "", None, None)
+
+
 def turn_of(delta: np.ndarray, rotation: str) -> tuple[np.ndarray, np.ndarray]:
-    """(cos kδ, sin kδ), k = −1 for a "ccw" cam, +1 for "cw": the turn of the inversion (:func:`inverted`)."""
+    """(cos kδ, sin kδ), k = −1 for a "ccw" cam, +1 for "cw": the turn of the inversion (:func:`inverted`).
+    The last angles' values are kept (a search asks for the point, its relative form and the follower's
+    axis at the same angles).
+
+    >>> d = np.array([0.5, 1.0])
+    >>> c, s = turn_of(d, "ccw")
+    >>> bool(np.all(c == np.cos(-d))) and bool(np.all(s == np.sin(-d))) and turn_of(d.copy(), "ccw")[0] is c
+    True
+    """
+    global _LAST_TURN
+    last, rot, c, s = _LAST_TURN
+    if rot == rotation and last is not None and last.shape == np.shape(delta) and np.array_equal(last, delta):
+        return c, s
     k = -1.0 if rotation == "ccw" else 1.0
-    return np.cos(k * delta), np.sin(k * delta)
+    c, s = np.cos(k * delta), np.sin(k * delta)
+    _LAST_TURN = (np.array(delta, dtype=float), rotation, c, s)
+    return c, s
 
 
 def inverted_relative(delta: np.ndarray, rotation: str, dq: Sequence[np.ndarray], ddq: Sequence[np.ndarray],

@@ -176,8 +176,10 @@ def _face_family(prog: Program, h: float, r0: float, inv: float) -> LineFamily:
 
 
 def _axis(inv: float, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Unit direction of the follower's motion in its inverted position."""
-    return -np.sin(inv * d), np.cos(inv * d)
+    """Unit direction of the follower's motion in its inverted position: (−sin(inv·δ), cos(inv·δ)), from the
+    inversion's turn (:func:`~geomcon.cam.profile.turn_of`, k = inv: the same numbers, computed once)."""
+    c, s = turn_of(d, "ccw" if inv < 0 else "cw")
+    return -s, c
 
 
 def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float) -> Extremum:
