@@ -55,7 +55,7 @@ from typing import Callable
 
 import numpy as np
 
-from .profile import PitchCurve
+from .profile import PitchCurve, sign1
 from .program import Program, Segment
 
 GRID = 240
@@ -94,6 +94,25 @@ def segment_motion(seg: Segment, level: float, h: float, x) -> Motion:
     sign = 1.0 if seg.kind == "rise" else -1.0
     span, hr = math.radians(seg.angle), math.radians(h)
     return Motion(delta, math.radians(level) + sign * hr * f, sign * hr * f1 / span, sign * hr * f2 / span ** 2)
+
+
+def segment_motion1(seg: Segment, level: float, h: float, x: float) -> tuple[float, float, float, float]:
+    """:func:`segment_motion` at one fraction ``x``, on floats: (δ, ψ, ψ′, ψ″), the same operations in the
+    same order, so the same bits (the searches' scalar path).
+
+    >>> from geomcon.cam.laws import law
+    >>> seg = Segment("return", 30.0, 120.0, law("cosine"))
+    >>> m = segment_motion(seg, 20.0, 20.0, [0.3])
+    >>> segment_motion1(seg, 20.0, 20.0, 0.3) == (float(m.delta[0]), float(m.psi[0]), float(m.d1[0]), float(m.d2[0]))
+    True
+    """
+    delta = math.radians(seg.start) + math.radians(seg.angle) * x
+    if seg.kind == "dwell":
+        return delta, math.radians(level), 0.0, 0.0
+    f, f1, f2 = seg.law.fn1(x)
+    sign = 1.0 if seg.kind == "rise" else -1.0
+    span, hr = math.radians(seg.angle), math.radians(h)
+    return delta, math.radians(level) + sign * hr * f, sign * hr * f1 / span, sign * hr * f2 / span ** 2
 
 
 def levels(program: Program, h: float) -> list[float]:
@@ -180,18 +199,22 @@ class ArmMotion:
         return Motion(d, np.radians(s), np.radians(v), np.radians(acc))
 
     def segment_max(self, kind: str, g: Callable[[Motion], np.ndarray],
-                    slope: Callable[[Motion], np.ndarray]) -> tuple[float, float]:
+                    slope: Callable[[Motion], np.ndarray],
+                    slope1: Callable[[tuple[float, float, float, float]], float] | None = None) -> tuple[float, float]:
         """(max of ``g``, δ in degrees where it is reached) over the ``kind`` ("rise" or "return") segment.
 
         Candidates are the ends of each smooth piece (one-sided values) and the interior roots of ``slope``
         (a function with the sign of dg/dδ), located by bisection on its sign. Ties go to the smaller cam
-        angle.
+        angle. ``slope1``, the slope of one motion (δ, ψ, ψ′, ψ″) of :func:`segment_motion1` with the same
+        bits as ``slope``, bisects each bracket on floats (the same steps, so the same roots).
         """
         k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
         seg, level = self.program.segments[k], levels(self.program, self.h)[k]
         best = (-math.inf, 0.0)
+        h = self.h
+        fn1 = None if slope1 is None else lambda x: slope1(segment_motion1(seg, level, h, x))
         for x0, x1 in pieces(seg):
-            roots = _roots(lambda x: slope(segment_motion(seg, level, self.h, x)), x0, x1)
+            roots = _roots(lambda x: slope(segment_motion(seg, level, self.h, x)), x0, x1, fn1=fn1)
             m = segment_motion(seg, level, self.h, roots + [x0, x1])
             for a, delta in zip(g(m), np.degrees(m.delta)):
                 if a > best[0] + 1e-13 or (abs(a - best[0]) <= 1e-13 and delta < best[1]):
@@ -320,7 +343,22 @@ class OscillatingCam(ArmMotion):
                 return np.sign(n) * (n1 * d - n * d1)
             return self.pressure_arg_slope(m)
 
-        return self.segment_max(kind, alpha, slope)
+        return self.segment_max(kind, alpha, slope, self._tan_slope1() if route == "tan" else None)
+
+    def _tan_slope1(self) -> Callable[[tuple[float, float, float, float]], float]:
+        """The "tan" route's slope sign(N)(N′D − ND′) of one motion (δ, ψ, ψ′, ψ″), on floats: the operations
+        of :meth:`tan_pressure_parts` in their order (the same bits)."""
+        psi0, eps, L, a = self.psi0, self.eps, self.L, self.a
+
+        def slope1(m):
+            _, psi, d1, d2 = m
+            phi = psi0 + psi
+            c, s = math.cos(phi), math.sin(phi)
+            n = L * (1.0 - eps * d1) - a * c
+            d = a * s
+            return sign1(n) * ((-eps * L * d2 + a * s * d1) * d - n * (a * c * d1))
+
+        return slope1
 
     # ------------------------------------------------------------------ curvature
     def convex_curvature_of(self, m: Motion) -> np.ndarray:
@@ -339,9 +377,42 @@ class OscillatingCam(ArmMotion):
         u, v = c1 - 1j * self.sigma * c, c2 - 2j * self.sigma * c1 - c
         return -self.sigma * np.imag(np.conj(u) * v) / np.abs(u) ** 3
 
-    def pitch_curve(self) -> PitchCurve:
-        """The pitch curve as a :class:`~geomcon.cam.profile.PitchCurve` (parameter δ in radians)."""
-        return PitchCurve(lambda d: self.pitch_of(self.motion_rad(d)), self.breaks())
+    def pitch_curve(self, *, scalar: bool = False) -> PitchCurve:
+        """The pitch curve as a :class:`~geomcon.cam.profile.PitchCurve` (parameter δ in radians); with
+        ``scalar``, also on one float (:meth:`pitch1`: the searches' scalar path, the same bits)."""
+        return PitchCurve(lambda d: self.pitch_of(self.motion_rad(d)), self.breaks(),
+                          fn1=self.pitch1_fn() if scalar else None)
+
+    def pitch1_fn(self) -> Callable[[float], tuple[float, float, float, float, float, float]]:
+        """:meth:`pitch_of` ∘ :meth:`motion_rad` at one cam angle (radians), on floats: the same operations
+        in the same order (squares as products, as numpy's), so the same bits.
+
+        >>> from geomcon.cam.program import parse_program
+        >>> prog = parse_program([{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60},
+        ...                       {"kind": "return", "angle": 120, "law": "poly345"}, {"kind": "dwell", "angle": 60}])
+        >>> cam = OscillatingCam(a=150.0, L=132.0, r0=50.0, h=20.0, program=prog)
+        >>> d = np.array([0.3, 2.5, 4.0])
+        >>> vec = cam.pitch_of(cam.motion_rad(d))
+        >>> all(cam.pitch1_fn()(x) == tuple(float(v[i]) for v in vec) for i, x in enumerate(d.tolist()))
+        True
+        """
+        sg, tu, a, L, psi0 = self.sigma, self.tau, self.a, self.L, self.psi0
+        motion1, h, rad, cos, sin = self.program.motion1, self.h, math.radians, math.cos, math.sin
+        half_pi = math.pi / 2
+
+        def fn1(delta):
+            s, v, acc = motion1(h, delta, True)
+            psi, d1, d2 = rad(s), rad(v), rad(acc)
+            ta = half_pi - sg * delta
+            t2 = ta + tu * (psi0 + psi)
+            w2 = -sg + tu * d1
+            ca, sa, c2, s2 = cos(ta), sin(ta), cos(t2), sin(t2)
+            ww = w2 * w2
+            return (a * ca - L * c2, a * sa - L * s2,
+                    -sg * a * -sa - L * w2 * -s2, -sg * a * ca - L * w2 * c2,
+                    -a * ca - L * tu * d2 * -s2 + L * ww * c2, -a * sa - L * tu * d2 * c2 + L * ww * s2)
+
+        return fn1
 
     def rho(self, delta) -> np.ndarray:
         """Signed radius of curvature ρ of the pitch curve (mm) at ``delta`` (deg); ±inf where straight."""
@@ -367,9 +438,11 @@ class OscillatingCam(ArmMotion):
         return x - rr * ox, y - rr * oy
 
 
-def _roots(fn: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
+def _roots(fn: Callable, x0: float, x1: float, n: int = GRID, fn1: Callable[[float], float] | None = None
+           ) -> list[float]:
     """Interior points of [x0, x1) where ``fn`` changes sign, refined by bisection to the last bit (all
-    brackets at once: one call of ``fn`` per halving, whatever their number). The grid is denser towards the
+    brackets at once: one call of ``fn`` per halving, whatever their number; or, with ``fn1``, ``fn`` on one
+    float with the same bits, each bracket by the same halvings on floats). The grid is denser towards the
     ends (1e-3 … 1e-9 of the piece), where a law starting or ending at rest makes the slope 0 and a maximum
     may hide within the first or last cell.
 
@@ -381,6 +454,8 @@ def _roots(fn: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
     g = fn(xs)
     i = np.nonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]
     lo, hi, s_lo = xs[i].astype(float), xs[i + 1].astype(float), np.sign(g[i])
+    if fn1 is not None:
+        return [bisect_sign1(fn1, a, b, sa) for a, b, sa in zip(lo.tolist(), hi.tolist(), s_lo.tolist())]
     while lo.size:
         mid = 0.5 * (lo + hi)
         live = (mid > lo) & (mid < hi)
@@ -389,6 +464,24 @@ def _roots(fn: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:
         same = np.sign(fn(mid)) == s_lo
         lo, hi = np.where(live & same, mid, lo), np.where(live & ~same, mid, hi)
     return lo.tolist()
+
+
+def bisect_sign1(fn1: Callable[[float], float], lo: float, hi: float, s_lo: float) -> float:
+    """The bracket [lo, hi] of a sign change of ``fn1`` (its sign at lo is ``s_lo``) halved on floats until lo
+    and hi are adjacent; returns lo (the steps of :func:`_roots` for one bracket).
+
+    >>> x = bisect_sign1(math.cos, 1.0, 2.0, 1.0)
+    >>> x == _roots(np.cos, 1.0, 2.0)[0]
+    True
+    """
+    while True:
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            return lo
+        if sign1(fn1(mid)) == s_lo:
+            lo = mid
+        else:
+            hi = mid
 
 
 def _golden_maxima(f: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:

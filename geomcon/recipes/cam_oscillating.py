@@ -251,7 +251,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("psi_max", angle_deg, At, Ct, Bt, role=Role.MEASUREMENT, unit="deg",
            caption=(f"Measure the stroke ψmax = ∠CA0′B at the end of the rise, δ = {top:g}°",
                     f"量得推程终点(δ = {top:g}°)的最大摆角 ψmax = ∠CA0′B"))
-    curve = sc.given("pitch", cam.pitch_curve(), visible=False)
+    curve = sc.given("pitch", cam.pitch_curve(scalar=True), visible=False)
     sc.add("pitch_curve", pitch_polyline, curve, style="frame" if roller else "link", role=Role.RESULT,
            caption=("Join B1, B2, … by a smooth curve: the pitch curve" + ("" if roller else " (the knife edge's profile)"),
                     "将 B1、B2 … 连成光滑曲线,即理论廓线" + ("" if roller else "(尖顶从动件的实际廓线)")))
