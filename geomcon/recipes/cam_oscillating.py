@@ -33,7 +33,7 @@ from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, A
                          extremum_value, laid_off, minus, normal_segment, pick,
                          pitch_polyline, pressure_mark, profile_tolerance, program_of, speed_ratio, turned,
                          velocity_segment)
-from .cam_oscillating_flat import analytic_flat, construct_flat, validate_flat
+from .cam_oscillating_flat import advise_flat, analytic_flat, construct_flat, validate_flat
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg
 
 GIVENS = (
@@ -127,9 +127,9 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
 
 def _advise(g: Mapping[str, Any]) -> list[str]:
     """The warnings that cost a search (the arm hitting its pivot, α_max against the allowance, undercut): made
-    only when the warnings are asked for (the flat-faced arm's are made by its validation)."""
+    only when the warnings are asked for (a flat-faced arm's: :func:`advise_flat`)."""
     if g["follower"] == "flat":
-        return []
+        return advise_flat(g)
     a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
     cam = cam_of(g)
     psi0 = math.degrees(psi0_rad(a, L, r0))

@@ -38,7 +38,8 @@ def flat_cam_of(g: Mapping[str, Any]) -> FlatArmCam:
 
 def validate_flat(g: Mapping[str, Any]) -> list[str]:
     """Refuse a flat-faced arm that cannot work (no tangent lowest position, the face turning past the
-    perpendicular to A0O, the contact running off to infinity); warn about the allowance and convexity."""
+    perpendicular to A0O, the contact running off to infinity). The warnings, which cost searches of the
+    twin's, are :func:`advise_flat`'s."""
     for name, why in (("L", "the face's reach is the answer face_max"), ("rr", "only a roller follower has a roller")):
         if g.get(name) is not None:
             raise NotAMechanism(f"{name} = {g[name]:g} is given for a flat-faced arm: it is not used ({why}); "
@@ -60,6 +61,14 @@ def validate_flat(g: Mapping[str, Any]) -> list[str]:
     if w <= FLAT_SPEED_MIN:
         raise NotAMechanism(f"1 − εψ′ = {w:.6g} at δ = {at:.6g}°: the arm swings as fast as the face turns with the "
                             "cam, the contact runs off to infinity along the face")
+    return []
+
+
+def advise_flat(g: Mapping[str, Any]) -> list[str]:
+    """The flat-faced arm's warnings (the profile reaching the pivot, α_max against the allowance, a profile
+    the face cannot follow): made only when the warnings are asked for, never for answers alone."""
+    cam = flat_cam_of(g)
+    a = cam.a
     out = []
     d = np.linspace(0.0, 360.0, 3601)
     reach = float(np.hypot(*cam.contact_point(d)).max())
