@@ -938,10 +938,12 @@ LineFn = Callable[[np.ndarray], tuple[np.ndarray, ...]]
 class LineFamily:
     """A one-parameter family of lines X·n(δ) = p(δ), n = (cos φ, sin φ) pointing away from the cam body:
     ``fn(delta) -> (φ, φ′, φ″, p, p′, p″)`` (radians, derivatives by δ), with ``breaks`` as for
-    :class:`PitchCurve`. The face of a flat-faced follower in its inverted positions is such a family."""
+    :class:`PitchCurve`. The face of a flat-faced follower in its inverted positions is such a family.
+    ``fn1``, when given, is ``fn`` on one float returning floats with the same bits (the scalar path)."""
 
     fn: LineFn
     breaks: tuple[float, ...] = ()
+    fn1: Callable[[float], tuple[float, float, float, float, float, float]] | None = None
 
     def pieces(self) -> list[tuple[float, float]]:
         """The smooth pieces of the turn."""
@@ -994,9 +996,52 @@ def contact_slope(fam: LineFamily, delta) -> np.ndarray:
     return (ddp * dphi - dp * ddphi) / dphi ** 2
 
 
+def envelope1(f6: tuple[float, float, float, float, float, float]) -> tuple[float, float, float, float]:
+    """:func:`envelope` of one line's (φ, φ′, φ″, p, p′, p″), on floats: the same operations (φ′³ by numpy's
+    power on one element, which math's pow does not always match), so the same bits.
+
+    >>> fam = LineFamily(lambda d: (d, 1.3 + 0 * d, 0.2 + 0 * d, 30 + np.sin(d), np.cos(d), -np.sin(d)))
+    >>> d = np.array([0.7])
+    >>> envelope1(tuple(float(v[0]) for v in fam.eval(d))) == tuple(float(v[0]) for v in envelope(fam, d))
+    True
+    """
+    phi, dphi, ddphi, p, dp, ddp = f6
+    lam = div1(dp, dphi)
+    rho = p + div1(ddp * dphi - dp * ddphi, pow1(dphi, 3.0))
+    c, s = math.cos(phi), math.sin(phi)
+    return p * c - lam * s, p * s + lam * c, lam, rho
+
+
+def div1(a: float, b: float) -> float:
+    """a / b as numpy divides floats: ±inf or nan for a zero divisor instead of an exception.
+
+    >>> div1(1.0, 4.0), div1(-1.0, 0.0), math.isnan(div1(0.0, 0.0))
+    (0.25, -inf, True)
+    """
+    if b != 0.0:
+        return a / b
+    if a == 0.0 or a != a:
+        return math.nan
+    return math.copysign(math.inf, a) * math.copysign(1.0, b)
+
+
+def pow1(x: float, y: float) -> float:
+    """x ** y as numpy computes it on arrays (its own power routine, not always math's bits), for one float.
+
+    >>> pow1(1.1, 3.0) == float((np.array([1.1]) ** 3.0)[0])
+    True
+    """
+    one = np.empty(1)
+    one[0] = x
+    return float(np.power(one, y)[0])
+
+
 def envelope_rho_min(fam: LineFamily) -> Extremum:
-    """The smallest radius of curvature ρ of the envelope over the turn (≤ 0: not convex), and where."""
-    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces())
+    """The smallest radius of curvature ρ of the envelope over the turn (≤ 0: not convex), and where (with
+    the family's scalar form, its peaks refined by Brent on floats: :func:`maximise`)."""
+    fn1 = fam.fn1
+    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces(),
+                   g1=None if fn1 is None else lambda d: -envelope1(fn1(d))[3])
     return Extremum(-low.value, low.delta)
 
 
@@ -1079,7 +1124,7 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
            "inverted_relative", "turn_of", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
-           "illinois1", "brent_max1", "sign1", "corners", "sample_count",
+           "illinois1", "brent_max1", "sign1", "envelope1", "pow1", "div1", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
            "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]

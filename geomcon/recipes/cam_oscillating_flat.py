@@ -13,7 +13,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from ..cam.oscillating_flat import END_TIE, FlatArmCam
-from ..cam.profile import Extremum, LineFamily, envelope, envelope_rho_min, flat_profile, maximise
+from ..cam.profile import Extremum, LineFamily, envelope, envelope1, envelope_rho_min, flat_profile, maximise
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, line_through,
                         segment, thales_circle)
@@ -94,14 +94,31 @@ def flat_family(cam: FlatArmCam) -> LineFamily:
     """The face in its inverted positions as lines X·n = p: normal angle β = θA + τ(φ − 90°) (θA = 90° − σδ the
     polar angle of A0′), p = a sin φ − f, exact derivatives from the motion."""
 
+    last: list = [None, None]                  # the last angles and their lines (a search asks twice)
+
     def fn(d):
+        if last[0] is not None and last[0].shape == np.shape(d) and np.array_equal(last[0], d):
+            return last[1]
         m = cam.motion_rad(d)
         phi = cam.psi0 + m.psi
         c, s = np.cos(phi), np.sin(phi)
-        return (math.pi / 2 - cam.sigma * d + cam.tau * (phi - math.pi / 2), -cam.sigma + cam.tau * m.d1,
-                cam.tau * m.d2, cam.a * s - cam.offset, cam.a * c * m.d1, cam.a * (c * m.d2 - s * m.d1 ** 2))
+        out = (math.pi / 2 - cam.sigma * d + cam.tau * (phi - math.pi / 2), -cam.sigma + cam.tau * m.d1,
+               cam.tau * m.d2, cam.a * s - cam.offset, cam.a * c * m.d1, cam.a * (c * m.d2 - s * m.d1 ** 2))
+        last[0], last[1] = np.array(d, dtype=float), out
+        return out
 
-    return LineFamily(fn, cam.breaks())
+    psi0, sigma, tau, a, f = cam.psi0, cam.sigma, cam.tau, cam.a, cam.offset
+    motion1, h, rad, half_pi = cam.program.motion1, cam.h, math.radians, math.pi / 2
+
+    def fn1(d):                                # the same on one float (the same bits; ψ′² as a product)
+        sv, v, acc = motion1(h, d, True)
+        psi, d1, d2 = rad(sv), rad(v), rad(acc)
+        phi = psi0 + psi
+        c, s = math.cos(phi), math.sin(phi)
+        return (half_pi - sigma * d + tau * (phi - half_pi), -sigma + tau * d1, tau * d2, a * s - f, a * c * d1,
+                a * (c * d2 - s * (d1 * d1)))
+
+    return LineFamily(fn, cam.breaks(), fn1)
 
 
 def _pivot_path(A0: Point, inv: float, d: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -132,6 +149,34 @@ def face_place_slope(fam: LineFamily, A0: Point, inv: float, tau: int, d) -> np.
     return -tau * rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
 
 
+def _pivot_path1(A0: Point, inv: float, d: float) -> tuple[float, float, float, float]:
+    """:func:`_pivot_path` at one cam angle, on floats (the same bits)."""
+    c, s = math.cos(inv * d), math.sin(inv * d)
+    x, y = c * A0.x - s * A0.y, s * A0.x + c * A0.y
+    return x, y, -inv * y, inv * x
+
+
+def face_place_slope1(fam: LineFamily, A0: Point, inv: float, tau: int, d: float) -> float:
+    """:func:`face_place_slope` at one cam angle, on floats, from the family's scalar form (the same bits).
+
+    >>> from geomcon.cam.oscillating_flat import FlatArmCam
+    >>> from geomcon.cam.program import parse_program
+    >>> prog = parse_program([{"kind": "rise", "angle": 150, "law": "cycloidal"}, {"kind": "dwell", "angle": 30},
+    ...                       {"kind": "return", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60}])
+    >>> fam = flat_family(FlatArmCam(100.0, 40.0, 15.0, prog))
+    >>> d = np.array([0.4, 1.9, 3.7])
+    >>> vec = face_place_slope(fam, Point(0.0, 100.0), -1.0, -1, d)
+    >>> [face_place_slope1(fam, Point(0.0, 100.0), -1.0, -1, x) for x in d.tolist()] == vec.tolist()
+    True
+    """
+    f6 = fam.fn1(d)
+    x, y, _, rho = envelope1(f6)
+    beta, db = f6[0], f6[1]
+    ax, ay, vx, vy = _pivot_path1(A0, inv, d)
+    c, s = math.cos(beta), math.sin(beta)
+    return -tau * rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
+
+
 def _segment_pieces(fam: LineFamily, seg: Any) -> list[tuple[float, float]]:
     lo, hi = math.radians(seg.start), math.radians(seg.end)
     return [(a, b) for a, b in fam.pieces() if a >= lo - 1e-12 and b <= hi + 1e-12]
@@ -140,9 +185,12 @@ def _segment_pieces(fam: LineFamily, seg: Any) -> list[tuple[float, float]]:
 def face_extremes(fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any = None) -> tuple[Extremum, Extremum]:
     """(nearest, farthest) place of the contact along the face over a segment (default: the turn)."""
     pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
-    hi = maximise(lambda d: face_place(fam, A0, inv, tau, d), pcs, slope=lambda d: face_place_slope(fam, A0, inv, tau, d))
+    scalar = fam.fn1 is not None
+    hi = maximise(lambda d: face_place(fam, A0, inv, tau, d), pcs, slope=lambda d: face_place_slope(fam, A0, inv, tau, d),
+                  slope1=(lambda d: face_place_slope1(fam, A0, inv, tau, d)) if scalar else None)
     lo = maximise(lambda d: -face_place(fam, A0, inv, tau, d), pcs,
-                  slope=lambda d: -face_place_slope(fam, A0, inv, tau, d))
+                  slope=lambda d: -face_place_slope(fam, A0, inv, tau, d),
+                  slope1=(lambda d: -face_place_slope1(fam, A0, inv, tau, d)) if scalar else None)
     if seg is not None:                 # a minimum as flat as roundoff at an end of the segment: the end
         ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
         for lv, d in zip(face_place(fam, A0, inv, tau, ends), ends):
