@@ -55,7 +55,7 @@ from typing import Callable
 
 import numpy as np
 
-from .profile import PitchCurve, sign1
+from .profile import PitchCurve, brent_max1, sign1
 from .program import Program, Segment
 
 GRID = 240
@@ -221,14 +221,29 @@ class ArmMotion:
                     best = (float(a), float(delta))
         return best
 
-    def turn_max(self, f: Callable[[Motion], np.ndarray]) -> tuple[float, float]:
+    def turn_max(self, f: Callable[[Motion], np.ndarray],
+                 f1: Callable[[tuple[float, float, float, float]], float] | None = None) -> tuple[float, float]:
         """(max of ``f``, δ in degrees) over the turn: the ends of every smooth piece and every grid maximum
-        inside refined by golden-section search (dwells: their ends)."""
+        inside refined by golden-section search (dwells: their ends). With ``f1`` (``f`` of one motion (δ, ψ,
+        ψ′, ψ″) of :func:`segment_motion1`, on floats) the grid maxima are refined by Brent's method on
+        floats (:func:`~geomcon.cam.profile.brent_max1`, to the same tolerance) and every candidate is valued
+        by ``f1``: no array call but one grid per piece."""
         best = (-math.inf, 0.0)
-        for seg, level in zip(self.program.segments, levels(self.program, self.h)):
+        h = self.h
+        for seg, level in zip(self.program.segments, levels(self.program, h)):
             for x0, x1 in pieces(seg):
                 def fx(x, seg=seg, level=level):
-                    return f(segment_motion(seg, level, self.h, x))
+                    return f(segment_motion(seg, level, h, x))
+                if f1 is not None:
+                    def fx1(x, seg=seg, level=level):
+                        return f1(segment_motion1(seg, level, h, x))
+                    found = [(x0, fx1(x0)), (x1, fx1(x1))]
+                    if seg.kind != "dwell":
+                        found += _brent_maxima(fx, fx1, x0, x1)
+                    for x, val in found:
+                        if val > best[0]:
+                            best = (val, seg.start + seg.angle * float(x))
+                    continue
                 xs = (x0, x1) if seg.kind == "dwell" else _golden_maxima(fx, x0, x1)
                 for x in xs:
                     val = float(fx(np.asarray([x]))[0])
@@ -482,6 +497,26 @@ def bisect_sign1(fn1: Callable[[float], float], lo: float, hi: float, s_lo: floa
             lo = mid
         else:
             hi = mid
+
+
+def _brent_maxima(f: Callable, f1: Callable[[float], float], x0: float, x1: float, n: int = GRID
+                  ) -> list[tuple[float, float]]:
+    """(place, value) of every grid maximum of ``f`` in [x0, x1) (as :func:`_golden_maxima` finds them: the
+    grid in one array call) refined by Brent's method on ``f1`` (``f`` on one float) to the same tolerance,
+    1e-12 of the place.
+
+    >>> [(round(x, 6), round(v, 12)) for x, v in _brent_maxima(np.sin, math.sin, 0.0, 10.0)]
+    [(1.570796, 1.0), (7.853982, 1.0)]
+    """
+    xs = piece_grid(x0, x1, n)
+    v = f(xs)
+    left = np.concatenate([[-np.inf], v[:-1]])
+    right = np.concatenate([v[1:], [-np.inf]])
+    out = []
+    for i in np.nonzero((v > left) & (v >= right))[0].tolist():
+        lo, hi = float(xs[max(i - 1, 0)]), float(xs[min(i + 1, n - 1)])
+        out.append(brent_max1(f1, lo, float(xs[i]), hi, float(v[i]), 1e-12 * max(1.0, abs(hi))))
+    return out
 
 
 def _golden_maxima(f: Callable, x0: float, x1: float, n: int = GRID) -> list[float]:

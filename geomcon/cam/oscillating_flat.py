@@ -210,5 +210,6 @@ class FlatArmCam(ArmMotion):
     def speed_min(self) -> tuple[float, float]:
         """(min of 1 − εψ′, δ in degrees) over the turn: ≤ 0 means the face stops turning relative to the
         cam and the contact runs off to infinity."""
-        v, at = self.turn_max(lambda m: -self.speed(m))
+        eps = self.eps
+        v, at = self.turn_max(lambda m: -self.speed(m), lambda m: -(1.0 - eps * m[2]))
         return -v, at
