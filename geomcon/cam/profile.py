@@ -349,14 +349,14 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
             # values that tie to roundoff (α nearly constant over a long piece) must not pick the wrong end
             places += [float(d[0])] if not sl[0] > noise else []
             places += [float(d[-1])] if not sl[-1] < -noise else []
-            for i in np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0].tolist():
-                if max(abs(sl[i]), abs(sl[i + 1])) <= noise:      # roundoff (a dwell): the sample stands
-                    places.append(float(d[i]))
-                else:
-                    lo.append(float(d[i]))
-                    hi.append(float(d[i + 1]))
-                    flo.append(float(sl[i]))
-                    fhi.append(float(sl[i + 1]))
+            i = np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0]
+            flat = np.maximum(np.abs(sl[i]), np.abs(sl[i + 1])) <= noise   # roundoff (a dwell): the sample stands
+            places += d[i[flat]].tolist()
+            i = i[~flat]
+            lo += d[i].tolist()
+            hi += d[i + 1].tolist()
+            flo += sl[i].tolist()
+            fhi += sl[i + 1].tolist()
         if slope1 is not None:
             places += [illinois1(slope1, *bracket) for bracket in zip(lo, hi, flo, fhi)]
         else:

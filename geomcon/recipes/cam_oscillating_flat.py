@@ -142,10 +142,12 @@ def face_place_slope(fam: LineFamily, A0: Point, inv: float, tau: int, d) -> np.
     """d/dδ of :func:`face_place` from the envelope: K slides along the face at ρ·β′ (t·u = −τ), u turns at β′
     (u′ = β′·τ·n), A0′ moves: l′ = −τρβ′ + τβ′(K − A0′)·n − A0′′·u."""
     d = np.asarray(d, dtype=float)
-    x, y, _, rho = envelope(fam, d)
-    beta, db = fam.eval(d)[:2]
-    ax, ay, vx, vy = _pivot_path(A0, inv, d)
+    beta, db, ddb, p, dp, ddp = fam.eval(d)
     c, s = np.cos(beta), np.sin(beta)
+    lam = dp / db                                   # the envelope (:func:`envelope`, the same operations),
+    rho = p + (ddp * db - dp * ddb) / db ** 3       # its cos and sin of β computed once for both
+    x, y = p * c - lam * s, p * s + lam * c
+    ax, ay, vx, vy = _pivot_path(A0, inv, d)
     return -tau * rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
 
 
@@ -154,6 +156,15 @@ def _pivot_path1(A0: Point, inv: float, d: float) -> tuple[float, float, float, 
     c, s = math.cos(inv * d), math.sin(inv * d)
     x, y = c * A0.x - s * A0.y, s * A0.x + c * A0.y
     return x, y, -inv * y, inv * x
+
+
+def face_place1(fam: LineFamily, A0: Point, inv: float, tau: int, d: float) -> float:
+    """:func:`face_place` at one cam angle, on floats, from the family's scalar form (the same bits)."""
+    f6 = fam.fn1(d)
+    x, y = envelope1(f6)[:2]
+    beta = f6[0]
+    ax, ay = _pivot_path1(A0, inv, d)[:2]
+    return (x - ax) * tau * math.sin(beta) - (y - ay) * tau * math.cos(beta)
 
 
 def face_place_slope1(fam: LineFamily, A0: Point, inv: float, tau: int, d: float) -> float:
@@ -186,14 +197,25 @@ def face_extremes(fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any = N
     """(nearest, farthest) place of the contact along the face over a segment (default: the turn)."""
     pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
     scalar = fam.fn1 is not None
-    hi = maximise(lambda d: face_place(fam, A0, inv, tau, d), pcs, slope=lambda d: face_place_slope(fam, A0, inv, tau, d),
+    last: list = [None, None]
+
+    def place(d):                       # a few places (the candidates) one by one on the scalar path
+        if scalar and d.size <= 16:
+            return np.array([face_place1(fam, A0, inv, tau, x) for x in d.tolist()])
+        return face_place(fam, A0, inv, tau, d)
+
+    def slope(d):                       # the nearest and the farthest search the same samples: once
+        if last[0] is None or last[0].shape != d.shape or not np.array_equal(last[0], d):
+            last[0], last[1] = np.array(d, dtype=float), face_place_slope(fam, A0, inv, tau, d)
+        return last[1]
+
+    hi = maximise(place, pcs, slope=slope,
                   slope1=(lambda d: face_place_slope1(fam, A0, inv, tau, d)) if scalar else None)
-    lo = maximise(lambda d: -face_place(fam, A0, inv, tau, d), pcs,
-                  slope=lambda d: -face_place_slope(fam, A0, inv, tau, d),
+    lo = maximise(lambda d: -place(d), pcs, slope=lambda d: -slope(d),
                   slope1=(lambda d: -face_place_slope1(fam, A0, inv, tau, d)) if scalar else None)
     if seg is not None:                 # a minimum as flat as roundoff at an end of the segment: the end
         ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
-        for lv, d in zip(face_place(fam, A0, inv, tau, ends), ends):
+        for lv, d in zip(place(ends), ends):
             if lv <= -lo.value + END_TIE * A0.y:
                 lo = Extremum(-float(lv), float(d))
                 break
