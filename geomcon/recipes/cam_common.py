@@ -210,7 +210,10 @@ def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, wid
                        divisions: Sequence[float], *, symbol: str = "s", unit: str = "mm") -> None:
     """The s–δ diagram beside the cam, in model mm: δ axis ``width`` long for 360°, s drawn ``scale`` mm
     per unit of h (1 for a translating follower: the displacements carry over with the compasses), the
-    curve, and the division lines 1, 2, … from the δ axis up to the curve."""
+    curve, and the division lines 1, 2, … from the δ axis up to the curve. Drawing only: a lean scene (answers)
+    does not get these steps (:attr:`~geomcon.scene.Scene.drawing`)."""
+    if not sc.drawing:
+        return
     per_deg = width / 360.0
 
     def at(d: float, s: float) -> Point:
@@ -258,7 +261,9 @@ def add_profile_steps(sc: Scene, make: Callable[..., Profile], args: tuple, capt
 
 
 def add_roller_circles(sc: Scene, centres: Sequence[Ref], rr: float) -> None:
-    """A few roller circles about pitch points (their inner envelope is the actual profile)."""
+    """A few roller circles about pitch points (their inner envelope is the actual profile); drawing only."""
+    if not sc.drawing:
+        return
     for i, c in enumerate(centres):
         sc.add(f"roller{i}", circle, c, rr, style="path",
                caption=(f"Roller circles of radius rr = {rr:g} about points of the pitch curve",

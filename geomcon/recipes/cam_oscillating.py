@@ -206,6 +206,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     rr = float(g.get("rr") or 0.0)
     back = ("clockwise", "顺时针") if cam.sigma > 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with an oscillating {g['follower']} follower: inversion")
+    drawing = sc.drawing                    # the arcs and ghost arms of the divisions: drawing only
     O = add_cam_centre(sc)
     A0 = add_pivot(sc, "A0", Point(0.0, a), (f"Arm pivot A0 with OA0 = a = {a:g}", f"摆杆转轴 A0,OA0 = a = {a:g}"),
                    ground_angle=math.pi / 2)
@@ -238,14 +239,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
             f"Arcs of radius L about 1′ … {n}′ meet the base circle at C1 … C{n} (the arm's initial position "
             "turned with the frame)", f"以 1′ … {n}′ 为圆心、L 为半径作弧交基圆于 C1 … C{n}(摆杆起始位置随机架反转)")
             if i == 1 else ("", "")))
-        sc.add(f"arc_d{i}", circle, A, L)
+        if drawing:
+            sc.add(f"arc_d{i}", circle, A, L)
     Bs = []
     for i, (A, C, d) in enumerate(zip(As, Cs, divs), 1):
         Bs.append(sc.add(f"B_d{i}", laid_off, C, A, cam, d, style="point", caption=(
             "Lay off the arm angles ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, …: ∠CiA0′Bi = ψi, A0′Bi = L, "
             "points B1 … B" + str(n), "在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …:∠Ci A0′ Bi = ψi,得 B1 … B"
             + str(n)) if i == 1 else ("", "")))
-        sc.add(f"arm_d{i}", segment, A, Bs[-1], style="ghost")
+        if drawing:
+            sc.add(f"arm_d{i}", segment, A, Bs[-1], style="ghost")
     top = prog.rise.end
     At, Ct, Bt = inv.position("top", top, visible=False)
     sc.add("psi_max", angle_deg, At, Ct, Bt, role=Role.MEASUREMENT, unit="deg",

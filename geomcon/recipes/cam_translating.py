@@ -322,13 +322,15 @@ def construct(g: Mapping[str, Any]) -> Construction:
     B0 = sc.given("B0", Point(e, s0), label="B0", style="joint",
                   caption=(f"B0: the follower's lowest point, on its axis x = e = {e:g}",
                            f"B0:从动件最低位置,导路 x = e = {e:g}"))
-    _start_follower(sc, follower, e, s0, h, rr, r0, B0)
+    drawing = sc.drawing                    # the follower, the s–δ diagram and the turned axes: drawing only
+    if drawing:
+        _start_follower(sc, follower, e, s0, h, rr, r0, B0)
     divs = division_angles(prog)
     R = r0 + h + rr
     add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 3.0 * R, 1.0, divs)
     # the inversion: the follower's axis turned about O by −δ (ccw cam) to every division
     foot = Point(e, 0.0)
-    for i, dv in enumerate(divs, 1):
+    for i, dv in enumerate(divs, 1) if drawing else ():
         K = sc.add(f"K{i}", turned, foot, O, inv, dv, visible=False)
         E = sc.add(f"E{i}", turned, Point(e, s0 + h + 0.12 * r0), O, inv, dv, visible=False)
         sc.add(f"L{i}", segment, K, E, style="construction",
