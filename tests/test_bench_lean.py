@@ -20,14 +20,33 @@ def _variants(recipe: str, n: int):
         if recipe == "crank_rocker.extremes":
             yield {"AB": rng.uniform(15, 40), "BC": rng.uniform(55, 85), "CD": rng.uniform(55, 85),
                    "AD": rng.uniform(65, 95), "branch": rng.choice(["above", "below"])}
+        elif recipe == "crank_slider.extremes":
+            yield {"AB": rng.uniform(10, 120), "BC": rng.uniform(130, 300), "e": rng.uniform(0, 60)}
+        elif recipe == "guide_bar.extremes":
+            yield {"AB": rng.uniform(10, 280), "AC": rng.uniform(100, 300)}
+        elif recipe == "crank_rocker.design_by_K":
+            yield {"K": rng.uniform(1.05, 2.0), "CD": rng.uniform(100, 400), "psi": rng.uniform(10, 80),
+                   "BC": rng.uniform(100, 500)}
         else:
             yield {"K": rng.uniform(1.05, 2.0), "H": rng.uniform(20, 300), "e": rng.uniform(0, 60)}
 
 
-@pytest.mark.parametrize("recipe", sorted(PLAIN))
+BENCHED = ("crank_rocker.extremes", "crank_slider.extremes", "guide_bar.extremes", "crank_slider.design_by_K",
+           "crank_rocker.design_by_K")
+
+
+def test_every_benched_linkage_has_a_plain_replica():
+    from geomcon.bench.lean import LINKAGES
+    assert set(BENCHED) == set(PLAIN) == {recipe for _, recipe, _ in LINKAGES}
+    for _, recipe, given in LINKAGES:                       # the bench's own problems are in the replicas' forms
+        p = problem_from_dict({"recipe": recipe, "given": given}, name="x")
+        assert PLAIN[recipe](p.given).keys() == solve(p).answers.keys()
+
+
+@pytest.mark.parametrize("recipe", BENCHED)
 def test_the_plain_dag_is_the_same_construction(recipe):
     checked = 0
-    for given in _variants(recipe, 40):
+    for given in _variants(recipe, 80):
         try:
             sol = solve(problem_from_dict({"recipe": recipe, "given": given}, name="x"))
             want = sol.answers
@@ -39,6 +58,13 @@ def test_the_plain_dag_is_the_same_construction(recipe):
             assert abs(v - want[k]) <= 1e-12 * max(1.0, abs(want[k]), sol.length_scale), (given, k, v, want[k])
         checked += 1
     assert checked >= 20
+
+
+def test_a_replica_refuses_a_form_it_does_not_cover():
+    with pytest.raises(ValueError, match="covers"):
+        PLAIN["crank_rocker.design_by_K"]({"K": 1.25, "CD": 290.0, "psi": 32.0, "AB": 60.0})
+    with pytest.raises(ValueError, match="covers"):
+        PLAIN["crank_slider.design_by_K"]({"K": 1.5, "H": 50.0, "AB": 20.0})
 
 
 def test_ratios_and_verdicts_follow_from_the_times():
