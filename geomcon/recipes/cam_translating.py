@@ -18,7 +18,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope_rho_min,
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope1, envelope_rho_min,
                            flat_profile, frame_pressure_angle_slope, frame_pressure_angle_slope1, inverted, inverted1,
                            inverted_relative, inverted_relative1, maximise, pressure_angle, rho_min, roller_profile, turn_of)
 from ..cam.program import Program, parse_program
@@ -167,12 +167,24 @@ def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> Pi
 def _face_family(prog: Program, h: float, r0: float, inv: float) -> LineFamily:
     """The flat face's lines: normal n = (cos φ, sin φ), φ = 90° + inv·δ, at distance p = r0 + s from O."""
 
+    last: list = [None, None]                  # the last angles and their lines (a search asks twice)
+
     def fn(d):
+        if last[0] is not None and last[0].shape == np.shape(d) and np.array_equal(last[0], d):
+            return last[1]
         s, v, a = prog.motion(h, d, radians=True)
         z = np.zeros_like(d)
-        return math.pi / 2 + inv * d, inv + z, z, r0 + s, v, a
+        out = math.pi / 2 + inv * d, inv + z, z, r0 + s, v, a
+        last[0], last[1] = np.array(d, dtype=float), out
+        return out
 
-    return LineFamily(fn, program_breaks(prog))
+    motion1, half_pi, dphi = prog.motion1, math.pi / 2, inv + 0.0
+
+    def fn1(d):                                # the same on one float (the same bits)
+        s, v, a = motion1(h, d, True)
+        return half_pi + inv * d, dphi, 0.0, r0 + s, v, a
+
+    return LineFamily(fn, program_breaks(prog), fn1)
 
 
 def _axis(inv: float, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -236,17 +248,36 @@ def face_extents(fam: LineFamily, prog: Program, h: float, r0: float, e: float, 
     """(left, right) reach of the contact along the face from the follower's axis, measured on the envelope."""
 
     def offset(d):
+        if fam.fn1 is not None and d.size <= 16:    # a few candidates: one by one on the scalar path
+            return np.array([offset1(x) for x in d.tolist()])
         x, y, _, _ = envelope(fam, d)
         s = prog.motion(h, d, radians=True)[0]
         c, sn = np.cos(inv * d), np.sin(inv * d)
         ax, ay = c * e - sn * (r0 + s), sn * e + c * (r0 + s)          # the axis on the face
         return (x - ax) * c + (y - ay) * sn                            # along the turned +x
 
-    def slope(d):                        # the axis's own place on the face is fixed: only λ moves, t = −x̂
-        return -contact_slope(fam, d)
+    def offset1(d):                      # the same on one float (the same bits)
+        x, y, _, _ = envelope1(fam.fn1(d))
+        s = prog.motion1(h, d, True)[0]
+        c, sn = math.cos(inv * d), math.sin(inv * d)
+        ax, ay = c * e - sn * (r0 + s), sn * e + c * (r0 + s)
+        return (x - ax) * c + (y - ay) * sn
 
-    right = maximise(offset, fam.pieces(), slope=slope).value
-    left = maximise(lambda d: -offset(d), fam.pieces(), slope=lambda d: -slope(d)).value
+    last: list = [None, None]
+
+    def slope(d):                        # the axis's own place on the face is fixed: only λ moves, t = −x̂
+        if last[0] is None or last[0].shape != d.shape or not np.array_equal(last[0], d):
+            last[0], last[1] = np.array(d, dtype=float), -contact_slope(fam, d)   # both searches: once
+        return last[1]
+
+    def slope1(d):
+        _, dphi, ddphi, _, dp, ddp = fam.fn1(d)
+        return -((ddp * dphi - dp * ddphi) / (dphi * dphi))
+
+    scalar = fam.fn1 is not None
+    right = maximise(offset, fam.pieces(), slope=slope, slope1=slope1 if scalar else None).value
+    left = maximise(lambda d: -offset(d), fam.pieces(), slope=lambda d: -slope(d),
+                    slope1=(lambda d: -slope1(d)) if scalar else None).value
     return max(0.0, left), max(0.0, right)
 
 
