@@ -459,9 +459,9 @@ def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float
             secant = hi - fhi * (hi - lo) / den
             if lo < secant < hi:                    # (a nan or infinite secant fails this test)
                 m = secant
-            elif not nudged and secant == secant:   # it rounds onto an end: step just inside from that end
-                tol = _NUDGE * max(abs(lo), abs(hi), _TINY)
-                inside = hi - tol if secant >= hi else lo + tol
+            elif not nudged and secant == secant and (fhi if secant >= hi else flo) != 0.0:
+                tol = _NUDGE * max(abs(lo), abs(hi), _TINY)  # it rounds onto an end (whose value is tiny, not a
+                inside = hi - tol if secant >= hi else lo + tol   # roundoff 0): step just inside from that end
                 if lo < inside < hi:
                     m, nudge = inside, True
         if not lo < m < hi:
