@@ -1109,17 +1109,18 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
     cuts = [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]
     after = np.array(cuts)
     before = np.nextafter(np.array([b if b > 0.0 else TWO_PI for b in cuts]), 0.0)
-    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
-    lam = envelope(fam, np.concatenate([after, before, grid]))[2]
-    span = float(np.nanmax(lam) - np.nanmin(lam))
-    la, lb = lam[:len(cuts)], lam[len(cuts):2 * len(cuts)]
+    lam = envelope(fam, np.concatenate([after, before]))[2]
+    la, lb = lam[:len(cuts)], lam[len(cuts):]
     dphi = fam.eval(after)[1]
-    out = []
-    for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(), dphi.tolist()):
-        jump = (x1 - x0) * math.copysign(1.0, w)
-        if jump < -JUMP_REL * span:
-            out.append(Extremum(float(jump), b))
-    return tuple(out)
+    jumps = [(b, (x1 - x0) * math.copysign(1.0, w)) for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(), dphi.tolist())]
+    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
+    part = np.concatenate([lam, envelope(fam, grid[::90])[2]])   # the breaks and every 90th sample:
+    low = float(np.nanmax(part) - np.nanmin(part)) if not np.isnan(part).all() else math.nan   # a part of the range
+    if all(j >= -JUMP_REL * low for _, j in jumps):
+        return ()                               # no jump counts even against a part of the range: done
+    lam = np.concatenate([lam, envelope(fam, grid)[2]])
+    span = float(np.nanmax(lam) - np.nanmin(lam))
+    return tuple(Extremum(float(jump), b) for b, jump in jumps if jump < -JUMP_REL * span)
 
 
 def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> float:
