@@ -33,8 +33,8 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Callable
+from dataclasses import dataclass, field
+from typing import Any, Callable
 
 import numpy as np
 
@@ -55,6 +55,8 @@ class TranslatingCam:
     r0: float
     e: float = 0.0
     rotation: str = "ccw"
+    results: dict = field(default_factory=dict, compare=False, repr=False)
+    """The searches done so far on this cam object (α_max, ρmin, …), each once."""
 
     @property
     def k(self) -> float:
@@ -89,6 +91,9 @@ class TranslatingCam:
 
     def alpha_max(self, kind: str) -> tuple[float, float]:
         """(α_max, δ where it occurs) in degrees over the rise or the return (knife or roller)."""
+        return _memo(self, "alpha_max_" + kind, lambda: self._alpha_max(kind))
+
+    def _alpha_max(self, kind: str) -> tuple[float, float]:
         seg = self.program.rise if kind == "rise" else self.program.ret
         if seg is None:
             return 0.0, 0.0
@@ -102,7 +107,14 @@ class TranslatingCam:
             E = v - self.k * self.e
             return np.sign(E) * (a * (self.s0 + s) - E * v)
 
-        best, at = _max_by_root(g, dg, math.radians(seg.start), math.radians(seg.end))
+        motion1, h, ke, s0 = self.program.motion1, self.h, self.k * self.e, self.s0
+
+        def dg1(d):                   # the same on one float (the same bits)
+            s, v, a = motion1(h, d, True)
+            E = v - ke
+            return _sign(E) * (a * (s0 + s) - E * v)
+
+        best, at = _max_by_root(g, dg, math.radians(seg.start), math.radians(seg.end), dg1)
         return best, math.degrees(at)
 
     def pitch_curvature(self, d_rad) -> np.ndarray:
@@ -111,9 +123,19 @@ class TranslatingCam:
         S, E = self.s0 + s, v - self.k * self.e
         return (S * S + E * (E + v) - S * a) / (S * S + E * E) ** 1.5
 
+    def pitch_curvature1(self, d: float) -> float:
+        """:meth:`pitch_curvature` at one cam angle (radians), on floats (the same bits: the power 1.5 as
+        numpy computes it)."""
+        s, v, a = self.program.motion1(self.h, d, True)
+        S, E = self.s0 + s, v - self.k * self.e
+        return (S * S + E * (E + v) - S * a) / _pow(S * S + E * E, 1.5)
+
     def rho_min_pitch(self) -> float:
         """Smallest radius of curvature of the convex parts of the pitch curve."""
-        top = max(_max_by_parabola(self.pitch_curvature, a, b) for a, b in self._pieces())
+        return _memo(self, "rho_min_pitch", self._rho_min_pitch)
+
+    def _rho_min_pitch(self) -> float:
+        top = max(_max_by_parabola(self.pitch_curvature, a, b, self.pitch_curvature1) for a, b in self._pieces())
         return 1.0 / top if top > 0 else math.inf
 
     def flat_rho(self, d_rad) -> np.ndarray:
@@ -123,18 +145,32 @@ class TranslatingCam:
 
     def flat_rho_min(self) -> float:
         """min (r0 + s + s″) over the turn."""
-        return -max(_max_by_parabola(lambda d: -self.flat_rho(d), a, b) for a, b in self._pieces())
+        return _memo(self, "flat_rho_min", self._flat_rho_min)
+
+    def _flat_rho_min(self) -> float:
+        motion1, h, r0 = self.program.motion1, self.h, self.r0
+
+        def low1(d):
+            s, _, a = motion1(h, d, True)
+            return -(r0 + s + a)
+
+        return -max(_max_by_parabola(lambda d: -self.flat_rho(d), a, b, low1) for a, b in self._pieces())
 
     def face_extent(self) -> tuple[float, float]:
         """(left, right): how far the flat face's contact goes left and right of the follower's axis (mm),
         max(e − k·s′) and max(k·s′ − e), each at least 0."""
+        return _memo(self, "face_extent", self._face_extent)
+
+    def _face_extent(self) -> tuple[float, float]:
         d = np.concatenate([_grid(a, b) for a, b in self._pieces()])
         v = self._rad(d)[1]
         # s′ is extreme where s″ = 0 or at segment ends: refine by bisection on s″
         ext = [float(x) for x in v]
+        motion1, h = self.program.motion1, self.h
         for a, b in self._pieces():
             for sign in (1.0, -1.0):
-                best, _ = _max_by_root(lambda x: sign * self._rad(x)[1], lambda x: sign * self._rad(x)[2], a, b)
+                best, _ = _max_by_root(lambda x: sign * self._rad(x)[1], lambda x: sign * self._rad(x)[2], a, b,
+                                       lambda x: sign * motion1(h, x, True)[2])
                 ext.append(sign * best)
         rel = [self.k * x - self.e for x in ext]
         return max(0.0, -min(rel)), max(0.0, max(rel))
@@ -155,9 +191,11 @@ def _grid(a: float, b: float, n: int = _DENSE // 4) -> np.ndarray:
     return d
 
 
-def _max_by_root(g: Callable, dg: Callable, a: float, b: float) -> tuple[float, float]:
+def _max_by_root(g: Callable, dg: Callable, a: float, b: float, dg1: Callable[[float], float] | None = None
+                 ) -> tuple[float, float]:
     """Max of g on [a, b) (right end one-sided): the ends and every place where dg changes sign from + to −,
-    found by bisection to the last bit."""
+    found by bisection to the last bit (on floats by ``dg1``, dg of one angle with the same bits, when
+    given: the same halvings without an array call each)."""
     d = _grid(a, b)
     w = (b - a) * np.array([1e-10, 1e-8, 1e-6, 1e-4, 1e-3])      # a maximum squeezed against an end
     d = np.unique(np.concatenate([d, a + w, np.nextafter(b, a) - w]))
@@ -171,7 +209,7 @@ def _max_by_root(g: Callable, dg: Callable, a: float, b: float) -> tuple[float, 
             mid = 0.5 * (lo + hi)
             if mid <= lo or mid >= hi:
                 break
-            if float(dg(np.array([mid]))[0]) > 0:
+            if (dg1(mid) if dg1 is not None else float(dg(np.array([mid]))[0])) > 0:
                 lo = mid
             else:
                 hi = mid
@@ -183,25 +221,53 @@ def _max_by_root(g: Callable, dg: Callable, a: float, b: float) -> tuple[float, 
     return float(vals[cands.index(at)]), float(at)
 
 
-def _max_by_parabola(g: Callable, a: float, b: float) -> float:
+def _max_by_parabola(g: Callable, a: float, b: float, g1: Callable[[float], float] | None = None) -> float:
     """Max of g on [a, b): dense samples, then successive parabolic interpolation about each of the few
-    best local maxima of the samples (a peak between samples may overtake the best sample's)."""
+    best local maxima of the samples (a peak between samples may overtake the best sample's); ``g1``, g of
+    one angle with the same bits, when given, evaluates the interpolation's points without an array call."""
     d = _grid(a, b)
     v = g(d)
     best = float(np.max(v))
-    inner = [i for i in range(1, len(d) - 1) if v[i] >= v[i - 1] and v[i] >= v[i + 1]]
-    for i in sorted(inner, key=lambda j: -v[j])[:4]:
-        best = max(best, _parabola(g, d, v, i))
+    w = v.tolist()
+    inner = [i for i in range(1, len(w) - 1) if w[i] >= w[i - 1] and w[i] >= w[i + 1]]
+    for i in sorted(inner, key=lambda j: -w[j])[:4]:
+        best = max(best, _parabola(g, d, v, i, g1))
     if v[0] > v[1]:                               # a peak between the first two samples
-        best = max(best, _parabola(g, np.array([d[0], 0.5 * (d[0] + d[1]), d[1]]),
-                                   g(np.array([d[0], 0.5 * (d[0] + d[1]), d[1]])), 1))
+        m = np.array([d[0], 0.5 * (d[0] + d[1]), d[1]])
+        best = max(best, _parabola(g, m, _values(g, g1, m), 1, g1))
     if v[-1] > v[-2]:
         m = np.array([d[-2], 0.5 * (d[-2] + d[-1]), d[-1]])
-        best = max(best, _parabola(g, m, g(m), 1))
+        best = max(best, _parabola(g, m, _values(g, g1, m), 1, g1))
     return best
 
 
-def _parabola(g: Callable, d: np.ndarray, v: np.ndarray, i: int) -> float:
+def _values(g: Callable, g1: Callable[[float], float] | None, d: np.ndarray) -> np.ndarray:
+    """g at a few angles, one by one on the scalar path when there is one."""
+    return g(d) if g1 is None else np.array([g1(x) for x in d.tolist()])
+
+
+def _sign(x: float) -> float:
+    """np.sign of one float."""
+    return 1.0 if x > 0.0 else (-1.0 if x < 0.0 else (0.0 if x == 0.0 else math.nan))
+
+
+def _pow(x: float, y: float) -> float:
+    """x ** y as numpy computes it on arrays (its own power routine), for one float."""
+    one = np.empty(1)
+    one[0] = x
+    return float(np.power(one, y)[0])
+
+
+def _memo(cam: "TranslatingCam", name: str, compute: Callable[[], Any]) -> Any:
+    """``compute()`` once per cam object: a twin's searches, kept with the cam, so that the checks and the
+    warnings of one solve share them (the recipe hands its twin on from the checks to the warnings)."""
+    memo = cam.results
+    if name not in memo:
+        memo[name] = compute()
+    return memo[name]
+
+
+def _parabola(g: Callable, d: np.ndarray, v: np.ndarray, i: int, g1: Callable[[float], float] | None = None) -> float:
     """Successive parabolic interpolation from the samples i − 1, i, i + 1 (the middle one the highest or not)."""
     best = float(v[i])
     (x0, x1, x2), (y0, y1, y2) = (float(t) for t in d[i - 1:i + 2]), (float(t) for t in v[i - 1:i + 2])
@@ -212,7 +278,7 @@ def _parabola(g: Callable, d: np.ndarray, v: np.ndarray, i: int) -> float:
         t = x1 - 0.5 * ((x1 - x0) ** 2 * (y1 - y2) - (x1 - x2) ** 2 * (y1 - y0)) / den
         if not x0 < t < x2 or t == x1:
             break
-        yt = float(g(np.array([t]))[0])
+        yt = g1(t) if g1 is not None else float(g(np.array([t]))[0])
         if yt >= y1:        # t becomes the middle point
             (x0, y0, x2, y2) = (x1, y1, x2, y2) if t > x1 else (x0, y0, x1, y1)
             x1, y1 = t, yt

@@ -93,7 +93,7 @@ def _advise(g: Mapping[str, Any]) -> list[str]:
     prog, h, r0, e, rr, rot, follower = _givens(g)
     out = []
     flat = follower == "flat"
-    cam = TranslatingCam(prog, h, r0, 0.0 if flat else e, rot)        # only what the warnings need
+    cam = _twin_cam(g, TranslatingCam(prog, h, r0, 0.0 if flat else e, rot))   # the checks' searches, if made
     if follower == "roller":
         rho = cam.rho_min_pitch()
         if rr >= rho:
@@ -120,6 +120,20 @@ def _advise(g: Mapping[str, Any]) -> list[str]:
         if a > allow:
             out.append(f"α_max of the {part} = {a:.4g}° exceeds alpha_allow = {allow:g}° (at δ = {where:.4g}°)")
     return out
+
+
+_LAST_TWIN: tuple = (None, None, None)
+"""(the givens, a copy of them, the twin's cam) of the last :func:`analytic`: its searches are handed on to
+the warnings of the same solve (:func:`_advise` on the same givens), so that a solve makes them once."""
+
+
+def _twin_cam(g: Mapping[str, Any], cam: TranslatingCam) -> TranslatingCam:
+    """The cam of the last :func:`analytic` when it was made for these very givens (the same object, unchanged)
+    and is this cam; else ``cam``."""
+    given, copy, twin = _LAST_TWIN
+    if given is g and twin == cam and copy == dict(g):
+        return twin
+    return cam
 
 
 def _s_drops(prog: Program, h: float) -> bool:
@@ -468,6 +482,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     at = tuple(g.get("at") or ())
     flat = follower == "flat"
     cam = TranslatingCam(prog, h, r0, 0.0 if flat else e, rot)
+    global _LAST_TWIN
+    _LAST_TWIN = (g, dict(g), cam)                 # its searches serve this solve's warnings too
     out: dict[str, Any] = {"h": h}
     if flat:
         left, right = TranslatingCam(prog, h, r0, e, rot).face_extent()
