@@ -49,13 +49,14 @@ Examples
 """
 from __future__ import annotations
 
+import cmath
 import math
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
-from .profile import PitchCurve, brent_max1, sign1
+from .profile import PitchCurve, brent_max1, pow1, sign1
 from .program import Program, Segment
 
 GRID = 240
@@ -358,7 +359,7 @@ class OscillatingCam(ArmMotion):
                 return np.sign(n) * (n1 * d - n * d1)
             return self.pressure_arg_slope(m)
 
-        return self.segment_max(kind, alpha, slope, self._tan_slope1() if route == "tan" else None)
+        return self.segment_max(kind, alpha, slope, self._tan_slope1() if route == "tan" else self.pressure_arg_slope1())
 
     def _tan_slope1(self) -> Callable[[tuple[float, float, float, float]], float]:
         """The "tan" route's slope sign(N)(N′D − ND′) of one motion (δ, ψ, ψ′, ψ″), on floats: the operations
@@ -411,13 +412,22 @@ class OscillatingCam(ArmMotion):
         >>> all(cam.pitch1_fn()(x) == tuple(float(v[i]) for v in vec) for i, x in enumerate(d.tolist()))
         True
         """
-        sg, tu, a, L, psi0 = self.sigma, self.tau, self.a, self.L, self.psi0
-        motion1, h, rad, cos, sin = self.program.motion1, self.h, math.radians, math.cos, math.sin
-        half_pi = math.pi / 2
+        motion1, h, rad, of = self.program.motion1, self.h, math.radians, self.pitch_of1()
 
         def fn1(delta):
             s, v, acc = motion1(h, delta, True)
-            psi, d1, d2 = rad(s), rad(v), rad(acc)
+            return of((delta, rad(s), rad(v), rad(acc)))
+
+        return fn1
+
+    def pitch_of1(self) -> Callable[[tuple[float, float, float, float]], tuple[float, ...]]:
+        """:meth:`pitch_of` of one motion (δ, ψ, ψ′, ψ″), on floats (the same bits)."""
+        sg, tu, a, L, psi0 = self.sigma, self.tau, self.a, self.L, self.psi0
+        cos, sin = math.cos, math.sin
+        half_pi = math.pi / 2
+
+        def fn1(m):
+            delta, psi, d1, d2 = m
             ta = half_pi - sg * delta
             t2 = ta + tu * (psi0 + psi)
             w2 = -sg + tu * d1
@@ -434,14 +444,62 @@ class OscillatingCam(ArmMotion):
         with np.errstate(divide="ignore"):
             return 1.0 / self.convex_curvature_of(self.motion(delta))
 
-    def rho_min(self, curvature: Callable[[Motion], np.ndarray] | None = None) -> tuple[float, float]:
+    def rho_min(self, curvature: Callable[[Motion], np.ndarray] | None = None,
+                curvature1: Callable[[tuple[float, float, float, float]], float] | None = None) -> tuple[float, float]:
         """(ρmin, δ) of the pitch curve over its convex parts: the largest positive curvature, found on a grid
-        of each smooth piece and refined by golden-section search; ``inf`` when nowhere convex.
+        of each smooth piece and refined (:meth:`ArmMotion.turn_max`); ``inf`` when nowhere convex.
 
-        ``curvature`` (default :meth:`convex_curvature_of`) lets an independent formula use the same search.
+        ``curvature`` (default :meth:`convex_curvature_of`) lets an independent formula use the same search;
+        ``curvature1``, the same formula on one motion (floats), refines on the scalar path (the default's
+        is :meth:`convex_curvature1`).
         """
-        best = self.turn_max(curvature or self.convex_curvature_of)
+        if curvature is None:
+            curvature, curvature1 = self.convex_curvature_of, self.convex_curvature1()
+        best = self.turn_max(curvature, curvature1)
         return (1.0 / best[0], best[1]) if best[0] > 0 else (math.inf, best[1])
+
+    def convex_curvature1(self) -> Callable[[tuple[float, float, float, float]], float]:
+        """:meth:`convex_curvature_of` of one motion (δ, ψ, ψ′, ψ″), on floats."""
+        of, sg = self.pitch_of1(), self.sigma
+
+        def k1(m):
+            _, _, dx, dy, ddx, ddy = of(m)
+            return -sg * (dx * ddy - dy * ddx) / pow1(math.hypot(dx, dy), 3.0)
+
+        return k1
+
+    def convex_curvature_complex1(self) -> Callable[[tuple[float, float, float, float]], float]:
+        """:meth:`convex_curvature_complex` of one motion (δ, ψ, ψ′, ψ″), with Python's complex numbers (the
+        twin's route on the scalar path)."""
+        tau, sg, L, a, psi0 = self.tau, self.sigma, self.L, self.a, self.psi0
+        exp = cmath.exp
+
+        def k1(m):
+            _, psi, d1, d2 = m
+            e = exp(1j * tau * (psi0 + psi))
+            c = a - L * e
+            c1 = -1j * tau * L * d1 * e
+            c2 = -1j * tau * L * d2 * e + L * (d1 * d1) * e
+            u, v = c1 - 1j * sg * c, c2 - 2j * sg * c1 - c
+            return -sg * (u.conjugate() * v).imag / pow1(abs(u), 3.0)
+
+        return k1
+
+    def pressure_arg_slope1(self) -> Callable[[tuple[float, float, float, float]], float]:
+        """:meth:`pressure_arg_slope` of one motion (δ, ψ, ψ′, ψ″), with Python's complex numbers."""
+        tau, sg, L, a, psi0 = self.tau, self.sigma, self.L, self.a, self.psi0
+        exp = cmath.exp
+
+        def slope1(m):
+            _, psi, d1, d2 = m
+            e = exp(1j * tau * (psi0 + psi))
+            c = a - L * e
+            c1 = -1j * tau * L * d1 * e
+            c2 = -1j * tau * L * d2 * e + L * (d1 * d1) * e
+            u, v = c1 - 1j * sg * c, c2 - 2j * sg * c1 - c
+            return (v / u).imag - (tau * d1 - sg) if u != 0 else math.nan
+
+        return slope1
 
     # ------------------------------------------------------------------ roller
     def roller_contact(self, delta, rr: float) -> tuple[np.ndarray, np.ndarray]:

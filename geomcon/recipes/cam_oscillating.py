@@ -316,7 +316,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     cam = cam_of(g)
     roller = g["follower"] == "roller"
     rr = float(g.get("rr") or 0.0)
-    rho = cam.rho_min(cam.convex_curvature_complex)[0]
+    rho = cam.rho_min(cam.convex_curvature_complex, cam.convex_curvature_complex1())[0]
     out: dict[str, Any] = {
         "psi_max": math.degrees(float(cam.motion(cam.program.rise.end).psi)),
         "psi0": math.degrees(cam.psi0),
