@@ -43,7 +43,8 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any, Callable
 
 import numpy as np
 
@@ -97,6 +98,8 @@ class FlatArmCam(ArmMotion):
     rotation: str = "ccw"
     arm: str = "left"
     offset: float = 0.0
+    results: dict = field(default_factory=dict, compare=False, repr=False)
+    """The searches done so far on this cam object, each once (the checks and the warnings share them)."""
 
     @property
     def psi0(self) -> float:
@@ -118,6 +121,48 @@ class FlatArmCam(ArmMotion):
         """dl/dδ (mm per rad) of :meth:`contact_of`."""
         phi, w = self.psi0 + m.psi, self.speed(m)
         return self.a * (-np.sin(phi) * m.d1 * w + self.eps * m.d2 * np.cos(phi)) / w ** 2
+
+    def scalar_forms(self) -> tuple[Callable[[tuple], float], Callable[[tuple], float], Callable[[tuple], float]]:
+        """(l, l′, ρ) of one motion (δ, ψ, ψ′, ψ″), on floats: :meth:`contact_of`, :meth:`contact_slope_of` and
+        :meth:`rho_of` with the same operations in the same order (the same bits; (1 − εψ′)² as a product).
+
+        >>> from geomcon.cam.program import parse_program
+        >>> from geomcon.cam.oscillating import segment_motion, segment_motion1
+        >>> prog = parse_program([{"kind": "rise", "angle": 150, "law": "cycloidal"}, {"kind": "dwell", "angle": 30},
+        ...                       {"kind": "return", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60}])
+        >>> cam = FlatArmCam(100.0, 40.0, 15.0, prog, offset=5.0)
+        >>> seg = prog.segments[0]
+        >>> m = segment_motion(seg, 0.0, 15.0, [0.3])
+        >>> m1 = segment_motion1(seg, 0.0, 15.0, 0.3)
+        >>> [f(m1) for f in cam.scalar_forms()] == [float(cam.contact_of(m)[0]), float(cam.contact_slope_of(m)[0]), float(cam.rho_of(m)[0])]
+        True
+        """
+        a, eps, psi0, f = self.a, self.eps, self.psi0, self.offset
+        cos, sin = math.cos, math.sin
+
+        def contact1(m):
+            _, psi, d1, _ = m
+            return a * cos(psi0 + psi) / (1.0 - eps * d1)
+
+        def slope1(m):
+            _, psi, d1, d2 = m
+            phi, w = psi0 + psi, 1.0 - eps * d1
+            return a * (-sin(phi) * d1 * w + eps * d2 * cos(phi)) / (w * w)
+
+        def rho1(m):
+            phi = psi0 + m[1]
+            return (a * sin(phi) + eps * slope1(m)) / (1.0 - eps * m[2]) - f
+
+        return contact1, slope1, rho1
+
+    def _nearest(self, kind: str) -> tuple[float, float]:
+        """segment_max of −l over the ``kind`` segment (the nearest contact), once per cam object."""
+        key = ("nearest", kind)
+        if key not in self.results:
+            contact1, slope1, _ = self.scalar_forms()
+            self.results[key] = self.segment_max(kind, lambda m: -self.contact_of(m), lambda m: -self.contact_slope_of(m),
+                                                 lambda m: -slope1(m))
+        return self.results[key]
 
     def contact(self, delta) -> np.ndarray:
         """l at cam angles ``delta`` (deg)."""
@@ -156,15 +201,15 @@ class FlatArmCam(ArmMotion):
                 v = float(self.contact_of(m)[0])
                 lo, hi = min(lo, (v, seg.start)), max(hi, (v, seg.start), key=lambda t: (t[0], -t[1]))
                 continue
-            a = self.segment_max(seg.kind, lambda m: -self.contact_of(m), lambda m: -self.contact_slope_of(m))
-            b = self.segment_max(seg.kind, self.contact_of, self.contact_slope_of)
+            a = self._nearest(seg.kind)
+            b = self.segment_max(seg.kind, self.contact_of, self.contact_slope_of, self.scalar_forms()[1])
             lo = min(lo, (-a[0], a[1]))
             hi = max(hi, b, key=lambda t: (t[0], -t[1]))
         return lo, hi
 
     def worst_pressure(self, kind: str) -> tuple[float, float]:
         """(α_max, δ) in degrees over the rise or return: where |l| is smallest (l > 0 on a working cam)."""
-        v, at = self.segment_max(kind, lambda m: -self.contact_of(m), lambda m: -self.contact_slope_of(m))
+        v, at = self._nearest(kind)
         k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
         seg = self.program.segments[k]
         ends = self.contact_of(segment_motion(seg, levels(self.program, self.h)[k], self.h, [0.0, 1.0]))
@@ -175,9 +220,12 @@ class FlatArmCam(ArmMotion):
         return math.degrees(math.atan2(abs(self.offset), -v)), at
 
     def rho_min(self) -> tuple[float, float]:
-        """(ρmin, δ in degrees) of the profile over the turn."""
-        v, at = self.turn_max(lambda m: -self.rho_of(m))
-        return -v, at
+        """(ρmin, δ in degrees) of the profile over the turn (once per cam object)."""
+        if "rho_min" not in self.results:
+            rho1 = self.scalar_forms()[2]
+            v, at = self.turn_max(lambda m: -self.rho_of(m), lambda m: -rho1(m))
+            self.results["rho_min"] = (-v, at)
+        return self.results["rho_min"]
 
     def backward_jumps(self) -> tuple[tuple[float, float], ...]:
         """(ε·Δl, δ in degrees) at every break where the contact jumps backwards along the face.

@@ -66,8 +66,12 @@ def validate_flat(g: Mapping[str, Any]) -> list[str]:
 
 def advise_flat(g: Mapping[str, Any]) -> list[str]:
     """The flat-faced arm's warnings (the profile reaching the pivot, α_max against the allowance, a profile
-    the face cannot follow): made only when the warnings are asked for, never for answers alone."""
+    the face cannot follow): made only when the warnings are asked for, never for answers alone; the searches
+    the checks' twin made for these givens are not made again."""
     cam = flat_cam_of(g)
+    given, copy, twin = _LAST_TWIN
+    if given is g and twin == cam and copy == dict(g):
+        cam = twin
     a = cam.a
     out = []
     d = np.linspace(0.0, 360.0, 3601)
@@ -88,6 +92,11 @@ def advise_flat(g: Mapping[str, Any]) -> list[str]:
                    + (f"; the contact jumps back along the face at δ = {back} (ψ′ drops suddenly)" if jumps else "")
                    + "; the profile is trimmed (增大基圆 r0)")
     return out
+
+
+_LAST_TWIN: tuple = (None, None, None)
+"""(the givens, a copy of them, the twin's cam) of the last :func:`analytic_flat`, whose searches the warnings
+of the same solve (:func:`advise_flat` on the same, unchanged givens) take over."""
 
 
 def flat_family(cam: FlatArmCam) -> LineFamily:
@@ -464,7 +473,9 @@ def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O:
 
 def analytic_flat(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The flat-faced arm's closed forms (:mod:`geomcon.cam.oscillating_flat`)."""
+    global _LAST_TWIN
     cam = flat_cam_of(g)
+    _LAST_TWIN = (g, dict(g), cam)                 # its searches serve this solve's warnings too
     (lo, _), (hi, _) = cam.contact_extremes()
     rho = cam.rho_min()[0]
     convex = rho > 0.0 and not cam.backward_jumps()
