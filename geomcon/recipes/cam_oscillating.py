@@ -142,11 +142,12 @@ def _advise(g: Mapping[str, Any]) -> list[str]:
                    f"(a = {a:g}): it would hit the pivot")
     allow = {"rise": g.get("alpha_allow"), "return": g.get("alpha_allow_return") or g.get("alpha_allow")}
     for part in [p for p in ("rise", "return") if allow[p] is not None]:
-        alpha, at = cam.worst_pressure(part)
+        alpha, at = _shared(cam, part, lambda: cam.worst_pressure(part))
         if alpha > allow[part]:
             out.append(f"α_max of the {part} = {alpha:.4g}° exceeds the allowance {allow[part]:g}° (at δ = {at:.4g}°)")
     if roller:
-        rho, at = cam.rho_min()
+        low = _shared(cam, "rho", lambda: rho_min(cam.pitch_curve(scalar=True)))
+        rho, at = low.value, low.delta_deg
         if rr >= rho:
             out.append(f"undercut: rr = {rr:g} ≥ ρmin = {rho:.4g} of the pitch curve (at δ = {at:.4g}°); the profile "
                        "is trimmed and the follower's motion is distorted there (增大基圆或减小滚子半径)")
@@ -180,9 +181,33 @@ def arm_pressure_deg(A: Point, B: Point, O: Point, k: float) -> float:
     return math.degrees(math.atan2(abs(n.cross(v)), abs(n.dot(v))))
 
 
+_SHARED: dict = {}
+"""(cam, what) → the construction's search (α_max and its place of a part, ρmin of the pitch curve), written
+when the construction makes it and read by the warnings (:func:`_advise`), which would make the same search."""
+
+
+def _shared(cam: OscillatingCam, what: str, compute):
+    """The construction's result ``what`` for this cam (equal cams, equal results) if it has been made, else
+    ``compute()``, kept."""
+    out = _SHARED.get((cam, what))
+    return _keep(cam, what, compute()) if out is None else out
+
+
+def _keep(cam: OscillatingCam, what: str, value):
+    if len(_SHARED) >= 64:
+        _SHARED.clear()
+    _SHARED[(cam, what)] = value
+    return value
+
+
 def worst(cam: OscillatingCam, part: str) -> tuple[float, float]:
-    """(α_max, δ) of the rise or the return (closed form, exact-derivative search)."""
-    return cam.worst_pressure(part)
+    """(α_max, δ) of the rise or the return (closed form, exact-derivative search); kept for the warnings."""
+    return _keep(cam, part, cam.worst_pressure(part))
+
+
+def pitch_rho_min(curve, cam: OscillatingCam):
+    """ρmin of the pitch curve (:func:`~geomcon.cam.profile.rho_min`), kept for the warnings."""
+    return _keep(cam, "rho", rho_min(curve))
 
 
 def coord(p: Point, axis: int) -> float:
@@ -258,7 +283,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("pitch_curve", pitch_polyline, curve, style="frame" if roller else "link", role=Role.RESULT,
            caption=("Join B1, B2, … by a smooth curve: the pitch curve" + ("" if roller else " (the knife edge's profile)"),
                     "将 B1、B2 … 连成光滑曲线,即理论廓线" + ("" if roller else "(尖顶从动件的实际廓线)")))
-    rho = sc.add("rho_pitch", rho_min, curve, visible=False)
+    rho = sc.add("rho_pitch", pitch_rho_min, curve, cam, visible=False)
     sc.add("rho_min_pitch", extremum_value, rho, role=Role.MEASUREMENT, unit="mm",
            caption=("ρmin of the pitch curve, from its exact derivatives", "由精确导数求理论廓线的最小曲率半径 ρmin"))
     sc.add("rho_min_actual", minus, Ref("rho_min_pitch"), rr, role=Role.MEASUREMENT, unit="mm", visible=False)
