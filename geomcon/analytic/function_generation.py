@@ -205,6 +205,24 @@ def transmission_at(a: float, b: float, c: float, d: float, W: float, phi: float
     return min(g, 180.0 - g)
 
 
+def _solution(d: float, a: float, phi: Sequence[float], psi: Sequence[float]) -> tuple[list[float], tuple[float, ...]]:
+    """(the angles in radians, (x, y, U, V, W) of the real system): the part of the twin the answers need."""
+    rad = [math.radians(v) for v in (*phi, *psi)]
+    return rad, tuple(z.real for z in _hinge(d, a, rad[:3], rad[3:]))
+
+
+def hinge_distance(AD: float, AB: float, phi: Sequence[float], psi: Sequence[float]) -> float:
+    """CD = |DC1| of :func:`function_generation` (the same numbers), without its sensitivities: the
+    recipe's validation refuses a hinge on D with it.
+
+    >>> hinge_distance(60.0, 20.0, (30.0, 75.0, 120.0), (80.0, 95.0, 115.0)) == function_generation(
+    ...     60.0, 20.0, (30.0, 75.0, 120.0), (80.0, 95.0, 115.0))["CD"]
+    True
+    """
+    _, (_, _, U, V, _) = _solution(AD, AB, phi, psi)
+    return math.hypot(U, V)
+
+
 def function_generation(AD: float, AB: float, phi: Sequence[float], psi: Sequence[float]) -> dict:
     """Every answer of ``four_bar.function_generation`` by the linear Freudenstein system.
 
@@ -213,8 +231,7 @@ def function_generation(AD: float, AB: float, phi: Sequence[float], psi: Sequenc
     of AD or AB).
     """
     d, a = AD, AB
-    rad = [math.radians(v) for v in (*phi, *psi)]
-    x, y, U, V, W = (z.real for z in _hinge(d, a, rad[:3], rad[3:]))
+    rad, (x, y, U, V, W) = _solution(d, a, phi, psi)
     c = math.hypot(U, V)
     b = math.sqrt(max(0.0, a * a + c * c + d * d - 2.0 * a * d * W))
     beta = math.degrees(math.atan2(V, U))

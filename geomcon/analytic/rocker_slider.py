@@ -150,11 +150,25 @@ def _sens(f, args: list, angle_idx: Sequence[int], length_idx: Sequence[int]) ->
     return (max(out[i] for i in angle_idx) * math.radians(0.1), max(out[i] for i in length_idx) * 0.1)
 
 
+def three_hinge(D: XY, psi: Sequence[float], e: float, alpha: float, s: Sequence[float]) -> tuple[float, ...]:
+    """(F1x, F1y, U, V, W) of :func:`three_positions`, real, without its sensitivities and flags (the
+    recipe's validation reads DF = √(U² + V²) from it: the same numbers)."""
+    rad = [math.radians(p) for p in psi]
+    return tuple(z.real for z in _three(D[0], D[1], rad, e, math.radians(alpha), s))
+
+
+def two_pin(D: XY, psi: Sequence[float], F1: XY, e: float, alpha: float, s: Sequence[float]) -> XY:
+    """E1 of :func:`two_positions` (the same numbers), without its sensitivities and flags."""
+    rad = [math.radians(p) for p in psi]
+    x, y, _ = (z.real for z in _two(D[0], D[1], rad, F1[0], F1[1], e, math.radians(alpha), s))
+    return x, y
+
+
 def three_positions(D: XY, psi: Sequence[float], e: float, alpha: float, s: Sequence[float]) -> dict:
     """Every answer of ``rocker_slider.three_positions``: F1, DF, EF, beta, branch_ok, order_ok, alpha_max,
     sens_F1 (mm per 0.1° of any ψ or α) and sens_F1_mm (mm per 0.1 mm of D, e or any s)."""
     rad = [math.radians(p) for p in psi]
-    x, y, U, V, W = (z.real for z in _three(D[0], D[1], rad, e, math.radians(alpha), s))
+    x, y, U, V, W = three_hinge(D, psi, e, alpha, s)
     r = math.hypot(U, V)
     l = math.sqrt(max(0.0, r * r - W))
     beta = math.degrees(math.atan2(V, U))

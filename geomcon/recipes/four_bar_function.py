@@ -32,7 +32,7 @@ import math
 from typing import Any, Mapping, Sequence
 
 from ..analytic.fourbar_drive import angle_of, assemble, branch_of, crank_point
-from ..analytic.function_generation import check_inverted, function_generation, inverted_pins
+from ..analytic.function_generation import check_inverted, function_generation, hinge_distance, inverted_pins
 from ..errors import NotAMechanism
 from ..geometry import (Arc, LeftOf, Point, RightOf, circle, circle_circle, midpoint,
                         perpendicular_bisector, polar_angle, rotate, segment)
@@ -91,7 +91,7 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     count(g, ("phi", "psi"), 3)
     same_pairs((g["phi"], g["psi"]), "φ, ψ")
     warnings = check_inverted(inverted_pins(g["AD"], g["AB"], g["phi"], g["psi"]), "C1", "B1, B2′, B3′")
-    cd = function_generation(g["AD"], g["AB"], g["phi"], g["psi"])["CD"]
+    cd = hinge_distance(g["AD"], g["AB"], g["phi"], g["psi"])
     if cd <= 1e-9 * max(g["AD"], g["AB"]):
         raise NotAMechanism(f"the hinge C1 falls on D (CD = {cd:.3g}): no rocker")
     return warnings

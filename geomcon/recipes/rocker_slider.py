@@ -31,7 +31,8 @@ from typing import Any, Mapping
 
 from ..analytic.fourbar_drive import REFUSE_CONDITION, WARN_CONDITION
 from ..analytic.function_generation import check_inverted
-from ..analytic.rocker_slider import branch_of_pin, slider_position, three_positions, two_positions
+from ..analytic.rocker_slider import (branch_of_pin, slider_position, three_hinge, three_positions, two_pin,
+                                      two_positions)
 from ..errors import NotAMechanism
 from ..geometry import Line, Point, circle, line_circle, perpendicular_bisector, segment
 from ..scene import Ref, Role, Scene, marks
@@ -125,10 +126,11 @@ def _validate_three(g: Mapping[str, Any]) -> list[str]:
         vx, vy = x - D[0], y - D[1]
         P.append((D[0] + vx * math.cos(t) - vy * math.sin(t), D[1] + vx * math.sin(t) + vy * math.cos(t)))
     warnings = check_inverted(P, "F1", "E1, E2′, E3′")
-    r = three_positions(D, g["psi"], g["e"], g["guide_angle"], g["s"])
+    _, _, U, V, _ = three_hinge(D, g["psi"], g["e"], g["guide_angle"], g["s"])
+    df = math.hypot(U, V)                                  # DF of the twin, without its sensitivities
     scale = max(math.dist(P[0], P[1]), math.dist(P[1], P[2]), abs(g["e"]), math.hypot(*D))
-    if r["DF"] <= 1e-9 * scale:
-        raise NotAMechanism(f"the hinge F1 falls on D (DF = {r['DF']:.3g}): the rocker cannot drive the rod")
+    if df <= 1e-9 * scale:
+        raise NotAMechanism(f"the hinge F1 falls on D (DF = {df:.3g}): the rocker cannot drive the rod")
     return warnings
 
 
@@ -151,7 +153,7 @@ def _validate_two(g: Mapping[str, Any]) -> list[str]:
     if cos_ <= REFUSE_PARALLEL:
         raise NotAMechanism(f"the chord F1F2′ is perpendicular to the guide (cos = {cos_:.3g} < {REFUSE_PARALLEL:g}): "
                             "its bisector runs along the guide and meets it nowhere")
-    E1 = two_positions(D, g["psi"], F1, g["e"], g["guide_angle"], g["s"])["E1"]
+    E1 = two_pin(D, g["psi"], F1, g["e"], g["guide_angle"], g["s"])
     far = math.dist(E1, (F1[0] + cx / 2, F1[1] + cy / 2)) / chord
     k = pin_condition(far, cos_)
     where = f"{far:.3g} chords from the chord's midpoint, cos(chord, guide) = {cos_:.3g}"
