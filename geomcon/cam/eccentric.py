@@ -351,10 +351,10 @@ class Oscillating(_Turning):
         return self._extreme_phi(self.Rp + self.OA, 1.0)
 
     def alpha_max(self, part: str) -> float:
-        """Largest α over the rise or the return: grid, then golden-section refinement."""
+        """Largest α over the rise or the return: grid, then the peaks refined by Brent's method on floats."""
         d0, d1 = (0.0, self.rise_angle) if part == "rise" else (self.rise_angle, 360.0)
-        f = np.vectorize(lambda d: self.alpha(self.phi_of(math.degrees(d))))
-        return maximise(f, [(math.radians(d0), math.radians(d1))], dense=SAMPLES).value
+        f1 = lambda d: self.alpha(self.phi_of(math.degrees(d)))           # noqa: E731
+        return maximise(np.vectorize(f1), [(math.radians(d0), math.radians(d1))], dense=SAMPLES, g1=f1).value
 
     def cycle(self) -> dict[str, float]:
         """The answers that do not depend on a state."""

@@ -577,7 +577,7 @@ def _osc_alpha_max(Q0: Point, A: Point, O: Point, B0: Point, L: float, Rp: float
         return arm_pressure(A, B, Qd)
 
     lo, hi = (0.0, math.radians(rise)) if part == "rise" else (math.radians(rise), 2 * math.pi)
-    return maximise(np.vectorize(alpha_at), [(lo, hi)], dense=720).value
+    return maximise(np.vectorize(alpha_at), [(lo, hi)], dense=720, g1=alpha_at).value   # peaks refined by Brent
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
