@@ -194,7 +194,8 @@ def _copy_triangle(sc: Scene, key: str, P: Ref, src: tuple[Ref, Ref, str], dst: 
     r = sc.add(f"{key}_r", length, Bi, P, visible=False, unit="mm")
     out = sc.add(key, point_on_ray, ray, r, style=style, label=label,
                  caption=(f"Mark B{j}{label} = B{i}{n} on it: {words[1]}", f"在其上截取 B{j}{label} = B{i}{n}:{words[2]}"))
-    sc.add(f"{key}_arc", circle, Bj, r, style="construction")
+    if sc.drawing:
+        sc.add(f"{key}_arc", circle, Bj, r, style="construction")
     return out
 
 
@@ -204,13 +205,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc = Scene("Four-bar from the fixed pivots and three coupler positions (inversion)")
     A = add_pivot(sc, "A", Point(*g["A"]), ("Fixed pivots A and D", "固定铰链 A、D"))
     D = add_pivot(sc, "D", Point(*g["D"]), ("", ""))
-    sc.add("frame", segment, A, D, role=Role.GIVEN, style="frame")
+    drawing = sc.drawing                     # the given bars, joins, copied triangles and circles only a drawing needs
+    if drawing:
+        sc.add("frame", segment, A, D, role=Role.GIVEN, style="frame")
     Bs, Ks = [], []
     for i, (B, K) in enumerate(zip(Bp, Kp), 1):
         Bs.append(sc.given(f"B{i}", B, style="joint", caption=(
             f"Input link position AB{i}" + (f" and coupler point K{i}" if given_k else ""),
             f"输入杆位置 AB{i}" + (f"、连杆上点 K{i}" if given_k else ""))))
-        add_bar(sc, f"given_AB{i}", A, Bs[-1], style=f"pos{i}", role=Role.GIVEN)
+        if drawing:
+            add_bar(sc, f"given_AB{i}", A, Bs[-1], style=f"pos{i}", role=Role.GIVEN)
         if given_k:
             Ks.append(sc.given(f"K{i}", K, style="point"))
         else:
@@ -218,19 +222,23 @@ def construct(g: Mapping[str, Any]) -> Construction:
             Ks.append(sc.given(f"K{i}", K, style="point", caption=(
                 f"Coupler line of position {i} at {a:g}°: mark K{i} on it, B{i}K{i} = B1D/2",
                 f"作第 {i} 位置连杆线(方向角 {a:g}°),取 B{i}K{i} = B1D/2 得 K{i}")))
-        add_bar(sc, f"given_B{i}K{i}", Bs[-1], Ks[-1], style=f"pos{i}", role=Role.GIVEN)
+        if drawing:
+            add_bar(sc, f"given_B{i}K{i}", Bs[-1], Ks[-1], style=f"pos{i}", role=Role.GIVEN)
     # invert: carry D with the coupler from positions 2 and 3 onto position 1
     Dp = []
     for i in (2, 3):
         B, K = Bs[i - 1], Ks[i - 1]
-        sc.add(f"tri{i}_B", segment, B, D, style="construction",
-               caption=(f"Join B{i}D and K{i}D: the triangle B{i}K{i}D", f"连接 B{i}D、K{i}D 得 △B{i}K{i}D"))
-        sc.add(f"tri{i}_K", segment, K, D, style="construction")
+        if drawing:
+            sc.add(f"tri{i}_B", segment, B, D, style="construction",
+                   caption=(f"Join B{i}D and K{i}D: the triangle B{i}K{i}D", f"连接 B{i}D、K{i}D 得 △B{i}K{i}D"))
+            sc.add(f"tri{i}_K", segment, K, D, style="construction")
         Di = _copy_triangle(sc, f"D{i}p", D, (B, K, str(i)), (Bs[0], Ks[0], "1"), f"D{i}′",
                             ("D", f"△B1K1D{i}′ ≅ △B{i}K{i}D, D carried rigidly onto position 1",
                              f"△B1K1D{i}′ ≌ △B{i}K{i}D,把 D 刚化反转到位置 1"))
-        sc.add(f"copy{i}_B", segment, Bs[0], Di, style="ghost", caption=(f"The copied triangle B1K1D{i}′", f"复制的 △B1K1D{i}′"))
-        sc.add(f"copy{i}_K", segment, Ks[0], Di, style="ghost")
+        if drawing:
+            sc.add(f"copy{i}_B", segment, Bs[0], Di, style="ghost",
+                   caption=(f"The copied triangle B1K1D{i}′", f"复制的 △B1K1D{i}′"))
+            sc.add(f"copy{i}_K", segment, Ks[0], Di, style="ghost")
         Dp.append(Di)
     pts = [D, *Dp]
     C1 = add_bisector_centre(sc, "C1", pts, ("D", "D2′", "D3′"), "C1",
@@ -238,15 +246,17 @@ def construct(g: Mapping[str, Any]) -> Construction:
                              keys=("D", "D2p", "D3p"), ground=False)
     v = sc.evaluate(["D", "D2p", "D3p"])
     warnings = require_distinct_noncollinear(("D", "D2′", "D3′"), [v["D"], v["D2p"], v["D3p"]], "the hinge C1")
-    sc.add("kC", circle, C1, sc.add("rC", length, C1, D, visible=False), style="construction",
-           caption=("The circle about C1 through D, D2′, D3′", "以 C1 为圆心过 D、D2′、D3′ 的圆"))
+    if drawing:
+        sc.add("kC", circle, C1, sc.add("rC", length, C1, D, visible=False), style="construction",
+               caption=("The circle about C1 through D, D2′, D3′", "以 C1 为圆心过 D、D2′、D3′ 的圆"))
     # carry C1 back with the coupler to positions 2 and 3
     Cs = [C1]
     for i in (2, 3):
         Cs.append(_copy_triangle(sc, f"C{i}", C1, (Bs[0], Ks[0], "1"), (Bs[i - 1], Ks[i - 1], str(i)), f"C{i}",
                                  ("C1", f"the hinge in position {i}", f"第 {i} 位置的铰链"), style="joint"))
-    sc.add("kDC", circle, D, sc.add("rDC", length, D, C1, visible=False), style="path",
-           caption=("The path of C: the circle about D through C1, C2, C3", "C 点轨迹:以 D 为圆心过 C1、C2、C3 的圆"))
+    if drawing:
+        sc.add("kDC", circle, D, sc.add("rDC", length, D, C1, visible=False), style="path",
+               caption=("The path of C: the circle about D through C1, C2, C3", "C 点轨迹:以 D 为圆心过 C1、C2、C3 的圆"))
     add_positions(sc, A, D, Bs, Cs)
     answers = add_report(sc, A, D, Bs, Cs)
     sc.add("sens_C", hinge_sensitivity, C1, D, *Dp, *Bs, *Ks, given_k, role=Role.MEASUREMENT, unit="mm",

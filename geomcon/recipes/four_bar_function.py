@@ -359,11 +359,14 @@ def dead_text(A: Point, pins: tuple) -> str:
 def add_turned(sc: Scene, D: Ref, X: Ref, deg: float, name: str, caption: tuple[str, str]) -> Ref:
     """Turn the point X (labelled ``name``) about D through ``deg``: the radius DX, the arc and the turned
     point X′ (key ``<name>p``) with its radius, in light construction lines."""
-    sc.add(f"D{name}", segment, D, X, style="construction", caption=caption)
-    sc.add(f"arc{name}", turn_arc, D, X, deg, style="construction")
+    drawing = sc.drawing                     # the radii and the arc only a drawing needs
+    if drawing:
+        sc.add(f"D{name}", segment, D, X, style="construction", caption=caption)
+        sc.add(f"arc{name}", turn_arc, D, X, deg, style="construction")
     Xp = sc.add(f"{name}p", turn, X, D, deg, style="point", label=f"{name}′",
                 caption=(f"{name} comes to {name}′", f"{name} 转到 {name}′"))
-    sc.add(f"D{name}p", segment, D, Xp, style="construction")
+    if drawing:
+        sc.add(f"D{name}p", segment, D, Xp, style="construction")
     return Xp
 
 
@@ -373,11 +376,14 @@ def add_circumcentre(sc: Scene, key: str, P: Sequence[Ref], names: Sequence[str]
     P1P2 and P2P3, each bisector with its right-angle mark); the result step is ``key``: the bisectors' meet,
     or with ``centre`` (a step holding the same point found more exactly) that point."""
     bis = []
+    drawing = sc.drawing                     # the chords and right-angle marks only a drawing needs
     for k, (p, q, n) in enumerate(((P[0], P[1], names[0] + names[1]), (P[1], P[2], names[1] + names[2])), 1):
-        sc.add(f"chord{k}", segment, p, q, style="construction", caption=(f"Join {n}", f"连接 {n}"))
+        if drawing:
+            sc.add(f"chord{k}", segment, p, q, style="construction", caption=(f"Join {n}", f"连接 {n}"))
         bis.append(sc.add(f"bis{k}", perpendicular_bisector, p, q, style="construction",
                           caption=(f"Draw the perpendicular bisector of {n}", f"作 {n} 的中垂线")))
-        sc.add(f"bis{k}_mark", bisector_mark, p, q, role=Role.ANNOTATION, style="right-angle")
+        if drawing:
+            sc.add(f"bis{k}_mark", bisector_mark, p, q, role=Role.ANNOTATION, style="right-angle")
     if centre is None:
         return sc.add(key, meet_lines, bis[0], bis[1], role=Role.RESULT, style="joint", label=key, caption=caption)
     return sc.add(key, _same, centre, role=Role.RESULT, style="joint", label=key, caption=caption)
@@ -409,7 +415,8 @@ def add_inversion(sc: Scene, D: Ref, X: Sequence[Ref], K1: Ref, psi: Sequence[fl
                           centre=sc.add(f"{h}1_at", from_D, D, u, visible=False))
     r = sc.add(rod, length, X[0], H1, role=Role.MEASUREMENT, unit="mm",
                caption=(f"Measure {rod} = {x}1{h}1", f"量得{rod_zh} {rod} = {x}1{h}1"))
-    sc.add("k_inv", circle, H1, r, style="construction")
+    if sc.drawing:
+        sc.add("k_inv", circle, H1, r, style="construction")
     sc.add(arm, abs, u, role=Role.MEASUREMENT, unit="mm", caption=(f"Measure {arm} = D{h}1", f"量得{arm_zh} {arm} = D{h}1"))
     sc.add("beta", signed_deg_of, D, K1, u, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add(f"{h}1_xy", as_xy, H1, visible=False)
@@ -427,21 +434,25 @@ def construct(g: Mapping[str, Any]) -> Construction:
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
     D = add_pivot(sc, "D", Point(AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
                                               f"在机架线上取 D,使 AD = {AD:g}"))
-    sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
+    drawing = sc.drawing                     # the given bars, the linkage's positions and the γ ghost only a drawing needs
+    if drawing:
+        sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
     B = []
     for i, f in enumerate(phi, 1):
         B.append(sc.add(f"B{i}", polar_point, A, AB, f, role=Role.GIVEN, style="joint", label=f"B{i}",
                         caption=(f"Crank position AB{i} at φ{i} = {f:g}° from AD", f"作曲柄位置 AB{i},φ{i} = {f:g}°")))
-        sc.add(f"AB{i}_given", segment, A, B[-1], role=Role.GIVEN, style="given")
+        if drawing:
+            sc.add(f"AB{i}_given", segment, A, B[-1], role=Role.GIVEN, style="given")
     rE = 0.45 * max(AD, AB)
     E = []
     for i, p in enumerate(psi, 1):
         E.append(sc.add(f"E{i}", polar_point, D, rE, p, role=Role.GIVEN, style="point", label=f"E{i}",
                         caption=(f"Rocker line DE{i} at ψ{i} = {p:g}°", f"作摇杆标线 DE{i},ψ{i} = {p:g}°")))
-        sc.add(f"DE{i}", segment, D, E[-1], role=Role.GIVEN, style="given")
+        if drawing:
+            sc.add(f"DE{i}", segment, D, E[-1], role=Role.GIVEN, style="given")
     C, P = add_inversion(sc, D, B, E[0], psi, ("B", "E", "C"),
                          (("the hinge on the rocker", "连杆与摇杆的铰链"), ("BC", "连杆"), ("CD", "摇杆")))
-    for i in range(1, 4):
+    for i in range(1, 4) if drawing else ():
         style = ("link", "link-2", "link-3")[i - 1]
         sc.add(f"AB{i}", segment, A, B[i - 1], role=Role.RESULT, style=style,
                caption=(f"The designed linkage in position {i}: AB{i}C{i}D", f"所设计机构的第 {i} 位置 AB{i}C{i}D"))
@@ -460,12 +471,13 @@ def construct(g: Mapping[str, Any]) -> Construction:
     gm = sc.add("gamma_min", first, worst, role=Role.MEASUREMENT, unit="deg",
                 caption=("γmin: crank along the frame line (and at the ends of the motion unless AB is a crank)",
                          "最小传动角:曲柄与机架共线位置(非曲柄时另比较运动两端位置)"))
-    Bw = sc.add("Bw", second, worst, visible=False)
-    Cw = sc.add("Cw", third, worst, visible=False)
-    sc.add("w_AB", segment, A, Bw, style="ghost")
-    sc.add("w_BC", segment, Bw, Cw, style="ghost")
-    sc.add("w_CD", segment, Cw, D, style="ghost")
-    sc.add("mark_gamma", transmission_mark, Cw, Bw, D, "γmin", gm, role=Role.ANNOTATION, style="angle")
+    if drawing:
+        Bw = sc.add("Bw", second, worst, visible=False)
+        Cw = sc.add("Cw", third, worst, visible=False)
+        sc.add("w_AB", segment, A, Bw, style="ghost")
+        sc.add("w_BC", segment, Bw, Cw, style="ghost")
+        sc.add("w_CD", segment, Cw, D, style="ghost")
+        sc.add("mark_gamma", transmission_mark, Cw, Bw, D, "γmin", gm, role=Role.ANNOTATION, style="angle")
     sc.add("sens", fg_sensitivity, A, D, tuple(B), tuple(P), C[0], tuple(phi), tuple(psi), visible=False)
     sc.add("sens_C1", first, Ref("sens"), unit="mm", visible=False)
     sc.add("sens_C1_mm", second, Ref("sens"), unit="mm", visible=False)

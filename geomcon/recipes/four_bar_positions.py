@@ -92,18 +92,21 @@ def construct(g: Mapping[str, Any]) -> Construction:
     """Perpendicular bisectors of B1B2, B2B3 meet at A; of C1C2, C2C3 at D."""
     p = _points(g)
     sc = Scene("Four-bar through three coupler positions")
+    drawing = sc.drawing                     # the given bars and the paths only a drawing needs
     Bs, Cs = [], []
     for i in (1, 2, 3):
         Bs.append(sc.given(f"B{i}", p[f"B{i}"], style="joint",
                            caption=(f"Coupler position {i}: B{i}C{i}", f"连杆第 {i} 位置 B{i}C{i}")))
         Cs.append(sc.given(f"C{i}", p[f"C{i}"], style="joint"))
-        sc.add(f"given_B{i}C{i}", segment, Bs[-1], Cs[-1], role=Role.GIVEN, style=f"pos{i}")
+        if drawing:
+            sc.add(f"given_B{i}C{i}", segment, Bs[-1], Cs[-1], role=Role.GIVEN, style=f"pos{i}")
     A = add_bisector_centre(sc, "A", Bs, NAMES[:3], "A", ("The bisectors meet at the fixed pivot A", "两中垂线交于固定铰链 A"))
     D = add_bisector_centre(sc, "D", Cs, NAMES[3:], "D", ("The bisectors meet at the fixed pivot D", "两中垂线交于固定铰链 D"))
-    sc.add("kA", circle, A, sc.add("rA", length, A, Bs[0], visible=False), style="path",
-           caption=("The path of B: the circle about A through B1, B2, B3", "B 点轨迹:以 A 为圆心过 B1、B2、B3 的圆"))
-    sc.add("kD", circle, D, sc.add("rD", length, D, Cs[0], visible=False), style="path",
-           caption=("The path of C: the circle about D through C1, C2, C3", "C 点轨迹:以 D 为圆心过 C1、C2、C3 的圆"))
+    if drawing:
+        sc.add("kA", circle, A, sc.add("rA", length, A, Bs[0], visible=False), style="path",
+               caption=("The path of B: the circle about A through B1, B2, B3", "B 点轨迹:以 A 为圆心过 B1、B2、B3 的圆"))
+        sc.add("kD", circle, D, sc.add("rD", length, D, Cs[0], visible=False), style="path",
+               caption=("The path of C: the circle about D through C1, C2, C3", "C 点轨迹:以 D 为圆心过 C1、C2、C3 的圆"))
     add_positions(sc, A, D, Bs, Cs)
     answers = add_report(sc, A, D, Bs, Cs)
     sc.add("sens_A", centre_sensitivity, A, *Bs, role=Role.MEASUREMENT, unit="mm",

@@ -287,12 +287,13 @@ def _rocker_lines(sc: Scene, D: Ref, psi, r: float) -> list[Ref]:
     for i, p in enumerate(psi, 1):
         K.append(sc.add(f"K{i}", polar_point, D, r, p, role=Role.GIVEN, style="point", label=f"K{i}",
                         caption=(f"Rocker position DK{i} at ψ{i} = {p:g}°", f"作摇杆位置 DK{i},ψ{i} = {p:g}°")))
-        sc.add(f"DK{i}", segment, D, K[-1], role=Role.GIVEN, style="given")
+        if sc.drawing:
+            sc.add(f"DK{i}", segment, D, K[-1], role=Role.GIVEN, style="given")
     return K
 
 
 def _positions(sc: Scene, D: Ref, guide: Ref, F: list, E: list) -> None:
-    for i, (Fi, Ei) in enumerate(zip(F, E), 1):
+    for i, (Fi, Ei) in enumerate(zip(F, E), 1) if sc.drawing else ():          # a drawing's steps only
         style = ("link", "link-2", "link-3")[i - 1]
         sc.add(f"DF{i}", segment, D, Fi, role=Role.RESULT, style=style,
                caption=(f"The designed linkage in position {i}: DF{i}E{i}", f"所设计机构的第 {i} 位置 DF{i}E{i}"))
@@ -310,7 +311,8 @@ def _flags(sc: Scene, D: Ref, guide: Ref, F: list, E: list, DF: Ref, EF: Ref, ma
     pairs = [x for pair in zip(F, E) for x in pair]
     sc.add("alpha_max", worst_pressure, guide, *pairs, role=Role.MEASUREMENT, unit="deg",
            caption=("αmax: the largest angle between rod and guide in the positions", "最大压力角(连杆与导路夹角)"))
-    sc.add("guide_mark", guide_between, E[0], E[-1], guide, margin, role=Role.ANNOTATION, style="guide")
+    if sc.drawing:
+        sc.add("guide_mark", guide_between, E[0], E[-1], guide, margin, role=Role.ANNOTATION, style="guide")
     n = len(F)
     keys = {f"side{i}": f"side{i}" for i in range(1, n + 1)}
     keys.update(branch_ok="branch_ok", order_ok="order_ok", dead_at="dead_at")
@@ -354,22 +356,27 @@ def construct_two(g: Mapping[str, Any]) -> Construction:
     ds = s[1] - s[0]
     sc = Scene("Rocker–slider: two positions, hinge on the rocker chosen")
     D, guide = _setup(sc, g)
-    for i, si in enumerate(s, 1):
+    drawing = sc.drawing                     # the slider's marks, joins, arc and bisector mark only a drawing needs
+    for i, si in enumerate(s, 1) if drawing else ():
         sc.add(f"S{i}", on_guide, guide, si, role=Role.GIVEN, style="point", label=f"S{i}",
                caption=(f"Slider position {i}: its mark at s{i} = {si:g}", f"滑块第 {i} 位置:标记点 s{i} = {si:g}"))
     F1 = sc.given("F1", Point(*g["F1"]), style="joint", caption=("The chosen hinge F1 on the rocker", "选定摇杆上的铰链 F1"))
-    sc.add("DF1_given", segment, D, F1, role=Role.GIVEN, style="given")
+    if drawing:
+        sc.add("DF1_given", segment, D, F1, role=Role.GIVEN, style="given")
     F2 = sc.add("F2", turn, F1, D, psi[1] - psi[0], role=Role.RESULT, style="joint", label="F2",
                 caption=(f"The rocker carries F1 to F2 (ψ2 − ψ1 = {psi[1] - psi[0]:g}°)", "摇杆带 F1 转到 F2"))
-    sc.add("arcF", turn_arc, D, F1, psi[1] - psi[0], style="construction")
+    if drawing:
+        sc.add("arcF", turn_arc, D, F1, psi[1] - psi[0], style="construction")
     F2p = sc.add("F2p", translate, F2, guide, -ds, style="point", label="F2′",
                  caption=(f"Hold the slider in position 1: move F2 by s1 − s2 = {-ds:g} along the guide to F2′",
                           f"反转(滑块固定于位置 1):将 F2 沿导路平移 s1 − s2 = {-ds:g} 得 F2′"))
-    sc.add("F2F2p", segment, F2, F2p, style="construction")
-    sc.add("chord1", segment, F1, F2p, style="construction", caption=("Join F1F2′", "连接 F1F2′"))
+    if drawing:
+        sc.add("F2F2p", segment, F2, F2p, style="construction")
+        sc.add("chord1", segment, F1, F2p, style="construction", caption=("Join F1F2′", "连接 F1F2′"))
     bis = sc.add("bis1", perpendicular_bisector, F1, F2p, style="construction",
                  caption=("Draw the perpendicular bisector of F1F2′", "作 F1F2′ 的中垂线"))
-    sc.add("bis1_mark", bisector_mark, F1, F2p, role=Role.ANNOTATION, style="right-angle")
+    if drawing:
+        sc.add("bis1_mark", bisector_mark, F1, F2p, role=Role.ANNOTATION, style="right-angle")
     E1 = sc.add("E1", meet_guide, bis, guide, role=Role.RESULT, style="joint", label="E1",
                 caption=("It meets the guide at E1, the rod's pin on the slider", "中垂线交导路于 E1,即滑块上的铰链"))
     E2 = sc.add("E2", translate, E1, guide, ds, role=Role.RESULT, style="joint", label="E2",

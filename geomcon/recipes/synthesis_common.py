@@ -243,26 +243,32 @@ def add_bisector_centre(sc: Scene, key: str, pts: Sequence[Ref], names: Sequence
     (a fixed pivot with its ground symbol unless ``ground`` is false). ``keys`` spell the names in step keys
     (ASCII, e.g. ``D2p`` for D2′)."""
     keys = names if keys is None else keys
+    drawing = sc.drawing                     # the chords and right-angle marks only a drawing needs
     lines = []
     for a, b in ((0, 1), (1, 2)):
         n, m = names[a], names[b]
         k = f"{key}_{keys[a]}{keys[b]}"
         p, q = pts[a], pts[b]
-        sc.add(f"{k}_chord", segment, p, q, style="construction", caption=(f"Join {n}{m}", f"连接 {n}{m}"))
+        if drawing:
+            sc.add(f"{k}_chord", segment, p, q, style="construction", caption=(f"Join {n}{m}", f"连接 {n}{m}"))
         ln = sc.add(f"{k}_bis", perpendicular_bisector, p, q, style="construction",
                     caption=(f"Draw the perpendicular bisector of {n}{m}", f"作 {n}{m} 的中垂线"))
-        M = sc.add(f"{k}_mid", midpoint, p, q, visible=False)
-        F = sc.add(f"{k}_foot", bisector_foot, p, q, visible=False)
-        sc.add(f"{k}_right", marks.right_angle, M, q, F, role=Role.ANNOTATION, style="right-angle")
+        if drawing:
+            M = sc.add(f"{k}_mid", midpoint, p, q, visible=False)
+            F = sc.add(f"{k}_foot", bisector_foot, p, q, visible=False)
+            sc.add(f"{k}_right", marks.right_angle, M, q, F, role=Role.ANNOTATION, style="right-angle")
         lines.append(ln)
     ref = sc.add(key, meet, *lines, role=Role.RESULT, style=style, label=label, caption=caption)
-    if ground:
+    if ground and drawing:
         sc.add(f"{key}_ground", marks.ground, ref, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     return ref
 
 
 def add_positions(sc: Scene, A: Ref, D: Ref, Bs: Sequence[Ref], Cs: Sequence[Ref], *, role: Role = Role.RESULT) -> None:
-    """The frame AD and the designed linkage in its three positions AB_iC_iD, in graded tones."""
+    """The frame AD and the designed linkage in its three positions AB_iC_iD, in graded tones (a drawing's
+    steps only: nothing is added to a scene that is not drawn)."""
+    if not sc.drawing:
+        return
     sc.add("AD", segment, A, D, style="frame", role=Role.RESULT, caption=("Draw the frame AD", "连接机架 AD"))
     for i, (B, C, st) in enumerate(zip(Bs, Cs, POSITION_STYLES), 1):
         add_bar(sc, f"AB{i}", A, B, (f"Draw position {i} of the linkage, AB{i}C{i}D", f"画出机构的第 {i} 位置 AB{i}C{i}D"),
@@ -287,6 +293,7 @@ def add_report(sc: Scene, A: Ref, D: Ref, Bs: Sequence[Ref], Cs: Sequence[Ref]) 
     # the crank along the frame: BD smallest at B′ (on AD), largest at B″ (on DA extended beyond A)
     side = sc.value(sc.add("side1", side_of, Bs[0], Cs[0], D, visible=False).key)
     where = ("left", "左") if side > 0 else ("right", "右")
+    drawing = sc.drawing                     # the shown positions B′, B″ and their ghost links, the γ mark
     mAB = sc.add("mAB", _negative, AB, visible=False)
     crank = sc.add("crank", fully_turning, AB, BC, CD, AD, role=Role.MEASUREMENT,
                    caption=("AB turns fully when Grashof holds and AB or AD is the shortest link",
@@ -297,17 +304,18 @@ def add_report(sc: Scene, A: Ref, D: Ref, Bs: Sequence[Ref], Cs: Sequence[Ref]) 
         kB = sc.add(f"kB{k}", circle, Bx, BC, visible=False)
         kD = sc.add(f"kD{k}", circle, D, CD, visible=False)
         rule = LeftOf(Bx, D) if side > 0 else RightOf(Bx, D)
-        cx = lab.replace("B", "C")
         Cx = sc.add(f"C{k}", circle_circle, kB, kD, branch=rule, optional=True, visible=False)
         # drawn only where it matters: always for a crank, else when it lies on the working arc
-        Bs_ = sc.add(f"B{k}_shown", shown_if_used, crank, A, *Bs, Bx, style="point", label=lab,
-                     caption=(f"Crank along the frame {en}: {lab} with A{lab} = AB (if AB is a crank or {lab} lies "
-                              "on the working arc)", f"曲柄与机架共线({zh}):A{lab} = AB"))
-        Cs_ = sc.add(f"C{k}_shown", shown_if_used, crank, A, *Bs, Bx, Cx, style="point", label=cx, optional=True, caption=(
-            f"Assemble {cx} on the branch of position 1 (C1 lies {where[0]} of B1→D, so {cx} {where[0]} of {lab}→D)",
-            f"按位置 1 的装配分支作出 {cx}(C1 在 B1→D 的{where[1]}侧)"))
-        sc.add(f"g{k}_B", segment, Bs_, Cs_, style="ghost", optional=True)
-        sc.add(f"g{k}_C", segment, Cs_, D, style="ghost", optional=True)
+        if drawing:
+            cx = lab.replace("B", "C")
+            Bs_ = sc.add(f"B{k}_shown", shown_if_used, crank, A, *Bs, Bx, style="point", label=lab,
+                         caption=(f"Crank along the frame {en}: {lab} with A{lab} = AB (if AB is a crank or {lab} "
+                                  "lies on the working arc)", f"曲柄与机架共线({zh}):A{lab} = AB"))
+            Cs_ = sc.add(f"C{k}_shown", shown_if_used, crank, A, *Bs, Bx, Cx, style="point", label=cx, optional=True,
+                         caption=(f"Assemble {cx} on the branch of position 1 (C1 lies {where[0]} of B1→D, so {cx} "
+                                  f"{where[0]} of {lab}→D)", f"按位置 1 的装配分支作出 {cx}(C1 在 B1→D 的{where[1]}侧)"))
+            sc.add(f"g{k}_B", segment, Bs_, Cs_, style="ghost", optional=True)
+            sc.add(f"g{k}_C", segment, Cs_, D, style="ghost", optional=True)
         ext.append((Bx, Cx))
     (Bn, Cn), (Bf, Cf) = ext
     wm = sc.add("work", working_motion, A, D, *Bs, Cs[0], Cs[2], Bn, Cn, Bf, Cf, BC, CD, visible=False)
@@ -323,7 +331,9 @@ def add_report(sc: Scene, A: Ref, D: Ref, Bs: Sequence[Ref], Cs: Sequence[Ref]) 
     sc.add("branch_ok", same_branch, *(x for B, C in zip(Bs, Cs) for x in (B, C, D)), role=Role.MEASUREMENT,
            caption=("Branch: C1, C2, C3 on the same side of B→D", "分支:C1、C2、C3 位于 B→D 的同一侧"))
     sc.add("phi", directions, A, *Bs, visible=False)
-    sc.add("mark_gamma", _gamma_mark, crank, Bn, Cn, Bf, Cf, D, gm, role=Role.ANNOTATION, style="angle", optional=True)
+    if drawing:
+        sc.add("mark_gamma", _gamma_mark, crank, Bn, Cn, Bf, Cf, D, gm, role=Role.ANNOTATION, style="angle",
+               optional=True)
     return {n: n for n in ("AB", "BC", "CD", "grashof", "grashof_margin", "crank", "output_crank", "gamma_min",
                            "gamma_min_work", "branch_ok", "order_ok", "phi")} | {"AD": "ADlen"}
 
