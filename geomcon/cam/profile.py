@@ -439,8 +439,10 @@ def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float
     step and wherever the secant leaves the bracket), ending when lo and hi are adjacent floats; the answer
     is hi. One step more: when an end has come to the root and its value is so small that the secant rounds
     onto it (it then never moves, and the other end only halves towards it: forty-odd calls), the next point
-    is taken a few units of the last place inside from that end, which closes the bracket at once; it is
-    taken once in a row, so a root farther away costs no more than a halving.
+    is taken a few units of the last place inside from that end, which closes the bracket at once; when
+    that point is still on the end's side (a root a little farther, or a slope that is 0 over a few units),
+    the next such step reaches twice as far. At most :data:`_NUDGES` such steps are taken; the plain halving
+    every third step bounds the worst case.
 
     >>> x = illinois1(math.cos, 1.0, 2.0, math.cos(1.0), math.cos(2.0))
     >>> bool(x == _bisect_all(np.cos, np.array([1.0]), np.array([2.0]))[0]), math.cos(x) <= 0.0 < math.cos(math.nextafter(x, 0.0))
@@ -450,25 +452,28 @@ def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float
     >>> len(calls) < 15
     True
     """
-    kept, step, nudged = 0, 0, False
+    kept, step, reach, nudges = 0, 0, 1.0, _NUDGES
     while True:
         m = 0.5 * (lo + hi)
         den = fhi - flo
-        nudge = False
+        side = 0                                    # +1: a step inside from hi, −1: from lo
         if step % 3 != 2 and den != 0.0:
             secant = hi - fhi * (hi - lo) / den
             if lo < secant < hi:                    # (a nan or infinite secant fails this test)
                 m = secant
-            elif not nudged and secant == secant and (fhi if secant >= hi else flo) != 0.0:
-                tol = _NUDGE * max(abs(lo), abs(hi), _TINY)  # it rounds onto an end (whose value is tiny, not a
-                inside = hi - tol if secant >= hi else lo + tol   # roundoff 0): step just inside from that end
+            elif secant == secant and nudges:      # it rounds onto an end: step just inside from that end
+                nudges -= 1
+                tol = reach * _NUDGE * max(abs(lo), abs(hi), _TINY)
+                inside = hi - tol if secant >= hi else lo + tol
                 if lo < inside < hi:
-                    m, nudge = inside, True
+                    m, side = inside, (1 if secant >= hi else -1)
         if not lo < m < hi:
             return hi                               # lo and hi are adjacent: the halving sits on an end
-        nudged = nudge
         fm = slope1(m)
-        if fm > 0.0:
+        up = fm > 0.0
+        # a step inside that lands on its own end's side found no sign change: the next one reaches twice as far
+        reach = reach * 2.0 if (side > 0 and not up) or (side < 0 and up) else (1.0 if side else reach)
+        if up:
             lo, flo = m, fm
             if kept > 0:
                 fhi = 0.5 * fhi
@@ -481,6 +486,9 @@ def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float
         step += 1
 
 
+_NUDGES = 6
+"""At most this many steps inside from an end per root (a slope that is only roundoff there would make them
+no better than halvings, and costlier)."""
 _NUDGE = 4.0 * 2.220446049250313e-16
 _TINY = 2.2250738585072014e-308
 
