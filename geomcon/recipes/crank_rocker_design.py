@@ -233,6 +233,8 @@ def _add_output_arm(sc: Scene, H: float) -> str:
     E1E2 ∥ C1C2 and the link EF, parallel in both extremes, moves the slider by H); returns the DE step."""
     D, C1, C2 = Ref("D"), Ref("Cf"), Ref("Ce")
     DE = sc.add("DE", _scaled, D, C1, C2, H, unit="mm", visible=False, optional=True)
+    if not sc.drawing:                       # the arm's ends and links only a drawing needs
+        return "DE"
     E1 = sc.add("E1", point_along, D, C1, DE, style="joint", label="E1", optional=True, caption=(
         f"Output arm: E1, E2 on DC1, DC2 with E1E2 ∥ C1C2 and E1E2 = H = {H:g}: DE = H/(2 sin ψ/2)",
         f"输出摇臂:在 DC1、DC2 上取 E1、E2,使 E1E2 ∥ C1C2 且 E1E2 = H = {H:g}"))
@@ -259,13 +261,16 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
     c1, c2 = extreme_positions(g)
     symmetric = g.get("psi") is not None
     D = sc.given("D", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot D of the rocker", "摇杆固定铰链 D"))
-    sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
+    drawing = sc.drawing                     # the rocker's bars and the chord only a drawing needs
+    if drawing:
+        sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     C1 = sc.given("C1", c1, style="joint", caption=(f"Extreme position DC1, CD = {CD:g}", f"作摇杆极限位置 DC1,CD = {CD:g}"))
     C2 = sc.given("C2", c2, style="joint", caption=("Extreme position DC2: the rocker swings through ψ = ∠C1DC2",
                                                     "作摇杆另一极限位置 DC2,摆角 ψ = ∠C1DC2"))
-    add_bar(sc, "DC1", D, C1, role=Role.GIVEN)
-    add_bar(sc, "DC2", D, C2, role=Role.GIVEN)
-    sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
+    if drawing:
+        add_bar(sc, "DC1", D, C1, role=Role.GIVEN)
+        add_bar(sc, "DC2", D, C2, role=Role.GIVEN)
+        sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
     near_side = 1 if (c2 - c1).cross(Point(0, 0) - c1) > 0 else -1
     xaxis = None
     if closing == "frame_line":
@@ -291,6 +296,7 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
     n = 0
     for s, pre, en, zh, lab in sides:
         kT = add_theta_circle(sc, C1, C2, th, s, side_words=(en, zh), prefix=pre, label=lab)
+        # an annotation (a lean scene skips it) that callers read from a solution's scene: not left out
         sc.add(f"{pre}arcs_ok", admissible_arcs, kT, C1, C2, D, CD, g.get("gamma_allow"), role=Role.ANNOTATION,
                style="admissible", caption=(f"Admissible arcs {en}: a crank, C1 and C2 on one side of AD"
                                             + (f", γmin ≥ {g['gamma_allow']:g}°" if g.get("gamma_allow") else ""),
@@ -352,13 +358,17 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
     CD, AD, phi = g["CD"], g["AD"], g["phi"]
     A = sc.given("A_0", Point(0.0, 0.0), style="pivot", label="A", caption=("Fixed pivot A", "固定铰链 A"))
     D = sc.given("D", Point(AD, 0.0), style="pivot", caption=(f"Fixed pivot D with AD = {AD:g}", f"取 AD = {AD:g} 得固定铰链 D"))
-    sc.add("AD_frame", segment, A, D, role=Role.GIVEN, style="frame", caption=("The frame AD", "机架 AD"))
+    drawing = sc.drawing                     # the frame, the rocker's bar and the join only a drawing needs
+    if drawing:
+        sc.add("AD_frame", segment, A, D, role=Role.GIVEN, style="frame", caption=("The frame AD", "机架 AD"))
     c = Point(AD - CD * math.cos(math.radians(phi)), CD * math.sin(math.radians(phi)))   # not 180° − φ: keeps a tiny φ
     C1 = sc.given("C1", c, style="joint", caption=(f"The given extreme position DC1 at ∠ADC1 = {phi:g}°",
                                                    f"作已知极限位置 DC1,∠ADC1 = {phi:g}°"))
-    add_bar(sc, "DC1", D, C1, ("Rocker DC1", "摇杆 DC1"), role=Role.GIVEN)
+    if drawing:
+        add_bar(sc, "DC1", D, C1, ("Rocker DC1", "摇杆 DC1"), role=Role.GIVEN)
     kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
-    sc.add("AC1s", segment, A, C1, style="construction", caption=("Join AC1", "连接 AC1"))
+    if drawing:
+        sc.add("AC1s", segment, A, C1, style="construction", caption=("Join AC1", "连接 AC1"))
     out = []
     senses = ((1.0, "counter-clockwise", "逆时针"),) if g["K"] == 1.0 else ((1.0, "counter-clockwise", "逆时针"),
                                                                           (-1.0, "clockwise", "顺时针"))

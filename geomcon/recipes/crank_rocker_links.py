@@ -42,19 +42,24 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("AB_given", float, AB, visible=False)
     sc.add("BC_given", float, BC, visible=False)
     A = sc.given("A", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot A of the crank", "曲柄固定铰链 A"))
-    sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
+    drawing = sc.drawing                     # the joins, right-angle mark, links and marks only a drawing needs
+    if drawing:
+        sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     C2 = sc.given("C2", Point(AB + BC, 0.0), style="joint", caption=(
         f"Extended extreme position: AC2 = AB + BC = {AB + BC:g}", f"拉直共线位置:AC2 = AB + BC = {AB + BC:g}"))
-    sc.add("AC2s", segment, A, C2, style="construction")
+    if drawing:
+        sc.add("AC2s", segment, A, C2, style="construction")
     r1 = sc.add("rC1", ray_from, A, C2, th, caption=("Through A a line at θ to AC2", "过 A 作与 AC2 成 θ 角的直线"))
     C1 = sc.add("C1", _on_ray, r1, BC - AB, style="joint", label="C1", caption=(
         f"Folded extreme position on it: AC1 = BC − AB = {BC - AB:g}", f"在其上取折叠共线位置 AC1 = BC − AB = {BC - AB:g}"))
-    sc.add("AC1s", segment, A, C1, style="construction")
-    sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
+    if drawing:
+        sc.add("AC1s", segment, A, C1, style="construction")
+        sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
     m = sc.add("bis", perpendicular_bisector, C1, C2, caption=("The perpendicular bisector of C1C2: DC1 = DC2",
                                                               "作 C1C2 的中垂线(DC1 = DC2)"))
-    mid = sc.add("Mchord", _mid, C1, C2, visible=False)
-    sc.add("bis_mark", marks.right_angle, mid, C2, sc.add("Mup", _up, C1, C2, visible=False), role=Role.ANNOTATION)
+    if drawing:
+        mid = sc.add("Mchord", _mid, C1, C2, visible=False)
+        sc.add("bis_mark", marks.right_angle, mid, C2, sc.add("Mup", _up, C1, C2, visible=False), role=Role.ANNOTATION)
     half = sc.add("psi_half", _half, psi, visible=False, unit="deg")
     a_side = sc.add("a_side", _side_of, C1, C2, A, visible=False)
     cands = []
@@ -118,11 +123,15 @@ def _draw_choice(sc: Scene, idx: Ref, A: Ref, C1: Ref, C2: Ref, cands: list, th:
     """The chosen design drawn in both extreme positions: D, B1, B2 and the rocker CD."""
     D = sc.add("D", pick, idx, *cands, role=Role.RESULT, style="pivot", label="D",
                caption=("The textbook's choice of D (the other valid point is a candidate)", "取 D(另一可行点为备选解)"))
-    sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
-    sc.add("AD_link", segment, A, D, style="frame", optional=True, caption=("The frame AD", "机架 AD"))
+    drawing = sc.drawing                     # the ground symbol, links and marks only a drawing needs
+    if drawing:
+        sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
+        sc.add("AD_link", segment, A, D, style="frame", optional=True, caption=("The frame AD", "机架 AD"))
     B1 = sc.add("B1", point_along, A, C1, -AB, role=Role.RESULT, style="joint", label="B1", optional=True,
                 caption=("B1 beyond A on the folded line, B2 on the extended line (AB as given)", "在两共线位置上取 B1、B2"))
     B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2", optional=True)
+    if not drawing:
+        return
     for i, (B, C) in enumerate(((B1, C1), (B2, C2)), 1):
         style = "link" if i == 1 else "link-alt"
         add_bar(sc, f"AB{i}", A, B, (f"Draw the designed linkage in extreme position {i}", f"画出所设计机构的极限位置 {i}"),

@@ -106,8 +106,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
     n1 = sc.add("n1", perpendicular, gl, C1, caption=("Perpendicular to the guide at C1", "过 C1 作导路的垂线"))
     Q = sc.add("Q", line_circle, n1, kT, branch=OtherThan(C1), style="point", label="Q",
                caption=("It meets the θ-circle again at Q", "交 θ 圆于 Q"))
-    sc.add("arc_ok", admissible_arc, kT, Q, C1, C2, None, role=Role.ANNOTATION, style="admissible",
-           caption=("Admissible arc QC1: every A on it gives K and H", "A 的可行弧 QC1:其上任一点均满足 K、H"))
+    if sc.drawing:                           # the admissible arc only a drawing needs
+        sc.add("arc_ok", admissible_arc, kT, Q, C1, C2, None, role=Role.ANNOTATION, style="admissible",
+               caption=("Admissible arc QC1: every A on it gives K and H", "A 的可行弧 QC1:其上任一点均满足 K、H"))
     A = sc.add("A", best_on_arc, kT, Q, C1, C2, g.get("e_min") or 0.0, g.get("e_max"), role=Role.RESULT,
                style="pivot", label="A*",
                caption=("A* on QC1 with the largest working-stroke γmin (golden-section search; the crank turns "

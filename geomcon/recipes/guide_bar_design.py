@@ -116,7 +116,8 @@ def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref
         sc.add("AC", length, A, C, visible=False, unit="mm")
     else:
         AB = g["AB"]
-        sc.add("kB", circle, A, AB, style="path", caption=(f"Crank circle about A, AB = {AB:g}", f"以 A 为圆心、AB = {AB:g} 作曲柄圆"))
+        if sc.drawing:
+            sc.add("kB", circle, A, AB, style="path", caption=(f"Crank circle about A, AB = {AB:g}", f"以 A 为圆心、AB = {AB:g} 作曲柄圆"))
         comp = sc.add("comp", _complement_turn, half, visible=False, unit="deg")
         down = sc.given("down", Point(0.0, -1.0), visible=False)
         r1 = sc.add("rB1", ray_from, A, down, comp, caption=("Through A a ray at 90° − θ/2 to the centre line",
@@ -126,16 +127,19 @@ def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref
         t1 = sc.add("t1", _tangent_at, A, B1, caption=("The tangent at B1 (perpendicular to AB1)", "过 B1 作曲柄圆的切线"))
         C = sc.add("C", meet_lines, t1, centre, role=Role.RESULT, style="pivot", label="C",
                    caption=("It meets the centre line at C", "交中心线于 C"))
-        sc.add("C_ground", marks.ground, C, -math.pi / 2, role=Role.ANNOTATION, style="ground")
+        if sc.drawing:
+            sc.add("C_ground", marks.ground, C, -math.pi / 2, role=Role.ANNOTATION, style="ground")
         B2 = sc.add("B2", reflect, B1, centre, role=Role.RESULT, style="joint", label="B2",
                     caption=("B2, the mirror image of B1 in the centre line", "B1 关于中心线的对称点 B2"))
         sc.add("AC", length, A, C, role=Role.MEASUREMENT, unit="mm", caption=("Frame AC", "机架 AC"))
         sc.add("AB", length, A, B1, visible=False, unit="mm")
-    for i, B in enumerate((B1, B2), 1):
+    drawing = sc.drawing                     # the cranks, right-angle marks and the ψ mark only a drawing needs
+    for i, B in enumerate((B1, B2), 1) if drawing else ():
         add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i} ⊥ guide bar CB{i}", f"曲柄 AB{i} ⊥ 导杆 CB{i}"), style="link" if i == 1 else "link-alt")
         sc.add(f"right{i}", marks.right_angle, B, A, C, role=Role.ANNOTATION, style="right-angle")
     ps = sc.add("psi", angle_deg, C, B1, B2, role=Role.MEASUREMENT, unit="deg", caption=("ψ = ∠B1CB2", "ψ = ∠B1CB2"))
-    add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
+    if drawing:
+        add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
     return A, C, B1, B2, th
 
 
@@ -151,7 +155,7 @@ def guide_construct(g: Mapping[str, Any]) -> Construction:
     """Build the guide-bar design."""
     sc = Scene("Oscillating guide-bar designed by K")
     A, C, B1, B2, _ = _guide_bar_part(sc, g)
-    for i, B in enumerate((B1, B2), 1):
+    for i, B in enumerate((B1, B2), 1) if sc.drawing else ():
         add_bar(sc, f"CB{i}", C, B, style="link" if i == 1 else "link-alt")
     return Construction(sc, {q.name: q.name for q in GUIDE_ANSWERS}, {n: n for n in ("A", "C", "B1", "B2")})
 
@@ -170,9 +174,11 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     D2 = sc.add("D2", reflect, D1, centre, role=Role.RESULT, style="joint", label="D2",
                 caption=("D2, the mirror image of D1", "D1 的对称点 D2"))
     CD = sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Guide bar CD = CD1", "导杆长 CD = CD1"))
-    for i, D in enumerate((D1, D2), 1):
+    drawing = sc.drawing                     # the guide bars, the arc of D, the coupler and the slider only a drawing needs
+    for i, D in enumerate((D1, D2), 1) if drawing else ():
         add_bar(sc, f"CD{i}", C, D, (f"Guide bar CD{i}", f"导杆 CD{i}") if i == 1 else ("", ""), style="link" if i == 1 else "link-alt")
-    sc.add("arcD", circle, C, CD, style="path", caption=("The arc of D about C", "D 点绕 C 的轨迹圆弧"))
+    if drawing:
+        sc.add("arcD", circle, C, CD, style="path", caption=("The arc of D about C", "D 点绕 C 的轨迹圆弧"))
     T = sc.add("T", line_circle, centre, sc.add("kCD", circle, C, CD, visible=False), branch=Ahead(C, A), style="point",
                label="T", caption=("The arc's top T on the centre line", "圆弧与中心线的交点 T"))
     M = sc.add("Mchord", midpoint, D1, D2, style="point", label="M", caption=("The chord's midpoint M", "弦 D1D2 的中点 M"))
@@ -193,11 +199,12 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     if DE is not None:
         sc.add("alpha_max", _pressure, dev, DE, role=Role.MEASUREMENT, unit="deg",
                caption=("Largest pressure angle at the ram, asin(GM / DE)", "滑块最大压力角 asin(GM/DE)"))
-        kE = sc.add("kE", circle, D1, DE, visible=False)
-        E1 = sc.add("E1", line_circle, guide, kE, branch=NearestTo(G), role=Role.RESULT, style="joint", label="E1",
-                    caption=("E1 on the guide at DE from D1", "以 D1 为圆心、DE 为半径画弧交导路于 E1"))
-        add_bar(sc, "D1E1", D1, E1, ("Coupler D1E1", "连杆 D1E1"))
-        sc.add("slider_E1", marks.slider, E1, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+        if drawing:
+            kE = sc.add("kE", circle, D1, DE, visible=False)
+            E1 = sc.add("E1", line_circle, guide, kE, branch=NearestTo(G), role=Role.RESULT, style="joint", label="E1",
+                        caption=("E1 on the guide at DE from D1", "以 D1 为圆心、DE 为半径画弧交导路于 E1"))
+            add_bar(sc, "D1E1", D1, E1, ("Coupler D1E1", "连杆 D1E1"))
+            sc.add("slider_E1", marks.slider, E1, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
     names = [q.name for q in SHAPER_ANSWERS if DE is not None or q.name not in ("DE", "alpha_max")]
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1", "D2")})
 

@@ -70,32 +70,39 @@ def construct(g: Mapping[str, Any]) -> Construction:
     n = sc.add("nC", perpendicular, ee, C, caption=("Perpendicular to ee at C", "过 C 作 ee 的垂线"))
     A = sc.add("A", line_circle, n, k, branch=Above(B1, B2), role=Role.RESULT, style="pivot", label="A",
                caption=("It meets the circle at A, the crank pivot", "交圆于曲柄转动中心 A"))
-    sc.add("A_ground", marks.ground, A, math.pi, role=Role.ANNOTATION, style="ground")   # clear of CD′ above
+    drawing = sc.drawing                     # the cranks, marks, arm, coupler and slider only a drawing needs
+    if drawing:
+        sc.add("A_ground", marks.ground, A, math.pi, role=Role.ANNOTATION, style="ground")   # clear of CD′ above
     sc.add("AB", length, A, B1, role=Role.MEASUREMENT, unit="mm", caption=("Crank AB = AB1", "曲柄 AB = AB1"))
     sc.add("AC", length, A, C, role=Role.MEASUREMENT, unit="mm", caption=("Frame AC", "机架 AC"))
-    add_bar(sc, "AB1", A, B1, ("The crank in the two extreme positions", "曲柄的两个极限位置"))
-    add_bar(sc, "AB2", A, B2, style="link-alt")
+    if drawing:
+        add_bar(sc, "AB1", A, B1, ("The crank in the two extreme positions", "曲柄的两个极限位置"))
+        add_bar(sc, "AB2", A, B2, style="link-alt")
     ang = sc.add("crank_angle", angle_deg, A, B1, B2, role=Role.MEASUREMENT, unit="deg",
                  caption=("Crank angle of one stroke ∠B1AB2 = 180° − θ", "一个行程的曲柄转角 ∠B1AB2 = 180° − θ"))
-    add_angle_mark(sc, "mark_B1AB2", A, B1, B2, "180°−θ", ang)
+    if drawing:
+        add_angle_mark(sc, "mark_B1AB2", A, B1, B2, "180°−θ", ang)
     D1 = sc.add("D1", point_along, C, B2, S / 2, role=Role.RESULT, style="joint", label="D1",
                 caption=(f"D on the guide bar beyond C, CD = S/2 = {S / 2:g}: E's extreme positions on ee",
                          f"导杆上取 CD = S/2 = {S / 2:g}(D 在 ee 上时滑块处于极限位置)"))
     sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Arm CD", "导杆臂长 CD"))
-    add_bar(sc, "CD1", C, D1, style="link")
+    if drawing:
+        add_bar(sc, "CD1", C, D1, style="link")
     names = [q.name for q in ANSWERS if q.name != "DE"]
     if g.get("alpha_allow") is not None:
         a = g["alpha_allow"]
-        Dt = sc.add("Dt", point_along, C, sc.given("up", Point(0.0, 1.0), visible=False), S / 2, style="point", label="D′",
-                    caption=("CD ⊥ ee: the largest pressure angle at E", "CD ⊥ ee 时滑块压力角最大"))
+        if drawing:
+            Dt = sc.add("Dt", point_along, C, sc.given("up", Point(0.0, 1.0), visible=False), S / 2, style="point",
+                        label="D′", caption=("CD ⊥ ee: the largest pressure angle at E", "CD ⊥ ee 时滑块压力角最大"))
         DE = sc.add("DE", _shortest, Ref("CD"), a, role=Role.MEASUREMENT, unit="mm",
                     caption=(f"Shortest coupler DE = CD / sin αallow, αallow = {a:g}°", f"最短连杆 DE = CD / sin[α],[α] = {a:g}°"))
-        kE = sc.add("kE", circle, Dt, DE, visible=False)
-        E = sc.add("E", line_circle, ee, kE, branch=ToRightOf(Dt), role=Role.RESULT, style="joint", label="E′",
-                   caption=("E′ on ee at DE from D′", "以 D′ 为圆心、DE 为半径交 ee 于 E′"))
-        add_bar(sc, "DtE", Dt, E, style="link")
-        add_bar(sc, "CDt", C, Dt, style="ghost", role=Role.CONSTRUCTION)
-        sc.add("slider_E", marks.slider, E, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+        if drawing:
+            kE = sc.add("kE", circle, Dt, DE, visible=False)
+            E = sc.add("E", line_circle, ee, kE, branch=ToRightOf(Dt), role=Role.RESULT, style="joint", label="E′",
+                       caption=("E′ on ee at DE from D′", "以 D′ 为圆心、DE 为半径交 ee 于 E′"))
+            add_bar(sc, "DtE", Dt, E, style="link")
+            add_bar(sc, "CDt", C, Dt, style="ghost", role=Role.CONSTRUCTION)
+            sc.add("slider_E", marks.slider, E, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
         names.append("DE")
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
 
