@@ -275,6 +275,10 @@ REFINE = 3
 samples can overtake the best sample's, so more than one is refined)."""
 SLOPE_NOISE = 1e-9
 """A slope within this fraction of its largest sampled magnitude is roundoff (no root is sought there)."""
+FLOOR_REL = 2.220446049250313e-16 * 1e-3
+"""The scalar root search stops at a bracket this fraction of its piece wide (:func:`illinois1`): below the
+adjacent floats of every root farther than 1e-3 of the piece from δ = 0, so only roots nearer to 0 end
+earlier, within ~1e-19 rad."""
 FLAT_REL = 1e-13
 PRUNE_GAIN = 4.0
 PRUNE_REL = 1e-9
@@ -343,8 +347,8 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         else:
             slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
-        lo, hi, flo, fhi = [], [], [], []
-        for d, sl in zip(grids, slopes):
+        lo, hi, flo, fhi, floors = [], [], [], [], []
+        for (a, b), d, sl in zip(pieces, grids, slopes):
             # an end is a candidate unless the slope, beyond its noise, leads into the piece (g grows there):
             # values that tie to roundoff (α nearly constant over a long piece) must not pick the wrong end
             places += [float(d[0])] if not sl[0] > noise else []
@@ -357,8 +361,9 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
             hi += d[i + 1].tolist()
             flo += sl[i].tolist()
             fhi += sl[i + 1].tolist()
+            floors += [FLOOR_REL * (b - a)] * len(i)
         if slope1 is not None:
-            places += [illinois1(slope1, *bracket) for bracket in zip(lo, hi, flo, fhi)]
+            places += [illinois1(slope1, *bracket) for bracket in zip(lo, hi, flo, fhi, floors)]
         else:
             places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
         vals = np.asarray(g(np.asarray(places)), dtype=float)
@@ -433,7 +438,8 @@ def _split(values: np.ndarray, grids: Sequence[np.ndarray]) -> list[np.ndarray]:
     return np.split(values, np.cumsum([len(d) for d in grids])[:-1].tolist())
 
 
-def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float, fhi: float) -> float:
+def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float, fhi: float,
+              floor: float = 0.0) -> float:
     """The place where ``slope1`` changes sign from + (at lo, value flo) to − or 0 (at hi, value fhi), to the
     last bit, on floats: the steps of :func:`_bisect_all` (Illinois regula falsi, a plain halving every third
     step and wherever the secant leaves the bracket), ending when lo and hi are adjacent floats; the answer
@@ -442,7 +448,9 @@ def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float
     is taken a few units of the last place inside from that end, which closes the bracket at once; when
     that point is still on the end's side (a root a little farther, or a slope that is 0 over a few units),
     the next such step reaches twice as far. At most :data:`_NUDGES` such steps are taken; the plain halving
-    every third step bounds the worst case.
+    every third step bounds the worst case. ``floor`` (> 0) also ends the search when the bracket is no wider
+    than it: near δ = 0 adjacent floats are ~1e-32 apart, and a root there (a law starting at rest) would
+    take fifty halvings more than the same root at δ = 1, whose adjacent floats are wider than the floor.
 
     >>> x = illinois1(math.cos, 1.0, 2.0, math.cos(1.0), math.cos(2.0))
     >>> bool(x == _bisect_all(np.cos, np.array([1.0]), np.array([2.0]))[0]), math.cos(x) <= 0.0 < math.cos(math.nextafter(x, 0.0))
@@ -467,7 +475,7 @@ def illinois1(slope1: Callable[[float], float], lo: float, hi: float, flo: float
                 inside = hi - tol if secant >= hi else lo + tol
                 if lo < inside < hi:
                     m, side = inside, (1 if secant >= hi else -1)
-        if not lo < m < hi:
+        if not lo < m < hi or hi - lo <= floor:
             return hi                               # lo and hi are adjacent: the halving sits on an end
         fm = slope1(m)
         up = fm > 0.0
