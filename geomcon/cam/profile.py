@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Callable, Sequence
 
 import numpy as np
@@ -332,14 +332,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     >>> maximise(lambda d: -(d - 1.0) ** 4, [(0.0, 1.0)], slope=lambda d: -(d - 1.0) ** 3).delta < 1.0   # flat at the end
     True
     """
-    total = sum(b - a for a, b in pieces)
-    grids = []
-    for a, b in pieces:
-        n = max(16, int(math.ceil(dense * (b - a) / total)))
-        near = (b - a) * _NEAR_ENDS                # a maximum squeezed against an end (where the slope is 0)
-        d = np.unique(np.concatenate([np.linspace(a, b, n + 1), a + near, b - near]))
-        d[-1] = np.nextafter(b, a)
-        grids.append(d)
+    grids = sample_grids(tuple((float(a), float(b)) for a, b in pieces), dense)
     places: list[float] = []
     if slope is not None:
         if slope1 is not None:                      # one call for all the pieces' samples
@@ -431,6 +424,28 @@ def parabola_gain(d: np.ndarray, v: np.ndarray, i: int) -> float:
     if not lo <= top <= hi:
         return 0.0
     return max(0.0, y1 - b * b / (4.0 * c) - float(v[i]))
+
+
+@lru_cache(maxsize=256)
+def sample_grids(pieces: tuple[tuple[float, float], ...], dense: int) -> tuple[np.ndarray, ...]:
+    """The samples :func:`maximise` takes of each piece: ``dense`` over the turn shared by length (at least
+    16 a piece), denser towards both ends (1e-2 … 1e-9 of the piece), the right end one-sided. The same
+    pieces give the same samples, so they are made once (read-only arrays).
+
+    >>> g = sample_grids(((0.0, 1.0),), 16)[0]
+    >>> len(g), float(g[0]), bool(g[-1] == np.nextafter(1.0, 0.0)), g.flags.writeable
+    (33, 0.0, True, False)
+    """
+    total = sum(b - a for a, b in pieces)
+    grids = []
+    for a, b in pieces:
+        n = max(16, int(math.ceil(dense * (b - a) / total)))
+        near = (b - a) * _NEAR_ENDS                # a maximum squeezed against an end (where the slope is 0)
+        d = np.unique(np.concatenate([np.linspace(a, b, n + 1), a + near, b - near]))
+        d[-1] = np.nextafter(b, a)
+        d.flags.writeable = False
+        grids.append(d)
+    return tuple(grids)
 
 
 def _split(values: np.ndarray, grids: Sequence[np.ndarray]) -> list[np.ndarray]:
@@ -1158,7 +1173,7 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
            "inverted_relative", "turn_of", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
-           "illinois1", "brent_max1", "sign1", "envelope1", "pow1", "div1", "corners", "sample_count",
+           "illinois1", "brent_max1", "sign1", "sample_grids", "envelope1", "pow1", "div1", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
            "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]
