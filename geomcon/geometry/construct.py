@@ -78,8 +78,18 @@ def rotate_ray(ray: Ray, angle: float) -> Ray:
 
 
 def ray_at_angle(origin: Point, toward: Point, angle: float) -> Ray:
-    """The ray from ``origin`` making the signed ``angle`` (radians) with the ray ``origin → toward``."""
-    return rotate_ray(Ray.toward(origin, toward), angle)
+    """The ray from ``origin`` making the signed ``angle`` (radians) with the ray ``origin → toward``.
+
+    >>> d = ray_at_angle(Point(1, 1), Point(1, 5), -math.pi / 2).direction
+    >>> round(d.x, 12), round(d.y, 12)
+    (1.0, 0.0)
+    """
+    # rotate_ray(Ray.toward(origin, toward), angle) on floats: the same unit vector, turned, made unit again
+    if origin == toward:
+        raise Degenerate("ray toward its own origin")
+    dx, dy = unit_xy(toward.x - origin.x, toward.y - origin.y)
+    c, s = math.cos(angle), math.sin(angle)
+    return Ray(origin, Point(c * dx - s * dy, s * dx + c * dy))
 
 
 def point_along(origin: Point, toward: Point, dist: float) -> Point:

@@ -168,25 +168,47 @@ def add_theta_and_K(sc: Scene, A: Ref, C1: Ref, C2: Ref) -> Ref:
 # ------------------------------------------------------------------------------ crank-rocker designs
 # The candidates of a crank-rocker designed by K (positions, frame and links forms) and the textbook's
 # choice among them; shared by ``crank_rocker_design`` and ``crank_rocker_links``.
+# The candidates' step operations below run for every candidate of every solve: plain float arithmetic in the
+# order of the vector formulas in their comments (abs(Q − A) is hypot(Q.x − A.x, Q.y − A.y)): the same bits.
 def half_difference(A: Point, P: Point, Q: Point) -> float:
-    """|AQ − AP| / 2: the crank of a design whose extreme positions are P and Q."""
-    return abs(abs(Q - A) - abs(P - A)) / 2.0
+    """|AQ − AP| / 2: the crank of a design whose extreme positions are P and Q.
+
+    >>> half_difference(Point(0, 0), Point(3, 4), Point(0, 13))
+    4.0
+    """
+    ax, ay = A.x, A.y                                      # abs(abs(Q − A) − abs(P − A)) / 2
+    return abs(math.hypot(Q.x - ax, Q.y - ay) - math.hypot(P.x - ax, P.y - ay)) / 2.0
 
 
 def half_sum(A: Point, P: Point, Q: Point) -> float:
-    """(AP + AQ) / 2: the coupler."""
-    return (abs(P - A) + abs(Q - A)) / 2.0
+    """(AP + AQ) / 2: the coupler.
+
+    >>> half_sum(Point(0, 0), Point(3, 4), Point(0, 13))
+    9.0
+    """
+    ax, ay = A.x, A.y                                      # (abs(P − A) + abs(Q − A)) / 2
+    return (math.hypot(P.x - ax, P.y - ay) + math.hypot(Q.x - ax, Q.y - ay)) / 2.0
 
 
 def folded_flag(A: Point, P1: Point, P2: Point) -> float:
-    """1.0 when P1 is the folded extreme position (nearer to A)."""
-    return 1.0 if abs(P1 - A) < abs(P2 - A) else 0.0
+    """1.0 when P1 is the folded extreme position (nearer to A).
+
+    >>> folded_flag(Point(0, 0), Point(3, 4), Point(0, 13))
+    1.0
+    """
+    ax, ay = A.x, A.y                                      # abs(P1 − A) < abs(P2 − A)
+    return 1.0 if math.hypot(P1.x - ax, P1.y - ay) < math.hypot(P2.x - ax, P2.y - ay) else 0.0
 
 
 def near_flag(A: Point, C1: Point, C2: Point, D: Point) -> float:
-    """1.0 when A and D lie on the same side of the line C1C2."""
-    u = C2 - C1
-    return 1.0 if u.cross(A - C1) * u.cross(D - C1) > 0 else 0.0
+    """1.0 when A and D lie on the same side of the line C1C2.
+
+    >>> near_flag(Point(0, 1), Point(-1, 0), Point(1, 0), Point(5, 2)), near_flag(Point(0, -1), Point(-1, 0), Point(1, 0), Point(5, 2))
+    (1.0, 0.0)
+    """
+    ux, uy = C2.x - C1.x, C2.y - C1.y                      # u = C2 − C1; u × (A − C1) · u × (D − C1) > 0
+    cx, cy = C1.x, C1.y
+    return 1.0 if (ux * (A.y - cy) - uy * (A.x - cx)) * (ux * (D.y - cy) - uy * (D.x - cx)) > 0 else 0.0
 
 
 ALPHA_ALLOW_MIN = math.degrees(math.asin(1e-10))
@@ -231,16 +253,19 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     from ..analytic.design_by_k import rocker_design_valid
     from ..tolerance import REL_TOL
 
-    AD = abs(D - A)
+    ax, ay = A.x, A.y
+    ux, uy = D.x - ax, D.y - ay                            # u = D − A
+    AD = math.hypot(ux, uy)
     if AD == 0.0:
         return False
-    a, b = half_difference(A, P1, P2), half_sum(A, P1, P2)
+    d1, d2 = math.hypot(P1.x - ax, P1.y - ay), math.hypot(P2.x - ax, P2.y - ay)
+    a, b = abs(d2 - d1) / 2.0, (d1 + d2) / 2.0             # half_difference, half_sum
     if arc_side:
-        chord = P2 - P1
-        if arc_side * chord.cross(A - P1) <= REL_TOL * abs(chord) * max(b, CD, AD):
+        cx, cy = P2.x - P1.x, P2.y - P1.y                  # chord = P2 − P1; chord × (A − P1)
+        if arc_side * (cx * (ay - P1.y) - cy * (ax - P1.x)) <= REL_TOL * math.hypot(cx, cy) * max(b, CD, AD):
             return False
-    u = D - A
-    return rocker_design_valid(a, b, CD, AD, u.cross(P1 - A) / AD, u.cross(P2 - A) / AD)
+    return rocker_design_valid(a, b, CD, AD, (ux * (P1.y - ay) - uy * (P1.x - ax)) / AD,
+                               (ux * (P2.y - ay) - uy * (P2.x - ax)) / AD)
 
 
 def excess_by_foot(V: Point, P: Point, Q: Point) -> float:
@@ -273,9 +298,11 @@ def gamma_min_of(A: Point, D: Point, P1: Point, P2: Point) -> float:
     BC + (AD − AB) − CD = AC_f + AD − DC_f), measured by :func:`excess_by_foot`; then
     tan²(γ/2) = E_BC·E_CD/(perimeter·E_BD). Near the Grashof boundary an extreme position lies within rounding
     of the frame line: its excess, O(h²), survives in the points but not in the lengths AB, BC (γ ∝ h)."""
-    Cf, Ce = (P1, P2) if abs(P1 - A) < abs(P2 - A) else (P2, P1)
-    a, b = half_difference(A, P1, P2), half_sum(A, P1, P2)
-    c, d = abs(Cf - D), abs(A - D)
+    ax, ay = A.x, A.y
+    d1, d2 = math.hypot(P1.x - ax, P1.y - ay), math.hypot(P2.x - ax, P2.y - ay)     # abs(P1 − A), abs(P2 − A)
+    Cf, Ce = (P1, P2) if d1 < d2 else (P2, P1)
+    a, b = abs(d2 - d1) / 2.0, (d1 + d2) / 2.0                                       # half_difference, half_sum
+    c, d = math.hypot(Cf.x - D.x, Cf.y - D.y), math.hypot(ax - D.x, ay - D.y)
     out = []
     for e_b, e_c, e_bd, per in ((excess_by_foot(D, A, Ce), excess_by_foot(A, D, Cf), excess_by_foot(Ce, A, D), b + c + d - a),
                                 (excess_by_foot(D, A, Cf), excess_by_foot(A, D, Ce), excess_by_foot(Cf, A, D), b + c + d + a)):

@@ -15,8 +15,11 @@ from __future__ import annotations
 
 import math
 
+from ..errors import Degenerate
 from ..geometry import (Arc, Circle, Line, Point, circle_through3, line_line, polar_angle, ray_at_angle,
                         thales_circle)
+from ..geometry.primitives import Ray, unit_xy
+from ..tolerance import tol
 from ..scene import Ref, Role, Scene
 
 
@@ -69,7 +72,25 @@ def perpendicular_at(a: Point, b: Point) -> Line:
 
 
 def meet_lines(l1, l2) -> Point:
-    """The intersection of two lines (or rays' lines) that must cross."""
+    """The intersection of two lines (or rays' lines) that must cross.
+
+    >>> meet_lines(Line(Point(0, 0), Point(1, 1)), Line(Point(2, 0), Point(0, 1)))
+    Point(x=2.0, y=2.0)
+    """
+    if type(l1) is Ray:
+        # line_line(l1.line(), l2) on floats: the ray's line makes its direction unit once more
+        d1x, d1y = unit_xy(l1.direction.x, l1.direction.y)
+        p1, d2 = l1.origin, l2.direction
+        s = d1x * d2.y - d1y * d2.x
+        if abs(s) > tol(1.0):
+            wx, wy = l2.point.x - p1.x, l2.point.y - p1.y
+            t = (wx * d2.y - wy * d2.x) / s
+            return Point(p1.x + d1x * t, p1.y + d1y * t)
+        l1 = l1.line()                                     # parallel or coincident: as line_line says
+    return _meet(l1, l2)
+
+
+def _meet(l1: Line, l2: Line) -> Point:
     from ..errors import NoIntersection
     l1 = l1.line() if hasattr(l1, "line") else l1
     pts = line_line(l1, l2)
@@ -87,8 +108,23 @@ def seeing_circle(c1: Point, c2: Point, beta_deg: float, side: int) -> Circle:
     """The circle through c1, c2 whose arc on ``side`` (+1: left of c1→c2) sees c1c2 under ``beta_deg``."""
     if abs(beta_deg - 90.0) < 1e-12:
         return thales_circle(c1, c2)
-    p = meet_lines(ray_from(c1, c2, side * (90.0 - beta_deg)), perpendicular_at(c1, c2))
-    return circle_through3(c1, c2, p)
+    # meet_lines(ray_from(c1, c2, side·(90° − β)), perpendicular_at(c1, c2)) on floats: the same operations
+    # (the ray's direction made unit three times, as Ray.toward, rotate_ray and Ray.line do), the same bits
+    if c1 == c2:
+        raise Degenerate("ray toward its own origin")
+    vx, vy = c2.x - c1.x, c2.y - c1.y
+    dx, dy = unit_xy(vx, vy)
+    angle = math.radians(side * (90.0 - beta_deg))
+    c, s = math.cos(angle), math.sin(angle)
+    d1x, d1y = unit_xy(c * dx - s * dy, s * dx + c * dy)
+    d1x, d1y = unit_xy(d1x, d1y)
+    d2x, d2y = unit_xy(-vy, vx)                            # the perpendicular at c2: (c2 − c1) turned
+    sine = d1x * d2y - d1y * d2x
+    if abs(sine) <= tol(1.0):                              # parallel: as the step operations say
+        return circle_through3(c1, c2, meet_lines(ray_from(c1, c2, side * (90.0 - beta_deg)), perpendicular_at(c1, c2)))
+    wx, wy = c2.x - c1.x, c2.y - c1.y
+    t = (wx * d2y - wy * d2x) / sine
+    return circle_through3(c1, c2, Point(c1.x + d1x * t, c1.y + d1y * t))
 
 
 def arc_from_to(circle: Circle, start: Point, end: Point) -> Arc:
