@@ -63,7 +63,9 @@ from typing import Callable
 import numpy as np
 
 from ..errors import NotAMechanism
-from .oscillating import ArmMotion, Motion, levels, piece_grid, pieces, segment_motion
+from .arm_twin import ArmTwin, arm_rho_min  # noqa: F401  (the twin, re-exported: its own module)
+from .oscillating import ArmMotion, Motion, levels, piece_grid, pieces, segment_motion, segment_motion1
+from .profile import sign1
 from .program import Program, Segment
 
 GRID = 2048
@@ -294,21 +296,41 @@ exact to rounding (its error is quadratic), the slopes taken there to about 1e-1
 
 def stationary_max(seg: Segment, level: float, h: float, g: Callable[[Motion], np.ndarray],
                    slope: Callable[[Motion], np.ndarray], n: int = GRID_ARM,
-                   grid: tuple[np.ndarray, Motion] | None = None) -> tuple[float, float]:
+                   grid: tuple[np.ndarray, Motion] | None = None, *,
+                   g1: Callable[[tuple[float, float, float, float]], float] | None = None,
+                   slope1: Callable[[tuple[float, float, float, float]], float] | None = None,
+                   values: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[float, float]:
     """(max of ``g`` over the segment, the fraction where): the grid, the ends of every smooth piece
     (one-sided) and the roots of ``slope`` = dg/dδ (per radian) where it turns from + to − between grid
     points, refined only where the grid values and slopes leave room for a value above the best so far.
-    ``grid`` = (fractions, their motion) may be given precomputed (:func:`arm_grid`)."""
+    ``grid`` = (fractions, their motion) may be given precomputed (:func:`arm_grid`), and ``values`` = (g, slope)
+    on it. ``g1`` and ``slope1``, the same functions of one motion (δ, ψ, ψ′, ψ″) of
+    :func:`~geomcon.cam.oscillating.segment_motion1` on floats, refine without array calls.
+
+    >>> from geomcon.cam.laws import law
+    >>> seg = Segment("rise", 0.0, 120.0, law("cosine"))
+    >>> v, x = stationary_max(seg, 0.0, 20.0, lambda m: m.d1, lambda m: m.d2, g1=lambda m: m[2], slope1=lambda m: m[3])
+    >>> round(x, 12), round(v, 12) == round(math.radians(20.0) * math.pi / 2 / math.radians(120.0), 12)
+    (0.5, True)
+    """
     xs, m = grid if grid is not None else arm_grid(seg, level, h, n)
-    v, sl = g(m), slope(m)
+    v, sl = values if values is not None else (g(m), slope(m))
     j = int(np.argmax(v))
     best, where = float(v[j]), float(xs[j])
     step = math.radians(seg.angle) * (xs[1:] - xs[:-1])
     room = np.maximum(v[:-1], v[1:]) + step * np.maximum(sl[:-1], -sl[1:])
-    for i in np.nonzero((sl[:-1] > 0) & (sl[1:] < 0) & (step > 0) & ~(room < best))[0]:
+    live = np.nonzero((sl[:-1] > 0) & (sl[1:] < 0) & (step > 0) & ~(room < best))[0].tolist()
+    if not live:
+        return best, where
+    if slope1 is not None and g1 is not None:
+        f = lambda x: slope1(segment_motion1(seg, level, h, x))
+        value = lambda x: g1(segment_motion1(seg, level, h, x))
+    else:
         f = lambda x: float(slope(segment_motion(seg, level, h, [x]))[0])
+        value = lambda x: float(g(segment_motion(seg, level, h, [x]))[0])
+    for i in live:
         x = _falsi(f, float(xs[i]), float(xs[i + 1]), float(sl[i]), float(sl[i + 1]), ROOT_TOL)
-        val = float(g(segment_motion(seg, level, h, [x]))[0])
+        val = value(x)
         if val > best:
             best, where = val, x
     return best, where
@@ -342,6 +364,9 @@ class ArcBounds:
     part: str
     delta: float
     dlo_da: float
+    each: tuple[tuple[str, float, float], ...] = ()
+    """(part, its own lower bound, ∂ of it /∂a) for every constrained part: where two parts bind at once,
+    the kink is where their bounds cross."""
 
     @property
     def feasible(self) -> bool:
@@ -355,42 +380,56 @@ def arc_bounds(arm: ArmProgram, L: float, a: float, parts: list[ArmPart]) -> Arc
     φ = ψ0 + ψ from A0O, the wedge meets the circle in |β − α| ≤ φ ≤ min(β + α, 2π − β − α), cos β =
     L(1 − εψ′)·cos α/a; ψ0 is bounded below by the largest |β − α| − ψ and above by the smallest
     min(β + α, 2π − β − α) − ψ over the constrained positions, each found at a part end or where its
-    derivative in δ changes sign (the exact ψ″)."""
-    eps = arm.eps
+    derivative in δ changes sign (the exact ψ″). β is computed once per grid position for both ends; the
+    roots are refined on floats."""
+    eps, h = arm.eps, arm.h
+    two_pi = 2.0 * math.pi
     lo, hi, part, at, slope_a = -math.inf, math.inf, "", 0.0, 0.0
+    each = []
     for p in parts:
         al, ca = p.alpha, math.cos(p.alpha)
-
-        def beta(m, al=al, ca=ca):
-            return _beta(L * (1.0 - eps * m.d1) * ca / a, -eps * L * m.d2 * ca / a)
-
-        def g_lo(m, al=al):
-            return np.abs(beta(m)[0] - al) - m.psi
-
-        def s_lo(m, al=al):
-            b, db = beta(m)
-            return np.sign(b - al) * db - m.d1
-
-        def g_hi(m, al=al):
-            b = beta(m)[0]
-            return m.psi - np.minimum(b + al, 2.0 * math.pi - b - al)
-
-        def s_hi(m, al=al):
-            b, db = beta(m)
-            return m.d1 - np.where(b + al < math.pi, db, -db)
-
+        m = p.grid[1]
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            v, x = stationary_max(p.seg, p.level, arm.h, g_lo, s_lo, grid=p.grid)
-            w, _ = stationary_max(p.seg, p.level, arm.h, g_hi, s_hi, grid=p.grid)
+            b, db = _beta(L * (1.0 - eps * m.d1) * ca / a, -eps * L * m.d2 * ca / a)
+            v_lo = np.abs(b - al) - m.psi
+            s_lo = np.sign(b - al) * db - m.d1
+            v_hi = m.psi - np.minimum(b + al, two_pi - b - al)
+            s_hi = m.d1 - np.where(b + al < math.pi, db, -db)
+
+        def beta1(d1: float, d2: float, al=al, ca=ca) -> tuple[float, float]:
+            mu = L * (1.0 - eps * d1) * ca / a
+            dmu = -eps * L * d2 * ca / a
+            return math.acos(min(max(mu, -1.0), 1.0)), -dmu / math.sqrt(max(1.0 - mu * mu, 1e-300))
+
+        def g_lo1(mo, al=al, beta1=beta1):
+            return abs(beta1(mo[2], mo[3])[0] - al) - mo[1]
+
+        def s_lo1(mo, al=al, beta1=beta1):
+            b1, db1 = beta1(mo[2], mo[3])
+            return sign1(b1 - al) * db1 - mo[2]
+
+        def g_hi1(mo, al=al, beta1=beta1):
+            b1 = beta1(mo[2], mo[3])[0]
+            return mo[1] - min(b1 + al, two_pi - b1 - al)
+
+        def s_hi1(mo, al=al, beta1=beta1):
+            b1, db1 = beta1(mo[2], mo[3])
+            return mo[2] - (db1 if b1 + al < math.pi else -db1)
+
+        v, x = stationary_max(p.seg, p.level, h, None, None, grid=p.grid, values=(v_lo, s_lo), g1=g_lo1,
+                              slope1=s_lo1)
+        w, _ = stationary_max(p.seg, p.level, h, None, None, grid=p.grid, values=(v_hi, s_hi), g1=g_hi1,
+                              slope1=s_hi1)
         hi = min(hi, -w)
+        d1 = segment_motion1(p.seg, p.level, h, x)[2]
+        mu = L * (1.0 - eps * d1) * ca / a
+        b1 = math.acos(min(max(mu, -1.0), 1.0))
+        sb = math.sqrt(max(1.0 - mu * mu, 0.0))
+        d = math.copysign(1.0, b1 - al) * mu / (a * sb) if sb > 0 else math.copysign(math.inf, mu)
+        each.append((p.part, v, d))
         if v > lo:
-            m = segment_motion(p.seg, p.level, arm.h, [x])
-            mu = float(L * (1.0 - eps * m.d1[0]) * ca / a)
-            b = math.acos(min(max(mu, -1.0), 1.0))
-            sb = math.sqrt(max(1.0 - mu * mu, 0.0))
-            d = math.copysign(1.0, b - al) * mu / (a * sb) if sb > 0 else math.copysign(math.inf, mu)
             lo, part, at, slope_a = v, p.part, p.seg.start + p.seg.angle * x, d
-    return ArcBounds(a, lo, hi, part, at, slope_a)
+    return ArcBounds(a, lo, hi, part, at, slope_a, tuple(each))
 
 
 def arm_a_min(arm: ArmProgram, L: float, lims: list[Limit]) -> float:
@@ -399,9 +438,11 @@ def arm_a_min(arm: ArmProgram, L: float, lims: list[Limit]) -> float:
     out = 0.0
     for p in arm_parts(arm, lims):
         ca = math.cos(p.alpha)
-        out = max(out, stationary_max(p.seg, p.level, arm.h, lambda m: L * np.abs(1.0 - arm.eps * m.d1) * ca,
-                                      lambda m: -np.sign(1.0 - arm.eps * m.d1) * arm.eps * m.d2 * L * ca,
-                                      grid=p.grid)[0])
+        eps = arm.eps
+        out = max(out, stationary_max(p.seg, p.level, arm.h, lambda m: L * np.abs(1.0 - eps * m.d1) * ca,
+                                      lambda m: -np.sign(1.0 - eps * m.d1) * eps * m.d2 * L * ca, grid=p.grid,
+                                      g1=lambda mo: L * abs(1.0 - eps * mo[2]) * ca,
+                                      slope1=lambda mo: -sign1(1.0 - eps * mo[2]) * eps * mo[3] * L * ca)[0])
     return out
 
 
@@ -481,33 +522,118 @@ def admissible_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: 
 
 
 def best_distance(arm: ArmProgram, L: float, parts: list[ArmPart], a_min: float) -> float:
-    """The centre distance of the smallest base circle: bisection on the sign of d(r0²)/da along the lower
-    end of the admissible arc. The distances whose circle meets the (convex) admissible region form an
-    interval, and r0 is unimodal on it (its sublevel sets are convex); a distance whose circle misses the
-    region counts as negative below an admissible one (:func:`admissible_distance`) and positive above it,
-    so the bisection ends at the smooth minimum, at a kink (two positions binding) or at the region's
+    """The centre distance of the smallest base circle: the sign change of d(r0²)/da along the lower end of
+    the admissible arc (:func:`arc_root`). The distances whose circle meets the (convex) admissible region
+    form an interval, and r0 is unimodal on it (its sublevel sets are convex); a distance whose circle misses
+    the region counts as negative below an admissible one (:func:`admissible_distance`) and positive above
+    it, so the search ends at the smooth minimum, at a kink (two positions binding) or at the region's
     nearest or farthest distance from A0."""
     a_f = admissible_distance(arm, L, parts, a_min)
+    seen: dict[float, ArcBounds] = {}
 
-    def sign(x: float) -> float:
-        b = arc_bounds(arm, L, x, parts)
+    def evaluate(x: float) -> tuple[float, ArcBounds]:
+        b = seen[x] = arc_bounds(arm, L, x, parts)
         if not b.feasible:
-            return -1.0 if x < a_f else 1.0
-        return grad_r0(L, b)
+            return (-1.0 if x < a_f else 1.0), b
+        return grad_r0(L, b), b
 
     lo, hi = a_min * (1.0 + 1e-12), a_f
-    if sign(lo) >= 0:
+    at_lo = evaluate(lo)
+    if at_lo[0] >= 0:
         return lo
     for _ in range(2000):
-        if sign(hi) > 0:
+        at_hi = evaluate(hi)
+        if at_hi[0] > 0:
             break
-        lo, hi = hi, 2.0 * hi
-    lo, hi = sign_change(sign, lo, hi)
-    ends = [b for b in (arc_bounds(arm, L, x, parts) for x in (lo, hi)) if b.feasible]
+        lo, hi, at_lo = hi, 2.0 * hi, at_hi
+    lo, hi = arc_root(evaluate, lo, hi, at_lo, at_hi)
+    ends = [b for b in (seen[x] if x in seen else arc_bounds(arm, L, x, parts) for x in (lo, hi)) if b.feasible]
     if not ends:
         return hi
     return min(ends, key=lambda b: (b.a - L) ** 2 + 4.0 * b.a * L * math.sin(b.lo / 2) ** 2).a
 
+
+SAME_PLACE = 1e-2
+"""Cam angles (degrees) within which two binding positions of one part count as the same position (a
+binding position moves with a; two peaks of one part lie a grid cell apart or more)."""
+
+
+def arc_root(evaluate: Callable[[float], tuple[float, ArcBounds]], lo: float, hi: float,
+             at_lo: tuple[float, ArcBounds], at_hi: tuple[float, ArcBounds]) -> tuple[float, float]:
+    """The last representable bracket [lo, hi] of the place where d(r0²)/da turns positive, given its values
+    and arcs at both ends (``evaluate(x)`` = (the sign's value, :func:`arc_bounds` at x)).
+
+    Each step tries the point the two ends predict: when one position binds at both ends the slope is smooth
+    between them and its secant is taken; when two different positions bind, the optimum is usually the kink
+    where their bounds cross, and the tangents of ψ0 = lo(a) at both ends (the binding position held,
+    ∂lo/∂a exact) meet near it. A trial point is kept a few units of the last place inside the bracket (so a
+    step onto the root is followed by one just past it), and the bracket is halved instead when an end is
+    not admissible or two steps in a row failed to halve it: a bisection's bracket, in a dozen steps rather
+    than sixty.
+
+    Examples
+    --------
+    >>> def ev(x):            # a kink at x = 2: ψ0 = max(1 − x/4, x/2 − 1/2), r0² grows with ψ0 only
+    ...     first = 1 - x / 4 >= x / 2 - 0.5
+    ...     b = ArcBounds(x, 1 - x / 4 if first else x / 2 - 0.5, 9.0, "rise", 10.0 if first else 50.0,
+    ...                   -0.25 if first else 0.5)
+    ...     return b.dlo_da, b
+    >>> lo, hi = arc_root(ev, 0.0, 8.0, ev(0.0), ev(8.0))
+    >>> lo <= 2.0 <= hi and hi - lo <= 4.5e-16
+    True
+    """
+    slow, last, scale_lo, scale_hi = 0, 0, 1.0, 1.0
+    for _ in range(400):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if 0.0 < 4.0 * lo < hi:
+            mid = math.sqrt(lo * hi)                        # a wide bracket of distances: halved in ratio
+        (f1, b1), (f2, b2) = at_lo, at_hi
+        x = mid
+        if slow < 3 and b1.feasible and b2.feasible:
+            x = _trial(lo, hi, f1 * scale_lo, b1, f2 * scale_hi, b2)
+            tol = 4.0 * _EPS * max(abs(lo), abs(hi))
+            x = min(max(x, lo + tol), hi - tol) if lo < x < hi else mid
+            if not lo < x < hi:
+                x = mid
+        width = hi - lo
+        at = evaluate(x)
+        if at[0] > 0:
+            hi, at_hi = x, at
+            side = 1
+        else:
+            lo, at_lo = x, at
+            side = -1
+        if side < 0:                                # Illinois: the end kept twice in a row has its value halved
+            scale_lo, scale_hi = 1.0, scale_hi * 0.5 if last < 0 else scale_hi
+        else:
+            scale_hi, scale_lo = 1.0, scale_lo * 0.5 if last > 0 else scale_lo
+        last = side
+        slow = 0 if x == mid or hi - lo <= 0.5 * width else slow + 1
+    return lo, hi
+
+
+def _trial(lo: float, hi: float, f1: float, b1: ArcBounds, f2: float, b2: ArcBounds) -> float:
+    """The next point :func:`arc_root` tries in [lo, hi] (``nan`` for none): Newton's step on the difference
+    of two parts' bounds where different parts bind at the ends (from the end nearer their crossing), the
+    secant of the slope where one position binds at both (else none: the bracket is halved)."""
+    if b1.part != b2.part:
+        steps = []
+        for b in (b1, b2):
+            own = {p: (v, d) for p, v, d in b.each}
+            if b1.part in own and b2.part in own:
+                (v1, d1), (v2, d2) = own[b1.part], own[b2.part]
+                if d1 != d2 and math.isfinite(d1) and math.isfinite(d2):
+                    steps.append((abs(v1 - v2), b.a - (v1 - v2) / (d1 - d2)))
+        if steps:
+            return min(steps)[1]
+    if b1.part == b2.part and abs(b1.delta - b2.delta) <= SAME_PLACE and f2 != f1:
+        return hi - f2 * (hi - lo) / (f2 - f1)
+    return math.nan
+
+
+_EPS = 2.220446049250313e-16
 
 
 def sign_change(sign, lo: float, hi: float) -> tuple[float, float]:
@@ -579,288 +705,3 @@ def arm_best(program: Program, h: float, L: float, *, alpha_allow: float, rotati
                             f"{alpha_allow:g}° hardly constrains it; give a")
     r0 = math.sqrt((a - L) ** 2 + 4.0 * a * L * math.sin(psi0 / 2) ** 2)
     return {"r0": r0, "a": a, "psi0": math.degrees(psi0), "part": b.part, "delta": b.delta}
-
-
-# ---------------------------------------------------------------------------- the oscillating twin
-TWIN_GRID = 128
-"""The twin's grid of positions per smooth piece; its local extrema are refined by golden section."""
-GOLDEN_STEPS = 44
-"""Golden-section steps refining a peak between two grid neighbours: 0.618^44 ≈ 6e-10 of the bracket, so the
-peak's value is exact to rounding (its error is quadratic) and its place to about 1e-11 of the part."""
-TWIN_SCAN = 128
-"""Arm angles ψ0 scanned by the twin (rays from A0) for one whose ray meets the admissible region."""
-_INV = (math.sqrt(5.0) - 1.0) / 2.0
-
-
-def _golden_tops(fn: Callable[[np.ndarray], np.ndarray], xs: np.ndarray, grid: np.ndarray) -> list[tuple[float, float]]:
-    """For each row k of ``grid`` (the values of function k at ``xs``), (its largest value, where): the grid
-    maximum, with every interior local maximum that could exceed it refined by golden-section search
-    between its neighbours (all rows and peaks at once, :data:`GOLDEN_STEPS` steps). ``fn(z)`` returns
-    every row's values at the points z.
-
-    >>> xs = np.linspace(0.0, 3.0, 7)
-    >>> [(round(v, 12), round(x, 6)) for v, x in _golden_tops(lambda z: np.array([np.sin(z), -np.cos(z)]), xs,
-    ...                                                      np.array([np.sin(xs), -np.cos(xs)]))]
-    [(1.0, 1.570796), (0.9899924966, 3.0)]
-    """
-    out, rows, lo, hi = [], [], [], []
-    gap = np.diff(xs)
-    # the pieces' seams (a right end just below the next piece's start): a peak beside a seam is searched on
-    # its own side only, between the end and its neighbour inside the piece
-    seam = np.concatenate([[True], gap <= 1e-9 * (xs[-1] - xs[0]), [True]])
-    left_x = np.where(seam[:-1], xs, np.concatenate([[xs[0]], xs[:-1]]))
-    right_x = np.where(seam[1:], xs, np.concatenate([xs[1:], [xs[-1]]]))
-    for k, v in enumerate(grid):
-        best = int(np.argmax(v))
-        out.append((float(v[best]), float(xs[best])))
-        left = np.where(seam[:-1], -np.inf, np.concatenate([[-np.inf], v[:-1]]))
-        right = np.where(seam[1:], -np.inf, np.concatenate([v[1:], [-np.inf]]))
-        near = np.minimum(np.where(np.isfinite(left), left, right), np.where(np.isfinite(right), right, left))
-        with np.errstate(invalid="ignore"):
-            room = v + 2.0 * (v - near)                     # a smooth peak exceeds its grid value by ≤ ⅓ of it
-        i = np.nonzero((v >= left) & (v >= right) & (right_x > left_x) & ~(room < out[k][0]))[0]
-        rows += [k] * i.size
-        lo.append(left_x[i])
-        hi.append(right_x[i])
-    if not rows:
-        return out
-    rows = np.array(rows)
-    pick = lambda z: fn(z)[rows, np.arange(rows.size)]
-    lo, hi = np.concatenate(lo), np.concatenate(hi)
-    c, d = hi - _INV * (hi - lo), lo + _INV * (hi - lo)
-    fc, fd = pick(c), pick(d)
-    for _ in range(GOLDEN_STEPS):
-        left = fc > fd                                          # the maximum lies in [lo, d]
-        hi, lo = np.where(left, d, hi), np.where(left, lo, c)
-        c, d = np.where(left, hi - _INV * (hi - lo), d), np.where(left, c, lo + _INV * (hi - lo))
-        f_new = pick(np.where(left, c, d))
-        fc, fd = np.where(left, f_new, fd), np.where(left, fc, f_new)
-    for x, f in ((c, fc), (d, fd)):
-        for j in range(rows.size):
-            if f[j] > out[rows[j]][0]:
-                out[rows[j]] = (float(f[j]), float(x[j]))
-    return out
-
-
-def arm_rho_min(cam, n: int = 4 * TWIN_GRID) -> float:
-    """ρmin of an oscillating cam's pitch curve over its convex parts by the twin's route: the complex-form
-    curvature (:meth:`OscillatingCam.convex_curvature_complex`) on a grid of every smooth piece, peaks refined
-    by golden section, a peak beside a piece's end searched on its own side; ``inf`` when nowhere convex."""
-    top = -math.inf
-    for seg, level in zip(cam.program.segments, levels(cam.program, cam.h)):
-        if seg.kind == "dwell":
-            xs = np.array([0.0, 0.5, np.nextafter(1.0, 0.0)])
-        else:
-            xs = np.concatenate([piece_grid(x0, x1, n) for x0, x1 in pieces(seg)])
-        kappa = lambda z, seg=seg, level=level: cam.convex_curvature_complex(segment_motion(seg, level, cam.h, z))[None, :]
-        top = max(top, _golden_tops(kappa, xs, kappa(xs))[0][0])
-    return 1.0 / top if top > 0 else math.inf
-
-
-class ArmTwin:
-    """The twin of :func:`arm_best`, written from the pressure-angle formula alone (no wedges, no circles
-    about A0): tan α = |c − a cos φ|/(a sin φ) with c = L(1 − εψ′) and φ = ψ0 + ψ.
-
-    With ``a`` free it walks rays from A0: on the ray at arm angle ψ0 the condition α ≤ α_allow is linear in
-    the distance a, a·(cos φ + tan α_allow·sin φ) ≥ c and a·(cos φ − tan α_allow·sin φ) ≤ c, so each
-    position admits an interval of a and the ray meets the admissible region in [a_in(ψ0), a_out(ψ0)]
-    (extremes over the positions on a grid refined by golden section). The nearest point of the ray to B0
-    is a = clip(L cos ψ0, a_in, a_out), and ψ0 is found by bisection on the sign of d(r0²)/dψ0 (the
-    binding position held), rays that miss the region counting as negative before an admissible ray
-    (found by a scan of ψ0) and positive after it.
-
-    With ``a`` given it minimises the largest excess α − α_allow over ψ0 by golden section (the excess is
-    unimodal in ψ0: its sublevel sets are arcs of one circle in a convex region) and then finds the smallest
-    admissible ψ0 by bisection on the sign of the excess."""
-
-    def __init__(self, program: Program, h: float, L: float, *, alpha_allow: float, rotation: str = "ccw",
-                 arm: str = "left", alpha_allow_return: float | None = None) -> None:
-        self.h, self.L = h, L
-        self.motion = ArmProgram(h, program, rotation, arm)
-        allow = {"rise": alpha_allow}
-        if alpha_allow_return is not None and program.ret is not None:
-            allow["return"] = alpha_allow_return
-        self.parts = []
-        for part, value in allow.items():
-            k = next(i for i, s in enumerate(program.segments) if s.kind == part)
-            seg = program.segments[k]
-            xs = np.concatenate([piece_grid(x0, x1, TWIN_GRID) for x0, x1 in pieces(seg)])
-            level = levels(program, h)[k]
-            self.parts.append((part, seg, level, math.tan(math.radians(value)), xs, self._mot(seg, level, xs)))
-
-    def _mot(self, seg: Segment, level: float, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(ψ, c = L(1 − εψ′)) at fractions x of a segment."""
-        m = segment_motion(seg, level, self.h, x)
-        return m.psi, self.L * (1.0 - self.motion.eps * m.d1)
-
-    @staticmethod
-    def _ray(theta: float, t: float, psi: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(lowest, highest) admissible distance along the ray at ψ0 = θ for positions (ψ, c): from
-        a·p ≥ c and a·q ≤ c with p = cos φ + t sin φ, q = cos φ − t sin φ (±inf where no distance or every
-        distance passes)."""
-        phi = theta + psi
-        cs, sn = np.cos(phi), np.sin(phi)
-        p, q = cs + t * sn, cs - t * sn
-        with np.errstate(divide="ignore", invalid="ignore"):
-            rp, rq = c / p, c / q
-        inf = np.inf
-        low = np.maximum(np.where(p > 0, rp, np.where(c > 0, inf, -inf)),
-                         np.where(q < 0, rq, np.where(c < 0, np.where(q > 0, -inf, inf), -inf)))
-        high = np.minimum(np.where(p < 0, rp, inf), np.where(q > 0, rq, inf))
-        return low, high
-
-    def ray(self, theta: float) -> tuple[float, float, tuple, tuple]:
-        """(a_in, a_out, (part index, fraction) of the positions binding a_in and a_out) on the ray at
-        ψ0 = θ."""
-        a_in, a_out, bind_in, bind_out = 0.0, math.inf, None, None
-        for k, (_, seg, level, t, xs, grid) in enumerate(self.parts):
-            def both(z, seg=seg, level=level, t=t):
-                low, high = self._ray(theta, t, *self._mot(seg, level, z))
-                return np.array([low, -high])
-            (v, x), (w, y) = _golden_tops(both, xs, np.array(self._ray(theta, t, *grid)) * [[1.0], [-1.0]])
-            if v > a_in:
-                a_in, bind_in = v, (k, x)
-            if -w < a_out:
-                a_out, bind_out = -w, (k, y)
-        return a_in, a_out, bind_in, bind_out
-
-    def _bound_slope(self, theta: float, k: int, x: float, upper: bool) -> float:
-        """d/dδ of the binding bound c/p (or c/q) at fraction x of part k: (c′p − c·p′)/p², c′ = −εLψ″,
-        p′ = (−sin φ ± t cos φ)·ψ′ — the lower bound's largest, the upper's smallest of the two."""
-        _, seg, level, t, _, _ = self.parts[k]
-        m = segment_motion(seg, level, self.h, [x])
-        phi = theta + float(m.psi[0])
-        c, dc = self.L * (1.0 - self.motion.eps * float(m.d1[0])), -self.motion.eps * self.L * float(m.d2[0])
-        cs, sn, w = math.cos(phi), math.sin(phi), float(m.d1[0])
-        opts = []
-        for p, dp, ok in ((cs + t * sn, (-sn + t * cs) * w, lambda v: v < 0 if upper else v > 0),
-                          (cs - t * sn, (-sn - t * cs) * w, lambda v: v > 0 if upper else v < 0)):
-            if ok(p):
-                opts.append((c / p, (dc * p - c * dp) / (p * p)))
-        return (min if upper else max)(opts)[1] if opts else 0.0
-
-    def _polish(self, theta: float, bind: tuple | None, upper: bool) -> tuple | None:
-        """The binding position located to :data:`ROOT_TOL` by regula falsi on the bound's exact slope
-        (golden section alone leaves a flat peak's place uncertain by about √ε, and d a/dψ0 with it)."""
-        if bind is None:
-            return None
-        k, x = bind
-        sign = -1.0 if upper else 1.0
-        f = lambda z: sign * self._bound_slope(theta, k, z, upper)
-        w = 2.0 / TWIN_GRID
-        lo, hi = max(x - w, 0.0), min(x + w, 1.0)
-        flo, fhi = f(lo), f(hi)
-        if not (flo > 0 > fhi):
-            return bind
-        return k, _falsi(f, lo, hi, flo, fhi, ROOT_TOL)
-
-    def _d_bound(self, theta: float, bind: tuple, upper: bool) -> float:
-        """∂a/∂ψ0 of the bound a = c/p or c/q binding at ``bind`` (the position held): −c·p′/p²."""
-        _, seg, level, t, _, _ = self.parts[bind[0]]
-        psi, c = self._mot(seg, level, np.array([bind[1]]))
-        phi, c = theta + float(psi[0]), float(c[0])
-        cs, sn = math.cos(phi), math.sin(phi)
-        p, dp, q, dq = cs + t * sn, -sn + t * cs, cs - t * sn, -sn - t * cs
-        opts = []
-        if (p < 0) if upper else (p > 0):
-            opts.append((c / p, -c * dp / (p * p)))
-        if (q > 0) if upper else (q < 0):
-            opts.append((c / q, -c * dq / (q * q)))
-        return (min if upper else max)(opts)[1] if opts else 0.0
-
-    def _best_free(self) -> tuple[float, float]:
-        top = math.pi - math.radians(self.h)
-        thetas = np.linspace(0.0, top, TWIN_SCAN + 2)[1:-1]
-        score = []
-        for th in thetas:
-            a_in, a_out = 0.0, math.inf
-            for _, seg, level, t, xs, grid in self.parts:
-                low, high = self._ray(th, t, *grid)
-                a_in, a_out = max(a_in, float(np.max(low))), min(a_out, float(np.min(high)))
-            score.append(-math.inf if a_in == math.inf else math.inf if a_out == math.inf else
-                         (a_out - a_in) / max(a_in, 1e-300))
-        order = np.argsort(-np.array(score), kind="stable")
-        seed = None
-        for k in order[:8]:
-            a_in, a_out, _, _ = self.ray(float(thetas[k]))
-            if a_in <= a_out:
-                seed = float(thetas[k])
-                break
-        if seed is None:
-            raise NotAMechanism("no cam centre keeps the pressure angle within the limit (no ray from the arm's "
-                                "pivot meets every position's admissible region)")
-
-        def sign(th: float) -> float:
-            if th <= 0.0:
-                return -1.0
-            if th >= top:
-                return 1.0
-            a_in, a_out, b_in, b_out = self.ray(th)
-            if a_in > a_out:
-                return -1.0 if th < seed else 1.0
-            a = min(max(self.L * math.cos(th), a_in), a_out)
-            if a == a_in and b_in is not None:
-                slope = self._d_bound(th, self._polish(th, b_in, False), upper=False)
-            elif a == a_out and b_out is not None:
-                slope = self._d_bound(th, self._polish(th, b_out, True), upper=True)
-            else:
-                slope = 0.0                                     # the foot of B0 on the ray: r0 = L sin ψ0
-            return (a - self.L * math.cos(th)) * slope + a * self.L * math.sin(th)
-
-        lo, hi = sign_change(sign, 0.0, top)
-        best = None                                     # the end of the last bracket whose ray meets the region
-        for th in (lo, hi):
-            a_in, a_out, _, _ = self.ray(th)
-            if 0.0 < th < top and a_in <= a_out * (1.0 + 1e-13):
-                a = min(max(self.L * math.cos(th), a_in), a_out)
-                r2 = (a - self.L) ** 2 + 4.0 * a * self.L * math.sin(th / 2) ** 2
-                if best is None or r2 < best[0]:
-                    best = (r2, a, th)
-        if best is None:
-            raise NotAMechanism(f"no ray from the arm's pivot near ψ0 = {math.degrees(hi):.6g}° meets the admissible "
-                                "region")
-        return best[1], best[2]
-
-    def excess(self, a: float, theta: float) -> float:
-        """The largest α − α_allow (rad) over the constrained positions for the centre (a, ψ0 = θ)."""
-        worst = -math.inf
-        for _, seg, level, t, xs, grid in self.parts:
-            allow = math.atan(t)
-
-            def alpha(z, psi_c=None, seg=seg, level=level):
-                psi, c = psi_c if psi_c is not None else self._mot(seg, level, z)
-                phi = theta + psi
-                return np.arctan2(np.abs(c - a * np.cos(phi)), a * np.sin(phi))[None, :] - allow
-            worst = max(worst, _golden_tops(alpha, xs, alpha(xs, grid))[0][0])
-        return worst
-
-    def _psi0_at(self, a: float) -> float:
-        top = math.pi - math.radians(self.h)
-        f = lambda th: self.excess(a, th)
-        lo, hi = 0.0, top
-        c, d = hi - _INV * (hi - lo), lo + _INV * (hi - lo)
-        fc, fd = f(c), f(d)
-        for _ in range(120):
-            if min(fc, fd) <= 0:
-                break
-            if fc < fd:
-                hi, d, fd = d, c, fc
-                c = hi - _INV * (hi - lo)
-                fc = f(c)
-            else:
-                lo, c, fc = c, d, fd
-                d = lo + _INV * (hi - lo)
-                fd = f(d)
-        if min(fc, fd) > 0:
-            raise NotAMechanism(f"a = {a:g} mm: no arm angle keeps the pressure angle within the limit")
-        seed = c if fc <= 0 else d
-        return bisect_root(lambda th: -1.0 if th <= 0 else (1.0 if f(th) <= 0 else -1.0), 0.0, seed)
-
-    def best(self, a: float | None = None) -> dict[str, float]:
-        """``r0``, ``a``, ``psi0`` (deg) of the smallest base circle (at the given a, or the best a)."""
-        if a is None:
-            a, psi0 = self._best_free()
-        else:
-            psi0 = self._psi0_at(a)
-        r0 = math.sqrt((a - self.L) ** 2 + 4.0 * a * self.L * math.sin(psi0 / 2) ** 2)
-        return {"r0": r0, "a": a, "psi0": math.degrees(psi0)}

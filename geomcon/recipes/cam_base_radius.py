@@ -35,7 +35,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.base_radius import RR_FACTOR, S0_MIN, ArmProgram, ArmTwin, arm_best, arm_rho_min, arm_psi0, arm_reach, best_base, limits, part_motion
+from ..cam.arm_twin import ArmTwin, arm_rho_min
+from ..cam.base_radius import RR_FACTOR, S0_MIN, ArmProgram, arm_best, arm_psi0, arm_reach, best_base, limits, part_motion
 from ..cam.oscillating import OscillatingCam
 from ..cam.profile import PitchCurve, inverted, maximise, rho_min
 from ..cam.program import Program, parse_program
