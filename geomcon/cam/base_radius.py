@@ -594,7 +594,7 @@ def arc_root(evaluate: Callable[[float], tuple[float, ArcBounds]], lo: float, hi
         if slow < 3 and b1.feasible and b2.feasible:
             x = _trial(lo, hi, f1 * scale_lo, b1, f2 * scale_hi, b2)
             tol = 4.0 * _EPS * max(abs(lo), abs(hi))
-            x = min(max(x, lo + tol), hi - tol) if lo < x < hi else mid
+            x = min(max(x, lo + tol), hi - tol) if lo <= x <= hi else mid
             if not lo < x < hi:
                 x = mid
         width = hi - lo
