@@ -38,11 +38,10 @@ by bisection on the sign of d(r0²)/da, distances that miss the region counting 
 positive above it (:func:`best_distance`): the result is the smooth minimum, the kink, or the distance at
 which the circle touches the region.
 
-The twin (:class:`ArmTwin`) uses neither wedges nor circles: from tan α = |c − a cos φ|/(a sin φ) alone, each
-position's condition is linear in a along a ray from A0, so it walks rays (bisection on dr0²/dψ0 with the
-nearest admissible point of each ray, its near or its far end), and at a given a it minimises the excess
-α − α_allow over ψ0 and bisects on its sign. Extremes over the positions: a grid refined by golden section
-(the construction: roots of the exact slopes by regula falsi).
+The search over a (:func:`arc_root`) keeps a bisection's bracket but steps by Newton on the crossing of two
+parts' bounds when different parts bind at its ends (the kink, located in a few steps), or by the secant of
+the slope when one position binds at both. The twin (:class:`~geomcon.cam.arm_twin.ArmTwin`, its own module)
+uses neither wedges nor circles: rays from A0 and the excess α − α_allow, its peaks refined by Brent's method.
 
 Examples
 --------
