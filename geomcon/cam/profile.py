@@ -729,11 +729,43 @@ def rho_min(curve: PitchCurve) -> Extremum:
     >>> round(rho_min(PitchCurve(ellipse)).value, 12)     # b²/a
     18.0
     """
-    sigma = curve.orientation
     fn1 = curve.fn1
-    top = maximise(lambda d: sigma * curvature(curve.eval(d)), curve.pieces(),
-                   g1=None if fn1 is None else lambda d: sigma * curvature1(fn1(d)))
+    if fn1 is None:
+        sigma = curve.orientation
+        top = maximise(lambda d: sigma * curvature(curve.eval(d)), curve.pieces())
+        return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+    sense: list[int] = []
+
+    def g(d):                   # the first call samples the whole turn: its points also give the orientation
+        c6 = curve.eval(d)
+        if not sense:
+            sense.append(_sense(curve, d, c6))
+        return sense[0] * curvature(c6)
+
+    top = maximise(g, curve.pieces(), g1=lambda d: sense[0] * curvature1(fn1(d)))
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+
+
+def _sense(curve: PitchCurve, d: np.ndarray, c6: Curve6) -> int:
+    """The curve's orientation (:attr:`PitchCurve.orientation`) from samples of the whole turn in order with
+    their exact derivatives: the sign of ∮(x y′ − y x′) dδ, twice the enclosed area (Riemann sum), unless the
+    orientation is known already or the sum does not decide it (then the property's samples do).
+
+    >>> def circle40(d):
+    ...     c, s = np.cos(d), np.sin(d)
+    ...     return 40 * s, 40 * c, 40 * c, -40 * s, -40 * s, -40 * c
+    >>> d = np.linspace(0.0, TWO_PI, 100)
+    >>> _sense(PitchCurve(circle40), d, circle40(d)), PitchCurve(circle40).orientation
+    (-1, -1)
+    """
+    known = curve.__dict__.get("orientation")
+    if known is not None:
+        return known
+    x, y, dx, dy = c6[:4]
+    area = float(np.sum((x * dy - y * dx)[:-1] * np.diff(d)))
+    if not (area != 0.0 and math.isfinite(area)):
+        return curve.orientation
+    return 1 if area > 0.0 else -1
 
 
 def rho_min_concave(curve: PitchCurve) -> Extremum:
