@@ -304,3 +304,35 @@ def test_output_arm_needs_the_positions_form():
 def test_every_design_by_K_names_its_largest_K(recipe, given, limit):
     with pytest.raises(GeomconError, match=f"'K' must be ≤ {limit}, got"):
         _solve(recipe, K=1e12, **given)
+
+
+# ---------------------------------------------------------------- the golden-section search
+def _golden_every_step(f, lo, hi, width, iterations):
+    """The search as written before it learned to stop at a cycle: every step taken."""
+    from geomcon.recipes.search import _GOLD
+    x1, x2 = hi - _GOLD * (hi - lo), lo + _GOLD * (hi - lo)
+    f1, f2 = f(x1), f(x2)
+    for _ in range(iterations):
+        if f1 < f2:
+            lo, x1, f1 = x1, x2, f2
+            x2 = lo + _GOLD * (hi - lo)
+            f2 = f(x2)
+        else:
+            hi, x2, f2 = x2, x1, f1
+            x1 = hi - _GOLD * (hi - lo)
+            f1 = f(x1)
+        if hi - lo <= width:
+            break
+    return (lo + hi) / 2
+
+
+@pytest.mark.parametrize("i", range(30))
+def test_golden_search_stopping_at_its_cycle_gives_every_steps_result(i):
+    from geomcon.recipes.search import maximise
+    rng = random.Random(9100 + i)
+    c, k = rng.uniform(-5, 5), rng.uniform(0.1, 10)
+    lo, hi = c - rng.uniform(0, 3), c + rng.uniform(0, 3)
+    f = rng.choice((lambda t: -abs(t - c) * k, lambda t: -k * (t - c) ** 2, lambda t: min(t - c, k * (c - t)),
+                    lambda t: round(-(t - c) ** 2, 3)))                      # kinks, plateaus of equal values
+    for width, n in ((0.0, 400), (0.0, 401), (0.0, 97), (4e-16, 200), (1e-9, 60)):
+        assert maximise(f, lo, hi, width=width, iterations=n) == _golden_every_step(f, lo, hi, width, n)

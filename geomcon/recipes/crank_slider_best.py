@@ -16,13 +16,13 @@ from typing import Any, Mapping
 from ..analytic.design_by_k import crank_slider_best
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
-from ..geometry import Line, OtherThan, Point, line_circle, perpendicular
+from ..geometry import Line, OtherThan, Point, line_circle, perpendicular, polar_angle
 from ..scene import Role, Scene
 from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
 from .crank_slider import construct as extremes_construct
 from .crank_slider_design import admissible_arc, finish_from_A
-from .theta_circle import (K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to, arc_point_from_end,
+from .theta_circle import (K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to,
                            refuse_tiny_theta)
 
 GIVENS = (
@@ -63,9 +63,14 @@ def working_gamma(A: Point, C1: Point, C2: Point) -> float:
     perpendicular to the guide, towards it (the guide through C1 and C2 horizontal). At the folded position
     tan γ = FC1/e (F the foot of A); with the crank towards the guide cos γ = |a − e|/b, and b − |a − e| is
     AC1 + e or AC2 − e, formed as such (no cancellation when the rod is nearly along the crank)."""
-    u, v = abs(A - C1), abs(A - C2)
-    a, b, e = (v - u) / 2, (v + u) / 2, abs(A.y - C1.y)
-    g_fold = math.atan2(abs(A.x - C1.x), e)
+    return _working_gamma_xy(A.x, A.y, C1.x, C1.y, C2.x, C2.y)
+
+
+def _working_gamma_xy(ax: float, ay: float, c1x: float, c1y: float, c2x: float, c2y: float) -> float:
+    """:func:`working_gamma` on floats (abs(A − C1) is hypot(A.x − C1.x, A.y − C1.y)): the same bits."""
+    u, v = math.hypot(ax - c1x, ay - c1y), math.hypot(ax - c2x, ay - c2y)
+    a, b, e = (v - u) / 2, (v + u) / 2, abs(ay - c1y)
+    g_fold = math.atan2(abs(ax - c1x), e)
     d = abs(a - e)
     gap = u + e if a >= e else v - e
     g_near = math.atan2(math.sqrt(max(0.0, gap * (b + d))), d)
@@ -80,17 +85,31 @@ def best_on_arc(k, Q: Point, C1: Point, C2: Point, e_min: float, e_max: float | 
     would carry the centre's rounding (ε·H) into FC1 and misplace the kink of γ_w,min. The search runs to
     the resolution of s itself (relative, not 4e-16 of the arc)."""
     arc = arc_from_to(k, Q, C1)
+    # arc_point_from_end(arc, C1, s) and working_gamma on floats (the same operations: the same bits); the
+    # polar angle of C1 seen from the centre is the same for every s
+    c1x, c1y, c2x, c2y = C1.x, C1.y, C2.x, C2.y
+    sweep, r2, a0 = arc.sweep, 2.0 * arc.r, polar_angle(arc.center, C1)
+
+    def xy(s: float) -> tuple[float, float]:
+        half = s * sweep / 2.0
+        phi = a0 - half
+        chord = r2 * math.sin(half)
+        return c1x + chord * math.sin(phi), c1y - chord * math.cos(phi)
 
     def at(s: float) -> Point:
-        return arc_point_from_end(arc, C1, s)
+        return Point(*xy(s))
 
     def e_at(s: float) -> float:
-        return abs(at(s).y - C1.y)
+        return abs(xy(s)[1] - c1y)
+
+    def gamma(s: float) -> float:
+        x, y = xy(s)
+        return _working_gamma_xy(x, y, c1x, c1y, c2x, c2y)
 
     # e rises from C1 (s = 0) to Q (s = 1): the band e_min ≤ e ≤ e_max is an interval of s
     s1 = crossing(lambda s: e_at(s) <= e_max, 0.0, 1.0) if e_max is not None and e_max < e_at(1.0) else 1.0
     s0 = crossing(lambda s: e_at(s) < e_min, 0.0, 1.0) if e_min > 0 else 0.0
-    return at(maximise(lambda s: working_gamma(at(s), C1, C2), s0, s1, width=0.0, iterations=400))
+    return at(maximise(gamma, s0, s1, width=0.0, iterations=400))
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
