@@ -18,7 +18,7 @@ from geomcon.cam.oscillating import OscillatingCam, segment_motion, segment_moti
 from geomcon.cam.oscillating_flat import FlatArmCam
 from geomcon.cam.profile import (LineFamily, PitchCurve, _bisect_all, backward_jumps, brent_max1, envelope,
                                  envelope1, frame_pressure_angle_slope, frame_pressure_angle_slope1, illinois1,
-                                 inverted, inverted1, inverted_relative, inverted_relative1, maximise, pow1, rho_min,
+                                 inverted, inverted1, inverted_relative, inverted_relative1, pow1, rho_min,
                                  JUMP_REL, TWO_PI, _DENSE, Extremum)
 from geomcon.cam.program import parse_program
 from geomcon.cam.translating import TranslatingCam, _max_by_root
