@@ -367,13 +367,19 @@ def crank_slider_best(K: float, H: float, *, e_min: float = 0.0, e_max: float = 
     th = math.radians(theta_from_k(K))
     lo, hi = H / 2 * math.tan(th / 2), H / 2
 
+    # each bisection stops when a step leaves its bracket as it was (the midpoint rounds onto an end): every
+    # further step of the 300 would repeat that one, so the result is the same
     x0, x1 = lo * (1 + 1e-15), hi * (1 - 1e-15)
     for _ in range(300):
         m = (x0 + x1) / 2
         f, n = _working_parts(H, th, m)[:2]
         if f < n:
+            if x0 == m:
+                break
             x0 = m
         else:
+            if x1 == m:
+                break
             x1 = m
     a = (x0 + x1) / 2
     # offsets decrease from e(lo) to 0 as a grows: clamp to the allowed band
@@ -384,8 +390,12 @@ def crank_slider_best(K: float, H: float, *, e_min: float = 0.0, e_max: float = 
         for _ in range(300):
             m = (y0 + y1) / 2
             if e_of(m) > target:
+                if y0 == m:
+                    break
                 y0 = m
             else:
+                if y1 == m:
+                    break
                 y1 = m
         a = (y0 + y1) / 2
     gw, b, e, gg = working_stroke_gamma(K, H, a)
