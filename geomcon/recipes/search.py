@@ -55,12 +55,21 @@ def maximise(f: Callable[[float], float], lo: float, hi: float, *, width: float 
 
 def crossing(keep: Callable[[float], bool], a: float, b: float, *, iterations: int = 200) -> float:
     """The point between ``a`` and ``b`` where ``keep`` stops holding, by bisection (``keep(a)`` is the side
-    that holds; a and b may be in either order)."""
+    that holds; a and b may be in either order). A step that leaves the ends as they were (the midpoint rounds
+    onto one) ends the search: every further step would repeat it.
+
+    >>> crossing(lambda t: t < 0.1, 0.0, 1.0) == crossing(lambda t: t < 0.1, 0.0, 1.0, iterations=1000)
+    True
+    """
     side = keep(a)
     for _ in range(iterations):
         m = (a + b) / 2
         if keep(m) == side:
+            if a == m:
+                break
             a = m
         else:
+            if b == m:
+                break
             b = m
     return (a + b) / 2
