@@ -204,31 +204,57 @@ def _segment_pieces(fam: LineFamily, seg: Any) -> list[tuple[float, float]]:
 
 def face_extremes(fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any = None) -> tuple[Extremum, Extremum]:
     """(nearest, farthest) place of the contact along the face over a segment (default: the turn)."""
-    pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
-    scalar = fam.fn1 is not None
-    last: list = [None, None]
+    search = _FaceSearch(fam, A0, inv, tau, seg)
+    return search.nearest(), search.farthest()
 
-    def place(d):                       # a few places (the candidates) one by one on the scalar path
-        if scalar and d.size <= 16:
-            return np.array([face_place1(fam, A0, inv, tau, x) for x in d.tolist()])
-        return face_place(fam, A0, inv, tau, d)
 
-    def slope(d):                       # the nearest and the farthest search the same samples: once
+def face_nearest(fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any) -> Extremum:
+    """The nearest place of the contact along the face over a segment (the largest α = atan(|f|/l)): the
+    first of :func:`face_extremes` without searching the farthest, which a segment's α does not need."""
+    return _FaceSearch(fam, A0, inv, tau, seg).nearest()
+
+
+class _FaceSearch:
+    """The searches of the contact's place along the face over a segment or the turn, sharing their samples."""
+
+    def __init__(self, fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any) -> None:
+        self.fam, self.A0, self.inv, self.tau, self.seg = fam, A0, inv, tau, seg
+        self.pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
+        self.scalar = fam.fn1 is not None
+        self._last: list = [None, None]
+
+    def place(self, d: np.ndarray) -> np.ndarray:
+        """l at ``d``; a few places (the candidates) one by one on the scalar path."""
+        if self.scalar and d.size <= 16:
+            return np.array([face_place1(self.fam, self.A0, self.inv, self.tau, x) for x in d.tolist()])
+        return face_place(self.fam, self.A0, self.inv, self.tau, d)
+
+    def slope(self, d: np.ndarray) -> np.ndarray:
+        """l′ at ``d`` (the nearest and the farthest search the same samples: computed once)."""
+        last = self._last
         if last[0] is None or last[0].shape != d.shape or not np.array_equal(last[0], d):
-            last[0], last[1] = np.array(d, dtype=float), face_place_slope(fam, A0, inv, tau, d)
+            last[0], last[1] = np.array(d, dtype=float), face_place_slope(self.fam, self.A0, self.inv, self.tau, d)
         return last[1]
 
-    hi = maximise(place, pcs, slope=slope,
-                  slope1=(lambda d: face_place_slope1(fam, A0, inv, tau, d)) if scalar else None)
-    lo = maximise(lambda d: -place(d), pcs, slope=lambda d: -slope(d),
-                  slope1=(lambda d: -face_place_slope1(fam, A0, inv, tau, d)) if scalar else None)
-    if seg is not None:                 # a minimum as flat as roundoff at an end of the segment: the end
-        ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
-        for lv, d in zip(place(ends), ends):
-            if lv <= -lo.value + END_TIE * A0.y:
-                lo = Extremum(-float(lv), float(d))
-                break
-    return Extremum(-lo.value, lo.delta), hi
+    def _slope1(self, sign: float):
+        if not self.scalar:
+            return None
+        fam, A0, inv, tau = self.fam, self.A0, self.inv, self.tau
+        return lambda d: sign * face_place_slope1(fam, A0, inv, tau, d)
+
+    def farthest(self) -> Extremum:
+        return maximise(self.place, self.pcs, slope=self.slope, slope1=self._slope1(1.0))
+
+    def nearest(self) -> Extremum:
+        lo = maximise(lambda d: -self.place(d), self.pcs, slope=lambda d: -self.slope(d), slope1=self._slope1(-1.0))
+        if self.seg is not None:            # a minimum as flat as roundoff at an end of the segment: the end
+            pcs = self.pcs
+            ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
+            for lv, d in zip(self.place(ends), ends):
+                if lv <= -lo.value + END_TIE * self.A0.y:
+                    lo = Extremum(-float(lv), float(d))
+                    break
+        return Extremum(-lo.value, lo.delta)
 
 
 def face_length(lo: Extremum, hi: Extremum) -> float:
@@ -263,14 +289,14 @@ def face_pressure_deg(A: Point, K: Point, n: Point) -> float:
     return math.degrees(math.atan2(abs(n.cross(v)), abs(n.dot(v))))
 
 
-def worst_place(lo_hi: tuple[Extremum, Extremum]) -> float:
-    """The cam angle (deg) of the nearest contact: the largest α = atan(|f|/l)."""
-    return lo_hi[0].delta_deg
+def worst_place(nearest: Extremum) -> float:
+    """The cam angle (deg) of the nearest contact (:func:`face_nearest`): the largest α = atan(|f|/l)."""
+    return nearest.delta_deg
 
 
-def offset_pressure_deg(f: float, lo_hi: tuple[Extremum, Extremum]) -> float:
-    """α (deg) at the nearest contact of a segment: atan2(|f|, l_min)."""
-    return math.degrees(math.atan2(abs(f), lo_hi[0].value))
+def offset_pressure_deg(f: float, nearest: Extremum) -> float:
+    """α (deg) at the nearest contact of a segment (:func:`face_nearest`): atan2(|f|, l_min)."""
+    return math.degrees(math.atan2(abs(f), nearest.value))
 
 
 def face_foot(A: Point, D: Point, O: Point, f: float) -> Point:
@@ -403,7 +429,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
                               "face_length")}
     for part, zh in (("rise", "推程"), ("return", "回程")):
         seg = prog.rise if part == "rise" else prog.ret
-        e = sc.add(f"face_ext_{part}", face_extremes, fam, A0, inv, tau, seg, visible=False)
+        e = sc.add(f"face_ext_{part}", face_nearest, fam, A0, inv, tau, seg, visible=False)
         sc.add(f"alpha_max_{part}", offset_pressure_deg, f, e, role=Role.MEASUREMENT, unit="deg", visible=False)
         answers[f"alpha_max_{part}"] = f"alpha_max_{part}"
         if f:
