@@ -36,6 +36,7 @@ from ..analytic.function_generation import check_inverted, function_generation, 
 from ..errors import NotAMechanism
 from ..geometry import (Arc, LeftOf, Point, RightOf, circle, circle_circle, midpoint,
                         perpendicular_bisector, polar_angle, rotate, segment)
+from ..geometry.primitives import unit_xy
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import REL_TOL
 from .base import Construction, Quantity, Recipe
@@ -132,17 +133,47 @@ def centre_shift(O: Point, P: Sequence[Point], dP: Sequence[Point]) -> Point:
     >>> centre_shift(Point(0, 0), P, (Point(0.1, 0), Point(0, 0), Point(0, 0)))
     Point(x=0.05, y=-0.05)
     """
-    out = Point(0.0, 0.0)
+    x, y = _shift_xy(O, P, _bisectors(P), dP)
+    return Point(x, y)
+
+
+def _bisectors(P: Sequence[Point]) -> tuple[tuple[float, float, float, float, float], ...]:
+    """Per point P_k: (P_k, the unit direction t ⊥ P_jP_l, t·(P_j − P_k)) as floats, the same numbers as
+    (P[l] − P[j]).perp().unit() and t.dot(P[j] − P[k])."""
+    out = []
     for k in range(3):
-        j, l = (k + 1) % 3, (k + 2) % 3
-        t = (P[l] - P[j]).perp().unit()
-        out = out + t * ((O - P[k]).dot(dP[k]) / t.dot(P[j] - P[k]))
-    return out
+        pj, pk, pl = P[(k + 1) % 3], P[k], P[(k + 2) % 3]
+        tx, ty = unit_xy(-(pl.y - pj.y), pl.x - pj.x)
+        out.append((pk.x, pk.y, tx, ty, tx * (pj.x - pk.x) + ty * (pj.y - pk.y)))
+    return tuple(out)
+
+
+def _shift_xy(O: Point, P: Sequence[Point], bis: tuple, dP: Sequence[Point]) -> tuple[float, float]:
+    """:func:`centre_shift` on floats, in the order of its vector formula: out + t·((O − P_k)·dP_k / den)."""
+    ox, oy = O.x, O.y
+    x = y = 0.0
+    for (px, py, tx, ty, den), d in zip(bis, dP):
+        f = ((ox - px) * d.x + (oy - py) * d.y) / den
+        x, y = x + tx * f, y + ty * f
+    if x - x != 0.0 or y - y != 0.0:                   # not finite: the points of the vector formula refuse it
+        out = Point(0.0, 0.0)
+        for k in range(3):
+            j, l = (k + 1) % 3, (k + 2) % 3
+            t = (P[l] - P[j]).perp().unit()
+            out = out + t * ((O - P[k]).dot(dP[k]) / t.dot(P[j] - P[k]))
+    return x, y
 
 
 def largest_shift(O: Point, P: Sequence[Point], moves: Sequence[Sequence[Point]], per: float) -> float:
-    """The largest |dO| over the given sets of first-order point moves, times ``per``."""
-    return max(abs(centre_shift(O, P, m)) for m in moves) * per
+    """The largest |dO| over the given sets of first-order point moves, times ``per``.
+
+    >>> P = (Point(1, 0), Point(0, 1), Point(-1, 0))
+    >>> z = Point(0, 0)
+    >>> largest_shift(Point(0, 0), P, [(Point(0.1, 0), z, z), (z, Point(0, 0.3), z)], 10.0) == 3.0
+    True
+    """
+    bis = _bisectors(P)
+    return max(math.hypot(*_shift_xy(O, P, bis, m)) for m in moves) * per
 
 
 def inverse_turn(v: Point, deg: float) -> Point:
@@ -239,7 +270,13 @@ def farther_by(P: Point, Q: Point, R: Point) -> float:
     >>> farther_by(Point(0, 0), Point(3, 4), Point(0, 4))
     1.0
     """
-    return (Q - R).dot((Q - P) + (R - P)) / (abs(Q - P) + abs(R - P))
+    return _farther_by_xy(P.x, P.y, Q.x, Q.y, R.x, R.y)
+
+
+def _farther_by_xy(px: float, py: float, qx: float, qy: float, rx: float, ry: float) -> float:
+    """:func:`farther_by` on floats, in the order of its vector formula (the same bits)."""
+    ax, ay, bx, by = qx - px, qy - py, rx - px, ry - py              # Q − P, R − P
+    return ((qx - rx) * (ax + bx) + (qy - ry) * (ay + by)) / (math.hypot(ax, ay) + math.hypot(bx, by))
 
 
 def design_transmission(B: Point, D: Point, B1: Point, C1: Point, DC1: Point | None = None) -> float:
@@ -253,12 +290,14 @@ def design_transmission(B: Point, D: Point, B1: Point, C1: Point, DC1: Point | N
     >>> round(design_transmission(Point(50, 0), Point(90, 0), Point(0, 50), Point(64.995527349, 75.991949228)), 6)
     29.994726
     """
-    u = C1 - D if DC1 is None else DC1
-    x, y, z = abs(C1 - B1), abs(u), abs(D - B)                        # BC, CD, BD
-    d_xy = farther_by(C1, B1, D)                                      # BC − CD
-    d_bc = u.dot((C1 - B1) + (D - B1)) / (x + abs(D - B1))            # |B1C1| − |B1D|, from C1 − D
-    d_xz = d_bc + farther_by(D, B1, B)                                # BC − BD
-    d_yz = farther_by(D, C1, B1) + farther_by(D, B1, B)               # CD − BD
+    # on floats, in the order of the vector formulas in the comments (the same bits)
+    bx, by, dx, dy, b1x, b1y, c1x, c1y = B.x, B.y, D.x, D.y, B1.x, B1.y, C1.x, C1.y
+    ux, uy = (c1x - dx, c1y - dy) if DC1 is None else (DC1.x, DC1.y)  # u = C1 − D
+    x, y, z = math.hypot(c1x - b1x, c1y - b1y), math.hypot(ux, uy), math.hypot(dx - bx, dy - by)   # BC, CD, BD
+    d_xy = _farther_by_xy(c1x, c1y, b1x, b1y, dx, dy)                 # BC − CD
+    d_bc = (ux * ((c1x - b1x) + (dx - b1x)) + uy * ((c1y - b1y) + (dy - b1y))) / (x + math.hypot(dx - b1x, dy - b1y))
+    d_xz = d_bc + _farther_by_xy(dx, dy, b1x, b1y, bx, by)            # BC − BD
+    d_yz = _farther_by_xy(dx, dy, c1x, c1y, b1x, b1y) + _farther_by_xy(dx, dy, b1x, b1y, bx, by)   # CD − BD
     f1 = y - d_xz if y <= z else z - d_xy                             # y + z − x
     f2 = x - d_yz if x <= z else z + d_xy                             # x + z − y
     f3 = x + d_yz if x <= y else y + d_xz                             # x + y − z
