@@ -38,6 +38,7 @@ from typing import Any, Mapping
 from ..analytic.synthesis import three_positions_fixed_pivots as twin
 from ..errors import NotAMechanism
 from ..geometry import Point, circle, point_on_ray, ray_at_angle, segment, signed_angle
+from ..geometry.primitives import unit_xy
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot, length
@@ -122,26 +123,36 @@ def copied_angle(Bi: Point, Ki: Point, P: Point) -> float:
     return signed_angle(Ki - Bi, P - Bi)
 
 
-def _outer(u: Point, v: Point) -> tuple[tuple[float, float], tuple[float, float]]:
-    return ((u.x * v.x, u.x * v.y), (u.y * v.x, u.y * v.y))
+# 2×2 matrices as 4-tuples (m00, m01, m10, m11), their products and sums on floats: the Jacobian blocks of
+# hinge_sensitivity are a few dozen multiplications, which tuples of tuples built by generators made 150 µs
+def _outer(ux: float, uy: float, vx: float, vy: float) -> tuple[float, float, float, float]:
+    return (ux * vx, ux * vy, uy * vx, uy * vy)
 
 
-def _mul(M, N):
-    return tuple(tuple(sum(M[r][k] * N[k][c] for k in range(2)) for c in range(2)) for r in range(2))
+def _mul(M, N) -> tuple[float, float, float, float]:
+    a, b, c, d = M
+    e, f, g, h = N
+    return (a * e + b * g, a * f + b * h, c * e + d * g, c * f + d * h)
 
 
-def _add(*Ms):
-    return tuple(tuple(sum(M[r][c] for M in Ms) for c in range(2)) for r in range(2))
+def _add(M, N) -> tuple[float, float, float, float]:
+    return (M[0] + N[0], M[1] + N[1], M[2] + N[2], M[3] + N[3])
 
 
-def _scaled(M, k: float):
-    return tuple(tuple(k * M[r][c] for c in range(2)) for r in range(2))
+def _neg(M) -> tuple[float, float, float, float]:
+    return (-M[0], -M[1], -M[2], -M[3])
 
 
 def spectral_norm(M) -> float:
-    """Largest singular value of a 2×2 matrix: √((F + √(F² − 4·det²)) / 2), F the squared Frobenius norm."""
-    F = sum(x * x for row in M for x in row)
-    det = M[0][0] * M[1][1] - M[0][1] * M[1][0]
+    """Largest singular value of a 2×2 matrix (rows, or the 4-tuple m00, m01, m10, m11):
+    √((F + √(F² − 4·det²)) / 2), F the squared Frobenius norm.
+
+    >>> spectral_norm(((3.0, 0.0), (0.0, -4.0))), spectral_norm((3.0, 0.0, 0.0, -4.0))
+    (4.0, 4.0)
+    """
+    a, b, c, d = M if len(M) == 4 else (*M[0], *M[1])
+    F = sum((a * a, b * b, c * c, d * d))                 # sum(): the running Python's float summation, as before
+    det = a * d - b * c
     return math.sqrt((F + math.sqrt(max(0.0, (F - 2 * abs(det)) * (F + 2 * abs(det))))) / 2.0)
 
 
@@ -153,31 +164,37 @@ def hinge_sensitivity(C: Point, D: Point, D2: Point, D3: Point, B1: Point, B2: P
     n·((C − P_k)·δ)/(n·(P_j − P_k)); D_i′ = B1 + R_i(D − B_i), R_i the turn from B_iK_i to B1K1, moves with D
     through R_i, with B1 and B_i by translation, and turns about B1 with the directions of B1K1 and B_iK_i
     (dα = (K − B)⊥·(dK − dB)/|K − B|²)."""
+    # the vector formulas' operations in their order, on floats (the signs of zeros aside, which the norms'
+    # squares and |det| do not see): the same result
     P = (D, D2, D3)
     J = []
     for k in range(3):
-        j, l = (k + 1) % 3, (k + 2) % 3
-        n = (P[l] - P[j]).perp().unit()
-        J.append(_scaled(_outer(n, C - P[k]), 1.0 / n.dot(P[j] - P[k])))
-    eye = ((1.0, 0.0), (0.0, 1.0))
-    u1 = (K1 - B1).unit()
+        pj, pk, pl = P[(k + 1) % 3], P[k], P[(k + 2) % 3]
+        nx, ny = unit_xy(-(pl.y - pj.y), pl.x - pj.x)                       # n = (P_l − P_j)⊥, unit
+        s = 1.0 / (nx * (pj.x - pk.x) + ny * (pj.y - pk.y))                 # 1 / n·(P_j − P_k)
+        o = _outer(nx, ny, C.x - pk.x, C.y - pk.y)                          # n ⊗ (C − P_k)
+        J.append((s * o[0], s * o[1], s * o[2], s * o[3]))
+    eye = (1.0, 0.0, 0.0, 1.0)
+    u1x, u1y = unit_xy(K1.x - B1.x, K1.y - B1.y)
     rot, p, grad = {}, {}, {}
     for i, (B, K, Dp) in ((2, (B2, K2, D2)), (3, (B3, K3, D3))):
-        u = (K - B).unit()
-        c, s = u.dot(u1), u.cross(u1)
-        rot[i] = ((c, -s), (s, c))
-        p[i] = (Dp - B1).perp()
+        ux, uy = unit_xy(K.x - B.x, K.y - B.y)
+        c, s = ux * u1x + uy * u1y, ux * u1y - uy * u1x
+        rot[i] = (c, -s, s, c)
+        p[i] = (-(Dp.y - B1.y), Dp.x - B1.x)                                # (D_i′ − B1)⊥
     for i, (B, K) in enumerate(((B1, K1), (B2, K2), (B3, K3)), 1):
-        v = K - B
-        grad[i] = v.perp() / v.dot(v) if with_k else Point(0.0, 0.0)
-    blocks = [_add(J[0], _mul(J[1], rot[2]), _mul(J[2], rot[3]))]                                   # D
-    blocks.append(_add(*(_mul(J[i - 1], _add(eye, _scaled(_outer(p[i], grad[1]), -1.0))) for i in (2, 3))))  # B1
+        vx, vy = K.x - B.x, K.y - B.y
+        vv = vx * vx + vy * vy
+        grad[i] = (-vy / vv, vx / vv) if with_k else (0.0, 0.0)            # v⊥ / v·v
+    m2, m3 = _mul(J[1], rot[2]), _mul(J[2], rot[3])
+    blocks = [tuple(sum(t) for t in zip(J[0], m2, m3))]                                               # D
+    blocks.append(_add(*(_mul(J[i - 1], _add(eye, _neg(_outer(*p[i], *grad[1])))) for i in (2, 3))))   # B1
     for i in (2, 3):                                                                                  # B2, B3
-        blocks.append(_mul(J[i - 1], _add(_scaled(rot[i], -1.0), _outer(p[i], grad[i]))))
+        blocks.append(_mul(J[i - 1], _add(_neg(rot[i]), _outer(*p[i], *grad[i]))))
     if with_k:
-        blocks.append(_add(*(_mul(J[i - 1], _outer(p[i], grad[1])) for i in (2, 3))))                # K1
+        blocks.append(_add(*(_mul(J[i - 1], _outer(*p[i], *grad[1])) for i in (2, 3))))               # K1
         for i in (2, 3):                                                                              # K2, K3
-            blocks.append(_mul(J[i - 1], _scaled(_outer(p[i], grad[i]), -1.0)))
+            blocks.append(_mul(J[i - 1], _neg(_outer(*p[i], *grad[i]))))
     return DRAFT * max(spectral_norm(M) for M in blocks)
 
 
