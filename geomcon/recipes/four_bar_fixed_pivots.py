@@ -37,14 +37,14 @@ from typing import Any, Mapping
 
 from ..analytic.synthesis import three_positions_fixed_pivots as twin
 from ..errors import NotAMechanism
-from ..geometry import Point, circle, point_on_ray, ray_at_angle, segment, signed_angle
+from ..geometry import Point, circle, perpendicular_bisector, point_on_ray, ray_at_angle, segment, signed_angle
 from ..geometry.primitives import unit_xy
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot, length
 from .four_bar_positions import REPORT
 from .synthesis_common import (DRAFT, DRAFT_REFUSE_REL, add_bisector_centre, add_positions, add_report,
-                               evaluate_defects, fit_rigid, positions_back_check, require_distinct_noncollinear,
+                               evaluate_defects, fit_rigid, meet, positions_back_check, require_distinct_noncollinear,
                                require_equal, xy)
 
 GIVENS = (
@@ -296,11 +296,19 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
 def back_check(g: Mapping[str, Any], ans: Mapping[str, Any]) -> list[tuple[str, float, float, str]]:
     """Drive the designed linkage to the input angles of B1, B2, B3 on the branch of position 1: it must
     reach C1, C2, C3 and turn the coupler line to B_iK_i."""
-    sc = construct(g).scene
-    v = sc.evaluate(["C1", "C2", "C3", "K1", "K2", "K3"])
-    Bs, _, _ = _coupler_points(g)
-    return positions_back_check(Point(*g["A"]), Point(*g["D"]), ans["AB"], ans["BC"], ans["CD"], Bs,
-                                [v[f"C{i}"] for i in (1, 2, 3)], [v[f"K{i}"] for i in (1, 2, 3)])
+    # C1, C2, C3 by the construction's own steps (the triangles copied by _copy_triangle, the bisectors of
+    # add_bisector_centre met): the same values as its scene's, without building the rest of it
+    Bs, Ks, _ = _coupler_points(g)
+    D = Point(*g["D"])
+    Dp = [_copied(D, Bs[i - 1], Ks[i - 1], Bs[0], Ks[0]) for i in (2, 3)]
+    C1 = meet(perpendicular_bisector(D, Dp[0]), perpendicular_bisector(Dp[0], Dp[1]))
+    Cs = [C1] + [_copied(C1, Bs[0], Ks[0], Bs[i - 1], Ks[i - 1]) for i in (2, 3)]
+    return positions_back_check(Point(*g["A"]), D, ans["AB"], ans["BC"], ans["CD"], Bs, Cs, list(Ks))
+
+
+def _copied(P: Point, Bi: Point, Ki: Point, Bj: Point, Kj: Point) -> Point:
+    """P carried from (B_i, K_i) onto (B_j, K_j): the values of :func:`_copy_triangle`'s steps."""
+    return point_on_ray(ray_at_angle(Bj, Kj, copied_angle(Bi, Ki, P)), length(Bi, P))
 
 
 RECIPE = Recipe(

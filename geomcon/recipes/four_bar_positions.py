@@ -33,12 +33,12 @@ from typing import Any, Mapping
 
 from ..analytic.synthesis import three_positions as twin
 from ..errors import NotAMechanism
-from ..geometry import Point, circle, segment
+from ..geometry import Point, circle, perpendicular_bisector, segment
 from ..scene import Role, Scene
 from .base import Construction, Quantity, Recipe
 from .common import length
 from .synthesis_common import (DRAFT_REFUSE_REL, add_bisector_centre, add_positions, add_report, centre_sensitivity,
-                               evaluate_defects, fit_rigid, positions_back_check, require_distinct_noncollinear,
+                               evaluate_defects, fit_rigid, meet, positions_back_check, require_distinct_noncollinear,
                                require_equal, xy)
 
 NAMES = ("B1", "B2", "B3", "C1", "C2", "C3")
@@ -128,10 +128,12 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
 def back_check(g: Mapping[str, Any], ans: Mapping[str, Any]) -> list[tuple[str, float, float, str]]:
     """Drive the designed linkage to the input angles of B1, B2, B3 on the branch of position 1: it must
     reach C1, C2, C3."""
-    v = construct(g).scene.evaluate(["A", "D"])
     p = _points(g)
-    return positions_back_check(v["A"], v["D"], ans["AB"], ans["BC"], ans["CD"], [p[f"B{i}"] for i in (1, 2, 3)],
-                                [p[f"C{i}"] for i in (1, 2, 3)])
+    Bs, Cs = [p[f"B{i}"] for i in (1, 2, 3)], [p[f"C{i}"] for i in (1, 2, 3)]
+    # A and D by the construction's own steps (add_bisector_centre: the bisectors of P1P2 and P2P3 met), the
+    # same values as its scene's "A" and "D" without building the rest of it
+    A, D = (meet(perpendicular_bisector(P[0], P[1]), perpendicular_bisector(P[1], P[2])) for P in (Bs, Cs))
+    return positions_back_check(A, D, ans["AB"], ans["BC"], ans["CD"], Bs, Cs)
 
 
 RECIPE = Recipe(
