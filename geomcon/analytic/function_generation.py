@@ -66,27 +66,32 @@ def solve3(M: Sequence[Sequence[complex]], r: Sequence[complex]) -> tuple[comple
     >>> [float(f"{abs(v):.12g}") for v in solve3([[2e-7, 0, 1], [0, 4e-7, 1], [1e-7, 1e-7, 1]], [3, 3, 2.5])]
     [10000000.0, 5000000.0, 1.0]
     """
-    def det(m):
-        return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+    # written out (no comprehensions: the complex-step sensitivities call it a dozen times a twin), each
+    # number formed by the same operations in the same order as the loops it replaces, so the same bits
+    def det(m00, m01, m02, m10, m11, m12, m20, m21, m22):
+        return (m00 * (m11 * m22 - m12 * m21) - m01 * (m10 * m22 - m12 * m20)
+                + m02 * (m10 * m21 - m11 * m20))
 
-    col = [max(abs(M[i][k].real if isinstance(M[i][k], complex) else M[i][k]) for i in range(3)) for k in range(3)]
-    if not all(c > 0.0 for c in col):
+    def size(v):
+        return abs(v.real if isinstance(v, complex) else v)
+
+    (a0, a1, a2), (b0, b1, b2), (c0, c1, c2) = M
+    k0, k1, k2 = max(size(a0), size(b0), size(c0)), max(size(a1), size(b1), size(c1)), max(size(a2), size(b2), size(c2))
+    if not (k0 > 0.0 and k1 > 0.0 and k2 > 0.0):
         raise NotAMechanism("the 3×3 linear system is singular (a column of zeros)")
-    Mc = [[M[i][k] / col[k] for k in range(3)] for i in range(3)]
-    row = [max(abs(v.real if isinstance(v, complex) else v) for v in Mc[i]) for i in range(3)]
-    Mn = [[v / row[i] for v in Mc[i]] for i in range(3)]
-    rn = [r[i] / row[i] for i in range(3)]
-    D = det(Mn)
-    bound = math.prod(math.sqrt(sum(abs(v) ** 2 for v in rw)) for rw in Mn)
+    a0, a1, a2, b0, b1, b2, c0, c1, c2 = a0 / k0, a1 / k1, a2 / k2, b0 / k0, b1 / k1, b2 / k2, c0 / k0, c1 / k1, c2 / k2
+    ra, rb, rc = max(size(a0), size(a1), size(a2)), max(size(b0), size(b1), size(b2)), max(size(c0), size(c1), size(c2))
+    a0, a1, a2, b0, b1, b2, c0, c1, c2 = a0 / ra, a1 / ra, a2 / ra, b0 / rb, b1 / rb, b2 / rb, c0 / rc, c1 / rc, c2 / rc
+    r0, r1, r2 = r[0] / ra, r[1] / rb, r[2] / rc
+    D = det(a0, a1, a2, b0, b1, b2, c0, c1, c2)
+    bound = math.prod((math.sqrt(sum((abs(a0) ** 2, abs(a1) ** 2, abs(a2) ** 2))),
+                       math.sqrt(sum((abs(b0) ** 2, abs(b1) ** 2, abs(b2) ** 2))),
+                       math.sqrt(sum((abs(c0) ** 2, abs(c1) ** 2, abs(c2) ** 2)))))
     if not abs(D) > SINGULAR_REL * bound:
         raise NotAMechanism(f"the 3×3 linear system is singular (relative determinant {abs(D) / bound:.3g} ≤ "
                             f"{SINGULAR_REL:g} after scaling rows and columns)")
-    out = []
-    for j in range(3):
-        Mj = [[rn[i] if k == j else Mn[i][k] for k in range(3)] for i in range(3)]
-        out.append(det(Mj) / D / col[j])
-    return out[0], out[1], out[2]
+    return (det(r0, a1, a2, r1, b1, b2, r2, c1, c2) / D / k0, det(a0, r0, a2, b0, r1, b2, c0, r2, c2) / D / k1,
+            det(a0, a1, r0, b0, b1, r1, c0, c1, r2) / D / k2)
 
 
 def _hinge(d, a, phi, psi):
