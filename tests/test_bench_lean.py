@@ -106,3 +106,21 @@ def test_batch_rows_report_a_cost_per_variant_of_the_valid_variants():
     rows = batch_rows(quick=False)             # 1000 random draws: some are no crank-rocker, and are left out
     assert len(rows) == 4 and all(r.seconds > 0 and r.ref_seconds > 0 and r.target == "reported" for r in rows)
     assert all(500 <= int(r.case.split(" × ")[0]) <= 1000 for r in rows)
+
+
+def test_the_baseline_line_quotes_python_c_pass():
+    from geomcon.bench.lean import baseline_line
+    whole = LeanRow("whole process", "geomcon solve 001-08", 0.1, "python -c pass", 0.025, "≤ 120 ms", 0.120, None)
+    assert baseline_line([whole]).startswith("python -c pass: 25 ms")
+    assert baseline_line([]) == "python -c pass: not measured"
+    assert lean_table([whole]).splitlines()[1] == baseline_line([whole])
+
+
+def test_cam_rows_cover_every_bundled_cam_with_a_fitting_reference():
+    from geomcon.bench.lean import _cam_problems, cam_rows
+    rows = [r for r in cam_rows(quick=True) if r.what == "cam answers only"]
+    assert len(rows) == len(_cam_problems()) >= 10 and len({r.case for r in rows}) == len(rows)
+    for r in rows:
+        flat = r.case.endswith(" flat")
+        assert r.reference == ("its analytic twin" if flat else "scalar reference") and r.ref_seconds > 0
+        assert r.met == (r.seconds <= 2e-3)
