@@ -48,15 +48,17 @@ def altitudes(P1: Point, P2: Point, P3: Point) -> tuple[float, float, float]:
     """Distance of each point from the line through the other two."""
     out = []
     for p, q, r in ((P1, P2, P3), (P2, P3, P1), (P3, P1, P2)):
-        out.append(abs((r - q).cross(p - q)) / abs(r - q))
+        ux, uy = r.x - q.x, r.y - q.y                      # abs((r − q) × (p − q)) / abs(r − q), on floats
+        out.append(abs(ux * (p.y - q.y) - uy * (p.x - q.x)) / math.hypot(ux, uy))
     return tuple(out)
 
 
 def condition(P1: Point, P2: Point, P3: Point) -> float:
     """R / h_min: the circumradius over the smallest altitude of the triangle P1P2P3 — how many mm the
     centre moves per mm a point is misplaced, at worst (∞ for collinear points)."""
-    a = abs(P2 - P3) * abs(P3 - P1) * abs(P1 - P2)
-    area2 = abs((P2 - P1).cross(P3 - P1))
+    # on floats, in the order of the vector formulas (abs(P2 − P3) is hypot(P2.x − P3.x, P2.y − P3.y))
+    a = math.hypot(P2.x - P3.x, P2.y - P3.y) * math.hypot(P3.x - P1.x, P3.y - P1.y) * math.hypot(P1.x - P2.x, P1.y - P2.y)
+    area2 = abs((P2.x - P1.x) * (P3.y - P1.y) - (P2.y - P1.y) * (P3.x - P1.x))
     h = min(altitudes(P1, P2, P3)) if area2 > 0 else 0.0
     return math.inf if h == 0.0 else a / (2.0 * area2) / h
 
@@ -64,13 +66,15 @@ def condition(P1: Point, P2: Point, P3: Point) -> float:
 def require_distinct_noncollinear(names: Sequence[str], pts: Sequence[Point], what: str) -> list[str]:
     """Refuse coincident or collinear positions (NotAMechanism, one line with the numbers); warn when the
     centre of the three is ill-conditioned (R/h_min ≥ :data:`WARN_CONDITION`)."""
-    span = max(abs(p - q) for p in pts for q in pts)
+    span = max(math.hypot(p.x - q.x, p.y - q.y) for p in pts for q in pts)       # abs(p − q)
     for i in range(3):
         for j in range(i + 1, 3):
-            if abs(pts[i] - pts[j]) <= tol(span, 1e-300):
+            if math.hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y) <= tol(span, 1e-300):
                 raise NotAMechanism(f"{names[i]} = {names[j]} = ({pts[i].x:.6g}, {pts[i].y:.6g}): two coincident "
                                     f"positions, {what} is not determined")
     k = condition(*pts)
+    if k < WARN_CONDITION:
+        return []
     seq = ", ".join(f"{n} = ({p.x:.6g}, {p.y:.6g})" for n, p in zip(names, pts))
     if k >= REFUSE_CONDITION:
         raise NotAMechanism(f"{seq} are (nearly) collinear (R/h_min = {k:.3g} ≥ {REFUSE_CONDITION:g}): the perpendicular "
