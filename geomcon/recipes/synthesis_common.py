@@ -32,6 +32,7 @@ from ..analytic.fourbar_drive import REFUSE_CONDITION, WARN_CONDITION, angle_of,
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, Line, Point, RightOf, circle, circle_circle, line_line, midpoint, perpendicular_bisector,
                         point_along, segment, signed_angle)
+from ..geometry.measure import _signed_angle_xy
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import CHECK_REL, REL_TOL, tol
 from .common import add_bar, length, transmission_deg
@@ -171,8 +172,11 @@ def fully_turning(a: float, b: float, c: float, d: float) -> bool:
 
 def on_working_arc(A: Point, B1: Point, B2: Point, B3: Point, P: Point) -> bool:
     """True when P (seen from A) lies on the arc the crank turns through from B1 via B2 to B3."""
-    def turn(Q: Point) -> float:
-        return signed_angle(B1 - A, Q - A) % (2 * math.pi)
+    ax, ay = A.x, A.y
+    ux, uy = B1.x - ax, B1.y - ay
+
+    def turn(Q: Point) -> float:                     # signed_angle(B1 − A, Q − A) mod 2π, on floats
+        return _signed_angle_xy(ux, uy, Q.x - ax, Q.y - ay) % (2 * math.pi)
 
     t2, t3, tp = turn(B2), turn(B3), turn(P)
     if t2 < t3:                      # counter-clockwise from B1
@@ -191,7 +195,7 @@ def working_motion(A: Point, D: Point, B1: Point, B2: Point, B3: Point, C1: Poin
             if Cx is None:
                 return False, 0.0
             cands.append((Bx, Cx))
-    bds = [abs(D - B) for B, _ in cands]
+    bds = [math.hypot(D.x - B.x, D.y - B.y) for B, _ in cands]                  # abs(D − B)
     t = REL_TOL * max(BC, CD, max(bds))
     if min(bds) <= abs(BC - CD) + t or max(bds) >= BC + CD - t:
         return False, 0.0
