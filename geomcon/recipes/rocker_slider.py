@@ -256,8 +256,23 @@ def rs2_sensitivity(D: Point, guide: Line, E1: Point, F1: Point, F2: Point, F2p:
     for v in (Point(1.0, 0.0), Point(0.0, 1.0)):
         lens.append((zero, v - inverse_turn(v, dpsi), zero, zero))                          # D
         lens.append((v, inverse_turn(v, dpsi), zero, zero))                                 # F1
+    # pin_shift on floats, its move-free parts once: the same operations in the same order (the same bits)
+    ux, uy = u.x, u.y
+    t = (E1.x - guide.point.x) * ux + (E1.y - guide.point.y) * uy
+    cx, cy = F2p.x - F1.x, F2p.y - F1.y
+    den = ux * cx + uy * cy
+    e1x, e1y, e2x, e2y = E1.x - F1.x, E1.y - F1.y, E1.x - F2p.x, E1.y - F2p.y
+
+    def shift(d1: Point, d2: Point, dG: Point, du: Point) -> float:
+        wx, wy = dG.x + du.x * t, dG.y + du.y * t
+        dt = ((e1x * d1.x + e1y * d1.y) - (e2x * d2.x + e2y * d2.y) - (wx * cx + wy * cy)) / den
+        x, y = wx + ux * dt, wy + uy * dt
+        if x - x != 0.0 or y - y != 0.0:               # not finite: the points of the vector formula refuse it
+            return abs(pin_shift(E1, F1, F2p, guide, d1, d2, dG, du))
+        return math.hypot(x, y)
+
     def big(moves, per):
-        return max(abs(pin_shift(E1, F1, F2p, guide, *m)) for m in moves) * per
+        return max(shift(*m) for m in moves) * per
     return big(ang, DRAFT_DEG), big(lens, DRAFT_MM)
 
 
