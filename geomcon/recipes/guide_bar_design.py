@@ -228,14 +228,22 @@ def shaper_analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def guide_back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild with ``guide_bar.extremes``: K and ψ must come back."""
-    v = guide_bar_extremes({"AB": ans["AB"], "AC": ans["AC"]}).scene.evaluate(["K", "psi"])
+    return _guide_rows(g, ans, _rebuilt(ans))
+
+
+def _rebuilt(ans: Mapping[str, float]) -> dict[str, float]:
+    return guide_bar_extremes({"AB": ans["AB"], "AC": ans["AC"]}).scene.evaluate(["K", "psi"])
+
+
+def _guide_rows(g: Mapping[str, Any], ans: Mapping[str, float], v: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     return [("K", v["K"], g["K"], ""), ("psi", v["psi"], ans["psi"], "deg")]
 
 
 def shaper_back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
-    """Guide-bar part rebuilt by ``guide_bar.extremes``; the stroke 2·CD·sin(ψ/2) must give H back."""
-    rows = guide_back_check(g, ans)
-    v = guide_bar_extremes({"AB": ans["AB"], "AC": ans["AC"]}).scene.evaluate(["psi"])
+    """Guide-bar part rebuilt by ``guide_bar.extremes`` (once: K and ψ); the stroke 2·CD·sin(ψ/2) must give
+    H back."""
+    v = _rebuilt(ans)
+    rows = _guide_rows(g, ans, v)
     rows.append(("H", 2 * ans["CD"] * math.sin(math.radians(v["psi"] / 2)), g["H"], "mm"))
     return rows
 
