@@ -167,12 +167,12 @@ def admissible_arcs(k, C1: Point, C2: Point, D: Point, CD: float, gamma_allow: f
 
 def nearer(A: Point, P: Point, Q: Point) -> Point:
     """The extreme position nearer to A (the folded one)."""
-    return P if abs(P - A) < abs(Q - A) else Q
+    return P if math.hypot(P.x - A.x, P.y - A.y) < math.hypot(Q.x - A.x, Q.y - A.y) else Q    # |P − A| < |Q − A|
 
 
 def farther(A: Point, P: Point, Q: Point) -> Point:
     """The extreme position farther from A (the extended one)."""
-    return Q if abs(P - A) < abs(Q - A) else P
+    return Q if math.hypot(P.x - A.x, P.y - A.y) < math.hypot(Q.x - A.x, Q.y - A.y) else P
 
 
 def _plus(theta: float, k: float, c: float) -> float:
