@@ -31,7 +31,7 @@ from typing import Any, Mapping, Sequence
 from ..analytic.fourbar_drive import REFUSE_CONDITION, WARN_CONDITION, angle_of, assemble, branch_of
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, Line, Point, RightOf, circle, circle_circle, line_line, midpoint, perpendicular_bisector,
-                        point_along, segment, signed_angle)
+                        point_along, segment)
 from ..geometry.measure import _signed_angle_xy
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import CHECK_REL, REL_TOL, tol
