@@ -26,6 +26,7 @@ def _toy(g: dict) -> Scene:
     sc.add("unused", circle, D, 1.0)
     if sc.drawing:
         sc.add("mark", repr, A, role=Role.ANNOTATION)
+        sc.add("bar", circle, D, 2.0)                      # drawing-only: a lean scene never adds it
     return sc
 
 
@@ -85,6 +86,22 @@ def test_a_scene_that_completes_itself_while_culling_leaves_no_plan_for_lean_sce
     assert first.evaluate(["C", "unused"])["unused"].r == 1.0             # completes itself while culling
     second.rebuild_with(lambda: _toy(g))
     assert second.evaluate(["C", "unused"])["C"] == first.value("C")       # its own plan, not the full scene's
+
+
+def test_a_drawing_only_step_a_lean_scene_never_added_completes_it():
+    g = {"AD": 8.0, "r": 5.0, "small": True}
+    planned("toy", _toy, g).value("C")
+    for ask in (lambda sc: sc.value("bar").r, lambda sc: sc["bar"].key, lambda sc: "bar" in sc):
+        sc = planned("toy", _toy, g)
+        sc.rebuild_with(lambda: _toy(g))
+        c = sc.value("C")
+        assert ask(sc) in (2.0, "bar", True)
+        assert sc.drawing and sc.value("C") is c
+    with LeanScenes():
+        lean = _toy(g)
+    assert "bar" not in lean
+    with pytest.raises(KeyError):
+        lean.value("bar")                                  # no rebuild: nothing to complete from
 
 
 def test_a_lean_scene_without_rebuild_refuses_skipped_annotations():

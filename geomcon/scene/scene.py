@@ -274,7 +274,12 @@ class Scene:
 
     # ------------------------------------------------------------------ reading
     def __contains__(self, key: str) -> bool:
-        return key in self._rec or key in self._skip
+        if key in self._rec or key in self._skip:
+            return True
+        if self._rebuild is not None and (self.lean or self._keep is not None):
+            self.complete()          # a drawing-only step a lean scene never added
+            return key in self._rec
+        return False
 
     def __len__(self) -> int:
         return len(self._rec)
@@ -282,7 +287,8 @@ class Scene:
     def __getitem__(self, key: str) -> Step:
         step = self._step.get(key)
         if step is None:
-            if key in self._skip:
+            if key in self._skip or (key not in self._rec and self._rebuild is not None
+                                     and (self.lean or self._keep is not None)):
                 self._upgrade(key)
             op, args, kwargs, _, branch, _, optional, _, meta = self._rec[key]
             caption, role, style, label, visible, unit = meta
@@ -345,7 +351,9 @@ class Scene:
                 continue
             r = rec.get(k)
             if r is None:
-                if k not in self._skip:
+                # a step skipped here, or one a lean scene never added (drawing-only, under
+                # 'if sc.drawing'): a scene that can complete itself does so; a full scene has no such step
+                if k not in self._skip and (self._rebuild is None or not (self.lean or self._keep is not None)):
                     raise KeyError(f"no step '{k}'")
                 self._upgrade(k)
                 return self.closure(keys)
