@@ -332,11 +332,12 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     >>> maximise(lambda d: -(d - 1.0) ** 4, [(0.0, 1.0)], slope=lambda d: -(d - 1.0) ** 3).delta < 1.0   # flat at the end
     True
     """
-    grids = sample_grids(tuple((float(a), float(b)) for a, b in pieces), dense)
+    key = tuple((float(a), float(b)) for a, b in pieces)
+    grids = sample_grids(key, dense)
     places: list[float] = []
     if slope is not None:
         if slope1 is not None:                      # one call for all the pieces' samples
-            slopes = _split(np.asarray(slope(np.concatenate(grids)), dtype=float), grids)
+            slopes = _split(np.asarray(slope(sample_grid(key, dense)), dtype=float), grids)
         else:
             slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
@@ -363,7 +364,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
     lo, hi, cands = [], [], []
     mids, fmids, gains = [], [], []
-    values = _split(np.asarray(g(np.concatenate(grids)), dtype=float), grids) if g1 is not None else None
+    values = _split(np.asarray(g(sample_grid(key, dense)), dtype=float), grids) if g1 is not None else None
     for k, d in enumerate(grids):
         v = values[k] if values is not None else np.asarray(g(d), dtype=float)
         n = len(d) - 1
@@ -446,6 +447,21 @@ def sample_grids(pieces: tuple[tuple[float, float], ...], dense: int) -> tuple[n
         d.flags.writeable = False
         grids.append(d)
     return tuple(grids)
+
+
+@lru_cache(maxsize=256)
+def sample_grid(pieces: tuple[tuple[float, float], ...], dense: int) -> np.ndarray:
+    """The samples of :func:`sample_grids` in one read-only array (their concatenation, made once): the array
+    :func:`maximise` evaluates all the pieces' samples on, the same object for the same pieces, so that what
+    is computed on it can be kept (:func:`envelope_terms`).
+
+    >>> d = sample_grid(((0.0, 1.0), (1.0, 2.0)), 32)
+    >>> d is sample_grid(((0.0, 1.0), (1.0, 2.0)), 32), bool(np.all(d == np.concatenate(sample_grids(((0.0, 1.0), (1.0, 2.0)), 32))))
+    (True, True)
+    """
+    d = np.concatenate(sample_grids(pieces, dense))
+    d.flags.writeable = False
+    return d
 
 
 def _split(values: np.ndarray, grids: Sequence[np.ndarray]) -> list[np.ndarray]:
@@ -1024,6 +1040,9 @@ class LineFamily:
     fn: LineFn
     breaks: tuple[float, ...] = ()
     fn1: Callable[[float], tuple[float, float, float, float, float, float]] | None = None
+    memo: dict = field(default_factory=dict, compare=False, repr=False)
+    """What :func:`envelope_terms` computed on the last few read-only sample arrays (:func:`sample_grid`): the
+    searches over the turn share those samples."""
 
     def pieces(self) -> list[tuple[float, float]]:
         """The smooth pieces of the turn."""
@@ -1056,11 +1075,59 @@ def envelope(fam: LineFamily, delta) -> tuple[np.ndarray, np.ndarray, np.ndarray
     >>> [round(float(v[0]), 12) for v in envelope(fam, np.array([0.0]))]
     [30.0, 0.0, 0.0, 30.0]
     """
-    phi, dphi, ddphi, p, dp, ddp = fam.eval(delta)
+    t = envelope_terms(fam, delta)
+    return t.x, t.y, t.lam, t.rho
+
+
+@dataclass(frozen=True)
+class EnvelopeTerms:
+    """The lines (φ, φ′, φ″, p, p′, p″) at some cam angles and what :func:`envelope` forms from them: cos φ,
+    sin φ, λ, ρ and the contact point (x, y)."""
+
+    phi: np.ndarray
+    dphi: np.ndarray
+    ddphi: np.ndarray
+    p: np.ndarray
+    dp: np.ndarray
+    ddp: np.ndarray
+    c: np.ndarray
+    s: np.ndarray
+    lam: np.ndarray
+    rho: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+
+
+def envelope_terms(fam: LineFamily, delta) -> EnvelopeTerms:
+    """The terms of :func:`envelope` at ``delta`` (radians), by its operations. On a read-only array (the
+    samples of a search, :func:`sample_grid`) they are kept on the family: the searches of the turn that
+    sample it (the contact's extremes, ρmin) compute them once.
+
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, 0 * d, 0 * d))
+    >>> d = sample_grid(((0.0, TWO_PI),), 64)
+    >>> envelope_terms(fam, d) is envelope_terms(fam, d), float(envelope_terms(fam, d).rho.min())
+    (True, 30.0)
+    """
+    d = np.asarray(delta, dtype=float)
+    keep = not d.flags.writeable
+    if keep:
+        hit = fam.memo.get(id(d))
+        if hit is not None and hit[0] is d:
+            return hit[1]
+    phi, dphi, ddphi, p, dp, ddp = fam.eval(d)
     lam = dp / dphi
     rho = p + (ddp * dphi - dp * ddphi) / dphi ** 3
     c, s = np.cos(phi), np.sin(phi)
-    return p * c - lam * s, p * s + lam * c, lam, rho
+    out = EnvelopeTerms(phi, dphi, ddphi, p, dp, ddp, c, s, lam, rho, p * c - lam * s, p * s + lam * c)
+    if keep:
+        if len(fam.memo) >= _MEMO_GRIDS:
+            fam.memo.clear()
+        fam.memo[id(d)] = (d, out)               # (d kept with it: its id is not reused while it is here)
+    return out
+
+
+_MEMO_GRIDS = 4
+"""Sample arrays whose envelope terms a family keeps (the turn's and each segment's searches)."""
 
 
 def contact_slope(fam: LineFamily, delta) -> np.ndarray:
@@ -1205,7 +1272,7 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
            "inverted_relative", "turn_of", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
-           "illinois1", "brent_max1", "sign1", "sample_grids", "envelope1", "pow1", "div1", "corners", "sample_count",
+           "illinois1", "brent_max1", "sign1", "sample_grids", "sample_grid", "envelope_terms", "EnvelopeTerms", "envelope1", "pow1", "div1", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
            "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]

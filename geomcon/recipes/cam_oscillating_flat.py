@@ -13,7 +13,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from ..cam.oscillating_flat import END_TIE, FlatArmCam
-from ..cam.profile import Extremum, LineFamily, envelope, envelope1, envelope_rho_min, flat_profile, maximise
+from ..cam.profile import (Extremum, LineFamily, envelope, envelope1, envelope_rho_min, envelope_terms, flat_profile,
+                           maximise)
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, line_through,
                         segment, thales_circle)
@@ -150,14 +151,30 @@ def face_place(fam: LineFamily, A0: Point, inv: float, tau: int, d) -> np.ndarra
 def face_place_slope(fam: LineFamily, A0: Point, inv: float, tau: int, d) -> np.ndarray:
     """d/dδ of :func:`face_place` from the envelope: K slides along the face at ρ·β′ (t·u = −τ), u turns at β′
     (u′ = β′·τ·n), A0′ moves: l′ = −τρβ′ + τβ′(K − A0′)·n − A0′′·u."""
+    return face_place_and_slope(fam, A0, inv, tau, d)[1]
+
+
+def face_place_and_slope(fam: LineFamily, A0: Point, inv: float, tau: int, d) -> tuple[np.ndarray, np.ndarray]:
+    """(:func:`face_place`, :func:`face_place_slope`) at ``d`` from one evaluation of the envelope's terms
+    (:func:`~geomcon.cam.profile.envelope_terms`, kept on the family for a search's samples), each by its own
+    operations (the same bits as either alone).
+
+    >>> from geomcon.cam.oscillating_flat import FlatArmCam
+    >>> from geomcon.cam.program import parse_program
+    >>> prog = parse_program([{"kind": "rise", "angle": 150, "law": "cycloidal"}, {"kind": "dwell", "angle": 30},
+    ...                       {"kind": "return", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60}])
+    >>> fam = flat_family(FlatArmCam(100.0, 40.0, 15.0, prog))
+    >>> d = np.linspace(0.1, 6.2, 40)
+    >>> l, dl = face_place_and_slope(fam, Point(0.0, 100.0), -1.0, -1, d)
+    >>> l.tolist() == face_place(fam, Point(0.0, 100.0), -1.0, -1, d).tolist()
+    True
+    """
     d = np.asarray(d, dtype=float)
-    beta, db, ddb, p, dp, ddp = fam.eval(d)
-    c, s = np.cos(beta), np.sin(beta)
-    lam = dp / db                                   # the envelope (:func:`envelope`, the same operations),
-    rho = p + (ddp * db - dp * ddb) / db ** 3       # its cos and sin of β computed once for both
-    x, y = p * c - lam * s, p * s + lam * c
+    t = envelope_terms(fam, d)
+    c, s, x, y, db = t.c, t.s, t.x, t.y, t.dphi
     ax, ay, vx, vy = _pivot_path(A0, inv, d)
-    return -tau * rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
+    place = (x - ax) * tau * s - (y - ay) * tau * c
+    return place, -tau * t.rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
 
 
 def _pivot_path1(A0: Point, inv: float, d: float) -> tuple[float, float, float, float]:
@@ -221,19 +238,37 @@ class _FaceSearch:
         self.fam, self.A0, self.inv, self.tau, self.seg = fam, A0, inv, tau, seg
         self.pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
         self.scalar = fam.fn1 is not None
-        self._last: list = [None, None]
+        self._last: list = [None, None, None]
 
     def place(self, d: np.ndarray) -> np.ndarray:
-        """l at ``d``; a few places (the candidates) one by one on the scalar path."""
-        if self.scalar and d.size <= 16:
-            return np.array([face_place1(self.fam, self.A0, self.inv, self.tau, x) for x in d.tolist()])
-        return face_place(self.fam, self.A0, self.inv, self.tau, d)
+        """l at ``d``: at the samples of :meth:`slope` (a search's end candidates, the samples of a dwell
+        where the slope is roundoff) their values computed with the slopes, elsewhere (the refined places) one
+        by one on the scalar path when few, else by the array form (the same bits)."""
+        grid, vals = self._last[0], self._last[2]
+        if vals is not None and d.size:
+            i = np.minimum(np.searchsorted(grid, d), grid.size - 1)
+            hit = grid[i] == d
+            out = np.where(hit, vals[i], 0.0)
+            rest = np.nonzero(~hit)[0]
+        else:
+            out, rest = np.empty(d.shape), np.arange(d.size)
+        if rest.size:
+            todo = d[rest]
+            if self.scalar and todo.size <= 16:
+                out[rest] = [face_place1(self.fam, self.A0, self.inv, self.tau, x) for x in todo.tolist()]
+            else:
+                out[rest] = face_place(self.fam, self.A0, self.inv, self.tau, todo)
+        return out
 
     def slope(self, d: np.ndarray) -> np.ndarray:
-        """l′ at ``d`` (the nearest and the farthest search the same samples: computed once)."""
+        """l′ at ``d`` (the nearest and the farthest search the same samples: computed once, with l there for
+        :meth:`place` when the samples increase)."""
         last = self._last
         if last[0] is None or last[0].shape != d.shape or not np.array_equal(last[0], d):
-            last[0], last[1] = np.array(d, dtype=float), face_place_slope(self.fam, self.A0, self.inv, self.tau, d)
+            grid = np.array(d, dtype=float)
+            place, sl = face_place_and_slope(self.fam, self.A0, self.inv, self.tau, d)
+            ordered = grid.ndim == 1 and bool(np.all(grid[1:] > grid[:-1]))
+            last[0], last[1], last[2] = grid, sl, place if ordered else None
         return last[1]
 
     def _slope1(self, sign: float):

@@ -1,0 +1,118 @@
+"""The flat faces' searches sharing their samples: the contact's extremes over the turn and a segment, ρmin of
+the envelope and the places the searches value, against the same searches with nothing shared (every sample
+and every candidate computed afresh by the array forms, as before the sharing): the same bits."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from geomcon.cam.laws import LAW_NAMES
+from geomcon.cam.oscillating_flat import FlatArmCam
+from geomcon.cam.profile import (Extremum, LineFamily, TWO_PI, envelope, envelope_rho_min, envelope_terms, maximise,
+                                 sample_grid, sample_grids)
+from geomcon.cam.program import parse_program
+from geomcon.geometry import Point
+from geomcon.recipes import cam_oscillating_flat as osc_flat
+from geomcon.recipes import cam_translating as transl
+
+SEEDS = range(16)
+
+
+def _program(rng: np.random.Generator):
+    """A random full-turn program (rise, dwell, return, dwell; any laws; now and then a dwell left out)."""
+    a = rng.dirichlet([2, 1, 2, 1]) * 360.0
+    a[-1] = 360.0 - a[:-1].sum()
+    kinds = ["rise", "dwell", "return", "dwell"]
+    if rng.uniform() < 0.25:
+        a[2] += a[1]
+        a, kinds = np.delete(a, 1), kinds[:1] + kinds[2:]
+    return parse_program([{"kind": k, "angle": float(x), **({"law": str(rng.choice(LAW_NAMES))} if k != "dwell" else {})}
+                          for k, x in zip(kinds, a)])
+
+
+def _cam(rng: np.random.Generator) -> FlatArmCam:
+    return FlatArmCam(100.0, float(rng.uniform(20, 45)), float(rng.uniform(3, 15)), _program(rng),
+                      str(rng.choice(["ccw", "cw"])), str(rng.choice(["left", "right"])), float(rng.uniform(-10, 10)))
+
+
+def _fresh(fam: LineFamily) -> LineFamily:
+    """The same lines without any kept samples (each call evaluates anew)."""
+    return LineFamily(lambda d: fam.fn(np.array(d, dtype=float)), fam.breaks, fam.fn1)
+
+
+def _unshared_place_search(cam: FlatArmCam, seg) -> tuple[Extremum, Extremum]:
+    """(nearest, farthest) contact by :func:`maximise` on the plain array forms (fresh samples, every candidate
+    valued by :func:`face_place` on arrays, or one by one when a few), the segment end rule of the nearest as
+    :class:`_FaceSearch` applies it."""
+    fam = osc_flat.flat_family(cam)
+    A0, inv, tau = Point(0.0, cam.a), -float(cam.sigma), cam.tau
+    pcs = fam.pieces() if seg is None else osc_flat._segment_pieces(fam, seg)
+
+    def place(d):
+        if d.size <= 16:
+            return np.array([osc_flat.face_place1(fam, A0, inv, tau, x) for x in d.tolist()])
+        return osc_flat.face_place(_fresh(fam), A0, inv, tau, d)
+
+    def slope(d):
+        return osc_flat.face_place_slope(_fresh(fam), A0, inv, tau, np.array(d))
+
+    def slope1(sign):
+        return lambda d: sign * osc_flat.face_place_slope1(fam, A0, inv, tau, d)
+
+    hi = maximise(place, pcs, slope=slope, slope1=slope1(1.0))
+    lo = maximise(lambda d: -place(d), pcs, slope=lambda d: -slope(d), slope1=slope1(-1.0))
+    if seg is not None:
+        ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
+        for lv, d in zip(place(ends), ends):
+            if lv <= -lo.value + osc_flat.END_TIE * A0.y:
+                lo = Extremum(-float(lv), float(d))
+                break
+    return Extremum(-lo.value, lo.delta), hi
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_shared_samples_give_the_unshared_searches(seed):
+    rng = np.random.default_rng(seed)
+    cam = _cam(rng)
+    fam = osc_flat.flat_family(cam)              # one family for all: its samples are kept and shared
+    A0, inv, tau = Point(0.0, cam.a), -float(cam.sigma), cam.tau
+    assert osc_flat.face_extremes(fam, A0, inv, tau) == _unshared_place_search(cam, None)
+    for seg in (cam.program.rise, cam.program.ret):
+        assert osc_flat.face_nearest(fam, A0, inv, tau, seg) == _unshared_place_search(cam, seg)[0]
+    alone = osc_flat.flat_family(cam)
+    plain = maximise(lambda d: -envelope(_fresh(alone), np.array(d))[3], alone.pieces(),
+                     g1=lambda d: -osc_flat.envelope1(alone.fn1(d))[3])
+    assert envelope_rho_min(fam) == Extremum(-plain.value, plain.delta)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_translating_face_rho_min_shared_or_not(seed):
+    rng = np.random.default_rng(seed)
+    fam = transl._face_family(_program(rng), float(rng.uniform(1, 30)), float(rng.uniform(20, 80)),
+                              float(rng.choice([-1.0, 1.0])))
+    first = envelope_rho_min(fam)
+    assert envelope_rho_min(fam) == first == envelope_rho_min(_fresh(fam))
+
+
+def test_place_looks_up_the_samples_and_values_the_rest_by_the_array_form():
+    rng = np.random.default_rng(7)
+    cam = _cam(rng)
+    fam = osc_flat.flat_family(cam)
+    A0, inv, tau = Point(0.0, cam.a), -float(cam.sigma), cam.tau
+    search = osc_flat._FaceSearch(fam, A0, inv, tau, None)
+    grid = sample_grid(tuple(fam.pieces()), 1440)
+    search.slope(grid)
+    some = np.concatenate([grid[rng.integers(0, grid.size, 40)], rng.uniform(0.0, TWO_PI, 30)])
+    for d in (some, some[:5], some[-5:], grid[:3], np.array([grid[-1], 1.0])):
+        assert search.place(d).tolist() == osc_flat.face_place(_fresh(fam), A0, inv, tau, d).tolist()
+
+
+def test_envelope_terms_kept_only_for_read_only_samples():
+    fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + np.sin(d), np.cos(d), -np.sin(d)))
+    d = sample_grid(((0.0, math.pi), (math.pi, TWO_PI)), 64)
+    assert envelope_terms(fam, d) is envelope_terms(fam, d)
+    assert envelope_terms(fam, np.array(d)) is not envelope_terms(fam, np.array(d))
+    assert bool(np.all(d == np.concatenate(sample_grids(((0.0, math.pi), (math.pi, TWO_PI)), 64))))
+    assert [v.tolist() for v in envelope(fam, d)] == [v.tolist() for v in envelope(_fresh(fam), np.array(d))]
