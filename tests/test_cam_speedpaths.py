@@ -190,6 +190,20 @@ def test_pow1_is_numpys_power():
         assert np.array_equal(x ** y, np.array([pow1(v, y) for v in x.tolist()]))
 
 
+def test_pow1_is_numpys_power_at_the_edges():
+    """Signs, tiny and huge numbers (overflow to ±inf, underflow), zeros, infinities and nan: numpy's bits
+    whichever route pow1 takes (math.pow raises where numpy returns inf or nan)."""
+    rng = np.random.default_rng(5)
+    x = np.concatenate([rng.uniform(-1e3, 1e3, 5000), 10.0 ** rng.uniform(-320, 308, 2000) * rng.choice([-1, 1], 2000),
+                        [0.0, -0.0, np.inf, -np.inf, np.nan, 1e103, -1e103, 1e-110, 5e-324]])
+    with np.errstate(all="ignore"):
+        for y in (1.5, 3.0, 2.0, -1.0):
+            want = x ** y if y not in (2.0, -1.0) else np.power(x, y)
+            got = np.array([pow1(v, y) for v in x.tolist()])
+            assert np.array_equal(want, got, equal_nan=True)
+            assert np.array_equal(np.signbit(want), np.signbit(got))
+
+
 # ------------------------------------------------------------------------------------------- the refinements
 def test_illinois1_ends_at_a_sign_change_between_adjacent_floats_and_agrees_with_the_array_bisection():
     rng = np.random.default_rng(3)
