@@ -81,3 +81,13 @@ def test_bad_programs_refused_in_one_line(tables, words):
     with pytest.raises(NotAMechanism) as exc:
         parse_program(tables)
     assert words in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_peak1_is_the_largest_slope():
+    """Law.peak1 bounds |f′| on [0, 1] and is reached (to 1e-9 on a dense grid)."""
+    x = np.linspace(0.0, 1.0, 200001)
+    for name in LAW_NAMES:
+        lw = law(name)
+        f1 = np.abs(lw.derivatives(x)[1])
+        assert f1.max() <= lw.peak1 and f1.max() >= lw.peak1 - 1e-9
+        assert max(abs(lw.fn1(v)[1]) for v in x[::97].tolist()) <= lw.peak1

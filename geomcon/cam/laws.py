@@ -113,6 +113,8 @@ class Law:
         ``fn(x) -> (f, f′, f″)`` on arrays.
     fn1 : callable
         The same on one float, returning floats (the scalar path; the same bits as ``fn``).
+    peak1 : float
+        The largest |f′| on [0, 1] (exact: 1, 2, π/2, 2, 15/8), a bound for a quick test of the speeds.
     """
 
     name: str
@@ -120,6 +122,7 @@ class Law:
     impact: str
     fn: Callable
     fn1: Callable[[float], tuple[float, float, float]]
+    peak1: float = math.inf
 
     def f(self, x: float) -> float:
         """f(x) for one x in [0, 1]."""
@@ -133,11 +136,11 @@ class Law:
 
 
 LAWS: dict[str, Law] = {l.name: l for l in (
-    Law("uniform", "等速运动规律", "rigid", _uniform, _uniform1),
-    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic, _parabolic1),
-    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine, _cosine1),
-    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal, _cycloidal1),
-    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345, _poly345_1),
+    Law("uniform", "等速运动规律", "rigid", _uniform, _uniform1, 1.0),
+    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic, _parabolic1, 2.0),
+    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine, _cosine1, math.pi / 2.0),
+    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal, _cycloidal1, 2.0),
+    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345, _poly345_1, 1.875),
 )}
 LAW_NAMES = tuple(LAWS)
 

@@ -255,6 +255,22 @@ class FlatArmCam(ArmMotion):
         """ρ > 0 everywhere and no backward jump of the contact."""
         return self.rho_min()[0] > 0.0 and not self.backward_jumps()
 
+    def speed_floor(self) -> float:
+        """A lower bound of 1 − εψ′ over the turn from the laws' largest |f′| (|ψ′| ≤ h·max|f′|/Φ on a segment of
+        Φ degrees), a little lower than the bound for roundoff: above the refusal's threshold, the search of
+        :meth:`speed_min` cannot find the speed below it (it only evaluates 1 − εψ′ at some angles).
+
+        >>> from geomcon.cam.program import parse_program
+        >>> prog = parse_program([{"kind": "rise", "angle": 120, "law": "cycloidal"}, {"kind": "dwell", "angle": 60},
+        ...                       {"kind": "return", "angle": 120, "law": "poly345"}, {"kind": "dwell", "angle": 60}])
+        >>> cam = FlatArmCam(a=120.0, r0=40.0, h=15.0, program=prog)
+        >>> round(cam.speed_floor(), 9), cam.speed_floor() <= cam.speed_min()[0]
+        (0.75, True)
+        """
+        peak = max((abs(self.h) / seg.angle * seg.law.peak1 for seg in self.program.segments if seg.kind != "dwell"),
+                   default=0.0)
+        return 1.0 - peak * (1.0 + 1e-9) - 1e-12
+
     def speed_min(self) -> tuple[float, float]:
         """(min of 1 − εψ′, δ in degrees) over the turn: ≤ 0 means the face stops turning relative to the
         cam and the contact runs off to infinity."""

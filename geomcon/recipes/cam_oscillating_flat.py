@@ -58,6 +58,8 @@ def validate_flat(g: Mapping[str, Any]) -> list[str]:
     if psi0 + h >= 90.0:
         raise NotAMechanism(f"ψ0 + h = {psi0:.6g}° + {h:g}° ≥ 90°: the face would turn past the perpendicular to "
                             "A0O and come back towards the cam while the arm rises")
+    if cam.speed_floor() > FLAT_SPEED_MIN:         # the laws' bound clears it: no search can find it lower
+        return []
     w, at = cam.speed_min()
     if w <= FLAT_SPEED_MIN:
         raise NotAMechanism(f"1 − εψ′ = {w:.6g} at δ = {at:.6g}°: the arm swings as fast as the face turns with the "
@@ -385,10 +387,12 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     inv = -float(cam.sigma)
     back = ("clockwise", "顺时针") if cam.sigma > 0 else ("counter-clockwise", "逆时针")
     sc = Scene("Disc cam with an oscillating flat-faced follower: inversion")
+    drawing = sc.drawing                    # the faces of the divisions, the worst positions: drawing only
     O = add_cam_centre(sc)
     A0 = add_pivot(sc, "A0", Point(0.0, a), (f"Arm pivot A0 with OA0 = a = {a:g}", f"摆杆转轴 A0,OA0 = a = {a:g}"),
                    ground_angle=math.pi / 2)
-    sc.add("OA0", segment, O, A0, role=Role.GIVEN, style="frame")
+    if drawing:
+        sc.add("OA0", segment, O, A0, role=Role.GIVEN, style="frame")
     base = add_base_circle(sc, O, r0, ("profile", "实际廓线"))
     th = sc.add("thales", thales_circle, O, A0, style="construction",
                 caption=("Circle on OA0 as diameter (its points see OA0 under a right angle)",
@@ -422,17 +426,18 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
            unit="mm", visible=False)
     sc.add("face_length", face_length, Ref("face_lo"), Ref("face_hi"), role=Role.MEASUREMENT, unit="mm",
            visible=False)
-    reach = sc.add("face_reach", grown, Ref("face_max"), 1.12, visible=False)
-    sc.add("face0", face_segment, A0, T1, O, f, reach, style="link", role=Role.RESULT,
-           caption=("The flat face in its lowest position, long enough for every contact (face_max)",
-                    "平底的最低位置(长度按最远接触点 face_max 取)"))
-    if f:
-        sc.add("arm0", segment, A0, sc.add("F0", face_foot, A0, T1, O, f, visible=False), style="link")
-    sc.add("kA", circle, O, a, style="construction",
-           caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
-                    f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
+    if drawing:
+        reach = sc.add("face_reach", grown, Ref("face_max"), 1.12, visible=False)
+        sc.add("face0", face_segment, A0, T1, O, f, reach, style="link", role=Role.RESULT,
+               caption=("The flat face in its lowest position, long enough for every contact (face_max)",
+                        "平底的最低位置(长度按最远接触点 face_max 取)"))
+        if f:
+            sc.add("arm0", segment, A0, sc.add("F0", face_foot, A0, T1, O, f, visible=False), style="link")
+        sc.add("kA", circle, O, a, style="construction",
+               caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
+                        f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
     inv_pos = ArmInversion(sc, cam, O, A0, T1)
-    divs = arm_division_angles(g, cam)
+    divs = arm_division_angles(g, cam) if drawing else ()
     R = a
     add_motion_diagram(sc, prog, h, Point(1.25 * R, -0.6 * R), 2.4 * R, 0.4 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
@@ -470,7 +475,8 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
         if f:
             sc.add(f"delta_alpha_max_{part}", worst_place, e, role=Role.MEASUREMENT, unit="deg", visible=False)
             answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
-    _mark_flat(sc, cam, fam, inv_pos, O, f)
+    if drawing:
+        _mark_flat(sc, cam, fam, inv_pos, O, f)
     at = tuple(g.get("at") or ())
     if at:                          # every position of `at` in one step (1000 angles: one evaluation)
         pos = sc.add("at_positions", arm_at, A0, T1, cam, at, visible=False)
