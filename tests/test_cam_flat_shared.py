@@ -1,6 +1,8 @@
 """The flat faces' searches sharing their samples: the contact's extremes over the turn and a segment, ρmin of
 the envelope and the places the searches value, against the same searches with nothing shared (every sample
-and every candidate computed afresh by the array forms, as before the sharing): the same bits."""
+and every candidate computed afresh by the array forms, as before the sharing): the same bits. The shortcuts
+of the checks that refuse a cam (the laws' bound of the arm's speed, the first look for backward jumps on
+floats) against the full searches."""
 from __future__ import annotations
 
 import math
@@ -10,9 +12,10 @@ import pytest
 
 from geomcon.cam.laws import LAW_NAMES
 from geomcon.cam.oscillating_flat import FlatArmCam
-from geomcon.cam.profile import (Extremum, LineFamily, TWO_PI, envelope, envelope_rho_min, envelope_terms, maximise,
-                                 sample_grid, sample_grids)
+from geomcon.cam.profile import (Extremum, LineFamily, TWO_PI, backward_jumps, envelope, envelope_rho_min, envelope_terms,
+                                 maximise, sample_grid, sample_grids)
 from geomcon.cam.program import parse_program
+from geomcon.errors import NotAMechanism
 from geomcon.geometry import Point
 from geomcon.recipes import cam_oscillating_flat as osc_flat
 from geomcon.recipes import cam_translating as transl
@@ -116,3 +119,43 @@ def test_envelope_terms_kept_only_for_read_only_samples():
     assert envelope_terms(fam, np.array(d)) is not envelope_terms(fam, np.array(d))
     assert bool(np.all(d == np.concatenate(sample_grids(((0.0, math.pi), (math.pi, TWO_PI)), 64))))
     assert [v.tolist() for v in envelope(fam, d)] == [v.tolist() for v in envelope(_fresh(fam), np.array(d))]
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_speed_floor_bounds_the_searched_speed(seed):
+    """The laws' bound never exceeds what speed_min finds (fast swings included, where both fall below the
+    threshold and the search decides the refusal)."""
+    rng = np.random.default_rng(seed)
+    prog = _program(rng)
+    cam = FlatArmCam(100.0, float(rng.uniform(20, 45)), float(rng.uniform(3, 15)) * (1 + 9 * (seed % 4 == 0)), prog,
+                     str(rng.choice(["ccw", "cw"])), str(rng.choice(["left", "right"])))
+    w, _ = cam.speed_min()
+    assert cam.speed_floor() <= w
+    if cam.speed_floor() > osc_flat.FLAT_SPEED_MIN:
+        assert w > osc_flat.FLAT_SPEED_MIN
+
+
+def test_a_fast_swing_is_still_refused():
+    prog = [{"kind": "rise", "angle": 20, "law": "cycloidal"}, {"kind": "dwell", "angle": 160},
+            {"kind": "return", "angle": 120, "law": "cycloidal"}, {"kind": "dwell", "angle": 60}]
+    given = {"follower": "flat", "a": 120.0, "r0": 50.0, "h": 40.0, "program": prog, "rotation": "ccw", "arm": "left"}
+    for rotation, arm in (("ccw", "left"), ("cw", "left"), ("ccw", "right")):
+        g = given | {"rotation": rotation, "arm": arm}
+        cam = osc_flat.flat_cam_of(g)
+        assert cam.speed_floor() <= osc_flat.FLAT_SPEED_MIN
+        if cam.speed_min()[0] <= osc_flat.FLAT_SPEED_MIN:
+            with pytest.raises(NotAMechanism, match="runs off to infinity"):
+                osc_flat.validate_flat(g)
+        else:
+            assert osc_flat.validate_flat(g) == []
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_backward_jumps_on_floats_equal_the_array_look(seed):
+    """The first look of backward_jumps on the family's scalar form against the family without it (arrays)."""
+    rng = np.random.default_rng(100 + seed)
+    prog = _program(rng)
+    fam = transl._face_family(prog, float(rng.uniform(1, 30)), float(rng.uniform(20, 80)), float(rng.choice([-1.0, 1.0])))
+    assert backward_jumps(fam) == backward_jumps(LineFamily(fam.fn, fam.breaks))
+    fam = osc_flat.flat_family(_cam(rng))
+    assert backward_jumps(fam) == backward_jumps(LineFamily(fam.fn, fam.breaks))

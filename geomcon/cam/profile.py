@@ -1274,18 +1274,34 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
     cuts = [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]
     after = np.array(cuts)
     before = np.nextafter(np.array([b if b > 0.0 else TWO_PI for b in cuts]), 0.0)
-    lam = envelope(fam, np.concatenate([after, before]))[2]
-    la, lb = lam[:len(cuts)], lam[len(cuts):]
-    dphi = fam.eval(after)[1]
-    jumps = [(b, (x1 - x0) * math.copysign(1.0, w)) for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(), dphi.tolist())]
     grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
-    part = np.concatenate([lam, envelope(fam, grid[::90])[2]])   # the breaks and every 90th sample:
-    low = float(np.nanmax(part) - np.nanmin(part)) if not np.isnan(part).all() else math.nan   # a part of the range
-    if all(j >= -JUMP_REL * low for _, j in jumps):
-        return ()                               # no jump counts even against a part of the range: done
+    if fam.fn1 is not None:                     # the first look's few angles on floats (the same bits)
+        ends = [fam.fn1(x) for x in cuts + before.tolist()]
+        la = [envelope1(f6)[2] for f6 in ends[:len(cuts)]]
+        lb = [envelope1(f6)[2] for f6 in ends[len(cuts):]]
+        jumps = [(b, (x1 - x0) * math.copysign(1.0, f6[1])) for b, x0, x1, f6 in zip(cuts, lb, la, ends)]
+        part = [v for v in la + lb + [envelope1(fam.fn1(x))[2] for x in _EVERY_90TH] if v == v]
+        low = max(part) - min(part) if part else math.nan
+        if all(j >= -JUMP_REL * low for _, j in jumps):
+            return ()
+        lam = np.array(la + lb)
+    else:
+        lam = envelope(fam, np.concatenate([after, before]))[2]
+        la, lb = lam[:len(cuts)], lam[len(cuts):]
+        dphi = fam.eval(after)[1]
+        jumps = [(b, (x1 - x0) * math.copysign(1.0, w)) for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(),
+                                                                                dphi.tolist())]
+        part = np.concatenate([lam, envelope(fam, grid[::90])[2]])   # the breaks and every 90th sample:
+        low = float(np.nanmax(part) - np.nanmin(part)) if not np.isnan(part).all() else math.nan   # a part of the range
+        if all(j >= -JUMP_REL * low for _, j in jumps):
+            return ()                               # no jump counts even against a part of the range: done
     lam = np.concatenate([lam, envelope(fam, grid)[2]])
     span = float(np.nanmax(lam) - np.nanmin(lam))
     return tuple(Extremum(float(jump), b) for b, jump in jumps if jump < -JUMP_REL * span)
+
+
+_EVERY_90TH = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)[::90].tolist()
+"""The samples of the turn :func:`backward_jumps` looks at first (every 90th of :data:`_DENSE`)."""
 
 
 def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> float:
