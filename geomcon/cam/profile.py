@@ -335,11 +335,10 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     key = tuple((float(a), float(b)) for a, b in pieces)
     grids = sample_grids(key, dense)
     places: list[float] = []
+    if slope is not None and slope1 is not None:    # one call for all the pieces' samples, on floats after
+        return _maximise_by_slope1(g, key, grids, sample_grid(key, dense), slope, slope1)
     if slope is not None:
-        if slope1 is not None:                      # one call for all the pieces' samples
-            slopes = _split(np.asarray(slope(sample_grid(key, dense)), dtype=float), grids)
-        else:
-            slopes = [np.asarray(slope(d), dtype=float) for d in grids]
+        slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
         lo, hi, flo, fhi, floors = [], [], [], [], []
         for (a, b), d, sl in zip(pieces, grids, slopes):
@@ -356,10 +355,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
             flo += sl[i].tolist()
             fhi += sl[i + 1].tolist()
             floors += [FLOOR_REL * (b - a)] * len(i)
-        if slope1 is not None:
-            places += [illinois1(slope1, *bracket) for bracket in zip(lo, hi, flo, fhi, floors)]
-        else:
-            places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
+        places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
         vals = np.asarray(g(np.asarray(places)), dtype=float)
         return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
     lo, hi, cands = [], [], []
@@ -394,6 +390,73 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         x, v = _golden_all(g, np.array(lo), np.array(hi), xtol)
         cands += [Extremum(float(a), float(b)) for a, b in zip(v, x)]
     return best_of(cands)
+
+
+def _maximise_by_slope1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tuple[float, float], ...],
+                        grids: Sequence[np.ndarray], grid: np.ndarray, slope: Callable[[np.ndarray], np.ndarray],
+                        slope1: Callable[[float], float]) -> Extremum:
+    """:func:`maximise` with a slope and its scalar form: the candidates of every piece found on the samples of
+    all of them at once (``grid``, the pieces' ``grids`` concatenated), in the order of the loop over the
+    pieces (each piece's ends, then the samples where a slope that is roundoff changes sign), then the roots
+    refined on floats (:func:`illinois1`), valued by one call of ``g`` and compared as :func:`best_of` does.
+
+    >>> pcs = ((0.0, 2.0), (2.0, TWO_PI))
+    >>> args = (lambda d: np.sin(d) * np.exp(-d), pcs)
+    >>> kw = dict(slope=lambda d: np.cos(d) - np.sin(d), slope1=lambda d: math.cos(d) - math.sin(d))
+    >>> m = maximise(*args, **kw)
+    >>> m == _maximise_by_slope1(args[0], pcs, sample_grids(pcs, _DENSE), sample_grid(pcs, _DENSE), **kw)
+    True
+    """
+    sl = np.asarray(slope(grid), dtype=float)
+    noise = SLOPE_NOISE * max(0.0, float(np.nanmax(np.abs(sl), initial=0.0)))
+    sizes = [len(d) for d in grids]
+    last = np.cumsum(sizes) - 1                                # each piece's last sample
+    first = last - np.array(sizes) + 1
+    down = (sl[:-1] > 0.0) & (sl[1:] <= 0.0)                   # + to − between neighbouring samples
+    down[last[:-1]] = False                                    # (not across the end of a piece)
+    i = np.nonzero(down)[0]
+    flat = np.maximum(np.abs(sl[i]), np.abs(sl[i + 1])) <= noise   # roundoff (a dwell): the sample stands
+    stand, root = i[flat], i[~flat]
+    cut_stand = np.searchsorted(stand, first).tolist() + [stand.size]
+    stands = grid[stand].tolist()
+    heads = sl[first].tolist()
+    tails = sl[last].tolist()
+    starts, ends = grid[first].tolist(), grid[last].tolist()
+    places: list[float] = []
+    for k in range(len(grids)):
+        if not heads[k] > noise:
+            places.append(starts[k])
+        if not tails[k] < -noise:
+            places.append(ends[k])
+        places += stands[cut_stand[k]:cut_stand[k + 1]]
+    if root.size:
+        piece = np.searchsorted(last, root)                    # the piece of each root's bracket
+        widths = [FLOOR_REL * (b - a) for a, b in pieces]
+        for lo, hi, flo, fhi, k in zip(grid[root].tolist(), grid[root + 1].tolist(), sl[root].tolist(),
+                                       sl[root + 1].tolist(), piece.tolist()):
+            places.append(illinois1(slope1, lo, hi, flo, fhi, widths[k]))
+    vals = np.asarray(g(np.asarray(places)), dtype=float).tolist()
+    return _best_of_pairs(vals, places)
+
+
+def _best_of_pairs(values: list[float], places: list[float]) -> Extremum:
+    """:func:`best_of` of the candidates (values[i], places[i]) without making them first."""
+    top = -math.inf
+    finite = False
+    for v in values:
+        if v == v:
+            finite = True
+            if v > top:
+                top = v
+    if not finite:
+        return Extremum(values[0], places[0])
+    lim = top - TIE_REL * abs(top)
+    best_v, best_x = math.nan, math.inf
+    found = False
+    for v, x in zip(values, places):
+        if v >= lim and (not found or x < best_x):
+            best_v, best_x, found = v, x, True
+    return Extremum(best_v, best_x)
 
 
 def parabola_gain(d: np.ndarray, v: np.ndarray, i: int) -> float:
