@@ -159,3 +159,43 @@ def test_backward_jumps_on_floats_equal_the_array_look(seed):
     assert backward_jumps(fam) == backward_jumps(LineFamily(fam.fn, fam.breaks))
     fam = osc_flat.flat_family(_cam(rng))
     assert backward_jumps(fam) == backward_jumps(LineFamily(fam.fn, fam.breaks))
+
+
+# ------------------------------------------------------------------------------------------- `at` on floats
+@pytest.mark.parametrize("seed", range(8))
+def test_positions_at_a_few_angles_on_floats_equal_the_arrays(seed):
+    """arm_positions, face_pressures_at and face_places_at for a few angles (one by one on floats) against the
+    same angles among many (the array forms): the same bits."""
+    from geomcon.cam.oscillating import OscillatingCam
+    from geomcon.recipes.cam_common import SCALAR_AT, arm_at, arm_positions
+    rng = np.random.default_rng(200 + seed)
+    flat = _cam(rng)
+    roller = OscillatingCam(120.0, 100.0, 50.0, float(rng.uniform(5, 20)), flat.program, flat.rotation, flat.arm)
+    few = [float(x) for x in np.round(rng.uniform(0.0, 360.0, 5), 3)] + [0.0, 360.0, flat.program.rise.end]
+    many = few + [float(x) for x in rng.uniform(-30.0, 390.0, SCALAR_AT + 3)]
+    for cam, B0 in ((flat, Point(-20.0, 60.0)), (roller, Point(-40.0, 30.0))):
+        A0 = Point(0.0, cam.a)
+        small, big = arm_positions(A0, B0, cam, tuple(few)), arm_positions(A0, B0, cam, tuple(many))
+        for key in small:
+            assert small[key].tolist() == big[key][:len(few)].tolist(), key
+    fam = osc_flat.flat_family(flat)
+    A0, inv, tau = Point(0.0, flat.a), -float(flat.sigma), flat.tau
+    small = osc_flat.face_pressures_at(fam, arm_at(A0, Point(-20.0, 60.0), flat, tuple(few)))
+    big = osc_flat.face_pressures_at(fam, arm_at(A0, Point(-20.0, 60.0), flat, tuple(many)))
+    assert small == big[:len(few)]
+    assert osc_flat.face_places_at(fam, A0, inv, tau, tuple(few)) == \
+        osc_flat.face_places_at(fam, A0, inv, tau, tuple(many))[:len(few)]
+
+
+def test_atan2_1_is_numpys_arctan2():
+    from geomcon.cam.profile import atan2_1
+    rng = np.random.default_rng(9)
+    y = np.concatenate([rng.normal(size=3000) * 10.0 ** rng.uniform(-300, 300, 3000),
+                        [0.0, -0.0, 0.0, -0.0, np.inf, -np.inf, np.inf, 1.0, np.nan, 1.0]])
+    x = np.concatenate([rng.normal(size=3000) * 10.0 ** rng.uniform(-300, 300, 3000),
+                        [0.0, 0.0, -0.0, -0.0, np.inf, np.inf, -1.0, -np.inf, 1.0, np.nan]])
+    want = np.arctan2(y, x)
+    got = np.array([atan2_1(a, b) for a, b in zip(y.tolist(), x.tolist())])
+    assert np.array_equal(want, got, equal_nan=True) and np.array_equal(np.signbit(want), np.signbit(got))
+    assert [math.degrees(v) for v in got[:50].tolist()] == np.degrees(got[:50]).tolist()
+    assert [math.radians(v) for v in y[:50].tolist()] == np.radians(y[:50]).tolist()

@@ -1245,9 +1245,7 @@ def pow1(x: float, y: float) -> float:
     >>> pow1(1.1, 3.0) == float((np.array([1.1]) ** 3.0)[0]), pow1(1e200, 3.0), math.isnan(pow1(-2.0, 1.5))
     (True, inf, True)
     """
-    if _POW_IS_LIBM is None:
-        _decide_power()
-    if _POW_IS_LIBM and (y == 3.0 or y == 1.5):    # (numpy squares, roots and inverts for 2, 0.5 and −1)
+    if (y == 3.0 or y == 1.5) and numpy_is_libm("power"):    # (numpy squares, roots and inverts for 2, 0.5, −1)
         try:
             return math.pow(x, y)
         except (OverflowError, ValueError):
@@ -1258,27 +1256,54 @@ def pow1(x: float, y: float) -> float:
         return float(np.power(one, y)[0])
 
 
-_POW_IS_LIBM: bool | None = None
-"""Whether numpy's float64 power loop is the C library's pow for the exponents 3 and 1.5 (decided on the first
-:func:`pow1`)."""
+def atan2_1(y: float, x: float) -> float:
+    """``np.arctan2`` of one pair of floats: :func:`math.atan2` where numpy's float64 loop is the C library's
+    atan2 (:func:`numpy_is_libm`), else numpy's on one-element arrays.
+
+    >>> atan2_1(1.0, -1.0) == float(np.arctan2(np.array([1.0]), np.array([-1.0]))[0])
+    True
+    """
+    if numpy_is_libm("arctan2"):
+        return math.atan2(y, x)
+    return float(np.arctan2(np.array([y]), np.array([x]))[0])
 
 
-def _decide_power() -> None:
-    """Decide :data:`_POW_IS_LIBM` from numpy's report of the loop it dispatches for float64 power (the
-    baseline loop calls the C library's pow), confirmed on a few hundred values (else numpy is called)."""
-    global _POW_IS_LIBM
+_LIBM: dict[str, bool] = {}
+"""Whether numpy's float64 loop of a ufunc is the C library's function (decided once per ufunc)."""
+
+
+def numpy_is_libm(name: str) -> bool:
+    """Whether numpy's float64 loop of the ufunc ``name`` ("power" for the exponents 3 and 1.5, "arctan2") is
+    the C library's function, which :mod:`math` calls: numpy reports it dispatches its baseline loop
+    (``numpy.lib.introspect``; a SIMD loop of its own, such as SVML on AVX-512, rounds differently), and a few
+    hundred values agree. Decided once.
+
+    >>> numpy_is_libm("power") in (True, False)
+    True
+    """
+    known = _LIBM.get(name)
+    if known is not None:
+        return known
     ok = False
     try:
         from numpy.lib.introspect import opt_func_info
-        info = opt_func_info(func_name="^power$", signature="float64")["power"]
-        ok = all(str(v.get("current", "")).startswith("baseline") for v in info.values())
+        info = opt_func_info(func_name=f"^{name}$", signature="float64")[name]
+        ok = bool(info) and all(str(v.get("current", "")).startswith("baseline") for v in info.values())
     except Exception:                               # an older numpy without the report: numpy's own
         ok = False
     if ok:
         x = np.random.default_rng(0).uniform(1e-3, 1e3, 256)
-        for v, y in ((x, 1.5), (x, 3.0), (-x, 3.0)):
-            ok = ok and all(math.pow(a, y) == b for a, b in zip(v.tolist(), (v ** y).tolist()))
-    _POW_IS_LIBM = ok
+        if name == "power":
+            for v, y in ((x, 1.5), (x, 3.0), (-x, 3.0)):
+                ok = ok and all(math.pow(a, y) == b for a, b in zip(v.tolist(), (v ** y).tolist()))
+        elif name == "arctan2":
+            u = x * np.resize([1.0, -1.0, -1.0, 1.0], 256)
+            v = x[::-1] * np.resize([1.0, 1.0, -1.0, -1.0], 256)
+            ok = all(math.atan2(a, b) == c for a, b, c in zip(u.tolist(), v.tolist(), np.arctan2(u, v).tolist()))
+        else:
+            ok = False
+    _LIBM[name] = ok
+    return ok
 
 
 def envelope_rho_min(fam: LineFamily) -> Extremum:
@@ -1386,7 +1411,7 @@ def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> f
 __all__ = ["PitchCurve", "LineFamily", "Profile", "Extremum", "Corner", "inverted", "curvature", "maximise", "contact_slope",
            "rho_min", "rho_min_concave", "pressure_angle", "pressure_angle_slope", "frame_pressure_angle_slope",
            "inverted_relative", "turn_of", "inverted1", "inverted_relative1", "curvature1", "frame_pressure_angle_slope1",
-           "illinois1", "brent_max1", "sign1", "sample_grids", "sample_grid", "envelope_terms", "EnvelopeTerms", "envelope1", "pow1", "div1", "corners", "sample_count",
+           "illinois1", "brent_max1", "sign1", "sample_grids", "sample_grid", "envelope_terms", "EnvelopeTerms", "envelope1", "pow1", "atan2_1", "numpy_is_libm", "div1", "corners", "sample_count",
            "roller_profile", "flat_profile", "envelope", "envelope_rho_min", "backward_jumps", "trim_loops", "validate_roller",
            "chord_error", "best_of", "curve_tolerance", "TOLERANCE", "STRICT_TOLERANCE", "TOLERANCE_REL",
            "STRICT_TOLERANCE_REL", "MAX_SAMPLES"]

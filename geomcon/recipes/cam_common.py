@@ -26,7 +26,7 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from ..cam.oscillating import ArmMotion, levels, segment_motion
-from ..cam.profile import (Extremum, LineFamily, PitchCurve, Profile, STRICT_TOLERANCE_REL, TOLERANCE_REL,
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, Profile, STRICT_TOLERANCE_REL, TOLERANCE_REL, numpy_is_libm,
                            backward_jumps)
 from ..cam.program import Program, parse_program
 from ..errors import NotAMechanism, ProblemError
@@ -382,6 +382,9 @@ def arm_positions(A0: Point, B0: Point, cam: ArmMotion, at: tuple[float, ...]) -
     >>> round(float(pos["psi"][0]), 9), [round(float(pos[k][0]), 9) for k in ("Ax", "Ay")]
     (10.0, [100.0, 0.0])
     """
+    if len(at) <= SCALAR_AT and numpy_is_libm("arctan2"):   # a few angles: one by one on floats
+        rows = [_arm_position1(A0, B0, cam, float(x)) for x in at]
+        return {k: np.array([r[i] for r in rows], dtype=float) for i, k in enumerate(_ARM_KEYS)}
     d = np.asarray(at, dtype=float)
     turn = -float(cam.sigma) * np.radians(d)
     ax, ay = _turn(np.full_like(d, A0.x), np.full_like(d, A0.y), 0.0, 0.0, turn)
@@ -391,6 +394,32 @@ def arm_positions(A0: Point, B0: Point, cam: ArmMotion, at: tuple[float, ...]) -
     ux, uy, vx, vy = cx - ax, cy - ay, bx - ax, by - ay
     psi = np.degrees(np.arctan2(np.abs(ux * vy - uy * vx), ux * vx + uy * vy))
     return {"Ax": ax, "Ay": ay, "Cx": cx, "Cy": cy, "Bx": bx, "By": by, "psi": psi, "d1": m.d1}
+
+
+SCALAR_AT = 16
+"""Up to this many cam angles of ``at``, the positions are computed one by one on floats (a numpy call on a
+few numbers costs more than the arithmetic)."""
+_ARM_KEYS = ("Ax", "Ay", "Cx", "Cy", "Bx", "By", "psi", "d1")
+
+
+def _turn1(x: float, y: float, cx: float, cy: float, ang: float) -> tuple[float, float]:
+    """:func:`_turn` of one point, on floats (the same operations)."""
+    c, s = math.cos(ang), math.sin(ang)
+    vx, vy = x - cx, y - cy
+    return cx + c * vx - s * vy, cy + s * vx + c * vy
+
+
+def _arm_position1(A0: Point, B0: Point, cam: ArmMotion, d: float) -> tuple[float, ...]:
+    """One position of :func:`arm_positions` on floats, by its operations in their order (the same bits where
+    numpy's arctan2 is the C library's), as (Ax, Ay, Cx, Cy, Bx, By, ψ, ψ′)."""
+    turn = -float(cam.sigma) * math.radians(d)
+    ax, ay = _turn1(A0.x, A0.y, 0.0, 0.0, turn)
+    cx, cy = _turn1(B0.x, B0.y, 0.0, 0.0, turn)
+    s, v, _ = cam.program.motion1(cam.h, d)
+    bx, by = _turn1(cx, cy, ax, ay, cam.tau * math.radians(s))
+    ux, uy, vx, vy = cx - ax, cy - ay, bx - ax, by - ay
+    psi = math.degrees(math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy))
+    return ax, ay, cx, cy, bx, by, psi, math.radians(v)
 
 
 def arm_pressures(pos: dict[str, np.ndarray], eps: int) -> np.ndarray:

@@ -14,13 +14,13 @@ import numpy as np
 
 from ..cam.oscillating_flat import END_TIE, FlatArmCam
 from ..cam.profile import (Extremum, LineFamily, envelope, envelope1, envelope_rho_min, envelope_terms, flat_profile,
-                           maximise)
+                           maximise, numpy_is_libm)
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, line_through,
                         segment, thales_circle)
 from ..scene import Ref, Role, Scene
 from .base import Construction
-from .cam_common import (ArmInversion, add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps,
+from .cam_common import (SCALAR_AT, ArmInversion, add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps,
                          arm_at, arm_division_angles, arm_velocity, collect, column, extremum_deg, extremum_value, flat_convex, negate,
                          pick, pressure_mark, profile_tolerance, program_of, speed_ratio, velocity_segment)
 from .common import add_angle_mark, add_pivot, angle_deg
@@ -490,6 +490,9 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
 def face_pressures_at(fam: LineFamily, pos: dict) -> tuple[float, ...]:
     """:func:`face_pressure_deg` at every position of :func:`~.cam_common.arm_at`: the contact K on the
     envelope, the face normal, K's velocity ⊥ A0′K."""
+    if fam.fn1 is not None and len(pos["delta"]) <= SCALAR_AT and numpy_is_libm("arctan2"):
+        return tuple(_face_pressure1(fam, d, ax, ay)
+                     for d, ax, ay in zip(pos["delta"].tolist(), pos["Ax"].tolist(), pos["Ay"].tolist()))
     d = np.radians(pos["delta"])
     kx, ky = envelope(fam, d)[:2]
     beta = fam.eval(d)[0]
@@ -498,8 +501,19 @@ def face_pressures_at(fam: LineFamily, pos: dict) -> tuple[float, ...]:
     return tuple(float(v) for v in np.degrees(np.arctan2(np.abs(nx * vy - ny * vx), np.abs(nx * vx + ny * vy))))
 
 
+def _face_pressure1(fam: LineFamily, delta: float, ax: float, ay: float) -> float:
+    """:func:`face_pressures_at` at one position (cam angle in degrees, A0′), on floats: the same operations."""
+    f6 = fam.fn1(math.radians(delta))
+    kx, ky = envelope1(f6)[:2]
+    nx, ny = math.cos(f6[0]), math.sin(f6[0])
+    vx, vy = -(ky - ay), kx - ax
+    return math.degrees(math.atan2(abs(nx * vy - ny * vx), abs(nx * vx + ny * vy)))
+
+
 def face_places_at(fam: LineFamily, A0: Point, inv: float, tau: int, at: tuple[float, ...]) -> tuple[float, ...]:
-    """:func:`face_place` at the cam angles ``at`` (deg)."""
+    """:func:`face_place` at the cam angles ``at`` (deg); a few of them one by one on floats (the same bits)."""
+    if fam.fn1 is not None and len(at) <= SCALAR_AT:
+        return tuple(face_place1(fam, A0, inv, tau, math.radians(float(x))) for x in at)
     return tuple(float(v) for v in face_place(fam, A0, inv, tau, np.radians(np.asarray(at, dtype=float))))
 
 
