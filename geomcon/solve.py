@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
-from typing import Any, Callable, TypeVar
+from typing import Any
 
 from .check import PUBLISHED_WARN_REL, audit_row, check_row, error_text, rounded, scale_for
 from .condition import KAPPA_REFUSE, STEP, derivative, sensitivities, solution_count_stable
@@ -28,9 +28,8 @@ from .errors import NotAMechanism, ProblemError
 from .tolerance import CHECK_REL
 from .problems import Problem
 from .recipes import Construction, Recipe, get_recipe
-from .scene import LeanScenes, PlanMiss
-
-T = TypeVar("T")
+from .plan import planned
+from .taped import construct_taped, is_taped
 
 
 def _value(unit: str, v: Any) -> Any:
@@ -94,26 +93,6 @@ def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     return [(name, a, b)]
 
 
-def planned(plan: str, fn: Callable[..., T], *args: Any) -> T:
-    """``fn(*args)`` with the scenes it builds lean and following the evaluation plan ``plan`` (a recipe's
-    name); when a scene needs a step the plan left out, ``fn`` runs again with scenes that teach the plan.
-
-    Examples
-    --------
-    >>> from geomcon.recipes import get_recipe
-    >>> r = get_recipe("guide_bar.extremes")
-    >>> c = planned(r.name, r.construct, {"AB": 145.0, "AC": 290.0})
-    >>> c.scene.lean, round(c.scene.value("theta"), 9)
-    (True, 60.0)
-    """
-    try:
-        with LeanScenes(plan):
-            return fn(*args)
-    except PlanMiss:
-        with LeanScenes(plan, learn=True):
-            return fn(*args)
-
-
 class Solution:
     """The solved problem; every property computes only what it needs, once."""
 
@@ -124,6 +103,7 @@ class Solution:
         self.scene = construction.scene
         self._validation = list(warnings)
         self._built = list(construction.warnings)
+        self._taped = is_taped(self.scene)      # replayed: its refusal text holds the recording's numbers
 
         given = problem.given
         self.scene.rebuild_with(lambda: recipe.construct(given).scene)   # a skipped step completes the scene
@@ -171,7 +151,10 @@ class Solution:
         if self.recipe.order is not None:
             out.sort(key=self.recipe.order)
         if not out:
-            raise NotAMechanism(self.construction.no_solution or "no candidate of the construction is a valid mechanism")
+            why = self.construction.no_solution
+            if self._taped:
+                why = planned(self.recipe.name, self.recipe.construct, self.problem.given).no_solution
+            raise NotAMechanism(why or "no candidate of the construction is a valid mechanism")
         for sol in out:
             for k, v in sol.items():
                 if type(v) is float and v - v == 0.0:      # finite: the common case, at once
@@ -497,4 +480,4 @@ def solve(problem: Problem) -> Solution:
     """
     recipe = get_recipe(problem.recipe)
     warnings = planned(recipe.name, recipe.validate, problem.given) if recipe.validate else []
-    return Solution(problem, recipe, planned(recipe.name, recipe.construct, problem.given), warnings)
+    return Solution(problem, recipe, construct_taped(recipe, problem.given), warnings)

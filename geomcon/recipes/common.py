@@ -69,9 +69,14 @@ def total(a: float, b: float) -> float:
     return a + b
 
 
-def add_pivot(sc: Scene, key: str, at: Point, caption: tuple[str, str], *, ground_angle: float = -math.pi / 2) -> Ref:
-    """A fixed pivot: the given point plus its hatched ground symbol."""
-    ref = sc.given(key, at, caption=caption, style="pivot")
+def add_pivot(sc: Scene, key: str, at: Point | tuple[Any, Any], caption: tuple[str, str], *,
+              ground_angle: float = -math.pi / 2) -> Ref:
+    """A fixed pivot: the given point (a Point, or coordinates placed by the step: :meth:`Scene.given_at`)
+    plus its hatched ground symbol."""
+    if type(at) is tuple:
+        ref = sc.given_at(key, at[0], at[1], caption=caption, style="pivot")
+    else:
+        ref = sc.given(key, at, caption=caption, style="pivot")
     if sc.drawing:
         sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
     return ref

@@ -88,7 +88,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     ground = math.pi / 2 if below else -math.pi / 2
     sc = Scene("Crank-rocker: extreme positions")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"), ground_angle=ground)
-    D = add_pivot(sc, "D", Point(AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
+    D = add_pivot(sc, "D", (AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
                                               f"在机架线上取 D,使 AD = {AD:g}"), ground_angle=ground)
     side = Below(A, D) if below else Above(A, D)
     drawing = sc.drawing                     # the links, ghost positions and marks only a drawing needs

@@ -30,6 +30,7 @@ from ..errors import NotAMechanism
 from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherThan, Point, RightOf, Rightmost,
                         circle, circle_circle, line_circle, line_line, line_through, midpoint, point_along, segment)
 from ..scene import Ref, Role, Scene, marks
+from ..scene.tape import lifted
 from ..tolerance import tol
 from . import crank_rocker_links
 from .base import Construction, Quantity, Recipe
@@ -123,8 +124,22 @@ def extreme_positions(g: Mapping[str, Any]) -> tuple[Point, Point]:
         a1, a2 = 90.0 + g["psi"] / 2, 90.0 - g["psi"] / 2
     else:
         a1, a2 = g["phi1"], g["phi2"]
-    return (Point(CD * math.cos(math.radians(a1)), CD * math.sin(math.radians(a1))),
-            Point(CD * math.cos(math.radians(a2)), CD * math.sin(math.radians(a2))))
+    return lifted(_rocker_end, CD, a1), lifted(_rocker_end, CD, a2)
+
+
+def _rocker_end(CD: float, a: float) -> Point:
+    """C at ``a`` degrees about D at the origin: CD·(cos a, sin a)."""
+    return Point(CD * math.cos(math.radians(a)), CD * math.sin(math.radians(a)))
+
+
+def _near_side(c1: Point, c2: Point) -> int:
+    """+1 when D (the origin) lies to the left of C1→C2, else −1."""
+    return 1 if (c2 - c1).cross(Point(0, 0) - c1) > 0 else -1
+
+
+def _frame_c1(AD: float, CD: float, phi: float) -> Point:
+    """C1 of the frame form: D at (AD, 0), ∠ADC1 = φ (not 180° − φ: keeps a tiny φ)."""
+    return Point(AD - CD * math.cos(math.radians(phi)), CD * math.sin(math.radians(phi)))
 
 
 # ----------------------------------------------------------------------------------------- step operations
@@ -271,7 +286,7 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
         add_bar(sc, "DC1", D, C1, role=Role.GIVEN)
         add_bar(sc, "DC2", D, C2, role=Role.GIVEN)
         sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
-    near_side = 1 if (c2 - c1).cross(Point(0, 0) - c1) > 0 else -1
+    near_side = 1 if lifted(_near_side, c1, c2) > 0 else -1
     xaxis = None
     if closing == "frame_line":
         xaxis = sc.add("xaxis", Line, D, Point(1.0, 0.0), role=Role.GIVEN, style="frame",
@@ -357,11 +372,11 @@ def _meet_or_none(l1: Line, l2: Line) -> Point | None:
 def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
     CD, AD, phi = g["CD"], g["AD"], g["phi"]
     A = sc.given("A_0", Point(0.0, 0.0), style="pivot", label="A", caption=("Fixed pivot A", "固定铰链 A"))
-    D = sc.given("D", Point(AD, 0.0), style="pivot", caption=(f"Fixed pivot D with AD = {AD:g}", f"取 AD = {AD:g} 得固定铰链 D"))
+    D = sc.given_at("D", AD, 0.0, style="pivot", caption=(f"Fixed pivot D with AD = {AD:g}", f"取 AD = {AD:g} 得固定铰链 D"))
     drawing = sc.drawing                     # the frame, the rocker's bar and the join only a drawing needs
     if drawing:
         sc.add("AD_frame", segment, A, D, role=Role.GIVEN, style="frame", caption=("The frame AD", "机架 AD"))
-    c = Point(AD - CD * math.cos(math.radians(phi)), CD * math.sin(math.radians(phi)))   # not 180° − φ: keeps a tiny φ
+    c = lifted(_frame_c1, AD, CD, phi)
     C1 = sc.given("C1", c, style="joint", caption=(f"The given extreme position DC1 at ∠ADC1 = {phi:g}°",
                                                    f"作已知极限位置 DC1,∠ADC1 = {phi:g}°"))
     if drawing:

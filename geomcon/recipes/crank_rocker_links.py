@@ -45,7 +45,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     drawing = sc.drawing                     # the joins, right-angle mark, links and marks only a drawing needs
     if drawing:
         sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
-    C2 = sc.given("C2", Point(AB + BC, 0.0), style="joint", caption=(
+    C2 = sc.given_at("C2", AB + BC, 0.0, style="joint", caption=(
         f"Extended extreme position: AC2 = AB + BC = {AB + BC:g}", f"拉直共线位置:AC2 = AB + BC = {AB + BC:g}"))
     if drawing:
         sc.add("AC2s", segment, A, C2, style="construction")

@@ -14,6 +14,7 @@ from ..analytic.linkages import crank_slider_extremes
 from ..errors import NotAMechanism
 from ..geometry import Line, Point, ToRightOf, circle, line_circle, perpendicular, segment
 from ..scene import Ref, Role, Scene, marks
+from ..scene.tape import lifted
 from ..tolerance import is_zero
 from .base import Construction, Quantity, Recipe
 from .common import (add_angle_mark, add_bar, add_collinear_extremes, add_pivot, add_theta_and_K, along_line,
@@ -54,17 +55,22 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     return crank_condition(g["AB"], g["BC"], g["e"])
 
 
+def _gap(AB: float, BC: float, e: float) -> float:
+    """BC − AB − e, correctly rounded (the margin of the largest pressure angle)."""
+    return math.fsum((BC, -AB, -e))
+
+
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build the extreme-position construction of the offset crank-slider."""
     AB, BC, e = g["AB"], g["BC"], g["e"]
     sc = Scene("Offset crank-slider: extreme positions")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
-    F = sc.given("F", Point(0.0, -e), style="point", label="F" if e > 0 else None,
-                 caption=(f"F below A with AF = e = {e:g}", f"在 A 下方取 AF = e = {e:g}"))
+    F = sc.given_at("F", 0.0, -e, style="point",
+                    caption=(f"F below A with AF = e = {e:g}", f"在 A 下方取 AF = e = {e:g}"))
     gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given",
                 caption=("The slider's guide through F, perpendicular to AF", "过 F 作导路(垂直于 AF)"))
     drawing = sc.drawing                     # the links, sliders, marks and dimensions only a drawing needs
-    if e > 0 and drawing:
+    if drawing and e > 0:
         # dimension on the left of F→A, away from the crank and the slider
         sc.add("dim_e", marks.dimension, F, A, "e", e, 0.25 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",
                caption=("Dimension the offset e", "标注偏距 e"))
@@ -81,7 +87,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     H = sc.add("H", length, C1, C2, role=Role.MEASUREMENT, unit="mm",
                caption=("Measure the stroke H = C1C2", "量得滑块行程 H = C1C2"))
     th = add_theta_and_K(sc, A, C1, C2)
-    add_pressure_angles(sc, A, B1, C1, gl, AB, BC, math.fsum((BC, -AB, -e)))
+    add_pressure_angles(sc, A, B1, C1, gl, AB, BC, lifted(_gap, AB, BC, e))
     if drawing:
         add_angle_mark(sc, "mark_theta", A, C1, C2, "θ", th)
         sc.add("dim_H", marks.dimension, C1, C2, "H", H, -0.3 * (BC + AB) / 2, role=Role.ANNOTATION, style="dim",

@@ -148,7 +148,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     which = _closing(g)
     sc = Scene("Offset crank-slider designed by K")
     C1 = sc.given("C1", Point(0.0, 0.0), style="joint", caption=("C1, one end of the stroke", "取行程端点 C1"))
-    C2 = sc.given("C2", Point(H, 0.0), style="joint", caption=(f"C2 with C1C2 = H = {H:g} on the guide",
+    C2 = sc.given_at("C2", H, 0.0, style="joint", caption=(f"C2 with C1C2 = H = {H:g} on the guide",
                                                                f"在导路上截取 C1C2 = H = {H:g} 得 C2"))
     gl = sc.add("guide", Line, C1, Point(1.0, 0.0), role=Role.GIVEN, style="given",
                 caption=("The slider's guide through C1 and C2", "过 C1、C2 作导路"))

@@ -471,7 +471,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     AD, AB, phi, psi = g["AD"], g["AB"], g["phi"], g["psi"]
     sc = Scene("Four-bar function generator: inversion about D")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
-    D = add_pivot(sc, "D", Point(AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
+    D = add_pivot(sc, "D", (AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}",
                                               f"在机架线上取 D,使 AD = {AD:g}"))
     drawing = sc.drawing                     # the given bars, the linkage's positions and the γ ghost only a drawing needs
     if drawing:

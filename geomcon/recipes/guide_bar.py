@@ -40,7 +40,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     AB, AC = g["AB"], g["AC"]
     sc = Scene("Oscillating guide-bar: extreme positions")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Crank pivot A at the origin", "取曲柄转动中心 A 为原点"))
-    C = add_pivot(sc, "C", Point(0.0, -AC), (f"Guide-bar pivot C below A, AC = {AC:g}", f"在 A 下方取 C,使 AC = {AC:g}"))
+    C = add_pivot(sc, "C", (0.0, -AC), (f"Guide-bar pivot C below A, AC = {AC:g}", f"在 A 下方取 C,使 AC = {AC:g}"))
     drawing = sc.drawing                     # the links, blocks, marks only a drawing needs
     if drawing:
         sc.add("AC", segment, A, C, role=Role.GIVEN, style="frame", caption=("Draw the frame AC", "作机架 AC"))

@@ -99,7 +99,7 @@ def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref
                     caption=("The centre line through A (vertical)", "过 A 作竖直中心线"))
     if _closing(g) == "AC":
         AC = g["AC"]
-        C = add_pivot(sc, "C", Point(0.0, -AC), (f"Guide-bar pivot C on the centre line, AC = {AC:g}",
+        C = add_pivot(sc, "C", (0.0, -AC), (f"Guide-bar pivot C on the centre line, AC = {AC:g}",
                                                  f"在中心线上取 AC = {AC:g} 得导杆摆动中心 C"))
         rays = []
         for i, sign in ((1, 1.0), (2, -1.0)):
@@ -166,7 +166,7 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     sc = Scene("Shaper six-bar designed by K")
     A, C, B1, B2, th = _guide_bar_part(sc, g)
     centre = Ref("centre")
-    off = sc.add("off", Line, sc.given("Hh", Point(-H / 2, 0.0), visible=False), Point(0.0, 1.0), caption=(
+    off = sc.add("off", Line, sc.given_at("Hh", -H / 2, 0.0, visible=False), Point(0.0, 1.0), caption=(
         f"The line parallel to the centre line at H/2 = {H / 2:g}", f"作与中心线相距 H/2 = {H / 2:g} 的平行线"))
     ray1 = sc.add("cb1", line_through, C, B1, visible=False)
     D1 = sc.add("D1", meet_lines, ray1, off, role=Role.RESULT, style="joint", label="D1",

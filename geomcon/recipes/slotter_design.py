@@ -61,9 +61,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_theta_step(sc, K)
     C = add_pivot(sc, "C", Point(0.0, 0.0), ("Guide-bar pivot C on the slider's path ee", "导杆转动中心 C 位于滑块导路 ee 上"))
     ee = sc.add("ee", Line, C, Point(1.0, 0.0), role=Role.GIVEN, style="given", caption=("The slider's path ee", "滑块导路 ee"))
-    B1 = sc.given("B1", Point(-L / 2, 0.0), style="joint", caption=(f"B1, B2 on ee with B1B2 = {L:g}, C midway",
+    B1 = sc.given_at("B1", -L / 2, 0.0, style="joint", caption=(f"B1, B2 on ee with B1B2 = {L:g}, C midway",
                                                                     f"在 ee 上取 B1B2 = {L:g},C 为中点"))
-    B2 = sc.given("B2", Point(L / 2, 0.0), style="joint")
+    B2 = sc.given_at("B2", L / 2, 0.0, style="joint")
     seen = sc.add("seen", _seen, K, visible=False, unit="deg")
     k = sc.add("kSeen", seeing_circle, B1, B2, seen, 1, style="theta-circle",
                caption=("Circle through B1, B2 seeing B1B2 under 180° − θ from above", "作对 B1B2 张角为 180° − θ 的圆(上方)"))

@@ -136,6 +136,8 @@ _PLANS: dict[tuple[int, tuple[str, ...]], list[str]] = {}
 """Culled, ordered evaluation lists reused across scenes: (the scene's structure signature, the keys asked
 for) → the keys to compute, in order."""
 _CACHE_MAX = 4096
+_TAPE = "§"
+"""The first character of a replayed tape's own steps (:data:`.tape.PREFIX`)."""
 _ANNOTATION = Role.ANNOTATION
 _new_ref = tuple.__new__
 
@@ -166,6 +168,8 @@ class Scene:
         self._learn: set[str] | None = None     # the plan this scene teaches (an unplanned lean scene)
         self._keep: set[str] | None = None      # the plan this scene follows (a planned scene)
         self._rebuild: Callable[[], Scene] | None = None
+        self._stale = False                     # a replayed tape: captions and labels are the recording's
+        self._tape: Any = None
         if mode is not None and mode[0]:
             known = _KEEP.get((mode[0], title))
             if known is None or mode[1]:
@@ -176,6 +180,17 @@ class Scene:
                 self._learn = known
             else:
                 self._keep = known
+
+    @classmethod
+    def replayed(cls, tape: Any, memo: dict[str, Any]) -> Scene:
+        """A lean scene following the plan of ``tape`` (:mod:`.tape`) made of its recorded steps, its memo
+        holding the tape's own steps. Its captions, labels and step objects are the recording's: it completes itself
+        (:meth:`rebuild_with`) before any of them is read."""
+        sc = cls.__new__(cls)
+        sc.title, sc.lean, sc._rec, sc._step, sc._memo = tape.title, True, tape.rec, {}, memo
+        sc._skip, sc._sig, sc._learn, sc._keep, sc._rebuild = tape.skip, tape.sig, None, tape.keep, None
+        sc._stale, sc._tape = True, tape
+        return sc
 
     def unplanned(self) -> bool:
         """True unless this scene follows a plan (it stores every step but, when lean, the annotations)."""
@@ -204,6 +219,11 @@ class Scene:
         self._rec, self._skip, self._sig, self._step = full._rec, full._skip, full._sig, {}
         self._learn = self._learn if self._keep is None else self._keep
         self.lean, self._keep, self._rebuild = False, None, None
+        if self._stale:                      # the tape's own steps are not the recipe's
+            memo = self._memo                # in place: an evaluation under way holds this dict
+            for k in [k for k in memo if k[:1] == _TAPE]:
+                del memo[k]
+            self._stale, self._tape = False, None
 
     # ------------------------------------------------------------------ building
     def add(self, key: str, op: Callable[..., Any], *args: Any, caption: tuple[str, str] = ("", ""),
@@ -272,6 +292,13 @@ class Scene:
                         label=label if label is not None else (key if isinstance(value, Point) else None),
                         visible=visible, unit=unit)
 
+    def given_at(self, key: str, x: Any, y: Any, *, caption: tuple[str, str] = ("", ""), style: str = "given",
+                 label: str | None = None, visible: bool = True) -> Ref:
+        """Add a given point ``(x, y)`` made by the step itself, so that a recipe taped with symbolic givens
+        (:mod:`.tape`) can place it: ``sc.given_at("D", AD, 0.0)`` is ``sc.given("D", Point(AD, 0.0))``."""
+        return self.add(key, Point, x, y, caption=caption, role=Role.GIVEN, style=style,
+                        label=label if label is not None else key, visible=visible)
+
     # ------------------------------------------------------------------ reading
     def __contains__(self, key: str) -> bool:
         if key in self._rec or key in self._skip:
@@ -287,6 +314,8 @@ class Scene:
     def __getitem__(self, key: str) -> Step:
         step = self._step.get(key)
         if step is None:
+            if self._stale:
+                self.complete()
             if key in self._skip or (key not in self._rec and self._rebuild is not None
                                      and (self.lean or self._keep is not None)):
                 self._upgrade(key)
@@ -328,11 +357,15 @@ class Scene:
     def label_of(self, x: Any) -> str:
         """The printed label of a referenced point (its step label, else its key)."""
         key = x.key if isinstance(x, Ref) else str(x)
+        if self._stale:
+            self.complete()
         rec = self._rec.get(key)
         return (rec[8][3] or key) if rec else key
 
     def caption(self, key: str) -> tuple[str, str]:
         """The step's caption with its branch rule appended, in English and Chinese."""
+        if self._stale:
+            self.complete()
         (en, zh), branch = self._rec[key][8][0], self._rec[key][4]
         if branch is not None:
             ben, bzh = branch.describe(self.label_of)
@@ -376,6 +409,15 @@ class Scene:
         """
         keys = tuple(keys)
         memo = self._memo
+        tape = self._tape
+        if tape is not None and len(memo) == len(tape.inputs):      # a fresh replay: one compiled call
+            run = tape.program(keys)
+            if run is not None:
+                try:
+                    run(memo)
+                    return {k: memo[k] for k in keys}
+                except Exception:            # evaluated step by step below, to report it as a step's failure
+                    pass
         plan = _PLANS.get((self._sig, keys))
         if plan is None:
             plan = self.closure(keys)         # may complete the scene: cache under the signature it has now
@@ -437,6 +479,9 @@ class Scene:
         to count them, keeping its values) and ``steps_evaluated`` (computed so far)."""
         if self.lean and self._rebuild is not None:
             self.complete()
+        if self._stale:                      # a replayed tape that cannot complete itself
+            return {"steps_total": sum(k[:1] != _TAPE for k in self._rec) + len(self._skip),
+                    "steps_evaluated": sum(k[:1] != _TAPE for k in self._memo)}
         return {"steps_total": len(self._rec) + len(self._skip), "steps_evaluated": len(self._memo)}
 
 
