@@ -47,10 +47,10 @@ def engine_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
     """AB, BC by geomcon's ``crank_slider.design_by_K`` construction (answers only)."""
     from ..problems import validate_given
     from ..recipes import get_recipe
-    from ..solve import planned
+    from ..taped import construct_taped
 
     r = get_recipe("crank_slider.design_by_K")
-    vals = planned(r.name, r.construct, validate_given(r, {"K": K, "H": H, "e": e})).scene.evaluate(["AB", "BC"])
+    vals = construct_taped(r, validate_given(r, {"K": K, "H": H, "e": e})).scene.evaluate(["AB", "BC"])
     return vals["AB"], vals["BC"]
 
 

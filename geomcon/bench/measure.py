@@ -26,7 +26,8 @@ from typing import Any, Callable, Mapping, TypeVar
 
 from ..problems import problem_from_dict, validate_given
 from ..recipes import get_recipe
-from ..solve import planned, solve
+from ..solve import solve
+from ..taped import construct_taped
 from .sweep import SWEEPS
 
 T = TypeVar("T")
@@ -157,10 +158,10 @@ def _row(case: Case, method: str, n: int | None, seconds: float, peak: int, valu
 
 
 def construct_answers(recipe: str, given: Mapping[str, Any]) -> dict[str, float]:
-    """Build the recipe's scene and evaluate it for its answers (what the construction method times), lean and
-    following the recipe's evaluation plan, as a solve does."""
+    """Build the recipe's scene and evaluate it for its answers (what the construction method times), lean,
+    following the recipe's evaluation plan and replayed from its tape when it has one, as a solve does."""
     r = get_recipe(recipe)
-    con = planned(r.name, r.construct, given)
+    con = construct_taped(r, given)
     vals = con.scene.evaluate(con.answers.values())
     return {name: float(vals[key]) for name, key in con.answers.items()}
 
