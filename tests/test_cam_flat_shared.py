@@ -199,3 +199,42 @@ def test_atan2_1_is_numpys_arctan2():
     assert np.array_equal(want, got, equal_nan=True) and np.array_equal(np.signbit(want), np.signbit(got))
     assert [math.degrees(v) for v in got[:50].tolist()] == np.degrees(got[:50]).tolist()
     assert [math.radians(v) for v in y[:50].tolist()] == np.radians(y[:50]).tolist()
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_laid_off_and_speed_ratio_on_floats_equal_the_motion_arrays(seed):
+    """The pitch point laid off and the speed ratio at one angle (program.motion1, segment_motion1) against
+    the array motion they used before: the same bits, segment ends and out-of-turn angles included."""
+    from geomcon.cam.oscillating import OscillatingCam, levels, segment_motion
+    from geomcon.geometry import rotate
+    from geomcon.recipes.cam_common import laid_off, speed_ratio
+    rng = np.random.default_rng(300 + seed)
+    flat = _cam(rng)
+    cam = OscillatingCam(120.0, 100.0, 50.0, float(rng.uniform(5, 20)), flat.program, flat.rotation, flat.arm)
+    ends = [s.start for s in cam.program.segments] + [360.0]
+    angles = [float(x) for x in rng.uniform(-20.0, 380.0, 40)] + ends
+    C, A = Point(-30.0, 40.0), Point(0.0, 120.0)
+    for arm in (cam, flat):
+        for d in angles:
+            assert laid_off(C, A, arm, d) == rotate(C, A, arm.tau * float(arm.motion(d).psi))
+            assert speed_ratio(arm, d) == arm.eps * float(arm.motion(d).d1)
+            for part in ("rise", "return"):
+                k = next(i for i, s in enumerate(arm.program.segments) if s.kind == part)
+                seg = arm.program.segments[k]
+                x = min(max((d - seg.start) / seg.angle, 0.0), 1.0)
+                want = arm.eps * float(segment_motion(seg, levels(arm.program, arm.h)[k], arm.h, x).d1)
+                assert speed_ratio(arm, d, part) == want
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_searchs_slope_on_floats_is_face_place_slope1(seed):
+    rng = np.random.default_rng(400 + seed)
+    cam = _cam(rng)
+    fam = osc_flat.flat_family(cam)
+    A0, inv, tau = Point(0.0, cam.a), -float(cam.sigma), cam.tau
+    search = osc_flat._FaceSearch(fam, A0, inv, tau, None)
+    breaks = np.array(fam.breaks)
+    angles = np.concatenate([rng.uniform(0.0, TWO_PI, 300), breaks, np.nextafter(breaks, 0.0), [0.0]]).tolist()
+    for sign in (1.0, -1.0):
+        fast = search._slope1(sign)
+        assert [fast(d) for d in angles] == [sign * osc_flat.face_place_slope1(fam, A0, inv, tau, d) for d in angles]

@@ -1310,8 +1310,12 @@ def envelope_rho_min(fam: LineFamily) -> Extremum:
     """The smallest radius of curvature ρ of the envelope over the turn (≤ 0: not convex), and where (with
     the family's scalar form, its peaks refined by Brent on floats: :func:`maximise`)."""
     fn1 = fam.fn1
-    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces(),
-                   g1=None if fn1 is None else lambda d: -envelope1(fn1(d))[3])
+
+    def g1(d: float) -> float:                      # −ρ of envelope1(fn1(d)), by its operations
+        _, dphi, ddphi, p, dp, ddp = fn1(d)
+        return -(p + div1(ddp * dphi - dp * ddphi, pow1(dphi, 3.0)))
+
+    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces(), g1=None if fn1 is None else g1)
     return Extremum(-low.value, low.delta)
 
 
@@ -1364,11 +1368,11 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
     before = np.nextafter(np.array([b if b > 0.0 else TWO_PI for b in cuts]), 0.0)
     grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
     if fam.fn1 is not None:                     # the first look's few angles on floats (the same bits)
-        ends = [fam.fn1(x) for x in cuts + before.tolist()]
-        la = [envelope1(f6)[2] for f6 in ends[:len(cuts)]]
-        lb = [envelope1(f6)[2] for f6 in ends[len(cuts):]]
+        ends = [fam.fn1(x) for x in cuts + before.tolist()]       # λ = p′/φ′ as envelope1 divides
+        la = [div1(f6[4], f6[1]) for f6 in ends[:len(cuts)]]
+        lb = [div1(f6[4], f6[1]) for f6 in ends[len(cuts):]]
         jumps = [(b, (x1 - x0) * math.copysign(1.0, f6[1])) for b, x0, x1, f6 in zip(cuts, lb, la, ends)]
-        part = [v for v in la + lb + [envelope1(fam.fn1(x))[2] for x in _EVERY_90TH] if v == v]
+        part = [v for v in la + lb + [div1(f6[4], f6[1]) for f6 in map(fam.fn1, _EVERY_90TH)] if v == v]
         low = max(part) - min(part) if part else math.nan
         if all(j >= -JUMP_REL * low for _, j in jumps):
             return ()

@@ -25,7 +25,7 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from ..cam.oscillating import ArmMotion, levels, segment_motion
+from ..cam.oscillating import ArmMotion, levels, segment_motion, segment_motion1
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, Profile, STRICT_TOLERANCE_REL, TOLERANCE_REL, numpy_is_libm,
                            backward_jumps)
 from ..cam.program import Program, parse_program
@@ -297,18 +297,18 @@ def arm_division_angles(g: Mapping[str, Any], cam: ArmMotion) -> tuple[float, ..
 def laid_off(C: Point, A: Point, cam: ArmMotion, delta_deg: float) -> Point:
     """The pitch point: C (the arm's initial end in its inverted position) turned about A0′ by ψ(δ) in the
     arm's rise sense."""
-    return rotate(C, A, cam.tau * float(cam.motion(delta_deg).psi))
+    return rotate(C, A, cam.tau * math.radians(cam.program.motion1(cam.h, float(delta_deg))[0]))   # (motion's bits)
 
 
 def speed_ratio(cam: ArmMotion, delta_deg: float, part: str | None = None) -> float:
     """k = εψ′(δ): the arm's angular velocity over the cam's, signed (same sense positive); with ``part``
     ("rise", "return") the value inside that segment (one-sided at its ends, where ψ′ may jump)."""
-    if part is None:
-        return cam.eps * float(cam.motion(delta_deg).d1)
+    if part is None:                        # (on floats: the bits of motion and segment_motion)
+        return cam.eps * math.radians(cam.program.motion1(cam.h, float(delta_deg))[1])
     k = next(i for i, s in enumerate(cam.program.segments) if s.kind == part)
     seg = cam.program.segments[k]
     x = min(max((delta_deg - seg.start) / seg.angle, 0.0), 1.0)
-    return cam.eps * float(segment_motion(seg, levels(cam.program, cam.h)[k], cam.h, x).d1)
+    return cam.eps * segment_motion1(seg, levels(cam.program, cam.h)[k], cam.h, float(x))[2]
 
 
 def arm_velocity(A: Point, B: Point, sense: int) -> Point:

@@ -13,8 +13,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from ..cam.oscillating_flat import END_TIE, FlatArmCam
-from ..cam.profile import (Extremum, LineFamily, envelope, envelope1, envelope_rho_min, envelope_terms, flat_profile,
-                           maximise, numpy_is_libm)
+from ..cam.profile import (Extremum, LineFamily, div1, envelope, envelope1, envelope_rho_min, envelope_terms,
+                           flat_profile, maximise, numpy_is_libm, pow1)
 from ..errors import NotAMechanism
 from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circle_circle, line_circle, line_through,
                         segment, thales_circle)
@@ -274,10 +274,25 @@ class _FaceSearch:
         return last[1]
 
     def _slope1(self, sign: float):
+        """sign·:func:`face_place_slope1` with envelope1 and the pivot's path written out (the same operations
+        in the same order: the same bits, a third fewer calls)."""
         if not self.scalar:
             return None
-        fam, A0, inv, tau = self.fam, self.A0, self.inv, self.tau
-        return lambda d: sign * face_place_slope1(fam, A0, inv, tau, d)
+        fn1, inv, tau, x0, y0 = self.fam.fn1, self.inv, self.tau, self.A0.x, self.A0.y
+        cos, sin = math.cos, math.sin
+
+        def slope1(d: float) -> float:
+            beta, db, ddb, p, dp, ddp = fn1(d)
+            lam = dp / db if db != 0.0 else div1(dp, db)
+            rho = p + div1(ddp * db - dp * ddb, pow1(db, 3.0))
+            c, s = cos(beta), sin(beta)
+            x, y = p * c - lam * s, p * s + lam * c
+            ci, si = cos(inv * d), sin(inv * d)
+            ax, ay = ci * x0 - si * y0, si * x0 + ci * y0
+            vx, vy = -inv * ay, inv * ax
+            return sign * (-tau * rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c))
+
+        return slope1
 
     def farthest(self) -> Extremum:
         return maximise(self.place, self.pcs, slope=self.slope, slope1=self._slope1(1.0))
