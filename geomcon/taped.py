@@ -87,7 +87,8 @@ def construct_taped(recipe: Recipe, given: Mapping[str, Any]) -> Construction:
         for tape, _, _ in entries:
             if tape is not None and _current(entries[0], recipe.name, tape.title):
                 c = replay(tape, given)
-                if c is not None:
+                if c is not None:          # its captions are the recording's: it can complete itself
+                    c.scene.rebuild_with(lambda: recipe.construct(given).scene)
                     return c
     c = planned(recipe.name, recipe.construct, given)
     if key is None or c.scene.unplanned():

@@ -200,3 +200,16 @@ def test_a_taped_scene_that_completes_itself_while_evaluating_keeps_what_it_comp
     full = Solution(problem, s.recipe, s.recipe.construct(problem.given), [])
     full.answers, full.points
     assert s.stats == full.stats
+
+
+def test_a_replayed_scene_can_complete_itself_outside_a_solution():
+    """A back-substitution rebuilds the designed linkage through the analysis recipe's tape; a failing step
+    there must be worded with its own numbers, so the replayed scene completes itself without a Solution."""
+    r = get_recipe("crank_rocker.extremes")
+    for g in ({"AB": 50.0, "BC": 70.0, "CD": 80.0, "AD": 90.0},) * 3:
+        c = construct_taped(r, g)
+        c.scene.value("theta")
+    c = construct_taped(r, {"AB": 30.0, "BC": 70.0, "CD": 80.0, "AD": 90.0})
+    assert is_taped(c.scene)
+    assert c.scene.caption("D")[0].startswith("Fixed pivot D on the frame line, AD = 90")
+    assert not is_taped(c.scene)

@@ -69,6 +69,14 @@ def total(a: float, b: float) -> float:
     return a + b
 
 
+def rebuilt(recipe: str, given: Mapping[str, Any]) -> Scene:
+    """The scene of ``recipe`` on ``given`` as a solve builds it (lean, planned, replayed from the recipe's
+    tape when it has one): a design's back-substitution through the analysis recipe."""
+    from ..taped import construct_taped
+    from . import get_recipe
+    return construct_taped(get_recipe(recipe), given).scene
+
+
 def add_pivot(sc: Scene, key: str, at: Point | tuple[Any, Any], caption: tuple[str, str], *,
               ground_angle: float = -math.pi / 2) -> Ref:
     """A fixed pivot: the given point (a Point, or coordinates placed by the step: :meth:`Scene.given_at`)

@@ -20,7 +20,7 @@ from ..geometry import Line, OtherThan, Point, line_circle, perpendicular, polar
 from ..scene import Role, Scene
 from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
-from .crank_slider import construct as extremes_construct
+from .common import rebuilt
 from .crank_slider_design import admissible_arc, finish_from_A
 from .theta_circle import (K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to,
                            refuse_tiny_theta)
@@ -148,7 +148,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild with ``crank_slider.extremes``: H, K and the slow stroke's γmin come back."""
-    v = extremes_construct({"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]}).scene.evaluate(["H", "K", "gamma_min_slow"])
+    v = rebuilt("crank_slider.extremes", {"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]}).evaluate(["H", "K", "gamma_min_slow"])
     return [("H", v["H"], g["H"], "mm"), ("K", v["K"], g["K"], ""), ("gamma_w_min", v["gamma_min_slow"], ans["gamma_w_min"], "deg")]
 
 

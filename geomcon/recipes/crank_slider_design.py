@@ -26,9 +26,8 @@ from ..geometry import (Above, Line, OtherThan, Point, ToLeftOf, circle, circle_
 from ..scene import Ref, Role, Scene, marks
 from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, along_line, angle_deg, length
+from .common import add_angle_mark, add_bar, along_line, angle_deg, length, rebuilt
 from .crank_slider import add_pressure_angles
-from .crank_slider import construct as extremes_construct
 from .theta_circle import K_MAX_ACUTE, add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
 
 GIVENS = (
@@ -284,7 +283,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild the designed linkage with ``crank_slider.extremes``: it must give back H, K and the condition."""
-    sc = extremes_construct({"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]}).scene
+    sc = rebuilt("crank_slider.extremes", {"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]})
     v = sc.evaluate(["H", "K", "gamma_min"])
     which = _closing(g)
     return [("H", v["H"], g["H"], "mm"), ("K", v["K"], g["K"], ""), (which, ans[which], g[which], "mm"),

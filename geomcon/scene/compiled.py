@@ -4,8 +4,9 @@ local variables, no dictionary lookups or argument resolution per step.
 The source is generated from the recorded steps' shapes alone: local names ``v0, v1, …`` and the operations,
 constants and branch rules bound by name in the function's namespace (``f3``, ``c3_1``, ``b3``); no key, label
 or value of a problem ever becomes source text (keys are read and written through a tuple of them). A request
-whose steps are not all plain calls (nested references, optional steps) gets no function and is evaluated
-step by step as before.
+whose steps are not all plain calls (nested references such as a tuple of points) gets no function and is
+evaluated step by step as before. An optional step (a candidate that may not exist) is None when a step it
+refers to is None or, for an intersection, when nothing meets, as the scene's own evaluation decides.
 
 Examples
 --------
@@ -66,12 +67,13 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
             body.append(f"    {v} = memo[_IN[{len(loaded)}]]")
             loaded.append(k)
             continue
-        if mode not in (_PLAIN, _TOP) or optional:
+        if mode not in (_PLAIN, _TOP):
             return None
-        parts = []
+        parts, used = [], []
         for j, a in enumerate(args):
             if type(a) is Ref:
                 parts.append(names[a[0]])
+                used.append(names[a[0]])
             else:
                 ns[f"c{i}_{j}"] = a
                 parts.append(f"c{i}_{j}")
@@ -79,7 +81,13 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
             ns[f"k{i}"] = kwargs
             parts.append(f"**k{i}")
         ns[f"f{i}"] = op
-        body.append(f"    {v} = f{i}({', '.join(parts)})")
+        pad = "    "
+        if optional and used:                    # a candidate of a missing candidate is missing
+            body.append(f"    if {' is None or '.join(used)} is None:")
+            body.append(f"        {v} = None")
+            body.append("    else:")
+            pad = "        "
+        body.append(f"{pad}{v} = f{i}({', '.join(parts)})")
         if branch is not None:
             refs = []
             for j, b in enumerate(brefs):
@@ -89,8 +97,11 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
                     ns[f"r{i}_{j}"] = b
                     refs.append(f"r{i}_{j}")
             ns[f"b{i}"] = branch.rule
-            body.append(f"    if not {v}: raise _NoIntersection('')")
-            body.append(f"    {v} = b{i}({', '.join([v] + refs)})")
+            if optional:
+                body.append(f"{pad}{v} = b{i}({', '.join([v] + refs)}) if {v} else None")
+            else:
+                body.append(f"{pad}if not {v}: raise _NoIntersection('')")
+                body.append(f"{pad}{v} = b{i}({', '.join([v] + refs)})")
         computed.append(k)
     ns["_IN"], ns["_OUT"] = tuple(loaded), tuple(computed)
     outs = ", ".join(names[k] for k in computed)
