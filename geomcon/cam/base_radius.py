@@ -63,6 +63,7 @@ import numpy as np
 
 from ..errors import NotAMechanism
 from .arm_twin import ArmTwin, arm_rho_min  # noqa: F401  (the twin, re-exported: its own module)
+from .arm_twin import _falsi   # the same Illinois search the twin's binding positions use
 from .oscillating import ArmMotion, Motion, levels, piece_grid, pieces, segment_motion, segment_motion1
 from .profile import sign1
 from .program import Program, Segment
@@ -255,37 +256,6 @@ def part_motion(arm: ArmMotion, part: str, delta_deg: float) -> Motion:
 def _fractions(seg: Segment, n: int) -> np.ndarray:
     """A grid of fractions over every smooth piece of ``seg`` (each piece's right end just inside it)."""
     return np.concatenate([piece_grid(x0, x1, n) for x0, x1 in pieces(seg)])
-
-
-def _falsi(fn: Callable[[float], float], lo: float, hi: float, flo: float, fhi: float, tol: float) -> float:
-    """A root of ``fn`` in [lo, hi] (fn(lo)·fn(hi) < 0) by regula falsi with the Illinois modification,
-    bisecting when a step leaves the bracket, until the bracket is narrower than ``tol``.
-
-    >>> round(_falsi(lambda x: x * x - 2.0, 0.0, 2.0, -2.0, 2.0, 1e-15), 15)
-    1.414213562373095
-    """
-    side = 0
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if hi - lo <= tol or not lo < mid < hi:
-            break
-        c = (lo * fhi - hi * flo) / (fhi - flo)
-        if not lo < c < hi:
-            c = mid
-        fc = fn(c)
-        if fc == 0.0:
-            return c
-        if (fc > 0) == (flo > 0):
-            lo, flo = c, fc
-            if side < 0:
-                fhi *= 0.5
-            side = -1
-        else:
-            hi, fhi = c, fc
-            if side > 0:
-                flo *= 0.5
-            side = 1
-    return 0.5 * (lo + hi)
 
 
 ROOT_TOL = 1e-13

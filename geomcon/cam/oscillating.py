@@ -468,35 +468,39 @@ class OscillatingCam(ArmMotion):
 
         return k1
 
-    def convex_curvature_complex1(self) -> Callable[[tuple[float, float, float, float]], float]:
-        """:meth:`convex_curvature_complex` of one motion (δ, ψ, ψ′, ψ″), with Python's complex numbers (the
-        twin's route on the scalar path)."""
+    def _uv1(self) -> Callable[[tuple[float, float, float, float]], tuple[complex, complex, float]]:
+        """u = c′ − iσc and v = c″ − 2iσc′ − c of one motion (the complex form's relative velocity and
+        acceleration), with ψ′, shared by the scalar curvature and pressure-angle slope."""
         tau, sg, L, a, psi0 = self.tau, self.sigma, self.L, self.a, self.psi0
         exp = cmath.exp
 
-        def k1(m):
+        def uv1(m):
             _, psi, d1, d2 = m
             e = exp(1j * tau * (psi0 + psi))
             c = a - L * e
             c1 = -1j * tau * L * d1 * e
             c2 = -1j * tau * L * d2 * e + L * (d1 * d1) * e
-            u, v = c1 - 1j * sg * c, c2 - 2j * sg * c1 - c
+            return c1 - 1j * sg * c, c2 - 2j * sg * c1 - c, d1
+
+        return uv1
+
+    def convex_curvature_complex1(self) -> Callable[[tuple[float, float, float, float]], float]:
+        """:meth:`convex_curvature_complex` of one motion (δ, ψ, ψ′, ψ″), with Python's complex numbers (the
+        twin's route on the scalar path)."""
+        sg, uv1 = self.sigma, self._uv1()
+
+        def k1(m):
+            u, v, _ = uv1(m)
             return -sg * (u.conjugate() * v).imag / pow1(abs(u), 3.0)
 
         return k1
 
     def pressure_arg_slope1(self) -> Callable[[tuple[float, float, float, float]], float]:
         """:meth:`pressure_arg_slope` of one motion (δ, ψ, ψ′, ψ″), with Python's complex numbers."""
-        tau, sg, L, a, psi0 = self.tau, self.sigma, self.L, self.a, self.psi0
-        exp = cmath.exp
+        tau, sg, uv1 = self.tau, self.sigma, self._uv1()
 
         def slope1(m):
-            _, psi, d1, d2 = m
-            e = exp(1j * tau * (psi0 + psi))
-            c = a - L * e
-            c1 = -1j * tau * L * d1 * e
-            c2 = -1j * tau * L * d2 * e + L * (d1 * d1) * e
-            u, v = c1 - 1j * sg * c, c2 - 2j * sg * c1 - c
+            u, v, d1 = uv1(m)
             return (v / u).imag - (tau * d1 - sg) if u != 0 else math.nan
 
         return slope1

@@ -29,19 +29,22 @@ from .step import Ref
 _PLAIN, _TOP = 0, 1
 
 
-def order_of(rec: dict[str, tuple], keys: Iterable[str]) -> list[str] | None:
-    """The keys needed for ``keys`` in insertion order (None when one is not recorded)."""
+def order_of(rec: dict[str, tuple], keys: Iterable[str]) -> list[str]:
+    """The keys needed for ``keys`` (themselves included), in insertion order.
+
+    Raises
+    ------
+    KeyError
+        Naming the first needed key that is not recorded.
+    """
     need: set[str] = set()
     todo = list(keys)
     while todo:
         k = todo.pop()
         if k in need:
             continue
-        r = rec.get(k)
-        if r is None:
-            return None
         need.add(k)
-        todo.extend(r[7])
+        todo.extend(rec[k][7])
     return [k for k in rec if k in need]
 
 
@@ -51,8 +54,9 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
 
     A step that fails raises (the caller evaluates step by step again to report it); a branch step whose
     intersection is empty raises :class:`~geomcon.errors.NoIntersection`."""
-    order = order_of(rec, keys)
-    if order is None:
+    try:
+        order = order_of(rec, keys)
+    except KeyError:
         return None
     order = [k for k in order if k in inputs] + [k for k in order if k not in inputs]
     ns: dict[str, Any] = {"_NoIntersection": NoIntersection}

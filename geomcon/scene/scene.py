@@ -31,6 +31,7 @@ from typing import Any, Callable, Iterable, Iterator
 from ..errors import GeomconError, NoIntersection, Unbuildable
 from ..geometry.branch import Branch
 from ..geometry.primitives import Circle, Line, Point
+from .compiled import order_of
 from .step import Ref, Role, Step, collect_refs
 
 
@@ -375,24 +376,17 @@ class Scene:
 
     def closure(self, keys: Iterable[str]) -> list[str]:
         """The keys needed to compute ``keys`` (themselves included), in evaluation order."""
-        rec = self._rec
-        need: set[str] = set()
-        todo = list(keys)
-        while todo:
-            k = todo.pop()
-            if k in need:
-                continue
-            r = rec.get(k)
-            if r is None:
-                # a step skipped here, or one a lean scene never added (drawing-only, under
-                # 'if sc.drawing'): a scene that can complete itself does so; a full scene has no such step
-                if k not in self._skip and (self._rebuild is None or not (self.lean or self._keep is not None)):
-                    raise KeyError(f"no step '{k}'")
-                self._upgrade(k)
-                return self.closure(keys)
-            need.add(k)
-            todo.extend(r[7])
-        return [k for k in rec if k in need]
+        keys = tuple(keys)
+        try:
+            return order_of(self._rec, keys)
+        except KeyError as exc:
+            k = exc.args[0]
+        # a step skipped here, or one a lean scene never added (drawing-only, under 'if sc.drawing'): a scene
+        # that can complete itself does so; a full scene has no such step
+        if k not in self._skip and (self._rebuild is None or not (self.lean or self._keep is not None)):
+            raise KeyError(f"no step '{k}'")
+        self._upgrade(k)
+        return self.closure(keys)
 
     # ------------------------------------------------------------------ evaluating
     def value(self, key: str) -> Any:
