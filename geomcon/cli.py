@@ -13,7 +13,7 @@ import warnings
 from pathlib import Path
 from typing import Sequence
 
-from .errors import GeomconError
+from .errors import GeomconError, ProblemError
 
 EXIT_BAD_INPUT = 2
 EXIT_CHECK_FAILED = 1
@@ -62,7 +62,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
     path = args.file
     outputs = {"--svg": args.svg, "--html": args.html, "--profile-csv": getattr(args, "profile_csv", None)}
     try:
-        check_targets({k: v for k, v in outputs.items() if v}, {"--steps": args.steps} if args.steps else {})
+        dirs = {k: v for k, v in (("--steps", args.steps), ("--diagrams", getattr(args, "diagrams", None))) if v}
+        check_targets({k: v for k, v in outputs.items() if v}, dirs)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")           # numpy's floating-point chatter never reaches stderr
             sol = solve(load_problem(path))
@@ -75,6 +76,12 @@ def cmd_solve(args: argparse.Namespace) -> int:
             if args.steps:
                 for k, frame in enumerate(sol.frames(), 1):
                     files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
+            if getattr(args, "diagrams", None):
+                from .gallery import problem_motion_svg
+                if "program" not in sol.problem.given or sol.problem.given.get("h") is None:
+                    raise ProblemError(f"--diagrams: recipe {sol.recipe.name} has no motion program to draw "
+                                       "(s–v–a diagrams are for cam.translating, cam.oscillating, cam.base_radius)")
+                files[Path(args.diagrams) / f"{sol.problem.id}_motion.svg"] = problem_motion_svg(sol)
             if getattr(args, "profile_csv", None):
                 from .recipes.cam_common import profile_csv
                 files[Path(args.profile_csv)] = profile_csv(sol.drawing_scene, sol.recipe.name)
@@ -87,12 +94,36 @@ def cmd_solve(args: argparse.Namespace) -> int:
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
 
+UNIT_WORDS = {"mm": "mm", "deg": "°", "": "ratio", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
+              "deg[]": "list, °", "[]": "list", "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s",
+              "rad/s": "rad/s"}
+"""How ``geomcon recipes`` names a unit."""
+
+
+def _given_line(q) -> str:
+    """One given of ``geomcon recipes``: name, unit, required or its default, range, meaning."""
+    unit = UNIT_WORDS.get(q.unit, q.unit)
+    if q.choices:
+        unit = f"{unit} {'|'.join(q.choices)}"
+    need = "required" if q.required else ("optional" if q.default is None else f"default {_shown(q.default)}")
+    return f"    {q.name:<18} {unit:<30} {need:<19} {q.doc}"
+
+
+def _shown(v) -> str:
+    if isinstance(v, bool):
+        return str(v).lower()
+    if isinstance(v, float):
+        return f"{v:g}"
+    return str(v)
+
+
 def cmd_recipes(args: argparse.Namespace) -> int:
     from .recipes import RECIPES
 
     if args.json:
         data = {name: {"title": r.title,
                        "given": {q.name: {"unit": q.unit, "doc": q.doc, "required": q.required,
+                                          **({"default": q.default} if q.default is not None else {}),
                                           **({"choices": list(q.choices)} if q.choices else {})} for q in r.givens},
                        "answers": {q.name: {"unit": q.unit, "doc": q.doc} for q in r.answers},
                        "points": list(r.points)} for name, r in sorted(RECIPES.items())}
@@ -100,8 +131,11 @@ def cmd_recipes(args: argparse.Namespace) -> int:
         return 0
     for name, r in sorted(RECIPES.items()):
         print(f"{name}  —  {r.title}")
-        print("  given:   " + ", ".join(q.name + ("" if q.required else "?") for q in r.givens))
-        print("  answers: " + ", ".join(q.name for q in r.answers))
+        print("  given:")
+        for q in r.givens:
+            print(_given_line(q))
+        print("  answers: " + ", ".join(f"{q.name} ({UNIT_WORDS.get(q.unit, q.unit)})" for q in r.answers))
+        print()
     return 0
 
 
@@ -186,6 +220,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--steps", metavar="DIR", help="write one SVG per construction step")
     s.add_argument("--html", metavar="OUT", help="write a self-contained step player page")
     s.add_argument("--profile-csv", metavar="OUT", help="cam recipes: write the actual profile as x,y,delta (mm, mm, deg)")
+    s.add_argument("--diagrams", metavar="DIR", help="cam recipes: write the motion program's s–v–a (ψ–δ) diagrams "
+                   "as DIR/<problem>_motion.svg")
     s.set_defaults(func=cmd_solve)
     r = sub.add_parser("recipes", help="list recipes with their given and answer names")
     r.add_argument("--json", action="store_true")

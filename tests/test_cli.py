@@ -173,3 +173,26 @@ def test_gallery_is_fresh():
 
     stale = stale_files(ROOT / "problems", ROOT / "gallery")
     assert not stale, f"gallery is stale, run `geomcon gallery`: {stale}"
+
+
+def test_recipes_prints_units_defaults_and_meanings(capsys):
+    assert main(["recipes"]) == 0
+    out = capsys.readouterr().out
+    rotation = [line for line in out.splitlines() if line.split()[:1] == ["rotation"]]
+    assert rotation and all("default ccw" in line and "ccw|cw" in line for line in rotation)
+    ab = [line for line in out.splitlines() if line.split()[:1] == ["AB"]]
+    assert all(" mm " in line for line in ab) and {line.split()[2] for line in ab} == {"required", "optional"}
+    assert main(["recipes", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["cam.translating"]["given"]["rotation"]["default"] == "ccw"
+
+
+def test_diagrams_writes_a_cam_problem_s_motion_sheet_and_refuses_a_linkage(tmp_path, capsys):
+    out = tmp_path / "d"
+    assert main(["solve", str(ROOT / "problems" / "200-01_cam_roller_offset.toml"), "--diagrams", str(out)]) == 0
+    sheet = (out / "200-01_cam_roller_offset_motion.svg").read_text(encoding="utf-8")
+    assert sheet == (ROOT / "gallery" / "200-01_cam_roller_offset_motion.svg").read_text(encoding="utf-8")
+    capsys.readouterr()
+    bad = tmp_path / "e"
+    assert main(["solve", str(ROOT / "problems" / "001-08_crank_rocker.toml"), "--diagrams", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("error: ") and "--diagrams" in err and err.count("\n") == 1 and not bad.exists()
