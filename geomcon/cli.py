@@ -45,10 +45,25 @@ def _fail(where: str, msg: str) -> int:
 def _summary(sol) -> str:
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
     lines += [f"  {line}" for line in sol.info_lines()]
+    others = sol.solution_values[1:]
+    if others:
+        lines.append(f"  {len(others) + 1} valid solutions; the one above is the textbook's choice (solution 1); the others:")
+        for i, other in enumerate(others, 2):
+            shown = ", ".join(f"{k} = {_shown_answer(v)}" for k, v in other.items())
+            lines.append(f"    solution {i}: {shown}")
     lines += [f"  warning: {w}" for w in sol.warnings]
     st = sol.stats
     lines.append(f"  steps evaluated {st['steps_evaluated']} of {st['steps_total']}")
     return "\n".join(lines)
+
+
+def _shown_answer(v) -> str:
+    """An answer in the text summary: 4 decimals, lists in brackets, bools as words."""
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, (tuple, list)):
+        return "[" + ", ".join(f"{x:.4f}" for x in v) + "]"
+    return f"{v:.4f}"
 
 
 def cmd_solve(args: argparse.Namespace) -> int:

@@ -196,3 +196,12 @@ def test_diagrams_writes_a_cam_problem_s_motion_sheet_and_refuses_a_linkage(tmp_
     assert main(["solve", str(ROOT / "problems" / "001-08_crank_rocker.toml"), "--diagrams", str(bad)]) == 2
     err = capsys.readouterr().err
     assert err.startswith("error: ") and "--diagrams" in err and err.count("\n") == 1 and not bad.exists()
+
+
+def test_the_summary_says_how_many_solutions_there_are_and_lists_the_others(capsys):
+    assert main(["solve", str(ROOT / "problems" / "001-10_crank_rocker_design_coupler.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "2 valid solutions; the one above is the textbook's choice (solution 1)" in out
+    assert "solution 2: AB = 66.9811, BC = 260.0000, AD = 467.6398" in out
+    assert main(["solve", str(ROOT / "problems" / "001-08_crank_rocker.toml")]) == 0
+    assert "valid solutions" not in capsys.readouterr().out
