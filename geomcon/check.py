@@ -91,14 +91,22 @@ def check_row(quantity: str, construction: float, analytic: float, scale: float)
 
 def audit_row(quantity: str, published: float, exact: float, scale: float = 1.0) -> dict:
     """One row of ``published``: the printed value, the exact one and the deviation (both at the quantity's
-    scale, :func:`rounded`); ``rel_deviation`` is None where the exact value is 0 or the ratio not finite."""
+    scale, :func:`rounded`); ``rel_deviation`` is None where the exact value is 0 or the ratio not finite;
+    ``doubtful`` when the printed value is off by more than drafting accuracy (:data:`PUBLISHED_WARN_REL`, or
+    at all where the exact value is 0).
+
+    >>> audit_row("theta", 25.0, 12.5055860934)["doubtful"], audit_row("theta", 12.6, 12.5055860934)["doubtful"]
+    (True, False)
+    """
     exact = rounded(exact, scale)
     dev = rounded(published - exact, scale)
     rel = dev / abs(exact) if exact != 0 else None
+    rel = rel if rel is not None and math.isfinite(rel) else None
     return {
         "quantity": quantity,
         "published": published,
         "exact": exact,
         "deviation": dev,
-        "rel_deviation": rel if rel is not None and math.isfinite(rel) else None,
+        "rel_deviation": rel,
+        "doubtful": abs(rel) > PUBLISHED_WARN_REL if rel is not None else dev != 0,
     }

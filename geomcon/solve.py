@@ -372,10 +372,10 @@ class Solution:
                            f"(allowed {r['tol']:.2g})")
         for r in self.published:
             rel = r["rel_deviation"]
-            if (rel is not None and abs(rel) > PUBLISHED_WARN_REL) or (rel is None and r["deviation"] != 0):
+            if r["doubtful"]:
                 how = f"{100 * rel:+.2f} %" if rel is not None else f"{r['deviation']:+g}"
-                out.append(f"published {r['quantity']} = {r['published']:g} deviates from the exact "
-                           f"{r['exact']:.6g} by {how}")
+                out.append(f"published {r['quantity']} = {r['published']:g} is doubtful: it deviates from the exact "
+                           f"{r['exact']:.6g} by {how}, beyond drafting accuracy (±{100 * PUBLISHED_WARN_REL:g} %)")
         return out
 
     @property
@@ -438,7 +438,8 @@ class Solution:
                 worst = f", worst {100 * max(rels, key=abs):+.2f} %" if rels and len(parts) > 1 else (
                     f", {100 * rels[0]:+.2f} %" if rels else "")
                 values = ", ".join(f"{p['published']:g}" for p in printed)
-                line += f"  (printed {values}{worst})"
+                doubt = ", doubtful: beyond drafting accuracy" if any(p["doubtful"] for p in printed) else ""
+                line += f"  (printed {values}{worst}{doubt})"
             lines.append(line)
         return lines
 

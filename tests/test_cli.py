@@ -108,7 +108,8 @@ def test_json_contract_and_laziness(tmp_path, capsys):
     assert data["solutions"] == [data["answers"]]
     assert all(set(c) >= {"quantity", "construction", "analytic", "abs_error", "tol", "unit", "ok"} and c["ok"] for c in data["checks"])
     (pub,) = data["published"]
-    assert set(pub) == {"quantity", "published", "exact", "deviation", "rel_deviation"}
+    assert set(pub) == {"quantity", "published", "exact", "deviation", "rel_deviation", "doubtful"}
+    assert pub["doubtful"] is False
     assert pub["quantity"] == "theta" and pub["deviation"] == pytest.approx(12.5 - 12.5055860934, abs=1e-9)
     st = data["stats"]
     assert 0 < st["steps_evaluated"] < st["steps_total"]
@@ -205,3 +206,15 @@ def test_the_summary_says_how_many_solutions_there_are_and_lists_the_others(caps
     assert "solution 2: AB = 66.9811, BC = 260.0000, AD = 467.6398" in out
     assert main(["solve", str(ROOT / "problems" / "001-08_crank_rocker.toml")]) == 0
     assert "valid solutions" not in capsys.readouterr().out
+
+
+def test_a_printed_answer_beyond_drafting_accuracy_is_doubtful_in_text_json_and_figure(tmp_path, capsys):
+    p = _write(tmp_path, GOOD.replace("theta = 12.5", "theta = 25"))
+    assert main(["solve", str(p)]) == 0                   # a printed answer never fails the solve
+    out = capsys.readouterr().out
+    assert "(printed 25, +99.91 %, doubtful: beyond drafting accuracy)" in out
+    assert "published theta = 25 is doubtful" in out
+    assert main(["solve", str(p), "--json", "--svg", str(tmp_path / "f.svg")]) == 0
+    (pub,) = json.loads(capsys.readouterr().out)["published"]
+    assert pub["doubtful"] is True and pub["rel_deviation"] == 0.9991
+    assert "doubtful" in (tmp_path / "f.svg").read_text(encoding="utf-8")
