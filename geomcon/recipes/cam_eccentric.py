@@ -41,8 +41,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-import numpy as np
-
+from ..cam.arm_replay import ArmReplay
 from ..cam.eccentric import Oscillating, Translating, check_disc
 from ..cam.profile import maximise
 from ..errors import NotAMechanism
@@ -568,6 +567,15 @@ def _osc_alpha_max(Q0: Point, A: Point, O: Point, B0: Point, L: float, Rp: float
                    rise: float, part: str) -> float:
     """The largest α over a stroke: the pivot turned back by δ about O (inversion), B where its arc meets
     the pitch circle, α measured; maximised over δ."""
+    arm = osc_arm(Q0, A, O, L, Rp, left, sense)
+    lo, hi = (0.0, math.radians(rise)) if part == "rise" else (math.radians(rise), 2 * math.pi)
+    return maximise(arm.alpha, [(lo, hi)], dense=720, g1=arm.alpha1).value   # peaks refined by Brent
+
+
+def osc_arm(Q0: Point, A: Point, O: Point, L: float, Rp: float, left: bool, sense: float) -> ArmReplay:
+    """The replay of the inversion on floats and arrays (:class:`~geomcon.cam.arm_replay.ArmReplay`, the same
+    bits), with the geometry's own replay (the pivot turned back by δ about O, B where its arc meets the
+    pitch circle on the arm's side, α measured) where it steps aside."""
     side = RightOf if left else LeftOf
     kp = circle(A, Rp)
 
@@ -576,8 +584,7 @@ def _osc_alpha_max(Q0: Point, A: Point, O: Point, B0: Point, L: float, Rp: float
         B = side(Qd, A).choose(circle_circle(circle(Qd, L), kp))
         return arm_pressure(A, B, Qd)
 
-    lo, hi = (0.0, math.radians(rise)) if part == "rise" else (math.radians(rise), 2 * math.pi)
-    return maximise(np.vectorize(alpha_at), [(lo, hi)], dense=720, g1=alpha_at).value   # peaks refined by Brent
+    return ArmReplay(Q0.x, Q0.y, O.x, O.y, A.x, A.y, L, Rp, left, sense, alpha_at)
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
