@@ -6,6 +6,12 @@ markers, texts and the labels placed before wins. Clearances above :data:`ENOUGH
 label with room to spare takes its preferred direction; small penalties favour near and preferred
 positions among equally free ones.
 
+Scoring is bounded (:mod:`.clearance`): the candidates of a text are measured in batches, which gives
+bounds of each one's score at once, and only what decides the choice is scored exactly (by shapely, as
+:meth:`Placer.clearance` defines the score) — a candidate whose bound cannot beat the best so far is
+passed over, and so is every candidate before one whose lower bound beats all their upper bounds. The
+choice and its score are those of scoring every candidate in turn.
+
 Examples
 --------
 >>> p = Placer([(shapely.LineString([(0, 5), (10, 5)]), "line", 0.0)], (0.0, 0.0, 10.0, 10.0))
@@ -15,6 +21,8 @@ True
 """
 from __future__ import annotations
 
+import functools
+import itertools
 import math
 from dataclasses import dataclass
 from typing import Sequence
@@ -23,10 +31,9 @@ import numpy as np
 import shapely
 from shapely import affinity
 
-XY = tuple[float, float]
+from .clearance import ENOUGH, Layer, Measure
 
-ENOUGH = 1.6
-"""Clearance (paper mm) beyond which a candidate position counts as free."""
+XY = tuple[float, float]
 
 DISTANCES = (0.0, 2.0, 4.5, 8.0)
 """Extra distances (paper mm) beyond the gap at which a text is tried, nearest first."""
@@ -103,18 +110,6 @@ def half_extent(ux: float, uy: float, w: float, h: float) -> float:
     return min(tx, ty)
 
 
-def _gaps(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
-    """Distances from ``box`` to ``geoms``; for those it touches, minus a measure of how much it covers."""
-    d = shapely.distance(box, geoms)
-    hit = d == 0.0
-    if hit.any():
-        inter = shapely.intersection(box, geoms[hit])
-        area = shapely.area(inter)
-        covered = np.where(area > 0.0, 2.0 * np.sqrt(area), shapely.length(inter))
-        d[hit] = -np.minimum(2.0, 0.3 * covered)
-    return d
-
-
 class Placer:
     """Greedy text placement against fixed obstacles (shapely geometries in paper mm).
 
@@ -130,43 +125,27 @@ class Placer:
 
     def __init__(self, obstacles: Sequence[tuple[shapely.Geometry, str, float]],
                  frame: tuple[float, float, float, float]):
-        self._geoms = np.array([g for g, _, _ in obstacles], dtype=object)
-        self._owners = np.array([o for _, o, _ in obstacles], dtype=object)
-        self._allow = np.array([a for _, _, a in obstacles], dtype=float)
-        self._tree = shapely.STRtree(self._geoms) if len(self._geoms) else None
-        self._placed: list[shapely.Geometry] = []
+        self._obstacles = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles],
+                                [a for _, _, a in obstacles], split=True)
+        self._placed = Layer([])
         self._frame = frame
+
+    def _measure(self, boxes: np.ndarray, bounds: np.ndarray, owner: str, aligned: bool) -> Measure:
+        return Measure(self._obstacles, self._placed, boxes, bounds, owner, aligned)
 
     def clearance(self, box: shapely.Geometry, owner: str) -> float:
         """Distance (capped at :data:`ENOUGH`) from ``box`` to every obstacle not owned by ``owner`` (plus its
         allowance) and to everything placed so far; negative when the box covers something, the more the
         more it covers (so that among crowded places the least covered wins)."""
-        best = ENOUGH
-        x0, y0, x1, y1 = box.bounds
-        near = shapely.box(x0 - ENOUGH, y0 - ENOUGH, x1 + ENOUGH, y1 + ENOUGH)
-        if self._tree is not None:
-            idx = self._tree.query(near)
-            idx = np.sort(idx[self._owners[idx] != owner])
-            if len(idx):
-                best = min(best, float(np.min(_gaps(box, self._geoms[idx]) + self._allow[idx])))
-        if self._placed:
-            best = min(best, float(np.min(_gaps(box, np.array(self._placed, dtype=object)))))
-        return best
-
-    def _score(self, req: Request, owner: str, centre: XY, penalty: float) -> float:
-        box = req.box(*centre)
-        x0, y0, x1, y1 = box.bounds
-        f = self._frame
-        outside = 0.0 if f[0] <= x0 and f[1] <= y0 and x1 <= f[2] and y1 <= f[3] else 50.0
-        return self.clearance(box, owner) - penalty - outside
+        boxes = np.array([box], dtype=object)
+        return self._measure(boxes, shapely.bounds(boxes), owner, False).exact(0)
 
     def _centres(self, req: Request) -> list[tuple[XY, float]]:
         if req.candidates:
             return [(c, req.spread * i) for i, c in enumerate(req.candidates)]
         out = []
         for j, extra in enumerate(DISTANCES):
-            for rank, a in enumerate(directions(req.prefer)):
-                ux, uy = math.cos(a), math.sin(a)
+            for rank, (ux, uy) in enumerate(_units(req.prefer)):
                 reach = req.gap + extra + half_extent(ux, uy, req.width, req.height)
                 out.append(((req.anchor[0] + ux * reach, req.anchor[1] + uy * reach),
                             FAR_PENALTY * j + req.spread * rank))
@@ -174,12 +153,82 @@ class Placer:
 
     def best(self, req: Request, owner: str) -> tuple[XY, float]:
         """The centre of the best box for ``req`` and its score: its clearance less the penalties for
-        distance and for leaving the preferred direction (very negative outside the frame)."""
+        distance and for leaving the preferred direction (very negative outside the frame).
+
+        The candidates are tried in order; one replaces the best so far when its score is higher by more
+        than 1e-12. Only what decides that is scored exactly: a candidate whose upper bound does not beat
+        the best so far is passed over, and so is every candidate before one whose lower bound beats all
+        their upper bounds (that one replaces the best whatever they score).
+        """
+        cands = self._centres(req)
+        n = len(cands)
+        boxes = _boxes(req, [c for c, _ in cands])
+        bounds = shapely.bounds(boxes)
+        f = self._frame
+        inside = (f[0] <= bounds[:, 0]) & (f[1] <= bounds[:, 1]) & (bounds[:, 2] <= f[2]) & (bounds[:, 3] <= f[3])
+        cost = [penalty for _, penalty in cands]
+        outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
+        static = [ENOUGH - penalty - out for penalty, out in zip(cost, outside)]
+        reach = list(itertools.accumulate(reversed(static), max))[::-1]      # the best static bound from i on
+        lower: list[float] = []
+        upper: list[float] = []
+        where: list[tuple[Measure, int] | None] = []
+
+        def measure(best_score: float) -> None:
+            start = len(upper)
+            stop = min(n, start + (1 if start == 0 else BATCH))
+            todo = [i for i in range(start, stop) if static[i] > best_score + 1e-12]
+            m = self._measure(boxes[todo], bounds[todo], owner, not req.rotate) if todo else None
+            slot = {i: k for k, i in enumerate(todo)}
+            for i in range(start, stop):
+                k = slot.get(i)
+                if m is None or k is None:       # it cannot beat the best so far, nor any later best
+                    lower.append(-math.inf)
+                    upper.append(static[i])
+                    where.append(None)
+                else:
+                    lo, hi = m.bounds(k)
+                    lower.append(lo - cost[i] - outside[i])
+                    upper.append(hi - cost[i] - outside[i])
+                    where.append((m, k))
+
+        def sure_winner(i: int, best_score: float) -> int | None:
+            """A later candidate that replaces the best whatever the ones from ``i`` to it score."""
+            top = max(best_score, upper[i])
+            j = i + 1
+            while j < n and reach[j] > top + 1e-12:
+                if j == len(upper):
+                    measure(best_score)
+                if lower[j] > top + 1e-12:
+                    return j
+                top = max(top, upper[j])
+                j += 1
+            return None
+
         best, best_score = req.anchor, -math.inf
-        for centre, penalty in self._centres(req):
-            score = self._score(req, owner, centre, penalty)
+        i = 0
+        while i < n:
+            if i == len(upper):
+                measure(best_score)
+            if upper[i] <= best_score + 1e-12:
+                i += 1                           # it cannot win
+                continue
+            j = sure_winner(i, best_score)
+            if j is None and lower[i] < upper[i]:    # it touches something: bound what it covers first
+                m, k = where[i]                      # type: ignore[misc]
+                lo, hi = m.refine(k)
+                lower[i], upper[i] = lo - cost[i] - outside[i], hi - cost[i] - outside[i]
+                if upper[i] <= best_score + 1e-12:
+                    i += 1
+                    continue
+            i = i if j is None else j
+            m, k = where[i]                      # type: ignore[misc]
+            score = m.exact(k) - cost[i] - outside[i]
             if score > best_score + 1e-12:
-                best, best_score = centre, score
+                best, best_score = cands[i][0], score
+            elif j is not None:
+                raise AssertionError("a sure winner did not win: its bounds were wrong")
+            i += 1
         return best, best_score
 
     def commit(self, geom: shapely.Geometry) -> None:
@@ -191,3 +240,24 @@ class Placer:
         centre, _ = self.best(req, owner)
         self.commit(req.box(*centre))
         return centre
+
+
+BATCH = 16
+"""Candidates measured per batch after the first (the preferred position alone)."""
+
+
+def _boxes(req: Request, centres: Sequence[XY]) -> np.ndarray:
+    """``req.box`` at each centre (the same coordinates; one vectorised call when not rotated)."""
+    if req.rotate:
+        out = np.empty(len(centres), dtype=object)
+        out[:] = [req.box(cx, cy) for cx, cy in centres]
+        return out
+    c = np.array(centres, dtype=float).reshape(-1, 2)
+    hw, hh = req.width / 2, req.height / 2
+    return shapely.box(c[:, 0] - hw, c[:, 1] - hh, c[:, 0] + hw, c[:, 1] + hh)
+
+
+@functools.lru_cache(maxsize=1024)
+def _units(prefer: float) -> tuple[XY, ...]:
+    """The unit vectors of :func:`directions` around ``prefer``, nearest first."""
+    return tuple((math.cos(a), math.sin(a)) for a in directions(prefer))
