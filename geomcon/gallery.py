@@ -47,8 +47,8 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
             raise
         pid = sol.problem.id
         files[f"{pid}.json"] = to_json_text(sol)       # answers first: the JSON's stats show the lazy count
-        files[f"{pid}.svg"] = sol.svg()
-        files[f"{pid}.html"] = sol.html()
+        files[f"{pid}.svg"] = svg = sol.svg()
+        files[f"{pid}.html"] = player_page(sol, svg)
         extra = ""
         if "program" in sol.problem.given and sol.problem.given.get("h") is not None:
             files[f"{pid}_motion.svg"] = problem_motion_svg(sol)
@@ -76,6 +76,14 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
         "",
     ])
     return files
+
+
+def player_page(sol: Solution, svg: str) -> str:
+    """``sol.html()`` around the drawing ``svg`` (``sol.svg()``) already rendered: the page embeds that very
+    document, so the gallery draws each figure once."""
+    from .render import render_html
+
+    return render_html(sol.drawing_scene, title=sol.title(), info=sol.info_lines(), svg=svg)
 
 
 def _short(v) -> str:

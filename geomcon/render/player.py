@@ -125,7 +125,7 @@ def step_captions(scene: Scene) -> list[tuple[str, str]]:
     return [scene.caption(group[0].key) for group in scene.frames()]
 
 
-def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] = ()) -> str:
+def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] = (), svg: str | None = None) -> str:
     """The step player page of the whole scene.
 
     Parameters
@@ -136,13 +136,24 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
         Page and drawing title (default: the scene's title).
     info : sequence of str
         Result lines printed under the protocol.
+    svg : str or None
+        The drawing, when it is rendered already: ``render_svg(scene, title=title, info=info)`` (the
+        page embeds exactly that document; passing it saves drawing the scene twice).
 
     Returns
     -------
     str
         One self-contained HTML document.
+
+    Examples
+    --------
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+    >>> render_html(sc, svg=render_svg(sc)) == render_html(sc)
+    True
     """
-    svg = render_svg(scene, title=title, info=info)
+    if svg is None:
+        svg = render_svg(scene, title=title, info=info)
     svg = svg[svg.index("<svg"):]
     steps = json.dumps(step_captions(scene), ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
