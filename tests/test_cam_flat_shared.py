@@ -117,6 +117,12 @@ def test_envelope_terms_kept_only_for_read_only_samples():
     d = sample_grid(((0.0, math.pi), (math.pi, TWO_PI)), 64)
     assert envelope_terms(fam, d) is envelope_terms(fam, d)
     assert envelope_terms(fam, np.array(d)) is not envelope_terms(fam, np.array(d))
+    base = np.array(d)
+    view = base[:]
+    view.flags.writeable = False                # read-only, but its numbers can change through its base
+    first = envelope_terms(fam, view).x.tolist()
+    base += 0.5
+    assert envelope_terms(fam, view).x.tolist() == envelope(_fresh(fam), np.array(view))[0].tolist() != first
     assert bool(np.all(d == np.concatenate(sample_grids(((0.0, math.pi), (math.pi, TWO_PI)), 64))))
     assert [v.tolist() for v in envelope(fam, d)] == [v.tolist() for v in envelope(_fresh(fam), np.array(d))]
 

@@ -1172,7 +1172,7 @@ def envelope_terms(fam: LineFamily, delta) -> EnvelopeTerms:
     (True, 30.0)
     """
     d = np.asarray(delta, dtype=float)
-    keep = not d.flags.writeable
+    keep = not d.flags.writeable and d.base is None        # read-only and owning its numbers: they stay
     if keep:
         hit = fam.memo.get(id(d))
         if hit is not None and hit[0] is d:
