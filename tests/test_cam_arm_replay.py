@@ -1,7 +1,8 @@
 """The eccentric cam's arm replayed on floats and arrays (geomcon/cam/arm_replay.py) against the geometry it
 replays (rotate, circle_circle, the side rule, angle_at): the same bits at random cam angles and shapes, the
 same values or errors where the geometry takes another path (tangency, circles apart, ties), and the same
-largest pressure angles as the search on the geometry (np.vectorize and Brent on it, as before)."""
+largest pressure angles as the search on the geometry (np.vectorize and Brent on it, as before); the twin's
+samples on arrays (geomcon/cam/eccentric.py) against its floats likewise."""
 from __future__ import annotations
 
 import math
@@ -88,3 +89,27 @@ def test_largest_pressure_angle_as_searched_on_the_geometry(seed):
     for lo, hi in ((0.0, float(rng.uniform(1.0, 4.0))), (float(rng.uniform(1.0, 4.0)), 2 * math.pi)):
         old = maximise(np.vectorize(arm.exact), [(lo, hi)], dense=720, g1=arm.exact)
         assert maximise(arm.alpha, [(lo, hi)], dense=720, g1=arm.alpha1) == old
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_twins_samples_on_arrays_equal_its_floats(seed):
+    """The eccentric twin's α samples on arrays (Oscillating._alphas) against its scalar form, and its largest α
+    against the search on np.vectorize (as before): the same bits."""
+    from geomcon.cam.eccentric import Oscillating
+    from geomcon.errors import NotAMechanism
+    rng = np.random.default_rng(500 + seed)
+    R = float(rng.uniform(20, 80))
+    kw = dict(R=R, OA=R * float(rng.uniform(0.1, 0.7)), a=R * float(rng.uniform(1.8, 3.5)), L=R * float(rng.uniform(1.2, 2.8)),
+              rr=R * float(rng.uniform(0.0, 0.4)), rotation=str(rng.choice(["ccw", "cw"])), arm=str(rng.choice(["left", "right"])))
+    if seed % 4 == 0:
+        kw = {k: (round(v) if isinstance(v, float) else v) for k, v in kw.items()}      # integer givens
+    try:
+        cam = Oscillating(**kw)
+    except NotAMechanism:
+        pytest.skip("not an arm that works")
+    f1 = lambda d: cam.alpha(cam.phi_of(math.degrees(d)))                           # noqa: E731
+    d = np.concatenate([rng.uniform(-1.0, 7.0, 500), [0.0, math.radians(cam.rise_angle), 2 * math.pi]])
+    assert cam._alphas(d, f1).tolist() == [f1(x) for x in d.tolist()]
+    for part, (d0, d1) in (("rise", (0.0, cam.rise_angle)), ("return", (cam.rise_angle, 360.0))):
+        old = maximise(np.vectorize(f1), [(math.radians(d0), math.radians(d1))], dense=720, g1=f1).value
+        assert cam.alpha_max(part) == old

@@ -38,7 +38,7 @@ from ..errors import NotAMechanism
 import numpy as np
 
 from .base_radius import bisect_root
-from .profile import maximise
+from .profile import maximise, numpy_is_libm
 
 FOLLOWERS = ("knife", "roller", "flat")
 ROTATIONS = ("ccw", "cw")
@@ -354,7 +354,42 @@ class Oscillating(_Turning):
         """Largest α over the rise or the return: grid, then the peaks refined by Brent's method on floats."""
         d0, d1 = (0.0, self.rise_angle) if part == "rise" else (self.rise_angle, 360.0)
         f1 = lambda d: self.alpha(self.phi_of(math.degrees(d)))           # noqa: E731
-        return maximise(np.vectorize(f1), [(math.radians(d0), math.radians(d1))], dense=SAMPLES, g1=f1).value
+        return maximise(lambda d: self._alphas(d, f1), [(math.radians(d0), math.radians(d1))], dense=SAMPLES,
+                        g1=f1).value
+
+    def _alphas(self, d: np.ndarray, f1: Callable[[float], float]) -> np.ndarray:
+        """``f1`` (α at the cam angle δ in radians, from the lowest position) at every angle of ``d``: on arrays
+        by the operations of :meth:`phi_of`, :meth:`B` and :meth:`alpha` in their order (math.hypot one element
+        at a time; arccos, arctan2 and arcsin numpy's where they are the C library's), the same bits; where
+        math would raise or min(1, |c|) meets a nan, the angles one by one by ``f1`` (np.vectorize, as before).
+
+        >>> cam = Oscillating(R=40.0, OA=20.0, a=90.0, L=70.0, rr=10.0)
+        >>> d = np.linspace(0.0, 6.0, 7)
+        >>> f1 = lambda x: cam.alpha(cam.phi_of(math.degrees(x)))
+        >>> cam._alphas(d, f1).tolist() == [f1(x) for x in d.tolist()]
+        True
+        """
+        d = np.asarray(d, dtype=float)
+        if not all(numpy_is_libm(n) for n in ("arccos", "arctan2", "arcsin")):
+            return np.vectorize(f1, otypes=[float])(d) if d.size else np.zeros(d.shape)
+        OA, a, L, Rp, side = self.OA, self.a, self.L, self.Rp, self.side
+        L2, Rp2 = L ** 2, Rp ** 2                                       # (Python's float powers, as B's)
+        phi = self.phi_low + self.sense * np.radians(np.degrees(d))     # phi_of(degrees(d))
+        with np.errstate(all="ignore"):
+            c, s = np.cos(phi), np.sin(phi)
+            ax, ay = OA * c, OA * s - a
+            dd = np.array([math.hypot(x, y) for x, y in zip(ax.reshape(-1).tolist(), ay.reshape(-1).tolist())],
+                          dtype=float).reshape(d.shape)
+            arg = (L2 + dd * dd - Rp2) / (2 * L * dd)
+            t = np.arctan2(ay, ax) + side * np.arccos(arg)
+            bx, by = L * np.cos(t), a + L * np.sin(t)
+            ax2, ay2 = OA * c, OA * s
+            k = ((ax2 - bx) * bx + (ay2 - by) * (by - a)) / (Rp * L)
+            out = np.degrees(np.arcsin(np.minimum(1.0, np.abs(k))))
+        if not (bool(np.all(np.abs(arg) <= 1.0)) and bool(np.all(dd != 0.0)) and not bool(np.isnan(k).any())
+                and bool(np.all(np.isfinite(out)))):
+            return np.vectorize(f1, otypes=[float])(d) if d.size else np.zeros(d.shape)
+        return out
 
     def cycle(self) -> dict[str, float]:
         """The answers that do not depend on a state."""

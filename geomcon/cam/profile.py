@@ -1273,7 +1273,8 @@ _LIBM: dict[str, bool] = {}
 
 
 def numpy_is_libm(name: str) -> bool:
-    """Whether numpy's float64 loop of the ufunc ``name`` ("power" for the exponents 3 and 1.5, "arctan2") is
+    """Whether numpy's float64 loop of the ufunc ``name`` ("power" for the exponents 3 and 1.5, "arctan2",
+    "arccos", "arcsin") is
     the C library's function, which :mod:`math` calls: numpy reports it dispatches its baseline loop
     (``numpy.lib.introspect``; a SIMD loop of its own, such as SVML on AVX-512, rounds differently), and a few
     hundred values agree. Decided once.
@@ -1300,6 +1301,10 @@ def numpy_is_libm(name: str) -> bool:
             u = x * np.resize([1.0, -1.0, -1.0, 1.0], 256)
             v = x[::-1] * np.resize([1.0, 1.0, -1.0, -1.0], 256)
             ok = all(math.atan2(a, b) == c for a, b, c in zip(u.tolist(), v.tolist(), np.arctan2(u, v).tolist()))
+        elif name in ("arccos", "arcsin"):
+            u = np.random.default_rng(1).uniform(-1.0, 1.0, 256)
+            f = math.acos if name == "arccos" else math.asin
+            ok = all(f(a) == b for a, b in zip(u.tolist(), getattr(np, name)(u).tolist()))
         else:
             ok = False
     _LIBM[name] = ok
