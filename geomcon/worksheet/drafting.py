@@ -1,0 +1,224 @@
+"""The drafting tolerance of an answer: how far a careful drawing at the sheet's scale may land from the
+exact value.
+
+Model. A student lays off every given with a drafting error: a length with ±0.5 mm **on paper** (0.5 mm
+divided by the scale factor in real mm: 1 mm at 1:2), an angle with ±0.5° (a protractor's reading), the
+time-ratio coefficient K through its angle θ = 180°(K − 1)/(K + 1) with ±0.5° (θ is what is drawn), a point
+with ±0.5 mm on paper in x and in y, each boundary between two segments of a cam's motion program with ±0.5°
+(the segment before it grows, the one after shrinks: the program still spans 360°). Then the answer is read
+off the drawing with ±0.5 mm on paper (a length) or ±0.5° (an angle); K is read through θ. A given that is
+not drawn is not perturbed: a length of 0 (a centric follower's offset, nothing to lay off), K = 1 (θ = 0), a
+choice, a count, and the sampling ``tolerance`` of a cam profile.
+
+Propagation. For each drafted quantity i the answer's shift is the central difference of the solve over
+the drafting interval itself, d_i = (a(g_i + δ_i) − a(g_i − δ_i)) / 2: the secant over the interval the
+student can actually land in, so a strongly curved answer is not judged by a derivative at one point, and
+no step size has to be chosen. The errors of separate operations are independent and of either sign, so
+they combine as the root-sum-square (the GUM's law of propagation for uncorrelated inputs),
+tol = √(Σ d_i² + r²), r the reading error. A worst-case sum Σ|d_i| would grade a drawing with six givens as
+if every error had conspired; a single largest term would ignore that they add up. Intermediate
+constructed points (an intersection placed with its own ±0.5 mm) are not propagated separately: their
+sensitivities are not exposed by the scene yet; the reading error of the answer stands in for the last one.
+
+A drafting interval that leaves the recipe's domain (the mechanism ceases to exist within the drawing's
+accuracy) makes the variant undeterminable: :class:`Undeterminable` names the given.
+
+Examples
+--------
+>>> from geomcon.worksheet.spec import AnswerRef
+>>> ab = AnswerRef("AB", "AB", None, "mm")
+>>> g = {"K": 1.5, "CD": 75, "AD": 100, "phi": 45}
+>>> far, near = {"AB": 49.3117990843}, {"AB": 22.5119573574}   # the two designs of issue 12's worked check
+>>> round(shifts("crank_rocker.design_by_K", g, (ab,), far, 1.0)["K (θ)"]["AB"], 2)
+0.22
+>>> round(shifts("crank_rocker.design_by_K", g, (ab,), near, 1.0)["K (θ)"]["AB"], 2)
+0.03
+>>> round(tolerances("crank_rocker.design_by_K", g, (ab,), far, 0.5)["AB"], 3)
+1.149
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Callable, Mapping, Sequence
+
+from ..errors import GeomconError
+from ..recipes import get_recipe
+from .solving import read, solve_given
+from .spec import AnswerRef
+
+PAPER_MM = 0.5
+"""Drafting error of a length laid off or read on paper (mm)."""
+DEGREES = 0.5
+"""Drafting error of an angle laid off or read (degrees)."""
+NOT_DRAWN = frozenset({"tolerance"})
+"""Givens of unit mm or deg that a student never draws."""
+
+
+class Undeterminable(GeomconError):
+    """A drafting interval of a given leaves the recipe's domain: the drawing cannot determine the answer."""
+
+
+@dataclass(frozen=True)
+class Drafted:
+    """One drafted quantity: its name as a report says it, and the givens at its two ends."""
+
+    name: str
+    plus: Mapping[str, Any]
+    minus: Mapping[str, Any]
+
+
+def theta_of_k(k: float) -> float:
+    """θ = 180°(K − 1)/(K + 1).
+
+    >>> theta_of_k(1.5)
+    36.0
+    """
+    return 180.0 * (k - 1.0) / (k + 1.0)
+
+
+def k_of_theta(theta: float) -> float:
+    """K = (180° + θ)/(180° − θ)."""
+    return (180.0 + theta) / (180.0 - theta)
+
+
+def drafted(recipe: str, given: Mapping[str, Any], factor: float) -> list[Drafted]:
+    """Every drafted quantity of a variant with raw givens ``given`` drawn at scale ``factor`` (paper mm per
+    real mm), in the recipe's order of givens.
+
+    >>> [d.name for d in drafted("crank_rocker.design_by_K", {"K": 1.25, "CD": 90, "psi": 40, "BC": 95}, 0.5)]
+    ['K (θ)', 'CD', 'psi', 'BC']
+    >>> d = drafted("crank_rocker.design_by_K", {"K": 1.25, "CD": 90, "psi": 40, "BC": 95}, 0.5)[1]
+    >>> d.plus["CD"], d.minus["CD"]
+    (91.0, 89.0)
+    """
+    rec = get_recipe(recipe)
+    length = PAPER_MM / factor
+    out: list[Drafted] = []
+
+    def with_value(name: str, value: Any) -> dict[str, Any]:
+        g = dict(given)
+        g[name] = value
+        return g
+
+    for q in rec.givens:
+        v = given.get(q.name)
+        if v is None or q.name in NOT_DRAWN:
+            continue
+        if q.unit in ("mm", "deg") and _num(v):
+            if q.unit == "mm" and float(v) == 0.0:
+                continue
+            d = length if q.unit == "mm" else DEGREES
+            out.append(Drafted(q.name, with_value(q.name, float(v) + d), with_value(q.name, float(v) - d)))
+        elif q.unit == "" and q.name == "K" and _num(v) and float(v) != 1.0:
+            th = theta_of_k(float(v))
+            out.append(Drafted("K (θ)", with_value("K", k_of_theta(th + DEGREES)),
+                               with_value("K", k_of_theta(th - DEGREES))))
+        elif q.unit == "point" and isinstance(v, (list, tuple)) and len(v) == 2:
+            for axis, name in ((0, "x"), (1, "y")):
+                p, m = list(v), list(v)
+                p[axis], m[axis] = float(v[axis]) + length, float(v[axis]) - length
+                out.append(Drafted(f"{q.name}.{name}", with_value(q.name, p), with_value(q.name, m)))
+        elif q.unit in ("mm[]", "deg[]") and isinstance(v, (list, tuple)):
+            d = length if q.unit == "mm[]" else DEGREES
+            for i, x in enumerate(v):
+                if not _num(x) or (q.unit == "mm[]" and float(x) == 0.0):
+                    continue
+                p, m = list(v), list(v)
+                p[i], m[i] = float(x) + d, float(x) - d
+                out.append(Drafted(f"{q.name}[{i}]", with_value(q.name, p), with_value(q.name, m)))
+        elif q.unit == "table[]" and isinstance(v, (list, tuple)):
+            for i in range(len(v) - 1):
+                a, b = v[i].get("angle"), v[i + 1].get("angle")
+                if not (_num(a) and _num(b)):
+                    continue
+                plus = [dict(r) for r in v]
+                minus = [dict(r) for r in v]
+                plus[i]["angle"], plus[i + 1]["angle"] = float(a) + DEGREES, float(b) - DEGREES
+                minus[i]["angle"], minus[i + 1]["angle"] = float(a) - DEGREES, float(b) + DEGREES
+                out.append(Drafted(f"{q.name} boundary {i + 1}|{i + 2}", with_value(q.name, plus),
+                                   with_value(q.name, minus)))
+    return out
+
+
+def _num(v: Any) -> bool:
+    return not isinstance(v, bool) and isinstance(v, (int, float))
+
+
+def reading(ref: AnswerRef, value: float, factor: float) -> float:
+    """The error of reading an answer off the drawing: ±0.5 mm on paper, ±0.5°, K through θ; 0 for other
+    ratios (computed, not read).
+
+    >>> from geomcon.worksheet.spec import AnswerRef
+    >>> reading(AnswerRef("AB", "AB", None, "mm"), 20.0, 0.5), reading(AnswerRef("K", "K", None, ""), 1.5, 1.0)
+    (1.0, 0.008680555555555556)
+    """
+    if ref.unit == "mm":
+        return PAPER_MM / factor
+    if ref.unit == "deg":
+        return DEGREES
+    if ref.name == "K" and value >= 1.0:
+        th = theta_of_k(value)
+        return 360.0 / (180.0 - th) ** 2 * DEGREES
+    return 0.0
+
+
+def nearest(candidates: Sequence[Mapping[str, float | None]], nominal: Mapping[str, float]) -> Mapping[str, float] | None:
+    """The candidate solution closest to ``nominal`` (worst relative difference over its answers), among those
+    holding every answer; None when none does."""
+    best, best_cost = None, math.inf
+    for c in candidates:
+        if any(c.get(k) is None for k in nominal):
+            continue
+        cost = max((abs(c[k] - v) / max(abs(v), 1e-300) for k, v in nominal.items()), default=0.0)
+        if cost < best_cost:
+            best, best_cost = c, cost
+    return best
+
+
+def shifts(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
+           factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, dict[str, float]]:
+    """Each drafted quantity's shift of each asked answer, d_i = (a(g_i + δ_i) − a(g_i − δ_i)) / 2, in the
+    solution nearest the chosen one (``nominal``: the asked answers' values there) at both ends.
+
+    Raises
+    ------
+    Undeterminable
+        When a drafting interval leaves the recipe's domain or loses the answer.
+    """
+    out: dict[str, dict[str, float]] = {}
+    for d in drafted(recipe, given, factor):
+        ends = []
+        for g in (d.plus, d.minus):
+            try:
+                cands = read(solve(recipe, g), refs)
+            except GeomconError as exc:
+                raise Undeterminable(f"{d.name} ± its drafting error leaves the domain: {exc}") from None
+            best = nearest(cands, nominal)
+            if best is None:
+                raise Undeterminable(f"{d.name} ± its drafting error loses an asked answer")
+            ends.append(best)
+        out[d.name] = {r.text: (ends[0][r.text] - ends[1][r.text]) / 2.0 for r in refs}
+    return out
+
+
+def tolerances(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
+               factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, float]:
+    """The drafting tolerance of each asked answer (``refs``, whose values in the chosen solution are
+    ``nominal``) of a variant drawn at ``factor`` paper mm per real mm: √(Σ d_i² + r²) (:func:`shifts`,
+    :func:`reading`).
+
+    Raises
+    ------
+    Undeterminable
+        When a drafting interval leaves the recipe's domain or loses the answer.
+    """
+    sums = {r.text: reading(r, nominal[r.text], factor) ** 2 for r in refs}
+    for by_ref in shifts(recipe, given, refs, nominal, factor, solve=solve).values():
+        for k, d in by_ref.items():
+            sums[k] += d * d
+    return {k: math.sqrt(s) for k, s in sums.items()}
+
+
+__all__ = ["DEGREES", "Drafted", "NOT_DRAWN", "PAPER_MM", "Undeterminable", "drafted", "k_of_theta", "nearest",
+           "reading", "shifts", "theta_of_k", "tolerances"]

@@ -1,0 +1,296 @@
+"""Statement templates (English and Chinese) and the one way they are filled.
+
+A template is plain text with ``{given}`` placeholders; :func:`fill` replaces each by the variant's value as
+a teacher writes it (``1.25``, ``90``, a motion program in words). Templates, and a spec's own statements,
+are never evaluated: no ``str.format`` (which reads attributes and indexes), only a scan for ``{name}``,
+``{{`` and ``}}``.
+
+Each recipe form has a default template; the sentence asking for the answers (:func:`find_sentence`) and,
+when a variant has several valid solutions, the sentence naming the textbook's choice (:data:`CHOICE`) are
+added to it. A recipe without a template of its own gets :func:`generic_template` (its title and its givens).
+
+Examples
+--------
+>>> fill("K = {K}, CD = {CD} mm {{sic}}", {"K": "1.25", "CD": "90"})
+'K = 1.25, CD = 90 mm {sic}'
+>>> en, zh = default_template("crank_rocker.design_by_K", {"K": 1.25, "CD": 90, "psi": 40, "BC": 95})
+>>> fill(en, shown_givens("crank_rocker.design_by_K", {"K": 1.25, "CD": 90, "psi": 40, "BC": 95}, "en"))
+'Design a crank-rocker ABCD by its time-ratio coefficient K = 1.25: the rocker CD = 90 mm swings through ψ = 40° between its extreme positions DC1 and DC2, and the coupler is BC = 95 mm.'
+"""
+from __future__ import annotations
+
+import re
+from typing import Any, Mapping
+
+_TOKEN = re.compile(r"\{\{|\}\}|\{([A-Za-z_][A-Za-z0-9_]*)\}")
+
+
+def fill(template: str, values: Mapping[str, str]) -> str:
+    """``template`` with each ``{name}`` replaced by ``values[name]`` and ``{{``, ``}}`` by braces; nothing
+    else is interpreted. A placeholder missing from ``values`` raises KeyError (specs are checked first)."""
+    def one(m: re.Match) -> str:
+        t = m.group(0)
+        if t == "{{":
+            return "{"
+        if t == "}}":
+            return "}"
+        return values[m.group(1)]
+    return _TOKEN.sub(one, template)
+
+
+# ------------------------------------------------------------------------------------------- values in words
+LAWS = {"uniform": ("uniform velocity", "等速运动"), "parabolic": ("constant acceleration (parabolic)", "等加速等减速运动"),
+        "cosine": ("cosine acceleration (simple harmonic)", "余弦加速度运动"),
+        "cycloidal": ("sine acceleration (cycloidal)", "正弦加速度运动"),
+        "poly345": ("3-4-5 polynomial", "3-4-5 多项式运动")}
+FOLLOWERS = {"knife": ("knife-edge", "尖顶"), "roller": ("roller", "滚子"), "flat": ("flat-faced", "平底")}
+ROTATION = {"ccw": ("counter-clockwise", "逆时针"), "cw": ("clockwise", "顺时针")}
+
+
+def number(x: Any) -> str:
+    """A number as a teacher writes it: ``90``, ``1.25``, ``0.1``.
+
+    >>> number(90.0), number(1.25), number(2), number(1e-7)
+    ('90', '1.25', '2', '1e-07')
+    """
+    if isinstance(x, bool):
+        return "true" if x else "false"
+    if isinstance(x, int):
+        return str(x)
+    x = float(x)
+    if x == int(x) and abs(x) < 1e15:
+        return str(int(x))
+    return repr(x) if 1e-4 <= abs(x) < 1e15 else f"{x:g}"
+
+
+def program_words(program: Any, lang: str) -> str:
+    """A cam's motion program in words.
+
+    >>> program_words([{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 240}], "en")
+    'rise through 120° with cosine acceleration (simple harmonic) motion, dwell 240°'
+    >>> program_words([{"kind": "rise", "angle": 120, "law": "cosine"}, {"kind": "dwell", "angle": 60},
+    ...                {"kind": "return", "angle": 90, "law": "cycloidal"}, {"kind": "dwell", "angle": 90}], "zh")
+    '推程运动角 120°(余弦加速度运动),远休止角 60°,回程运动角 90°(正弦加速度运动),近休止角 90°'
+    """
+    parts = []
+    last = None
+    for row in program if isinstance(program, (list, tuple)) else ():
+        kind, angle, law = row.get("kind"), number(row.get("angle", 0)), row.get("law", "")
+        en_law, zh_law = LAWS.get(law, (str(law), str(law)))
+        if lang == "zh":
+            if kind == "dwell":
+                word = "远休止角" if last == "rise" else "近休止角"
+                parts.append(f"{word} {angle}°")
+            else:
+                parts.append(f"{'推程运动角' if kind == 'rise' else '回程运动角'} {angle}°({zh_law})")
+        else:
+            if kind == "dwell":
+                parts.append(f"dwell {angle}°")
+            else:
+                parts.append(f"{kind} through {angle}° with {en_law} motion")
+        last = kind
+    return (",".join(parts)) if lang == "zh" else ", ".join(parts)
+
+
+def shown_givens(recipe: str, given: Mapping[str, Any], lang: str) -> dict[str, str]:
+    """Every given of a variant as text for a statement (numbers as written, a program, a follower, a sense of
+    rotation in words)."""
+    out: dict[str, str] = {}
+    k = 1 if lang == "zh" else 0
+    for name, v in given.items():
+        if name == "program":
+            out[name] = program_words(v, lang)
+        elif name == "follower":
+            out[name] = FOLLOWERS.get(v, (str(v), str(v)))[k]
+        elif name == "rotation":
+            out[name] = ROTATION.get(v, (str(v), str(v)))[k]
+        elif isinstance(v, (list, tuple)):
+            out[name] = ", ".join(number(x) for x in v)
+        elif isinstance(v, str):
+            out[name] = v
+        elif v is not None:
+            out[name] = number(v)
+    return out
+
+
+# ------------------------------------------------------------------------------------------- templates
+_DBK_INTRO = ("Design a crank-rocker ABCD by its time-ratio coefficient K = {K}: ",
+              "按行程速比系数 K = {K} 设计曲柄摇杆机构 ABCD:")
+_DBK_POSITIONS = ("the rocker CD = {CD} mm swings through ψ = {psi}° between its extreme positions DC1 and DC2",
+                  "摇杆长 CD = {CD} mm,摆角 ψ = {psi}°(极限位置 DC1、DC2)")
+_DBK_DIRECTIONS = ("the rocker CD = {CD} mm has its extreme positions DC1 and DC2 at {phi1}° and {phi2}° "
+                   "counter-clockwise from the horizontal through D",
+                   "摇杆长 CD = {CD} mm,其两极限位置 DC1、DC2 与过 D 的水平线逆时针成 {phi1}° 和 {phi2}°")
+_DBK_CLOSING = {
+    "BC": (", and the coupler is BC = {BC} mm.", ",连杆长 BC = {BC} mm。"),
+    "AB": (", and the crank is AB = {AB} mm.", ",曲柄长 AB = {AB} mm。"),
+    "AC1": (", and the pivot A lies AC1 = {AC1} mm from C1.", ",曲柄转动中心 A 与 C1 相距 AC1 = {AC1} mm。"),
+    "frame_line": (", and the crank's pivot A lies on the horizontal through D.", ",曲柄转动中心 A 位于过 D 的水平线上。"),
+    "AD": (", and the frame is AD = {AD} mm.", ",机架长 AD = {AD} mm。"),
+}
+
+TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
+    "crank_rocker.design_by_K": {
+        **{f"psi+{c}": (_DBK_INTRO[0] + _DBK_POSITIONS[0] + e, _DBK_INTRO[1] + _DBK_POSITIONS[1] + z)
+           for c, (e, z) in _DBK_CLOSING.items()},
+        **{f"phi1+{c}": (_DBK_INTRO[0] + _DBK_DIRECTIONS[0] + e, _DBK_INTRO[1] + _DBK_DIRECTIONS[1] + z)
+           for c, (e, z) in _DBK_CLOSING.items()},
+        "frame": ("Design a crank-rocker ABCD by its time-ratio coefficient K = {K}: the frame is AD = {AD} mm, "
+                  "the rocker CD = {CD} mm, and in one extreme position the rocker makes ∠ADC1 = {phi}° with the frame.",
+                  "按行程速比系数 K = {K} 设计曲柄摇杆机构 ABCD:机架长 AD = {AD} mm,摇杆长 CD = {CD} mm,"
+                  "摇杆的一个极限位置与机架的夹角 ∠ADC1 = {phi}°。"),
+        "links": ("Design a crank-rocker ABCD by its time-ratio coefficient K = {K}: the crank is AB = {AB} mm, the "
+                  "coupler BC = {BC} mm and the rocker swings through ψ = {psi}°.",
+                  "按行程速比系数 K = {K} 设计曲柄摇杆机构 ABCD:曲柄长 AB = {AB} mm,连杆长 BC = {BC} mm,"
+                  "摇杆摆角 ψ = {psi}°。"),
+    },
+    "crank_rocker.extremes": {
+        "": ("A crank-rocker ABCD has the crank AB = {AB} mm, the coupler BC = {BC} mm, the rocker CD = {CD} mm "
+             "and the frame AD = {AD} mm. Draw the rocker's two extreme positions.",
+             "曲柄摇杆机构 ABCD 中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,摇杆 CD = {CD} mm,机架 AD = {AD} mm。"
+             "作出摇杆的两个极限位置。"),
+    },
+    "crank_slider.design_by_K": {
+        "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
+              "H = {H} mm and the offset e = {e} mm.",
+              "按行程速比系数 K = {K} 设计偏置曲柄滑块机构:滑块行程 H = {H} mm,偏距 e = {e} mm。"),
+        "AB": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
+               "H = {H} mm and the crank AB = {AB} mm.",
+               "按行程速比系数 K = {K} 设计偏置曲柄滑块机构:滑块行程 H = {H} mm,曲柄长 AB = {AB} mm。"),
+        "BC": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
+               "H = {H} mm and the connecting rod BC = {BC} mm.",
+               "按行程速比系数 K = {K} 设计偏置曲柄滑块机构:滑块行程 H = {H} mm,连杆长 BC = {BC} mm。"),
+    },
+    "cam.translating": {
+        "centric": ("A disc cam turning {rotation} drives a translating {follower} follower whose axis passes "
+                    "through the cam's centre. Base circle r0 = {r0} mm, stroke h = {h} mm; motion program: "
+                    "{program}. Draw the cam profile by the inversion method.",
+                    "一盘形凸轮{rotation}转动,推动对心直动{follower}从动件。基圆半径 r0 = {r0} mm,行程 h = {h} mm;"
+                    "运动规律:{program}。试用反转法绘制凸轮轮廓。"),
+        "offset": ("A disc cam turning {rotation} drives a translating {follower} follower whose axis is offset "
+                   "e = {e} mm to the right of the cam's centre. Base circle r0 = {r0} mm, stroke h = {h} mm; "
+                   "motion program: {program}. Draw the cam profile by the inversion method.",
+                   "一盘形凸轮{rotation}转动,推动偏置直动{follower}从动件,从动件导路位于凸轮回转中心右侧,"
+                   "偏距 e = {e} mm。基圆半径 r0 = {r0} mm,行程 h = {h} mm;运动规律:{program}。"
+                   "试用反转法绘制凸轮轮廓。"),
+    },
+}
+"""Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
+
+ROLLER = (" The roller's radius is rr = {rr} mm.", "滚子半径 rr = {rr} mm。")
+"""Added to a cam statement when the follower has a roller."""
+
+CHOICE: dict[str, tuple[str, str]] = {
+    "crank_rocker.design_by_K": (
+        "Where several designs satisfy the data, take the one with C1 the folded extreme position "
+        "(AC1 = BC − AB); of those, the one with A on D's side of C1C2; then the shorter frame AD.",
+        "若有多解,取 C1 为曲柄与连杆重叠共线的极限位置(AC1 = BC − AB)者;其中取 A 位于 C1C2 靠 D 一侧者;"
+        "再取机架 AD 较短者。"),
+}
+"""The sentence naming the textbook's choice among several valid solutions, per recipe (the recipe's own
+order of preference, :func:`geomcon.recipes.common.preference`)."""
+
+
+def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
+    """The key of :data:`TEMPLATES` [recipe] that fits these givens, or None.
+
+    >>> template_form("crank_rocker.design_by_K", {"K": 1.5, "CD": 75, "AD": 100, "phi": 45})
+    'frame'
+    >>> template_form("cam.translating", {"follower": "roller", "r0": 40, "e": 0, "h": 20})
+    'centric'
+    """
+    has = {k for k, v in given.items() if v is not None and v is not False}
+    if recipe == "crank_rocker.design_by_K":
+        if "CD" not in has:
+            return "links"
+        if "phi" in has:
+            return "frame"
+        closing = [c for c in ("BC", "AB", "AC1", "frame_line", "AD") if c in has]
+        head = "psi" if "psi" in has else "phi1"
+        return f"{head}+{closing[0]}" if len(closing) == 1 else None
+    if recipe == "crank_slider.design_by_K":
+        return next((k for k in ("e", "AB", "BC") if k in has), None)
+    if recipe == "cam.translating":
+        return "offset" if given.get("e") not in (None, 0, 0.0) else "centric"
+    if recipe in TEMPLATES:
+        return ""
+    return None
+
+
+def default_template(recipe: str, given: Mapping[str, Any], title: str = "") -> tuple[str, str]:
+    """The (English, Chinese) template of a variant: the recipe form's own, else :func:`generic_template`."""
+    form = template_form(recipe, given)
+    if form is None or form not in TEMPLATES.get(recipe, {}):
+        return generic_template(title or recipe, given)
+    en, zh = TEMPLATES[recipe][form]
+    if recipe.startswith("cam.") and given.get("follower") == "roller" and given.get("rr") is not None:
+        en, zh = en + ROLLER[0], zh + ROLLER[1]
+    return en, zh
+
+
+def generic_template(title: str, given: Mapping[str, Any]) -> tuple[str, str]:
+    """A statement for any recipe: its title and its givens.
+
+    >>> generic_template("Guide-bar: extreme positions", {"AB": 100, "AC": 200})[0]
+    'Guide-bar: extreme positions. Given AB = {AB}, AC = {AC}.'
+    """
+    names = [k for k, v in given.items() if v is not None]
+    listed = ", ".join(f"{k} = {{{k}}}" for k in names)
+    safe = title.replace("{", "{{").replace("}", "}}")
+    return f"{safe}. Given {listed}.", f"{safe}。已知 {listed}。"
+
+
+# ------------------------------------------------------------------------------------------- the question
+ANSWER_WORDS: dict[str, tuple[str, str]] = {
+    "AB": ("the crank AB", "曲柄长 AB"), "BC": ("the coupler BC", "连杆长 BC"), "AD": ("the frame AD", "机架长 AD"),
+    "CD": ("the rocker CD", "摇杆长 CD"), "AC1": ("the distance AC1", "AC1"), "AC2": ("the distance AC2", "AC2"),
+    "e": ("the offset e", "偏距 e"), "H": ("the stroke H", "行程 H"),
+    "theta": ("the crank angle between the extreme positions θ", "极位夹角 θ"),
+    "psi": ("the rocker's swing ψ", "摇杆摆角 ψ"), "K": ("the time-ratio coefficient K", "行程速比系数 K"),
+    "gamma_min": ("the smallest transmission angle γmin", "最小传动角 γmin"),
+    "alpha_max": ("the largest pressure angle αmax", "最大压力角 αmax"),
+    "angle_C1AD": ("the angle ∠C1AD", "∠C1AD"), "angle_C2AD": ("the angle ∠C2AD", "∠C2AD"),
+    "gamma_1": ("the transmission angle γ1", "传动角 γ1"), "gamma_2": ("the transmission angle γ2", "传动角 γ2"),
+    "alpha_max_rise": ("the largest pressure angle of the rise αmax", "推程最大压力角 αmax"),
+    "delta_alpha_max_rise": ("the cam angle δ where it occurs", "其所在凸轮转角 δ"),
+    "alpha_max_return": ("the largest pressure angle of the return α′max", "回程最大压力角 α′max"),
+    "delta_alpha_max_return": ("the cam angle δ where it occurs", "其所在凸轮转角 δ"),
+    "rho_min_pitch": ("the smallest radius of curvature of the pitch curve ρmin", "理论廓线最小曲率半径 ρmin"),
+    "rho_min_actual": ("the smallest radius of curvature of the profile ρa,min", "实际廓线最小曲率半径 ρa,min"),
+}
+"""How a statement names an asked answer (English, Chinese); others are named by their answer name."""
+
+
+def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: str) -> str:
+    """How the statement names an asked answer; ``s[i]`` and ``alpha[i]`` name the cam angle ``at[i]``.
+
+    >>> answer_words("s", 1, {"at": [30, 60]}, "en"), answer_words("alpha", 0, {"at": [30]}, "zh")
+    ('the displacement s at δ = 60°', 'δ = 30° 时的压力角 α')
+    """
+    k = 1 if lang == "zh" else 0
+    if index is not None:
+        at = given.get("at") or ()
+        where = f"δ = {number(at[index])}°" if index < len(at) else f"[{index}]"
+        if name == "s":
+            return (f"the displacement s at {where}", f"{where} 时的位移 s")[k]
+        if name == "alpha":
+            return (f"the pressure angle α at {where}", f"{where} 时的压力角 α")[k]
+        return f"{name} ({where})"
+    return ANSWER_WORDS.get(name, (name, name))[k]
+
+
+def find_sentence(words: list[str], lang: str) -> str:
+    """The sentence asking for the answers.
+
+    >>> find_sentence(["the crank AB", "the frame AD"], "en"), find_sentence(["曲柄长 AB"], "zh")
+    ('Find the crank AB and the frame AD.', '求曲柄长 AB。')
+    """
+    if lang == "zh":
+        return "求" + "、".join(words) + "。"
+    if len(words) == 1:
+        return f"Find {words[0]}."
+    return "Find " + ", ".join(words[:-1]) + f" and {words[-1]}."
+
+
+__all__ = ["ANSWER_WORDS", "CHOICE", "TEMPLATES", "answer_words", "default_template", "fill", "find_sentence",
+           "generic_template", "number", "program_words", "shown_givens", "template_form"]
