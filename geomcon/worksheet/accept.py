@@ -1,0 +1,202 @@
+"""Whether a variant may go on a sheet, and its key if so.
+
+A variant is judged by these checks, cheapest first; the first that fails is its rejection reason
+(:data:`REASONS`, the codes the statistics count):
+
+``invalid``            its givens are refused as a problem file's would be (a range, a form of the recipe);
+``no_mechanism``       the recipe does not solve it (no crank, circles that do not meet …);
+``missing_answer``     an asked or required answer does not exist in this form;
+``several_solutions``  several valid solutions, and the statement does not name the textbook's choice (the
+                       default statements do, for every recipe with a sentence in :data:`~.statements.CHOICE`;
+                       a spec's own statement must hold ``{choice}``);
+``require``            a ``[require]`` bound fails;
+``borderline``         the construction warns (Grashof equality, a rod perpendicular to its guide …);
+``twin``               the construction disagrees with the analytic twin;
+``fit``                the construction does not fit the sheet at a standard scale (or at the spec's ``scale``);
+``crossing``           an intersection the student constructs crosses at less than 20°;
+``crowded``            two labelled points lie closer than 4 mm on paper;
+``undeterminable``     a drafting interval leaves the recipe's domain;
+``tolerance``          an asked answer's drafting tolerance exceeds 5 % of it (``max_tol_rel``).
+
+The figure of each exercise is drawn at the largest standard scale at which its extent, with
+:data:`FIGURE_MARGIN` around it, fits the sheet (either orientation) below a band of :data:`TEXT_BAND` mm for
+the statement and the answer boxes.
+
+Examples
+--------
+>>> from geomcon.paper import PAPERS
+>>> from geomcon.worksheet.spec import parse_spec
+>>> ex = parse_spec('''
+... [[exercise]]
+... recipe = "crank_rocker.design_by_K"
+... ask = ["AB", "AD"]
+... [exercise.given]
+... K = 1.25
+... CD = 90
+... psi = 40
+... BC = [95, 300]
+... ''').exercises[0]
+>>> ok = judge(ex, 0, PAPERS["A4"])
+>>> str(ok.scale), [(a.ref.text, round(a.value, 3), round(a.tol, 2)) for a in ok.answers], ok.several
+('1:2', [('AB', 26.389, 1.2), ('AD', 90.0, 1.93)], True)
+>>> judge(ex, 1, PAPERS["A4"]).reason
+'no_mechanism'
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from ..errors import GeomconError, ProblemError
+from ..paper import Paper, Scale, Sheet, best_fit, choose_scale
+from .drafting import Undeterminable, tolerances
+from .readability import MIN_CROSSING, MIN_POINT_GAP, closest_points, crossings, extent
+from .solving import read, solve_given
+from .spec import AnswerRef, Exercise
+from .statements import CHOICE
+
+REASONS = ("invalid", "no_mechanism", "missing_answer", "several_solutions", "require", "borderline", "twin",
+           "fit", "crossing", "crowded", "undeterminable", "tolerance")
+"""Rejection codes, in the order the checks run."""
+
+TEXT_BAND = 60.0
+"""Paper mm of a sheet's height kept for an exercise's statement and answer boxes."""
+FIGURE_MARGIN = 8.0
+"""Paper mm kept free around a figure (labels, dimension lines)."""
+
+
+@dataclass(frozen=True)
+class AnswerKey:
+    """One asked answer of an accepted variant: its exact value, its unit, the tolerance it is graded at (the
+    spec's rule, else the drafting one), the drafting tolerance, and the scale its value is written at."""
+
+    ref: AnswerRef
+    value: float
+    tol: float
+    drafting_tol: float
+    scale: float
+
+
+@dataclass(frozen=True)
+class Accepted:
+    """An accepted variant: pool index, raw givens, the sheet and scale its figure is drawn at, its answers;
+    ``several`` when it has several valid solutions (its statement names the textbook's choice)."""
+
+    index: int
+    given: Mapping[str, Any]
+    scale: Scale
+    sheet: Sheet
+    answers: tuple[AnswerKey, ...]
+    several: bool
+
+    reason = None
+
+
+@dataclass(frozen=True)
+class Rejected:
+    """A rejected variant: pool index, reason code (:data:`REASONS`) and a line saying why with the numbers."""
+
+    index: int
+    reason: str
+    detail: str
+
+
+def _refs(ex: Exercise) -> tuple[AnswerRef, ...]:
+    """The asked answers, then the required ones not asked."""
+    asked = {a.text for a in ex.ask}
+    return ex.ask + tuple({b.answer.text: b.answer for b in ex.require if b.answer.text not in asked}.values())
+
+
+def names_choice(ex: Exercise) -> bool:
+    """Whether the exercise's statement names the textbook's choice among several solutions."""
+    if ex.recipe not in CHOICE:
+        return False
+    if ex.statement is None:
+        return True
+    return all("{choice}" in t.replace("{{", "").replace("}}", "") for t in ex.statement.values())
+
+
+def fit(ex: Exercise, box: tuple[float, float, float, float], paper: Paper) -> tuple[Scale, Sheet]:
+    """The scale and sheet of a figure of model ``box``: the spec's scale on the first orientation it fits,
+    else the largest standard scale (:func:`geomcon.paper.best_fit`). ValueError when it does not fit."""
+    size = (box[2] - box[0], box[3] - box[1])
+    if ex.scale is None:
+        return best_fit(size, paper, TEXT_BAND, margin=FIGURE_MARGIN)
+    for orientation in ("portrait", "landscape"):
+        sheet = paper.sheet(orientation)
+        aw, ah = sheet.area
+        try:
+            choose_scale(size, (aw, ah - TEXT_BAND), margin=FIGURE_MARGIN, series=(ex.scale,))
+            return ex.scale, sheet
+        except ValueError:
+            continue
+    raise ValueError(f"a figure of {size[0]:.4g} × {size[1]:.4g} mm does not fit {paper.name} at {ex.scale}")
+
+
+def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
+    """Judge variant ``index`` of exercise ``ex`` on ``paper`` (see the module for the checks)."""
+    given = ex.given_of(index)
+    refs = _refs(ex)
+    try:
+        sol = solve_given(ex.recipe, given)
+        cands = read(sol, refs)
+    except ProblemError as exc:
+        return Rejected(index, "invalid", str(exc))
+    except GeomconError as exc:
+        return Rejected(index, "no_mechanism", str(exc))
+    chosen = cands[0]
+    gone = [r.text for r in refs if chosen[r.text] is None]
+    if gone:
+        return Rejected(index, "missing_answer", f"answer '{gone[0]}' does not exist for these givens")
+    several = len(cands) > 1
+    if several and not names_choice(ex):
+        return Rejected(index, "several_solutions", f"{len(cands)} valid solutions and the statement does not name "
+                                                    "the textbook's choice")
+    for b in ex.require:
+        x = chosen[b.answer.text]
+        if not b.holds(x):
+            return Rejected(index, "require", f"{b.answer.text} = {x:.6g}, required {b.text()}")
+    try:
+        warned = sol.construction_warnings
+        if warned:
+            return Rejected(index, "borderline", warned[0])
+        if not sol.ok:
+            bad = next(r for r in sol.checks if not r["ok"])
+            return Rejected(index, "twin", f"{bad['quantity']}: construction {bad['construction']!r} vs analytic "
+                                           f"{bad['analytic']!r}")
+        names = [r.name for r in ex.ask]
+        box = extent(sol, names)
+        try:
+            scale, sheet = fit(ex, box, paper)
+        except ValueError as exc:
+            return Rejected(index, "fit", str(exc))
+        flat = [(k, cap, a) for k, cap, a in crossings(sol, names) if a < MIN_CROSSING - 1e-9]
+        if flat:
+            k, cap, a = min(flat, key=lambda t: t[2])
+            return Rejected(index, "crossing", f"step '{k}' ({cap}) crosses at {a:.3g}° < {MIN_CROSSING:g}°")
+        close = closest_points(sol)
+        if close is not None and scale.to_paper(close[2]) < MIN_POINT_GAP:
+            return Rejected(index, "crowded", f"points {close[0]} and {close[1]} lie {scale.to_paper(close[2]):.3g} mm "
+                                              f"apart on paper at {scale} (at least {MIN_POINT_GAP:g} mm)")
+        nominal = {r.text: chosen[r.text] for r in ex.ask}
+        try:
+            tols = tolerances(ex.recipe, given, ex.ask, nominal, scale.factor)
+        except Undeterminable as exc:
+            return Rejected(index, "undeterminable", str(exc))
+    except GeomconError as exc:
+        return Rejected(index, "no_mechanism", str(exc))
+    out = []
+    for r in ex.ask:
+        v, t = nominal[r.text], tols[r.text]
+        if t > ex.max_tol_rel * abs(v):
+            return Rejected(index, "tolerance", f"{r.text} = {v:.6g} is determined by a drawing at {scale} only to "
+                                                f"±{t:.3g} ({100 * t / abs(v) if v else float('inf'):.3g} %, "
+                                                f"at most {100 * ex.max_tol_rel:g} %)")
+        rule = ex.tol.get(r.text)
+        graded = rule.of(v) if rule is not None else t
+        out.append(AnswerKey(r, v, graded, t, sol.unit_scale(r.unit)))
+    return Accepted(index, given, scale, sheet, tuple(out), several)
+
+
+__all__ = ["Accepted", "AnswerKey", "FIGURE_MARGIN", "REASONS", "Rejected", "TEXT_BAND", "fit", "judge",
+           "names_choice"]
