@@ -31,7 +31,6 @@ from __future__ import annotations
 import math
 import random
 import statistics
-import subprocess
 import sys
 import time
 from dataclasses import dataclass
@@ -42,6 +41,7 @@ from ..batch import solve_batch
 from ..problems import load_problem, problem_from_dict
 from ..recipes import get_recipe
 from ..solve import solve
+from .clock import child_seconds, clock
 from .cam_plain import CAM_PLAIN, covered
 from .plain import PLAIN
 from .report import fmt_seconds, format_table
@@ -105,10 +105,10 @@ def median_time(fn: Callable[[], Any], *, number: int, repeat: int) -> float:
         fn()
     runs = []
     for _ in range(repeat):
-        t0 = time.perf_counter()
+        t0 = clock()
         for _ in range(number):
             fn()
-        runs.append((time.perf_counter() - t0) / number)
+        runs.append((clock() - t0) / number)
     return statistics.median(runs)
 
 
@@ -176,12 +176,7 @@ def process_rows(quick: bool) -> list[LeanRow]:
     repeat = 3 if quick else 9
 
     def run(*args: str) -> float:
-        times = []
-        for _ in range(repeat):
-            t0 = time.perf_counter()
-            subprocess.run([sys.executable, *args], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-            times.append(time.perf_counter() - t0)
-        return statistics.median(times)
+        return statistics.median(child_seconds([sys.executable, *args]) for _ in range(repeat))
 
     base = run("-c", "pass")
     t = run("-m", "geomcon", "solve", str(path))

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import gc
 import math
-import time
 import tracemalloc
 from dataclasses import dataclass
 from functools import partial
@@ -28,6 +27,7 @@ from ..problems import problem_from_dict, validate_given
 from ..recipes import get_recipe
 from ..solve import solve
 from ..taped import construct_taped
+from .clock import clock
 from .sweep import SWEEPS
 
 T = TypeVar("T")
@@ -120,9 +120,9 @@ def best_time(fn: Callable[[], T], repeat: int) -> tuple[float, T]:
     gc.disable()
     try:
         for _ in range(max(1, repeat)):
-            t0 = time.perf_counter()
+            t0 = clock()
             result = fn()
-            best = min(best, time.perf_counter() - t0)
+            best = min(best, clock() - t0)
     finally:
         if was_enabled:
             gc.enable()
