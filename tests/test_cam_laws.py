@@ -91,3 +91,33 @@ def test_peak1_is_the_largest_slope():
         f1 = np.abs(lw.derivatives(x)[1])
         assert f1.max() <= lw.peak1 and f1.max() >= lw.peak1 - 1e-9
         assert max(abs(lw.fn1(v)[1]) for v in x[::97].tolist()) <= lw.peak1
+
+
+def test_a_segment_angle_passes_the_checks_every_given_passes():
+    """_angle's shortcut for a plain number in range against the full checks (problems.check_number, then
+    ≥ MIN_ANGLE): the same angle or the same refusal for every kind of value."""
+    from geomcon.cam.program import MIN_ANGLE, _DEG_MAX, _angle
+    from geomcon.errors import GeomconError
+    from geomcon.problems import RANGES, check_number
+    assert _DEG_MAX == RANGES["deg"][1]
+
+    def full(value):
+        angle = check_number("deg", value, "p[0].angle")
+        if not angle >= MIN_ANGLE:
+            raise NotAMechanism(f"p[0].angle must be ≥ {MIN_ANGLE:g}° (degrees of cam rotation), got {angle:g}")
+        return angle
+
+    def outcome(fn, value):
+        try:
+            v = fn(value)
+            return ("ok", type(v), v)
+        except GeomconError as exc:
+            return ("error", type(exc), str(exc))
+
+    values = [0, 1, 360, 3600, 3601, -1, 0.0, -0.0, 1e-7, 1e-6, 0.5e-6, 3600.0, 3600.0000000001, 359.99, 1e300, 10 ** 400,
+              True, False, float("nan"), float("inf"), -float("inf"), np.float64(120.0), np.float64(1e5), "120", None]
+    values += [float(x) for x in np.random.default_rng(0).uniform(-10, 4000, 200)]
+    for v in values:
+        if v is None:
+            continue
+        assert outcome(lambda x: _angle(x, "p[0].angle"), v) == outcome(full, v), v

@@ -303,13 +303,21 @@ def _angle(value: Any, where: str) -> float:
     ...
     geomcon.errors.ProblemError: program[1].angle = 4000° is out of range: an angle is at most 3600° in size
     """
-    from ..problems import check_number            # here: geomcon.problems imports the recipes, which import us
     if value is None:
         raise NotAMechanism(f"{where} is missing (degrees of cam rotation)")
+    t = type(value)
+    if (t is float or t is int) and MIN_ANGLE <= value <= _DEG_MAX:  # a plain angle in range: what the checks
+        return float(value)                                           # pass, as they return it
+    from ..problems import check_number            # here: geomcon.problems imports the recipes, which import us
     angle = check_number("deg", value, where)
     if not angle >= MIN_ANGLE:
         raise NotAMechanism(f"{where} must be ≥ {MIN_ANGLE:g}° (degrees of cam rotation), got {angle:g}")
     return angle
+
+
+_DEG_MAX = 3600.0
+"""The largest angle :func:`geomcon.problems.check_number` lets through (``RANGES["deg"]``; a test keeps them
+equal)."""
 
 
 def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") -> Program:

@@ -102,7 +102,8 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
                             "flat-faced arm has a face")
     a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
     cam = cam_of(g)
-    arm_division_angles(g, cam)
+    if g.get("divisions") is not None:              # (the default divisions cannot be refused)
+        arm_division_angles(g, cam)
     if r0 >= a + L:
         raise NotAMechanism(f"r0 = {r0:g} ≥ a + L = {a + L:g}: the arm cannot reach the base circle")
     if r0 <= abs(a - L):

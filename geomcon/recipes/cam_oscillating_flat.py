@@ -46,7 +46,8 @@ def validate_flat(g: Mapping[str, Any]) -> list[str]:
             raise NotAMechanism(f"{name} = {g[name]:g} is given for a flat-faced arm: it is not used ({why}); "
                                 "leave it out")
     cam = flat_cam_of(g)
-    arm_division_angles(g, cam)
+    if g.get("divisions") is not None:              # (the default divisions cannot be refused)
+        arm_division_angles(g, cam)
     a, r0, f, h = cam.a, cam.r0, cam.offset, cam.h
     if r0 + f <= 0.0:
         raise NotAMechanism(f"face_offset = {f:g} ≤ −r0 = {-r0:g}: the face would lie beyond the pivot, away from "
