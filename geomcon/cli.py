@@ -224,6 +224,39 @@ def _limit_memory(gib: float) -> None:
         pass
 
 
+def cmd_worksheet(args: argparse.Namespace) -> int:
+    """``geomcon worksheet SPEC.toml --out DIR``: a variant of each exercise per student and the key
+    (``key.json``, ``variants.csv``); the sheets are not drawn yet."""
+    from .fileio import check_targets, write_all
+    from .worksheet import make_worksheet
+    from .worksheet.roster import load_roster, numbered
+    from .worksheet.spec import load_spec
+
+    path = args.file
+    try:
+        check_targets({}, {"--out": args.out})
+        spec = load_spec(path)
+    except GeomconError as exc:
+        return _fail(path, str(exc))
+    try:
+        students = load_roster(args.students) if args.students else numbered(args.count)
+    except GeomconError as exc:
+        return _fail(args.students or path, str(exc))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            w = make_worksheet(spec, students, paper=args.paper, lang=args.lang, seed=args.seed)
+        write_all({Path(args.out) / name: text for name, text in w.files.items()})
+    except GeomconError as exc:
+        return _fail(path, str(exc))
+    except OSError as exc:
+        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+    for line in w.summary:
+        print(line)
+    print(f"wrote {', '.join(sorted(w.files))} for {len(students)} students to {args.out}/ (sheets are not drawn yet)")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``geomcon`` command."""
     p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
@@ -260,6 +293,18 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--memory-gib", type=float, default=4.0, help="address-space cap of the fuzzing process")
     f.add_argument("--json", action="store_true")
     f.set_defaults(func=cmd_fuzz)
+    w = sub.add_parser("worksheet", help="a class set of randomized exercises from one spec: key.json "
+                       "(the sheets are not drawn yet)")
+    w.add_argument("file", metavar="SPEC.toml")
+    w.add_argument("--out", required=True, metavar="DIR", help="where to write key.json and variants.csv")
+    who = w.add_mutually_exclusive_group(required=True)
+    who.add_argument("--students", metavar="CLASS.csv", help="class list: a header with id (and name); "
+                     "UTF-8 (± BOM) or GBK/GB18030")
+    who.add_argument("--count", type=int, metavar="N", help="N students numbered 1 … N")
+    w.add_argument("--seed", type=int, default=None, help="overrides the spec's seed")
+    w.add_argument("--lang", choices=("zh", "en", "both"), default="both", help="language of the statements")
+    w.add_argument("--paper", choices=("A4", "A3"), default="A4")
+    w.set_defaults(func=cmd_worksheet)
     return p
 
 

@@ -1,0 +1,70 @@
+"""Worksheets (issue 12): from one spec, a different well-posed, readable variant of each exercise per student,
+and the answer key (``key.json``) that grading reads.
+
+The pieces: :mod:`.spec` parses the untrusted TOML spec, :mod:`.roster` the class list, :mod:`.rng` is
+geomcon's own random generator (SHA-256), :mod:`.accept` judges a variant (solves, answers exist, one solution
+or the textbook's choice named, ``[require]`` bounds, twin agreement, fit at a standard scale
+(:mod:`geomcon.paper`), crossing angles and point gaps (:mod:`.readability`), drafting tolerance
+(:mod:`.drafting`)), :mod:`.assign` gives each student a variant, :mod:`.key` writes the key and
+:mod:`.statements` holds the statement templates. The sheets themselves (SVG/HTML pages) are not drawn yet.
+
+Examples
+--------
+>>> from geomcon.worksheet.spec import parse_spec
+>>> from geomcon.worksheet.roster import numbered
+>>> spec = parse_spec('''
+... title = "Guide bar"
+... [[exercise]]
+... recipe = "guide_bar.extremes"
+... ask = ["theta"]
+... [exercise.given]
+... AB = {min = 100, max = 140, step = 10}
+... AC = 290
+... ''')
+>>> w = make_worksheet(spec, numbered(2))
+>>> sorted(w.files), w.summary[0][:40]
+(['key.json', 'variants.csv'], 'exercise 1 (guide_bar.extremes): 2 of 2 ')
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+from ..paper import PAPERS
+from .assign import Assignment, assign
+from .key import key_json, variants_csv
+from .roster import Student
+from .spec import Spec
+
+LANGS = ("zh", "en", "both")
+
+
+@dataclass(frozen=True)
+class Worksheet:
+    """The files of a worksheet (name → text) and one summary line per exercise."""
+
+    files: dict[str, str]
+    summary: tuple[str, ...]
+    assignment: Assignment
+
+
+def make_worksheet(spec: Spec, students: Sequence[Student], *, paper: str = "A4", lang: str = "both",
+                   seed: int | str | None = None) -> Worksheet:
+    """Assign every student a variant of every exercise and write the key (``key.json``, ``variants.csv``).
+
+    Raises
+    ------
+    ProblemError
+        When an exercise's variants are too rarely acceptable to fill the class (the line says why).
+    """
+    if paper not in PAPERS:
+        raise ValueError(f"paper must be one of {', '.join(PAPERS)}, got {paper!r}")
+    if lang not in LANGS:
+        raise ValueError(f"lang must be one of {', '.join(LANGS)}, got {lang!r}")
+    a = assign(spec, students, PAPERS[paper], seed)
+    files = {"key.json": key_json(spec, a, paper=paper, lang=lang, seed=seed),
+             "variants.csv": variants_csv(spec, a)}
+    return Worksheet(files, tuple(st.line() for st in a.stats), a)
+
+
+__all__ = ["LANGS", "Worksheet", "make_worksheet"]

@@ -11,12 +11,13 @@ A variant is judged by these checks, cheapest first; the first that fails is its
                        a spec's own statement must hold ``{choice}``);
 ``require``            a ``[require]`` bound fails;
 ``borderline``         the construction warns (Grashof equality, a rod perpendicular to its guide …);
-``twin``               the construction disagrees with the analytic twin;
 ``fit``                the construction does not fit the sheet at a standard scale (or at the spec's ``scale``);
 ``crossing``           an intersection the student constructs crosses at less than 20°;
 ``crowded``            two labelled points lie closer than 4 mm on paper;
 ``undeterminable``     a drafting interval leaves the recipe's domain;
-``tolerance``          an asked answer's drafting tolerance exceeds 5 % of it (``max_tol_rel``).
+``tolerance``          an asked answer's drafting tolerance exceeds 5 % of it (``max_tol_rel``);
+``twin``               the construction disagrees with the analytic twin (last: it never happens on a sound
+                       recipe, and a cam's twin costs more than the rest).
 
 The figure of each exercise is drawn at the largest standard scale at which its extent, with
 :data:`FIGURE_MARGIN` around it, fits the sheet (either orientation) below a band of :data:`TEXT_BAND` mm for
@@ -55,8 +56,8 @@ from .solving import read, solve_given
 from .spec import AnswerRef, Exercise
 from .statements import CHOICE
 
-REASONS = ("invalid", "no_mechanism", "missing_answer", "several_solutions", "require", "borderline", "twin",
-           "fit", "crossing", "crowded", "undeterminable", "tolerance")
+REASONS = ("invalid", "no_mechanism", "missing_answer", "several_solutions", "require", "borderline", "fit",
+           "crossing", "crowded", "undeterminable", "tolerance", "twin")
 """Rejection codes, in the order the checks run."""
 
 TEXT_BAND = 60.0
@@ -160,10 +161,6 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
         warned = sol.construction_warnings
         if warned:
             return Rejected(index, "borderline", warned[0])
-        if not sol.ok:
-            bad = next(r for r in sol.checks if not r["ok"])
-            return Rejected(index, "twin", f"{bad['quantity']}: construction {bad['construction']!r} vs analytic "
-                                           f"{bad['analytic']!r}")
         names = [r.name for r in ex.ask]
         box = extent(sol, names)
         try:
@@ -180,18 +177,25 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
                                               f"apart on paper at {scale} (at least {MIN_POINT_GAP:g} mm)")
         nominal = {r.text: chosen[r.text] for r in ex.ask}
         try:
-            tols = tolerances(ex.recipe, given, ex.ask, nominal, scale.factor)
+            limits = {r.text: ex.max_tol_rel * abs(nominal[r.text]) for r in ex.ask}
+            tols = tolerances(ex.recipe, given, ex.ask, nominal, scale.factor, limits=limits)
         except Undeterminable as exc:
             return Rejected(index, "undeterminable", str(exc))
+        for r in ex.ask:
+            v, t = nominal[r.text], tols[r.text]
+            if t > limits[r.text]:
+                return Rejected(index, "tolerance", f"{r.text} = {v:.6g} is determined by a drawing at {scale} only "
+                                                    f"to ±{t:.3g} or worse ({100 * t / abs(v) if v else float('inf'):.3g} %, "
+                                                    f"at most {100 * ex.max_tol_rel:g} %)")
+        if not sol.ok:                  # the twin last: it never fails on a sound recipe, and a cam's twin is costly
+            bad = next(r for r in sol.checks if not r["ok"])
+            return Rejected(index, "twin", f"{bad['quantity']}: construction {bad['construction']!r} vs analytic "
+                                           f"{bad['analytic']!r}")
     except GeomconError as exc:
         return Rejected(index, "no_mechanism", str(exc))
     out = []
     for r in ex.ask:
         v, t = nominal[r.text], tols[r.text]
-        if t > ex.max_tol_rel * abs(v):
-            return Rejected(index, "tolerance", f"{r.text} = {v:.6g} is determined by a drawing at {scale} only to "
-                                                f"±{t:.3g} ({100 * t / abs(v) if v else float('inf'):.3g} %, "
-                                                f"at most {100 * ex.max_tol_rel:g} %)")
         rule = ex.tol.get(r.text)
         graded = rule.of(v) if rule is not None else t
         out.append(AnswerKey(r, v, graded, t, sol.unit_scale(r.unit)))

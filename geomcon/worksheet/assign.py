@@ -155,8 +155,11 @@ def assign_exercise(ex: Exercise, students: Sequence[Student], paper: Paper, see
                 break
         if mine is None:
             if fallback is None:
-                raise _refusal(ex, f"no acceptable variant among the {min(TRIES, ex.pool)} tried for student "
-                                   f"{s.id!r}", counts, examples, len(cache), len(cache) - sum(counts.values()))
+                tried = min(TRIES, ex.pool)
+                why = (f"unsatisfiable [exercise.require]: no variant among the {tried} tried for student {s.id!r} "
+                       "meets it" if counts and counts.most_common(1)[0][0] == "require"
+                       else f"no acceptable variant among the {tried} tried for student {s.id!r}")
+                raise _refusal(ex, why, counts, examples, len(cache), len(cache) - sum(counts.values()))
             mine = fallback
             shared += 1
         taken.add(mine.index)

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any, Callable, Iterator, Mapping, Sequence
 
 from ..errors import GeomconError
 from ..recipes import get_recipe
@@ -176,17 +176,18 @@ def nearest(candidates: Sequence[Mapping[str, float | None]], nominal: Mapping[s
     return best
 
 
-def shifts(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
-           factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, dict[str, float]]:
-    """Each drafted quantity's shift of each asked answer, d_i = (a(g_i + δ_i) − a(g_i − δ_i)) / 2, in the
-    solution nearest the chosen one (``nominal``: the asked answers' values there) at both ends.
+def shift_rows(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
+               factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given
+               ) -> Iterator[tuple[str, dict[str, float]]]:
+    """(drafted quantity, {asked answer: its shift}) one drafted quantity at a time: each shift is
+    d_i = (a(g_i + δ_i) − a(g_i − δ_i)) / 2 in the solution nearest the chosen one (``nominal``: the asked
+    answers' values there) at both ends.
 
     Raises
     ------
     Undeterminable
         When a drafting interval leaves the recipe's domain or loses the answer.
     """
-    out: dict[str, dict[str, float]] = {}
     for d in drafted(recipe, given, factor):
         ends = []
         for g in (d.plus, d.minus):
@@ -198,15 +199,25 @@ def shifts(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nom
             if best is None:
                 raise Undeterminable(f"{d.name} ± its drafting error loses an asked answer")
             ends.append(best)
-        out[d.name] = {r.text: (ends[0][r.text] - ends[1][r.text]) / 2.0 for r in refs}
-    return out
+        yield d.name, {r.text: (ends[0][r.text] - ends[1][r.text]) / 2.0 for r in refs}
+
+
+def shifts(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
+           factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, dict[str, float]]:
+    """Every drafted quantity's shifts of the asked answers (:func:`shift_rows`)."""
+    return dict(shift_rows(recipe, given, refs, nominal, factor, solve=solve))
 
 
 def tolerances(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
-               factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, float]:
+               factor: float, *, limits: Mapping[str, float] | None = None,
+               solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, float]:
     """The drafting tolerance of each asked answer (``refs``, whose values in the chosen solution are
-    ``nominal``) of a variant drawn at ``factor`` paper mm per real mm: √(Σ d_i² + r²) (:func:`shifts`,
+    ``nominal``) of a variant drawn at ``factor`` paper mm per real mm: √(Σ d_i² + r²) (:func:`shift_rows`,
     :func:`reading`).
+
+    With ``limits`` (answer → largest tolerance accepted) the sum stops as soon as one answer's partial sum
+    exceeds its limit, and the partial sums are returned: each is then a lower bound of the full tolerance, so
+    a variant rejected on it is rejected exactly as on the full sum, without the remaining solves.
 
     Raises
     ------
@@ -214,11 +225,19 @@ def tolerances(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef],
         When a drafting interval leaves the recipe's domain or loses the answer.
     """
     sums = {r.text: reading(r, nominal[r.text], factor) ** 2 for r in refs}
-    for by_ref in shifts(recipe, given, refs, nominal, factor, solve=solve).values():
-        for k, d in by_ref.items():
-            sums[k] += d * d
+    caps = {k: v * v for k, v in (limits or {}).items()}
+
+    def over() -> bool:
+        return any(sums[k] > c for k, c in caps.items())
+
+    if not over():
+        for _, by_ref in shift_rows(recipe, given, refs, nominal, factor, solve=solve):
+            for k, d in by_ref.items():
+                sums[k] += d * d
+            if over():
+                break
     return {k: math.sqrt(s) for k, s in sums.items()}
 
 
 __all__ = ["DEGREES", "Drafted", "NOT_DRAWN", "PAPER_MM", "Undeterminable", "drafted", "k_of_theta", "nearest",
-           "reading", "shifts", "theta_of_k", "tolerances"]
+           "reading", "shift_rows", "shifts", "theta_of_k", "tolerances"]

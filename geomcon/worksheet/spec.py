@@ -325,7 +325,7 @@ def _exercise(data: Mapping[str, Any], n: int) -> Exercise:
     max_rel = data.get("max_tol_rel", MAX_TOL_REL)
     if isinstance(max_rel, bool) or not isinstance(max_rel, (int, float)) or not 0 < max_rel <= 1:
         raise ProblemError(f"{where}: 'max_tol_rel' must be a number in (0, 1], got {_short(max_rel)}")
-    statement = _statement(data.get("statement"), where, set(names))
+    statement = _statement(data.get("statement"), where, set(given_in))
     digest = hashlib.sha256(json.dumps({"recipe": recipe.name, "given": given_in}, sort_keys=True,
                                        ensure_ascii=True, separators=(",", ":")).encode()).hexdigest()
     return Exercise(n, recipe.name, fixed, tuple(slots), ask, points, statement, require, tol, scale,
@@ -571,7 +571,7 @@ def _scale(value: Any, where: str) -> Scale | None:
 
 def _statement(value: Any, where: str, givens: set[str]) -> dict[str, str] | None:
     """A custom statement: one text for every language, or a table {en, zh}; its placeholders must name
-    givens of the recipe or ``choice`` (never an answer: a student sheet holds none)."""
+    givens of the exercise or ``choice`` (never an answer: a student sheet holds none)."""
     if value is None:
         return None
     if isinstance(value, str):
