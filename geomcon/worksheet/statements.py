@@ -164,21 +164,22 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
     "cam.translating": {
         "centric": ("A disc cam turning {rotation} drives a translating {follower} follower whose axis passes "
                     "through the cam's centre. Base circle r0 = {r0} mm, stroke h = {h} mm; motion program: "
-                    "{program}. Draw the cam profile by the inversion method.",
+                    "{program}.",
                     "一盘形凸轮{rotation}转动,推动对心直动{follower}从动件。基圆半径 r0 = {r0} mm,行程 h = {h} mm;"
-                    "运动规律:{program}。试用反转法绘制凸轮轮廓。"),
+                    "运动规律:{program}。"),
         "offset": ("A disc cam turning {rotation} drives a translating {follower} follower whose axis is offset "
                    "e = {e} mm to the right of the cam's centre. Base circle r0 = {r0} mm, stroke h = {h} mm; "
-                   "motion program: {program}. Draw the cam profile by the inversion method.",
+                   "motion program: {program}.",
                    "一盘形凸轮{rotation}转动,推动偏置直动{follower}从动件,从动件导路位于凸轮回转中心右侧,"
-                   "偏距 e = {e} mm。基圆半径 r0 = {r0} mm,行程 h = {h} mm;运动规律:{program}。"
-                   "试用反转法绘制凸轮轮廓。"),
+                   "偏距 e = {e} mm。基圆半径 r0 = {r0} mm,行程 h = {h} mm;运动规律:{program}。"),
     },
 }
 """Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
 
 ROLLER = (" The roller's radius is rr = {rr} mm.", "滚子半径 rr = {rr} mm。")
 """Added to a cam statement when the follower has a roller."""
+CAM_DRAW = (" Draw the cam profile by the inversion method.", "试用反转法绘制凸轮轮廓。")
+"""Ends a cam statement (after the roller)."""
 
 CHOICE: dict[str, tuple[str, str]] = {
     "crank_rocker.design_by_K": (
@@ -223,8 +224,10 @@ def default_template(recipe: str, given: Mapping[str, Any], title: str = "") -> 
     if form is None or form not in TEMPLATES.get(recipe, {}):
         return generic_template(title or recipe, given)
     en, zh = TEMPLATES[recipe][form]
-    if recipe.startswith("cam.") and given.get("follower") == "roller" and given.get("rr") is not None:
-        en, zh = en + ROLLER[0], zh + ROLLER[1]
+    if recipe.startswith("cam."):
+        if given.get("follower") == "roller" and given.get("rr") is not None:
+            en, zh = en + ROLLER[0], zh + ROLLER[1]
+        en, zh = en + CAM_DRAW[0], zh + CAM_DRAW[1]
     return en, zh
 
 
@@ -293,4 +296,4 @@ def find_sentence(words: list[str], lang: str) -> str:
 
 
 __all__ = ["ANSWER_WORDS", "CHOICE", "TEMPLATES", "answer_words", "default_template", "fill", "find_sentence",
-           "generic_template", "number", "program_words", "shown_givens", "template_form"]
+           "generic_template", "number", "program_words", "shown_givens", "template_form", "CAM_DRAW", "ROLLER"]
