@@ -67,6 +67,8 @@ BAD = {
                             'statement = "{AB.__class__}"\n[exercise.given]\nAB = 100\nAC = 290\n', "names {AB.__class__}"),
     "huge grid": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\n[exercise.given]\n'
                   'AB = {min = 0.001, max = 1000, step = 0.001}\nAC = 290\n', "at most 100000"),
+    "astronomic grid": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\n[exercise.given]\n'
+                        'AB = {min = 0, max = 1e300, step = 1e-300}\nAC = 290\n', "about 1.00e+600 values"),
     "points count": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\npoints = [1, 2]\n'
                      '[exercise.given]\nAB = 100\nAC = 290\n', "'points' must list one number per asked answer (1)"),
     "no mechanism at all": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\n[exercise.given]\n'

@@ -469,10 +469,12 @@ def _grid(value: Mapping[str, Any], where: str) -> Grid:
         raise ProblemError(f"{where}: step = {_g(value['step'])} must be > 0")
     if hi < lo:
         raise ProblemError(f"{where}: empty range: max = {_g(value['max'])} < min = {_g(value['min'])}")
-    count = int((hi - lo) / step) + 1
-    if count > LIMITS["grid_points"]:
-        raise ProblemError(f"{where}: the range has {count} values ((max − min)/step + 1); at most "
+    span = (hi - lo) / step
+    if span >= LIMITS["grid_points"]:
+        shown = str(int(span) + 1) if span < 10 ** 15 else f"about {span:.3g}"
+        raise ProblemError(f"{where}: the range has {shown} values ((max − min)/step + 1); at most "
                            f"{LIMITS['grid_points']}")
+    count = int((hi - lo) / step) + 1
     return Grid(lo, step, count)
 
 
