@@ -6,7 +6,7 @@ machine, is what counts:
 - answers only (``solve(problem).answers`` on a loaded problem) against the same construction written as a
   plain lazy DAG of float code (:mod:`.plain`);
 - answers and twin checks, against the answers alone;
-- cam answers (every bundled translating and oscillating problem), against the same answers by plain scalar
+- cam answers (every bundled translating, oscillating and eccentric problem), against the same answers by plain scalar
   code (:mod:`.cam_plain`; the analytic twin for the flat faces it does not cover);
 - ``cam.base_radius`` with checks;
 - a whole ``geomcon solve`` process, against ``python -c pass``;
@@ -58,7 +58,7 @@ LINKAGES: tuple[tuple[str, str, dict[str, Any]], ...] = (
 )
 """The linkage and design-by-K problems timed (givens as in the bundled files)."""
 
-CAM_RECIPES = ("cam.translating", "cam.oscillating")
+CAM_RECIPES = ("cam.translating", "cam.oscillating", "cam.eccentric")
 BASE_RADIUS = "200-12_oscillating_base_radius"
 WHOLE = "001-08_crank_rocker"
 SWEEP_TARGET = 1e-9
@@ -138,14 +138,15 @@ def linkage_rows(quick: bool) -> list[LeanRow]:
 
 
 def _cam_problems() -> list[Path]:
-    """The bundled cam.translating and cam.oscillating problems (every one: the target is for each)."""
+    """The bundled cam.translating, cam.oscillating and cam.eccentric problems (every one: the target is for
+    each; issue 10 names the first two, the eccentric cams are held to the same bound)."""
     return [path for path in sorted(PROBLEMS.glob("*.toml")) if load_problem(path).recipe in CAM_RECIPES]
 
 
 def cam_rows(quick: bool) -> list[LeanRow]:
-    """Cam answers of every bundled translating and oscillating problem against the scalar reference
-    (:mod:`.cam_plain`; the analytic twin for a flat face, which it does not cover); the base-radius design
-    with its checks."""
+    """Cam answers of every bundled translating, oscillating and eccentric problem against the scalar reference
+    (:mod:`.cam_plain`; the analytic twin for a flat face and for the eccentric cams, which it does not cover);
+    the base-radius design with its checks."""
     rows = []
     n, repeat = (1, 3) if quick else (3, 5)
     for path in _cam_problems():
