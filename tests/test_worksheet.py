@@ -294,3 +294,34 @@ def test_class_list_encodings():
         with pytest.raises(Exception):
             parse_roster(bad)
     assert math.isfinite(len(numbered(2000)))
+
+
+def _toml(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, (int, float)):
+        return repr(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(_toml(x) for x in v) + "]"
+    return "{" + ", ".join(f"{k} = {_toml(x)}" for k, x in v.items()) + "}"
+
+
+def test_every_bundled_problem_is_judged_without_error():
+    """Each bundled problem as a one-variant exercise of its recipe: accepted or rejected with a reason, never
+    an exception (every recipe's scene goes through the extent, crossing and drafting code)."""
+    import tomllib
+    from geomcon.worksheet.accept import REASONS
+    seen = {}
+    for f in sorted((Path(__file__).parents[1] / "problems").glob("*.toml")):
+        d = tomllib.loads(f.read_text(encoding="utf-8"))
+        rec = get_recipe(d["recipe"])
+        ask = [q.name for q in rec.answers if q.unit in ("mm", "deg", "")][:2]
+        given = "\n".join(f"{k} = {_toml(v)}" for k, v in d.get("given", {}).items())
+        ex = parse_spec(f'[[exercise]]\nrecipe = "{d["recipe"]}"\nask = {json.dumps(ask)}\n[exercise.given]\n{given}\n'
+                        ).exercises[0]
+        v = judge(ex, 0, PAPERS["A4"])
+        assert v.reason is None or v.reason in REASONS
+        seen.setdefault(d["recipe"], []).append(v.reason)
+    assert len(seen) >= 15 and sum(r is None for rs in seen.values() for r in rs) >= 20

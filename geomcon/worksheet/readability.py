@@ -146,12 +146,17 @@ def extent(sol: Solution, names: Iterable[str] | None = None) -> tuple[float, fl
 
 
 def closest_points(sol: Solution) -> tuple[str, str, float] | None:
-    """The two named points of the chosen solution closest together (model mm), or None for fewer than two."""
+    """The two named points of the chosen solution closest together (model mm), or None for fewer than two.
+    Two names of one point (an eccentric cam's contact B at its start B0: within 1e-9 of the length scale) are
+    one labelled point ("B, B0"), not two crowded ones."""
     pts = sorted(sol.points.items())
+    same = 1e-9 * sol.length_scale
     best = None
     for i, (n1, p1) in enumerate(pts):
         for n2, p2 in pts[i + 1:]:
             d = math.hypot(p1[0] - p2[0], p1[1] - p2[1])
+            if d <= same:
+                continue
             if best is None or d < best[2]:
                 best = (n1, n2, d)
     return best
