@@ -158,7 +158,9 @@ def cam_rows(quick: bool) -> list[LeanRow]:
             ref_fn, ref = get_recipe(p.recipe).analytic, "its analytic twin"
         g = p.given
         tr = median_time(lambda: ref_fn(g), number=n, repeat=repeat)
-        rows.append(LeanRow("cam answers only", f"{path.stem.split('_')[0]} {p.recipe} {g.get('follower', '')}".strip(),
+        sense = " cw" if g.get("rotation") == "cw" else ""          # 001-29 is bundled turning both ways
+        case = f"{path.stem.split('_')[0]} {p.recipe}{sense} {g.get('follower', '')}".strip()
+        rows.append(LeanRow("cam answers only", case,
                             t, ref, tr, "≤ 2 ms", 2e-3, None))
     path = PROBLEMS / f"{BASE_RADIUS}.toml"
     if path.exists():
