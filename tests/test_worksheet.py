@@ -69,6 +69,10 @@ BAD = {
                   'AB = {min = 0.001, max = 1000, step = 0.001}\nAC = 290\n', "at most 100000"),
     "astronomic grid": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\n[exercise.given]\n'
                         'AB = {min = 0, max = 1e300, step = 1e-300}\nAC = 290\n', "about 1.00e+600 values"),
+    "a date in a program of a list": ('[[exercise]]\nrecipe = "cam.translating"\nask = ["h"]\n[exercise.given]\n'
+                                      'follower = "knife"\nr0 = 40\nh = 20\nprogram = [[{kind = "rise", angle = '
+                                      '1979-05-27}], [{kind = "rise", angle = 360, law = "cosine"}]]\n',
+                                      "program'[0][0].angle must be a number or a word"),
     "points count": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\npoints = [1, 2]\n'
                      '[exercise.given]\nAB = 100\nAC = 290\n', "'points' must list one number per asked answer (1)"),
     "no mechanism at all": ('[[exercise]]\nrecipe = "guide_bar.extremes"\nask = ["theta"]\n[exercise.given]\n'

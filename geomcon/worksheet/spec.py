@@ -373,6 +373,10 @@ def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: li
                 if not v or not all(isinstance(r, dict) for r in v):
                     raise ProblemError(f"{where}[{i}] must be a list of tables, got {_short(v)}")
                 _check_rows(v, f"{where}[{i}]")
+                for j, row in enumerate(v):
+                    for field, x in row.items():
+                        if not (_is_number(x) or isinstance(x, str)):
+                            raise ProblemError(f"{where}[{i}][{j}].{field} must be a number or a word, got {_short(x)}")
             slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: True, "programs")))
         else:
             raise ProblemError(form)
