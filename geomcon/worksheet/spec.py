@@ -58,7 +58,7 @@ LIMITS = {
     "program_rows": 64,          # rows of a motion program
     "ask": 20,                   # answers asked per exercise
     "title_chars": 500,          # the title
-    "text_chars": 20_000,        # a statement
+    "text_chars": 4000,          # a statement (a paragraph; it is copied into every student's key)
     "points": 1000.0,            # points of one answer
 }
 """Size limits of a worksheet spec, checked before anything is solved."""
