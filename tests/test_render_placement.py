@@ -165,7 +165,10 @@ def test_bounds_enclose_the_exact_clearance(seed):
         cands = [req.box(rng.uniform(0, 60), rng.uniform(0, 60)) for _ in range(12)]
         boxes = np.empty(len(cands), dtype=object)
         boxes[:] = cands
-        m = Measure(layer, placed, boxes, shapely.bounds(boxes), owner, aligned=not req.rotate)
+        bounds = shapely.bounds(boxes)
+        rows = list(range(len(cands)))
+        m = Measure(boxes, bounds, [(layer, *layer.near(bounds, owner).pairs(rows)),
+                                    (placed, *placed.near(bounds, None).pairs(rows))], aligned=not req.rotate)
         for k, box in enumerate(cands):
             exact = m.exact(k)
             assert exact == ref.clearance(box, owner)

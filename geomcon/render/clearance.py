@@ -15,7 +15,8 @@ Examples
 >>> line = shapely.LineString([(0, 5), (10, 5)])
 >>> layer = Layer([line], ["line"], [0.0], split=True)
 >>> boxes = shapely.box([4.0, 4.0], [6.0, 4.0], [6.0, 6.0], [7.0, 6.0])     # clear of it, across it
->>> m = Measure(layer, Layer([]), boxes, shapely.bounds(boxes), "pt", aligned=True)
+>>> bounds = shapely.bounds(boxes)
+>>> m = Measure(boxes, bounds, [(layer, *layer.near(bounds, "pt").pairs([0, 1]))], aligned=True)
 >>> [m.exact(k) for k in range(2)]
 [1.0, -0.6]
 >>> [m.bounds(k) for k in range(2)]                # the second touches the line: it covers 0 to all
@@ -118,43 +119,62 @@ class Layer:
         self._bounds: list[Box] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
         self._segments: dict[int, list[tuple[float, float, float, float]]] = {}
-        for i, g in enumerate(geoms):
-            self.append(g, owners[i] if owners is not None else "", allow[i] if allow is not None else 0.0)
+        self.extend(geoms, owners, allow)
         self.tree = shapely.STRtree(self.arrays()[0]) if split and self.pieces else None
 
     def append(self, geom: shapely.Geometry, owner: str = "", allow: float = 0.0) -> None:
         """Add a geometry (not to the tree, which indexes those of the constructor only)."""
-        i = len(self.geoms)
-        self.geoms.append(geom)
-        self._owners.append(owner)
-        self._allow.append(float(allow))
+        self.extend([geom], [owner], [allow])
+
+    def extend(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
+               allow: Sequence[float] | None = None) -> None:
+        """Add geometries (not to the tree, which indexes those of the constructor only)."""
+        n0, n = len(self.geoms), len(geoms)
+        g = np.empty(n, dtype=object)
+        g[:] = list(geoms)
+        self.geoms += g.tolist()
+        self._owners += list(owners) if owners is not None else [""] * n
+        self._allow += [float(a) for a in allow] if allow is not None else [0.0] * n
         self._arrays = None
-        t = shapely.get_type_id(geom)
-        xy = shapely.get_coordinates(geom)
-        simple = True
-        if not len(xy):
-            self._bounds.append((math.nan,) * 4)
-            self.simple.append(simple)
-            return
-        bounds = (float(xy[:, 0].min()), float(xy[:, 1].min()), float(xy[:, 0].max()), float(xy[:, 1].max()))
-        self._bounds.append(bounds)
-        if t in (0, 1):
-            if t == 1 and len(xy) > 2:
-                simple = bool(shapely.is_simple(geom))
-            if len(xy) == 1:
-                xy = np.vstack([xy, xy])
-            if self._split and len(xy) > 2 * PIECE + 1:
-                parts = [xy[j:j + PIECE + 1] for j in range(0, len(xy) - 1, PIECE)]
-                for part, g in zip(parts, shapely.linestrings(np.vstack(parts), indices=np.repeat(
-                        np.arange(len(parts)), [len(p) for p in parts]))):
-                    self.pieces.append(Piece(g, i, SEGMENTS, (float(part[:, 0].min()), float(part[:, 1].min()),
-                                                               float(part[:, 0].max()), float(part[:, 1].max())), part))
+        types = shapely.get_type_id(g).tolist()
+        bounds = shapely.bounds(g).reshape(-1, 4)
+        self._bounds += [tuple(b) for b in bounds.tolist()]
+        xy, which = shapely.get_coordinates(g, return_index=True)
+        count = np.bincount(which, minlength=n)
+        start = (np.cumsum(count) - count).tolist()
+        count = count.tolist()
+        simple = np.ones(n, dtype=bool)
+        knotty = np.nonzero((np.array(types) == 1) & (np.array(count) > 2))[0]
+        simple[knotty] = shapely.is_simple(g[knotty])
+        self.simple += simple.tolist()
+        holes = shapely.get_num_interior_rings(g).tolist()
+        cut: list[np.ndarray] = []               # the parts of long line strings, made in one call
+        for i in range(n):
+            c, t = count[i], types[i]
+            if not c:
+                continue                         # empty: nothing to keep clear of
+            coords = xy[start[i]:start[i] + c]
+            b = tuple(bounds[i].tolist())
+            if t not in (0, 1):
+                rect = t == 3 and holes[i] == 0 and _is_box(coords.tolist(), b)
+                self.pieces.append(Piece(g[i], n0 + i, BOX if rect else OTHER, b))
+            elif c == 1:
+                self.pieces.append(Piece(g[i], n0 + i, SEGMENTS, b, np.vstack([coords, coords])))
+            elif self._split and c > 2 * PIECE + 1:
+                for j in range(0, c - 1, PIECE):
+                    part = coords[j:j + PIECE + 1]
+                    cut.append(part)
+                    self.pieces.append(Piece(None, n0 + i, SEGMENTS, b, part))
             else:
-                self.pieces.append(Piece(geom, i, SEGMENTS, bounds, xy))
-        else:
-            rect = t == 3 and shapely.get_num_interior_rings(geom) == 0 and _is_box(xy.tolist(), bounds)
-            self.pieces.append(Piece(geom, i, BOX if rect else OTHER, bounds))
-        self.simple.append(simple)
+                self.pieces.append(Piece(g[i], n0 + i, SEGMENTS, b, coords))
+        if cut:
+            made = shapely.linestrings(np.vstack(cut), indices=np.repeat(np.arange(len(cut)), [len(p) for p in cut]))
+            made_bounds = shapely.bounds(made).tolist()
+            k = 0
+            for j, p in enumerate(self.pieces):
+                if p.geom is None:
+                    self.pieces[j] = Piece(made[k], p.parent, SEGMENTS, tuple(made_bounds[k]), p.xy)
+                    k += 1
 
     def arrays(self) -> tuple[np.ndarray, ...]:
         """The pieces' geometries, their wholes' indices, the wholes' owners, allowances and bounds, and the
@@ -177,34 +197,43 @@ class Layer:
             out = self._segments[piece] = [tuple(s) for s in np.hstack([xy[:-1], xy[1:]]).tolist()]
         return out
 
-    def near(self, bounds: np.ndarray, owner: str | None) -> tuple[np.ndarray, np.ndarray]:
-        """(row, piece) pairs that may come within :data:`REACH` of the boxes ``bounds`` (one row per box),
-        allowance included; with an ``owner``, only pieces of geometries whose bounds come within
-        :data:`ENOUGH` (the envelope test of ``STRtree.query``) not drawn by it."""
-        if not self.pieces:
-            return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
-        geoms, parent, owners, allow, wb, pb = self.arrays()
-        x0, y0, x1, y1 = bounds.T
+    def near(self, bounds: np.ndarray, owner: str | None) -> Nearby:
+        """The pieces that may come within :data:`REACH` of each of the boxes ``bounds`` (their bounds'
+        distance, plus the allowance, does); with an ``owner``, only pieces of geometries whose bounds come
+        within :data:`ENOUGH` (the envelope test of ``STRtree.query``) and not drawn by it."""
+        if not self.pieces or not len(bounds):
+            return Nearby(np.zeros(0, dtype=np.intp), np.zeros((len(bounds), 0), dtype=bool))
+        _, parent, owners, allow, wb, pb = self.arrays()
+        x0, y0, x1, y1 = (v[:, None] for v in bounds.T)
         if self.tree is not None:
-            rows, pieces = self.tree.query(shapely.box(x0 - REACH, y0 - REACH, x1 + REACH, y1 + REACH))
+            local = np.sort(self.tree.query(shapely.box(x0.min() - REACH, y0.min() - REACH,
+                                                        x1.max() + REACH, y1.max() + REACH)))
         else:
-            far = ((pb[None, :, 0] > (x1 + REACH)[:, None]) | (pb[None, :, 2] < (x0 - REACH)[:, None])
-                   | (pb[None, :, 1] > (y1 + REACH)[:, None]) | (pb[None, :, 3] < (y0 - REACH)[:, None]))
-            rows, pieces = np.nonzero(~far)
-        idx = parent[pieces]
-        if owner is not None and len(rows):
+            local = np.arange(len(self.pieces))
+        idx = parent[local]
+        b = pb[local]
+        gx = np.maximum(np.maximum(b[:, 0] - x1, x0 - b[:, 2]), 0.0)
+        gy = np.maximum(np.maximum(b[:, 1] - y1, y0 - b[:, 3]), 0.0)
+        mask = np.hypot(gx, gy) + allow[idx] <= REACH    # the bounds' distance is at most the distance
+        if owner is not None:
             ob = wb[idx]
-            keep = ~((ob[:, 0] > x1[rows] + ENOUGH) | (ob[:, 2] < x0[rows] - ENOUGH)
-                     | (ob[:, 1] > y1[rows] + ENOUGH) | (ob[:, 3] < y0[rows] - ENOUGH))
-            keep &= owners[idx] != owner
-            rows, pieces, idx = rows[keep], pieces[keep], idx[keep]
-        if len(rows):                            # the bounds' distance is at most the distance
-            b = pb[pieces]
-            gx = np.maximum(np.maximum(b[:, 0] - x1[rows], x0[rows] - b[:, 2]), 0.0)
-            gy = np.maximum(np.maximum(b[:, 1] - y1[rows], y0[rows] - b[:, 3]), 0.0)
-            keep = np.hypot(gx, gy) + allow[idx] <= REACH
-            rows, pieces = rows[keep], pieces[keep]
-        return rows, pieces
+            mask &= (owners[idx] != owner) & ~((ob[:, 0] > x1 + ENOUGH) | (ob[:, 2] < x0 - ENOUGH)
+                                               | (ob[:, 1] > y1 + ENOUGH) | (ob[:, 3] < y0 - ENOUGH))
+        return Nearby(local, mask)
+
+
+@dataclass(frozen=True)
+class Nearby:
+    """The pieces (of a layer) that may come near each of some boxes: ``mask[i, j]`` for box ``i`` and
+    piece ``local[j]``."""
+
+    local: np.ndarray
+    mask: np.ndarray
+
+    def pairs(self, rows: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
+        """(row in ``rows``, piece) pairs of the boxes ``rows``, rows numbered from 0 in that order."""
+        r, j = np.nonzero(self.mask[rows])
+        return r, self.local[j]
 
 
 class Measure:
@@ -219,26 +248,24 @@ class Measure:
 
     Parameters
     ----------
-    obstacles, placed : Layer
-        What is drawn (split, with owners and allowances) and what was placed before.
     boxes : array of shapely polygons
     bounds : array (n, 4)
         Their bounds.
-    owner : str
-        The step the text belongs to.
+    near : sequence of (Layer, rows, pieces)
+        For each layer (what is drawn, what was placed), the (box, piece) pairs that may come near
+        (:meth:`Layer.near`).
     aligned : bool
         The boxes are axis-parallel rectangles (their bounds); otherwise :meth:`refine` does not tighten.
     """
 
-    def __init__(self, obstacles: Layer, placed: Layer, boxes: np.ndarray, bounds: np.ndarray, owner: str,
-                 aligned: bool):
+    def __init__(self, boxes: np.ndarray, bounds: np.ndarray,
+                 near: Sequence[tuple[Layer, np.ndarray, np.ndarray]], aligned: bool):
         n = len(boxes)
         self._boxes, self._bounds, self._aligned = boxes, bounds, aligned
         self._base = np.full(n, ENOUGH)          # the least distance plus allowance (touching ones at 0)
         self._lo = self._base
         self._touching: list[tuple[Layer, np.ndarray, np.ndarray]] = []
-        for layer, owner_ in ((obstacles, owner), (placed, None)):
-            rows, pieces = layer.near(bounds, owner_)
+        for layer, rows, pieces in near:
             if not len(rows):
                 continue
             geoms, parent, _, allow, _, _ = layer.arrays()

@@ -31,7 +31,7 @@ import numpy as np
 import shapely
 from shapely import affinity
 
-from .clearance import ENOUGH, Layer, Measure
+from .clearance import ENOUGH, Layer, Measure, Nearby
 
 XY = tuple[float, float]
 
@@ -130,106 +130,27 @@ class Placer:
         self._placed = Layer([])
         self._frame = frame
 
-    def _measure(self, boxes: np.ndarray, bounds: np.ndarray, owner: str, aligned: bool) -> Measure:
-        return Measure(self._obstacles, self._placed, boxes, bounds, owner, aligned)
+    def _near(self, bounds: np.ndarray, owner: str) -> tuple[tuple[Layer, Nearby], ...]:
+        """What may come near each of the boxes ``bounds``: obstacles not ``owner``'s, placed geometries."""
+        return (self._obstacles, self._obstacles.near(bounds, owner)), (self._placed, self._placed.near(bounds, None))
 
     def clearance(self, box: shapely.Geometry, owner: str) -> float:
         """Distance (capped at :data:`ENOUGH`) from ``box`` to every obstacle not owned by ``owner`` (plus its
         allowance) and to everything placed so far; negative when the box covers something, the more the
         more it covers (so that among crowded places the least covered wins)."""
         boxes = np.array([box], dtype=object)
-        return self._measure(boxes, shapely.bounds(boxes), owner, False).exact(0)
-
-    def _centres(self, req: Request) -> list[tuple[XY, float]]:
-        if req.candidates:
-            return [(c, req.spread * i) for i, c in enumerate(req.candidates)]
-        out = []
-        for j, extra in enumerate(DISTANCES):
-            for rank, (ux, uy) in enumerate(_units(req.prefer)):
-                reach = req.gap + extra + half_extent(ux, uy, req.width, req.height)
-                out.append(((req.anchor[0] + ux * reach, req.anchor[1] + uy * reach),
-                            FAR_PENALTY * j + req.spread * rank))
-        return out
+        bounds = shapely.bounds(boxes)
+        return Measure(boxes, bounds, [(layer, *near.pairs([0])) for layer, near in self._near(bounds, owner)],
+                       False).exact(0)
 
     def best(self, req: Request, owner: str) -> tuple[XY, float]:
         """The centre of the best box for ``req`` and its score: its clearance less the penalties for
         distance and for leaving the preferred direction (very negative outside the frame).
 
         The candidates are tried in order; one replaces the best so far when its score is higher by more
-        than 1e-12. Only what decides that is scored exactly: a candidate whose upper bound does not beat
-        the best so far is passed over, and so is every candidate before one whose lower bound beats all
-        their upper bounds (that one replaces the best whatever they score).
+        than 1e-12. Only what decides that is scored exactly (see :class:`_Scan`).
         """
-        cands = self._centres(req)
-        n = len(cands)
-        boxes = _boxes(req, [c for c, _ in cands])
-        bounds = shapely.bounds(boxes)
-        f = self._frame
-        inside = (f[0] <= bounds[:, 0]) & (f[1] <= bounds[:, 1]) & (bounds[:, 2] <= f[2]) & (bounds[:, 3] <= f[3])
-        cost = [penalty for _, penalty in cands]
-        outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
-        static = [ENOUGH - penalty - out for penalty, out in zip(cost, outside)]
-        reach = list(itertools.accumulate(reversed(static), max))[::-1]      # the best static bound from i on
-        lower: list[float] = []
-        upper: list[float] = []
-        where: list[tuple[Measure, int] | None] = []
-
-        def measure(best_score: float) -> None:
-            start = len(upper)
-            stop = min(n, start + (1 if start == 0 else BATCH))
-            todo = [i for i in range(start, stop) if static[i] > best_score + 1e-12]
-            m = self._measure(boxes[todo], bounds[todo], owner, not req.rotate) if todo else None
-            slot = {i: k for k, i in enumerate(todo)}
-            for i in range(start, stop):
-                k = slot.get(i)
-                if m is None or k is None:       # it cannot beat the best so far, nor any later best
-                    lower.append(-math.inf)
-                    upper.append(static[i])
-                    where.append(None)
-                else:
-                    lo, hi = m.bounds(k)
-                    lower.append(lo - cost[i] - outside[i])
-                    upper.append(hi - cost[i] - outside[i])
-                    where.append((m, k))
-
-        def sure_winner(i: int, best_score: float) -> int | None:
-            """A later candidate that replaces the best whatever the ones from ``i`` to it score."""
-            top = max(best_score, upper[i])
-            j = i + 1
-            while j < n and reach[j] > top + 1e-12:
-                if j == len(upper):
-                    measure(best_score)
-                if lower[j] > top + 1e-12:
-                    return j
-                top = max(top, upper[j])
-                j += 1
-            return None
-
-        best, best_score = req.anchor, -math.inf
-        i = 0
-        while i < n:
-            if i == len(upper):
-                measure(best_score)
-            if upper[i] <= best_score + 1e-12:
-                i += 1                           # it cannot win
-                continue
-            j = sure_winner(i, best_score)
-            if j is None and lower[i] < upper[i]:    # it touches something: bound what it covers first
-                m, k = where[i]                      # type: ignore[misc]
-                lo, hi = m.refine(k)
-                lower[i], upper[i] = lo - cost[i] - outside[i], hi - cost[i] - outside[i]
-                if upper[i] <= best_score + 1e-12:
-                    i += 1
-                    continue
-            i = i if j is None else j
-            m, k = where[i]                      # type: ignore[misc]
-            score = m.exact(k) - cost[i] - outside[i]
-            if score > best_score + 1e-12:
-                best, best_score = cands[i][0], score
-            elif j is not None:
-                raise AssertionError("a sure winner did not win: its bounds were wrong")
-            i += 1
-        return best, best_score
+        return _Scan(self, req, owner).run()
 
     def commit(self, geom: shapely.Geometry) -> None:
         """Record something placed (a text's box, a leader line): later texts keep clear of it."""
@@ -242,8 +163,103 @@ class Placer:
         return centre
 
 
+class _Scan:
+    """The candidates of one text, measured a batch at a time (:data:`BATCH`), and the choice among them.
+
+    Each measured candidate has a lower and an upper bound of its score (equal when its box touches
+    nothing); one not measured, its static bound (:data:`ENOUGH` less its penalties). A candidate whose
+    upper bound does not beat the best so far is passed over, and so is every candidate before one whose
+    lower bound beats all their upper bounds (that one replaces the best whatever they score); a touching
+    candidate's bounds are tightened before its exact score is computed.
+    """
+
+    def __init__(self, placer: Placer, req: Request, owner: str):
+        self.anchor = req.anchor
+        self.centres, self.cost = _centres(req)
+        self.n = len(self.centres)
+        self.boxes = _boxes(req, self.centres)
+        self.bounds = shapely.bounds(self.boxes)
+        f, b = placer._frame, self.bounds
+        inside = (f[0] <= b[:, 0]) & (f[1] <= b[:, 1]) & (b[:, 2] <= f[2]) & (b[:, 3] <= f[3])
+        self.outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
+        self.static = [ENOUGH - penalty - out for penalty, out in zip(self.cost, self.outside)]
+        self.reach = list(itertools.accumulate(reversed(self.static), max))[::-1]   # the best static from i on
+        self.near = placer._near(self.bounds, owner)
+        self.aligned = not req.rotate
+        self.lower: list[float] = []
+        self.upper: list[float] = []
+        self.where: list[tuple[Measure, int] | None] = []
+
+    def measure(self, best_score: float) -> None:
+        """Measure the next batch: those that can still beat ``best_score``."""
+        start = len(self.upper)
+        stop = min(self.n, start + BATCH)
+        todo = [i for i in range(start, stop) if self.static[i] > best_score + 1e-12]
+        m = Measure(self.boxes[todo], self.bounds[todo], [(layer, *nb.pairs(todo)) for layer, nb in self.near],
+                    self.aligned) if todo else None
+        slot = {i: k for k, i in enumerate(todo)}
+        for i in range(start, stop):
+            k = slot.get(i)
+            if m is None or k is None:           # it cannot beat the best so far, nor any later best
+                self.lower.append(-math.inf)
+                self.upper.append(self.static[i])
+                self.where.append(None)
+            else:
+                self._bound(i, *m.bounds(k))
+                self.where.append((m, k))
+
+    def _bound(self, i: int, lo: float, hi: float) -> None:
+        """Set candidate ``i``'s score bounds from bounds of its clearance."""
+        pen, out = self.cost[i], self.outside[i]
+        if i == len(self.upper):
+            self.lower.append(lo - pen - out)
+            self.upper.append(hi - pen - out)
+        else:
+            self.lower[i], self.upper[i] = lo - pen - out, hi - pen - out
+
+    def sure_winner(self, i: int, best_score: float) -> int | None:
+        """A later candidate that replaces the best whatever the ones from ``i`` to it score."""
+        top = max(best_score, self.upper[i])
+        j = i + 1
+        while j < self.n and self.reach[j] > top + 1e-12:
+            if j == len(self.upper):
+                self.measure(best_score)
+            if self.lower[j] > top + 1e-12:
+                return j
+            top = max(top, self.upper[j])
+            j += 1
+        return None
+
+    def run(self) -> tuple[XY, float]:
+        """The centre of the best candidate and its score (the anchor and -inf when there is none)."""
+        best, best_score = None, -math.inf
+        i = 0
+        while i < self.n:
+            if i == len(self.upper):
+                self.measure(best_score)
+            if self.upper[i] <= best_score + 1e-12:
+                i += 1                           # it cannot win
+                continue
+            j = self.sure_winner(i, best_score)
+            if j is None and self.lower[i] < self.upper[i]:     # it touches something: bound what it covers
+                m, k = self.where[i]                            # type: ignore[misc]
+                self._bound(i, *m.refine(k))
+                if self.upper[i] <= best_score + 1e-12:
+                    i += 1
+                    continue
+            i = i if j is None else j
+            m, k = self.where[i]                                # type: ignore[misc]
+            score = m.exact(k) - self.cost[i] - self.outside[i]
+            if score > best_score + 1e-12:
+                best, best_score = i, score
+            elif j is not None:
+                raise AssertionError("a sure winner did not win: its bounds were wrong")
+            i += 1
+        return (self.centres[best] if best is not None else self.anchor), best_score
+
+
 BATCH = 16
-"""Candidates measured per batch after the first (the preferred position alone)."""
+"""Candidates measured at once (one distance of the sixteen directions)."""
 
 
 def _boxes(req: Request, centres: Sequence[XY]) -> np.ndarray:
@@ -257,7 +273,26 @@ def _boxes(req: Request, centres: Sequence[XY]) -> np.ndarray:
     return shapely.box(c[:, 0] - hw, c[:, 1] - hh, c[:, 0] + hw, c[:, 1] + hh)
 
 
+def _centres(req: Request) -> tuple[list[XY], list[float]]:
+    """The candidate box centres of ``req`` in the order they are tried, and their penalties: the explicit
+    candidates, or the directions of :func:`directions` at each of :data:`DISTANCES` beyond the gap (the
+    box's :func:`half_extent` along the direction added), computed as those functions compute them."""
+    if req.candidates:
+        return list(req.candidates), [req.spread * i for i in range(len(req.candidates))]
+    ux, uy = _units(req.prefer)
+    ax, ay = np.abs(ux), np.abs(uy)
+    with np.errstate(divide="ignore"):
+        tx = np.where(ax > 1e-12, (req.width / 2) / ax, math.inf)
+        ty = np.where(ay > 1e-12, (req.height / 2) / ay, math.inf)
+    reach = (req.gap + np.array(DISTANCES)[:, None]) + np.minimum(tx, ty)
+    cx, cy = req.anchor[0] + ux * reach, req.anchor[1] + uy * reach
+    rank = np.arange(len(ux))
+    penalty = FAR_PENALTY * np.arange(len(DISTANCES))[:, None] + req.spread * rank
+    return list(zip(cx.ravel().tolist(), cy.ravel().tolist())), penalty.ravel().tolist()
+
+
 @functools.lru_cache(maxsize=1024)
-def _units(prefer: float) -> tuple[XY, ...]:
+def _units(prefer: float) -> tuple[np.ndarray, np.ndarray]:
     """The unit vectors of :func:`directions` around ``prefer``, nearest first."""
-    return tuple((math.cos(a), math.sin(a)) for a in directions(prefer))
+    a = directions(prefer)
+    return np.array([math.cos(t) for t in a]), np.array([math.sin(t) for t in a])

@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any, Union
 
+import numpy as np
 import shapely
 
 from .markup import Element
@@ -189,8 +190,15 @@ SUB_DROP = 0.22
 
 # ---------------------------------------------------------------------------------------------- obstacles
 def _arc_points(a: ArcP) -> list[XY]:
+    """Points of an arc every ~1 mm of paper: ``a.at(i / (n - 1))``, written out."""
     n = max(2, int(abs(a.sweep) * a.r / 1.0) + 2)     # a vertex every ~1 mm of paper
-    return [a.at(i / (n - 1)) for i in range(n)]
+    (cx, cy), r, start, sweep, cos, sin = a.c, a.r, a.start, a.sweep, math.cos, math.sin
+    return [(cx + r * cos(t), cy + r * sin(t)) for t in (start + (i / (n - 1)) * sweep for i in range(n))]
+
+
+def _line(pts: list[XY]) -> shapely.Geometry:
+    """``shapely.LineString(pts)`` (the same coordinates), made from an array in one call."""
+    return shapely.linestrings(np.array(pts, dtype=float))
 
 
 def text_polygon(t: Text) -> shapely.Geometry:
@@ -207,13 +215,14 @@ def obstacle(shape: Shape) -> shapely.Geometry:
     """The shapely geometry a label must keep clear of: strokes as lines, markers and texts as areas."""
     if isinstance(shape, Poly):
         pts = list(shape.pts) + ([shape.pts[0]] if shape.closed else [])
-        geom = shapely.LineString(pts) if len(pts) > 1 else shapely.Point(pts[0])
-        return shapely.Polygon(shape.pts) if shape.closed and shape.fill != "none" and len(pts) > 3 else geom
+        if shape.closed and shape.fill != "none" and len(pts) > 3:
+            return shapely.Polygon(shape.pts)
+        return _line(pts) if len(pts) > 1 else shapely.Point(pts[0])
     if isinstance(shape, ArcP):
-        return shapely.LineString(_arc_points(shape))
+        return _line(_arc_points(shape))
     if isinstance(shape, Disc):
         if shape.fill == "none":
-            return shapely.LineString(_arc_points(ArcP(shape.c, shape.r, 0.0, 2 * math.pi, Pen("", 0))))
+            return _line(_arc_points(ArcP(shape.c, shape.r, 0.0, 2 * math.pi, Pen("", 0))))
         return shapely.Point(shape.c).buffer(shape.r + (shape.pen.width / 2 if shape.pen else 0.0), 8)
     return text_polygon(shape)
 
