@@ -86,22 +86,37 @@ def text_width(text: str | Runs, size: float) -> float:
     runs = ((text, False),) if isinstance(text, str) else text
     terms: list[float] = []
     for s, sub in runs:
-        table = _ADVANCES.get((size, sub))
-        if table is None:
-            table = _ADVANCES[size, sub] = {}
-        try:
-            part = list(map(table.__getitem__, s))
-        except KeyError:
-            for ch in s:
-                if ch not in table:
-                    table[ch] = char_em(ch) * size * (0.72 if sub else 1.0)
-            part = list(map(table.__getitem__, s))
-        terms += part
+        terms += _advances(s, size, sub)
     return sum(terms)
+
+
+def _advances(s: str, size: float, sub: bool) -> list[float]:
+    """Each character's term of :func:`text_width`, from a table by (size, subscript)."""
+    table = _ADVANCES.get((size, sub))
+    if table is None:
+        table = _ADVANCES[size, sub] = {}
+    try:
+        return list(map(table.__getitem__, s))
+    except KeyError:
+        for ch in s:
+            if ch not in table:
+                table[ch] = char_em(ch) * size * (0.72 if sub else 1.0)
+        return list(map(table.__getitem__, s))
 
 
 _ADVANCES: dict[tuple[float, bool], dict[str, float]] = {}
 """Each character's advance term of :func:`text_width`, by (size, subscript), as computed there."""
+
+
+def _wide(ch: str) -> bool:
+    """Whether a character is a CJK one (1 em wide)."""
+    out = _WIDE.get(ch)
+    if out is None:
+        out = _WIDE[ch] = char_em(ch) == 1.0
+    return out
+
+
+_WIDE: dict[str, bool] = {}
 
 
 def _tokens(s: str) -> list[str]:
@@ -110,7 +125,7 @@ def _tokens(s: str) -> list[str]:
     out: list[str] = []
     word = ""
     for ch in s:
-        cjk = char_em(ch) == 1.0
+        cjk = _wide(ch)
         if cjk and ch in _CLOSING:
             word += ch
         elif cjk:
@@ -121,7 +136,7 @@ def _tokens(s: str) -> list[str]:
             out.append(word + " ")
             word = ""
         else:
-            if word and char_em(word[-1]) == 1.0 and word[-1] not in _CLOSING:
+            if word and _wide(word[-1]) and word[-1] not in _CLOSING:
                 out.append(word)
                 word = ""
             word += ch
@@ -146,12 +161,17 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
     """
     lines: list[str] = []
     cur = ""
+    full = 0.0          # the width of cur with every character full size: at least its width
     for tok in _tokens(text):
-        if cur.strip() and text_width(rich_runs(cur + tok.rstrip()), size) > width:
+        body = tok.rstrip()
+        if (cur.strip() and full + sum(_advances(body, size, False)) > width - 1e-6
+                and text_width(rich_runs(cur + body), size) > width):
             lines.append(cur.rstrip())
             cur = tok.lstrip()
+            full = sum(_advances(cur, size, False))
         else:
             cur += tok
+            full += sum(_advances(tok, size, False))
     lines.append(cur.rstrip())
     if last_reserve and len(lines[-1]) and text_width(rich_runs(lines[-1]), size) + last_reserve > width:
         words = lines[-1].rsplit(" ", 1)

@@ -28,7 +28,7 @@ class Element:
         self.tag = tag
         self.text = text
         self.cdata = cdata
-        self.attribs = {k.rstrip("_").replace("_", "-"): v for k, v in attribs.items()}
+        self.attribs = {_NAMES.get(k) or _name(k): v for k, v in attribs.items()}
         self.elements: list[Element] = []
 
     def add(self, element: Element) -> Element:
@@ -60,6 +60,16 @@ class Element:
             write(f"</{self.tag}>")
         else:
             write(" />")
+
+
+_NAMES: dict[str, str] = {}
+
+
+def _name(keyword: str) -> str:
+    """The SVG name of a keyword, as svgwrite spelled it: ``class_`` → ``class``, ``stroke_width`` →
+    ``stroke-width``."""
+    _NAMES[keyword] = out = keyword.rstrip("_").replace("_", "-")
+    return out
 
 
 def escape_text(text: str) -> str:
