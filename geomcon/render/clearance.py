@@ -21,14 +21,14 @@ Examples
 [1.0, -0.6]
 >>> [m.bounds(k) for k in range(2)]                # the second touches the line: it covers 0 to all
 [(1.0, 1.0), (-2.0, 0.0)]
->>> tuple(round(b, 6) for b in m.refine(1))       # it covers 2 mm of it (within 1e-9)
-(-0.6, -0.6)
+>>> round(m.refine(1), 6)                          # it covers at least 2 mm of it (less 1e-9)
+-0.6
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Iterator, Sequence
 
 import numpy as np
 import shapely
@@ -46,6 +46,7 @@ REACH = ENOUGH + 1e-6
 
 PIECE = 8
 """Segments per piece of a long polyline obstacle."""
+
 
 SEGMENTS, BOX, OTHER = 0, 1, 2
 """Kinds of piece: points and line strings (by their segments), axis-parallel rectangles, anything else
@@ -118,7 +119,7 @@ class Layer:
         self._allow: list[float] = []
         self._bounds: list[Box] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
-        self._segments: dict[int, list[tuple[float, float, float, float]]] = {}
+        self._segments: dict[int, list[list[float]]] = {}
         self.extend(geoms, owners, allow)
         self.tree = shapely.STRtree(self.arrays()[0]) if split and self.pieces else None
 
@@ -188,13 +189,13 @@ class Layer:
                             np.array([p.bounds for p in self.pieces], dtype=float).reshape(-1, 4))
         return self._arrays
 
-    def segments(self, piece: int) -> list[tuple[float, float, float, float]]:
-        """The segments of a point or line-string piece (a point is one of zero length)."""
+    def segments(self, piece: int) -> list[list[float]]:
+        """The segments [ax, ay, bx, by] of a point or line-string piece (a point is one of zero length)."""
         out = self._segments.get(piece)
         if out is None:
             xy = self.pieces[piece].xy
             assert xy is not None
-            out = self._segments[piece] = [tuple(s) for s in np.hstack([xy[:-1], xy[1:]]).tolist()]
+            out = self._segments[piece] = np.hstack([xy[:-1], xy[1:]]).tolist()
         return out
 
     def near(self, bounds: np.ndarray, owner: str | None) -> Nearby:
@@ -284,18 +285,19 @@ class Measure:
         """A lower and an upper bound of the clearance of box ``k`` (equal when it touches nothing)."""
         return float(self._lo[k]), float(self._base[k])
 
-    def refine(self, k: int) -> tuple[float, float]:
-        """Tighter bounds of the clearance of box ``k``, from estimates of what it covers."""
-        lo = hi = float(self._base[k])
-        if not self._aligned:
-            return float(self._lo[k]), hi
+    def refine(self, k: int, enough: Callable[[float], bool] = lambda hi: False) -> float:
+        """A tighter upper bound of the clearance of box ``k``, from lower bounds of what it covers of each
+        geometry it touches; measured until ``enough(bound)`` holds."""
+        hi = float(self._base[k])
+        if not self._aligned or enough(hi):
+            return hi
         box = tuple(self._bounds[k].tolist())
         for layer, rows, pieces in self._touching:
-            for parent, (c_lo, c_hi) in _cover_bounds(layer, pieces[rows == k].tolist(), box).items():
-                a = layer._allow[parent]
-                lo = min(lo, a - min(2.0, 0.3 * c_hi))
-                hi = min(hi, a - min(2.0, 0.3 * c_lo))
-        return lo, hi
+            for parent, covered in _covered(layer, pieces[rows == k].tolist(), box):
+                hi = min(hi, layer._allow[parent] - min(2.0, 0.3 * covered))
+                if enough(hi):
+                    return hi
+        return hi
 
     def exact(self, k: int) -> float:
         """The clearance of box ``k``: at most :data:`ENOUGH`, the least gap of :func:`gaps` (plus the
@@ -311,37 +313,30 @@ class Measure:
         return best
 
 
-def _cover_bounds(layer: Layer, pieces: list[int], box: Box) -> dict[int, tuple[float, float]]:
-    """Bounds of what the axis-parallel ``box`` covers of each geometry whose ``pieces`` touch it: a length
-    inside the box shrunk and grown by :data:`EPS` (for a line string that overlaps itself, at least its
-    longest single segment's), twice the root of an area, or 0 to all."""
+def _covered(layer: Layer, pieces: list[int], box: Box) -> Iterator[tuple[int, float]]:
+    """At least what the axis-parallel ``box`` covers of each geometry whose ``pieces`` touch it, growing:
+    the length of a line string inside the box shrunk by :data:`EPS` (for one that overlaps itself, its
+    longest single segment's), summed a segment at a time; twice the root of the overlap of a rectangle;
+    0 for anything else. A geometry may be yielded several times, each time with more."""
     x0, y0, x1, y1 = box
-    shrunk, grown = (x0 + EPS, y0 + EPS, x1 - EPS, y1 - EPS), (x0 - EPS, y0 - EPS, x1 + EPS, y1 + EPS)
-    lengths: dict[int, list[float]] = {}             # total in the shrunk box, longest one, total in the grown
-    out: dict[int, tuple[float, float]] = {}
+    inner = (x0 + EPS, y0 + EPS, x1 - EPS, y1 - EPS)
+    sums: dict[int, float] = {}
     for i in pieces:
         piece = layer.pieces[i]
-        if piece.kind == SEGMENTS:
-            acc = lengths.setdefault(piece.parent, [0.0, 0.0, 0.0])
-            gx0, gy0, gx1, gy1 = grown
-            for s in layer.segments(i):
-                ax, ay, bx, by = s
-                if (ax < gx0 and bx < gx0) or (ax > gx1 and bx > gx1) or (ay < gy0 and by < gy0) \
-                        or (ay > gy1 and by > gy1):
-                    continue                         # wholly beside the grown box
-                inner = inside_length(s, shrunk)
-                acc[0] += inner
-                acc[1] = max(acc[1], inner)
-                acc[2] += inside_length(s, grown)
-        elif piece.kind == BOX:
+        if piece.kind == BOX:
             ox, oy = box_overlap(box, piece.bounds)
-            if ox > EPS and oy > EPS:                # surely an area, not just a shared edge
-                out[piece.parent] = (2.0 * math.sqrt((ox - EPS) * (oy - EPS)), 2.0 * math.sqrt((ox + EPS) * (oy + EPS)))
-            else:
-                out[piece.parent] = (0.0, math.inf)
+            yield piece.parent, (2.0 * math.sqrt((ox - EPS) * (oy - EPS)) if ox > EPS and oy > EPS else 0.0)
+        elif piece.kind == OTHER:
+            yield piece.parent, 0.0
         else:
-            out[piece.parent] = (0.0, math.inf)
-    for parent, (total, longest, outer) in lengths.items():
-        inner = total if layer.simple[parent] else longest
-        out[parent] = (max(inner - EPS, 0.0), outer + EPS)
-    return out
+            simple = layer.simple[piece.parent]
+            total = sums.get(piece.parent, 0.0)
+            for seg in layer.segments(i):
+                ax, ay, bx, by = seg
+                if (ax < x0 and bx < x0) or (ax > x1 and bx > x1) or (ay < y0 and by < y0) or (ay > y1 and by > y1):
+                    continue                        # wholly beside the box
+                length = inside_length(seg, inner)
+                if length > 0.0:
+                    total = total + length if simple else max(total, length)
+                    yield piece.parent, max(total - EPS, 0.0)
+            sums[piece.parent] = total

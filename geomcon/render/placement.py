@@ -205,17 +205,10 @@ class _Scan:
                 self.upper.append(self.static[i])
                 self.where.append(None)
             else:
-                self._bound(i, *m.bounds(k))
+                lo, hi = m.bounds(k)
+                self.lower.append(lo - self.cost[i] - self.outside[i])
+                self.upper.append(hi - self.cost[i] - self.outside[i])
                 self.where.append((m, k))
-
-    def _bound(self, i: int, lo: float, hi: float) -> None:
-        """Set candidate ``i``'s score bounds from bounds of its clearance."""
-        pen, out = self.cost[i], self.outside[i]
-        if i == len(self.upper):
-            self.lower.append(lo - pen - out)
-            self.upper.append(hi - pen - out)
-        else:
-            self.lower[i], self.upper[i] = lo - pen - out, hi - pen - out
 
     def sure_winner(self, i: int, best_score: float) -> int | None:
         """A later candidate that replaces the best whatever the ones from ``i`` to it score."""
@@ -243,7 +236,8 @@ class _Scan:
             j = self.sure_winner(i, best_score)
             if j is None and self.lower[i] < self.upper[i]:     # it touches something: bound what it covers
                 m, k = self.where[i]                            # type: ignore[misc]
-                self._bound(i, *m.refine(k))
+                pen, out = self.cost[i], self.outside[i]
+                self.upper[i] = m.refine(k, lambda hi: hi - pen - out <= best_score + 1e-12) - pen - out
                 if self.upper[i] <= best_score + 1e-12:
                     i += 1
                     continue
