@@ -14,6 +14,7 @@ Examples
 """
 from __future__ import annotations
 
+import functools
 import re
 
 Runs = tuple[tuple[str, bool], ...]
@@ -159,6 +160,12 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
     >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)
     ['以 A 为圆心、BC', '− AB = 20 为半径', '作圆']
     """
+    return list(_wrap(text, width, size, last_reserve))
+
+
+@functools.lru_cache(maxsize=4096)
+def _wrap(text: str, width: float, size: float, last_reserve: float) -> tuple[str, ...]:
+    """:func:`wrap`, remembered: every frame of a replay wraps the same captions."""
     lines: list[str] = []
     cur = ""
     full = 0.0          # the width of cur with every character full size: at least its width
@@ -179,4 +186,4 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
             lines[-1:] = words
         else:
             lines.append("")
-    return lines
+    return tuple(lines)
