@@ -21,9 +21,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
+import svgwrite
+
 from ..scene import Role, Scene
 from .labels import rich_runs, text_width, wrap
-from .markup import Element
 from .shapes import add_runs
 from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
 from .view import fmt
@@ -130,19 +131,19 @@ def _column_heights(heights: Sequence[float], starts: Sequence[int]) -> list[flo
     return [sum(heights[a:b]) for a, b in zip(bounds, bounds[1:])]
 
 
-def _line(text: str, x: float, y: float, size: float, fill: str, cls: str) -> Element:
-    el = Element("text", x=fmt(x), y=fmt(y), font_size=fmt(size), fill=fill, class_=cls)
+def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fill: str, cls: str) -> Any:
+    el = dwg.text("", insert=(fmt(x), fmt(y)), font_size=fmt(size), fill=fill, class_=cls)
     el.attribs["xml:space"] = "preserve"            # keep the spaces around subscript runs
     add_runs(el, rich_runs(text), size)
     return el
 
 
-def render_protocol(lay: Layout, x: float, y: float, values: Mapping[str, Any],
-                    shown: int, current: int | None) -> Element:
+def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, values: Mapping[str, Any],
+                    shown: int, current: int | None) -> Any:
     """The protocol group: entries 1…``shown`` (each ``<g class="proto" data-step="n">``), entry
     ``current`` highlighted; values taken from ``values`` (measured steps only)."""
-    root = Element("g", id="protocol")
-    root.add(_line("Construction protocol  作图步骤", x, y + 3.2, 3.0, INK, "proto-head"))
+    root = dwg.g(id="protocol")
+    root.add(_line(dwg, "Construction protocol  作图步骤", x, y + 3.2, 3.0, INK, "proto-head"))
     root.elements[-1].attribs["font-weight"] = "bold"
     top = y + HEAD_H
     for e in lay.entries:
@@ -150,23 +151,23 @@ def render_protocol(lay: Layout, x: float, y: float, values: Mapping[str, Any],
             break
         is_cur = e.number == current
         ink, grey = (HIGHLIGHT, HIGHLIGHT) if is_cur else (INK, GREY_TEXT)
-        g = Element("g", id=f"proto-{e.key}", class_="proto current" if is_cur else "proto")
+        g = dwg.g(id=f"proto-{e.key}", class_="proto current" if is_cur else "proto")
         g.attribs["data-step"] = str(e.number)
         x0 = x + e.column * (COL_W + COL_GAP)
         yy = top + e.y + PROTO_SIZE
-        num = _line(f"{e.number}.", x0, yy, PROTO_SIZE, ink, "num")
+        num = _line(dwg, f"{e.number}.", x0, yy, PROTO_SIZE, ink, "num")
         num.attribs["font-weight"] = "bold"
         g.add(num)
         value = format_value(values.get(e.key), e.unit) if e.measured else ""
         for j, ln in enumerate(e.en):
-            el = _line(ln, x0 + NUM_W, yy, PROTO_SIZE, ink, "en")
+            el = _line(dwg, ln, x0 + NUM_W, yy, PROTO_SIZE, ink, "en")
             if value and j == len(e.en) - 1:
-                el.add(Element("tspan", value, class_="value", font_weight="bold"))
+                el.add(dwg.tspan(value, class_="value", font_weight="bold"))
             g.add(el)
             yy += EN_LH
         yy += ZH_LH - EN_LH
         for ln in e.zh:
-            g.add(_line(ln, x0 + NUM_W, yy, PROTO_ZH_SIZE, grey, "zh"))
+            g.add(_line(dwg, ln, x0 + NUM_W, yy, PROTO_ZH_SIZE, grey, "zh"))
             yy += ZH_LH
         root.add(g)
     return root
@@ -180,16 +181,16 @@ def info_height(info: Sequence[str], width: float) -> float:
     return 4.0 + INFO_SIZE * 1.6 + n * INFO_SIZE * 1.3
 
 
-def render_info(info: Sequence[str], x: float, y: float, width: float) -> Element:
+def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float) -> Any:
     """The result lines (answers, checks) under the protocol."""
-    g = Element("g", id="info")
+    g = dwg.g(id="info")
     y += 4.0 + INFO_SIZE
-    head = _line("Results  结果", x, y, 3.0, INK, "info-head")
+    head = _line(dwg, "Results  结果", x, y, 3.0, INK, "info-head")
     head.attribs["font-weight"] = "bold"
     g.add(head)
     y += INFO_SIZE * 1.6
     for s in info:
         for ln in wrap(s, width, INFO_SIZE):
-            g.add(_line(ln, x, y, INFO_SIZE, INK, "info"))
+            g.add(_line(dwg, ln, x, y, INFO_SIZE, INK, "info"))
             y += INFO_SIZE * 1.3
     return g

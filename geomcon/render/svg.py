@@ -21,11 +21,12 @@ True
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Sequence
+from typing import Any, Sequence
+
+import svgwrite
 
 from ..scene import Scene
 from .figure import Figure, build_figure, content_box, fit_view, shown_steps
-from .markup import Element, defs_of, style_sheet, svg_root
 from .protocol import info_height, layout, render_info, render_protocol
 from .shapes import to_svg
 from .style import CSS, FONT_FAMILY, INFO_SIZE, INK, PAPER, TITLE_SIZE
@@ -90,52 +91,54 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
         width = origin[0] + fig_w + MARGIN
         height = origin[1] + fig_h + SCALE_H + info_h + MARGIN
     width, height = float(fmt(width)), float(fmt(height))
-    dwg = svg_root(f"{fmt(width)}mm", f"{fmt(height)}mm", f"0 0 {fmt(width)} {fmt(height)}")
+    dwg = svgwrite.Drawing(size=(f"{fmt(width)}mm", f"{fmt(height)}mm"), viewBox=f"0 0 {fmt(width)} {fmt(height)}",
+                           profile="full", debug=False)
     dwg.attribs["font-family"] = FONT_FAMILY
-    defs_of(dwg).add(style_sheet(CSS))
-    dwg.add(Element("rect", x=0, y=0, width=fmt(width), height=fmt(height), fill=PAPER, id="paper"))
-    dwg.add(Element("text", title or scene.title, x=fmt(MARGIN), y=fmt(MARGIN + TITLE_SIZE),
-                    font_size=fmt(TITLE_SIZE), font_weight="bold", fill=INK, id="title"))
-    dwg.add(_figure_group(fig))
-    dwg.add(_scale_bar(fig, origin[0], origin[1] + fig_h + 6.0))
+    dwg.defs.add(dwg.style(CSS))
+    dwg.add(dwg.rect(insert=(0, 0), size=(fmt(width), fmt(height)), fill=PAPER, id="paper"))
+    dwg.add(dwg.text(title or scene.title, insert=(fmt(MARGIN), fmt(MARGIN + TITLE_SIZE)), font_size=fmt(TITLE_SIZE),
+                     font_weight="bold", fill=INK, id="title"))
+    dwg.add(_figure_group(dwg, fig))
+    dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig_h + 6.0))
     if lay:
         shown = fig.shown
-        dwg.add(render_protocol(lay, proto_x, origin[1], fig.values, shown, shown if upto is not None else None))
+        dwg.add(render_protocol(dwg, lay, proto_x, origin[1], fig.values, shown, shown if upto is not None else None))
         if info:
-            dwg.add(render_info(info, proto_x, origin[1] + lay.height, text_w))
+            dwg.add(render_info(dwg, info, proto_x, origin[1] + lay.height, text_w))
     elif info:
-        dwg.add(render_info(info, origin[0], origin[1] + fig_h + SCALE_H, text_w))
+        dwg.add(render_info(dwg, info, origin[0], origin[1] + fig_h + SCALE_H, text_w))
     return dwg.tostring()
 
 
-def _figure_group(fig: Figure) -> Element:
-    root = Element("g", id="figure")
+def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
+    root = dwg.g(id="figure")
     for name, groups in fig.layers():
-        layer = root.add(Element("g", id=f"layer-{name}"))
+        layer = dwg.g(id=f"layer-{name}")
         for sd in groups:
-            g = layer.add(Element("g", id=step_id(sd.key), class_=sd.classes))
+            g = dwg.g(id=step_id(sd.key), class_=sd.classes)
             g.attribs["data-step"] = str(sd.number)
             for shape in sd.shapes:
                 g.add(to_svg(shape))
+            layer.add(g)
+        root.add(layer)
     return root
 
 
-def _scale_bar(fig: Figure, x: float, y: float) -> Element:
+def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float) -> Any:
     """A scale bar of a round model length (about 15–35 mm of paper) and the scale μl."""
     mu = fig.view.mu
     length = max(nice_values(15.0 * mu, 35.0 * mu), default=20.0 * mu)
     L = length / mu
-    g = Element("g", id="scale", stroke=INK, stroke_width="0.3")
-    g.add(Element("path", d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
-                            f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
-                  fill="none"))
+    g = dwg.g(id="scale", stroke=INK, stroke_width="0.3")
+    g.add(dwg.path(d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
+                     f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
+                   fill="none"))
     size = fmt(INFO_SIZE)
-    g.add(Element("text", "0", x=fmt(x), y=fmt(y + 4.0), font_size=size, text_anchor="middle", stroke="none",
-                  fill=INK))
-    g.add(Element("text", f"{length:g} mm", x=fmt(x + L), y=fmt(y + 4.0), font_size=size, text_anchor="middle",
-                  stroke="none", fill=INK))
-    g.add(Element("text", f"μl = {mu:g} mm/mm", x=fmt(x + L + 10.0), y=fmt(y + 1.0), font_size=size,
-                  stroke="none", fill=INK))
+    g.add(dwg.text("0", insert=(fmt(x), fmt(y + 4.0)), font_size=size, text_anchor="middle", stroke="none", fill=INK))
+    g.add(dwg.text(f"{length:g} mm", insert=(fmt(x + L), fmt(y + 4.0)), font_size=size, text_anchor="middle",
+                   stroke="none", fill=INK))
+    g.add(dwg.text(f"μl = {mu:g} mm/mm", insert=(fmt(x + L + 10.0), fmt(y + 1.0)), font_size=size, stroke="none",
+                   fill=INK))
     return g
 
 
