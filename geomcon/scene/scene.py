@@ -404,7 +404,7 @@ class Scene:
         keys = tuple(keys)
         memo = self._memo
         tape = self._tape
-        if tape is not None and len(memo) == len(tape.inputs):      # a fresh replay: one compiled call
+        if tape is not None and len(memo) == tape.n_inputs:         # a fresh replay: one compiled call
             run = tape.program(keys)
             if run is not None:
                 try:

@@ -41,6 +41,7 @@ from __future__ import annotations
 import operator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any, Callable, Iterator, Mapping
 
 from ..geometry.branch import Branch
@@ -209,10 +210,15 @@ class Tape:
     programs: dict[tuple[str, ...], Callable[[dict], None] | None] = field(default_factory=dict, compare=False,
                                                                           repr=False)
 
-    @property
+    @cached_property
     def inputs(self) -> frozenset[str]:
         """The keys of the tape's own steps (in a replayed scene's memo from the start)."""
         return frozenset([PREFIX + n for n in self.leaves] + [n[0] for n in self.nodes])
+
+    @cached_property
+    def n_inputs(self) -> int:
+        """How many steps the tape computes itself (a fresh replay's memo holds exactly these)."""
+        return len(self.inputs)
 
     def program(self, keys: tuple[str, ...]) -> Callable[[dict], None] | None:
         """The compiled evaluation of ``keys`` on a fresh replay (:func:`.compiled.compile_plan`), made once."""
