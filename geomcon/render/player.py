@@ -1,5 +1,7 @@
 """A self-contained HTML step player: the full drawing inline, first / previous / play / next / last buttons,
-keyboard arrows, a slider, and the current step's number and caption in English and Chinese.
+keyboard arrows, a slider, and the current step's number and caption in English and Chinese. It opens at
+step 1, or at step N when the address ends in ``#step=N`` (the address follows the steps shown, so a step can be
+linked to).
 
 The replay is pure CSS: every step group and protocol entry carries ``data-step``; the script only sets
 the classes ``future`` (hidden) and ``current`` (highlighted) by comparing it with the current step. No
@@ -45,12 +47,19 @@ _SCRIPT = """
   "use strict";
   var STEPS = %(steps)s;
   var N = STEPS.length;
-  var k = N, timer = null;
+  var k = 1, timer = null;
   if (N === 0) return;
   var items = Array.prototype.slice.call(document.querySelectorAll("#drawing [data-step]"));
   function $(id) { return document.getElementById(id); }
-  function show(j) {
+  function fromHash() {
+    var m = /(?:^#|&)step=(\\d+)/.exec(window.location.hash);
+    return m ? parseInt(m[1], 10) : 1;
+  }
+  function show(j, keepUrl) {
     k = Math.max(1, Math.min(N, j));
+    if (!keepUrl && window.history && window.history.replaceState) {
+      try { window.history.replaceState(null, "", "#step=" + k); } catch (err) { /* a page without a URL */ }
+    }
     items.forEach(function (el) {
       var s = parseInt(el.getAttribute("data-step"), 10);
       el.classList.toggle("future", s > k);
@@ -86,7 +95,8 @@ _SCRIPT = """
     else if (e.key === "End") { stop(); show(N); e.preventDefault(); }
     else if (e.key === " ") { play(); e.preventDefault(); }
   });
-  show(N);
+  window.addEventListener("hashchange", function () { stop(); show(fromHash(), true); });
+  show(fromHash(), true);
 })();
 """
 

@@ -1,0 +1,57 @@
+"""The step player driven in headless Chromium (Debian package ``chromium``): it opens at step 1, ``#step=N``
+opens at N, and what is shown is exactly the steps up to the current one. Skipped, saying so, where no Chromium
+is installed (``apt-get install chromium``)."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from geomcon.problems import load_problem
+from geomcon.solve import solve
+
+ROOT = Path(__file__).resolve().parents[1]
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium not installed (apt-get install chromium)")
+
+
+def _dom(page: Path, fragment: str = "") -> str:
+    out = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--dump-dom",
+                          page.as_uri() + fragment], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr[-500:]
+    return out.stdout
+
+
+def _shown(dom: str) -> tuple[int, int, set[int]]:
+    """(current step, steps, the data-step numbers of drawing elements not hidden as future)."""
+    k, n = map(int, re.search(r'id="count">step (\d+) / (\d+)<', dom).groups())
+    drawing = dom[dom.index('id="drawing"'):]
+    shown = set()
+    for tag in re.finditer(r"<g\b[^>]*>", drawing):
+        attrs = tag.group(0)
+        step = re.search(r'data-step="(\d+)"', attrs)
+        if step and "future" not in (re.search(r'class="([^"]*)"', attrs) or [None, ""])[1]:
+            shown.add(int(step.group(1)))
+    return k, n, shown
+
+
+@pytest.fixture(scope="module")
+def page(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("player") / "001-08.html"
+    path.write_text(solve(load_problem(ROOT / "problems" / "001-08_crank_rocker.toml")).html(), encoding="utf-8")
+    return path
+
+
+def test_the_player_opens_at_step_1(page):
+    k, n, shown = _shown(_dom(page))
+    assert k == 1 and n > 10 and shown and max(shown) == 1
+
+
+def test_a_step_fragment_opens_at_that_step_and_is_clamped(page):
+    k, n, shown = _shown(_dom(page, "#step=3"))
+    assert k == 3 and max(shown) == 3 and {1, 2, 3} <= shown
+    k, n, shown = _shown(_dom(page, "#step=999"))
+    assert k == n and max(shown) == n
