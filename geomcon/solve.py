@@ -456,12 +456,13 @@ class Solution:
     def svg(self, *, upto: int | None = None, viewbox=None) -> str:
         """The annotated drawing (frame ``upto`` when given)."""
         from .render import render_svg
-        return render_svg(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines())
+        return render_svg(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines(),
+                          warnings=self.warnings)
 
     def html(self) -> str:
         """The self-contained step player page."""
         from .render import render_html
-        return render_html(self.drawing_scene, title=self.title(), info=self.info_lines())
+        return render_html(self.drawing_scene, title=self.title(), info=self.info_lines(), warnings=self.warnings)
 
     def frames(self) -> list[str]:
         """One SVG per numbered step, all with the full drawing's view box."""

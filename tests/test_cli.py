@@ -218,3 +218,16 @@ def test_a_printed_answer_beyond_drafting_accuracy_is_doubtful_in_text_json_and_
     (pub,) = json.loads(capsys.readouterr().out)["published"]
     assert pub["doubtful"] is True and pub["rel_deviation"] == 0.9991
     assert "doubtful" in (tmp_path / "f.svg").read_text(encoding="utf-8")
+
+
+def test_warnings_are_shown_in_the_figure_every_frame_and_the_player(tmp_path, capsys):
+    p = _write(tmp_path, GOOD.replace("theta = 12.5", "theta = 25"))
+    assert main(["solve", str(p), "--svg", str(tmp_path / "f.svg"), "--html", str(tmp_path / "f.html"),
+                 "--steps", str(tmp_path / "frames")]) == 0
+    shown = [(tmp_path / "f.svg").read_text(encoding="utf-8"), (tmp_path / "f.html").read_text(encoding="utf-8"),
+             *(f.read_text(encoding="utf-8") for f in sorted((tmp_path / "frames").glob("*.svg"))[:2])]
+    for text in shown:
+        assert "Warnings  警告" in text and "published theta = 25 is doubtful" in text
+    clean = _write(tmp_path, GOOD, name="clean.toml")
+    assert main(["solve", str(clean), "--svg", str(tmp_path / "c.svg")]) == 0
+    assert "Warnings" not in (tmp_path / "c.svg").read_text(encoding="utf-8")

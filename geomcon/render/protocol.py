@@ -173,24 +173,32 @@ def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, valu
     return root
 
 
-def info_height(info: Sequence[str], width: float) -> float:
-    """Height of the result lines (with their heading) under the protocol."""
-    if not info:
-        return 0.0
-    n = sum(len(wrap(s, width, INFO_SIZE)) for s in info)
-    return 4.0 + INFO_SIZE * 1.6 + n * INFO_SIZE * 1.3
+def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ()) -> float:
+    """Height of the result lines (with their heading) and of the warnings (with theirs) under the protocol."""
+    h = 0.0
+    for block in (info, warnings):
+        if block:
+            n = sum(len(wrap(s, width, INFO_SIZE)) for s in block)
+            h += 4.0 + INFO_SIZE * 1.6 + n * INFO_SIZE * 1.3
+    return h
 
 
-def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float) -> Any:
-    """The result lines (answers, checks) under the protocol."""
+def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float,
+                warnings: Sequence[str] = ()) -> Any:
+    """The result lines (answers, checks) under the protocol, then the warnings (a printed answer that is
+    doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading."""
     g = dwg.g(id="info")
-    y += 4.0 + INFO_SIZE
-    head = _line(dwg, "Results  结果", x, y, 3.0, INK, "info-head")
-    head.attribs["font-weight"] = "bold"
-    g.add(head)
-    y += INFO_SIZE * 1.6
-    for s in info:
-        for ln in wrap(s, width, INFO_SIZE):
-            g.add(_line(dwg, ln, x, y, INFO_SIZE, INK, "info"))
-            y += INFO_SIZE * 1.3
+    for block, heading, colour, cls in ((info, "Results  结果", INK, "info"),
+                                         (warnings, "Warnings  警告", HIGHLIGHT, "warning")):
+        if not block:
+            continue
+        y += 4.0 + INFO_SIZE
+        head = _line(dwg, heading, x, y, 3.0, colour, f"{cls}-head")
+        head.attribs["font-weight"] = "bold"
+        g.add(head)
+        y += INFO_SIZE * 1.6
+        for s in block:
+            for ln in wrap(s, width, INFO_SIZE):
+                g.add(_line(dwg, ln, x, y, INFO_SIZE, colour, cls))
+                y += INFO_SIZE * 1.3
     return g

@@ -54,7 +54,7 @@ def step_id(key: str) -> str:
 
 
 def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
-               info: Sequence[str] = (), protocol: bool = True) -> str:
+               info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = ()) -> str:
     """One SVG document of the scene, or of its frame ``upto``.
 
     Parameters
@@ -71,6 +71,9 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
         Result lines printed under the protocol.
     protocol : bool
         Print the numbered construction protocol beside the figure.
+    warnings : sequence of str
+        Warnings printed under the results, under their own heading (every frame shows them: they concern
+        the problem, not a step).
 
     Returns
     -------
@@ -83,7 +86,7 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
     lay = layout(scene, fig_h + SCALE_H) if protocol else None
     proto_x = origin[0] + fig_w + GAP
     text_w = lay.width if lay else fig_w
-    info_h = info_height(info, text_w)
+    info_h = info_height(info, text_w, warnings)
     if lay:
         width = proto_x + lay.width + MARGIN
         height = max(origin[1] + fig_h + SCALE_H, origin[1] + lay.height + info_h) + MARGIN
@@ -103,10 +106,10 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
     if lay:
         shown = fig.shown
         dwg.add(render_protocol(dwg, lay, proto_x, origin[1], fig.values, shown, shown if upto is not None else None))
-        if info:
-            dwg.add(render_info(dwg, info, proto_x, origin[1] + lay.height, text_w))
-    elif info:
-        dwg.add(render_info(dwg, info, origin[0], origin[1] + fig_h + SCALE_H, text_w))
+        if info or warnings:
+            dwg.add(render_info(dwg, info, proto_x, origin[1] + lay.height, text_w, warnings))
+    elif info or warnings:
+        dwg.add(render_info(dwg, info, origin[0], origin[1] + fig_h + SCALE_H, text_w, warnings))
     return dwg.tostring()
 
 
@@ -143,7 +146,7 @@ def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float) -> Any:
 
 
 def write_frames(scene: Scene, directory: str | Path, *, title: str | None = None,
-                 info: Sequence[str] = ()) -> list[Path]:
+                 info: Sequence[str] = (), warnings: Sequence[str] = ()) -> list[Path]:
     """Write one SVG per numbered step: ``step-001.svg`` shows step 1, ``step-k.svg`` steps 1…k with k
     highlighted; all share the full drawing's view box (and so one page size).
 
@@ -158,7 +161,8 @@ def write_frames(scene: Scene, directory: str | Path, *, title: str | None = Non
     from ..fileio import write_all
 
     box = model_extent(scene)
-    files = {Path(directory) / f"step-{k:03d}.svg": render_svg(scene, upto=k, viewbox=box, title=title, info=info)
+    files = {Path(directory) / f"step-{k:03d}.svg": render_svg(scene, upto=k, viewbox=box, title=title, info=info,
+                                                                     warnings=warnings)
              for k in range(1, len(scene.frames()) + 1)}
     write_all(files)
     return list(files)
