@@ -166,3 +166,14 @@ def test_the_order_plans_are_learned_in_changes_no_byte_of_the_json():
         for f in order:
             sol = solve(load_problem(f))
             assert to_json_text(sol) == (root / "gallery" / f"{sol.problem.id}.json").read_text(), f.name
+
+
+def test_an_angle_mark_is_drawn_with_the_step_that_measures_it():
+    """001-08: the marks of θ, ψ and the γs are added last but appear in the frames of their measurements."""
+    from geomcon.problems import load_problem
+    from pathlib import Path
+    sol = solve(load_problem(Path(__file__).resolve().parents[1] / "problems" / "001-08_crank_rocker.toml"))
+    sc = sol.drawing_scene
+    for mark, measured in (("mark_theta", "theta"), ("mark_psi", "psi"), ("mark_gamma_1", "gamma_1"),
+                           ("mark_gamma_2", "gamma_2")):
+        assert sc.number(mark) == sc.number(measured) < len(sc.frames())

@@ -339,13 +339,25 @@ class Scene:
 
     def frames(self) -> list[list[Step]]:
         """The visible steps grouped by protocol number: a step with an empty caption is drawn with the
-        numbered step before it (a link drawn with its position, a ground symbol with its pivot)."""
+        numbered step before it (a link drawn with its position, a ground symbol with its pivot), except an
+        annotation that shows a measurement (an angle mark with its value): it is drawn with the last
+        measurement it refers to, so that the mark appears with the step that measures it."""
         out: list[list[Step]] = []
-        for s in self.visible_steps():
+        where: dict[str, int] = {}
+        visible = self.visible_steps()          # completes a lean scene: its records only then
+        rec = self._rec
+        for s in visible:
             if s.caption[0] or s.branch is not None or not out:
                 out.append([s])
-            else:
-                out[-1].append(s)
+                where[s.key] = len(out) - 1
+                continue
+            at = len(out) - 1
+            if s.role is Role.ANNOTATION:
+                measured = [where[d] for d in rec[s.key][7] if d in where and rec[d][8][1] is Role.MEASUREMENT]
+                if measured:
+                    at = max(measured)
+            out[at].append(s)
+            where[s.key] = at
         return out
 
     def number(self, key: str) -> int:
