@@ -443,6 +443,14 @@ class Solution:
             lines.append(line)
         return lines
 
+    def info_steps(self) -> list[int]:
+        """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
+        several candidate solutions, the last of its candidates' steps: a result never shows early)."""
+        sc = self.drawing_scene
+        maps = self.construction.solutions or (self.construction.answers,)
+        return [sc.available_at([m[q.name] for m in maps if q.name in m])
+                for q in self.recipe.answers if q.name in self.answers]
+
     def title(self) -> str:
         """Title for drawings."""
         return self.problem.title or self.scene.title
@@ -457,12 +465,13 @@ class Solution:
         """The annotated drawing (frame ``upto`` when given)."""
         from .render import render_svg
         return render_svg(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines(),
-                          warnings=self.warnings)
+                          warnings=self.warnings, info_steps=self.info_steps())
 
     def html(self) -> str:
         """The self-contained step player page."""
         from .render import render_html
-        return render_html(self.drawing_scene, title=self.title(), info=self.info_lines(), warnings=self.warnings)
+        return render_html(self.drawing_scene, title=self.title(), info=self.info_lines(), warnings=self.warnings,
+                           info_steps=self.info_steps())
 
     def frames(self) -> list[str]:
         """One SVG per numbered step, all with the full drawing's view box."""

@@ -278,3 +278,24 @@ def test_supplementary_angle_mark_is_drawn_at_its_value():
     fig = build_figure(sc)
     arc = next(s for s in next(g for g in fig.groups if g.key == "m").shapes if type(s).__name__ == "ArcP")
     assert math.isclose(abs(arc.sweep), math.radians(40.0))
+
+
+def test_the_results_of_frame_k_are_only_those_of_steps_up_to_k():
+    """Issue 11: each result appears at the step that produces it; nothing later shows early (frames and the
+    player carry the step of each result line; the full figure shows them all)."""
+    import re
+    from pathlib import Path
+    from geomcon.problems import load_problem
+    from geomcon.solve import solve
+
+    root = Path(__file__).resolve().parents[1]
+    for name in ("001-08_crank_rocker.toml", "001-10_crank_rocker_design_coupler.toml", "200-01_cam_roller_offset.toml"):
+        sol = solve(load_problem(root / "problems" / name))
+        frames = sol.frames()
+        n_results = len(sol.info_lines())
+        for k, frame in enumerate(frames, 1):
+            steps = [int(s) for s in re.findall(r'<text class="info" data-step="(\d+)"', frame)]
+            assert all(s <= k for s in steps), (name, k, steps)
+        full = re.findall(r'<text class="info" data-step="(\d+)"', sol.svg())
+        assert len(full) >= n_results and max(map(int, full)) <= len(frames)
+        assert len(re.findall(r'class="info" data-step', frames[0])) < len(full)

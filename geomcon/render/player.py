@@ -136,7 +136,7 @@ def step_captions(scene: Scene) -> list[tuple[str, str]]:
 
 
 def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] = (), svg: str | None = None,
-                warnings: Sequence[str] = ()) -> str:
+                warnings: Sequence[str] = (), info_steps: Sequence[int] | None = None) -> str:
     """The step player page of the whole scene.
 
     Parameters
@@ -147,8 +147,8 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
         Page and drawing title (default: the scene's title).
     info : sequence of str
         Result lines printed under the protocol.
-    warnings : sequence of str
-        Warnings shown under the results (:func:`render_svg`).
+    warnings, info_steps
+        Warnings shown under the results, the frame producing each result (:func:`render_svg`).
     svg : str or None
         The drawing, when it is rendered already: ``render_svg(scene, title=title, info=info, warnings=…)`` (the
         page embeds exactly that document; passing it saves drawing the scene twice).
@@ -166,7 +166,7 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     True
     """
     if svg is None:
-        svg = render_svg(scene, title=title, info=info, warnings=warnings)
+        svg = render_svg(scene, title=title, info=info, warnings=warnings, info_steps=info_steps)
     svg = svg[svg.index("<svg"):]
     steps = json.dumps(step_captions(scene), ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()

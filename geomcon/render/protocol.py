@@ -184,9 +184,13 @@ def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ())
 
 
 def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float,
-                warnings: Sequence[str] = ()) -> Any:
+                warnings: Sequence[str] = (), steps: Sequence[int] | None = None, upto: int | None = None) -> Any:
     """The result lines (answers, checks) under the protocol, then the warnings (a printed answer that is
-    doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading."""
+    doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading.
+
+    ``steps`` (one per result line) is the frame that produces each result: a line carries it as
+    ``data-step`` (the player shows it from that step on) and frame ``upto`` leaves out the results of later
+    steps, keeping their room so that every frame has the same page."""
     g = dwg.g(id="info")
     for block, heading, colour, cls in ((info, "Results  结果", INK, "info"),
                                          (warnings, "Warnings  警告", HIGHLIGHT, "warning")):
@@ -197,8 +201,13 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
         head.attribs["font-weight"] = "bold"
         g.add(head)
         y += INFO_SIZE * 1.6
-        for s in block:
+        for i, s in enumerate(block):
+            step = steps[i] if steps is not None and block is info else None
             for ln in wrap(s, width, INFO_SIZE):
-                g.add(_line(dwg, ln, x, y, INFO_SIZE, colour, cls))
+                if step is None or upto is None or step <= upto:
+                    el = _line(dwg, ln, x, y, INFO_SIZE, colour, cls)
+                    if step is not None:
+                        el.attribs["data-step"] = str(step)
+                    g.add(el)
                 y += INFO_SIZE * 1.3
     return g

@@ -54,7 +54,8 @@ def step_id(key: str) -> str:
 
 
 def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
-               info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = ()) -> str:
+               info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
+               info_steps: Sequence[int] | None = None) -> str:
     """One SVG document of the scene, or of its frame ``upto``.
 
     Parameters
@@ -74,6 +75,8 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
     warnings : sequence of str
         Warnings printed under the results, under their own heading (every frame shows them: they concern
         the problem, not a step).
+    info_steps : sequence of int or None
+        The frame producing each result line: frame k shows the results of frames 1…k only.
 
     Returns
     -------
@@ -107,9 +110,9 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
         shown = fig.shown
         dwg.add(render_protocol(dwg, lay, proto_x, origin[1], fig.values, shown, shown if upto is not None else None))
         if info or warnings:
-            dwg.add(render_info(dwg, info, proto_x, origin[1] + lay.height, text_w, warnings))
+            dwg.add(render_info(dwg, info, proto_x, origin[1] + lay.height, text_w, warnings, info_steps, upto))
     elif info or warnings:
-        dwg.add(render_info(dwg, info, origin[0], origin[1] + fig_h + SCALE_H, text_w, warnings))
+        dwg.add(render_info(dwg, info, origin[0], origin[1] + fig_h + SCALE_H, text_w, warnings, info_steps, upto))
     return dwg.tostring()
 
 

@@ -360,6 +360,21 @@ class Scene:
             where[s.key] = at
         return out
 
+    def available_at(self, keys: Iterable[str]) -> int:
+        """The first frame (1-based) by which every step of ``keys`` is known: a visible step's own frame, an
+        invisible one's the last frame among what it depends on (1 when it depends on nothing drawn)."""
+        frame = {s.key: i for i, group in enumerate(self.frames(), 1) for s in group}
+        rec = self._rec
+        memo: dict[str, int] = {}
+
+        def at(k: str) -> int:
+            got = memo.get(k)
+            if got is None:
+                got = frame.get(k) or max((at(d) for d in rec[k][7]), default=1)
+                memo[k] = got
+            return got
+        return max((at(k) for k in keys), default=1)
+
     def number(self, key: str) -> int:
         """1-based protocol number of a visible step (the number of the frame it is drawn in)."""
         for i, group in enumerate(self.frames(), 1):
