@@ -474,11 +474,11 @@ class Solution:
                            info_steps=self.info_steps())
 
     def frames(self) -> list[str]:
-        """One SVG per numbered step, all with the full drawing's view box."""
-        from .render import model_extent
-        box = model_extent(self.drawing_scene)
-        n = len(self.drawing_scene.frames())
-        return [self.svg(upto=k, viewbox=box) for k in range(1, n + 1)]
+        """One SVG per numbered step: the full drawing with later steps hidden and step k highlighted, exactly
+        the step player's frame k (one rendering, one label placement: labels never jump between frames)."""
+        from .render.svg import frame_of
+        full = self.svg()
+        return [frame_of(full, k) for k in range(1, len(self.drawing_scene.frames()) + 1)]
 
 
 def solve(problem: Problem) -> Solution:

@@ -55,3 +55,24 @@ def test_a_step_fragment_opens_at_that_step_and_is_clamped(page):
     assert k == 3 and max(shown) == 3 and {1, 2, 3} <= shown
     k, n, shown = _shown(_dom(page, "#step=999"))
     assert k == n and max(shown) == n
+
+
+def _states(markup: str) -> list[tuple[int, bool, bool]]:
+    out = []
+    for tag in re.finditer(r"<[a-z]+\b[^>]*\bdata-step=\"(\d+)\"[^>]*>", markup):
+        cls = re.search(r'class="([^"]*)"', tag.group(0))
+        words = cls.group(1).split() if cls else []
+        out.append((int(tag.group(1)), "future" in words, "current" in words))
+    return out
+
+
+def test_the_player_s_frame_k_is_the_steps_frame_k(page):
+    """Issue 11: one rendering path — the elements shown, hidden and highlighted at player step k are those of
+    `geomcon solve --steps` frame k."""
+    sol = solve(load_problem(ROOT / "problems" / "001-08_crank_rocker.toml"))
+    frames = sol.frames()
+    for k in (1, 7, 14, len(frames)):
+        dom = _dom(page, f"#step={k}")
+        drawing = dom[dom.index('id="drawing"'):]
+        frame = frames[k - 1]
+        assert _states(drawing) == _states(frame[frame.index("<svg"):]), k

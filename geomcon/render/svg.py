@@ -20,6 +20,8 @@ True
 """
 from __future__ import annotations
 
+import re
+
 from pathlib import Path
 from typing import Any, Sequence
 
@@ -148,10 +150,40 @@ def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float) -> Any:
     return g
 
 
+_STEP_TAG = re.compile(r'<([A-Za-z][\w:.-]*)((?:\s+[^\s=<>]+="[^"<>]*")*?)\s+data-step="(\d+)"((?:\s+[^\s=<>]+="[^"<>]*")*)\s*(/?)>')
+
+
+_CLASS = re.compile(r'(\sclass=")([^"]*)"')
+
+
+def frame_of(svg: str, k: int) -> str:
+    """Frame ``k`` of a full drawing: the very document, each element of a later step marked ``future``
+    (hidden) and those of step ``k`` ``current`` (highlighted), exactly as the step player shows step k — one
+    rendering and one label placement for all frames, so that frames never disagree and labels never jump.
+
+    >>> frame_of('<svg><g data-step="1" /><g class="a" data-step="2">x</g><text data-step="3">y</text></svg>', 2)
+    '<svg><g data-step="1" /><g class="a current" data-step="2">x</g><text class="future" data-step="3">y</text></svg>'
+    """
+    def mark(m: re.Match) -> str:
+        tag, before, step, after, close = m.groups()
+        n = int(step)
+        extra = "future" if n > k else ("current" if n == k else "")
+        attrs = f'{before} data-step="{step}"{after}'
+        if extra:
+            if _CLASS.search(attrs):
+                attrs = _CLASS.sub(lambda c: f'{c.group(1)}{c.group(2)} {extra}"', attrs, count=1)
+            else:
+                attrs = f' class="{extra}"{attrs}'
+        return f"<{tag}{attrs}{' ' if close else ''}{close}>"
+    return _STEP_TAG.sub(mark, svg)
+
+
 def write_frames(scene: Scene, directory: str | Path, *, title: str | None = None,
-                 info: Sequence[str] = (), warnings: Sequence[str] = ()) -> list[Path]:
+                 info: Sequence[str] = (), warnings: Sequence[str] = (),
+                 info_steps: Sequence[int] | None = None) -> list[Path]:
     """Write one SVG per numbered step: ``step-001.svg`` shows step 1, ``step-k.svg`` steps 1…k with k
-    highlighted; all share the full drawing's view box (and so one page size).
+    highlighted: the full drawing rendered once, later steps hidden (:func:`frame_of`), so every frame has the
+    full drawing's page and labels.
 
     Every frame is rendered first; then each is written to a temporary file beside its target and renamed
     into place (:func:`geomcon.fileio.write_all`), so a failure leaves no half-written frame.
@@ -163,9 +195,7 @@ def write_frames(scene: Scene, directory: str | Path, *, title: str | None = Non
     """
     from ..fileio import write_all
 
-    box = model_extent(scene)
-    files = {Path(directory) / f"step-{k:03d}.svg": render_svg(scene, upto=k, viewbox=box, title=title, info=info,
-                                                                     warnings=warnings)
-             for k in range(1, len(scene.frames()) + 1)}
+    full = render_svg(scene, title=title, info=info, warnings=warnings, info_steps=info_steps)
+    files = {Path(directory) / f"step-{k:03d}.svg": frame_of(full, k) for k in range(1, len(scene.frames()) + 1)}
     write_all(files)
     return list(files)
