@@ -28,30 +28,23 @@ def inside_length(seg: tuple[float, float, float, float], box: Box) -> float:
     ax, ay, bx, by = seg
     x0, y0, x1, y1 = box
     dx, dy = bx - ax, by - ay
-    t0, t1 = 0.0, 1.0
-    if dx == 0.0:
-        if ax < x0 or ax > x1:
-            return 0.0
-    else:
-        ta, tb = (x0 - ax) / dx, (x1 - ax) / dx
-        if ta > tb:
-            ta, tb = tb, ta
-        if ta > t0:
-            t0 = ta
-        if tb < t1:
-            t1 = tb
-    if dy == 0.0:
-        if ay < y0 or ay > y1:
-            return 0.0
-    else:
-        ta, tb = (y0 - ay) / dy, (y1 - ay) / dy
-        if ta > tb:
-            ta, tb = tb, ta
-        if ta > t0:
-            t0 = ta
-        if tb < t1:
-            t1 = tb
+    span = _clip(ax, dx, x0, x1, 0.0, 1.0)
+    span = span and _clip(ay, dy, y0, y1, *span)
+    if not span:
+        return 0.0
+    t0, t1 = span
     return (t1 - t0) * math.hypot(dx, dy) if t1 > t0 else 0.0
+
+
+def _clip(a: float, d: float, lo: float, hi: float, t0: float, t1: float) -> tuple[float, float] | None:
+    """One axis of Liang–Barsky: the parameter range [t0, t1] of a + t·d narrowed to lo ≤ a + t·d ≤ hi
+    (None when a still segment lies outside)."""
+    if d == 0.0:
+        return None if a < lo or a > hi else (t0, t1)
+    ta, tb = (lo - a) / d, (hi - a) / d
+    if ta > tb:
+        ta, tb = tb, ta
+    return (ta if ta > t0 else t0), (tb if tb < t1 else t1)
 
 
 def box_overlap(a: Box, b: Box) -> tuple[float, float]:

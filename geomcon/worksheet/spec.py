@@ -73,6 +73,8 @@ MAX_TOL_REL = 0.05
 _SCALAR = ("mm", "deg", "", "mm/s")
 _ANSWER_REF = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d{1,4})\])?$")
 _PLACEHOLDER = re.compile(r"\{([^{}]*)\}")
+_WORDS = {"choice": (lambda v: isinstance(v, str), "words"), "bool": (lambda v: isinstance(v, bool), "true/false")}
+"""Givens of these units: what a value must be, and what a list of them is called in a refusal."""
 
 
 # ---------------------------------------------------------------------------------------------- value objects
@@ -349,18 +351,11 @@ def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: li
             raise ProblemError(form)
         fixed[q.name] = value
         return
-    if q.unit == "choice":
+    if q.unit in _WORDS:
+        ok, words = _WORDS[q.unit]
         if isinstance(value, list):
-            slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: isinstance(v, str), "words")))
-        elif isinstance(value, str):
-            fixed[q.name] = value
-        else:
-            raise ProblemError(form)
-        return
-    if q.unit == "bool":
-        if isinstance(value, list):
-            slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: isinstance(v, bool), "true/false")))
-        elif isinstance(value, bool):
+            slots.append(Slot((q.name,), choices=_choices(value, where, ok, words)))
+        elif ok(value):
             fixed[q.name] = value
         else:
             raise ProblemError(form)
