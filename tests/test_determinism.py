@@ -44,3 +44,17 @@ def test_json_numbers_carry_no_last_bit_noise():
     assert rounded(12.505586093412345, 1.0) == rounded(12.505586093412347, 1.0)
     assert rounded(3.5e-15, 90.0) == rounded(-2.2e-16, 90.0) == 0.0
     assert error_text(3.55e-15, 12.5) == error_text(5.33e-15, 12.5) == error_text(0.0, 12.5) == 0.0
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in (ROOT / "problems").glob("*.toml")))
+def test_a_problems_json_does_not_depend_on_earlier_solves(name):
+    """The first solve of a problem in a process is planned (and tapes the recipe); later ones replay the tape:
+    the JSON, its ``stats`` included, is the same either way (a replayed scene once counted a step the recipe
+    evaluates while building, 100-01's branch side, as not evaluated: 40 steps instead of 41)."""
+    from geomcon.gallery import to_json_text
+    from geomcon.problems import load_problem
+    from geomcon.solve import solve
+
+    p = load_problem(ROOT / "problems" / name)
+    first, second, third = (to_json_text(solve(p)) for _ in range(3))
+    assert first == second == third

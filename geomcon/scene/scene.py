@@ -224,6 +224,12 @@ class Scene:
             memo = self._memo                # in place: an evaluation under way holds this dict
             for k in [k for k in memo if k[:1] == _TAPE]:
                 del memo[k]
+            # the steps the recipe evaluates while it builds (a branch decided by a step's value) were computed
+            # by the tape as its own steps: they count as evaluated, as on the planned path, so that stats do
+            # not depend on whether an earlier solve taped the recipe (same givens: the same values)
+            for k, v in full._memo.items():
+                if k not in memo:
+                    memo[k] = v
             self._stale, self._tape = False, None
 
     # ------------------------------------------------------------------ building
