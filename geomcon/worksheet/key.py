@@ -85,7 +85,7 @@ def statement(ex: Exercise, v: Accepted, lang: str) -> str:
     several solutions, the sentence naming the textbook's choice."""
     given = {k: x for k, x in v.given.items() if x is not None}
     defaults = {q.name: q.default for q in get_recipe(ex.recipe).givens
-                if q.name not in given and q.default not in (None, (), False)}
+                if q.name not in given and q.default is not None and q.default is not False and q.default != ()}
     k = 1 if lang == "zh" else 0
     choice = CHOICE[ex.recipe][k] if v.several and ex.recipe in CHOICE else ""
     values = {**shown_givens(ex.recipe, {**defaults, **given}, lang), "choice": choice}
