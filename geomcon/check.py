@@ -29,7 +29,8 @@ PUBLISHED_WARN_REL = 0.03
 
 def scale_for(unit: str, length_scale: float, omega: float = 1.0) -> float:
     """The value below which relative comparison is replaced by an absolute one: the problem's length scale
-    for lengths, length scale × |ω| for speeds (mm/s), 1 for angles (degrees) and ratios.
+    for lengths, length scale × |ω| for speeds (mm/s) and × ω² for accelerations (mm/s²), |ω| and ω² for
+    angular velocities and accelerations (rad/s, rad/s²), 1 for angles (degrees) and ratios.
 
     Examples
     --------
@@ -40,6 +41,12 @@ def scale_for(unit: str, length_scale: float, omega: float = 1.0) -> float:
         return length_scale
     if unit == "mm/s":
         return length_scale * abs(omega)
+    if unit == "mm/s²":
+        return length_scale * omega * omega
+    if unit == "rad/s":
+        return abs(omega)
+    if unit == "rad/s²":
+        return omega * omega
     return 1.0
 
 

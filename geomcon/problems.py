@@ -57,6 +57,8 @@ RANGES = {
     "deg": (0.0, 3600.0),        # |angle| ≤ ten turns
     "": (0.0, 1e6),              # ratios, angular speeds (rad/s), counts
     "mm/s": (0.0, 1e14),         # a follower's speed (printed answers only)
+    "rad/s": (0.0, 1e6),         # an angular speed
+    "rad/s²": (0.0, 1e12),       # an angular acceleration
 }
 """Magnitude range of every given number by unit (lengths: a nonzero |x| in [lo, hi]; others |x| ≤ hi)."""
 
@@ -191,7 +193,7 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
     return out
 
 
-_SCALAR_UNITS = ("mm", "deg", "", "mm/s")
+_SCALAR_UNITS = ("mm", "deg", "", "mm/s", "rad/s", "rad/s²")
 
 
 def _plain(q: Quantity, value: Any) -> float | None:

@@ -425,7 +425,8 @@ class Solution:
         for q in self.recipe.answers:
             if q.name not in self.answers:
                 continue
-            unit = {"deg": "°", "mm": " mm", "mm/s": " mm/s"}.get(q.unit.removesuffix("[]"), "")
+            unit = {"deg": "°", "mm": " mm", "mm/s": " mm/s", "mm/s²": " mm/s²", "rad/s": " rad/s",
+                    "rad/s²": " rad/s²"}.get(q.unit.removesuffix("[]"), "")
             parts = _pairs(q.name, self.answers[q.name], self.answers[q.name])
             rows = [r for r in self.checks if any(r["quantity"] == name for name, _, _ in parts)]
             mark = "" if not rows else (" ✓ twin" if all(r["ok"] for r in rows) else " ✗ twin")

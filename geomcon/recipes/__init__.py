@@ -40,6 +40,8 @@ _WHERE: dict[str, tuple[str, str]] = {
     "cam.oscillating": ("cam_oscillating", "RECIPE"),
     "cam.eccentric": ("cam_eccentric", "RECIPE"),
     "cam.base_radius": ("cam_base_radius", "RECIPE"),
+    # kinematic analysis at one position (issue 15)
+    "four_bar.kinematics": ("four_bar_kinematics", "RECIPE"),
 }
 """Public recipe name → (module of :mod:`geomcon.recipes`, attribute holding its :class:`Recipe`)."""
 

@@ -121,6 +121,7 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("slider", width=0.45, layer="sliders"),
     Style("angle", width=0.25, layer="marks"),
     Style("dim", width=0.2, layer="marks"),
+    Style("vector", stroke="#1c4e80", width=0.45, layer="links"),
     Style("right-angle", width=0.25, layer="marks"),
 )}
 """The style table: every style name the recipes use."""

@@ -19,7 +19,7 @@ import math
 from typing import Any
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
-from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider, Vector
 from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
                    draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
@@ -204,6 +204,14 @@ def draw_dimension(m: Dimension, style: Style, ctx: Context) -> Drawn:
     return out
 
 
+def draw_vector(v: Vector, style: Style, ctx: Context) -> Drawn:
+    """A side of a velocity or acceleration polygon: the segment with an arrowhead at its end."""
+    out = draw_segment(v, style, ctx)
+    if out.shapes:
+        out.shapes.append(_arrow(ctx.view.p(v.b), ctx.view.p(v.a), style))
+    return out
+
+
 def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Drawn:
     """Draw any step value: dispatch on its type (tuples draw each member; numbers and None nothing)."""
     if value is None or isinstance(value, (bool, int, float, str)):
@@ -221,7 +229,7 @@ def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Dr
 
 _TABLE = {Segment: draw_segment, Polyline: draw_polyline, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
           AngleMark: draw_angle, RightAngleMark: draw_right_angle, Dimension: draw_dimension,
-          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide}
+          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Vector: draw_vector}
 
 
 def kind_of(value: Any) -> str:

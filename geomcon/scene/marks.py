@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..geometry.primitives import Point
+from ..geometry.primitives import Point, Segment
 
 
 @dataclass(frozen=True, slots=True)
@@ -115,3 +115,13 @@ def guide(a: Point, b: Point, side: int = -1) -> Guide:
 def right_angle(vertex: Point, a: Point, b: Point) -> RightAngleMark:
     """Build a :class:`RightAngleMark` (an annotation step operation)."""
     return RightAngleMark(vertex, a, b)
+
+
+@dataclass(frozen=True, slots=True)
+class Vector(Segment):
+    """A vector of a velocity or acceleration polygon: the segment ``a → b`` drawn with an arrowhead at ``b``."""
+
+
+def vector(a: Point, b: Point) -> Vector:
+    """Build a :class:`Vector` (a polygon's side, an annotation step operation)."""
+    return Vector(a, b)

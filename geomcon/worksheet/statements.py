@@ -173,6 +173,22 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
                    "一盘形凸轮{rotation}转动,推动偏置直动{follower}从动件,从动件导路位于凸轮回转中心右侧,"
                    "偏距 e = {e} mm。基圆半径 r0 = {r0} mm,行程 h = {h} mm;运动规律:{program}。"),
     },
+    "four_bar.kinematics": {
+        "": ("In the four-bar ABCD the crank is AB = {AB} mm, the coupler BC = {BC} mm, the rocker CD = {CD} mm and "
+             "the frame AD = {AD} mm. The crank stands at φ = {phi}° from AD and turns counter-clockwise positive at "
+             "ω = {omega} rad/s with ε = {epsilon} rad/s². Draw the velocity and acceleration polygons.",
+             "铰链四杆机构 ABCD 中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,摇杆 CD = {CD} mm,机架 AD = {AD} mm。"
+             "曲柄与 AD 的夹角 φ = {phi}°,角速度 ω = {omega} rad/s,角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。"
+             "试用矢量方程图解法作速度多边形和加速度多边形。"),
+        "E": ("In the four-bar ABCD the crank is AB = {AB} mm, the coupler BC = {BC} mm, the rocker CD = {CD} mm and "
+              "the frame AD = {AD} mm; E is a point of the coupler with BE = {BE} mm and ∠CBE = {angle_CBE}°. The "
+              "crank stands at φ = {phi}° from AD and turns counter-clockwise positive at ω = {omega} rad/s with "
+              "ε = {epsilon} rad/s². Draw the velocity and acceleration polygons and find E's images by the image "
+              "principle.",
+              "铰链四杆机构 ABCD 中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,摇杆 CD = {CD} mm,机架 AD = {AD} mm;"
+              "E 为连杆上一点,BE = {BE} mm,∠CBE = {angle_CBE}°。曲柄与 AD 的夹角 φ = {phi}°,角速度 ω = {omega} rad/s,"
+              "角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。试作速度多边形和加速度多边形,并用影像原理求 E 点的速度和加速度。"),
+    },
 }
 """Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
 
@@ -213,6 +229,8 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return next((k for k in ("e", "AB", "BC") if k in has), None)
     if recipe == "cam.translating":
         return "offset" if given.get("e") not in (None, 0, 0.0) else "centric"
+    if recipe == "four_bar.kinematics":
+        return "E" if "BE" in has else ""
     if recipe in TEMPLATES:
         return ""
     return None
@@ -260,6 +278,12 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "delta_alpha_max_return": ("the cam angle δ where it occurs", "其所在凸轮转角 δ"),
     "rho_min_pitch": ("the smallest radius of curvature of the pitch curve ρmin", "理论廓线最小曲率半径 ρmin"),
     "rho_min_actual": ("the smallest radius of curvature of the profile ρa,min", "实际廓线最小曲率半径 ρa,min"),
+    "omega2": ("the coupler's angular velocity ω2", "连杆的角速度 ω2"),
+    "omega3": ("the rocker's angular velocity ω3", "摇杆的角速度 ω3"),
+    "epsilon2": ("the coupler's angular acceleration ε2", "连杆的角加速度 ε2"),
+    "epsilon3": ("the rocker's angular acceleration ε3", "摇杆的角加速度 ε3"),
+    "vC": ("the velocity of C", "C 点的速度 vC"), "aC": ("the acceleration of C", "C 点的加速度 aC"),
+    "vE": ("the velocity of E", "E 点的速度 vE"), "aE": ("the acceleration of E", "E 点的加速度 aE"),
 }
 """How a statement names an asked answer (English, Chinese); others are named by their answer name."""
 

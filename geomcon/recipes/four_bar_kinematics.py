@@ -1,0 +1,303 @@
+"""``four_bar.kinematics``: velocities and accelerations of a four-bar at one crank position, by the vector
+polygons (矢量方程图解法: 速度多边形、加速度多边形, and the image principle 影像原理 for a coupler point).
+
+Construction (A at the origin, D on +x, C on the side ``branch`` names, as in ``crank_rocker.extremes``):
+
+1. The linkage at the crank angle φ: B on the crank circle, C where the circle about B (radius BC) meets the
+   rocker circle about D.
+2. The velocity polygon, from a pole p beside the linkage at the scale μv = |ω| (mm/s)/mm, so that pb is as
+   long as AB: ``vC = vB + vCB``: pb ⊥ AB in the sense of ω; the line through b ⊥ BC (the direction of vCB)
+   meets the line through p ⊥ CD (the direction of vC) at c. Then ω2 = vCB/BC and ω3 = vC/CD, their senses
+   read by carrying bc to C about B and pc to C about D.
+3. The acceleration polygon, from a pole p′ beside the velocity polygon at μa = |aB|/AB (mm/s²)/mm:
+   ``aC = aB + aCBⁿ + aCBᵗ = aCⁿ + aCᵗ``: p′b′ is aB (normal ω²·AB along B→A, plus the tangential ε·AB ⊥ AB
+   when the crank accelerates); from b′ the normal component aCBⁿ = ω2²·BC along C→B ends at n2, the line
+   through n2 ⊥ BC carries aCBᵗ; from p′ the normal component aCⁿ = ω3²·CD along C→D ends at n3, the line
+   through n3 ⊥ CD carries aCᵗ; the two lines meet at c′. ε2 = n2c′/BC, ε3 = n3c′/CD.
+4. A coupler point E (given BE and ∠CBE): its image e in each polygon makes the triangle bce (b′c′e′) similar
+   to BCE and turned the same way (the image principle); vE = pe·μv, aE = p′e′·μa.
+
+Every answer is measured on the polygons (lengths times the scale, senses by the turn of the polygon side
+against the link); the twin is the complex vector loop differentiated exactly
+(:func:`geomcon.analytic.kinematics.four_bar`).
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.kinematics import four_bar
+from ..errors import Degenerate, NotAMechanism
+from ..geometry import LeftOf, Line, Point, RightOf, circle, circle_circle, line_line, line_through, perpendicular, segment
+from ..scene import Role, Scene
+from ..scene.marks import vector
+from .base import Construction, Quantity, Recipe
+from .common import add_bar, add_pivot
+
+GIVENS = (
+    Quantity("AB", "mm", "crank"),
+    Quantity("BC", "mm", "coupler"),
+    Quantity("CD", "mm", "rocker"),
+    Quantity("AD", "mm", "frame"),
+    Quantity("phi", "deg", "crank angle ∠DAB, counter-clockwise from A→D", minimum=-360.0, inclusive=True,
+             maximum=360.0),
+    Quantity("omega", "rad/s", "crank angular velocity, counter-clockwise positive (not 0)", minimum=None),
+    Quantity("epsilon", "rad/s²", "crank angular acceleration, counter-clockwise positive", required=False,
+             default=0.0, minimum=None),
+    Quantity("branch", "choice", "assembly: C left (above) or right (below) of the directed line B→D",
+             required=False, default="above", minimum=None, choices=("above", "below")),
+    Quantity("BE", "mm", "coupler point E: its distance from B", required=False, default=None),
+    Quantity("angle_CBE", "deg", "coupler point E: ∠CBE, counter-clockwise from B→C", required=False, default=0.0,
+             minimum=-360.0, inclusive=True, maximum=360.0),
+)
+ANSWERS = (
+    Quantity("omega2", "rad/s", "angular velocity of the coupler BC (counter-clockwise positive)"),
+    Quantity("omega3", "rad/s", "angular velocity of the rocker CD (counter-clockwise positive)"),
+    Quantity("epsilon2", "rad/s²", "angular acceleration of the coupler BC"),
+    Quantity("epsilon3", "rad/s²", "angular acceleration of the rocker CD"),
+    Quantity("vC", "mm/s", "speed of C, pc·μv"),
+    Quantity("aC", "mm/s²", "acceleration of C, p′c′·μa"),
+    Quantity("vE", "mm/s", "speed of the coupler point E (when BE is given)"),
+    Quantity("aE", "mm/s²", "acceleration of the coupler point E (when BE is given)"),
+    Quantity("mu_v", "(mm/s)/mm", "scale of the velocity polygon"),
+    Quantity("mu_a", "(mm/s²)/mm", "scale of the acceleration polygon"),
+)
+
+
+# ---------------------------------------------------------------- step operations (pure; values in, value out)
+def crank_pin(A: Point, r: float, phi_deg: float) -> Point:
+    """B at distance ``r`` from A at ``phi_deg`` counter-clockwise from +x."""
+    a = math.radians(phi_deg)
+    return Point(A.x + r * math.cos(a), A.y + r * math.sin(a))
+
+
+def pole_beside(gap: float, y: float, *pts: Point) -> Point:
+    """A polygon's pole, taken in free space: ``gap`` to the right of the rightmost of ``pts``, at height ``y``
+    (``gap`` includes the polygon's first side, which may point back to the left).
+
+    >>> pole_beside(10.0, 0.0, Point(0, 0), Point(5, 3))
+    Point(x=15.0, y=0.0)
+    """
+    return Point(max(p.x for p in pts) + gap, y)
+
+
+def turned(start: Point, a: Point, b: Point, k: float, quarter: float) -> Point:
+    """``start + k·(b − a)`` turned by ``quarter``·90° (quarter ∈ {0, 1, −1}): a polygon side laid off parallel or
+    perpendicular to a link."""
+    dx, dy = (b.x - a.x) * k, (b.y - a.y) * k
+    if quarter > 0:
+        dx, dy = -dy, dx
+    elif quarter < 0:
+        dx, dy = dy, -dx
+    return Point(start.x + dx, start.y + dy)
+
+
+def meet(l1: Line, l2: Line) -> Point:
+    """Where a polygon's two direction lines meet (parallel lines: the polygon does not close, a dead point)."""
+    pts = line_line(l1, l2)
+    if len(pts) != 1:
+        raise Degenerate("the two direction lines are parallel: the polygon does not close (a dead point)")
+    return pts[0]
+
+
+def rate(p: Point, q: Point, a: Point, b: Point, mu: float) -> float:
+    """The angular rate a polygon side ``p → q`` (scale ``mu``) gives the link ``a → b``: (b − a) × (q − p) / |b − a|²,
+    counter-clockwise positive (a velocity ω × r, or a tangential acceleration ε × r)."""
+    rx, ry = b.x - a.x, b.y - a.y
+    return mu * (rx * (q.y - p.y) - ry * (q.x - p.x)) / (rx * rx + ry * ry)
+
+
+def scaled_length(p: Point, q: Point, mu: float) -> float:
+    """|pq|·μ: a polygon side read as a speed or an acceleration."""
+    return mu * math.hypot(q.x - p.x, q.y - p.y)
+
+
+def image(b: Point, c: Point, BE: float, BC: float, angle_deg: float) -> Point:
+    """The image e of E: the triangle bce similar to BCE, turned the same way (e from b at ∠cbe = ∠CBE,
+    be = bc·BE/BC)."""
+    a = math.radians(angle_deg)
+    k = BE / BC
+    dx, dy = (c.x - b.x) * k, (c.y - b.y) * k
+    ca, sa = math.cos(a), math.sin(a)
+    return Point(b.x + ca * dx - sa * dy, b.y + sa * dx + ca * dy)
+
+
+def normal_length(w: float, mu: float) -> float:
+    """A normal component ω²·r drawn at the scale μ, as a multiple of the link vector r (``turned`` multiplies by
+    it): ω²/μ."""
+    return w * w / mu
+
+
+def accel_scale(omega: float, epsilon: float) -> float:
+    """μa = |aB|/AB = √(ω⁴ + ε²): p′b′ drawn as long as AB."""
+    return math.sqrt(omega ** 4 + epsilon ** 2)
+
+
+def _validate(g: Mapping[str, Any]) -> list[str]:
+    if g["omega"] == 0:
+        raise NotAMechanism("omega = 0: the crank does not turn, the polygons have no scale")
+    AB, BC, CD, AD, phi = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"]
+    b = complex(AB * math.cos(math.radians(phi)), AB * math.sin(math.radians(phi)))
+    d = abs(AD - b)
+    if not abs(BC - CD) < d < BC + CD:
+        raise NotAMechanism(f"at phi = {phi:g}° the links do not assemble: BD = {d:.6g} is outside "
+                            f"(|BC − CD|, BC + CD) = ({abs(BC - CD):.6g}, {BC + CD:.6g})"
+                            + (" — a dead point: BC and CD collinear" if math.isclose(d, BC + CD) or
+                               math.isclose(d, abs(BC - CD)) else ""))
+    return []
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """Build the linkage at φ and its velocity and acceleration polygons."""
+    AB, BC, CD, AD, phi, omega = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"], g["omega"]
+    epsilon = g.get("epsilon", 0.0) or 0.0
+    below = g.get("branch", "above") == "below"
+    BE = g.get("BE")
+    sc = Scene("Four-bar: velocity and acceleration polygons")
+    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
+    D = add_pivot(sc, "D", (AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}", f"在机架线上取 D,使 AD = {AD:g}"))
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
+               caption=(f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"))
+    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
+    kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
+    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint", label="C",
+               caption=("They meet at C", "两圆交于 C"))
+    drawing = sc.drawing
+    if drawing:
+        sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
+        add_bar(sc, "AB", A, B, ("Draw the linkage ABCD at this position", "画出该位置的机构 ABCD"))
+        add_bar(sc, "BC", B, C)
+        add_bar(sc, "CD", C, D)
+    E = None
+    if BE is not None:
+        ang = g.get("angle_CBE", 0.0) or 0.0
+        E = sc.add("E", image, B, C, BE, BC, ang, style="joint", label="E",
+                   caption=(f"Coupler point E: BE = {BE:g}, ∠CBE = {ang:g}°", f"连杆上的点 E:BE = {BE:g},∠CBE = {ang:g}°"))
+        if drawing:
+            add_bar(sc, "BE", B, E, ("Draw the coupler triangle BCE", "画出连杆三角形 BCE"))
+            add_bar(sc, "CE", C, E)
+
+    # ---- velocity polygon: vC = vB + vCB
+    gap = (AB + BC + CD + AD) / 8.0 + AB      # free space, and room for pb (as long as AB) pointing back
+    mu_v = sc.add("mu_v", abs, omega, role=Role.MEASUREMENT, unit="(mm/s)/mm", visible=False,
+                  caption=(f"Velocity scale μv = |ω| = {abs(omega):g} (mm/s)/mm: pb as long as AB",
+                           f"速度比例尺 μv = |ω| = {abs(omega):g} (mm/s)/mm,使 pb 与 AB 等长"))
+    pts = (A, D, B, C) if E is None else (A, D, B, C, E)
+    p = sc.add("p", pole_beside, gap, 0.0, *pts, style="given", label="p",
+               caption=("Velocity pole p beside the linkage", "在机构旁取速度极点 p"))
+    sgn = 1.0 if omega > 0 else -1.0
+    b = sc.add("b", turned, p, A, B, 1.0, sgn, style="point", label="b",
+               caption=(f"pb ⊥ AB in the sense of ω: vB = ω·AB = {abs(omega) * AB:g} mm/s",
+                        f"作 pb ⊥ AB(指向与 ω 转向一致):vB = ω·lAB = {abs(omega) * AB:g} mm/s"))
+    lBC = sc.add("lBC", line_through, B, C, visible=False)
+    lCD = sc.add("lCD", line_through, C, D, visible=False)
+    tb = sc.add("tb", perpendicular, lBC, b, caption=("Through b, the direction of vCB (⊥ BC)", "过 b 作 vCB 的方向线(⊥ BC)"))
+    tp = sc.add("tp", perpendicular, lCD, p, caption=("Through p, the direction of vC (⊥ CD)", "过 p 作 vC 的方向线(⊥ CD)"))
+    c = sc.add("c", meet, tb, tp, style="point", label="c", caption=("They meet at c", "两线交于 c"))
+    sc.add("vC", scaled_length, p, c, mu_v, role=Role.MEASUREMENT, unit="mm/s",
+           caption=("Measure vC = pc·μv", "量得 vC = pc·μv"))
+    w2 = sc.add("omega2", rate, b, c, B, C, mu_v, role=Role.MEASUREMENT, unit="rad/s",
+                caption=("ω2 = vCB/BC = bc·μv/BC (sense: bc carried to C turns BC about B)",
+                         "ω2 = vCB/lBC = bc·μv/lBC(将 bc 移至 C 点判断转向)"))
+    w3 = sc.add("omega3", rate, p, c, D, C, mu_v, role=Role.MEASUREMENT, unit="rad/s",
+                caption=("ω3 = vC/CD = pc·μv/CD (sense: pc carried to C turns CD about D)",
+                         "ω3 = vC/lCD = pc·μv/lCD(将 pc 移至 C 点判断转向)"))
+    e = None
+    if E is not None:
+        e = sc.add("e", image, b, c, BE, BC, g.get("angle_CBE", 0.0) or 0.0, style="point", label="e",
+                   caption=("Image e: triangle bce similar to BCE (image principle)", "由影像原理作 △bce ∽ △BCE 得 e"))
+        sc.add("vE", scaled_length, p, e, mu_v, role=Role.MEASUREMENT, unit="mm/s",
+               caption=("Measure vE = pe·μv", "量得 vE = pe·μv"))
+    if drawing:
+        sc.add("v_pb", vector, p, b, role=Role.ANNOTATION, style="vector")
+        sc.add("v_pc", vector, p, c, role=Role.ANNOTATION, style="vector")
+        sc.add("v_bc", vector, b, c, role=Role.ANNOTATION, style="vector")
+        if e is not None:
+            sc.add("v_pe", vector, p, e, role=Role.ANNOTATION, style="vector")
+            sc.add("v_bce", segment, b, e, role=Role.ANNOTATION, style="ghost")
+            sc.add("v_ce", segment, c, e, role=Role.ANNOTATION, style="ghost")
+
+    # ---- acceleration polygon: aB + aCBⁿ + aCBᵗ = aCⁿ + aCᵗ
+    mu_a = sc.add("mu_a", accel_scale, omega, epsilon, role=Role.MEASUREMENT, unit="(mm/s²)/mm",
+                  visible=False, caption=("Acceleration scale μa = |aB|/AB: p′b′ as long as AB",
+                                          "加速度比例尺 μa = aB/lAB,使 p′b′ 与 AB 等长"))
+    vpts = (p, b, c) if e is None else (p, b, c, e)
+    p2 = sc.add("p2", pole_beside, gap, 0.0, *vpts, style="given", label="p′",
+                caption=("Acceleration pole p′ beside the velocity polygon", "在速度多边形旁取加速度极点 p′"))
+    k_n = sc.add("k_nB", normal_length, omega, mu_a, visible=False)
+    nB = sc.add("nB", turned, p2, B, A, k_n, 0.0, style="point", label="b′" if epsilon == 0 else "nB",
+                caption=("p′nB ∥ BA: aBⁿ = ω²·AB, towards A", "作 p′nB ∥ BA:aBⁿ = ω²·lAB,指向 A"))
+    b2 = nB
+    if epsilon != 0:
+        k_t = sc.add("k_tB", _ratio, epsilon, mu_a, visible=False)
+        b2 = sc.add("b2", turned, nB, A, B, k_t, 1.0, style="point", label="b′",
+                    caption=("nBb′ ⊥ AB: aBᵗ = ε·AB in the sense of ε", "作 nBb′ ⊥ AB:aBᵗ = ε·lAB,指向与 ε 转向一致"))
+    k2 = sc.add("k_n2", normal_length, w2, mu_a, visible=False)
+    n2 = sc.add("n2", turned, b2, C, B, k2, 0.0, style="point", label="n2",
+                caption=("From b′, b′n2 ∥ CB: aCBⁿ = ω2²·BC, towards B", "自 b′ 作 b′n2 ∥ CB:aCBⁿ = ω2²·lBC,指向 B"))
+    k3 = sc.add("k_n3", normal_length, w3, mu_a, visible=False)
+    n3 = sc.add("n3", turned, p2, C, D, k3, 0.0, style="point", label="n3",
+                caption=("From p′, p′n3 ∥ CD: aCⁿ = ω3²·CD, towards D", "自 p′ 作 p′n3 ∥ CD:aCⁿ = ω3²·lCD,指向 D"))
+    t2 = sc.add("t2", perpendicular, lBC, n2, caption=("Through n2, the direction of aCBᵗ (⊥ BC)", "过 n2 作 aCBᵗ 的方向线(⊥ BC)"))
+    t3 = sc.add("t3", perpendicular, lCD, n3, caption=("Through n3, the direction of aCᵗ (⊥ CD)", "过 n3 作 aCᵗ 的方向线(⊥ CD)"))
+    c2 = sc.add("c2", meet, t2, t3, style="point", label="c′", caption=("They meet at c′", "两线交于 c′"))
+    sc.add("aC", scaled_length, p2, c2, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
+           caption=("Measure aC = p′c′·μa", "量得 aC = p′c′·μa"))
+    sc.add("epsilon2", rate, n2, c2, B, C, mu_a, role=Role.MEASUREMENT, unit="rad/s²",
+           caption=("ε2 = aCBᵗ/BC = n2c′·μa/BC", "ε2 = aCBᵗ/lBC = n2c′·μa/lBC"))
+    sc.add("epsilon3", rate, n3, c2, D, C, mu_a, role=Role.MEASUREMENT, unit="rad/s²",
+           caption=("ε3 = aCᵗ/CD = n3c′·μa/CD", "ε3 = aCᵗ/lCD = n3c′·μa/lCD"))
+    e2 = None
+    if E is not None:
+        e2 = sc.add("e2", image, b2, c2, BE, BC, g.get("angle_CBE", 0.0) or 0.0, style="point", label="e′",
+                    caption=("Image e′: triangle b′c′e′ similar to BCE", "由影像原理作 △b′c′e′ ∽ △BCE 得 e′"))
+        sc.add("aE", scaled_length, p2, e2, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
+               caption=("Measure aE = p′e′·μa", "量得 aE = p′e′·μa"))
+    if drawing:
+        sc.add("a_pn", vector, p2, nB, role=Role.ANNOTATION, style="vector")
+        if b2 is not nB:
+            sc.add("a_nb", vector, nB, b2, role=Role.ANNOTATION, style="vector")
+            sc.add("a_pb", vector, p2, b2, role=Role.ANNOTATION, style="vector")
+        sc.add("a_bn2", vector, b2, n2, role=Role.ANNOTATION, style="vector")
+        sc.add("a_n2c", vector, n2, c2, role=Role.ANNOTATION, style="vector")
+        sc.add("a_pn3", vector, p2, n3, role=Role.ANNOTATION, style="vector")
+        sc.add("a_n3c", vector, n3, c2, role=Role.ANNOTATION, style="vector")
+        sc.add("a_pc", vector, p2, c2, role=Role.ANNOTATION, style="vector")
+        if e2 is not None:
+            sc.add("a_pe", vector, p2, e2, role=Role.ANNOTATION, style="vector")
+    names = ["omega2", "omega3", "epsilon2", "epsilon3", "vC", "aC", "mu_v", "mu_a"] + (["vE", "aE"] if E is not None else [])
+    answers = {n: n for n in names}
+    points = {n: n for n in ("A", "D", "B", "C")}
+    if E is not None:
+        points["E"] = "E"
+    return Construction(sc, answers, points)
+
+
+def _ratio(x: float, y: float) -> float:
+    return x / y
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """The complex vector loop, differentiated exactly."""
+    r = four_bar(g["AB"], g["BC"], g["CD"], g["AD"], g["phi"], g["omega"], g.get("epsilon", 0.0) or 0.0,
+                 branch=g.get("branch", "above"), BE=g.get("BE"), angle_CBE=g.get("angle_CBE", 0.0) or 0.0)
+    out = {k: r[k] for k in ("omega2", "omega3", "epsilon2", "epsilon3", "vC", "aC")}
+    out["mu_v"] = abs(g["omega"])
+    out["mu_a"] = r["aB"] / g["AB"]
+    if g.get("BE") is not None:
+        out["vE"], out["aE"] = r["vE"], r["aE"]
+    return [out]
+
+
+RECIPE = Recipe(
+    name="four_bar.kinematics",
+    title="Four-bar: velocity and acceleration polygons at one crank position",
+    givens=GIVENS,
+    answers=ANSWERS,
+    points=("A", "D", "B", "C"),
+    construct=construct,
+    analytic=analytic,
+    validate=_validate,
+)
+
+__all__ = ["RECIPE", "crank_pin", "image", "pole_beside", "rate", "scaled_length", "turned"]
