@@ -42,6 +42,8 @@ _WHERE: dict[str, tuple[str, str]] = {
     "cam.base_radius": ("cam_base_radius", "RECIPE"),
     # kinematic analysis at one position (issue 15)
     "four_bar.kinematics": ("four_bar_kinematics", "RECIPE"),
+    "crank_slider.kinematics": ("slider_kinematics", "SLIDER"),
+    "guide_bar.kinematics": ("slider_kinematics", "GUIDE"),
 }
 """Public recipe name → (module of :mod:`geomcon.recipes`, attribute holding its :class:`Recipe`)."""
 

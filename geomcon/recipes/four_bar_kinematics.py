@@ -27,12 +27,14 @@ import math
 from typing import Any, Mapping
 
 from ..analytic.kinematics import four_bar
-from ..errors import Degenerate, NotAMechanism
-from ..geometry import LeftOf, Line, Point, RightOf, circle, circle_circle, line_line, line_through, perpendicular, segment
+from ..errors import NotAMechanism
+from ..geometry import LeftOf, Point, RightOf, circle, circle_circle, line_through, perpendicular, segment
 from ..scene import Role, Scene
 from ..scene.marks import vector
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot
+from .kinematics_common import (add_crank_acceleration, add_crank_velocity, crank_pin, image, meet, normal_length,
+                                rate, scaled_length, turned)
 
 GIVENS = (
     Quantity("AB", "mm", "crank"),
@@ -62,75 +64,6 @@ ANSWERS = (
     Quantity("mu_v", "(mm/s)/mm", "scale of the velocity polygon"),
     Quantity("mu_a", "(mm/s²)/mm", "scale of the acceleration polygon"),
 )
-
-
-# ---------------------------------------------------------------- step operations (pure; values in, value out)
-def crank_pin(A: Point, r: float, phi_deg: float) -> Point:
-    """B at distance ``r`` from A at ``phi_deg`` counter-clockwise from +x."""
-    a = math.radians(phi_deg)
-    return Point(A.x + r * math.cos(a), A.y + r * math.sin(a))
-
-
-def pole_beside(gap: float, y: float, *pts: Point) -> Point:
-    """A polygon's pole, taken in free space: ``gap`` to the right of the rightmost of ``pts``, at height ``y``
-    (``gap`` includes the polygon's first side, which may point back to the left).
-
-    >>> pole_beside(10.0, 0.0, Point(0, 0), Point(5, 3))
-    Point(x=15.0, y=0.0)
-    """
-    return Point(max(p.x for p in pts) + gap, y)
-
-
-def turned(start: Point, a: Point, b: Point, k: float, quarter: float) -> Point:
-    """``start + k·(b − a)`` turned by ``quarter``·90° (quarter ∈ {0, 1, −1}): a polygon side laid off parallel or
-    perpendicular to a link."""
-    dx, dy = (b.x - a.x) * k, (b.y - a.y) * k
-    if quarter > 0:
-        dx, dy = -dy, dx
-    elif quarter < 0:
-        dx, dy = dy, -dx
-    return Point(start.x + dx, start.y + dy)
-
-
-def meet(l1: Line, l2: Line) -> Point:
-    """Where a polygon's two direction lines meet (parallel lines: the polygon does not close, a dead point)."""
-    pts = line_line(l1, l2)
-    if len(pts) != 1:
-        raise Degenerate("the two direction lines are parallel: the polygon does not close (a dead point)")
-    return pts[0]
-
-
-def rate(p: Point, q: Point, a: Point, b: Point, mu: float) -> float:
-    """The angular rate a polygon side ``p → q`` (scale ``mu``) gives the link ``a → b``: (b − a) × (q − p) / |b − a|²,
-    counter-clockwise positive (a velocity ω × r, or a tangential acceleration ε × r)."""
-    rx, ry = b.x - a.x, b.y - a.y
-    return mu * (rx * (q.y - p.y) - ry * (q.x - p.x)) / (rx * rx + ry * ry)
-
-
-def scaled_length(p: Point, q: Point, mu: float) -> float:
-    """|pq|·μ: a polygon side read as a speed or an acceleration."""
-    return mu * math.hypot(q.x - p.x, q.y - p.y)
-
-
-def image(b: Point, c: Point, BE: float, BC: float, angle_deg: float) -> Point:
-    """The image e of E: the triangle bce similar to BCE, turned the same way (e from b at ∠cbe = ∠CBE,
-    be = bc·BE/BC)."""
-    a = math.radians(angle_deg)
-    k = BE / BC
-    dx, dy = (c.x - b.x) * k, (c.y - b.y) * k
-    ca, sa = math.cos(a), math.sin(a)
-    return Point(b.x + ca * dx - sa * dy, b.y + sa * dx + ca * dy)
-
-
-def normal_length(w: float, mu: float) -> float:
-    """A normal component ω²·r drawn at the scale μ, as a multiple of the link vector r (``turned`` multiplies by
-    it): ω²/μ."""
-    return w * w / mu
-
-
-def accel_scale(omega: float, epsilon: float) -> float:
-    """μa = |aB|/AB = √(ω⁴ + ε²): p′b′ drawn as long as AB."""
-    return math.sqrt(omega ** 4 + epsilon ** 2)
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
@@ -179,16 +112,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
 
     # ---- velocity polygon: vC = vB + vCB
     gap = (AB + BC + CD + AD) / 8.0 + AB      # free space, and room for pb (as long as AB) pointing back
-    mu_v = sc.add("mu_v", abs, omega, role=Role.MEASUREMENT, unit="(mm/s)/mm", visible=False,
-                  caption=(f"Velocity scale μv = |ω| = {abs(omega):g} (mm/s)/mm: pb as long as AB",
-                           f"速度比例尺 μv = |ω| = {abs(omega):g} (mm/s)/mm,使 pb 与 AB 等长"))
     pts = (A, D, B, C) if E is None else (A, D, B, C, E)
-    p = sc.add("p", pole_beside, gap, 0.0, *pts, style="given", label="p",
-               caption=("Velocity pole p beside the linkage", "在机构旁取速度极点 p"))
-    sgn = 1.0 if omega > 0 else -1.0
-    b = sc.add("b", turned, p, A, B, 1.0, sgn, style="point", label="b",
-               caption=(f"pb ⊥ AB in the sense of ω: vB = ω·AB = {abs(omega) * AB:g} mm/s",
-                        f"作 pb ⊥ AB(指向与 ω 转向一致):vB = ω·lAB = {abs(omega) * AB:g} mm/s"))
+    mu_v, p, b = add_crank_velocity(sc, A, B, AB, omega, gap, pts)
     lBC = sc.add("lBC", line_through, B, C, visible=False)
     lCD = sc.add("lCD", line_through, C, D, visible=False)
     tb = sc.add("tb", perpendicular, lBC, b, caption=("Through b, the direction of vCB (⊥ BC)", "过 b 作 vCB 的方向线(⊥ BC)"))
@@ -209,7 +134,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("vE", scaled_length, p, e, mu_v, role=Role.MEASUREMENT, unit="mm/s",
                caption=("Measure vE = pe·μv", "量得 vE = pe·μv"))
     if drawing:
-        sc.add("v_pb", vector, p, b, role=Role.ANNOTATION, style="vector")
         sc.add("v_pc", vector, p, c, role=Role.ANNOTATION, style="vector")
         sc.add("v_bc", vector, b, c, role=Role.ANNOTATION, style="vector")
         if e is not None:
@@ -218,20 +142,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add("v_ce", segment, c, e, role=Role.ANNOTATION, style="ghost")
 
     # ---- acceleration polygon: aB + aCBⁿ + aCBᵗ = aCⁿ + aCᵗ
-    mu_a = sc.add("mu_a", accel_scale, omega, epsilon, role=Role.MEASUREMENT, unit="(mm/s²)/mm",
-                  visible=False, caption=("Acceleration scale μa = |aB|/AB: p′b′ as long as AB",
-                                          "加速度比例尺 μa = aB/lAB,使 p′b′ 与 AB 等长"))
-    vpts = (p, b, c) if e is None else (p, b, c, e)
-    p2 = sc.add("p2", pole_beside, gap, 0.0, *vpts, style="given", label="p′",
-                caption=("Acceleration pole p′ beside the velocity polygon", "在速度多边形旁取加速度极点 p′"))
-    k_n = sc.add("k_nB", normal_length, omega, mu_a, visible=False)
-    nB = sc.add("nB", turned, p2, B, A, k_n, 0.0, style="point", label="b′" if epsilon == 0 else "nB",
-                caption=("p′nB ∥ BA: aBⁿ = ω²·AB, towards A", "作 p′nB ∥ BA:aBⁿ = ω²·lAB,指向 A"))
-    b2 = nB
-    if epsilon != 0:
-        k_t = sc.add("k_tB", _ratio, epsilon, mu_a, visible=False)
-        b2 = sc.add("b2", turned, nB, A, B, k_t, 1.0, style="point", label="b′",
-                    caption=("nBb′ ⊥ AB: aBᵗ = ε·AB in the sense of ε", "作 nBb′ ⊥ AB:aBᵗ = ε·lAB,指向与 ε 转向一致"))
+    mu_a, p2, b2 = add_crank_acceleration(sc, A, B, omega, epsilon, gap, (p, b, c) if e is None else (p, b, c, e))
     k2 = sc.add("k_n2", normal_length, w2, mu_a, visible=False)
     n2 = sc.add("n2", turned, b2, C, B, k2, 0.0, style="point", label="n2",
                 caption=("From b′, b′n2 ∥ CB: aCBⁿ = ω2²·BC, towards B", "自 b′ 作 b′n2 ∥ CB:aCBⁿ = ω2²·lBC,指向 B"))
@@ -254,10 +165,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("aE", scaled_length, p2, e2, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
                caption=("Measure aE = p′e′·μa", "量得 aE = p′e′·μa"))
     if drawing:
-        sc.add("a_pn", vector, p2, nB, role=Role.ANNOTATION, style="vector")
-        if b2 is not nB:
-            sc.add("a_nb", vector, nB, b2, role=Role.ANNOTATION, style="vector")
-            sc.add("a_pb", vector, p2, b2, role=Role.ANNOTATION, style="vector")
         sc.add("a_bn2", vector, b2, n2, role=Role.ANNOTATION, style="vector")
         sc.add("a_n2c", vector, n2, c2, role=Role.ANNOTATION, style="vector")
         sc.add("a_pn3", vector, p2, n3, role=Role.ANNOTATION, style="vector")
@@ -271,10 +178,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if E is not None:
         points["E"] = "E"
     return Construction(sc, answers, points)
-
-
-def _ratio(x: float, y: float) -> float:
-    return x / y
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
@@ -300,4 +203,4 @@ RECIPE = Recipe(
     validate=_validate,
 )
 
-__all__ = ["RECIPE", "crank_pin", "image", "pole_beside", "rate", "scaled_length", "turned"]
+__all__ = ["RECIPE"]

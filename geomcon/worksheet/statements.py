@@ -189,6 +189,21 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
               "E 为连杆上一点,BE = {BE} mm,∠CBE = {angle_CBE}°。曲柄与 AD 的夹角 φ = {phi}°,角速度 ω = {omega} rad/s,"
               "角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。试作速度多边形和加速度多边形,并用影像原理求 E 点的速度和加速度。"),
     },
+    "crank_slider.kinematics": {
+        "": ("In the offset crank-slider the crank is AB = {AB} mm, the rod BC = {BC} mm and the guide lies e = {e} mm "
+             "below A. The crank stands at φ = {phi}° and turns counter-clockwise positive at ω = {omega} rad/s with "
+             "ε = {epsilon} rad/s². Draw the velocity and acceleration polygons.",
+             "偏置曲柄滑块机构中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,导路位于 A 下方 e = {e} mm。曲柄转角 φ = {phi}°,"
+             "角速度 ω = {omega} rad/s,角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。试作速度多边形和加速度多边形。"),
+    },
+    "guide_bar.kinematics": {
+        "": ("In the oscillating guide-bar the crank is AB = {AB} mm and the guide's pivot C lies AC = {AC} mm below A. "
+             "The crank stands at φ = {phi}° and turns counter-clockwise positive at ω = {omega} rad/s with "
+             "ε = {epsilon} rad/s². Draw the velocity and acceleration polygons, the Coriolis component included.",
+             "摆动导杆机构中,曲柄 AB = {AB} mm,导杆转动中心 C 位于 A 下方 AC = {AC} mm。曲柄转角 φ = {phi}°,"
+             "角速度 ω = {omega} rad/s,角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。试作速度多边形和加速度多边形"
+             "(含哥氏加速度)。"),
+    },
 }
 """Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
 
@@ -284,6 +299,9 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "epsilon3": ("the rocker's angular acceleration ε3", "摇杆的角加速度 ε3"),
     "vC": ("the velocity of C", "C 点的速度 vC"), "aC": ("the acceleration of C", "C 点的加速度 aC"),
     "vE": ("the velocity of E", "E 点的速度 vE"), "aE": ("the acceleration of E", "E 点的加速度 aE"),
+    "v_slip": ("the block's sliding velocity along the guide", "滑块沿导杆的相对速度"),
+    "a_slip": ("the block's relative acceleration along the guide", "滑块沿导杆的相对加速度"),
+    "a_coriolis": ("the Coriolis acceleration", "哥氏加速度"),
 }
 """How a statement names an asked answer (English, Chinese); others are named by their answer name."""
 

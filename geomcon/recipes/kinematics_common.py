@@ -1,0 +1,150 @@
+"""Step operations shared by the velocity and acceleration polygons (矢量方程图解法): pure functions of step
+values, laid off in the drawing's millimetres at a polygon's scale μ (real units per drawn mm).
+
+Examples
+--------
+>>> turned(Point(0, 0), Point(0, 0), Point(2, 0), 1.5, 1.0)
+Point(x=0.0, y=3.0)
+>>> rate(Point(0, 0), Point(0, 3), Point(0, 0), Point(2, 0), 1.0)
+1.5
+"""
+from __future__ import annotations
+
+import math
+
+from typing import Any
+
+from ..errors import Degenerate
+from ..geometry import Line, Point, line_line
+from ..scene import Ref, Role, Scene
+from ..scene.marks import vector
+
+
+def crank_pin(A: Point, r: float, phi_deg: float) -> Point:
+    """B at distance ``r`` from A at ``phi_deg`` counter-clockwise from +x."""
+    a = math.radians(phi_deg)
+    return Point(A.x + r * math.cos(a), A.y + r * math.sin(a))
+
+
+def pole_beside(gap: float, y: float, *pts: Point) -> Point:
+    """A polygon's pole, taken in free space: ``gap`` to the right of the rightmost of ``pts``, at height ``y``
+    (``gap`` includes the polygon's first side, which may point back to the left).
+
+    >>> pole_beside(10.0, 0.0, Point(0, 0), Point(5, 3))
+    Point(x=15.0, y=0.0)
+    """
+    return Point(max(p.x for p in pts) + gap, y)
+
+
+def turned(start: Point, a: Point, b: Point, k: float, quarter: float) -> Point:
+    """``start + k·(b − a)`` turned by ``quarter``·90° (quarter ∈ {0, 1, −1}): a polygon side laid off parallel or
+    perpendicular to a link."""
+    dx, dy = (b.x - a.x) * k, (b.y - a.y) * k
+    if quarter > 0:
+        dx, dy = -dy, dx
+    elif quarter < 0:
+        dx, dy = dy, -dx
+    return Point(start.x + dx, start.y + dy)
+
+
+def meet(l1: Line, l2: Line) -> Point:
+    """Where a polygon's two direction lines meet (parallel lines: the polygon does not close, a dead point)."""
+    pts = line_line(l1, l2)
+    if len(pts) != 1:
+        raise Degenerate("the two direction lines are parallel: the polygon does not close (a dead point)")
+    return pts[0]
+
+
+def rate(p: Point, q: Point, a: Point, b: Point, mu: float) -> float:
+    """The angular rate a polygon side ``p → q`` (scale ``mu``) gives the link ``a → b``: (b − a) × (q − p) / |b − a|²,
+    counter-clockwise positive (a velocity ω × r, or a tangential acceleration ε × r)."""
+    rx, ry = b.x - a.x, b.y - a.y
+    return mu * (rx * (q.y - p.y) - ry * (q.x - p.x)) / (rx * rx + ry * ry)
+
+
+def scaled_length(p: Point, q: Point, mu: float) -> float:
+    """|pq|·μ: a polygon side read as a speed or an acceleration."""
+    return mu * math.hypot(q.x - p.x, q.y - p.y)
+
+
+def image(b: Point, c: Point, BE: float, BC: float, angle_deg: float) -> Point:
+    """The image e of E: the triangle bce similar to BCE, turned the same way (e from b at ∠cbe = ∠CBE,
+    be = bc·BE/BC)."""
+    a = math.radians(angle_deg)
+    k = BE / BC
+    dx, dy = (c.x - b.x) * k, (c.y - b.y) * k
+    ca, sa = math.cos(a), math.sin(a)
+    return Point(b.x + ca * dx - sa * dy, b.y + sa * dx + ca * dy)
+
+
+def normal_length(w: float, mu: float) -> float:
+    """A normal component ω²·r drawn at the scale μ, as a multiple of the link vector r (``turned`` multiplies by
+    it): ω²/μ."""
+    return w * w / mu
+
+
+def accel_scale(omega: float, epsilon: float) -> float:
+    """μa = |aB|/AB = √(ω⁴ + ε²): p′b′ drawn as long as AB."""
+    return math.sqrt(omega ** 4 + epsilon ** 2)
+
+
+def ratio(x: float, y: float) -> float:
+    """x / y (a tangential component ε·r drawn at the scale μ, as a multiple of the link vector r)."""
+    return x / y
+
+
+def along(p: Point, q: Point, line: Line, mu: float) -> float:
+    """The polygon side ``p → q`` read along ``line``'s direction at the scale ``mu`` (a slider's signed velocity or
+    acceleration, a slip along a guide)."""
+    d = line.direction
+    return mu * ((q.x - p.x) * d.x + (q.y - p.y) * d.y)
+
+
+def add_crank_velocity(sc: Scene, A: Ref, B: Ref, AB: Any, omega: Any, gap: Any, beside: tuple[Ref, ...],
+                       label: str = "b") -> tuple[Ref, Ref, Ref]:
+    """The velocity polygon's start: its scale μv = |ω| (so that pb is as long as AB), the pole p to the right of
+    ``beside`` and b with pb ⊥ AB in the sense of ω. Returns (μv, p, b)."""
+    mu_v = sc.add("mu_v", abs, omega, role=Role.MEASUREMENT, unit="(mm/s)/mm", visible=False,
+                  caption=(f"Velocity scale μv = |ω| = {abs(omega):g} (mm/s)/mm: pb as long as AB",
+                           f"速度比例尺 μv = |ω| = {abs(omega):g} (mm/s)/mm,使 pb 与 AB 等长"))
+    p = sc.add("p", pole_beside, gap, 0.0, *beside, style="given", label="p",
+               caption=("Velocity pole p beside the linkage", "在机构旁取速度极点 p"))
+    b = sc.add("b", turned, p, A, B, 1.0, 1.0 if omega > 0 else -1.0, style="point", label=label,
+               caption=(f"p{label} ⊥ AB in the sense of ω: vB = ω·AB = {abs(omega) * AB:g} mm/s",
+                        f"作 p{label} ⊥ AB(指向与 ω 转向一致):vB = ω·lAB = {abs(omega) * AB:g} mm/s"))
+    if sc.drawing:
+        sc.add("v_pb", vector, p, b, role=Role.ANNOTATION, style="vector")
+    return mu_v, p, b
+
+
+def add_crank_acceleration(sc: Scene, A: Ref, B: Ref, omega: Any, epsilon: Any, gap: Any, beside: tuple[Ref, ...],
+                           label: str = "b′") -> tuple[Ref, Ref, Ref]:
+    """The acceleration polygon's start: its scale μa = |aB|/AB (p′b′ as long as AB), the pole p′ to the right of
+    ``beside`` (the velocity polygon), the normal component ω²·AB along B→A and, when the crank accelerates, the
+    tangential ε·AB ⊥ AB. Returns (μa, p′, b′)."""
+    mu_a = sc.add("mu_a", accel_scale, omega, epsilon, role=Role.MEASUREMENT, unit="(mm/s²)/mm",
+                  visible=False, caption=("Acceleration scale μa = |aB|/AB: p′b′ as long as AB",
+                                          "加速度比例尺 μa = aB/lAB,使 p′b′ 与 AB 等长"))
+    p2 = sc.add("p2", pole_beside, gap, 0.0, *beside, style="given", label="p′",
+                caption=("Acceleration pole p′ beside the velocity polygon", "在速度多边形旁取加速度极点 p′"))
+    k_n = sc.add("k_nB", normal_length, omega, mu_a, visible=False)
+    plain = epsilon == 0
+    nB = sc.add("nB", turned, p2, B, A, k_n, 0.0, style="point", label=label if plain else "nB",
+                caption=("p′nB ∥ BA: aBⁿ = ω²·AB, towards A", "作 p′nB ∥ BA:aBⁿ = ω²·lAB,指向 A"))
+    drawing = sc.drawing
+    if drawing:
+        sc.add("a_pn", vector, p2, nB, role=Role.ANNOTATION, style="vector")
+    if plain:
+        return mu_a, p2, nB
+    k_t = sc.add("k_tB", ratio, epsilon, mu_a, visible=False)
+    b2 = sc.add("b2", turned, nB, A, B, k_t, 1.0, style="point", label=label,
+                caption=(f"nB{label} ⊥ AB: aBᵗ = ε·AB in the sense of ε",
+                         f"作 nB{label} ⊥ AB:aBᵗ = ε·lAB,指向与 ε 转向一致"))
+    if drawing:
+        sc.add("a_nb", vector, nB, b2, role=Role.ANNOTATION, style="vector")
+        sc.add("a_pb", vector, p2, b2, role=Role.ANNOTATION, style="vector")
+    return mu_a, p2, b2
+
+
+__all__ = ["accel_scale", "add_crank_acceleration", "add_crank_velocity", "along", "crank_pin", "image", "meet", "normal_length", "pole_beside", "rate", "ratio",
+           "scaled_length", "turned"]
