@@ -33,19 +33,15 @@ from ..scene import Role, Scene
 from ..scene.marks import vector
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot
-from .kinematics_common import (add_crank_acceleration, add_crank_velocity, crank_pin, image, meet, normal_length,
-                                rate, scaled_length, turned)
+from .kinematics_common import (EPSILON, OMEGA, PHI, SCALES, add_crank_acceleration, add_crank_velocity, add_image,
+                                crank_pin, image, meet, normal_length, rate, scaled_length, turned, twin_scales)
 
 GIVENS = (
     Quantity("AB", "mm", "crank"),
     Quantity("BC", "mm", "coupler"),
     Quantity("CD", "mm", "rocker"),
     Quantity("AD", "mm", "frame"),
-    Quantity("phi", "deg", "crank angle ∠DAB, counter-clockwise from A→D", minimum=-360.0, inclusive=True,
-             maximum=360.0),
-    Quantity("omega", "rad/s", "crank angular velocity, counter-clockwise positive (not 0)", minimum=None),
-    Quantity("epsilon", "rad/s²", "crank angular acceleration, counter-clockwise positive", required=False,
-             default=0.0, minimum=None),
+    PHI, OMEGA, EPSILON,
     Quantity("branch", "choice", "assembly: C left (above) or right (below) of the directed line B→D",
              required=False, default="above", minimum=None, choices=("above", "below")),
     Quantity("BE", "mm", "coupler point E: its distance from B", required=False, default=None),
@@ -61,9 +57,7 @@ ANSWERS = (
     Quantity("aC", "mm/s²", "acceleration of C, p′c′·μa"),
     Quantity("vE", "mm/s", "speed of the coupler point E (when BE is given)"),
     Quantity("aE", "mm/s²", "acceleration of the coupler point E (when BE is given)"),
-    Quantity("mu_v", "(mm/s)/mm", "scale of the velocity polygon"),
-    Quantity("mu_a", "(mm/s²)/mm", "scale of the acceleration polygon"),
-)
+) + SCALES
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
@@ -86,6 +80,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     epsilon = g.get("epsilon", 0.0) or 0.0
     below = g.get("branch", "above") == "below"
     BE = g.get("BE")
+    ang = g.get("angle_CBE", 0.0) or 0.0
     sc = Scene("Four-bar: velocity and acceleration polygons")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
     D = add_pivot(sc, "D", (AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}", f"在机架线上取 D,使 AD = {AD:g}"))
@@ -103,7 +98,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
         add_bar(sc, "CD", C, D)
     E = None
     if BE is not None:
-        ang = g.get("angle_CBE", 0.0) or 0.0
         E = sc.add("E", image, B, C, BE, BC, ang, style="joint", label="E",
                    caption=(f"Coupler point E: BE = {BE:g}, ∠CBE = {ang:g}°", f"连杆上的点 E:BE = {BE:g},∠CBE = {ang:g}°"))
         if drawing:
@@ -129,10 +123,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                          "ω3 = vC/lCD = pc·μv/lCD(将 pc 移至 C 点判断转向)"))
     e = None
     if E is not None:
-        e = sc.add("e", image, b, c, BE, BC, g.get("angle_CBE", 0.0) or 0.0, style="point", label="e",
-                   caption=("Image e: triangle bce similar to BCE (image principle)", "由影像原理作 △bce ∽ △BCE 得 e"))
-        sc.add("vE", scaled_length, p, e, mu_v, role=Role.MEASUREMENT, unit="mm/s",
-               caption=("Measure vE = pe·μv", "量得 vE = pe·μv"))
+        e = add_image(sc, "e", b, c, BE, BC, ang, p, mu_v, "vE", "e", "mm/s", ("bce", "pe", "μv"))
     if drawing:
         sc.add("v_pc", vector, p, c, role=Role.ANNOTATION, style="vector")
         sc.add("v_bc", vector, b, c, role=Role.ANNOTATION, style="vector")
@@ -160,10 +151,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
            caption=("ε3 = aCᵗ/CD = n3c′·μa/CD", "ε3 = aCᵗ/lCD = n3c′·μa/lCD"))
     e2 = None
     if E is not None:
-        e2 = sc.add("e2", image, b2, c2, BE, BC, g.get("angle_CBE", 0.0) or 0.0, style="point", label="e′",
-                    caption=("Image e′: triangle b′c′e′ similar to BCE", "由影像原理作 △b′c′e′ ∽ △BCE 得 e′"))
-        sc.add("aE", scaled_length, p2, e2, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
-               caption=("Measure aE = p′e′·μa", "量得 aE = p′e′·μa"))
+        e2 = add_image(sc, "e2", b2, c2, BE, BC, ang, p2, mu_a, "aE", "e′", "mm/s²", ("b′c′e′", "p′e′", "μa"))
     if drawing:
         sc.add("a_bn2", vector, b2, n2, role=Role.ANNOTATION, style="vector")
         sc.add("a_n2c", vector, n2, c2, role=Role.ANNOTATION, style="vector")
@@ -185,8 +173,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     r = four_bar(g["AB"], g["BC"], g["CD"], g["AD"], g["phi"], g["omega"], g.get("epsilon", 0.0) or 0.0,
                  branch=g.get("branch", "above"), BE=g.get("BE"), angle_CBE=g.get("angle_CBE", 0.0) or 0.0)
     out = {k: r[k] for k in ("omega2", "omega3", "epsilon2", "epsilon3", "vC", "aC")}
-    out["mu_v"] = abs(g["omega"])
-    out["mu_a"] = r["aB"] / g["AB"]
+    out.update(twin_scales(g))
     if g.get("BE") is not None:
         out["vE"], out["aE"] = r["vE"], r["aE"]
     return [out]

@@ -18,6 +18,16 @@ from ..errors import Degenerate
 from ..geometry import Line, Point, line_line
 from ..scene import Ref, Role, Scene
 from ..scene.marks import vector
+from .base import Quantity
+
+PHI = Quantity("phi", "deg", "crank angle, counter-clockwise from +x (from A→D for the four-bar)", minimum=-360.0,
+               inclusive=True, maximum=360.0)
+OMEGA = Quantity("omega", "rad/s", "crank angular velocity, counter-clockwise positive (not 0)", minimum=None)
+EPSILON = Quantity("epsilon", "rad/s²", "crank angular acceleration, counter-clockwise positive", required=False,
+                   default=0.0, minimum=None)
+SCALES = (Quantity("mu_v", "(mm/s)/mm", "scale of the velocity polygon"),
+          Quantity("mu_a", "(mm/s²)/mm", "scale of the acceleration polygon"))
+"""The givens of the crank's motion and the polygons' scales, shared by every kinematics recipe."""
 
 
 def crank_pin(A: Point, r: float, phi_deg: float) -> Point:
@@ -146,5 +156,22 @@ def add_crank_acceleration(sc: Scene, A: Ref, B: Ref, omega: Any, epsilon: Any, 
     return mu_a, p2, b2
 
 
-__all__ = ["accel_scale", "add_crank_acceleration", "add_crank_velocity", "along", "crank_pin", "image", "meet", "normal_length", "pole_beside", "rate", "ratio",
+def twin_scales(g: Any) -> dict[str, float]:
+    """The polygons' scales as the twins state them: μv = |ω|, μa = √(ω⁴ + ε²)."""
+    return {"mu_v": abs(g["omega"]), "mu_a": math.hypot(g["omega"] ** 2, g.get("epsilon", 0.0) or 0.0)}
+
+
+def add_image(sc: Scene, key: str, b: Ref, c: Ref, BE: Any, BC: Any, angle: Any, pole: Ref, mu: Ref, answer: str,
+              label: str, unit: str, words: tuple[str, str, str]) -> Ref:
+    """A coupler point's image in a polygon (the triangle bce similar to BCE, turned the same way) and the answer
+    read from the pole to it."""
+    e = sc.add(key, image, b, c, BE, BC, angle, style="point", label=label,
+               caption=(f"Image {label}: triangle {words[0]} similar to BCE (image principle)",
+                        f"由影像原理作 △{words[0]} ∽ △BCE 得 {label}"))
+    sc.add(answer, scaled_length, pole, e, mu, role=Role.MEASUREMENT, unit=unit,
+           caption=(f"Measure {answer} = {words[1]}·{words[2]}", f"量得 {answer} = {words[1]}·{words[2]}"))
+    return e
+
+
+__all__ = ["EPSILON", "OMEGA", "PHI", "SCALES", "accel_scale", "add_image", "twin_scales", "add_crank_acceleration", "add_crank_velocity", "along", "crank_pin", "image", "meet", "normal_length", "pole_beside", "rate", "ratio",
            "scaled_length", "turned"]

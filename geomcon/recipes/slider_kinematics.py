@@ -30,16 +30,8 @@ from ..scene.marks import vector
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot
 from .guide_bar import _block_along
-from .kinematics_common import (add_crank_acceleration, add_crank_velocity, along, crank_pin, meet, normal_length, rate,
-                                turned)
-
-PHI = Quantity("phi", "deg", "crank angle, counter-clockwise from +x", minimum=-360.0, inclusive=True, maximum=360.0)
-OMEGA = Quantity("omega", "rad/s", "crank angular velocity, counter-clockwise positive (not 0)", minimum=None)
-EPSILON = Quantity("epsilon", "rad/s²", "crank angular acceleration, counter-clockwise positive", required=False,
-                   default=0.0, minimum=None)
-SCALES = (Quantity("mu_v", "(mm/s)/mm", "scale of the velocity polygon"),
-          Quantity("mu_a", "(mm/s²)/mm", "scale of the acceleration polygon"))
-
+from .kinematics_common import (EPSILON, OMEGA, PHI, SCALES, add_crank_acceleration, add_crank_velocity, along,
+                                crank_pin, meet, normal_length, rate, turned, twin_scales)
 
 def _omega(g: Mapping[str, Any]) -> None:
     if g["omega"] == 0:
@@ -122,8 +114,7 @@ def slider_analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """The complex vector loop, differentiated exactly."""
     eps = g.get("epsilon", 0.0) or 0.0
     r = crank_slider(g["AB"], g["BC"], g["e"], g["phi"], g["omega"], eps)
-    return [{"omega2": r["omega2"], "epsilon2": r["epsilon2"], "vC": r["vC"], "aC": r["aC"],
-             "mu_v": abs(g["omega"]), "mu_a": math.hypot(g["omega"] ** 2, eps)}]
+    return [{"omega2": r["omega2"], "epsilon2": r["epsilon2"], "vC": r["vC"], "aC": r["aC"], **twin_scales(g)}]
 
 
 SLIDER = Recipe(
@@ -221,8 +212,7 @@ def guide_analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """The vector loop in the guide's frame, differentiated exactly."""
     eps = g.get("epsilon", 0.0) or 0.0
     r = guide_bar(g["AB"], g["AC"], g["phi"], g["omega"], eps)
-    return [{**{k: r[k] for k in ("omega3", "epsilon3", "v_slip", "a_slip", "a_coriolis")},
-             "mu_v": abs(g["omega"]), "mu_a": math.hypot(g["omega"] ** 2, eps)}]
+    return [{**{k: r[k] for k in ("omega3", "epsilon3", "v_slip", "a_slip", "a_coriolis")}, **twin_scales(g)}]
 
 
 GUIDE = Recipe(
