@@ -44,6 +44,8 @@ _WHERE: dict[str, tuple[str, str]] = {
     "four_bar.kinematics": ("four_bar_kinematics", "RECIPE"),
     "crank_slider.kinematics": ("slider_kinematics", "SLIDER"),
     "guide_bar.kinematics": ("slider_kinematics", "GUIDE"),
+    "four_bar.instant_centres": ("instant_centres", "FOUR"),
+    "crank_slider.instant_centres": ("instant_centres", "SLIDER"),
 }
 """Public recipe name → (module of :mod:`geomcon.recipes`, attribute holding its :class:`Recipe`)."""
 

@@ -204,6 +204,20 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "角速度 ω = {omega} rad/s,角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。试作速度多边形和加速度多边形"
              "(含哥氏加速度)。"),
     },
+    "four_bar.instant_centres": {
+        "": ("In the four-bar ABCD the crank is AB = {AB} mm, the coupler BC = {BC} mm, the rocker CD = {CD} mm and the "
+             "frame AD = {AD} mm; the crank stands at φ = {phi}° from AD. Find all the instant centres (Kennedy's "
+             "theorem for those that are not joints).",
+             "铰链四杆机构 ABCD 中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,摇杆 CD = {CD} mm,机架 AD = {AD} mm,"
+             "曲柄与 AD 的夹角 φ = {phi}°。求机构的全部瞬心(非铰链处的瞬心用三心定理求)。"),
+    },
+    "crank_slider.instant_centres": {
+        "": ("In the offset crank-slider the crank is AB = {AB} mm, the rod BC = {BC} mm and the guide lies e = {e} mm "
+             "below A; the crank stands at φ = {phi}°. Find all the instant centres (Kennedy's theorem; P34 lies at "
+             "infinity perpendicular to the guide).",
+             "偏置曲柄滑块机构中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,导路位于 A 下方 e = {e} mm,曲柄转角 φ = {phi}°。"
+             "求机构的全部瞬心(P34 在垂直于导路的无穷远处,其余用三心定理求)。"),
+    },
 }
 """Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
 
@@ -302,6 +316,9 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "v_slip": ("the block's sliding velocity along the guide", "滑块沿导杆的相对速度"),
     "a_slip": ("the block's relative acceleration along the guide", "滑块沿导杆的相对加速度"),
     "a_coriolis": ("the Coriolis acceleration", "哥氏加速度"),
+    "w3_w1": ("the ratio ω3/ω1", "角速度比 ω3/ω1"), "w2_w1": ("the ratio ω2/ω1", "角速度比 ω2/ω1"),
+    "i13": ("the transmission ratio i13", "传动比 i13"),
+    "vC_w1": ("the slider's velocity per unit crank speed vC/ω1", "滑块速度与曲柄角速度之比 vC/ω1"),
 }
 """How a statement names an asked answer (English, Chinese); others are named by their answer name."""
 
