@@ -56,7 +56,7 @@ def test_polygons_agree_with_the_twin(seed, branch):
 
 def test_bundled_problem_and_its_drawing():
     from geomcon.problems import load_problem
-    sol = solve(load_problem("problems/300-01_four_bar_velocity_polygons.toml"))
+    sol = solve(load_problem("problems/400-01_four_bar_velocity_polygons.toml"))
     a = sol.answers
     assert sol.ok
     assert math.isclose(a["omega2"], -4.484900843303192, rel_tol=1e-12)
