@@ -41,8 +41,8 @@ class Gradebook:
 
 
 def grade(key: Key, sheet: Sheet, *, cache: dict[tuple[str, int], Prepared] | None = None) -> Gradebook:
-    """Grade every row of ``sheet`` against ``key`` (each variant's alternatives computed once, in ``cache``
-    when one is given)."""
+    """Grade every row of ``sheet`` against ``key``: each variant's alternatives are computed once (keyed by
+    the variant code and exercise; in ``cache`` when one is given), however many rows it has."""
     known = set(key.columns)
     ignored = [c for c in sheet.columns if c not in known]
     columns = key.columns if key.source == "key" else tuple(c for c in key.columns if c in sheet.columns)
@@ -65,8 +65,8 @@ def grade(key: Key, sheet: Sheet, *, cache: dict[tuple[str, int], Prepared] | No
             if key.source == "problem":
                 student = _only(student, columns)
             for ex in student.exercises:
-                if (student.id, ex.n) not in prepared:
-                    prepared[(student.id, ex.n)] = prepare(ex)
+                if (student.variant or student.id, ex.n) not in prepared:
+                    prepared[(student.variant or student.id, ex.n)] = prepare(ex)
         g = grade_row(row, sheet.columns, student, prepared, columns)
         rows.append(GradedRow(g.line, g.id, g.name, g.score, g.max_score, g.answers, g.problem, dup))
     return Gradebook(key, columns, tuple(rows), tuple(notes))

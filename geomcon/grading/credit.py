@@ -113,7 +113,7 @@ def grade_row(row: Row, columns: tuple[str, ...], student: StudentKey | None, pr
                        Graded(col, None, cells.get(col, ""), None, None, 0.0, "unreadable", "", 0.0, 0.0, why=problem))
         return GradedRow(row.line, row.id, row.name, 0.0, sum(g.max_points for g in out), tuple(out), problem)
     for ex in student.exercises:
-        prep = prepared[(student.id, ex.n)]
+        prep = prepared[(student.variant or student.id, ex.n)]
         done: dict[str, tuple[Graded, Cell | None, Any]] = {}
         for a in ex.answers:
             raw = cells.get(a.column, "")
@@ -136,7 +136,7 @@ def grade_row(row: Row, columns: tuple[str, ...], student: StudentKey | None, pr
                 pts = a.points * PARTIAL.get(alt.code, 0.0)
                 g = Graded(a.column, cell.value, raw, a.expected, dev, a.tol, "wrong", alt.code, pts, a.points,
                            alt.en, alt.zh)
-            elif a.unit != "point" and rounding(cell.value, cell.decimals, a.expected):
+            elif a.unit != "point" and rounding(cell.text, cell.value, a.expected):
                 en, zh = WORDS["rounding"]
                 g = Graded(a.column, cell.value, raw, a.expected, dev, a.tol, "wrong", "rounding",
                            a.points * PARTIAL["rounding"], a.points, en, zh)

@@ -18,7 +18,7 @@ A value matches an alternative within the answer's tolerance (scaled with it for
 ``degrees_radians``: the drafting error is scaled too); of several matches the nearest (in tolerances) wins.
 An alternative that lies within tolerance of the right value is dropped (a drawing cannot tell them apart).
 ``rounding`` is decided on the student's own digits (:func:`rounding`): the right value rounded to fewer
-decimals than the tolerance needs.
+significant digits than the tolerance needs.
 
 Examples
 --------
@@ -268,16 +268,31 @@ def match(alts: tuple[Alt, ...], value: Any) -> Alt | None:
     return best
 
 
-def rounding(value: float, decimals: int, expected: float) -> bool:
-    """Whether ``value`` (written with ``decimals`` decimals) is ``expected`` rounded to those decimals.
+def significant(text: str) -> int:
+    """How many significant digits a number as written has (an integer's trailing zeros do not count).
 
-    >>> rounding(1.4, 1, 1.4318), rounding(1.5, 1, 1.4318)
-    (True, False)
+    >>> significant("30"), significant("0.0450"), significant("1.3e2"), significant("-23.15")
+    (1, 3, 2, 4)
     """
-    if decimals >= 15:
+    mant = text.lstrip("+-").split("e")[0].split("E")[0]
+    digits = mant.replace(".", "").lstrip("0")
+    if "." not in mant:
+        digits = digits.rstrip("0")
+    return max(len(digits), 1)
+
+
+def rounding(text: str, value: float, expected: float) -> bool:
+    """Whether ``value`` (written as ``text``) is ``expected`` rounded to the significant digits ``text``
+    has — right, but to fewer digits than the tolerance needs (the caller has found it outside tolerance).
+
+    >>> rounding("1.3", 1.3, 1.30498), rounding("30", 30.0, 31.736), rounding("40", 40.0, 31.736)
+    (True, True, False)
+    """
+    s = significant(text)
+    if s >= 15 or expected == 0 or not math.isfinite(value):
         return False
-    half = 0.5 * 10.0 ** -decimals
-    return abs(value - expected) <= half * (1 + 1e-9)
+    r = float(f"{expected:.{s}g}")
+    return abs(value - r) <= 1e-9 * max(abs(r), 1e-300)
 
 
-__all__ = ["Alt", "Prepared", "SCALES", "SHARED", "WORDS", "distance", "match", "prepare", "rounding"]
+__all__ = ["Alt", "Prepared", "SCALES", "SHARED", "WORDS", "distance", "match", "prepare", "rounding", "significant"]
