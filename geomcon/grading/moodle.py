@@ -32,17 +32,21 @@ def _cdata(html: str) -> str:
 
 
 def givens_svg(ex: ExerciseKey) -> str:
-    """The variant's givens figure: the construction's frames before its first construction line or answer."""
+    """The variant's givens figure: the construction's leading frames that hold only givens, annotations and
+    measurements not asked (up to its first construction line or result), drawn in the full construction's view
+    (room to construct), without the protocol, the results or the warnings: no answer anywhere in the file."""
+    from ..render import render_svg
+    from ..render.svg import model_extent
+
     sol = solve_given(ex.recipe, ex.given)
-    answer_steps = set(sol.construction.answers.values())
-    frames = sol.drawing_scene.frames()
+    asked = {sol.construction.answers.get(a.ref.name) for a in ex.answers}
+    sc = sol.drawing_scene
     k = 0
-    for steps in frames:
-        if any(s.role in (Role.CONSTRUCTION, Role.RESULT) or (s.key in answer_steps and s.role is not Role.GIVEN
-                                                              and s.key not in ex.given) for s in steps):
+    for steps in sc.frames():
+        if any(s.role in (Role.CONSTRUCTION, Role.RESULT) or s.key in asked for s in steps):
             break
         k += 1
-    return sol.svg(upto=max(k, 1))
+    return render_svg(sc, upto=max(k, 1), viewbox=model_extent(sc), title=sol.title(), protocol=False)
 
 
 def _alts(p, a: Answer) -> list:
