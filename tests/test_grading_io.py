@@ -207,3 +207,10 @@ def test_key_json_carries_the_teachers_diagnosis(key_file):
     data = json.loads(key_file.read_text(encoding="utf-8"))
     assert data["exercises"][0]["diagnose"]["AD"][0]["code"] == "AC2_for_AD"
     assert "diagnose" not in data["exercises"][1]
+
+
+def test_the_bench_row_grades_what_it_says():
+    from geomcon.bench.grading import measure_grading
+    r = measure_grading(rows=300, students=3)
+    assert (r.rows, r.answers, r.variants) == (300, 1800, 6)
+    assert 0 < r.diagnosed < r.answers and r.rate > 0
