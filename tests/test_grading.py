@@ -15,23 +15,23 @@ import pytest
 
 from geomcon.grading import grade
 from geomcon.grading.answers import read_answers
+from geomcon.grading.example import CLASS_SPEC
 from geomcon.grading.keyfile import key_from_json
 from geomcon.grading.tables import grades_csv, grades_data
 from geomcon.problems import validate_given
 from geomcon.recipes import get_recipe
 from geomcon.worksheet import make_worksheet
 from geomcon.worksheet.roster import numbered
-from geomcon.worksheet.spec import load_spec
+from geomcon.worksheet.spec import parse_spec
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-SPEC = ROOT / "tests" / "data" / "grading_class.toml"
 COLS = ["1.AB", "1.AD", "2.theta", "2.K", "2.psi", "2.gamma_min", "3.rho_min_actual", "3.alpha_max_rise"]
 
 
 @pytest.fixture(scope="module")
 def key_text() -> str:
-    return make_worksheet(load_spec(SPEC), numbered(6)).files["key.json"]
+    return make_worksheet(parse_spec(CLASS_SPEC), numbered(6)).files["key.json"]
 
 
 @pytest.fixture(scope="module")

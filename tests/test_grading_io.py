@@ -16,16 +16,16 @@ from geomcon.cli import main
 from geomcon.errors import ProblemError
 from geomcon.grading import grade
 from geomcon.grading.answers import read_answers
+from geomcon.grading.example import CLASS_SPEC
 from geomcon.grading.expr import parse
 from geomcon.grading.keyfile import key_from_json
 from geomcon.grading.moodle import moodle_xml
 from geomcon.grading.report import report_html
 from geomcon.worksheet import make_worksheet
 from geomcon.worksheet.roster import numbered
-from geomcon.worksheet.spec import load_spec, parse_spec
+from geomcon.worksheet.spec import parse_spec
 
 ROOT = Path(__file__).resolve().parents[1]
-SPEC = ROOT / "tests" / "data" / "grading_class.toml"
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 ONE_ANSWER = """
 title = "Guide bar <θ>"
@@ -42,7 +42,7 @@ AC = 290
 @pytest.fixture(scope="module")
 def key_file(tmp_path_factory) -> Path:
     p = tmp_path_factory.mktemp("key") / "key.json"
-    p.write_text(make_worksheet(load_spec(SPEC), numbered(4)).files["key.json"], encoding="utf-8")
+    p.write_text(make_worksheet(parse_spec(CLASS_SPEC), numbered(4)).files["key.json"], encoding="utf-8")
     return p
 
 
@@ -194,7 +194,7 @@ def test_expression_arithmetic():
     ('AD = {code = "x", expr = "AB", what = 1}', "must be {code"),
 ])
 def test_spec_diagnose_refusals(diagnose, message):
-    spec = SPEC.read_text(encoding="utf-8")
+    spec = CLASS_SPEC
     start = spec.index("[exercise.diagnose]")
     end = spec.index("\n", spec.index("\n", start) + 1)
     bad = spec[:start] + "[exercise.diagnose]\n" + diagnose + spec[end:]

@@ -33,14 +33,16 @@ document.querySelectorAll('table.sortable th').forEach(function(th, i){th.addEve
 """
 
 
-def _sentence(code: str) -> str:
+def _sentence(code: str, seen: dict[str, str]) -> str:
+    """One sentence for a code: the shared words, a recipe's declaration, else (a teacher's code) the words
+    of its first occurrence."""
     if code in WORDS:
         return WORDS[code][0]
     for ms in MISTAKES.values():
         for m in ms:
             if m.code == code:
                 return m.en
-    return "a diagnosis of the teacher's"
+    return seen.get(code, "")
 
 
 def histogram_svg(scores: list[float], max_score: float) -> str:
@@ -52,7 +54,7 @@ def histogram_svg(scores: list[float], max_score: float) -> str:
     top = max(counts + [1])
     w, h, bw = 420, 180, 36
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" id="histogram" width="{w}" height="{h + 40}" '
-           f'viewBox="0 0 {w} {h + 40}" role="img" aria-label="score histogram">']
+           f'viewBox="0 -12 {w} {h + 52}" role="img" aria-label="score histogram">']
     for i, c in enumerate(counts):
         bh = round(h * c / top, 2)
         x = 30 + i * (bw + 3)
@@ -91,6 +93,11 @@ def report_html(book: Gradebook) -> str:
         gs = [g for r in graded for g in r.answers if g.column == c]
         rates.append((c, sum(g.verdict == "correct" for g in gs) / len(gs) if gs else 0.0))
     codes = Counter(g.diagnosis for r in graded for g in r.answers if g.diagnosis)
+    seen: dict[str, str] = {}
+    for r in graded:
+        for g in r.answers:
+            if g.diagnosis and g.diagnosis not in seen:
+                seen[g.diagnosis] = g.en
     title = escape(book.key.title or "Class report")
     mean = sum(r.score for r in graded) / len(graded) if graded else 0.0
     out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">', f"<title>{title} — grades</title>",
@@ -103,7 +110,7 @@ def report_html(book: Gradebook) -> str:
     if codes:
         out.append('<table id="diagnoses"><thead><tr><th>diagnosis</th><th>count</th><th>what it means</th></tr></thead><tbody>')
         for code, n in sorted(codes.items(), key=lambda kv: (-kv[1], kv[0])):
-            out.append(f"<tr><td>{escape(code)}</td><td class=\"n\">{n}</td><td>{escape(_sentence(code))}</td></tr>")
+            out.append(f"<tr><td>{escape(code)}</td><td class=\"n\">{n}</td><td>{escape(_sentence(code, seen))}</td></tr>")
         out.append("</tbody></table>")
     else:
         out.append("<p>No diagnosed mistakes.</p>")
