@@ -18,6 +18,7 @@ import csv
 import io
 import json
 import re
+from functools import lru_cache
 from typing import Any
 
 from ..check import rounded
@@ -35,8 +36,10 @@ def safe(text: str) -> str:
     return text
 
 
+@lru_cache(maxsize=1 << 16)
 def num(x: Any, scale: float = 1.0) -> str:
-    """A number as the tables write it: 12 significant digits at ``scale``, integers without a point."""
+    """A number as the tables write it: 12 significant digits at ``scale``, integers without a point
+    (memoised: a class repeats each variant's expected values, tolerances and points row after row)."""
     if x is None:
         return ""
     if isinstance(x, tuple):
