@@ -126,19 +126,19 @@ def parse(text: str, names: set[str] | None = None) -> Expr:
         pos += 1
         return t
 
-    def expr() -> Any:
-        left = term()
-        while (t := peek()) and t[0] == "op" and t[1] in "+-":
+    def chain(operand, ops: str) -> Any:
+        """``operand (op operand)*`` for the operators ``ops``, left-associative."""
+        left = operand()
+        while (t := peek()) and t[0] == "op" and t[1] in ops:
             take()
-            left = (t[1], left, term())
+            left = (t[1], left, operand())
         return left
 
+    def expr() -> Any:
+        return chain(term, "+-")
+
     def term() -> Any:
-        left = factor()
-        while (t := peek()) and t[0] == "op" and t[1] in "*/":
-            take()
-            left = (t[1], left, factor())
-        return left
+        return chain(factor, "*/")
 
     def factor() -> Any:
         t = peek()
