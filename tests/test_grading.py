@@ -215,3 +215,16 @@ def test_within_decides_decimal_boundaries():
     assert within(read_cell("0.4", "mm"), a)[0] and within(read_cell("0,2", "mm"), a)[0]
     assert not within(read_cell("0.4000000001", "mm"), a)[0]
     assert within(read_cell("0.04 cm", "mm"), a)[0]
+
+
+def test_a_point_answer_is_graded_by_distance():
+    given = {"B1": [0, 0], "B2": [-20, 35], "B3": [-20, 85], "C1": [0, 50], "C2": [10, 75], "C3": [30, 85]}
+    key = key_from_json(json.dumps({"title": "points", "students": [{"id": "1", "exercises": [
+        {"n": 1, "recipe": "four_bar.three_positions", "given": given,
+         "answers": {"A": {"value": [64.375, 60.0], "tol": 1.0, "points": 2}, "AB": {"value": 87.7, "tol": 0.5}}}]}]}))
+    rows = "id,1.A\n1,\"(64,9; 60,7)\"\n1,\"64.375, 61.1\"\n1,64.375\n"
+    book = grade(key, read_answers(rows.encode()))
+    assert [verdicts(r)[0] for r in book.rows] == [("1.A", "correct", "", 2.0), ("1.A", "wrong", "", 0.0),
+                                                   ("1.A", "unreadable", "", 0.0)]
+    assert book.rows[0].answers[0].deviation == pytest.approx(math.hypot(0.525, 0.7))
+    assert "64.9;60.7" in grades_csv(book)

@@ -109,7 +109,9 @@ def _element(v: Any, a: Answer) -> Any:
     if isinstance(v, bool) or v is None:
         return None
     if a.unit == "point":
-        return (float(v.x), float(v.y)) if hasattr(v, "x") else None
+        if hasattr(v, "x"):
+            return float(v.x), float(v.y)
+        return (float(v[0]), float(v[1])) if isinstance(v, (tuple, list)) and len(v) == 2 else None
     return float(v) if isinstance(v, (int, float)) and math.isfinite(v) else None
 
 

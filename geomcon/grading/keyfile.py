@@ -158,11 +158,14 @@ def key_from_json(text: str) -> Key:
                 aw = f"{at}.answers.{name}"
                 if not isinstance(a, dict):
                     raise _bad(f"{aw} must be an object")
+                v = a.get("value")
                 try:
-                    ref = _answer_ref(recipe, name, aw)
+                    if isinstance(v, list) and name in {q.name for q in recipe.answers}:
+                        ref = AnswerRef(name, name, None, "point")        # a point, graded by distance
+                    else:
+                        ref = _answer_ref(recipe, name, aw)
                 except ProblemError as exc:
                     raise _bad(str(exc)) from None
-                v = a.get("value")
                 if isinstance(v, list) and len(v) == 2:
                     pt = (float(_dec(v[0], aw + ".value[0]")), float(_dec(v[1], aw + ".value[1]")))
                     expected, exact = pt, None
