@@ -117,6 +117,7 @@ def test_moodle_bank_follows_moodles_question_xml(key_file, tmp_path):
         assert f.get("encoding") == "base64" and f"@@PLUGINFILE@@/{f.get('name')}" in text
         svg = base64.b64decode(f.text).decode()
         ET.fromstring(svg)
+        assert 'id="step-mark_theta"' not in svg     # θ's mark would sit at A, the answer's vertex
         labels = " ".join(re.findall(r">([^<]+)<", svg))
         for _, value, _ in fields:                  # the givens figure holds no answer
             if not float(value).is_integer():

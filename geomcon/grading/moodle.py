@@ -42,11 +42,29 @@ def givens_svg(ex: ExerciseKey) -> str:
     asked = {sol.construction.answers.get(a.ref.name) for a in ex.answers}
     sc = sol.drawing_scene
     k = 0
+    drop = set()
     for steps in sc.frames():
         if any(s.role in (Role.CONSTRUCTION, Role.RESULT) or s.key in asked for s in steps):
             break
         k += 1
-    return render_svg(sc, upto=max(k, 1), viewbox=model_extent(sc), title=sol.title(), protocol=False)
+        if not any(s.role is Role.GIVEN for s in steps):
+            drop.add(str(k))        # a measured angle's mark sits where the construction will put its vertex
+    svg = render_svg(sc, upto=max(k, 1), viewbox=model_extent(sc), title=sol.title(), protocol=False)
+    return _without_frames(svg, drop) if drop else svg
+
+
+def _without_frames(svg: str, frames: set[str]) -> str:
+    """``svg`` without the step groups of ``frames`` (``data-step``)."""
+    import xml.etree.ElementTree as ET
+
+    ET.register_namespace("", "http://www.w3.org/2000/svg")
+    ET.register_namespace("xlink", "http://www.w3.org/1999/xlink")
+    root = ET.fromstring(svg)
+    for parent in list(root.iter()):
+        for child in list(parent):
+            if child.get("data-step") in frames:
+                parent.remove(child)
+    return ET.tostring(root, encoding="unicode")
 
 
 def _alts(p, a: Answer) -> list:
