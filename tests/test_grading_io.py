@@ -215,3 +215,15 @@ def test_the_bench_row_grades_what_it_says():
     r = measure_grading(rows=300, students=3)
     assert (r.rows, r.answers, r.variants) == (300, 1800, 6)
     assert 0 < r.diagnosed < r.answers and r.rate > 0
+
+
+def test_outputs_are_deterministic(key_file, tmp_path):
+    from geomcon.grading.example import synthetic_answers
+    from geomcon.grading.tables import grades_csv, grades_json
+    key = key_from_json(key_file.read_text(encoding="utf-8"))
+    data = synthetic_answers(key, rows=40).encode()
+    runs = []
+    for _ in range(2):
+        book = grade(key, read_answers(data))
+        runs.append((grades_csv(book), grades_json(book), report_html(book)))
+    assert runs[0] == runs[1]

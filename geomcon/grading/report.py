@@ -100,7 +100,8 @@ def report_html(book: Gradebook) -> str:
                 seen[g.diagnosis] = g.en
     title = escape(book.key.title or "Class report")
     mean = sum(r.score for r in graded) / len(graded) if graded else 0.0
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">', f"<title>{title} — grades</title>",
+    lang = "zh" if book.key.lang == "zh" else "en"
+    out = ["<!DOCTYPE html>", f'<html lang="{lang}"><head><meta charset="utf-8">', f"<title>{title} — grades</title>",
            f"<style>{_CSS}</style></head><body>", f"<h1>{title}</h1>",
            f'<p id="summary">{len(rows)} rows, {len(graded)} graded; mean score {num(round(mean, 2))} of '
            f"{num(max_score)}.</p>",
