@@ -257,6 +257,86 @@ def cmd_worksheet(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_check(args: argparse.Namespace) -> int:
+    """``geomcon check KEY.json|PROBLEM.toml ANSWERS.csv --out DIR``: grades.csv, grades.json, report.html and
+    feedback/<id>.txt; exit 0 when grading completed, 2 (one line, nothing written) for an unusable file."""
+    from .fileio import check_targets, write_all
+    from .grading import grade
+    from .grading.answers import MAX_BYTES, read_answers
+    from .grading.feedback import feedback_text, file_names
+    from .grading.keyfile import load_key
+    from .grading.report import report_html
+    from .grading.tables import grades_csv, grades_json
+
+    out = Path(args.out)
+    try:
+        check_targets({}, {"--out": out})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            key = load_key(args.file)
+    except GeomconError as exc:
+        return _fail(args.file, str(exc))
+    try:
+        p = Path(args.answers)
+        if not p.is_file():
+            raise ProblemError("not a regular file")
+        if p.stat().st_size > MAX_BYTES:
+            raise ProblemError(f"the answers file has {p.stat().st_size} bytes; at most {MAX_BYTES} ({MAX_BYTES // 2 ** 20} MiB)")
+        sheet = read_answers(p.read_bytes())
+        if not any(c in key.columns for c in sheet.columns):
+            raise ProblemError("no column names an answer of the key (the key's: "
+                               + ", ".join(key.columns[:12]) + (" …" if len(key.columns) > 12 else "") + ")")
+    except OSError as exc:
+        return _fail(args.answers, f"cannot read: {exc.strerror or exc}")
+    except GeomconError as exc:
+        return _fail(args.answers, str(exc))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            book = grade(key, sheet)
+        files = {out / "grades.csv": grades_csv(book), out / "grades.json": grades_json(book),
+                 out / "report.html": report_html(book)}
+        for r, name in zip(book.rows, file_names([r.id or f"line-{r.line}" for r in book.rows])):
+            files[out / "feedback" / name] = feedback_text(r, book.key.title, book.key.lang)
+        write_all(files)
+    except GeomconError as exc:
+        return _fail(args.file, str(exc))
+    except OSError as exc:
+        return _fail(args.file, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+    graded = [r for r in book.rows if not r.problem]
+    print(f"graded {len(graded)} of {len(book.rows)} rows against {len(book.columns)} answers; "
+          f"wrote grades.csv, grades.json, report.html and {len(book.rows)} feedback files to {out}/")
+    for note in book.notes[:20]:
+        print(f"note: {one_line(note)}")
+    if len(book.notes) > 20:
+        print(f"note: … {len(book.notes) - 20} more in grades.json")
+    return 0
+
+
+def cmd_moodle(args: argparse.Namespace) -> int:
+    """``geomcon moodle KEY.json --out bank.xml``: a Moodle XML question bank."""
+    from .fileio import check_targets, write_all
+    from .grading.keyfile import load_key
+    from .grading.moodle import moodle_xml
+
+    try:
+        check_targets({"--out": args.out})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            key = load_key(args.file)
+            if key.source != "key":
+                raise ProblemError("a Moodle bank is made from a worksheet's key.json, not from a problem file")
+            text = moodle_xml(key, figures=not args.no_figures)
+        write_all({Path(args.out): text})
+    except GeomconError as exc:
+        return _fail(args.file, str(exc))
+    except OSError as exc:
+        return _fail(args.file, f"cannot write output: {exc.strerror or exc}")
+    questions = text.count("<question type=") - text.count('<question type="category">')
+    print(f"wrote {args.out}: {questions} questions")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``geomcon`` command."""
     p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
@@ -305,6 +385,18 @@ def build_parser() -> argparse.ArgumentParser:
     w.add_argument("--lang", choices=("zh", "en", "both"), default="both", help="language of the statements")
     w.add_argument("--paper", choices=("A4", "A3"), default="A4")
     w.set_defaults(func=cmd_worksheet)
+    c = sub.add_parser("check", help="grade a class's answers against a worksheet key or a problem file: grades.csv, "
+                       "grades.json, report.html, feedback/<id>.txt")
+    c.add_argument("file", metavar="KEY.json|PROBLEM.toml")
+    c.add_argument("answers", metavar="ANSWERS.csv", help="id (and name), then one column per answer ('1.AB'); "
+                   "UTF-8 (± BOM), UTF-16, GBK/GB18030")
+    c.add_argument("--out", required=True, metavar="DIR")
+    c.set_defaults(func=cmd_check)
+    m = sub.add_parser("moodle", help="a Moodle XML question bank from a worksheet key")
+    m.add_argument("file", metavar="KEY.json")
+    m.add_argument("--out", required=True, metavar="bank.xml")
+    m.add_argument("--no-figures", action="store_true", help="leave out the givens figures")
+    m.set_defaults(func=cmd_moodle)
     return p
 
 

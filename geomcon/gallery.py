@@ -58,6 +58,8 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
         rows.append(f"| [{pid}]({pid}.svg) ([player]({pid}.html)){extra} | `{sol.recipe.name}` | {answers} | {devs} |")
     files["004-02_best_by_K_table.md"] = best_by_k_table()
     files.update(law_diagrams())
+    from .grading.example import gallery_files
+    files.update(gallery_files())
     files["README.md"] = "\n".join([
         "# Gallery",
         "",
@@ -69,6 +71,12 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
         "",
         "The five motion laws' s–v–a diagrams (rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm): "
         + ", ".join(f"[{n}](law_{n}.svg)" for n in _law_names()) + ".",
+        "",
+        "A graded class (`geomcon check`, issue 13): the worksheet key [grading_key.json](grading_key.json), a "
+        "synthetic class's answers [grading_answers.csv](grading_answers.csv), the gradebook "
+        "[grading_grades.csv](grading_grades.csv) ([JSON](grading_grades.json)), the class report "
+        "[grading_report.html](grading_report.html), one student's feedback "
+        "[grading_feedback_2.txt](grading_feedback_2.txt) and the Moodle bank [grading_bank.xml](grading_bank.xml).",
         "",
         "| problem | recipe | answers | printed answers (deviation from exact) |",
         "|---|---|---|---|",

@@ -135,7 +135,8 @@ def key_data(spec: Spec, a: Assignment, *, paper: str, lang: str, seed: int | st
         "paper": paper, "lang": lang, "tolerance": TOLERANCE_MODEL,
         "exercises": [{"n": ex.n, "recipe": ex.recipe, "ask": [r.text for r in ex.ask], "points": plain(list(ex.points)),
                        "pool": st.pool, "judged": st.tried, "accepted": st.accepted,
-                       "acceptance": float(f"{st.rate:.3g}"), "rejected": dict(st.rejected), "shared": st.shared}
+                       "acceptance": float(f"{st.rate:.3g}"), "rejected": dict(st.rejected), "shared": st.shared,
+                       **({"diagnose": {k: list(v) for k, v in ex.diagnose.items()}} if ex.diagnose else {})}
                       for ex, st in zip(spec.exercises, a.stats)],
         "students": students,
     }

@@ -40,7 +40,7 @@ import json
 import math
 import re
 import unicodedata
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from decimal import Decimal
 from pathlib import Path
 from typing import Any, Mapping
@@ -64,7 +64,7 @@ LIMITS = {
 """Size limits of a worksheet spec, checked before anything is solved."""
 
 TOP_KEYS = ("title", "seed", "exercise")
-EXERCISE_KEYS = ("recipe", "ask", "points", "statement", "given", "require", "tol", "scale", "max_tol_rel")
+EXERCISE_KEYS = ("recipe", "ask", "points", "statement", "given", "require", "tol", "scale", "max_tol_rel", "diagnose")
 LANGS = ("en", "zh")
 MAX_TOL_REL = 0.05
 """A variant whose drafting tolerance of an asked answer exceeds this fraction of the answer is rejected
@@ -209,6 +209,7 @@ class Exercise:
     scale: Scale | None
     max_tol_rel: float
     digest: str
+    diagnose: Mapping[str, tuple[Mapping[str, str], ...]] = field(default_factory=dict)
 
     @property
     def pool(self) -> int:
@@ -330,8 +331,9 @@ def _exercise(data: Mapping[str, Any], n: int) -> Exercise:
     statement = _statement(data.get("statement"), where, set(given_in))
     digest = hashlib.sha256(json.dumps({"recipe": recipe.name, "given": given_in}, sort_keys=True,
                                        ensure_ascii=True, separators=(",", ":")).encode()).hexdigest()
+    diagnose = _diagnoses(recipe, data.get("diagnose", {}), ask, where)
     return Exercise(n, recipe.name, fixed, tuple(slots), ask, points, statement, require, tol, scale,
-                    float(max_rel), digest)
+                    float(max_rel), digest, diagnose)
 
 
 def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: list[Slot]) -> None:
@@ -557,6 +559,42 @@ def _tol_rules(recipe: Recipe, value: Any, ask: tuple[AnswerRef, ...], where: st
             raise ProblemError(f"{at}: {kind} = {_short(v)} must be positive"
                                + (", an integer ≤ 15" if kind == "sig" else ", at most 1" if kind == "rel" else ""))
         out[key] = TolRule(kind, float(v))
+    return out
+
+
+def _diagnoses(recipe: Recipe, value: Any, ask: tuple[AnswerRef, ...], where: str
+               ) -> dict[str, tuple[dict[str, str], ...]]:
+    """``[exercise.diagnose]``: asked answer = {code, expr, en, zh} or a list of them (at most 20); ``expr`` is
+    parsed by :func:`geomcon.grading.expr.parse` over the exercise's asked answers and givens."""
+    from ..grading.expr import parse
+
+    if not isinstance(value, dict):
+        raise ProblemError(f"{where}: [exercise.diagnose] must be a table of answer = {{code, expr, en, zh}}")
+    asked = {a.text for a in ask}
+    names = asked | set(recipe.given_names())
+    out = {}
+    for key, rules in value.items():
+        at = f"{where}: diagnose '{key}'"
+        if key not in asked:
+            raise ProblemError(f"{at}: not an asked answer (ask: {', '.join(sorted(asked))})")
+        rules = rules if isinstance(rules, list) else [rules]
+        if len(rules) > 20:
+            raise ProblemError(f"{at}: at most 20 diagnoses per answer")
+        rows = []
+        for r in rules:
+            if not isinstance(r, dict) or set(r) - {"code", "expr", "en", "zh"} or not {"code", "expr"} <= set(r) \
+                    or not all(isinstance(x, str) for x in r.values()):
+                raise ProblemError(f"{at} must be {{code = \"…\", expr = \"…\", en = \"…\", zh = \"…\"}} (texts), "
+                                   f"got {_short(r)}")
+            if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,39}", r["code"]):
+                raise ProblemError(f"{at}: code {_short(r['code'])} must be a word of letters, digits and _")
+            try:
+                parse(r["expr"], names - {key})
+            except ValueError as exc:
+                raise ProblemError(f"{at}: {exc}") from None
+            rows.append({k: _text(r.get(k, ""), k, 400) if k in ("en", "zh") else r[k]
+                         for k in ("code", "expr", "en", "zh")})
+        out[key] = tuple(rows)
     return out
 
 

@@ -1,0 +1,142 @@
+"""The typical mistakes of each recipe, declared as data: what a student plausibly drew instead, as a replay
+of the recipe's own scene (never a formula typed by hand for the wrong answer).
+
+A recipe's entry in :data:`MISTAKES` is a tuple of :class:`Mistake`; each has a ``code`` (the word grades.csv
+shows), a ``kind`` saying how the scene is replayed, and one sentence in English and Chinese for the
+feedback. Kinds:
+
+``read``
+    the answer is read off another step: ``answer`` read from step ``step`` (θ measured at D, i.e. ψ; the
+    pitch curve's ρmin given for the actual profile's).
+``op``
+    step ``step`` computed by ``op`` instead, with the same arguments (K = (180° − θ)/(180° + θ); the larger
+    transmission angle of the two crank-on-frame positions instead of the smaller).
+``rewire``
+    step ``step`` made from step ``new`` where the recipe uses ``old`` (α taken at the other position).
+``given``
+    the whole scene replayed with givens changed: ``given`` maps a given's name to a function of its value
+    (the cam turned the other way; the offset laid off on the other side).
+``candidate``
+    another candidate solution of the recipe (``Construction.solutions``) whose boolean answer ``flag`` differs
+    from the textbook's choice (C1 taken as the extended position; A on the far arc of the θ-circle).
+
+Shared mistakes need no entry: ``other_branch`` (every named branch rule the asked answers depend on, flipped
+one at a time), ``swapped``, ``degrees_radians``, ``scale``, ``sign`` and ``rounding`` apply to every recipe
+(:mod:`.diagnosis`). A teacher adds more in the spec (``[exercise.diagnose]``, :mod:`.expr`). A recipe that
+declares nothing still gets the shared ones.
+
+Examples
+--------
+>>> [m.code for m in mistakes_of("crank_rocker.extremes")]
+['K_inverted', 'theta_psi', 'theta_psi', 'other_extreme_position']
+>>> k_inverted(36.0)
+0.6666666666666666
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """One declared mistake of a recipe (see the module for the kinds)."""
+
+    code: str
+    kind: str
+    en: str
+    zh: str
+    answer: str = ""
+    step: str = ""
+    op: Callable[..., Any] | None = None
+    old: str = ""
+    new: str = ""
+    given: Mapping[str, Callable[[Any], Any]] = field(default_factory=dict)
+    flag: str = ""
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"mistake {self.code!r}: kind must be one of {', '.join(KINDS)}, got {self.kind!r}")
+
+
+KINDS = ("read", "op", "rewire", "given", "candidate")
+
+
+def k_inverted(theta: float) -> float:
+    """K with the fraction upside down: (180° − θ)/(180° + θ)."""
+    return (180.0 - theta) / (180.0 + theta)
+
+
+def largest_of(*xs: float) -> float:
+    """The larger value where the recipe takes the smaller."""
+    return max(xs)
+
+
+def _other_rotation(v: Any) -> Any:
+    return "cw" if v in (None, "ccw") else "ccw"
+
+
+def _negated(v: Any) -> Any:
+    return -float(v) if v else v
+
+
+_K_INV = Mistake("K_inverted", "op", "K computed upside down, (180° − θ)/(180° + θ)", "K 算成了 (180° − θ)/(180° + θ)",
+                 step="K", op=k_inverted)
+_PITCH = ("the pitch curve's value given for the actual profile (the roller radius not subtracted)",
+          "给出的是理论廓线的值(未减去滚子半径)")
+_TURN = Mistake("inversion_direction", "given", "the follower turned with ω instead of −ω in the inversion",
+                "反转时从动件按 ω 方向而非 −ω 方向转动", given={"rotation": _other_rotation})
+
+MISTAKES: dict[str, tuple[Mistake, ...]] = {
+    "crank_rocker.extremes": (
+        _K_INV,
+        Mistake("theta_psi", "read", "θ measured at D (the swing ψ) instead of at A", "在 D 处量角(摆角 ψ)当作了极位夹角 θ",
+                answer="theta", step="psi"),
+        Mistake("theta_psi", "read", "ψ measured at A (the angle θ) instead of at D", "在 A 处量角(极位夹角 θ)当作了摆角 ψ",
+                answer="psi", step="theta"),
+        Mistake("other_extreme_position", "op",
+                "the transmission angle taken at the other crank-on-frame position (the larger one)",
+                "传动角取在了另一个曲柄与机架共线的位置(较大者)", step="gamma_min", op=largest_of),
+    ),
+    "crank_slider.extremes": (
+        _K_INV,
+        Mistake("other_extreme_position", "rewire",
+                "the pressure angle taken with the crank perpendicular to the guide on the near side",
+                "压力角取在了曲柄垂直于导路的另一位置(靠近导路一侧)", step="alpha_max", old="alpha_3", new="alpha_4"),
+        Mistake("other_extreme_position", "rewire",
+                "the transmission angle taken with the crank perpendicular to the guide on the near side",
+                "传动角取在了曲柄垂直于导路的另一位置(靠近导路一侧)", step="gamma_min", old="alpha_3", new="alpha_4"),
+    ),
+    "guide_bar.extremes": (_K_INV,),
+    "crank_rocker.design_by_K": (
+        Mistake("C1_C2", "candidate", "C1 and C2 exchanged (C1 taken as the extended position)",
+                "C1 与 C2 弄反了(把拉直共线位置当作 C1)", flag="C1_folded"),
+        Mistake("far_theta_circle", "candidate", "A taken on the far arc of the θ-circle",
+                "A 取在了 θ 圆的另一段圆弧上", flag="A_near"),
+    ),
+    "cam.translating": (
+        Mistake("pitch_vs_actual", "read", *_PITCH, answer="rho_min_actual", step="rho_min_pitch"),
+        _TURN,
+        Mistake("offset_side", "given", "the offset laid off on the other side of the cam's centre",
+                "偏距偏在了凸轮中心的另一侧", given={"e": _negated}),
+    ),
+    "cam.oscillating": (
+        Mistake("pitch_vs_actual", "read", *_PITCH, answer="rho_min_actual", step="rho_min_pitch"),
+        Mistake("pitch_vs_actual", "read", *_PITCH, answer="profile_x", step="pitch_x"),
+        Mistake("pitch_vs_actual", "read", *_PITCH, answer="profile_y", step="pitch_y"),
+        _TURN,
+    ),
+    "cam.eccentric": (
+        Mistake("pitch_vs_actual", "read", "the base circle of the pitch curve given for the actual profile's",
+                "给出的是理论廓线的基圆半径(未减去滚子半径)", answer="r0_actual", step="r0"),
+    ),
+}
+"""Recipe name → its declared mistakes (recipes of later issues add their entries here)."""
+
+
+def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
+    """The declared mistakes of ``recipe`` (none for a recipe without an entry)."""
+    return MISTAKES.get(recipe, ())
+
+
+__all__ = ["KINDS", "MISTAKES", "Mistake", "k_inverted", "largest_of", "mistakes_of"]
