@@ -205,6 +205,7 @@ def key_from_problem(path: str | Path) -> Key:
     from ..worksheet.accept import FIGURE_MARGIN, TEXT_BAND
     from ..worksheet.drafting import tolerances
     from ..worksheet.readability import extent
+    from ..worksheet.spec import _SCALAR
 
     problem = load_problem(path)
     sol = solve(problem)
@@ -213,7 +214,7 @@ def key_from_problem(path: str | Path) -> Key:
     answers = sol.answers
     for q in recipe.answers:
         v = answers.get(q.name)
-        if q.unit in ("mm", "deg", "") and isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v):
+        if q.unit in _SCALAR and isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v):
             ref = AnswerRef(q.name, q.name, None, q.unit)
             refs.append(ref)
             nominal[q.name] = float(v)

@@ -80,6 +80,29 @@ def _negated(v: Any) -> Any:
     return -float(v) if v else v
 
 
+def left_out(*_: Any) -> float:
+    """A component left out of a polygon: its drawn length 0."""
+    return 0.0
+
+
+def coriolis_left_out(b2: Any, b3: Any, b2_: Any, *_: Any) -> Any:
+    """The Coriolis component left out: k′ at b2′."""
+    return b2_
+
+
+def coriolis_reversed(b2: Any, b3: Any, b2_: Any, w3: float, mu_v: float, mu_a: float) -> Any:
+    """The Coriolis component laid off against the sense of ω3."""
+    from ..recipes.slider_kinematics import coriolis_end
+    k = coriolis_end(b2, b3, b2_, w3, mu_v, mu_a)
+    return b2_ * 2.0 - k
+
+
+def ratio_upside_down(P: Any, fixed1: Any, fixed2: Any) -> float:
+    """An instant-centre ratio read the wrong way round: P34P13/P14P13 (ω1/ω3) where P14P13/P34P13 is asked."""
+    from ..recipes.instant_centres import ratio_along
+    return ratio_along(P, fixed2, fixed1)
+
+
 _K_INV = Mistake("K_inverted", "op", "K computed upside down, (180° − θ)/(180° + θ)", "K 算成了 (180° − θ)/(180° + θ)",
                  step="K", op=k_inverted)
 _PITCH = ("the pitch curve's value given for the actual profile (the roller radius not subtracted)",
@@ -130,6 +153,38 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
         Mistake("pitch_vs_actual", "read", "the base circle of the pitch curve given for the actual profile's",
                 "给出的是理论廓线的基圆半径(未减去滚子半径)", answer="r0_actual", step="r0"),
     ),
+    "four_bar.kinematics": (
+        Mistake("normal_omitted", "op", "the normal component ω2²·BC of C relative to B left out of the acceleration polygon",
+                "加速度多边形中漏掉了 C 相对 B 的法向加速度 ω2²·lBC", step="k_n2", op=left_out),
+        Mistake("normal_omitted", "op", "the normal component ω3²·CD of C left out of the acceleration polygon",
+                "加速度多边形中漏掉了 C 点的法向加速度 ω3²·lCD", step="k_n3", op=left_out),
+        Mistake("image_mirrored", "given", "the image triangle bce (b′c′e′) drawn turned the other way, a mirror image of BCE",
+                "影像三角形 bce(b′c′e′)画反了(与 BCE 转向相反)", given={"angle_CBE": _negated}),
+        Mistake("crank_reversed", "given", "vB laid off against the sense of ω", "vB 的方向与 ω 转向相反",
+                given={"omega": _negated}),
+    ),
+    "crank_slider.kinematics": (
+        Mistake("normal_omitted", "op", "the normal component ω2²·BC of C relative to B left out of the acceleration polygon",
+                "加速度多边形中漏掉了 C 相对 B 的法向加速度 ω2²·lBC", step="k_n2", op=left_out),
+        Mistake("crank_reversed", "given", "vB laid off against the sense of ω", "vB 的方向与 ω 转向相反",
+                given={"omega": _negated}),
+    ),
+    "guide_bar.kinematics": (
+        Mistake("coriolis_omitted", "op", "the Coriolis component 2ω3·vB3B2 left out", "漏掉了哥氏加速度 2ω3·vB3B2",
+                step="k", op=coriolis_left_out),
+        Mistake("coriolis_direction", "op", "the Coriolis component laid off against the sense of ω3",
+                "哥氏加速度的方向画反了(未按 ω3 转向转 90°)", step="k", op=coriolis_reversed),
+        Mistake("normal_omitted", "op", "the normal component ω3²·CB of B3 left out", "漏掉了 B3 点的法向加速度 ω3²·lCB",
+                step="k_n3", op=left_out),
+        Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
+                given={"omega": _negated}),
+    ),
+    "four_bar.instant_centres": (
+        Mistake("ratio_inverted", "op", "ω1/ω3 given for ω3/ω1 (P34P13/P14P13)", "把 ω1/ω3 当作了 ω3/ω1",
+                step="w3_w1", op=ratio_upside_down),
+        Mistake("ratio_inverted", "read", "ω3/ω1 given for the transmission ratio i13 = ω1/ω3", "把 ω3/ω1 当作了传动比 i13",
+                answer="i13", step="w3_w1"),
+    ),
 }
 """Recipe name → its declared mistakes (recipes of later issues add their entries here)."""
 
@@ -139,4 +194,5 @@ def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
     return MISTAKES.get(recipe, ())
 
 
-__all__ = ["KINDS", "MISTAKES", "Mistake", "k_inverted", "largest_of", "mistakes_of"]
+__all__ = ["KINDS", "MISTAKES", "Mistake", "coriolis_left_out", "coriolis_reversed", "k_inverted", "largest_of",
+           "left_out", "mistakes_of", "ratio_upside_down"]
