@@ -12,6 +12,19 @@ from .errors import GeomconError
 from .problems import load_problem
 from .solve import Solution, solve
 
+GALLERY_PAGE = ("A4", "landscape", "both")
+"""The gallery's sheets (paper, orientation, language): A4, the paper every school printer takes; landscape,
+as mechanism drawings are wider than tall (the drawing gets the larger scale in most problems); both
+languages, as the protocol was printed before ``--lang`` existed and a class reads either."""
+
+
+def gallery_page(lang: str | None = None):
+    """:data:`GALLERY_PAGE` as a :class:`~geomcon.render.page.PageSpec`, in ``lang`` when given (imported
+    here: a solve that draws nothing never loads the renderer)."""
+    from .render.page import PageSpec
+    paper, orientation, default = GALLERY_PAGE
+    return PageSpec(paper, orientation, lang or default)
+
 
 def to_json_text(sol: Solution) -> str:
     """The solution's JSON, as ``geomcon solve --json`` prints it."""
@@ -35,8 +48,12 @@ def _deviation(row: dict) -> str:
     return f"{row['quantity']} {row['published']:g} ({how})"
 
 
-def build_gallery(problems_dir: Path) -> dict[str, str]:
-    """Render every problem: ``{relative file name: text}`` for the JSON, SVG and HTML of each, plus an index."""
+def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]:
+    """Render every problem: ``{relative file name: text}`` for the JSON, the SVG sheets (``<id>.svg`` the
+    drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index."""
+    from .render.page import sheet_names
+
+    page = gallery_page(lang)
     files: dict[str, str] = {}
     rows = []
     for path in problem_files(problems_dir):
@@ -47,8 +64,10 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
             raise
         pid = sol.problem.id
         files[f"{pid}.json"] = to_json_text(sol)       # answers first: the JSON's stats show the lazy count
-        files[f"{pid}.svg"] = svg = sol.svg()
-        files[f"{pid}.html"] = player_page(sol, svg)
+        sheets = sol.sheets(page)
+        for name, sheet in zip(sheet_names(f"{pid}.svg", len(sheets)), sheets):
+            files[name] = sheet
+        files[f"{pid}.html"] = sol.html(page, sheets)
         extra = ""
         if "program" in sol.problem.given and sol.problem.given.get("h") is not None:
             files[f"{pid}_motion.svg"] = problem_motion_svg(sol)
@@ -78,12 +97,10 @@ def build_gallery(problems_dir: Path) -> dict[str, str]:
     return files
 
 
-def player_page(sol: Solution, svg: str) -> str:
-    """``sol.html()`` around the drawing ``svg`` (``sol.svg()``) already rendered: the page embeds that very
-    document, so the gallery draws each figure once."""
-    from .render import render_html
-
-    return render_html(sol.drawing_scene, title=sol.title(), info=sol.info_lines(), svg=svg)
+def player_page(sol: Solution, sheets: list[str]) -> str:
+    """The gallery's player page of ``sol`` around its ``sheets`` already rendered (``sol.sheets(gallery_page())``):
+    the page embeds those very documents, so the gallery draws each figure once."""
+    return sol.html(gallery_page(), sheets)
 
 
 def _short(v) -> str:
@@ -145,9 +162,9 @@ def best_by_k_table(H: float = 100.0) -> str:
     ])
 
 
-def stale_files(problems_dir: Path, gallery_dir: Path) -> list[str]:
+def stale_files(problems_dir: Path, gallery_dir: Path, lang: str | None = None) -> list[str]:
     """Names of gallery files that are missing, different, or no longer produced."""
-    want = build_gallery(problems_dir)
+    want = build_gallery(problems_dir, lang)
     gallery_dir = Path(gallery_dir)
     out = [name for name, text in want.items()
            if not (gallery_dir / name).is_file() or (gallery_dir / name).read_text(encoding="utf-8") != text]
