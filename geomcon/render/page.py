@@ -242,7 +242,8 @@ def sheet_names(path: str, n: int) -> list[str]:
 
 def print_css(spec: PageSpec) -> str:
     """CSS that prints every sheet (``svg.sheet``) on a page of its own at 100 %: ``@page`` of the sheet's
-    size, no printer margins (the sheet carries its own)."""
+    size, no printer margins (the sheet carries its own). A sheet's box is cut 1 mm short (blank paper below
+    the frame), so that a browser's page, rounded to whole points, never spills a sliver onto a blank page."""
     sh = spec.sheet
     return (f"@page {{ size: {spec.paper} {spec.orientation}; margin: 0; }}\n"
             "@media print {\n"
@@ -250,8 +251,8 @@ def print_css(spec: PageSpec) -> str:
             "  #bar, #caption { display: none; }\n"
             "  #drawing { border: 0; overflow: visible; }\n"
             f"  #drawing svg.sheet {{ width: {fmt(sh.width)}mm; height: {fmt(sh.height)}mm; margin: 0; }}\n"
-            "  .page { break-after: page; page-break-after: always; break-inside: avoid; "
-            "page-break-inside: avoid; }\n"
+            f"  .page {{ height: {fmt(sh.height - 1.0)}mm; overflow: hidden; border: 0 !important; "
+            "break-after: page; page-break-after: always; break-inside: avoid; page-break-inside: avoid; }\n"
             "  .page:last-child { break-after: auto; page-break-after: auto; }\n"
             "}\n")
 

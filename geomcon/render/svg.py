@@ -38,7 +38,7 @@ from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_b
 from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
 from .style import CSS, INFO_SIZE, INK
-from .view import FIG_MARGIN, Box, fmt, grow, nice_values
+from .view import FIG_MARGIN, Box, View, fmt, grow, nice_values
 
 SCALE_H = 12.0      # scale bar band under the figure
 SIDE_MIN = 90.0     # the results go beside the title block when this much room is left of it, else above
@@ -134,6 +134,24 @@ def _mu(scale: Scale) -> float:
     return scale.real / scale.paper
 
 
+def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (), warnings: Sequence[str] = (),
+                 upto: int | None = None, viewbox: Box | None = None) -> tuple[SheetLayout, Scale, View]:
+    """Where sheet 1 puts the drawing: the layout, the standard scale, and the view (model box, μl, top-left
+    corner on paper) — the drawing centred in the layout's area.
+
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sl, scale, view = place_figure(construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene)
+    >>> str(scale), view.mu
+    ('1:1', 1.0)
+    """
+    steps, _ = shown_steps(scene, upto)
+    content = viewbox or content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
+    sl, scale = _best_layout(page, info, warnings, content, 0.0 if viewbox else FIG_MARGIN)
+    mu = _mu(scale)
+    box = viewbox or grow(content, FIG_MARGIN * mu)
+    return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
+
+
 def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
                   info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
                   info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
@@ -171,13 +189,9 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         The SVG documents, one per sheet (UTF-8 text; width and height in mm of paper, 1 user unit = 1 mm).
     """
     sheet, lang = page.sheet, page.lang
-    steps, _ = shown_steps(scene, upto)
-    content = viewbox or content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
-    sl, scale = _best_layout(page, info, warnings, content, 0.0 if viewbox else FIG_MARGIN)
-    mu = _mu(scale)
-    box = viewbox or grow(content, FIG_MARGIN * mu)
-    origin = centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area)
-    fig = build_figure(scene, upto, box, origin, mu=mu)
+    sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu)
+    origin = view.origin
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
     moved = not sl.info_here and bool(info or warnings)      # the results head sheet 2
