@@ -89,7 +89,9 @@ def cmd_solve(args: argparse.Namespace) -> int:
                 page = PageSpec(args.paper, args.orientation, args.lang)
                 sheets = sol.sheets(page)
                 if args.svg:
-                    files.update((Path(n), sheet) for n, sheet in zip(sheet_names(args.svg, len(sheets)), sheets))
+                    names = sheet_names(args.svg, len(sheets))
+                    check_targets({f"--svg (sheet {i})": n for i, n in enumerate(names[1:], 2)})
+                    files.update((Path(n), sheet) for n, sheet in zip(names, sheets))
                 if args.html:
                     files[Path(args.html)] = sol.html(page, sheets)
                 if args.steps:

@@ -146,6 +146,11 @@ def test_svg_writes_the_protocol_sheets_beside_the_drawing(tmp_path):
     bad = subprocess.run([sys.executable, "-m", "geomcon", "solve", str(p), "--svg", str(tmp_path / "g.svg"),
                           "--paper", "A5"], capture_output=True, text=True)
     assert bad.returncode == 2 and not (tmp_path / "g.svg").exists()
+    (tmp_path / "h-2.svg").mkdir()                                   # sheet 2's path is taken: nothing written
+    taken = subprocess.run([sys.executable, "-m", "geomcon", "solve", str(p), "--svg", str(tmp_path / "h.svg")],
+                           capture_output=True, text=True)
+    assert taken.returncode == 2 and taken.stderr.count("\n") == 1 and "sheet 2" in taken.stderr
+    assert not (tmp_path / "h.svg").exists()
 
 
 # ------------------------------------------------------------------------------------------- results
