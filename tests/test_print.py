@@ -221,3 +221,20 @@ def test_the_player_prints_one_sheet_a_page_at_the_sheet_size():
     assert "#drawing svg.sheet { width: 297mm; height: 420mm;" in page
     assert page.count('<div class="page" id="page-') == len(sol.sheets(PageSpec("A3", "portrait", "zh")))
     assert '<html lang="zh-Hans"' in page
+
+
+def test_frame_k_shows_the_caption_of_step_k_only_and_the_full_drawing_none():
+    """The protocol is on sheet 2, so a --steps frame (sheet 1 at step k) says what step k does, in its language."""
+    from geomcon.render.svg import frame_of
+
+    sol = _sol("001-08_crank_rocker")
+    full = sol.svg(page=PageSpec(lang="en"))
+    caps = re.compile(r'<text class="stepcap( current)?" data-step="(\d+)"[^>]*>(.*?)</text>', re.S)
+    assert caps.findall(full) and not [c for c in caps.findall(full) if c[0]]
+    for k in (1, 14, 25):
+        shown = [(int(n), re.sub(r"<[^>]+>", "", t)) for cur, n, t in caps.findall(frame_of(full, k)) if cur]
+        assert shown and {n for n, _ in shown} == {k}
+        assert shown[0][1].startswith(f"{k}. ")
+    at14 = [re.sub(r"<[^>]+>", "", t) for cur, n, t in caps.findall(frame_of(full, 14)) if cur]
+    assert at14[0].startswith("14. Measure θ")
+    assert ".stepcap.current { display: inline; }" in full and ".stepcap { display: none; }" in full

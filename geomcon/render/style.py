@@ -189,6 +189,8 @@ CSS = f"""
 .current .dot {{ fill: {HIGHLIGHT}; }}
 .current text, .proto.current text {{ fill: {HIGHLIGHT}; }}
 .future {{ display: none; }}
+.stepcap {{ display: none; }}
+.stepcap.current {{ display: inline; }}
 """
 """Replay styles: the HTML player toggles ``current`` and ``future`` on groups (presentation attributes
 lose against any CSS rule, so these recolour without touching the drawing)."""

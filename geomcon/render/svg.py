@@ -16,8 +16,8 @@ Examples
 >>> svg = render_svg(sc, upto=3)
 >>> sc.is_evaluated("theta")
 False
->>> 'data-step="3"' in svg and 'data-step="4"' not in svg
-True
+>>> max(int(n) for n in re.findall(r'<g class="step[^"]*" data-step="(\\d+)"', svg))
+3
 >>> render_svg(sc) == render_svg(sc)
 True
 """
@@ -37,10 +37,12 @@ from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_b
                    title_block_box)
 from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
-from .style import CSS, INFO_SIZE, INK
+from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
 from .view import FIG_MARGIN, Box, View, fmt, grow, nice_values
 
 SCALE_H = 12.0      # scale bar band under the figure
+CAP_H = 9.0         # the current step's caption above the drawing (two lines; shown in frames and the player)
+CAP_MIN_W = 60.0    # ... or left of the title block, when this much room is there
 SIDE_MIN = 90.0     # the results go beside the title block when this much room is left of it, else above
 RIGHT_W = 95.0      # width of the results column at the right of the drawing
 INFO_SHARE = 0.4    # results taller than this share of the frame go onto a sheet of their own
@@ -64,25 +66,36 @@ def step_id(key: str) -> str:
 
 @dataclass(frozen=True)
 class SheetLayout:
-    """Where things go on sheet 1: the drawing ``area``, the results' corner, width and height, and whether
-    they are on sheet 1 at all (too many go onto a sheet of their own)."""
+    """Where things go on sheet 1: the drawing ``area``, the results' corner, width and height, whether they
+    are on sheet 1 at all (too many go onto a sheet of their own), and the box of the current step's caption."""
 
     area: Box
     info_at: tuple[float, float]
     info_w: float
     info_h: float
     info_here: bool
+    caption: Box
 
 
 def _layouts(page: PageSpec, info: Sequence[str], warnings: Sequence[str]) -> list[SheetLayout]:
     """The ways to share sheet 1 between drawing and results: results above the title block (beside it when
     there is room), in a column at the right, or on a sheet of their own (the last resort: chosen only when it
-    draws at a larger scale, or when the results fit nowhere on sheet 1)."""
+    draws at a larger scale, or when the results fit nowhere on sheet 1). The current step's caption goes left
+    of the title block when that corner is free and wide enough, else in a band above the drawing."""
     sheet = page.sheet
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
+    corner = tb[0] - fx0 - 2 * INSET >= CAP_MIN_W
+
+    def area(right: float, bottom: float, corner_free: bool) -> tuple[Box, Box]:
+        if corner_free and corner:
+            return (fx0 + INSET, fy0 + INSET, right, bottom), (fx0 + INSET, tb[1] + 1.0, tb[0] - INSET, fy1 - 1.0)
+        return (fx0 + INSET, fy0 + INSET + CAP_H, right, bottom), (fx0 + INSET, fy0 + INSET - 1.0, fx1 - INSET,
+                                                                  fy0 + INSET + CAP_H - 1.0)
+
     if not (info or warnings):
-        return [SheetLayout((fx0 + INSET, fy0 + INSET, fx1 - INSET, tb[1] - SCALE_H), (fx0, fy0), 0.0, 0.0, True)]
+        return [SheetLayout(*area(fx1 - INSET, tb[1] - SCALE_H, True)[:1], (fx0, fy0), 0.0, 0.0, True,
+                            area(fx1 - INSET, tb[1] - SCALE_H, True)[1])]
     side = tb[0] - fx0 - 2 * INSET
     beside = side >= SIDE_MIN
     w = side if beside else fx1 - fx0 - 2 * INSET
@@ -91,15 +104,16 @@ def _layouts(page: PageSpec, info: Sequence[str], warnings: Sequence[str]) -> li
     if h <= INFO_SHARE * (fy1 - fy0):
         band = max(TB_H, h + INSET) if beside else TB_H + h + INSET
         at = (fx0 + INSET, fy1 - band) if beside else (fx0 + INSET, fy1 - TB_H - h - INSET)
-        out.append(SheetLayout((fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - band - SCALE_H), at, w, h, True))
+        box, cap = area(fx1 - INSET, fy1 - band - SCALE_H, not beside)
+        out.append(SheetLayout(box, at, w, h, True, cap))
     rh = info_height(info, RIGHT_W, warnings)
-    if rh <= tb[1] - fy0 - 2 * INSET:
+    if rh <= tb[1] - fy0 - 2 * INSET - CAP_H:
         x = fx1 - INSET - RIGHT_W
-        out.append(SheetLayout((fx0 + INSET, fy0 + INSET, x - INSET, tb[1] - SCALE_H), (x, fy0 + INSET - 4.0),
-                               RIGHT_W, rh, True))
+        box, cap = area(x - INSET, tb[1] - SCALE_H, True)
+        out.append(SheetLayout(box, (x, box[1] - 4.0), RIGHT_W, rh, True, cap))
     full = fx1 - fx0 - 2 * INSET
-    out.append(SheetLayout((fx0 + INSET, fy0 + INSET, fx1 - INSET, tb[1] - SCALE_H), (fx0 + INSET, fy0 + INSET),
-                           full, info_height(info, full, warnings), False))
+    box, cap = area(fx1 - INSET, tb[1] - SCALE_H, True)
+    out.append(SheetLayout(box, (fx0 + INSET, fy0 + INSET), full, info_height(info, full, warnings), False, cap))
     return out
 
 
@@ -150,6 +164,33 @@ def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] 
     mu = _mu(scale)
     box = viewbox or grow(content, FIG_MARGIN * mu)
     return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
+
+
+def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
+    """Every numbered step's caption in ``box``, each line ``<text class="stepcap" data-step="k">``, hidden
+    unless it is the current step: frame k and the player's step k show what step k does; the full drawing
+    shows none. Rendered as frame ``upto``: the captions up to it, that of ``upto`` current."""
+    from .labels import wrap
+    from .page import fitted, zh_punct
+    from .protocol import _line
+    width, lh = box[2] - box[0], INFO_SIZE * 1.25
+    most = max(1, int((box[3] - box[1]) // lh))
+    g = dwg.g(id="captions")
+    for k, group in enumerate(scene.frames(), 1):
+        if upto is not None and k > upto:
+            break
+        en, zh = scene.caption(group[0].key)
+        zh = zh_punct(zh) if zh else ""
+        first = f"{k}. {(zh or en) if lang == 'zh' else en}"
+        lines = wrap(first, width, INFO_SIZE) + (wrap(zh, width, INFO_SIZE) if lang == "both" and zh else [])
+        if len(lines) > most:
+            lines = lines[:most - 1] + [fitted(" ".join(lines[most - 1:]), width, INFO_SIZE)]
+        for i, ln in enumerate(lines):
+            el = _line(dwg, ln, box[0], box[1] + INFO_SIZE + i * lh, INFO_SIZE, HIGHLIGHT,
+                       "stepcap current" if k == upto else "stepcap")
+            el.attribs["data-step"] = str(k)
+            g.add(el)
+    return g
 
 
 def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
@@ -203,6 +244,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     dwg = document(sheet)
     dwg.defs.add(dwg.style(CSS))
     dwg.attribs["class"] = "sheet"
+    dwg.add(step_captions_group(dwg, scene, sl.caption, lang, upto))
     dwg.add(_figure_group(dwg, fig))
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
     if sl.info_here and (info or warnings):
