@@ -238,3 +238,16 @@ def test_frame_k_shows_the_caption_of_step_k_only_and_the_full_drawing_none():
     at14 = [re.sub(r"<[^>]+>", "", t) for cur, n, t in caps.findall(frame_of(full, 14)) if cur]
     assert at14[0].startswith("14. Measure θ")
     assert ".stepcap.current { display: inline; }" in full and ".stepcap { display: none; }" in full
+
+
+def test_the_protocol_takes_as_many_columns_as_the_sheet_holds():
+    """A4 portrait holds two 82 mm columns, A4 landscape three: a long protocol fills them before a new sheet."""
+    from geomcon.render.protocol import COL_GAP, COL_W, paginate
+
+    sc = _sol("100-04_four_bar_fixed_pivots_coupler_angles").drawing_scene
+    for page, cols in ((PageSpec("A4", "portrait", "zh"), 2), (PageSpec("A4", "landscape", "both"), 3)):
+        fx0, fy0, fx1, _ = frame_box(page.sheet)
+        width = fx1 - fx0 - 8.0
+        assert cols * COL_W + (cols - 1) * COL_GAP <= width
+        pages = paginate(sc, width, title_block_box(page.sheet)[1] - fy0 - 8.0, page.lang)
+        assert all(p.columns == cols for p in pages[:-1]) and pages[0].columns == cols, [p.columns for p in pages]

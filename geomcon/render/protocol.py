@@ -30,7 +30,7 @@ from .shapes import add_runs
 from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
 from .view import fmt
 
-COL_W = 84.0          # column width, paper mm
+COL_W = 82.0          # column width, paper mm (two fit an A4 portrait frame: 2 × 82 + 6 ≤ 172)
 COL_GAP = 6.0
 NUM_W = 7.0           # hanging indent of the caption after its number
 EN_LH = PROTO_SIZE * 1.28
