@@ -251,3 +251,20 @@ def test_the_protocol_takes_as_many_columns_as_the_sheet_holds():
         assert cols * COL_W + (cols - 1) * COL_GAP <= width
         pages = paginate(sc, width, title_block_box(page.sheet)[1] - fy0 - 8.0, page.lang)
         assert all(p.columns == cols for p in pages[:-1]) and pages[0].columns == cols, [p.columns for p in pages]
+
+
+def test_no_gallery_drawing_is_wider_or_taller_than_its_paper():
+    """Issue 11 found 48 of 89 figures wider than A4 landscape: every problem's drawing now lies in the frame,
+    above the title block, at a standard scale (the gallery's page: A4 landscape)."""
+    from geomcon.gallery import gallery_page
+
+    page = gallery_page()
+    fx0, fy0, fx1, _ = frame_box(page.sheet)
+    tb = title_block_box(page.sheet)
+    files = sorted((ROOT / "problems").glob("*.toml"))
+    assert len(files) > 60
+    for p in files:
+        sol = solve(load_problem(p))
+        _, scale, view = place_figure(sol.drawing_scene, page, sol.figure_lines(page.lang), sol.warnings)
+        x0, y0, x1, y1 = view.paper_box
+        assert scale in STANDARD and fx0 <= x0 and x1 <= fx1 and fy0 <= y0 and y1 <= tb[1], (p.name, view.paper_box)
