@@ -131,10 +131,35 @@ NAMES: dict[str, AnswerName] = {
     "sens_E1": _n("ΔE1", "per 0.1° of error", "每 0.1° 误差的偏移"),
     "sens_E1_mm": _n("ΔE1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "deviation": _n("f", "largest distance of D from the guide", "D 偏离导路的最大距离"),
+    # kinematics (velocity and acceleration polygons)
+    "omega2": _n("ω2", "angular velocity of BC", "连杆角速度"),
+    "epsilon2": _n("ε2", "angular acceleration of BC", "连杆角加速度"),
+    "omega3": _n("ω3", "angular velocity of CD", "摇杆角速度"),
+    "epsilon3": _n("ε3", "angular acceleration of CD", "摇杆角加速度"),
+    "vC": _n("vC", "velocity of C", "C 点速度"),
+    "aC": _n("aC", "acceleration of C", "C 点加速度"),
+    "vE": _n("vE", "velocity of E", "E 点速度"),
+    "aE": _n("aE", "acceleration of E", "E 点加速度"),
+    "mu_v": _n("μv", "velocity polygon scale", "速度比例尺"),
+    "mu_a": _n("μa", "acceleration polygon scale", "加速度比例尺"),
+    "v_slip": _n("vB2B3", "velocity of B2 along the guide", "B2 相对导杆的速度"),
+    "a_slip": _n("arB2B3", "relative acceleration of B2 along the guide", "B2 相对导杆的加速度"),
+    "a_coriolis": _n("akB2B3", "Coriolis acceleration", "科氏加速度"),
 }
 """Every answer's printed name. An answer missing here prints its name with ``_`` as a space."""
 
-UNITS = {"deg": "°", "mm": " mm", "mm/s": " mm/s", "rad/s": " rad/s"}
+UNITS = {"deg": "°", "": "", "bool": "", "point": "", "choice": "", "table": ""}
+"""How a unit follows a number (any other unit: a space and the unit as the recipe names it, e.g. ``rad/s²``)."""
+
+
+def unit_text(unit: str) -> str:
+    """The unit as printed after a number.
+
+    >>> unit_text("deg"), unit_text("mm[]"), unit_text("rad/s²"), unit_text("")
+    ('°', ' mm', ' rad/s²', '')
+    """
+    u = unit.removesuffix("[]")
+    return UNITS[u] if u in UNITS else f" {u}"
 
 
 def name_of(answer: str) -> AnswerName:
@@ -147,7 +172,7 @@ def name_of(answer: str) -> AnswerName:
 
 
 def _number(v: float, unit: str) -> str:
-    return f"{v:.3f}{UNITS.get(unit.removesuffix('[]'), '')}"
+    return f"{v:.3f}{unit_text(unit)}"
 
 
 def shown_value(v: Any, unit: str, lang: str = "en") -> str:
@@ -159,7 +184,7 @@ def shown_value(v: Any, unit: str, lang: str = "en") -> str:
     if isinstance(v, bool):
         return ("是" if v else "否") if lang == "zh" else ("yes" if v else "no")
     if isinstance(v, (tuple, list)):
-        return "[" + ", ".join(f"{x:.3f}" for x in v) + "]" + UNITS.get(unit.removesuffix("[]"), "")
+        return "[" + ", ".join(f"{x:.3f}" for x in v) + "]" + unit_text(unit)
     return _number(float(v), unit)
 
 
@@ -200,4 +225,4 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     return head + _remarks(twin, printed, lang)
 
 
-__all__ = ["AnswerName", "NAMES", "name_of", "result_line", "shown_value"]
+__all__ = ["AnswerName", "NAMES", "name_of", "result_line", "shown_value", "unit_text"]
