@@ -84,13 +84,19 @@ def cmd_solve(args: argparse.Namespace) -> int:
             sol = solve(load_problem(path))
             text = to_json_text(sol) if args.json else _summary(sol) + "\n"
             files: dict[Path, str] = {}
-            if args.svg:
-                files[Path(args.svg)] = sol.svg()
-            if args.html:
-                files[Path(args.html)] = sol.html()
-            if args.steps:
-                for k, frame in enumerate(sol.frames(), 1):
-                    files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
+            if args.svg or args.html or args.steps:
+                from .render.page import PageSpec, sheet_names
+                page = PageSpec(args.paper, args.orientation, args.lang)
+                sheets = sol.sheets(page)
+                if args.svg:
+                    names = sheet_names(args.svg, len(sheets))
+                    check_targets({f"--svg (sheet {i})": n for i, n in enumerate(names[1:], 2)})
+                    files.update((Path(n), sheet) for n, sheet in zip(names, sheets))
+                if args.html:
+                    files[Path(args.html)] = sol.html(page, sheets)
+                if args.steps:
+                    for k, frame in enumerate(sol.frames(page, sheets[0]), 1):
+                        files[Path(args.steps) / f"step-{k:03d}.svg"] = frame
             if getattr(args, "diagrams", None):
                 from .gallery import problem_motion_svg
                 if "program" not in sol.problem.given or sol.problem.given.get("h") is None:
@@ -163,14 +169,14 @@ def cmd_gallery(args: argparse.Namespace) -> int:
         return _fail(str(problems), "no *.toml problem files here")
     try:
         if args.check:
-            stale = stale_files(problems, out)
+            stale = stale_files(problems, out, lang=args.lang)
             if stale:
                 print(f"gallery is stale ({len(stale)} files): " + ", ".join(stale), file=sys.stderr)
                 print("run: geomcon gallery", file=sys.stderr)
                 return EXIT_CHECK_FAILED
             print(f"gallery is up to date ({len(problem_files(problems))} problems)")
             return 0
-        files = build_gallery(problems)
+        files = build_gallery(problems, lang=args.lang)
     except GeomconError as exc:
         return _fail(_current_file(exc, problems), str(exc))
     write_all({out / name: text for name, text in files.items()})
@@ -337,6 +343,19 @@ def cmd_moodle(args: argparse.Namespace) -> int:
     return 0
 
 
+def _page_arguments(s: argparse.ArgumentParser) -> None:
+    """--paper, --portrait/--landscape and --lang of the drawing commands."""
+    s.add_argument("--paper", choices=("A4", "A3"), default="A4", help="paper of the sheets (default A4)")
+    o = s.add_mutually_exclusive_group()
+    o.add_argument("--landscape", dest="orientation", action="store_const", const="landscape",
+                   help="landscape sheets (the default)")
+    o.add_argument("--portrait", dest="orientation", action="store_const", const="portrait", help="portrait sheets")
+    s.set_defaults(orientation="landscape")
+    s.add_argument("--lang", choices=("en", "zh", "both"), default="both",
+                   help="language of captions, results and headings: en, zh (full-width punctuation) or both "
+                   "(default)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``geomcon`` command."""
     p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
@@ -344,9 +363,11 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("solve", help="solve one problem file")
     s.add_argument("file")
     s.add_argument("--json", action="store_true", help="print the result as one JSON object")
-    s.add_argument("--svg", metavar="OUT", help="write the annotated drawing")
-    s.add_argument("--steps", metavar="DIR", help="write one SVG per construction step")
-    s.add_argument("--html", metavar="OUT", help="write a self-contained step player page")
+    s.add_argument("--svg", metavar="OUT", help="write the drawing sheet (OUT: drawing at a standard scale, results, "
+                   "title block) and the protocol sheets (OUT stem + -2, -3 …), each printable at 100 %%")
+    s.add_argument("--steps", metavar="DIR", help="write one SVG per construction step (the drawing sheet at that step)")
+    s.add_argument("--html", metavar="OUT", help="write a self-contained step player page (prints one sheet a page)")
+    _page_arguments(s)
     s.add_argument("--profile-csv", metavar="OUT", help="cam recipes: write the actual profile as x,y,delta (mm, mm, deg)")
     s.add_argument("--diagrams", metavar="DIR", help="cam recipes: write the motion program's s–v–a (ψ–δ) diagrams "
                    "as DIR/<problem>_motion.svg")
@@ -358,6 +379,8 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--check", action="store_true", help="exit 1 when the committed gallery is stale")
     g.add_argument("--problems", default="problems", metavar="DIR")
     g.add_argument("--out", default="gallery", metavar="DIR")
+    g.add_argument("--lang", choices=("en", "zh", "both"), default="both",
+                   help="language of captions, results and headings (default both)")
     g.set_defaults(func=cmd_gallery)
     b = sub.add_parser("bench", help="speed targets as ratios to references timed in the same run (the lean core); "
                        "time against error: construction vs crank sweep, vs sympy; answers vs drawing")

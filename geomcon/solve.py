@@ -444,6 +444,34 @@ class Solution:
             lines.append(line)
         return lines
 
+    def figure_lines(self, lang: str = "en") -> list[str]:
+        """The result lines of a drawing, as a textbook prints them (:mod:`geomcon.render.results`): one per
+        answer, in the order of :meth:`info_lines`, each saying what agreed with what and how the printed
+        answer deviates."""
+        from .render.results import result_line
+
+        pub = {r["quantity"]: r for r in self.published}
+        lines = []
+        for q in self.recipe.answers:
+            if q.name not in self.answers:
+                continue
+            parts = _pairs(q.name, self.answers[q.name], self.answers[q.name])
+            rows = [r for r in self.checks if any(r["quantity"] == name for name, _, _ in parts)]
+            printed = []
+            for name, _, _ in parts:
+                p = pub.get(name)
+                if p is None:
+                    continue
+                rel = p["rel_deviation"]
+                how = "" if rel is None else (f"{100 * rel:+.2f} %" if p["deviation"] else ("exact" if lang != "zh" else "精确"))
+                doubt = ("，存疑" if lang == "zh" else ", doubtful") if p["doubtful"] else ""
+                sep = "，" if lang == "zh" else ", "
+                printed.append(f"{p['published']:g}" + (f"{sep}{how}" if how else "") + doubt)
+            lines.append(result_line(q.name, self.answers[q.name], q.unit,
+                                     twin=None if not rows else all(r["ok"] for r in rows), printed=printed,
+                                     lang=lang))
+        return lines
+
     def info_steps(self) -> list[int]:
         """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
         several candidate solutions, the last of its candidates' steps: a result never shows early)."""
@@ -462,23 +490,34 @@ class Solution:
         and is built once more in full, keeping its values, when a drawing asks for it)."""
         return self.scene.complete()
 
-    def svg(self, *, upto: int | None = None, viewbox=None) -> str:
-        """The annotated drawing (frame ``upto`` when given)."""
-        from .render import render_svg
-        return render_svg(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(), info=self.info_lines(),
-                          warnings=self.warnings, info_steps=self.info_steps())
+    def sheets(self, page=None, *, upto: int | None = None, viewbox=None) -> list[str]:
+        """The printed sheets (:func:`geomcon.render.svg.render_sheets`): the drawing at a standard scale with
+        results, warnings and title block, then the construction protocol; ``page`` a
+        :class:`~geomcon.render.page.PageSpec` (default A4 landscape, both languages)."""
+        from .render.page import PageSpec
+        from .render.svg import render_sheets
+        page = page or PageSpec()
+        return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(),
+                             info=self.figure_lines(page.lang), warnings=self.warnings, info_steps=self.info_steps(),
+                             page=page, problem=self.problem.id + ".toml" if self.problem.path else self.problem.id,
+                             recipe=self.recipe.name)
 
-    def html(self) -> str:
-        """The self-contained step player page."""
+    def svg(self, *, upto: int | None = None, viewbox=None, page=None) -> str:
+        """Sheet 1 of the drawing (frame ``upto`` when given)."""
+        return self.sheets(page, upto=upto, viewbox=viewbox)[0]
+
+    def html(self, page=None, sheets: list[str] | None = None) -> str:
+        """The self-contained step player page (``sheets``: :meth:`sheets` already rendered)."""
         from .render import render_html
-        return render_html(self.drawing_scene, title=self.title(), info=self.info_lines(), warnings=self.warnings,
-                           info_steps=self.info_steps())
+        from .render.page import PageSpec
+        page = page or PageSpec()
+        return render_html(self.drawing_scene, title=self.title(), svg=sheets or self.sheets(page), page=page)
 
-    def frames(self) -> list[str]:
-        """One SVG per numbered step: the full drawing with later steps hidden and step k highlighted, exactly
-        the step player's frame k (one rendering, one label placement: labels never jump between frames)."""
+    def frames(self, page=None, sheet: str | None = None) -> list[str]:
+        """One SVG per numbered step: sheet 1 with later steps hidden and step k highlighted, exactly the step
+        player's frame k (one rendering, one label placement: labels never jump between frames)."""
         from .render.svg import frame_of
-        full = self.svg()
+        full = sheet or self.svg(page=page)
         return [frame_of(full, k) for k in range(1, len(self.drawing_scene.frames()) + 1)]
 
 

@@ -73,6 +73,6 @@ def test_the_player_s_frame_k_is_the_steps_frame_k(page):
     frames = sol.frames()
     for k in (1, 7, 14, len(frames)):
         dom = _dom(page, f"#step={k}")
-        drawing = dom[dom.index('id="drawing"'):]
+        drawing = dom[dom.index('id="page-1"'):dom.index('id="page-2"')]      # sheet 1: the drawing
         frame = frames[k - 1]
         assert _states(drawing) == _states(frame[frame.index("<svg"):]), k

@@ -14,6 +14,7 @@ from geomcon.geometry import Arc, Line, Point, Ray, circle, segment
 from geomcon.recipes import RECIPES
 from geomcon.recipes.crank_rocker import construct
 from geomcon.render import model_extent, render_html, render_svg, write_frames
+from geomcon.render.svg import render_sheets
 from geomcon.render.svg import frame_of
 from geomcon.render.figure import build_figure
 from geomcon.render.placement import Placer, Request
@@ -98,19 +99,20 @@ def test_other_recipes_draw_every_visible_step(name, given):
 
 def test_every_value_and_mark_type_draws_something():
     sc = marks_scene()
-    root = ET.fromstring(render_svg(sc))
+    sheets = render_sheets(sc)
+    root = ET.fromstring(sheets[0])
     groups = step_groups(root)
     for key in ("A", "A_ground", "AB", "AC", "ray", "k", "arc", "ang", "ra", "dim", "sl", "gu"):
         assert len(list(groups[f"step-{key}"][0])) >= 1, key
     assert len(list(groups["step-len"][0])) == 0              # a measurement draws nothing...
-    proto = root.find(f".//{SVG}g[@id='proto-len']")
+    proto = ET.fromstring(sheets[1]).find(f".//{SVG}g[@id='proto-len']")     # the protocol is on sheet 2
     assert "Measure AC = 50.000 mm" in text_of(proto)        # ...but is printed with its value
     assert "α=36.87°" in text_of(groups["step-ang"][0])
 
 
 def test_measurement_value_is_appended_to_its_protocol_line():
     sc = crank_rocker()
-    root = ET.fromstring(render_svg(sc))
+    root = ET.fromstring(render_sheets(sc)[1])
     line = text_of(root.find(f".//{SVG}g[@id='proto-theta']"))
     assert "θ = ∠C1AC2 = 12.506°" in line
     assert "量得极位夹角" in line
@@ -292,11 +294,14 @@ def test_the_results_of_frame_k_are_only_those_of_steps_up_to_k():
     root = Path(__file__).resolve().parents[1]
     for name in ("001-08_crank_rocker.toml", "001-10_crank_rocker_design_coupler.toml", "200-01_cam_roller_offset.toml"):
         sol = solve(load_problem(root / "problems" / name))
-        frames = sol.frames()
+        sheets = "".join(sol.sheets())             # the results are on sheet 1 or, beside a larger drawing, 2
+        n = len(sol.frames())
+        frames = [frame_of(sheets, k) for k in range(1, n + 1)]
         n_results = len(sol.info_lines())
+        shown = re.compile(r'<text class="info" data-step="(\d+)"')
         for k, frame in enumerate(frames, 1):
-            steps = [int(s) for s in re.findall(r'<text class="info" data-step="(\d+)"', frame)]
+            steps = [int(s) for s in shown.findall(frame)]
             assert all(s <= k for s in steps), (name, k, steps)
-        full = re.findall(r'<text class="info" data-step="(\d+)"', sol.svg())
+        full = shown.findall(sheets)
         assert len(full) >= n_results and max(map(int, full)) <= len(frames)
-        assert len(re.findall(r'class="info" data-step', frames[0])) < len(full)
+        assert len(shown.findall(frames[0])) < len(full)

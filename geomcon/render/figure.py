@@ -146,13 +146,19 @@ def fit_view(content: Box, target: float = FIG_TARGET) -> Box:
 
 # ---------------------------------------------------------------------------------------------- building
 def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
-                 origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET) -> Figure:
+                 origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET,
+                 mu: float | None = None) -> Figure:
     """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted;
-    ``target`` is the paper width aimed at."""
+    ``target`` is the paper width aimed at, unless the scale ``mu`` (model mm per paper mm) is given: then the
+    view is ``viewbox``, or the content with :data:`FIG_MARGIN` paper mm around it, drawn at exactly ``mu``."""
     steps, n = shown_steps(scene, upto)
     values = scene.evaluate([s.key for _, s in steps])
-    box = viewbox or fit_view(content_box(scene, steps, values), target)
-    view = View(box, choose_scale(box[2] - box[0], box[3] - box[1], 0.0, target), origin)
+    if mu is None:
+        box = viewbox or fit_view(content_box(scene, steps, values), target)
+        mu = choose_scale(box[2] - box[0], box[3] - box[1], 0.0, target)
+    else:
+        box = viewbox or grow(content_box(scene, steps, values), FIG_MARGIN * mu)
+    view = View(box, mu, origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
     ctx = Context(view, pts, _centre(view, pts))
     current = n if upto is not None else None

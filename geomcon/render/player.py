@@ -25,8 +25,9 @@ import json
 from typing import Sequence
 
 from ..scene import Scene
+from .page import PageSpec, print_css, zh_punct
 from .style import FONT_FAMILY, HIGHLIGHT
-from .svg import render_svg
+from .svg import render_sheets
 
 _CSS = """
 body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fafafa; }
@@ -39,6 +40,7 @@ body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fa
 #caption .zh { color: #5c6370; }
 #drawing { background: #fff; border: 1px solid #ddd; overflow: auto; }
 #drawing svg { display: block; width: 100%%; height: auto; }
+#drawing .page + .page { border-top: 1px solid #ddd; }
 .future { display: none; }
 """
 
@@ -101,12 +103,12 @@ _SCRIPT = """
 """
 
 _PAGE = """<!DOCTYPE html>
-<html lang="en" xmlns="http://www.w3.org/1999/xhtml">
+<html lang="%(lang)s" xmlns="http://www.w3.org/1999/xhtml">
 <head>
 <meta charset="utf-8" />
 <meta name="viewport" content="width=device-width, initial-scale=1" />
 <title>%(title)s</title>
-<style>%(css)s</style>
+<style>%(css)s%(print)s</style>
 </head>
 <body>
 <div id="bar">
@@ -130,14 +132,23 @@ _PAGE = """<!DOCTYPE html>
 """
 
 
-def step_captions(scene: Scene) -> list[tuple[str, str]]:
-    """(English, Chinese) caption of every numbered step, in protocol order (branch rules included)."""
-    return [scene.caption(group[0].key) for group in scene.frames()]
+def step_captions(scene: Scene, lang: str = "both") -> list[tuple[str, str]]:
+    """The caption of every numbered step, in protocol order (branch rules included), as the player shows it
+    above the drawing: (English, Chinese) for ``both``, (English, "") for ``en``, (Chinese, "") for ``zh``."""
+    out = []
+    for group in scene.frames():
+        en, zh = scene.caption(group[0].key)
+        zh = zh_punct(zh) if zh else zh
+        out.append((en, zh) if lang == "both" else (en, "") if lang == "en" else (zh or en, ""))
+    return out
 
 
-def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] = (), svg: str | None = None,
-                warnings: Sequence[str] = (), info_steps: Sequence[int] | None = None) -> str:
-    """The step player page of the whole scene.
+def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] = (),
+                svg: str | Sequence[str] | None = None, warnings: Sequence[str] = (),
+                info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
+                recipe: str = "") -> str:
+    """The step player page of the whole scene: every sheet, one under the other on screen, one per printed
+    page at 100 % (CSS ``@page`` of the sheet's paper and orientation).
 
     Parameters
     ----------
@@ -146,12 +157,12 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     title : str or None
         Page and drawing title (default: the scene's title).
     info : sequence of str
-        Result lines printed under the protocol.
-    warnings, info_steps
-        Warnings shown under the results, the frame producing each result (:func:`render_svg`).
-    svg : str or None
-        The drawing, when it is rendered already: ``render_svg(scene, title=title, info=info, warnings=…)`` (the
-        page embeds exactly that document; passing it saves drawing the scene twice).
+        Result lines.
+    warnings, info_steps, page, problem, recipe
+        As :func:`~geomcon.render.svg.render_sheets` takes them.
+    svg : str, sequence of str, or None
+        The sheets, when they are rendered already: ``render_sheets(scene, title=title, info=info, …)`` (the
+        page embeds exactly those documents; passing them saves drawing the scene twice).
 
     Returns
     -------
@@ -162,14 +173,17 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     --------
     >>> from geomcon.recipes.crank_rocker import construct
     >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
-    >>> render_html(sc, svg=render_svg(sc)) == render_html(sc)
+    >>> render_html(sc, svg=render_sheets(sc)) == render_html(sc)
     True
     """
     if svg is None:
-        svg = render_svg(scene, title=title, info=info, warnings=warnings, info_steps=info_steps)
-    svg = svg[svg.index("<svg"):]
-    steps = json.dumps(step_captions(scene), ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
+        svg = render_sheets(scene, title=title, info=info, warnings=warnings, info_steps=info_steps, page=page,
+                            problem=problem, recipe=recipe)
+    sheets = [svg] if isinstance(svg, str) else list(svg)
+    body = "\n".join(f'<div class="page" id="page-{i}">{s[s.index("<svg"):]}</div>' for i, s in enumerate(sheets, 1))
+    steps = json.dumps(step_captions(scene, page.lang), ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
                                     for f in FONT_FAMILY.split(",")), "hl": HIGHLIGHT}
-    return _PAGE % {"title": html.escape(title or scene.title), "css": css, "n": len(scene.frames()), "svg": svg,
+    return _PAGE % {"title": html.escape(title or scene.title), "css": css, "print": print_css(page),
+                    "lang": "zh-Hans" if page.lang == "zh" else "en", "n": len(scene.frames()), "svg": body,
                     "script": _SCRIPT % {"steps": steps}}

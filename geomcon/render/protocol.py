@@ -25,16 +25,18 @@ import svgwrite
 
 from ..scene import Role, Scene
 from .labels import rich_runs, text_width, wrap
+from .page import text, zh_punct
 from .shapes import add_runs
 from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
 from .view import fmt
 
-COL_W = 84.0          # column width, paper mm
+COL_W = 82.0          # column width, paper mm (two fit an A4 portrait frame: 2 × 82 + 6 ≤ 172)
 COL_GAP = 6.0
-NUM_W = 5.5           # hanging indent of the caption after its number
+NUM_W = 7.0           # hanging indent of the caption after its number
 EN_LH = PROTO_SIZE * 1.28
 ZH_LH = PROTO_ZH_SIZE * 1.3
 ENTRY_GAP = 0.9
+HEAD_SIZE = 3.5       # headings (ISO 3098 series)
 HEAD_H = 6.0          # the heading line above the columns
 MIN_LIMIT = 185.0     # a protocol may grow this tall beside a smaller figure before taking another column
 VALUE_RESERVE = text_width(" = -000.000 mm", PROTO_SIZE)
@@ -86,17 +88,27 @@ class Layout:
     height: float
 
 
-def layout(scene: Scene, fig_height: float) -> Layout:
-    """Wrap every numbered step's caption and set the entries in the fewest columns (at most three) whose
-    height stays within that of the figure (or :data:`MIN_LIMIT` when the figure is smaller)."""
+def _raw(scene: Scene, lang: str) -> list[tuple[int, str, str, bool, list[str], list[str]]]:
+    """Every numbered step's wrapped lines: (number, key, unit, measured, first lines, second lines). The
+    first lines are English (``en``, ``both``) or Chinese (``zh``; English where a step has no Chinese), the
+    second Chinese under English (``both``) or none."""
     raw = []
     for i, group in enumerate(scene.frames(), 1):
         s = group[0]
         en, zh = scene.caption(s.key)
+        zh = zh_punct(zh) if zh else zh
         measured = s.role == Role.MEASUREMENT or s.unit in ("mm", "deg")
-        en_lines = wrap(en or s.key, COL_W - NUM_W, PROTO_SIZE, last_reserve=VALUE_RESERVE if measured else 0.0)
-        zh_lines = wrap(zh, COL_W - NUM_W, PROTO_ZH_SIZE) if zh else []
-        raw.append((i, s.key, s.unit, measured, en_lines, zh_lines))
+        first = (zh or en or s.key) if lang == "zh" else (en or s.key)
+        first_lines = wrap(first, COL_W - NUM_W, PROTO_SIZE, last_reserve=VALUE_RESERVE if measured else 0.0)
+        zh_lines = wrap(zh, COL_W - NUM_W, PROTO_ZH_SIZE) if zh and lang == "both" else []
+        raw.append((i, s.key, s.unit, measured, first_lines, zh_lines))
+    return raw
+
+
+def layout(scene: Scene, fig_height: float, lang: str = "both") -> Layout:
+    """Wrap every numbered step's caption and set the entries in the fewest columns (at most three) whose
+    height stays within that of the figure (or :data:`MIN_LIMIT` when the figure is smaller)."""
+    raw = _raw(scene, lang)
     heights = [entry_height(r[4], r[5]) for r in raw]
     limit = max(fig_height, MIN_LIMIT)
     for cols in (1, 2, 3):
@@ -104,6 +116,11 @@ def layout(scene: Scene, fig_height: float) -> Layout:
         col_h = _column_heights(heights, starts)
         if max(col_h) <= limit or cols == 3:
             break
+    return _placed(raw, heights, starts)
+
+
+def _placed(raw: Sequence[tuple], heights: Sequence[float], starts: Sequence[int]) -> Layout:
+    """The entries ``raw`` set in columns beginning at the indices ``starts``."""
     entries, y, col = [], 0.0, 0
     for j, r in enumerate(raw):
         if col + 1 < len(starts) and j == starts[col + 1]:
@@ -111,7 +128,49 @@ def layout(scene: Scene, fig_height: float) -> Layout:
         entries.append(Entry(r[0], r[1], r[2], r[3], r[4], r[5], col, y))
         y += heights[j]
     ncols = len(starts)
+    col_h = _column_heights(heights, starts)
     return Layout(entries, ncols, ncols * COL_W + (ncols - 1) * COL_GAP, HEAD_H + max(col_h, default=0.0))
+
+
+def paginate(scene: Scene, width: float, height: float, lang: str = "both", first_skip: float = 0.0) -> list[Layout]:
+    """The protocol set on sheets of ``width`` × ``height`` paper mm (heading included): in the fewest
+    balanced columns that fit one sheet, else column after column, sheet after sheet (an entry is never
+    split). Every sheet holds at least one entry; the first sheet's columns are ``first_skip`` shorter (the
+    results stand above them).
+
+    Examples
+    --------
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+    >>> [len(p.entries) > 0 for p in paginate(sc, 267.0, 150.0)]
+    [True]
+    >>> pages = paginate(sc, 90.0, 40.0)
+    >>> len(pages) > 1 and sum(len(p.entries) for p in pages) == len(sc.frames())
+    True
+    """
+    raw = _raw(scene, lang)
+    heights = [entry_height(r[4], r[5]) for r in raw]
+    max_cols = max(1, int((width + COL_GAP) // (COL_W + COL_GAP)))
+    limit = height - HEAD_H
+    for cols in range(1, max_cols + 1):
+        starts = _split(heights, cols)
+        if max(_column_heights(heights, starts), default=0.0) <= limit - first_skip:
+            return [_placed(raw, heights, starts)]
+    pages: list[Layout] = []
+    j = 0
+    while j < len(raw):
+        first, starts, acc = j, [j], 0.0
+        room = limit - (first_skip if not pages else 0.0)
+        while j < len(raw):
+            if acc > 0 and acc + heights[j] > room:
+                if len(starts) == max_cols:
+                    break
+                starts.append(j)
+                acc = 0.0
+            acc += heights[j]
+            j += 1
+        pages.append(_placed(raw[first:j], heights[first:j], [s - first for s in starts]))
+    return pages
 
 
 def _split(heights: Sequence[float], cols: int) -> list[int]:
@@ -139,11 +198,11 @@ def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fil
 
 
 def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, values: Mapping[str, Any],
-                    shown: int, current: int | None) -> Any:
+                    shown: int, current: int | None, lang: str = "both") -> Any:
     """The protocol group: entries 1…``shown`` (each ``<g class="proto" data-step="n">``), entry
     ``current`` highlighted; values taken from ``values`` (measured steps only)."""
     root = dwg.g(id="protocol")
-    root.add(_line(dwg, "Construction protocol  作图步骤", x, y + 3.2, 3.0, INK, "proto-head"))
+    root.add(_line(dwg, text("Construction protocol", "作图步骤", lang), x, y + HEAD_SIZE, HEAD_SIZE, INK, "proto-head"))
     root.elements[-1].attribs["font-weight"] = "bold"
     top = y + HEAD_H
     for e in lay.entries:
@@ -184,7 +243,8 @@ def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ())
 
 
 def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float,
-                warnings: Sequence[str] = (), steps: Sequence[int] | None = None, upto: int | None = None) -> Any:
+                warnings: Sequence[str] = (), steps: Sequence[int] | None = None, upto: int | None = None,
+                lang: str = "both") -> Any:
     """The result lines (answers, checks) under the protocol, then the warnings (a printed answer that is
     doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading.
 
@@ -192,12 +252,12 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
     ``data-step`` (the player shows it from that step on) and frame ``upto`` leaves out the results of later
     steps, keeping their room so that every frame has the same page."""
     g = dwg.g(id="info")
-    for block, heading, colour, cls in ((info, "Results  结果", INK, "info"),
-                                         (warnings, "Warnings  警告", HIGHLIGHT, "warning")):
+    for block, heading, colour, cls in ((info, text("Results", "结果", lang), INK, "info"),
+                                         (warnings, text("Warnings", "警告", lang), HIGHLIGHT, "warning")):
         if not block:
             continue
         y += 4.0 + INFO_SIZE
-        head = _line(dwg, heading, x, y, 3.0, colour, f"{cls}-head")
+        head = _line(dwg, heading, x, y, HEAD_SIZE, colour, f"{cls}-head")
         head.attribs["font-weight"] = "bold"
         g.add(head)
         y += INFO_SIZE * 1.6

@@ -32,12 +32,14 @@ HIGHLIGHT = "#d9480f"
 GREY_TEXT = "#5c6370"
 PAPER = "#ffffff"
 
+# Text sizes on paper, mm: the ISO 3098 series (2.5, 3.5, 5, 7). No text is smaller than 2.5 mm, a
+# subscript included (3.5 × the subscript scale 0.72 = 2.52 mm).
 LABEL_SIZE = 3.6        # point labels
-MARK_TEXT_SIZE = 2.9    # angle and dimension texts
+MARK_TEXT_SIZE = 3.5    # angle and dimension texts
 TITLE_SIZE = 5.0
-PROTO_SIZE = 2.7        # English protocol line
-PROTO_ZH_SIZE = 2.4     # Chinese protocol line
-INFO_SIZE = 2.7
+PROTO_SIZE = 3.5        # protocol line, first language
+PROTO_ZH_SIZE = 3.5     # Chinese protocol line under the English one
+INFO_SIZE = 3.5
 HALO = 0.9              # width of the white halo drawn behind texts
 
 LAYERS = ("construction", "given", "ground", "links", "marks", "sliders", "points")
@@ -187,6 +189,8 @@ CSS = f"""
 .current .dot {{ fill: {HIGHLIGHT}; }}
 .current text, .proto.current text {{ fill: {HIGHLIGHT}; }}
 .future {{ display: none; }}
+.stepcap {{ display: none; }}
+.stepcap.current {{ display: inline; }}
 """
 """Replay styles: the HTML player toggles ``current`` and ``future`` on groups (presentation attributes
 lose against any CSS rule, so these recolour without touching the drawing)."""

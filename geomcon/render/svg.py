@@ -1,9 +1,12 @@
-"""The annotated SVG of a scene: title, figure at a nice scale, numbered construction protocol, results.
+"""The printed sheets of a scene: sheet 1 the drawing at a standard scale (ISO 5455, :mod:`geomcon.paper`)
+with its scale bar, results, warnings and title block; the numbered construction protocol on the sheets that
+follow (:mod:`geomcon.render.page`).
 
 Every numbered step is one SVG group ``<g id="step-<key>" class="step role-… style-…" data-step="n">`` (n is
 the protocol number; steps drawn together share it), so a replay is pure CSS: ``.future`` hides a group,
 ``.current`` highlights it. Frame k (``upto=k``) evaluates only steps 1…k and what they depend on, draws
-them, and highlights frame k. The page is in mm (one user unit = 1 mm of paper). Output is deterministic:
+them, and highlights frame k. A sheet is in mm (one user unit = 1 mm of paper; printed at 100 % a length of
+the drawing is its real length × the scale). Output is deterministic:
 fixed rounding, ids from step keys, no clock.
 
 Examples
@@ -13,41 +16,47 @@ Examples
 >>> svg = render_svg(sc, upto=3)
 >>> sc.is_evaluated("theta")
 False
->>> 'data-step="3"' in svg and 'data-step="4"' not in svg
-True
+>>> max(int(n) for n in re.findall(r'<g class="step[^"]*" data-step="(\\d+)"', svg))
+3
 >>> render_svg(sc) == render_svg(sc)
 True
 """
 from __future__ import annotations
 
 import re
-
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any, Sequence
 
 import svgwrite
 
+from ..paper import STANDARD, Scale, Sheet, choose_scale
 from ..scene import Scene
-from .figure import Figure, build_figure, content_box, fit_view, shown_steps
-from .protocol import info_height, layout, render_info, render_protocol
+from .figure import Figure, build_figure, content_box, shown_steps
+from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, title_block,
+                   title_block_box)
+from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
-from .style import CSS, FONT_FAMILY, INFO_SIZE, INK, PAPER, TITLE_SIZE
-from .view import FIG_TARGET, Box, figure_target, fmt, nice_values
+from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
+from .view import FIG_MARGIN, Box, View, fmt, grow, nice_values
 
-MARGIN = 10.0       # page margin, paper mm
-TITLE_H = 12.0      # title band
-GAP = 8.0           # between figure and protocol
 SCALE_H = 12.0      # scale bar band under the figure
+CAP_H = 9.0         # the current step's caption above the drawing (two lines; shown in frames and the player)
+CAP_MIN_W = 60.0    # ... or left of the title block, when this much room is there
+SIDE_MIN = 90.0     # the results go beside the title block when this much room is left of it, else above
+RIGHT_W = 95.0      # width of the results column at the right of the drawing
+INFO_SHARE = 0.4    # results taller than this share of the frame go onto a sheet of their own
 
 
-def model_extent(scene: Scene, upto: int | None = None) -> Box:
+def model_extent(scene: Scene, upto: int | None = None, page: PageSpec = PageSpec()) -> Box:
     """The view box (model mm: xmin, ymin, xmax, ymax) that :func:`render_svg` fits to frames 1…upto.
 
     Passing it as ``viewbox`` to every frame gives a replay with one fixed view and page size.
     """
     steps, _ = shown_steps(scene, upto)
     values = scene.evaluate([s.key for _, s in steps])
-    return fit_view(content_box(scene, steps, values), figure_target(len(scene.frames())))
+    content = content_box(scene, steps, values)
+    return grow(content, FIG_MARGIN * _mu(_best_layout(page, (), (), content, FIG_MARGIN)[1]))
 
 
 def step_id(key: str) -> str:
@@ -55,10 +64,141 @@ def step_id(key: str) -> str:
     return "step-" + "_".join(key.split())
 
 
-def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
-               info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
-               info_steps: Sequence[int] | None = None) -> str:
-    """One SVG document of the scene, or of its frame ``upto``.
+@dataclass(frozen=True)
+class SheetLayout:
+    """Where things go on sheet 1: the drawing ``area``, the results' corner, width and height, whether they
+    are on sheet 1 at all (too many go onto a sheet of their own), and the box of the current step's caption."""
+
+    area: Box
+    info_at: tuple[float, float]
+    info_w: float
+    info_h: float
+    info_here: bool
+    caption: Box
+
+
+def _layouts(page: PageSpec, info: Sequence[str], warnings: Sequence[str]) -> list[SheetLayout]:
+    """The ways to share sheet 1 between drawing and results: results above the title block (beside it when
+    there is room), in a column at the right, or on a sheet of their own (the last resort: chosen only when it
+    draws at a larger scale, or when the results fit nowhere on sheet 1). The current step's caption goes left
+    of the title block when that corner is free and wide enough, else in a band above the drawing."""
+    sheet = page.sheet
+    fx0, fy0, fx1, fy1 = frame_box(sheet)
+    tb = title_block_box(sheet)
+    corner = tb[0] - fx0 - 2 * INSET >= CAP_MIN_W
+
+    def area(right: float, bottom: float, corner_free: bool) -> tuple[Box, Box]:
+        if corner_free and corner:
+            return (fx0 + INSET, fy0 + INSET, right, bottom), (fx0 + INSET, tb[1] + 1.0, tb[0] - INSET, fy1 - 1.0)
+        return (fx0 + INSET, fy0 + INSET + CAP_H, right, bottom), (fx0 + INSET, fy0 + INSET - 1.0, fx1 - INSET,
+                                                                  fy0 + INSET + CAP_H - 1.0)
+
+    if not (info or warnings):
+        return [SheetLayout(*area(fx1 - INSET, tb[1] - SCALE_H, True)[:1], (fx0, fy0), 0.0, 0.0, True,
+                            area(fx1 - INSET, tb[1] - SCALE_H, True)[1])]
+    side = tb[0] - fx0 - 2 * INSET
+    beside = side >= SIDE_MIN
+    w = side if beside else fx1 - fx0 - 2 * INSET
+    h = info_height(info, w, warnings)
+    out = []
+    if h <= INFO_SHARE * (fy1 - fy0):
+        band = max(TB_H, h + INSET) if beside else TB_H + h + INSET
+        at = (fx0 + INSET, fy1 - band) if beside else (fx0 + INSET, fy1 - TB_H - h - INSET)
+        box, cap = area(fx1 - INSET, fy1 - band - SCALE_H, not beside)
+        out.append(SheetLayout(box, at, w, h, True, cap))
+    rh = info_height(info, RIGHT_W, warnings)
+    if rh <= tb[1] - fy0 - 2 * INSET - CAP_H:
+        x = fx1 - INSET - RIGHT_W
+        box, cap = area(x - INSET, tb[1] - SCALE_H, True)
+        out.append(SheetLayout(box, (x, box[1] - 4.0), RIGHT_W, rh, True, cap))
+    full = fx1 - fx0 - 2 * INSET
+    box, cap = area(fx1 - INSET, tb[1] - SCALE_H, True)
+    out.append(SheetLayout(box, (fx0 + INSET, fy0 + INSET), full, info_height(info, full, warnings), False, cap))
+    return out
+
+
+def _best_layout(page: PageSpec, info: Sequence[str], warnings: Sequence[str], content: Box,
+                 margin: float) -> tuple[SheetLayout, Scale]:
+    """The layout of :func:`_layouts` that draws ``content`` at the largest standard scale (the first on a tie)."""
+    best: tuple[SheetLayout, Scale] | None = None
+    for sl in _layouts(page, info, warnings):
+        scale = figure_scale(content, sl.area, margin)
+        if best is None or scale > best[1]:
+            best = (sl, scale)
+    assert best is not None
+    return best
+
+
+def figure_scale(content: Box, area: Box, margin: float = FIG_MARGIN) -> Scale:
+    """The largest standard scale (:data:`geomcon.paper.STANDARD`) at which the model box ``content``, with
+    ``margin`` paper mm around it, fits the paper box ``area``; the smallest scale when nothing fits.
+
+    >>> str(figure_scale((0.0, 0.0, 400.0, 100.0), (0.0, 0.0, 259.0, 130.0)))
+    '1:2'
+    """
+    try:
+        return choose_scale((content[2] - content[0], content[3] - content[1]),
+                            (area[2] - area[0], area[3] - area[1]), margin=margin)
+    except ValueError:
+        return STANDARD[0]
+
+
+def _mu(scale: Scale) -> float:
+    """μl of a scale: model mm per paper mm."""
+    return scale.real / scale.paper
+
+
+def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (), warnings: Sequence[str] = (),
+                 upto: int | None = None, viewbox: Box | None = None) -> tuple[SheetLayout, Scale, View]:
+    """Where sheet 1 puts the drawing: the layout, the standard scale, and the view (model box, μl, top-left
+    corner on paper) — the drawing centred in the layout's area.
+
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sl, scale, view = place_figure(construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene)
+    >>> str(scale), view.mu
+    ('1:1', 1.0)
+    """
+    steps, _ = shown_steps(scene, upto)
+    content = viewbox or content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
+    sl, scale = _best_layout(page, info, warnings, content, 0.0 if viewbox else FIG_MARGIN)
+    mu = _mu(scale)
+    box = viewbox or grow(content, FIG_MARGIN * mu)
+    return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
+
+
+def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
+    """Every numbered step's caption in ``box``, each line ``<text class="stepcap" data-step="k">``, hidden
+    unless it is the current step: frame k and the player's step k show what step k does; the full drawing
+    shows none. Rendered as frame ``upto``: the captions up to it, that of ``upto`` current."""
+    from .labels import wrap
+    from .page import fitted, zh_punct
+    from .protocol import _line
+    width, lh = box[2] - box[0], INFO_SIZE * 1.25
+    most = max(1, int((box[3] - box[1]) // lh))
+    g = dwg.g(id="captions")
+    for k, group in enumerate(scene.frames(), 1):
+        if upto is not None and k > upto:
+            break
+        en, zh = scene.caption(group[0].key)
+        zh = zh_punct(zh) if zh else ""
+        first = f"{k}. {(zh or en) if lang == 'zh' else en}"
+        lines = wrap(first, width, INFO_SIZE) + (wrap(zh, width, INFO_SIZE) if lang == "both" and zh else [])
+        if len(lines) > most:
+            lines = lines[:most - 1] + [fitted(" ".join(lines[most - 1:]), width, INFO_SIZE)]
+        for i, ln in enumerate(lines):
+            el = _line(dwg, ln, box[0], box[1] + INFO_SIZE + i * lh, INFO_SIZE, HIGHLIGHT,
+                       "stepcap current" if k == upto else "stepcap")
+            el.attribs["data-step"] = str(k)
+            g.add(el)
+    return g
+
+
+def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
+                  info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
+                  info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
+                  recipe: str = "") -> list[str]:
+    """The printed sheets of the scene (or of its frame ``upto``): sheet 1 the drawing at a standard scale
+    with its scale bar, results, warnings and title block; then the construction protocol's sheets.
 
     Parameters
     ----------
@@ -69,53 +209,78 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
     viewbox : (xmin, ymin, xmax, ymax) or None
         Model box to show; None fits the drawn points, segments and marks (see :func:`model_extent`).
     title : str or None
-        Title printed at the top (default: the scene's title).
+        Title in the title block (default: the scene's title).
     info : sequence of str
-        Result lines printed under the protocol.
+        Result lines printed under the heading Results.
     protocol : bool
-        Print the numbered construction protocol beside the figure.
+        Add the sheets of the numbered construction protocol.
     warnings : sequence of str
         Warnings printed under the results, under their own heading (every frame shows them: they concern
         the problem, not a step).
     info_steps : sequence of int or None
         The frame producing each result line: frame k shows the results of frames 1…k only.
+    page : PageSpec
+        Paper, orientation and language.
+    problem, recipe : str
+        The problem file and recipe named in the title block.
 
     Returns
     -------
-    str
-        The SVG document (UTF-8 text, sizes in mm).
+    list of str
+        The SVG documents, one per sheet (UTF-8 text; width and height in mm of paper, 1 user unit = 1 mm).
     """
-    origin = (MARGIN, MARGIN + TITLE_H)
-    fig = build_figure(scene, upto, viewbox, origin, figure_target(len(scene.frames())) if protocol else FIG_TARGET)
-    fig_w, fig_h = fig.view.size
-    lay = layout(scene, fig_h + SCALE_H) if protocol else None
-    proto_x = origin[0] + fig_w + GAP
-    text_w = lay.width if lay else fig_w
-    info_h = info_height(info, text_w, warnings)
-    if lay:
-        width = proto_x + lay.width + MARGIN
-        height = max(origin[1] + fig_h + SCALE_H, origin[1] + lay.height + info_h) + MARGIN
-    else:
-        width = origin[0] + fig_w + MARGIN
-        height = origin[1] + fig_h + SCALE_H + info_h + MARGIN
-    width, height = float(fmt(width)), float(fmt(height))
-    dwg = svgwrite.Drawing(size=(f"{fmt(width)}mm", f"{fmt(height)}mm"), viewBox=f"0 0 {fmt(width)} {fmt(height)}",
-                           profile="full", debug=False)
-    dwg.attribs["font-family"] = FONT_FAMILY
+    sheet, lang = page.sheet, page.lang
+    sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu)
+    origin = view.origin
+    fx0, fy0, fx1, fy1 = frame_box(sheet)
+    tb = title_block_box(sheet)
+    moved = not sl.info_here and bool(info or warnings)      # the results head sheet 2
+    skip = sl.info_h if moved else 0.0
+    pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip) if protocol else []
+    n = 1 + max(len(pages), int(moved))
+    block = TitleBlock(title or scene.title, problem or "—", recipe or "—", scale, str(sheet), 1, n, lang)
+
+    dwg = document(sheet)
     dwg.defs.add(dwg.style(CSS))
-    dwg.add(dwg.rect(insert=(0, 0), size=(fmt(width), fmt(height)), fill=PAPER, id="paper"))
-    dwg.add(dwg.text(title or scene.title, insert=(fmt(MARGIN), fmt(MARGIN + TITLE_SIZE)), font_size=fmt(TITLE_SIZE),
-                     font_weight="bold", fill=INK, id="title"))
+    dwg.attribs["class"] = "sheet"
+    dwg.add(step_captions_group(dwg, scene, sl.caption, lang, upto))
     dwg.add(_figure_group(dwg, fig))
-    dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig_h + 6.0))
-    if lay:
-        shown = fig.shown
-        dwg.add(render_protocol(dwg, lay, proto_x, origin[1], fig.values, shown, shown if upto is not None else None))
-        if info or warnings:
-            dwg.add(render_info(dwg, info, proto_x, origin[1] + lay.height, text_w, warnings, info_steps, upto))
-    elif info or warnings:
-        dwg.add(render_info(dwg, info, origin[0], origin[1] + fig_h + SCALE_H, text_w, warnings, info_steps, upto))
-    return dwg.tostring()
+    dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
+    if sl.info_here and (info or warnings):
+        dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang))
+    dwg.add(title_block(dwg, sheet, block))
+    out = [dwg.tostring()]
+    shown = fig.shown
+    for number in range(2, n + 1):
+        d = _text_sheet(sheet, replace(block, sheet=number, scale=None))
+        top = fy0 + INSET
+        if moved and number == 2:
+            d.add(render_info(d, info, fx0 + INSET, top - 4.0, sl.info_w, warnings, info_steps, upto, lang))
+            top += skip
+        if number - 2 < len(pages):
+            d.add(render_protocol(d, pages[number - 2], fx0 + INSET, top, fig.values, shown,
+                                  shown if upto is not None else None, lang))
+        out.append(d.tostring())
+    return out
+
+
+def _text_sheet(sheet: Sheet, block: TitleBlock) -> svgwrite.Drawing:
+    d = document(sheet)
+    d.defs.add(d.style(CSS))
+    d.attribs["class"] = "sheet"
+    d.add(title_block(d, sheet, block))
+    return d
+
+
+def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
+               info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
+               info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
+               recipe: str = "") -> str:
+    """Sheet 1 of :func:`render_sheets`: the drawing, its scale bar, results, warnings and title block (the
+    protocol is on the sheets that follow; ``protocol`` only changes the sheet count in the title block)."""
+    return render_sheets(scene, upto=upto, viewbox=viewbox, title=title, info=info, protocol=protocol,
+                         warnings=warnings, info_steps=info_steps, page=page, problem=problem, recipe=recipe)[0]
 
 
 def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
@@ -132,21 +297,23 @@ def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
     return root
 
 
-def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float) -> Any:
-    """A scale bar of a round model length (about 15–35 mm of paper) and the scale μl."""
+def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float, scale: Scale) -> Any:
+    """A scale bar of a round model length (about 15–35 mm of paper), the scale and μl: true on paper when
+    the sheet is printed at 100 %."""
     mu = fig.view.mu
     length = max(nice_values(15.0 * mu, 35.0 * mu), default=20.0 * mu)
     L = length / mu
     g = dwg.g(id="scale", stroke=INK, stroke_width="0.3")
+    g.attribs["data-length-mm"] = fmt(L)
     g.add(dwg.path(d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
                      f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
-                   fill="none"))
+                   fill="none", id="scale-bar"))
     size = fmt(INFO_SIZE)
-    g.add(dwg.text("0", insert=(fmt(x), fmt(y + 4.0)), font_size=size, text_anchor="middle", stroke="none", fill=INK))
-    g.add(dwg.text(f"{length:g} mm", insert=(fmt(x + L), fmt(y + 4.0)), font_size=size, text_anchor="middle",
+    g.add(dwg.text("0", insert=(fmt(x), fmt(y + 4.5)), font_size=size, text_anchor="middle", stroke="none", fill=INK))
+    g.add(dwg.text(f"{length:g} mm", insert=(fmt(x + L), fmt(y + 4.5)), font_size=size, text_anchor="middle",
                    stroke="none", fill=INK))
-    g.add(dwg.text(f"μl = {mu:g} mm/mm", insert=(fmt(x + L + 10.0), fmt(y + 1.0)), font_size=size, stroke="none",
-                   fill=INK))
+    g.add(dwg.text(f"{scale}   μl = {mu:g} mm/mm", insert=(fmt(x + L + 10.0), fmt(y + 1.2)), font_size=size,
+                   stroke="none", fill=INK))
     return g
 
 

@@ -1,0 +1,266 @@
+"""The printed sheet: paper size, drawing frame (ISO 5457 margins), title block (ISO 7200-like) and the
+regions of a figure sheet and of the protocol sheets that follow it.
+
+Every sheet is an SVG whose ``width``/``height`` are the paper's in mm and whose user unit is 1 mm of
+paper, so a sheet printed at 100 % puts every length where the drawing scale says: the drawing is drawn at
+a standard scale (:mod:`geomcon.paper`), stated in the title block as ``1:2`` and as μl (model mm per paper
+mm), and both are true on paper.
+
+Sheet 1 holds the drawing, its scale bar, the results and warnings, and the title block; the numbered
+construction protocol flows onto sheets 2, 3 … (``geomcon solve --svg out.svg`` writes ``out.svg``,
+``out-2.svg`` …; the HTML player shows every sheet and prints one per page).
+
+Examples
+--------
+>>> spec = PageSpec("A4", "landscape")
+>>> spec.sheet.width, spec.sheet.height, frame_box(spec.sheet)
+(297.0, 210.0, (20.0, 10.0, 287.0, 200.0))
+>>> PageSpec("A3", "portrait").sheet.area
+(267.0, 400.0)
+>>> text("Results", "结果", "zh"), text("Results", "结果", "both")
+('结果', 'Results  结果')
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+from typing import Any, Literal
+
+import svgwrite
+
+from ..paper import PAPERS, Orientation, Scale, Sheet
+from .labels import text_width
+from .style import FONT_FAMILY, INK
+from .view import Box, fmt
+
+Lang = Literal["en", "zh", "both"]
+LANGS: tuple[str, ...] = ("en", "zh", "both")
+
+TB_W = 180.0            # title block width (ISO 7200: at most 180 mm)
+TB_ROW = 7.0            # height of one title block row
+TB_ROWS = 4
+TB_H = TB_ROW * TB_ROWS
+TB_TEXT = 3.5           # title block text size (ISO 3098 series 2.5, 3.5, 5, 7)
+TB_TITLE = 5.0
+FRAME_WIDTH = 0.7       # the drawing frame's line
+INSET = 4.0             # free paper between the frame and what is drawn inside it
+MIN_TEXT = 2.5          # the smallest text on paper (ISO 3098), mm
+
+
+@dataclass(frozen=True)
+class PageSpec:
+    """The paper a figure is printed on (:data:`geomcon.paper.PAPERS` name and orientation) and the language
+    of its texts (``en``, ``zh`` or ``both``).
+
+    >>> PageSpec().sheet
+    Sheet(paper='A4', orientation='landscape', width=297.0, height=210.0, margin_left=20.0, margin_right=10.0, margin_top=10.0, margin_bottom=10.0)
+    """
+
+    paper: str = "A4"
+    orientation: Orientation = "landscape"
+    lang: Lang = "both"
+
+    def __post_init__(self) -> None:
+        if self.paper not in PAPERS:
+            raise ValueError(f"paper is one of {', '.join(PAPERS)}, got {self.paper!r}")
+        if self.lang not in LANGS:
+            raise ValueError(f"lang is one of {', '.join(LANGS)}, got {self.lang!r}")
+
+    @property
+    def sheet(self) -> Sheet:
+        """The paper turned as asked, with its margins."""
+        return PAPERS[self.paper].sheet(self.orientation)
+
+
+def text(en: str, zh: str, lang: str) -> str:
+    """A heading in the language asked for (both: English, two spaces, Chinese)."""
+    return en if lang == "en" or not zh else zh if lang == "zh" else f"{en}  {zh}"
+
+
+def _cjk(ch: str) -> bool:
+    o = ord(ch)
+    return 0x2E80 <= o <= 0x9FFF or 0xF900 <= o <= 0xFAFF or 0x3000 <= o <= 0x303F or 0xFF00 <= o <= 0xFFEF
+
+
+_FULL = {",": "，", ";": "；", ":": "：", "(": "（", ")": "）"}
+
+
+def zh_punct(s: str) -> str:
+    """Chinese text with full-width punctuation: a comma, semicolon or colon next to a Chinese character
+    becomes ，；：, brackets around Chinese text （）; a formula keeps its ASCII signs.
+
+    >>> zh_punct("在机架线上取 D,使 AD = 90")
+    '在机架线上取 D，使 AD = 90'
+    >>> zh_punct("交摇杆圆于 C1(位于直线 AD 上方的交点); K = (180° + θ)/(180° − θ)")
+    '交摇杆圆于 C1（位于直线 AD 上方的交点）；K = (180° + θ)/(180° − θ)'
+    """
+    out = list(s)
+    stack: list[int] = []
+    for i, ch in enumerate(s):
+        if ch == "(":
+            stack.append(i)
+        elif ch == ")" and stack:
+            j = stack.pop()
+            if any(_cjk(c) for c in s[j + 1:i]):
+                out[j], out[i] = _FULL["("], _FULL[")"]
+        elif ch in ",;:":
+            before = "".join(out[:i]).rstrip()[-1:]
+            after = s[i + 1:].lstrip()[:1]
+            if (before and _cjk(before)) or (after and _cjk(after)):
+                out[i] = _FULL[ch]
+    text = "".join(out)
+    for full in "，；：":
+        text = text.replace(full + " ", full)
+    return text
+
+
+def frame_box(sheet: Sheet) -> Box:
+    """The drawing frame on paper: (x0, y0, x1, y1), y down."""
+    return (sheet.margin_left, sheet.margin_top, sheet.width - sheet.margin_right, sheet.height - sheet.margin_bottom)
+
+
+def title_block_box(sheet: Sheet) -> Box:
+    """The title block: the frame's bottom-right corner, :data:`TB_W` wide (the frame's width when narrower)."""
+    x0, y0, x1, y1 = frame_box(sheet)
+    return (max(x0, x1 - TB_W), y1 - TB_H, x1, y1)
+
+
+def document(sheet: Sheet) -> svgwrite.Drawing:
+    """An empty sheet: the SVG document (width and height in mm, 1 user unit = 1 mm), the white paper and
+    the drawing frame."""
+    w, h = fmt(sheet.width), fmt(sheet.height)
+    dwg = svgwrite.Drawing(size=(f"{w}mm", f"{h}mm"), viewBox=f"0 0 {w} {h}", profile="full", debug=False)
+    dwg.attribs["font-family"] = FONT_FAMILY
+    dwg.add(dwg.rect(insert=(0, 0), size=(w, h), fill="#ffffff", id="paper"))
+    x0, y0, x1, y1 = frame_box(sheet)
+    dwg.add(dwg.rect(insert=(fmt(x0), fmt(y0)), size=(fmt(x1 - x0), fmt(y1 - y0)), fill="none", stroke=INK,
+                     stroke_width=fmt(FRAME_WIDTH), id="frame"))
+    return dwg
+
+
+@cache
+def version() -> str:
+    """geomcon's version as installed (printed in the title block)."""
+    try:
+        from importlib.metadata import version as _v
+        return _v("geomcon")
+    except Exception:       # pragma: no cover - a source tree that is not installed
+        return "unknown"
+
+
+@dataclass(frozen=True)
+class TitleBlock:
+    """What the title block states: the title, the problem file, the recipe, the scale (None on a sheet
+    without a drawing), the paper, the sheet number and count. No date: outputs are byte-identical."""
+
+    title: str
+    problem: str
+    recipe: str
+    scale: Scale | None
+    paper: str
+    sheet: int
+    sheets: int
+    lang: str = "both"
+
+
+def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
+    """The title block group: four rows — title; problem file and recipe; scale, μl and paper; geomcon's
+    version and the sheet number."""
+    x0, y0, x1, y1 = title_block_box(sheet)
+    g = dwg.g(id="title-block", stroke=INK, fill="none")
+    g.add(dwg.rect(insert=(fmt(x0), fmt(y0)), size=(fmt(x1 - x0), fmt(y1 - y0)), stroke_width="0.5"))
+    for r in range(1, TB_ROWS):
+        y = y0 + r * TB_ROW
+        g.add(dwg.line((fmt(x0), fmt(y)), (fmt(x1), fmt(y)), stroke_width="0.25"))
+    w = x1 - x0
+    lang = tb.lang
+    if tb.scale is not None:
+        mu = tb.scale.real / tb.scale.paper
+        scale = [f"{text('Scale', '比例', lang)} {tb.scale}", f"μl = {mu:g} mm/mm"]
+    else:
+        scale = [text("Scale", "比例", lang) + " —", ""]
+    rows = [[tb.title],
+            [f"{text('Problem', '题目', lang)} {tb.problem}", f"{text('Recipe', '作图法', lang)} {tb.recipe}"],
+            scale + [f"{text('Paper', '图幅', lang)} {tb.paper}"],
+            [f"geomcon {version()}", f"{text('Sheet', '第', lang)} {tb.sheet}/{tb.sheets}"
+             + ("" if lang == "en" else " 张")]]
+    for r, cells in enumerate(rows):
+        cw = w / len(cells)
+        for c, cell in enumerate(cells):
+            if not cell:
+                continue
+            if c:
+                g.add(dwg.line((fmt(x0 + c * cw), fmt(y0 + r * TB_ROW)), (fmt(x0 + c * cw), fmt(y0 + (r + 1) * TB_ROW)),
+                               stroke_width="0.25"))
+            size = TB_TITLE if r == 0 else TB_TEXT
+            cell = fitted(cell, cw - 3.0, size, 1.12 if r == 0 else 1.0)
+            size = fit_size(cell, (cw - 3.0) / (1.12 if r == 0 else 1.0), size)
+            t = dwg.text(cell, insert=(fmt(x0 + c * cw + 1.5), fmt(y0 + r * TB_ROW + TB_ROW / 2 + 0.36 * size)),
+                         font_size=fmt(size), fill=INK, stroke="none", class_=f"tb tb-{r}-{c}")
+            if r == 0:
+                t.attribs["font-weight"] = "bold"
+            g.add(t)
+    return g
+
+
+def fit_size(s: str, width: float, size: float) -> float:
+    """``size``, or smaller down to :data:`MIN_TEXT`, so that ``s`` fits ``width`` paper mm.
+
+    >>> fit_size("short", 100.0, 5.0), fit_size("a much longer text than fits", 30.0, 5.0)
+    (5.0, 2.5)
+    """
+    need = text_width(s, size)
+    if need <= width:
+        return size
+    return max(MIN_TEXT, round(size * width / need, 2))
+
+
+def fitted(s: str, width: float, size: float, weight: float = 1.0) -> str:
+    """``s``, cut short with … when even at :data:`MIN_TEXT` it is wider than ``width`` (``weight``: how much
+    wider the font is than the regular estimate, e.g. bold).
+
+    >>> fitted("abc", 100.0, 5.0), fitted("x" * 200, 50.0, 5.0).endswith("…")
+    ('abc', True)
+    """
+    if text_width(s, MIN_TEXT) * weight <= width:
+        return s
+    while s and text_width(s + "…", MIN_TEXT) * weight > width:
+        s = s[:-1]
+    return s.rstrip() + "…"
+
+
+def sheet_names(path: str, n: int) -> list[str]:
+    """The file names of ``n`` sheets written for ``path``: the path itself, then ``<stem>-2<suffix>`` …
+
+    >>> sheet_names("out/fig.svg", 3)
+    ['out/fig.svg', 'out/fig-2.svg', 'out/fig-3.svg']
+    """
+    from pathlib import PurePath
+    p = PurePath(path)
+    return [str(p)] + [str(p.with_name(f"{p.stem}-{i}{p.suffix}")) for i in range(2, n + 1)]
+
+
+def print_css(spec: PageSpec) -> str:
+    """CSS that prints every sheet (``svg.sheet``) on a page of its own at 100 %: ``@page`` of the sheet's
+    size, no printer margins (the sheet carries its own). A sheet's box is cut 1 mm short (blank paper below
+    the frame), so that a browser's page, rounded to whole points, never spills a sliver onto a blank page."""
+    sh = spec.sheet
+    return (f"@page {{ size: {spec.paper} {spec.orientation}; margin: 0; }}\n"
+            "@media print {\n"
+            "  body { margin: 0; background: #fff; }\n"
+            "  #bar, #caption { display: none; }\n"
+            "  #drawing { border: 0; overflow: visible; }\n"
+            f"  #drawing svg.sheet {{ width: {fmt(sh.width)}mm; height: {fmt(sh.height)}mm; margin: 0; }}\n"
+            f"  .page {{ height: {fmt(sh.height - 1.0)}mm; overflow: hidden; border: 0 !important; "
+            "break-after: page; page-break-after: always; break-inside: avoid; page-break-inside: avoid; }\n"
+            "  .page:last-child { break-after: auto; page-break-after: auto; }\n"
+            "}\n")
+
+
+def centred(size: tuple[float, float], area: Box) -> tuple[float, float]:
+    """Top-left corner of a box of ``size`` centred in ``area``."""
+    return (area[0] + (area[2] - area[0] - size[0]) / 2, area[1] + (area[3] - area[1] - size[1]) / 2)
+
+
+__all__ = ["LANGS", "Lang", "MIN_TEXT", "PageSpec", "TitleBlock", "centred", "document", "fit_size", "frame_box",
+           "print_css", "sheet_names", "text", "title_block", "title_block_box", "version", "zh_punct"]

@@ -1,0 +1,235 @@
+"""Results as a textbook prints them: one table from an answer's name to its symbol, its English and Chinese
+words and its unit, and the result lines of a drawing built from it.
+
+A number reads ``θ = 12.506°``, a yes/no answer ``C1 folded: yes``; the remark in brackets says what agreed
+with what (``= analytic``: the construction equals the independent analytic twin) and how the printed answer
+of the textbook deviates. Chinese text uses full-width punctuation (，：；（）).
+
+Examples
+--------
+>>> result_line("theta", 12.50559, "deg", twin=True, lang="en")
+'θ = 12.506° (= analytic)'
+>>> result_line("theta", 12.50559, "deg", twin=True, lang="zh")
+'极位夹角 θ = 12.506°（与解析解一致）'
+>>> result_line("C1_folded", True, "", twin=True, lang="en")
+'C1 folded: yes (= analytic)'
+>>> result_line("branch_ok", False, "bool", twin=True, lang="both")
+'one assembly branch: no (= analytic)  在同一装配分支上：否'
+>>> result_line("gamma_min", 40.1, "deg", twin=False, lang="en")
+'γmin = 40.100° (≠ analytic)'
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+
+@dataclass(frozen=True)
+class AnswerName:
+    """How a result is printed: ``symbol`` (a number: ``symbol = value unit``; empty for a yes/no answer),
+    ``en`` and ``zh`` words (a yes/no answer: the statement it answers)."""
+
+    symbol: str
+    en: str
+    zh: str
+
+
+def _n(symbol: str, en: str, zh: str) -> AnswerName:
+    return AnswerName(symbol, en, zh)
+
+
+def _b(en: str, zh: str) -> AnswerName:
+    return AnswerName("", en, zh)
+
+
+NAMES: dict[str, AnswerName] = {
+    # cams
+    "r0": _n("r0", "base circle radius", "基圆半径"),
+    "e": _n("e", "offset", "偏距"),
+    "s0": _n("s0", "height of B0 above O", "B0 高于 O"),
+    "rho_min_pitch": _n("ρmin", "pitch curve, least radius of curvature", "理论廓线最小曲率半径"),
+    "rr_max": _n("rr,max", "largest roller radius", "滚子半径上限"),
+    "a": _n("a", "centre distance OA0", "中心距"),
+    "psi0": _n("ψ0", "initial angle of the arm", "摆杆初始角"),
+    "r0_actual": _n("r0′", "base circle of the actual profile", "实际廓线基圆半径"),
+    "h": _n("h", "stroke", "行程"),
+    "psi_max": _n("ψmax", "angular stroke", "最大摆角"),
+    "rise_angle": _n("δ0", "rise angle", "推程运动角"),
+    "return_angle": _n("δ0′", "return angle", "回程运动角"),
+    "alpha_max_rise": _n("αmax", "rise, largest pressure angle", "推程最大压力角"),
+    "delta_alpha_max_rise": _n("δ(αmax)", "rise, cam angle of αmax", "推程 αmax 处凸轮转角"),
+    "alpha_min_rise": _n("αmin", "rise, smallest pressure angle", "推程最小压力角"),
+    "alpha_max_return": _n("α′max", "return, largest pressure angle", "回程最大压力角"),
+    "delta_alpha_max_return": _n("δ(α′max)", "return, cam angle of α′max", "回程 α′max 处凸轮转角"),
+    "alpha_max": _n("αmax", "largest pressure angle", "最大压力角"),
+    "offset_correct": _b("offset on the correct side", "偏置方位正确"),
+    "delta": _n("δ", "cam angle", "凸轮转角"),
+    "s": _n("s", "displacement", "位移"),
+    "psi": _n("ψ", "swing of the arm", "摆角"),
+    "alpha": _n("α", "pressure angle", "压力角"),
+    "v": _n("v", "follower velocity", "从动件速度"),
+    "rho_min_actual": _n("ρa,min", "actual profile, least radius of curvature", "实际廓线最小曲率半径"),
+    "undercut": _b("undercut (motion distorted)", "运动失真（根切）"),
+    "pitch_x": _n("x", "pitch points", "理论廓线点"),
+    "pitch_y": _n("y", "pitch points", "理论廓线点"),
+    "profile_x": _n("x", "profile points", "实际廓线点"),
+    "profile_y": _n("y", "profile points", "实际廓线点"),
+    "convex": _b("profile convex", "廓线外凸"),
+    "face_min": _n("lmin", "contact along the face, nearest", "接触点最近位置"),
+    "face_max": _n("lmax", "contact along the face, farthest", "接触点最远位置"),
+    "face_length": _n("l", "face length swept", "平底工作长度"),
+    "face_contact": _n("l", "contact along the face", "接触点位置"),
+    "face_width_left": _n("lL", "face width left of the axis", "平底左侧宽度"),
+    "face_width_right": _n("lR", "face width right of the axis", "平底右侧宽度"),
+    "face_width": _n("L", "face width", "平底宽度"),
+    # linkages
+    "AB": _n("AB", "crank", "曲柄"),
+    "BC": _n("BC", "coupler", "连杆"),
+    "AD": _n("AD", "frame", "机架"),
+    "CD": _n("CD", "rocker", "摇杆"),
+    "AC": _n("AC", "frame", "机架"),
+    "gamma_min": _n("γmin", "smallest transmission angle", "最小传动角"),
+    "theta": _n("θ", "crank angle between extreme positions", "极位夹角"),
+    "K": _n("K", "time-ratio coefficient", "行程速比系数"),
+    "C1_folded": _b("C1 folded", "C1 为重叠共线位置"),
+    "A_near": _b("A on D's side of C1C2", "A 与 D 在 C1C2 同侧"),
+    "DE": _n("DE", "output arm", "输出摆杆"),
+    "gamma_1": _n("γ1", "transmission angle, crank along AD", "曲柄与 AD 重合时的传动角"),
+    "gamma_2": _n("γ2", "transmission angle, crank along DA extended", "曲柄与 DA 延长线重合时的传动角"),
+    "angle_C1AD": _n("∠C1AD", "folded extreme position", "重叠共线极限位置"),
+    "angle_C2AD": _n("∠C2AD", "extended extreme position", "拉直共线极限位置"),
+    "gamma_w_min": _n("γw,min", "working stroke, smallest transmission angle", "工作行程最小传动角"),
+    "AC1": _n("AC1", "A to the folded extreme position", "A 至重叠共线位置"),
+    "AC2": _n("AC2", "A to the extended extreme position", "A 至拉直共线位置"),
+    "H": _n("H", "stroke C1C2", "行程"),
+    "gamma_min_fast": _n("γmin", "fast stroke, smallest transmission angle", "空回行程最小传动角"),
+    "gamma_min_slow": _n("γmin", "slow stroke, smallest transmission angle", "工作行程最小传动角"),
+    "C1": _n("C1", "hinge position 1", "铰链位置 1"),
+    "beta": _n("β", "angle of DC from DE", "DC 与 DE 的夹角"),
+    "grashof": _b("Grashof condition met", "满足杆长条件"),
+    "crank": _b("AB is a crank", "AB 为曲柄"),
+    "branch_ok": _b("one assembly branch", "在同一装配分支上"),
+    "order_ok": _b("positions reached in order", "按顺序到达各位置"),
+    "sens_C1": _n("ΔC1", "per 0.1° of error", "每 0.1° 误差的偏移"),
+    "sens_C1_mm": _n("ΔC1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "A": _n("A", "fixed pivot", "固定铰链"),
+    "D": _n("D", "fixed pivot", "固定铰链"),
+    "grashof_margin": _n("(p + q) − (s + l)", "Grashof margin", "杆长条件余量"),
+    "output_crank": _b("CD turns fully", "CD 能整周转动"),
+    "gamma_min_work": _n("γmin", "working range, smallest transmission angle", "工作范围最小传动角"),
+    "phi": _n("φ1,2,3", "directions of AB", "AB 的方向角"),
+    "sens_A": _n("ΔA", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "sens_D": _n("ΔD", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "sens_C": _n("ΔC1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "F1": _n("F1", "hinge position 1", "铰链位置 1"),
+    "DF": _n("DF", "rocker arm", "摇杆"),
+    "EF": _n("EF", "connecting rod", "连杆"),
+    "sens_F1": _n("ΔF1", "per 0.1° of error", "每 0.1° 误差的偏移"),
+    "sens_F1_mm": _n("ΔF1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "E1": _n("E1", "pin position 1", "销位置 1"),
+    "s_E1": _n("sE1", "pin along the guide", "销沿导路的位置"),
+    "sens_E1": _n("ΔE1", "per 0.1° of error", "每 0.1° 误差的偏移"),
+    "sens_E1_mm": _n("ΔE1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "deviation": _n("f", "largest distance of D from the guide", "D 偏离导路的最大距离"),
+    # kinematics (velocity and acceleration polygons)
+    "omega2": _n("ω2", "angular velocity of BC", "连杆角速度"),
+    "epsilon2": _n("ε2", "angular acceleration of BC", "连杆角加速度"),
+    "omega3": _n("ω3", "angular velocity of CD", "摇杆角速度"),
+    "epsilon3": _n("ε3", "angular acceleration of CD", "摇杆角加速度"),
+    "vC": _n("vC", "velocity of C", "C 点速度"),
+    "aC": _n("aC", "acceleration of C", "C 点加速度"),
+    "vE": _n("vE", "velocity of E", "E 点速度"),
+    "aE": _n("aE", "acceleration of E", "E 点加速度"),
+    "mu_v": _n("μv", "velocity polygon scale", "速度比例尺"),
+    "mu_a": _n("μa", "acceleration polygon scale", "加速度比例尺"),
+    "v_slip": _n("vB2B3", "velocity of B2 along the guide", "B2 相对导杆的速度"),
+    "a_slip": _n("arB2B3", "relative acceleration of B2 along the guide", "B2 相对导杆的加速度"),
+    "a_coriolis": _n("akB2B3", "Coriolis acceleration", "科氏加速度"),
+    # instant centres
+    "P13": _n("P13", "instant centre of crank and rocker", "曲柄与摇杆的瞬心"),
+    "P24": _n("P24", "instant centre of coupler and frame", "连杆与机架的瞬心"),
+    "w3_w1": _n("ω3/ω1", "from P13", "由 P13 求得"),
+    "w2_w1": _n("ω2/ω1", "from P24", "由 P24 求得"),
+    "i13": _n("i13", "transmission ratio ω1/ω3", "传动比 ω1/ω3"),
+    "vC_w1": _n("vC/ω1", "slider velocity per unit crank speed", "滑块速度与曲柄角速度之比"),
+}
+"""Every answer's printed name. An answer missing here prints its name with ``_`` as a space."""
+
+UNITS = {"deg": "°", "": "", "bool": "", "point": "", "choice": "", "table": ""}
+"""How a unit follows a number (any other unit: a space and the unit as the recipe names it, e.g. ``rad/s²``)."""
+
+
+def unit_text(unit: str) -> str:
+    """The unit as printed after a number.
+
+    >>> unit_text("deg"), unit_text("mm[]"), unit_text("rad/s²"), unit_text("")
+    ('°', ' mm', ' rad/s²', '')
+    """
+    u = unit.removesuffix("[]")
+    return UNITS[u] if u in UNITS else f" {u}"
+
+
+def name_of(answer: str) -> AnswerName:
+    """The printed name of ``answer`` (a fallback for a name not in :data:`NAMES`).
+
+    >>> name_of("theta").symbol, name_of("new_answer").symbol
+    ('θ', 'new answer')
+    """
+    return NAMES.get(answer) or AnswerName(answer.replace("_", " "), "", "")
+
+
+def _number(v: float, unit: str) -> str:
+    return f"{v:.3f}{unit_text(unit)}"
+
+
+def shown_value(v: Any, unit: str, lang: str = "en") -> str:
+    """A value as printed: 3 decimals and its unit, a list in brackets, a yes/no answer as a word.
+
+    >>> shown_value((1.0, 2.5), "mm[]"), shown_value(True, "bool", "zh"), shown_value(1.0, "")
+    ('[1.000, 2.500] mm', '是', '1.000')
+    """
+    if isinstance(v, bool):
+        return ("是" if v else "否") if lang == "zh" else ("yes" if v else "no")
+    if isinstance(v, (tuple, list)):
+        return "[" + ", ".join(f"{x:.3f}" for x in v) + "]" + unit_text(unit)
+    return _number(float(v), unit)
+
+
+def _remarks(twin: bool | None, printed: Sequence[str], lang: str) -> str:
+    parts = []
+    if twin is not None:
+        parts.append(("与解析解一致" if twin else "与解析解不符") if lang == "zh" else
+                     ("= analytic" if twin else "≠ analytic"))
+    if printed:
+        parts.append(("教材 " if lang == "zh" else "textbook ") + ("，" if lang == "zh" else ", ").join(printed))
+    if not parts:
+        return ""
+    return f"（{'；'.join(parts)}）" if lang == "zh" else f" ({'; '.join(parts)})"
+
+
+def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None, printed: Sequence[str] = (),
+                lang: str = "en") -> str:
+    """One result line of a drawing: the answer by its symbol (a number) or as a statement (yes/no), its value,
+    what agreed with what (``twin``: the construction against the analytic twin) and the textbook's printed
+    values with their deviation (``printed``, already worded).
+
+    ``lang`` is ``en``, ``zh`` or ``both`` (the English line, then the Chinese words).
+    """
+    nm = name_of(answer)
+    is_bool = isinstance(value, bool) or unit == "bool" or (not nm.symbol and unit == "")
+    if is_bool:
+        value = bool(value)
+    if lang == "both":
+        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en")
+        if not nm.zh:
+            return en
+        return f"{en}  {nm.zh}：{shown_value(value, unit, 'zh')}" if is_bool else f"{en}  {nm.zh}"
+    shown = shown_value(value, unit, lang)
+    if lang == "zh":
+        head = f"{nm.zh or nm.en}：{shown}" if is_bool else f"{nm.zh + ' ' if nm.zh else ''}{nm.symbol} = {shown}"
+    else:
+        head = f"{nm.en or nm.symbol}: {shown}" if is_bool else f"{nm.symbol} = {shown}"
+    return head + _remarks(twin, printed, lang)
+
+
+__all__ = ["AnswerName", "NAMES", "name_of", "result_line", "shown_value", "unit_text"]
