@@ -134,8 +134,8 @@ NAMES: dict[str, AnswerName] = {
     # kinematics (velocity and acceleration polygons)
     "omega2": _n("ω2", "angular velocity of BC", "连杆角速度"),
     "epsilon2": _n("ε2", "angular acceleration of BC", "连杆角加速度"),
-    "omega3": _n("ω3", "angular velocity of CD", "摇杆角速度"),
-    "epsilon3": _n("ε3", "angular acceleration of CD", "摇杆角加速度"),
+    "omega3": _n("ω3", "angular velocity of link 3 (rocker or guide)", "构件 3(摇杆或导杆)的角速度"),
+    "epsilon3": _n("ε3", "angular acceleration of link 3 (rocker or guide)", "构件 3(摇杆或导杆)的角加速度"),
     "vC": _n("vC", "velocity of C", "C 点速度"),
     "aC": _n("aC", "acceleration of C", "C 点加速度"),
     "vE": _n("vE", "velocity of E", "E 点速度"),
