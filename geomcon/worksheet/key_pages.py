@@ -41,7 +41,9 @@ def decimals(tol: float) -> int:
 
 
 def shown(value: float, tol: float) -> str:
-    """An answer as the key page shows it: the value to the tolerance's last digit, ± the tolerance."""
+    """An answer as the key page shows it: the value to the last digit of the tolerance (at key.json's 2
+    significant digits), ± that tolerance."""
+    tol = float(f"{tol:.2g}")
     d = decimals(tol)
     return f"{value:.{d}f} ± {tol:.{d}f}"
 

@@ -10,7 +10,7 @@ integer in hundredths of a millimetre.
 
 Page names (:func:`page_name`) are ``<id>-<n>`` (n the exercise's number) when the student's id is made of
 lower-case letters, digits, ``_`` and ``-`` only; any other id (upper case, a path separator, CJK …) is written
-as its safe characters, lower-cased, a dot (which no plain id holds) and 8 hexadecimal digits of its SHA-256:
+as its safe characters lower-cased (or ``id`` when none is left), a dot (which no plain id holds) and 8 hexadecimal digits of its SHA-256:
 a name depends on the id alone (adding a student renames no one's file) and cannot leave the output folder or
 clash by case. A cam whose figure leaves its s–δ axes no room on the page gets a second page, ``<name>-sd``.
 
@@ -62,7 +62,7 @@ def page_name(student_id: str, n: int) -> str:
         return f"{student_id}-{n}"
     safe = re.sub(r"[^a-z0-9_-]+", "", student_id.lower())[:40]
     digest = hashlib.sha256(student_id.encode("utf-8")).hexdigest()[:8]
-    return f"{safe}.{digest}-{n}"
+    return f"{safe or 'id'}.{digest}-{n}"
 
 
 @dataclass(frozen=True)
