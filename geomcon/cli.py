@@ -174,7 +174,7 @@ def cmd_gallery(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(_current_file(exc, problems), str(exc))
     write_all({out / name: text for name, text in files.items()})
-    for stale in sorted(p for p in out.glob("*") if p.is_file() and p.name not in files):
+    for stale in sorted(p for p in out.rglob("*") if p.is_file() and p.relative_to(out).as_posix() not in files):
         stale.unlink()
     print(f"wrote {len(files)} files to {out}/ from {len(problem_files(problems))} problems")
     return 0

@@ -5,7 +5,8 @@ The givens are the scene's visible steps of role *given* (a design by K's D, C1,
 positions DC1, DC2; an extremes problem's frame A, D, AD; a cam's centre O, base circle and the follower's
 start B0), except a cam's s–δ diagram (the sheet draws its axes at a scale of their own), plus the circles
 :data:`GIVEN_CIRCLES` names (the extremes problem's crank circle about A and the rocker's path about D: where
-B and C move). Nothing the student is asked to find is drawn.
+B and C move; an offset translating cam's offset circle, radius e, which the inversion method turns the
+follower's axis along). Nothing the student is asked to find is drawn.
 
 Labels are placed on paper (mm, y down) greedily in the order of the points: of 16 directions around each
 point, the first whose text box overlaps no other label, no point's dot and no drawn line (a line may be
@@ -39,6 +40,7 @@ XY = tuple[float, float]
 
 GIVEN_CIRCLES: dict[str, tuple[tuple[str, str], ...]] = {
     "crank_rocker.extremes": (("A", "AB"), ("D", "CD")),
+    "cam.translating": (("O", "e"),),
 }
 """Per recipe, circles (centre point step, radius given) drawn as givens."""
 

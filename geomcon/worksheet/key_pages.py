@@ -25,7 +25,7 @@ from ..render.style import CSS
 from .accept import FIGURE_MARGIN
 from .overlay import constructed_points, position_tolerances
 from .pages import u
-from .sheets import U, Page, page_drawing, svg_text, answer_boxes, frame, header, pages_html
+from .sheets import U, Page, answer_boxes, frame, header, page_drawing, pages_html
 
 OVERLAY = "#d0021b"
 """Colour of the tolerance circles."""
@@ -69,18 +69,16 @@ def figure_group(dwg: svgwrite.Drawing, p: Page) -> Any:
 
 
 def overlay_group(dwg: svgwrite.Drawing, p: Page) -> Any:
-    """A tolerance circle and the name of each point the student constructs."""
+    """A tolerance circle around each point the student constructs (the figure beneath names the points)."""
     radii = position_tolerances(p.sol, p.variant.given, p.lay.scale.factor)
     g = dwg.g(id="overlay", fill="none", stroke=OVERLAY)
     for name, (x, y) in constructed_points(p.sol).items():
         cx, cy = p.lay.to_paper(x, y)
         if not (p.lay.fig[0] <= cx <= p.lay.fig[2] and p.lay.fig[1] <= cy <= p.lay.fig[3]):
             continue                              # another solution's point, outside the sheet's figure
-        g.add(dwg.circle((u(cx), u(cy)), u(radii[name]), stroke_width=u(0.25)))
-        t = svg_text(dwg, name, cx + radii[name] + 0.5, cy - radii[name], 2.5)
-        t.attribs["fill"] = OVERLAY
-        t.attribs["stroke"] = "none"
-        g.add(t)
+        circle = dwg.circle((u(cx), u(cy)), u(radii[name]), stroke_width=u(0.25))
+        circle.attribs["data-point"] = name
+        g.add(circle)
     return g
 
 
