@@ -32,6 +32,7 @@ from typing import Callable, Sequence
 
 from ..geometry.primitives import Circle, Point, Polyline, Segment
 from ..render.labels import text_width
+from ..render.view import clip_interval
 from ..scene import Role
 from ..solve import Solution
 from .readability import DIAGRAM_PREFIX
@@ -123,19 +124,8 @@ def _overlap(a: tuple[float, float, float, float], b: tuple[float, float, float,
 
 
 def _hits_segment(box: tuple[float, float, float, float], p: XY, q: XY) -> bool:
-    """Whether segment pq meets the box (Liang–Barsky)."""
-    t0, t1 = 0.0, 1.0
-    d = (q[0] - p[0], q[1] - p[1])
-    for k, (lo, hi) in enumerate(((box[0], box[2]), (box[1], box[3]))):
-        if d[k] == 0.0:
-            if not lo <= p[k] <= hi:
-                return False
-            continue
-        a, b = (lo - p[k]) / d[k], (hi - p[k]) / d[k]
-        t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
-        if t0 > t1:
-            return False
-    return True
+    """Whether segment pq crosses the box (:func:`geomcon.render.view.clip_interval`)."""
+    return clip_interval(p, (q[0] - p[0], q[1] - p[1]), box, 0.0, 1.0) is not None
 
 
 def _hits_circle(box: tuple[float, float, float, float], c: XY, r: float) -> bool:
