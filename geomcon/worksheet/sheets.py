@@ -23,14 +23,12 @@ from __future__ import annotations
 
 import hashlib
 import html
-import math
 import re
 from dataclasses import dataclass, replace
 from typing import Any, Sequence
 
 import svgwrite
 
-from ..paper import Scale
 from ..render.labels import label_runs, text_width
 from ..solve import Solution
 from .accept import Accepted
