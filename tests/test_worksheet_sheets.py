@@ -193,3 +193,19 @@ AC = 290
     w = make_worksheet(spec, [Student("<x>", "A & <B>")], lang="en")
     html = w.files["sheets.html"]
     assert "<x>" not in html and "<B>" not in html and "&lt;B&gt;" in html and "<b>&" not in html
+
+
+def test_crowded_labels_are_found_and_free_ones_placed_clear():
+    from geomcon.worksheet.givens_figure import Item, given_gap
+
+    crowd = [Item("point", ((2.0 * math.cos(2 * math.pi * k / 7), 2.0 * math.sin(2 * math.pi * k / 7)),), label=f"C{k}")
+             for k in range(7)]
+    placed, bad = place_labels(crowd, lambda x, y: (x, -y))
+    assert bad and len(placed) == 7
+    assert given_gap(crowd)[2] == pytest.approx(2 * 2.0 * math.sin(math.pi / 7), rel=1e-9)
+    apart = [Item("point", ((0.0, 0.0),), label="A"), Item("point", ((30.0, 0.0),), label="D"),
+             Item("segment", ((0.0, 0.0), (30.0, 0.0)))]
+    placed, bad = place_labels(apart, lambda x, y: (x, -y))
+    assert bad == []
+    for p in placed:                   # clear of the frame line AD and of both dots
+        assert p.box[3] <= 0.0 - 0.8 or p.box[1] >= 0.8
