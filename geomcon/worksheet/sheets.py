@@ -229,14 +229,12 @@ def diagram_axes(dwg: svgwrite.Drawing, p: Page) -> Any | None:
     if p.part != "sd":                     # in the strip beside the figure: keep clear of it
         y0 = max(y0, p.lay.fig[3] if x0 < p.lay.fig[2] - 1e-9 else y0)
     g = dwg.g(id="sd-axes", fill="none", stroke=INK)
-    ox, oy = x0 + 12, y1 - 9
-    length = min(x1 - 12 - ox, 180.0)
     given = p.sol.problem.given
-    h = float(given["h"]) * p.lay.scale.factor
     unit = "°" if p.sol.recipe.name == "cam.oscillating" else "mm"
-    if unit == "°":
-        h = 30.0
-    h = min(h, oy - y0 - 9)
+    h = 30.0 if unit == "°" else float(given["h"]) * p.lay.scale.factor
+    h = min(h, y1 - y0 - 18)
+    ox, oy = x0 + 12, min(y1 - 9, (y0 + y1) / 2 + (h + 6) / 2)      # centred in the strip
+    length = min(x1 - 12 - ox, 180.0)
     g.add(dwg.path(d=_path([(ox, oy), (ox + length + 4, oy)]), stroke_width=u(0.35)))
     g.add(dwg.path(d=_path([(ox, oy), (ox, oy - h - 6)]), stroke_width=u(0.35)))
     total = 0.0
