@@ -209,3 +209,28 @@ def test_crowded_labels_are_found_and_free_ones_placed_clear():
     assert bad == []
     for p in placed:                   # clear of the frame line AD and of both dots
         assert p.box[3] <= 0.0 - 0.8 or p.box[1] >= 0.8
+
+
+def test_a_statement_too_long_for_the_sheet_is_refused_in_one_line(tmp_path):
+    import subprocess
+    import sys
+
+    spec = tmp_path / "long.toml"
+    words = " ".join(["The crank turns slowly."] * 150)
+    spec.write_text(f'''
+title = "Long"
+[[exercise]]
+recipe = "crank_rocker.extremes"
+ask = ["theta"]
+statement = "{words} AB = {{AB}} mm."
+[exercise.given]
+AB = 25
+BC = 85
+CD = 70
+AD = 70
+''', encoding="utf-8")
+    out = tmp_path / "out"
+    r = subprocess.run([sys.executable, "-m", "geomcon", "worksheet", str(spec), "--out", str(out), "--count", "2"],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    assert "exercise 1" in r.stderr and "do not fit" in r.stderr and not out.exists()

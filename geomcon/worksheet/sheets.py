@@ -30,6 +30,7 @@ from typing import Any, Sequence
 import svgwrite
 
 from ..render.labels import label_runs, text_width
+from ..errors import ProblemError
 from ..solve import Solution
 from .accept import Accepted
 from .assign import Assignment
@@ -106,7 +107,13 @@ def langs(lang: str) -> tuple[str, ...]:
 
 
 def make_pages(spec: Spec, a: Assignment, lang: str) -> list[Page]:
-    """Every page of the class, student by student, exercise by exercise."""
+    """Every page of the class, student by student, exercise by exercise.
+
+    Raises
+    ------
+    ProblemError
+        When an exercise's statement and answer boxes leave its figure no room even in the smallest font.
+    """
     out = []
     for s, variants in zip(a.students, a.variants):
         code = variant_code([v.index for v in variants])
@@ -114,7 +121,11 @@ def make_pages(spec: Spec, a: Assignment, lang: str) -> list[Page]:
             sol = solve_given(ex.recipe, v.given)
             box = extent(sol, [r.name for r in ex.ask])
             paragraphs = tuple(statement(ex, v, lg) for lg in langs(lang))
-            lay = layout(v.sheet, v.scale, box, paragraphs, slot_labels(ex, v), diagram=has_diagram(sol))
+            try:
+                lay = layout(v.sheet, v.scale, box, paragraphs, slot_labels(ex, v), diagram=has_diagram(sol))
+            except ValueError as exc:
+                raise ProblemError(f"exercise {ex.n} ({ex.recipe}), student {s.id!r}: {exc} at {v.scale}; "
+                                   "shorten the statement or ask fewer answers") from None
             items = tuple(given_items(sol))
             placed, _ = place_labels(items, lay.to_paper)
             page = Page(page_name(s.id, ex.n), s, code, ex, len(spec.exercises), v, sol, items, tuple(placed),
