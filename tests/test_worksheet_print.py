@@ -1,4 +1,4 @@
-"""``sheets.html`` printed to PDF in headless Chromium (Debian package ``chromium``): one sheet of paper per page
+"""``sheets.html`` (and ``key.html``) printed to PDF in headless Chromium (Debian package ``chromium``): one sheet of paper per page
 (one page per student for a one-exercise spec), A4 at its size, and the true scale measured in the printed
 page (the drawing frame's width, 180 mm on A4 portrait, found in a 254 dpi rendering by ``pdftoppm``). Skipped,
 saying so, where no Chromium is installed (``apt-get install chromium``)."""
@@ -34,10 +34,10 @@ BC = {min = 50, max = 150, step = 5}
 '''
 
 
-def _print(files: dict[str, str], out: Path) -> bytes:
-    page = out / "sheets.html"
-    page.write_text(files["sheets.html"], encoding="utf-8")
-    pdf = out / "sheets.pdf"
+def _print(files: dict[str, str], out: Path, name: str = "sheets") -> bytes:
+    page = out / f"{name}.html"
+    page.write_text(files[f"{name}.html"], encoding="utf-8")
+    pdf = out / f"{name}.pdf"
     run = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-pdf-header-footer",
                           f"--print-to-pdf={pdf}", page.as_uri()], capture_output=True, text=True, timeout=300)
     assert run.returncode == 0 and pdf.is_file(), run.stderr[-500:]
@@ -82,3 +82,6 @@ def test_the_sample_class_prints_every_page(tmp_path):
     sheets = sum(1 for n in w.files if n.startswith("sheets/"))
     assert _pages(pdf) == sheets == w.files["sheets.html"].count('<section class="sheet')
     _a4(pdf)
+    keys = _print(w.files, tmp_path, "key")
+    assert _pages(keys) == sum(1 for n in w.files if n.startswith("key/")) == 9
+    _a4(keys)
