@@ -180,7 +180,7 @@ def cmd_gallery(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(_current_file(exc, problems), str(exc))
     write_all({out / name: text for name, text in files.items()})
-    for stale in sorted(p for p in out.glob("*") if p.is_file() and p.name not in files):
+    for stale in sorted(p for p in out.rglob("*") if p.is_file() and p.relative_to(out).as_posix() not in files):
         stale.unlink()
     print(f"wrote {len(files)} files to {out}/ from {len(problem_files(problems))} problems")
     return 0
@@ -231,8 +231,9 @@ def _limit_memory(gib: float) -> None:
 
 
 def cmd_worksheet(args: argparse.Namespace) -> int:
-    """``geomcon worksheet SPEC.toml --out DIR``: a variant of each exercise per student and the key
-    (``key.json``, ``variants.csv``); the sheets are not drawn yet."""
+    """``geomcon worksheet SPEC.toml --out DIR``: a variant of each exercise per student, the key (``key.json``,
+    ``variants.csv``), the students' sheets (``sheets/``, ``sheets.html``) and the key pages (``key/``,
+    ``key.html``)."""
     from .fileio import check_targets, write_all
     from .worksheet import make_worksheet
     from .worksheet.roster import load_roster, numbered
@@ -259,7 +260,10 @@ def cmd_worksheet(args: argparse.Namespace) -> int:
         return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
     for line in w.summary:
         print(line)
-    print(f"wrote {', '.join(sorted(w.files))} for {len(students)} students to {args.out}/ (sheets are not drawn yet)")
+    pages = sum(1 for name in w.files if name.startswith("sheets/"))
+    keys = sum(1 for name in w.files if name.startswith("key/"))
+    print(f"wrote key.json, variants.csv, sheets.html ({pages} pages in sheets/), key.html ({keys} pages in key/) "
+          f"for {len(students)} students to {args.out}/")
     return 0
 
 
@@ -396,10 +400,10 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--memory-gib", type=float, default=4.0, help="address-space cap of the fuzzing process")
     f.add_argument("--json", action="store_true")
     f.set_defaults(func=cmd_fuzz)
-    w = sub.add_parser("worksheet", help="a class set of randomized exercises from one spec: key.json "
-                       "(the sheets are not drawn yet)")
+    w = sub.add_parser("worksheet", help="a class set of randomized exercises from one spec: the students' "
+                       "sheets, the key pages and key.json")
     w.add_argument("file", metavar="SPEC.toml")
-    w.add_argument("--out", required=True, metavar="DIR", help="where to write key.json and variants.csv")
+    w.add_argument("--out", required=True, metavar="DIR", help="where to write the sheets, the key pages, key.json and variants.csv")
     who = w.add_mutually_exclusive_group(required=True)
     who.add_argument("--students", metavar="CLASS.csv", help="class list: a header with id (and name); "
                      "UTF-8 (± BOM) or GBK/GB18030")

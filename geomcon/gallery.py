@@ -48,9 +48,26 @@ def _deviation(row: dict) -> str:
     return f"{row['quantity']} {row['published']:g} ({how})"
 
 
+WORKSHEET_SPEC = Path("tests") / "data" / "worksheet_class.toml"
+"""The sample worksheet spec the gallery shows (relative to the folder holding ``problems/``)."""
+
+
+def worksheet_gallery(spec_path: Path) -> dict[str, str]:
+    """One student's worksheet of the sample spec and its key: ``worksheet/sheets/…``, ``worksheet/key/…``,
+    ``worksheet/sheets.html``, ``worksheet/key.html`` (the key's answers are in the key pages)."""
+    from .worksheet import make_worksheet
+    from .worksheet.roster import numbered
+    from .worksheet.spec import load_spec
+
+    w = make_worksheet(load_spec(spec_path), numbered(1))
+    return {f"worksheet/{name}": text for name, text in w.files.items()
+            if name.startswith(("sheets", "key/")) or name == "key.html"}
+
+
 def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]:
     """Render every problem: ``{relative file name: text}`` for the JSON, the SVG sheets (``<id>.svg`` the
-    drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index."""
+    drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index; and one worksheet with its key (:func:`worksheet_gallery`) when the sample spec is beside
+    ``problems/``."""
     from .render.page import sheet_names
 
     page = gallery_page(lang)
@@ -82,6 +99,15 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
     files.update(law_diagrams())
     from .grading.example import gallery_files
     files.update(gallery_files())
+    spec = Path(problems_dir).resolve().parent / WORKSHEET_SPEC
+    sheet = worksheet_gallery(spec) if spec.is_file() else {}
+    files.update(sheet)
+    pages = sorted(n for n in sheet if n.startswith("worksheet/sheets/"))
+    worksheet_line = ("A worksheet of `tests/data/worksheet_class.toml` for one student (`geomcon worksheet … --count 1`): "
+                      + ", ".join(f"[{n.split('/')[-1][:-4]}]({n})" for n in pages)
+                      + " — [print-ready](worksheet/sheets.html); its key, to lay over the sheet: "
+                      + ", ".join(f"[{n.split('/')[-1][:-4]}]({n})" for n in sorted(x for x in sheet if x.startswith("worksheet/key/")))
+                      + " — [key.html](worksheet/key.html).") if sheet else ""
     files["README.md"] = "\n".join([
         "# Gallery",
         "",
@@ -104,6 +130,7 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
         "[grading_report.html](grading_report.html), one student's feedback "
         "[grading_feedback_2.txt](grading_feedback_2.txt) and the Moodle bank [grading_bank.xml](grading_bank.xml).",
         "",
+        *([worksheet_line, ""] if worksheet_line else []),
         "| problem | recipe | answers | printed answers (deviation from exact) |",
         "|---|---|---|---|",
         *rows,
@@ -183,6 +210,7 @@ def stale_files(problems_dir: Path, gallery_dir: Path, lang: str | None = None) 
     gallery_dir = Path(gallery_dir)
     out = [name for name, text in want.items()
            if not (gallery_dir / name).is_file() or (gallery_dir / name).read_text(encoding="utf-8") != text]
-    have = {p.name for p in gallery_dir.glob("*") if p.is_file()} if gallery_dir.is_dir() else set()
+    have = ({p.relative_to(gallery_dir).as_posix() for p in gallery_dir.rglob("*") if p.is_file()}
+            if gallery_dir.is_dir() else set())
     out += sorted(f"{name} (not produced any more)" for name in have - set(want))
     return sorted(out)

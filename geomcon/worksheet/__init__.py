@@ -6,7 +6,10 @@ geomcon's own random generator (SHA-256), :mod:`.accept` judges a variant (solve
 or the textbook's choice named, ``[require]`` bounds, twin agreement, fit at a standard scale
 (:mod:`geomcon.paper`), crossing angles and point gaps (:mod:`.readability`), drafting tolerance
 (:mod:`.drafting`)), :mod:`.assign` gives each student a variant, :mod:`.key` writes the key and
-:mod:`.statements` holds the statement templates. The sheets themselves (SVG/HTML pages) are not drawn yet.
+:mod:`.statements` holds the statement templates. The pages: :mod:`.pages` lays a page out, :mod:`.givens_figure`
+draws the givens to scale and places their labels, :mod:`.sheets` writes the students' sheets
+(``sheets/<page>.svg``, ``sheets.html``), :mod:`.overlay` the positional tolerances and :mod:`.key_pages` the key
+pages (``key/<page>.svg``, ``key.html``).
 
 Examples
 --------
@@ -23,7 +26,7 @@ Examples
 ... ''')
 >>> w = make_worksheet(spec, numbered(2))
 >>> sorted(w.files), w.summary[0][:40]
-(['key.json', 'variants.csv'], 'exercise 1 (guide_bar.extremes): 2 of 2 ')
+(['key.html', 'key.json', 'key/1-1.svg', 'key/2-1.svg', 'sheets.html', 'sheets/1-1.svg', 'sheets/2-1.svg', 'variants.csv'], 'exercise 1 (guide_bar.extremes): 2 of 2 ')
 """
 from __future__ import annotations
 
@@ -34,6 +37,8 @@ from ..paper import PAPERS
 from .assign import Assignment, assign
 from .key import key_json, variants_csv
 from .roster import Student
+from .key_pages import key_files
+from .sheets import make_pages, sheet_files
 from .spec import Spec
 
 LANGS = ("zh", "en", "both")
@@ -50,7 +55,8 @@ class Worksheet:
 
 def make_worksheet(spec: Spec, students: Sequence[Student], *, paper: str = "A4", lang: str = "both",
                    seed: int | str | None = None) -> Worksheet:
-    """Assign every student a variant of every exercise and write the key (``key.json``, ``variants.csv``).
+    """Assign every student a variant of every exercise and write the key (``key.json``, ``variants.csv``), the
+    students' sheets (``sheets/<page>.svg``, ``sheets.html``) and the key pages (``key/<page>.svg``, ``key.html``).
 
     Raises
     ------
@@ -64,6 +70,9 @@ def make_worksheet(spec: Spec, students: Sequence[Student], *, paper: str = "A4"
     a = assign(spec, students, PAPERS[paper], seed)
     files = {"key.json": key_json(spec, a, paper=paper, lang=lang, seed=seed),
              "variants.csv": variants_csv(spec, a)}
+    pages = make_pages(spec, a, lang)
+    files.update(sheet_files(pages, spec.title, lang))
+    files.update(key_files(pages, spec.title, lang))
     return Worksheet(files, tuple(st.line() for st in a.stats), a)
 
 

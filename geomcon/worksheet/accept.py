@@ -13,7 +13,10 @@ A variant is judged by these checks, cheapest first; the first that fails is its
 ``borderline``         the construction warns (Grashof equality, a rod perpendicular to its guide …);
 ``fit``                the construction does not fit the sheet at a standard scale (or at the spec's ``scale``);
 ``crossing``           an intersection the student constructs crosses at less than 20°;
-``crowded``            two labelled points lie closer than 4 mm on paper;
+``crowded``            two labelled points (of the construction, or of the givens the sheet draws) lie closer
+                       than 4 mm on paper;
+``labels``             a label of the student's sheet can only be placed over another label or a point
+                       (:func:`~.givens_figure.place_labels`);
 ``undeterminable``     a drafting interval leaves the recipe's domain;
 ``tolerance``          an asked answer's drafting tolerance exceeds 5 % of it (``max_tol_rel``);
 ``twin``               the construction disagrees with the analytic twin (last: it never happens on a sound
@@ -21,7 +24,8 @@ A variant is judged by these checks, cheapest first; the first that fails is its
 
 The figure of each exercise is drawn at the largest standard scale at which its extent, with
 :data:`FIGURE_MARGIN` around it, fits the sheet (either orientation) below a band of :data:`TEXT_BAND` mm for
-the statement and the answer boxes.
+the statement and the answer boxes. A cam's s–δ axes take a free strip of :data:`DIAGRAM_MIN` beside or below
+its figure when there is one (:func:`diagram_strip`), else a page of their own: they never lower the scale.
 
 Examples
 --------
@@ -51,17 +55,20 @@ from typing import Any, Mapping
 from ..errors import GeomconError, ProblemError
 from ..paper import Paper, Scale, Sheet, best_fit, choose_scale
 from .drafting import Undeterminable, tolerances
+from .givens_figure import given_gap, given_items, place_labels
 from .readability import MIN_CROSSING, MIN_POINT_GAP, closest_points, crossings, extent
 from .solving import read, solve_given
 from .spec import AnswerRef, Exercise
 from .statements import CHOICE
 
 REASONS = ("invalid", "no_mechanism", "missing_answer", "several_solutions", "require", "borderline", "fit",
-           "crossing", "crowded", "undeterminable", "tolerance", "twin")
+           "crossing", "crowded", "labels", "undeterminable", "tolerance", "twin")
 """Rejection codes, in the order the checks run."""
 
 TEXT_BAND = 60.0
 """Paper mm of a sheet's height kept for an exercise's statement and answer boxes."""
+DIAGRAM_MIN = (90.0, 32.0)
+"""Smallest free strip (paper mm, width and height) beside or below a cam's figure for its s–δ axes."""
 FIGURE_MARGIN = 8.0
 """Paper mm kept free around a figure (labels, dimension lines)."""
 
@@ -115,6 +122,22 @@ def names_choice(ex: Exercise) -> bool:
     if ex.statement is None:
         return True
     return all("{choice}" in t.replace("{{", "").replace("}}", "") for t in ex.statement.values())
+
+
+def diagram_strip(area: tuple[float, float], fig: tuple[float, float]) -> str | None:
+    """Where a cam's s–δ axes go beside a figure of paper size ``fig`` (margins included) in ``area`` (paper
+    width and height below the text): ``"right"`` or ``"below"`` (the larger free strip of at least
+    :data:`DIAGRAM_MIN`), None when neither is free.
+
+    >>> diagram_strip((180.0, 217.0), (176.0, 176.0)), diagram_strip((267.0, 130.0), (120.0, 120.0))
+    ('below', 'right')
+    """
+    (aw, ah), (fw, fh) = area, fig
+    right = (aw - fw) * ah if aw - fw >= DIAGRAM_MIN[0] and ah >= DIAGRAM_MIN[1] else 0.0
+    below = aw * (ah - fh) if ah - fh >= DIAGRAM_MIN[1] and aw >= DIAGRAM_MIN[0] else 0.0
+    if right == below == 0.0:
+        return None
+    return "right" if right > below else "below"
 
 
 def fit(ex: Exercise, box: tuple[float, float, float, float], paper: Paper) -> tuple[Scale, Sheet]:
@@ -175,6 +198,16 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
         if close is not None and scale.to_paper(close[2]) < MIN_POINT_GAP:
             return Rejected(index, "crowded", f"points {close[0]} and {close[1]} lie {scale.to_paper(close[2]):.3g} mm "
                                               f"apart on paper at {scale} (at least {MIN_POINT_GAP:g} mm)")
+        items = given_items(sol)
+        gap = given_gap(items)
+        if gap is not None and scale.to_paper(gap[2]) < MIN_POINT_GAP:
+            return Rejected(index, "crowded", f"given points {gap[0]} and {gap[1]} lie {scale.to_paper(gap[2]):.3g} mm "
+                                              f"apart on paper at {scale} (at least {MIN_POINT_GAP:g} mm)")
+        f = scale.factor
+        _, bad = place_labels(items, lambda x, y: (x * f, -y * f))
+        if bad:
+            return Rejected(index, "labels", f"the label {bad[0]} of the sheet's givens overlaps another label or a "
+                                             f"point at {scale}")
         nominal = {r.text: chosen[r.text] for r in ex.ask}
         try:
             limits = {r.text: ex.max_tol_rel * abs(nominal[r.text]) for r in ex.ask}
@@ -202,5 +235,5 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
     return Accepted(index, given, scale, sheet, tuple(out), several)
 
 
-__all__ = ["Accepted", "AnswerKey", "FIGURE_MARGIN", "REASONS", "Rejected", "TEXT_BAND", "fit", "judge",
+__all__ = ["Accepted", "AnswerKey", "DIAGRAM_MIN", "FIGURE_MARGIN", "REASONS", "Rejected", "TEXT_BAND", "diagram_strip", "fit", "judge",
            "names_choice"]
