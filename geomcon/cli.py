@@ -61,6 +61,8 @@ def _shown_answer(v) -> str:
     """An answer in the text summary: 4 decimals, lists in brackets, bools as words."""
     if isinstance(v, bool):
         return "yes" if v else "no"
+    if isinstance(v, str):
+        return v
     if isinstance(v, (tuple, list)):
         return "[" + ", ".join(f"{x:.4f}" for x in v) + "]"
     return f"{v:.4f}"

@@ -126,7 +126,8 @@ def _safe(twin: Twin, given: Mapping[str, Any]) -> list[dict[str, float]] | None
 def _nearest(target: Mapping[str, float], candidates: Sequence[Mapping[str, float]]) -> Mapping[str, float]:
     """The candidate solution closest to ``target`` (solutions may come in another order once perturbed)."""
     def cost(c: Mapping[str, float]) -> float:
-        return max((abs(c[k] - v) / max(abs(v), 1e-300) for k, v in target.items() if k in c), default=0.0)
+        return max((abs(c[k] - v) / max(abs(v), 1e-300) for k, v in target.items()
+                    if k in c and type(v) is not str), default=0.0)
     return min(candidates, key=cost)
 
 
@@ -166,6 +167,9 @@ def sensitivities(twin: Twin, given: Mapping[str, Any], units: Mapping[str, str]
 
         for i, b in enumerate(base):
             for k in b:
+                if type(b[k]) is str:                    # a word (a choice) has no derivative
+                    continue
+
                 def f(d: float, b=b, k=k) -> float | None:
                     sols = at(d)
                     if not sols:

@@ -149,6 +149,8 @@ def _short(v) -> str:
     """An answer for the index table: 4 significant digits, lists and bools as they read."""
     if isinstance(v, bool):
         return str(v).lower()
+    if isinstance(v, str):
+        return v
     if isinstance(v, (tuple, list)):
         return "[" + ", ".join(f"{x:.4g}" for x in v[:4]) + (", …]" if len(v) > 4 else "]")
     return f"{v:.4g}"

@@ -36,6 +36,8 @@ def _value(unit: str, v: Any) -> Any:
     """An answer step's value in the contract's type: bool, a tuple of floats (list units) or a float."""
     if unit == "bool":
         return bool(v)
+    if unit == "choice":
+        return str(v)
     if unit.endswith("[]"):
         return tuple(float(x) for x in v)
     return float(v)
@@ -43,8 +45,8 @@ def _value(unit: str, v: Any) -> Any:
 
 def _json(v: Any, scale: float) -> Any:
     """An answer value for JSON: numbers :func:`~geomcon.check.rounded` at ``scale``, lists element by
-    element, bools as they are."""
-    if isinstance(v, bool):
+    element, bools and words (a choice) as they are."""
+    if isinstance(v, (bool, str)):
         return v
     if isinstance(v, (tuple, list)):
         return [_json(x, scale) for x in v]
@@ -157,7 +159,7 @@ class Solution:
             raise NotAMechanism(why or "no candidate of the construction is a valid mechanism")
         for sol in out:
             for k, v in sol.items():
-                if type(v) is float and v - v == 0.0:      # finite: the common case, at once
+                if type(v) is float and v - v == 0.0 or type(v) is str:      # finite (the common case) or a word
                     continue
                 bad = [x for x in (v if isinstance(v, tuple) else (v,)) if not math.isfinite(x)]
                 if bad:
@@ -292,6 +294,10 @@ class Solution:
                              in zip(_pairs(prefix + q.name, b, e), _pairs(q.name, b, e))]
                 scale = self.unit_scale(q.unit)
                 for name, x, y, flat in parts:
+                    if type(x) is str or type(y) is str:                 # a word (a choice): equal or not
+                        rows.append({"quantity": name, "construction": x, "analytic": y, "abs_error": float(x != y),
+                                     "tol": 0.0, "ok": x == y, "unit": q.unit})
+                        continue
                     row = check_row(name, x, y, scale)
                     row["unit"] = q.unit
                     if not row["ok"]:
@@ -392,6 +398,8 @@ class Solution:
 
         def check_json(r: dict) -> dict:
             sc = self.unit_scale(r["unit"])
+            if type(r["construction"]) is str:                 # a word (a choice): as it is
+                return r
             magnitude = max(abs(float(r["construction"])), abs(float(r["analytic"])), sc)
             return {**r, "construction": _finite(_json(r["construction"], sc)),
                     "analytic": _finite(_json(r["analytic"], sc)),
@@ -430,8 +438,8 @@ class Solution:
             parts = _pairs(q.name, self.answers[q.name], self.answers[q.name])
             rows = [r for r in self.checks if any(r["quantity"] == name for name, _, _ in parts)]
             mark = "" if not rows else (" ✓ twin" if all(r["ok"] for r in rows) else " ✗ twin")
-            shown = ", ".join(str(v).lower() if isinstance(v, bool) else f"{v:.4f}" for _, v, _ in parts)
-            shown = f"[{shown}]{unit}" if len(parts) > 1 or q.unit.endswith("[]") else shown + ("" if isinstance(parts[0][1], bool) else unit)
+            shown = ", ".join(str(v).lower() if isinstance(v, (bool, str)) else f"{v:.4f}" for _, v, _ in parts)
+            shown = f"[{shown}]{unit}" if len(parts) > 1 or q.unit.endswith("[]") else shown + ("" if isinstance(parts[0][1], (bool, str)) else unit)
             line = f"{q.name} = {shown}{mark}"
             printed = [pub[name] for name, _, _ in parts if name in pub]
             if printed:

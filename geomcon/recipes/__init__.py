@@ -29,6 +29,8 @@ _WHERE: dict[str, tuple[str, str]] = {
     "guide_bar.design_by_K": ("guide_bar_design", "GUIDE_RECIPE"),
     "shaper.design_by_K": ("guide_bar_design", "SHAPER_RECIPE"),
     "slotter.design_by_K": ("slotter_design", "RECIPE"),
+    # linkage analysis (issue 14)
+    "four_bar.analysis": ("four_bar_analysis", "RECIPE"),
     # three-position synthesis (issue 4)
     "four_bar.three_positions": ("four_bar_positions", "RECIPE"),
     "four_bar.three_positions_fixed_pivots": ("four_bar_fixed_pivots", "RECIPE"),

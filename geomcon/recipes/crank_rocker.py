@@ -48,6 +48,10 @@ def grashof(AB: float, BC: float, CD: float, AD: float) -> list[str]:
     []
     >>> grashof(15, 50, 35, 30)[0][:30]
     'Grashof equality AB + BC = CD '
+    >>> grashof(50, 50, 30, 90)
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.NotAMechanism: AB is not a crank (Grashof): CD + AD > AB + BC (30 + 90 > 50 + 50, 120 > 100): no link turns fully
     """
     lengths = {"AB": AB, "BC": BC, "CD": CD, "AD": AD}
     longest = max(lengths, key=lambda k: lengths[k])
@@ -55,6 +59,13 @@ def grashof(AB: float, BC: float, CD: float, AD: float) -> list[str]:
     if lengths[longest] >= rest:
         raise NotAMechanism(f"the links cannot be assembled: {longest} = {lengths[longest]:g} ≥ sum of the "
                             f"other three = {rest:g}")
+    names = sorted(lengths, key=lambda k: lengths[k])          # s, p, q, l (ties in the loop's order)
+    sn, pn, qn, ln = names
+    s, p, q, l_ = (lengths[n] for n in names)
+    if s + l_ > p + q and not is_zero(s + l_ - (p + q), p + q):
+        raise NotAMechanism(
+            f"AB is not a crank (Grashof): {sn} + {ln} > {pn} + {qn} ({s:g} + {l_:g} > "
+            f"{p:g} + {q:g}, {s + l_:g} > {p + q:g}): no link turns fully")
     if AB > min(BC, CD, AD) or AB == AD:
         raise NotAMechanism(
             f"AB = {AB:g} is not the strictly shortest link adjacent to the frame (BC = {BC:g}, CD = {CD:g}, "
@@ -64,10 +75,6 @@ def grashof(AB: float, BC: float, CD: float, AD: float) -> list[str]:
     others = [k for k in ("BC", "CD", "AD") if k != longest]
     s_l = AB + lengths[longest]
     p_q = lengths[others[0]] + lengths[others[1]]
-    if s_l > p_q and not is_zero(s_l - p_q, p_q):
-        raise NotAMechanism(
-            f"AB is not a crank (Grashof): AB + {longest} = {AB:g} + {lengths[longest]:g} = {s_l:g} > "
-            f"{others[0]} + {others[1]} = {p_q:g}")
     if AB == BC:
         raise NotAMechanism(f"BC = AB = {AB:g}: the folded position puts C1 on A, θ is undefined")
     if is_zero(s_l - p_q, p_q):

@@ -150,6 +150,13 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "曲柄摇杆机构 ABCD 中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,摇杆 CD = {CD} mm,机架 AD = {AD} mm。"
              "作出摇杆的两个极限位置。"),
     },
+    "four_bar.analysis": {
+        "": ("A hinged four-bar chain has the links AB = {AB} mm, BC = {BC} mm, CD = {CD} mm and AD = {AD} mm, "
+             "with {frame} fixed as the frame. Classify the mechanism, say which joints turn fully, and find θ, "
+             "ψ, K and the smallest transmission angle where they exist.",
+             "铰链四杆机构中 AB = {AB} mm,BC = {BC} mm,CD = {CD} mm,AD = {AD} mm,以 {frame} 为机架。"
+             "判断机构类型,指出哪些转动副为周转副,并求其极位夹角 θ、摆角 ψ、行程速比系数 K 和最小传动角。"),
+    },
     "crank_slider.design_by_K": {
         "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
               "H = {H} mm and the offset e = {e} mm.",
