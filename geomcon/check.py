@@ -37,7 +37,7 @@ def scale_for(unit: str, length_scale: float, omega: float = 1.0) -> float:
     >>> scale_for("mm", 90.0), scale_for("deg", 90.0), scale_for("mm/s", 90.0, 2.0)
     (90.0, 1.0, 180.0)
     """
-    if unit == "mm":
+    if unit in ("mm", "interval"):
         return length_scale
     if unit == "mm/s":
         return length_scale * abs(omega)

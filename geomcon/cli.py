@@ -64,7 +64,7 @@ def _shown_answer(v) -> str:
     if isinstance(v, str):
         return v
     if isinstance(v, (tuple, list)):
-        return "[" + ", ".join(f"{x:.4f}" for x in v) + "]"
+        return "[" + ", ".join(_shown_answer(x) for x in v) + "]"
     return f"{v:.4f}"
 
 
@@ -117,7 +117,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
 
-UNIT_WORDS = {"mm": "mm", "deg": "°", "": "ratio", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
+UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
               "deg[]": "list, °", "[]": "list", "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s",
               "rad/s": "rad/s"}
 """How ``geomcon recipes`` names a unit."""

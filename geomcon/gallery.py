@@ -152,7 +152,7 @@ def _short(v) -> str:
     if isinstance(v, str):
         return v
     if isinstance(v, (tuple, list)):
-        return "[" + ", ".join(f"{x:.4g}" for x in v[:4]) + (", …]" if len(v) > 4 else "]")
+        return "[" + ", ".join(_short(x) for x in v[:4]) + (", …]" if len(v) > 4 else "]")
     return f"{v:.4g}"
 
 

@@ -39,7 +39,7 @@ def _value(unit: str, v: Any) -> Any:
     if unit == "choice":
         return str(v)
     if unit.endswith("[]"):
-        return tuple(float(x) for x in v)
+        return tuple(tuple(float(y) for y in x) if isinstance(x, (tuple, list)) else float(x) for x in v)
     return float(v)
 
 
@@ -91,7 +91,7 @@ def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     if isinstance(a, (tuple, list)):
         if not isinstance(b, (tuple, list)) or len(a) != len(b):
             raise NotAMechanism(f"answer {name}: {len(a)} values against {b!r}")
-        return [(f"{name}[{i}]", x, y) for i, (x, y) in enumerate(zip(a, b))]
+        return [p for i, (x, y) in enumerate(zip(a, b)) for p in _pairs(f"{name}[{i}]", x, y)]
     return [(name, a, b)]
 
 
@@ -129,6 +129,11 @@ class Solution:
         return max(sizes)
 
     @cached_property
+    def _unbounded(self) -> frozenset[str]:
+        """Answers (intervals) whose ends may be infinite: an unbounded range, written null in JSON."""
+        return frozenset(q.name for q in self.recipe.answers if q.unit == "interval[]")
+
+    @cached_property
     def solution_values(self) -> list[dict[str, float]]:
         """Every valid solution's answers, the textbook's choice first.
 
@@ -161,7 +166,8 @@ class Solution:
             for k, v in sol.items():
                 if type(v) is float and v - v == 0.0 or type(v) is str:      # finite (the common case) or a word
                     continue
-                bad = [x for x in (v if isinstance(v, tuple) else (v,)) if not math.isfinite(x)]
+                flat = [x for x in (v if isinstance(v, tuple) else (v,)) for x in (x if isinstance(x, tuple) else (x,))]
+                bad = [x for x in flat if not math.isfinite(x) and not (x == math.inf and k in self._unbounded)]
                 if bad:
                     raise NotAMechanism(f"answer '{k}' is not a finite number ({bad[0]!r}): the givens are outside "
                                         "the range where the construction holds in double precision")
@@ -298,6 +304,10 @@ class Solution:
                         rows.append({"quantity": name, "construction": x, "analytic": y, "abs_error": float(x != y),
                                      "tol": 0.0, "ok": x == y, "unit": q.unit})
                         continue
+                    if x == y == math.inf:                               # an unbounded interval's end
+                        rows.append({"quantity": name, "construction": x, "analytic": y, "abs_error": 0.0,
+                                     "tol": 0.0, "ok": True, "unit": q.unit})
+                        continue
                     row = check_row(name, x, y, scale)
                     row["unit"] = q.unit
                     if not row["ok"]:
@@ -394,7 +404,7 @@ class Solution:
         units = {q.name: q.unit for q in self.recipe.answers}
 
         def answers_json(sol: dict) -> dict:
-            return {k: _json(v, self.unit_scale(units.get(k, ""))) for k, v in sol.items()}
+            return {k: _finite(_json(v, self.unit_scale(units.get(k, "")))) for k, v in sol.items()}
 
         def check_json(r: dict) -> dict:
             sc = self.unit_scale(r["unit"])
@@ -440,6 +450,8 @@ class Solution:
             mark = "" if not rows else (" ✓ twin" if all(r["ok"] for r in rows) else " ✗ twin")
             shown = ", ".join(str(v).lower() if isinstance(v, (bool, str)) else f"{v:.4f}" for _, v, _ in parts)
             shown = f"[{shown}]{unit}" if len(parts) > 1 or q.unit.endswith("[]") else shown + ("" if isinstance(parts[0][1], (bool, str)) else unit)
+            if q.unit == "interval[]":                              # [[low, high], …] mm
+                shown = "[" + ", ".join(f"[{lo:.4f}, {hi:.4f}]" for lo, hi in self.answers[q.name]) + "] mm"
             line = f"{q.name} = {shown}{mark}"
             printed = [pub[name] for name, _, _ in parts if name in pub]
             if printed:

@@ -156,3 +156,11 @@ def test_crank_forms_name_the_failed_grashof_sum():
         solve(problem_from_dict({"recipe": "crank_rocker.extremes",
                                  "given": dict(AB=50, BC=50, CD=30, AD=90)}, name="t"))
     assert "30 + 90 > 50 + 50" in str(exc.value) and "strictly shortest" not in str(exc.value)
+
+
+def test_statement_in_both_languages():
+    from geomcon.worksheet.statements import default_template, fill, shown_givens, template_form
+    g = dict(AB=28, BC=52, CD=50, AD=72, frame="CD")
+    assert template_form(R, g) == ""
+    en, zh = (fill(t, shown_givens(R, g, lang)) for t, lang in zip(default_template(R, g), ("en", "zh")))
+    assert "with CD fixed as the frame" in en and "以 CD 为机架" in zh and zh.endswith("。")

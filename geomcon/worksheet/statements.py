@@ -157,6 +157,28 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "铰链四杆机构中 AB = {AB} mm,BC = {BC} mm,CD = {CD} mm,AD = {AD} mm,以 {frame} 为机架。"
              "判断机构类型,指出哪些转动副为周转副,并求其极位夹角 θ、摆角 ψ、行程速比系数 K 和最小传动角。"),
     },
+    "four_bar.link_ranges": {
+        "AB": ("In a hinged four-bar ABCD with {frame} as the frame, BC = {BC} mm, CD = {CD} mm, AD = {AD} mm; the link AB may have any "
+               "length. For which lengths of AB is the chain a crank-rocker, a double-crank, a double-rocker, "
+               "or not a mechanism?",
+               "铰链四杆机构 ABCD 以 {frame} 为机架,BC = {BC} mm,CD = {CD} mm,AD = {AD} mm,杆 AB 的长度可任取。"
+               "AB 取何值时为曲柄摇杆机构、双曲柄机构、双摇杆机构,何时不能成为机构?"),
+        "BC": ("In a hinged four-bar ABCD with {frame} as the frame, AB = {AB} mm, CD = {CD} mm, AD = {AD} mm; the link BC may have any "
+               "length. For which lengths of BC is the chain a crank-rocker, a double-crank, a double-rocker, "
+               "or not a mechanism?",
+               "铰链四杆机构 ABCD 以 {frame} 为机架,AB = {AB} mm,CD = {CD} mm,AD = {AD} mm,杆 BC 的长度可任取。"
+               "BC 取何值时为曲柄摇杆机构、双曲柄机构、双摇杆机构,何时不能成为机构?"),
+        "CD": ("In a hinged four-bar ABCD with {frame} as the frame, AB = {AB} mm, BC = {BC} mm, AD = {AD} mm; the link CD may have any "
+               "length. For which lengths of CD is the chain a crank-rocker, a double-crank, a double-rocker, "
+               "or not a mechanism?",
+               "铰链四杆机构 ABCD 以 {frame} 为机架,AB = {AB} mm,BC = {BC} mm,AD = {AD} mm,杆 CD 的长度可任取。"
+               "CD 取何值时为曲柄摇杆机构、双曲柄机构、双摇杆机构,何时不能成为机构?"),
+        "AD": ("In a hinged four-bar ABCD with {frame} as the frame, AB = {AB} mm, BC = {BC} mm, CD = {CD} mm; the link AD may have any "
+               "length. For which lengths of AD is the chain a crank-rocker, a double-crank, a double-rocker, "
+               "or not a mechanism?",
+               "铰链四杆机构 ABCD 以 {frame} 为机架,AB = {AB} mm,BC = {BC} mm,CD = {CD} mm,杆 AD 的长度可任取。"
+               "AD 取何值时为曲柄摇杆机构、双曲柄机构、双摇杆机构,何时不能成为机构?"),
+    },
     "crank_slider.design_by_K": {
         "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
               "H = {H} mm and the offset e = {e} mm.",
@@ -263,6 +285,9 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return f"{head}+{closing[0]}" if len(closing) == 1 else None
     if recipe == "crank_slider.design_by_K":
         return next((k for k in ("e", "AB", "BC") if k in has), None)
+    if recipe == "four_bar.link_ranges":                 # the form names the unknown link
+        missing = [k for k in ("AB", "BC", "CD", "AD") if k not in has]
+        return missing[0] if len(missing) == 1 else None
     if recipe == "cam.translating":
         return "offset" if given.get("e") not in (None, 0, 0.0) else "centric"
     if recipe == "four_bar.kinematics":
