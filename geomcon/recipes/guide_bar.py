@@ -14,21 +14,29 @@ from ..analytic.linkages import guide_bar_extremes
 from ..errors import NotAMechanism
 from ..geometry import Point, ToLeftOf, ToRightOf, circle, circle_circle, point_along, segment, thales_circle
 from ..scene import Role, Scene, marks
+from . import guide_bar_offset as offset
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, k_ratio
 
 GIVENS = (
     Quantity("AB", "mm", "crank"),
     Quantity("AC", "mm", "frame: distance between the crank pivot A and the guide-bar pivot C"),
-)
+) + offset.GIVENS
 ANSWERS = (
     Quantity("theta", "deg", "crank angle between the extreme positions"),
     Quantity("psi", "deg", "swing of the guide bar, ∠B1CB2"),
     Quantity("K", "", "time-ratio coefficient"),
-)
+) + offset.ANSWERS
+
+
+def _offset(g: Mapping[str, Any]) -> bool:
+    """An offset guide or a lever given: the construction of :mod:`.guide_bar_offset`."""
+    return bool(g.get("e")) or g.get("L") is not None
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
+    if _offset(g):
+        return offset.validate(g)
     if g["AB"] >= g["AC"]:
         raise NotAMechanism(f"AB = {g['AB']:g} ≥ AC = {g['AC']:g}: the guide bar turns fully (rotating "
                             "guide-bar), it has no extreme positions")
@@ -37,6 +45,8 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
 
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build the tangent-position construction."""
+    if _offset(g):
+        return offset.construct(g)
     AB, AC = g["AB"], g["AC"]
     sc = Scene("Oscillating guide-bar: extreme positions")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Crank pivot A at the origin", "取曲柄转动中心 A 为原点"))
@@ -71,7 +81,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if drawing:
         add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
         add_angle_mark(sc, "mark_theta", A, B1x, B2, "θ", th)
-    return Construction(sc, {q.name: q.name for q in ANSWERS}, {n: n for n in ("A", "C", "B1", "B2")})
+    return Construction(sc, {q.name: q.name for q in ANSWERS[:3]}, {n: n for n in ("A", "C", "B1", "B2")})
 
 
 def _block_along(b: Point, c: Point) -> marks.Slider:
@@ -79,7 +89,9 @@ def _block_along(b: Point, c: Point) -> marks.Slider:
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
-    """The twin sin(ψ/2) = AB/AC."""
+    """The twin sin(ψ/2) = AB/AC (offset: cos β = (e ± AB)/AC)."""
+    if _offset(g):
+        return offset.analytic(g)
     return [guide_bar_extremes(g["AB"], g["AC"])]
 
 

@@ -179,6 +179,27 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
                "铰链四杆机构 ABCD 以 {frame} 为机架,AB = {AB} mm,BC = {BC} mm,CD = {CD} mm,杆 AD 的长度可任取。"
                "AD 取何值时为曲柄摇杆机构、双曲柄机构、双摇杆机构,何时不能成为机构?"),
     },
+    "guide_bar.extremes": {
+        "": ("In an oscillating guide-bar mechanism the crank AB = {AB} mm turns about A and drives the guide bar "
+             "about C, AC = {AC} mm. Find the crank angle θ between the extreme positions, the guide bar's swing ψ "
+             "and the time-ratio coefficient K.",
+             "摆动导杆机构中,曲柄 AB = {AB} mm 绕 A 转动,带动导杆绕 C 摆动,AC = {AC} mm。"
+             "求极位夹角 θ、导杆摆角 ψ 和行程速比系数 K。"),
+        "offset": ("In a guide-bar mechanism the crank AB = {AB} mm turns about A; the guide line of the bar pivoted "
+                   "at C runs e = {e} mm from C, and AC = {AC} mm. Check that AB is a crank (AC > AB + e) and find "
+                   "θ, the guide bar's swing ψ and K.",
+                   "导杆机构中,曲柄 AB = {AB} mm 绕 A 转动,导杆绕 C 摆动,其导路与 C 的偏距 e = {e} mm,AC = {AC} mm。"
+                   "验证 AB 为曲柄(AC > AB + e),并求极位夹角 θ、导杆摆角 ψ 和行程速比系数 K。"),
+        "lever": ("In the crank and slotted-lever mechanism of a shaper the crank AB = {AB} mm turns about A, the "
+                  "lever CD = {L} mm swings about C, AC = {AC} mm. Find θ, ψ, the time ratio K and the ram's stroke H.",
+                  "牛头刨床的摆动导杆机构中,曲柄 AB = {AB} mm,导杆 CD = {L} mm 绕 C 摆动,AC = {AC} mm。"
+                  "求极位夹角 θ、摆角 ψ、行程速比系数 K 和刨头行程 H。"),
+        "offset+lever": ("In a guide-bar mechanism the crank AB = {AB} mm turns about A; the guide line of the lever "
+                         "CD = {L} mm pivoted at C runs e = {e} mm from C, and AC = {AC} mm. Find θ, ψ, K and the "
+                         "stroke H of the lever's end D.",
+                         "导杆机构中,曲柄 AB = {AB} mm,导杆 CD = {L} mm 绕 C 摆动,其导路与 C 的偏距 e = {e} mm,"
+                         "AC = {AC} mm。求极位夹角 θ、摆角 ψ、行程速比系数 K 和 D 点行程 H。"),
+    },
     "crank_slider.design_by_K": {
         "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
               "H = {H} mm and the offset e = {e} mm.",
@@ -285,6 +306,8 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return f"{head}+{closing[0]}" if len(closing) == 1 else None
     if recipe == "crank_slider.design_by_K":
         return next((k for k in ("e", "AB", "BC") if k in has), None)
+    if recipe == "guide_bar.extremes":
+        return "+".join(w for w, k in (("offset", "e"), ("lever", "L")) if k in has and given[k] != 0)
     if recipe == "four_bar.link_ranges":                 # the form names the unknown link
         missing = [k for k in ("AB", "BC", "CD", "AD") if k not in has]
         return missing[0] if len(missing) == 1 else None
