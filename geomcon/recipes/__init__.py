@@ -32,6 +32,7 @@ _WHERE: dict[str, tuple[str, str]] = {
     # linkage analysis (issue 14)
     "four_bar.analysis": ("four_bar_analysis", "RECIPE"),
     "four_bar.link_ranges": ("four_bar_link_ranges", "RECIPE"),
+    "rotating_guide_bar.extremes": ("rotating_guide_bar", "RECIPE"),
     # three-position synthesis (issue 4)
     "four_bar.three_positions": ("four_bar_positions", "RECIPE"),
     "four_bar.three_positions_fixed_pivots": ("four_bar_fixed_pivots", "RECIPE"),

@@ -200,6 +200,18 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
                          "导杆机构中,曲柄 AB = {AB} mm,导杆 CD = {L} mm 绕 C 摆动,其导路与 C 的偏距 e = {e} mm,"
                          "AC = {AC} mm。求极位夹角 θ、摆角 ψ、行程速比系数 K 和 D 点行程 H。"),
     },
+    "rotating_guide_bar.extremes": {
+        "": ("In a rotating guide-bar (Whitworth) mechanism the crank AB = {AB} mm turns about A and the guide bar "
+             "about C, AC = {AC} mm; the ram's guide passes through C perpendicular to AC. Find the crank angles of "
+             "the working and return strokes, θ and the time-ratio coefficient K.",
+             "转动导杆机构中,曲柄 AB = {AB} mm 绕 A 转动,导杆绕 C 转动,AC = {AC} mm,滑枕导路过 C 且垂直于 AC。"
+             "求工作行程与空回行程的曲柄转角、极位夹角 θ 和行程速比系数 K。"),
+        "arm": ("In a rotating guide-bar (Whitworth) mechanism the crank AB = {AB} mm turns about A and the guide bar "
+                "about C, AC = {AC} mm; the bar's arm CD = {CD} mm drives the ram, whose guide passes through C "
+                "perpendicular to AC. Find θ, the time-ratio coefficient K and the ram's stroke S.",
+                "转动导杆机构中,曲柄 AB = {AB} mm 绕 A 转动,导杆绕 C 转动,AC = {AC} mm,导杆臂 CD = {CD} mm "
+                "带动滑枕,其导路过 C 且垂直于 AC。求极位夹角 θ、行程速比系数 K 和滑枕行程 S。"),
+    },
     "crank_slider.design_by_K": {
         "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
               "H = {H} mm and the offset e = {e} mm.",
@@ -308,6 +320,8 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return next((k for k in ("e", "AB", "BC") if k in has), None)
     if recipe == "guide_bar.extremes":
         return "+".join(w for w, k in (("offset", "e"), ("lever", "L")) if k in has and given[k] != 0)
+    if recipe == "rotating_guide_bar.extremes":
+        return "arm" if "CD" in has else ""
     if recipe == "four_bar.link_ranges":                 # the form names the unknown link
         missing = [k for k in ("AB", "BC", "CD", "AD") if k not in has]
         return missing[0] if len(missing) == 1 else None
