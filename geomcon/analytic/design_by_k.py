@@ -187,6 +187,9 @@ def rocker_design_candidates(K: float, CD: float, c1: tuple[float, float], c2: t
                     pairs.append((AC1, w))
     elif frame_line:                        # A = (x, 0) with ∠c1 A c2 = θ: bracket and bisect the angle
         return _frame_line_points(c1, c2, th)
+    elif AD is not None:                    # the frame given: a closed form (geomcon.analytic.design_by_k_frame)
+        from .design_by_k_frame import frame_points
+        return frame_points(c1, c2, th, AD)
     else:
         raise NotAMechanism("give one of BC, AB, AC1, frame_line")
     for rp, rq in pairs:

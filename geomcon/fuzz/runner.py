@@ -224,6 +224,8 @@ def _matches(value: Any, want: Any, tol: float) -> bool:
                 and all(_matches(v, w, tol) for v, w in zip(value, want)))
     if isinstance(want, bool) or isinstance(value, bool):
         return bool(value) == bool(want)
+    if isinstance(want, str) or isinstance(value, str) or value == want:   # a word, or an unbounded end (inf)
+        return value == want
     return math.isfinite(float(value)) and abs(float(value) - float(want)) <= tol
 
 

@@ -7,7 +7,8 @@ Two families of exam problems:
   closing condition picks A on them:
   ``BC`` (F on C1A extended with AF = AC2 sees C1C2 under θ/2 and lies at C1F = 2·BC),
   ``AB`` (E on AC2 with AE = AC1 sees C1C2 under 90° + θ/2 and lies at C2E = 2·AB),
-  ``AC1`` (the circle about C1 of that radius), ``frame_line`` (A on the horizontal through D).
+  ``AC1`` (the circle about C1 of that radius), ``frame_line`` (A on the horizontal through D), ``AD`` (the
+  circle about D of that radius: the rocker, its swing and the frame given).
   K = 1 puts A on the line C1C2 itself (with ``AD`` or ``frame_line``).
 - **frame given** (``AD`` and the angle ``phi`` = ∠ADC of one extreme position C1): the other extreme
   position lies on the rocker circle where a line through A at ±θ to AC1 meets it (K = 1: the line AC1's
@@ -93,7 +94,7 @@ def _form(g: Mapping[str, Any]) -> tuple[str, str]:
             raise NotAMechanism("with phi (frame given) give AD and neither psi, phi1, phi2 nor another closing condition")
         return "frame", "AD"
     if has == {"psi"} or has == {"phi1", "phi2"}:
-        wanted = ("AD", "frame_line") if g["K"] == 1.0 else ("BC", "AB", "AC1", "frame_line")
+        wanted = ("AD", "frame_line") if g["K"] == 1.0 else ("BC", "AB", "AC1", "frame_line", "AD")
         if len(closing) != 1 or closing[0] not in wanted:
             raise NotAMechanism(f"give exactly one closing condition of {', '.join(wanted)} (got {', '.join(closing) or 'none'})")
         if closing[0] == "frame_line" and has == {"psi"}:
@@ -353,6 +354,14 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
             for rule in (FarthestFrom(C2), NearestTo(C2)):
                 n += 1
                 out.append((sc.add(f"A_{n}", circle_circle, shared["kA"], kT, branch=rule, label=f"A{n}", **opt,
+                                   caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
+        elif closing == "AD":            # the frame given with the swing: A on the circle of radius AD about D
+            if "kAD" not in shared:
+                shared["kAD"] = sc.add("kAD", circle, D, g["AD"], caption=(
+                    f"Circle about D with radius AD = {g['AD']:g}", f"以 D 为圆心、AD = {g['AD']:g} 为半径作圆"))
+            for rule in (NearestTo(C1),) + (() if symmetric else (FarthestFrom(C1),)):
+                n += 1
+                out.append((sc.add(f"A_{n}", circle_circle, shared["kAD"], kT, branch=rule, label=f"A{n}", **opt,
                                    caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
         else:  # frame_line
             for rule in (Leftmost(), Rightmost()):
