@@ -1,5 +1,5 @@
 """Random valid problems of the linkage-analysis family (issue 14): ``four_bar.analysis``,
-``four_bar.link_ranges`` and ``rotating_guide_bar.extremes``.
+``four_bar.link_ranges``, ``rotating_guide_bar.extremes`` and ``crank_rocker.best_by_K``.
 
 Ground truth by how a case is made, by routes neither the construction nor the twin takes: a chain's type
 from driving each frame joint through 3600 steps and checking that the other dyad closes (chains within
@@ -81,7 +81,16 @@ def rotating_guide_bar(rng: random.Random) -> ValidCase:
     return ValidCase({"recipe": "rotating_guide_bar.extremes", "given": given}, expect)
 
 
+def crank_rocker_best(rng: random.Random) -> ValidCase:
+    """Any K, ψ and frame: the optimum's own K and θ (by definition) must come back."""
+    K = rng.uniform(1.01, 3.0)
+    given = {"K": K, "psi": rng.uniform(10.0, 150.0), "AD": rng.uniform(10.0, 500.0)}
+    return ValidCase({"recipe": "crank_rocker.best_by_K", "given": given},
+                     {"K": (K, 1e-12 * K), "theta": (180.0 * (K - 1.0) / (K + 1.0), 1e-9)})
+
+
 GENERATORS: dict[str, Generator] = {
+    "crank_rocker.best_by_K": crank_rocker_best,
     "four_bar.analysis": four_bar_analysis,
     "four_bar.link_ranges": four_bar_link_ranges,
     "rotating_guide_bar.extremes": rotating_guide_bar,

@@ -25,6 +25,7 @@ _WHERE: dict[str, tuple[str, str]] = {
     "crank_slider.extremes": ("crank_slider", "RECIPE"),
     "crank_slider.design_by_K": ("crank_slider_design", "RECIPE"),
     "crank_slider.best_by_K": ("crank_slider_best", "RECIPE"),
+    "crank_rocker.best_by_K": ("crank_rocker_best", "RECIPE"),
     "guide_bar.extremes": ("guide_bar", "RECIPE"),
     "guide_bar.design_by_K": ("guide_bar_design", "GUIDE_RECIPE"),
     "shaper.design_by_K": ("guide_bar_design", "SHAPER_RECIPE"),

@@ -212,6 +212,13 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
                 "转动导杆机构中,曲柄 AB = {AB} mm 绕 A 转动,导杆绕 C 转动,AC = {AC} mm,导杆臂 CD = {CD} mm "
                 "带动滑枕,其导路过 C 且垂直于 AC。求极位夹角 θ、行程速比系数 K 和滑枕行程 S。"),
     },
+    "crank_rocker.best_by_K": {
+        "": ("Design a crank-rocker ABCD with the time-ratio coefficient K = {K}: the rocker swings through "
+             "ψ = {psi}° and the frame is AD = {AD} mm. Of all such designs, find the one whose smallest "
+             "transmission angle is the largest: AB, BC, CD and γmin.",
+             "设计曲柄摇杆机构 ABCD,行程速比系数 K = {K},摇杆摆角 ψ = {psi}°,机架长 AD = {AD} mm。"
+             "在所有满足条件的设计中求最小传动角最大者的 AB、BC、CD 及 γmin。"),
+    },
     "crank_slider.design_by_K": {
         "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
               "H = {H} mm and the offset e = {e} mm.",
