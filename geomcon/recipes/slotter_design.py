@@ -8,7 +8,8 @@ between those positions, seen from A over the chord B1B2 of B's path on ee, is 1
 Construction (C at the origin, ee horizontal, A above C): B1, B2 on ee symmetric about C; the circle through
 them from whose upper arc B1B2 is seen under 180° − θ meets the perpendicular to ee at C in A; AB = AB1,
 AC; CD = S/2; the centric slider CDE has its largest pressure angle with CD ⊥ ee, sin α = CD/DE, so the
-shortest coupler for ``alpha_allow`` is CD / sin α.
+shortest coupler for ``alpha_allow`` is CD / sin α. With the crank ``AB`` or the centre distance ``AC``
+given instead of ``B1B2`` (the Whitworth design) the construction of :mod:`.slotter_closing` places B1, B2.
 """
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
 from ..geometry import Above, Line, Point, ToRightOf, circle, line_circle, perpendicular, point_along
 from ..scene import Ref, Role, Scene, marks
+from . import slotter_closing
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length, refuse_alpha_allow
 from .theta_circle import K_MAX_OBTUSE, add_theta_step, refuse_tiny_theta, seeing_circle
@@ -27,7 +29,10 @@ GIVENS = (
     Quantity("K", "", "time-ratio coefficient, 1.00064 ≤ K ≤ 6282 (each stroke's crank angle, θ-circle "
              "chord seen under 180° − θ, at least 0.057°)", minimum=1.0, maximum=K_MAX_OBTUSE),
     Quantity("H", "mm", "stroke S of the slider E"),
-    Quantity("B1B2", "mm", "distance between the two points where B's path crosses the slider's path ee"),
+    Quantity("B1B2", "mm", "distance between the two points where B's path crosses the slider's path ee "
+             "(or give the crank AB, or the centre distance AC)", required=False),
+    Quantity("AB", "mm", "closing condition instead of B1B2: the crank (the Whitworth design)", required=False),
+    Quantity("AC", "mm", "closing condition instead of B1B2: the centre distance", required=False),
     Quantity("alpha_allow", "deg", "largest admissible pressure angle at E: gives the shortest DE (5.73e-9° ≤ α < 90°: DE within 1e10 of the length it is sized for)", required=False),
 )
 ANSWERS = (
@@ -37,10 +42,15 @@ ANSWERS = (
     Quantity("DE", "mm", "shortest coupler for alpha_allow"),
     Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
     Quantity("K", "", "time-ratio coefficient (as given)"),
+    Quantity("B1B2", "mm", "where B's path crosses ee (designed when AB or AC is given)"),
 )
+CLOSINGS = ("B1B2", "AB", "AC")
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
+    closing = [k for k in CLOSINGS if g.get(k) is not None]
+    if len(closing) != 1:
+        raise NotAMechanism(f"give exactly one of B1B2, AB, AC (got {', '.join(closing) or 'none'})")
     refuse_tiny_theta(g["K"])
     refuse_alpha_allow(g.get("alpha_allow"))
     return []
@@ -56,6 +66,10 @@ def _shortest(cd: float, alpha: float) -> float:
 
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build the slotter's construction."""
+    if g.get("B1B2") is None:
+        sc = slotter_closing.construct(g).scene
+        names = _finish(sc, g, Ref("C"), Ref("ee"), [q.name for q in ANSWERS if q.name != "DE"])
+        return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
     K, S, L = g["K"], g["H"], g["B1B2"]
     sc = Scene("Slotter with a rotating guide bar designed by K")
     add_theta_step(sc, K)
@@ -88,7 +102,14 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Arm CD", "导杆臂长 CD"))
     if drawing:
         add_bar(sc, "CD1", C, D1, style="link")
-    names = [q.name for q in ANSWERS if q.name != "DE"]
+    names = _finish(sc, g, C, ee, [q.name for q in ANSWERS if q.name not in ("DE", "B1B2")])
+    return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
+
+
+def _finish(sc: Scene, g: Mapping[str, Any], C: Ref, ee: Ref, names: list[str]) -> list[str]:
+    """The shortest coupler DE for ``alpha_allow`` (and its drawing); returns the answer names."""
+    S = g["H"]
+    drawing = sc.drawing
     if g.get("alpha_allow") is not None:
         a = g["alpha_allow"]
         if drawing:
@@ -104,15 +125,20 @@ def construct(g: Mapping[str, Any]) -> Construction:
             add_bar(sc, "CDt", C, Dt, style="ghost", role=Role.CONSTRUCTION)
             sc.add("slider_E", marks.slider, E, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
         names.append("DE")
-    return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
+    return names
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     """AB = (B1B2/2)/cos(θ/2), AC = (B1B2/2)·tan(θ/2), CD = S/2, DE = CD / sin α."""
     th = theta_from_k(g["K"])
-    half = g["B1B2"] / 2
-    out = {"AB": half / math.cos(math.radians(th / 2)), "AC": half * math.tan(math.radians(th / 2)),
-           "CD": g["H"] / 2, "theta": th, "K": g["K"]}
+    c, sn = math.cos(math.radians(th / 2)), math.sin(math.radians(th / 2))
+    if g.get("B1B2") is not None:
+        half = g["B1B2"] / 2
+        out = {"AB": half / c, "AC": half * sn / c}
+    else:                                            # the right triangle A C B1: AC = AB·sin(θ/2)
+        AB = g["AB"] if g.get("AB") is not None else g["AC"] / sn
+        out = {"AB": AB, "AC": AB * sn, "B1B2": 2.0 * AB * c}
+    out.update(CD=g["H"] / 2, theta=th, K=g["K"])
     if g.get("alpha_allow") is not None:
         out["DE"] = out["CD"] / math.sin(math.radians(g["alpha_allow"]))
     return [out]
@@ -123,7 +149,9 @@ def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str
     crossings are B1B2 apart."""
     half = math.sqrt((ans["AB"] - ans["AC"]) * (ans["AB"] + ans["AC"]))
     crank = 2 * math.degrees(math.atan2(half, ans["AC"]))
-    return [("K", (360 - crank) / crank, g["K"], ""), ("B1B2", 2 * half, g["B1B2"], "mm"),
+    closing = next(k for k in CLOSINGS if g.get(k) is not None)
+    rebuilt = {"B1B2": 2 * half, "AB": ans["AB"], "AC": ans["AC"]}[closing]
+    return [("K", (360 - crank) / crank, g["K"], ""), (closing, rebuilt, g[closing], "mm"),
             ("H", 2 * ans["CD"], g["H"], "mm")]
 
 

@@ -219,6 +219,18 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "设计曲柄摇杆机构 ABCD,行程速比系数 K = {K},摇杆摆角 ψ = {psi}°,机架长 AD = {AD} mm。"
              "在所有满足条件的设计中求最小传动角最大者的 AB、BC、CD 及 γmin。"),
     },
+    "slotter.design_by_K": {
+        "AB": ("Design the rotating guide-bar (Whitworth) drive of a slotting machine by its time-ratio coefficient "
+               "K = {K}: the crank is AB = {AB} mm and the ram's stroke H = {H} mm, the ram's guide passing through "
+               "the guide bar's pivot C perpendicular to AC. Find the centre distance AC and the arm CD.",
+               "按行程速比系数 K = {K} 设计插床的转动导杆机构:曲柄 AB = {AB} mm,滑枕行程 H = {H} mm,"
+               "滑枕导路过导杆转动中心 C 且垂直于 AC。求中心距 AC 和导杆臂长 CD。"),
+        "AC": ("Design the rotating guide-bar (Whitworth) drive of a slotting machine by its time-ratio coefficient "
+               "K = {K}: the centre distance is AC = {AC} mm and the ram's stroke H = {H} mm, the ram's guide passing "
+               "through the guide bar's pivot C perpendicular to AC. Find the crank AB and the arm CD.",
+               "按行程速比系数 K = {K} 设计插床的转动导杆机构:中心距 AC = {AC} mm,滑枕行程 H = {H} mm,"
+               "滑枕导路过导杆转动中心 C 且垂直于 AC。求曲柄 AB 和导杆臂长 CD。"),
+    },
     "crank_slider.design_by_K": {
         "e": ("Design an offset crank-slider by its time-ratio coefficient K = {K}: the slider's stroke is "
               "H = {H} mm and the offset e = {e} mm.",
@@ -327,6 +339,8 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return next((k for k in ("e", "AB", "BC") if k in has), None)
     if recipe == "guide_bar.extremes":
         return "+".join(w for w, k in (("offset", "e"), ("lever", "L")) if k in has and given[k] != 0)
+    if recipe == "slotter.design_by_K":                  # the Whitworth forms; B1B2 keeps the generic statement
+        return next((k for k in ("AB", "AC") if k in has and "B1B2" not in has), None)
     if recipe == "rotating_guide_bar.extremes":
         return "arm" if "CD" in has else ""
     if recipe == "four_bar.link_ranges":                 # the form names the unknown link
