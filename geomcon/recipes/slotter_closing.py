@@ -71,9 +71,19 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if drawing:
         sc.add("A_ground", marks.ground, A, math.pi, role=Role.ANNOTATION, style="ground")
         sc.add("AC_frame", segment, A, C, style="frame", role=Role.GIVEN)
+    measure_design(sc, A, C, B1, B2, S, beyond="", b1b2=True)
+    return Construction(sc, {}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
+
+
+
+def measure_design(sc: Scene, A: Any, C: Any, B1: Any, B2: Any, S: float, *, beyond: str, b1b2: bool) -> None:
+    """The steps every slotter design ends with: AB, AC (and B1B2), the crank's extreme positions and the
+    angle of one stroke, the arm CD = S/2 along CB2 (``beyond``: the words placing D)."""
+    drawing = sc.drawing
     sc.add("AB", length, A, B1, role=Role.MEASUREMENT, unit="mm", caption=("Crank AB = AB1", "曲柄 AB = AB1"))
     sc.add("AC", length, A, C, role=Role.MEASUREMENT, unit="mm", caption=("Frame AC", "机架 AC"))
-    sc.add("B1B2", length, B1, B2, role=Role.MEASUREMENT, unit="mm", caption=("B1B2 on ee", "ee 上的 B1B2"))
+    if b1b2:
+        sc.add("B1B2", length, B1, B2, role=Role.MEASUREMENT, unit="mm", caption=("B1B2 on ee", "ee 上的 B1B2"))
     if drawing:
         add_bar(sc, "AB1", A, B1, ("The crank in the two extreme positions", "曲柄的两个极限位置"))
         add_bar(sc, "AB2", A, B2, style="link-alt")
@@ -82,10 +92,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if drawing:
         add_angle_mark(sc, "mark_B1AB2", A, B1, B2, "180°−θ", ang)
     D1 = sc.add("D1", point_along, C, B2, S / 2, role=Role.RESULT, style="joint", label="D1",
-                caption=(f"D on the guide bar, CD = S/2 = {S / 2:g}: E's extreme positions on ee",
+                caption=(f"D on the guide bar{beyond}, CD = S/2 = {S / 2:g}: E's extreme positions on ee",
                          f"导杆上取 CD = S/2 = {S / 2:g}(D 在 ee 上时滑块处于极限位置)"))
     sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Arm CD", "导杆臂长 CD"))
     if drawing:
         add_bar(sc, "CD1", C, D1, style="link")
-    return Construction(sc, {}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
-

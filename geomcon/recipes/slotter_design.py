@@ -22,7 +22,7 @@ from ..geometry import Above, Line, Point, ToRightOf, circle, line_circle, perpe
 from ..scene import Ref, Role, Scene, marks
 from . import slotter_closing
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length, refuse_alpha_allow
+from .common import add_bar, add_pivot, refuse_alpha_allow
 from .theta_circle import K_MAX_OBTUSE, add_theta_step, refuse_tiny_theta, seeing_circle
 
 GIVENS = (
@@ -87,21 +87,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     drawing = sc.drawing                     # the cranks, marks, arm, coupler and slider only a drawing needs
     if drawing:
         sc.add("A_ground", marks.ground, A, math.pi, role=Role.ANNOTATION, style="ground")   # clear of CD′ above
-    sc.add("AB", length, A, B1, role=Role.MEASUREMENT, unit="mm", caption=("Crank AB = AB1", "曲柄 AB = AB1"))
-    sc.add("AC", length, A, C, role=Role.MEASUREMENT, unit="mm", caption=("Frame AC", "机架 AC"))
-    if drawing:
-        add_bar(sc, "AB1", A, B1, ("The crank in the two extreme positions", "曲柄的两个极限位置"))
-        add_bar(sc, "AB2", A, B2, style="link-alt")
-    ang = sc.add("crank_angle", angle_deg, A, B1, B2, role=Role.MEASUREMENT, unit="deg",
-                 caption=("Crank angle of one stroke ∠B1AB2 = 180° − θ", "一个行程的曲柄转角 ∠B1AB2 = 180° − θ"))
-    if drawing:
-        add_angle_mark(sc, "mark_B1AB2", A, B1, B2, "180°−θ", ang)
-    D1 = sc.add("D1", point_along, C, B2, S / 2, role=Role.RESULT, style="joint", label="D1",
-                caption=(f"D on the guide bar beyond C, CD = S/2 = {S / 2:g}: E's extreme positions on ee",
-                         f"导杆上取 CD = S/2 = {S / 2:g}(D 在 ee 上时滑块处于极限位置)"))
-    sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Arm CD", "导杆臂长 CD"))
-    if drawing:
-        add_bar(sc, "CD1", C, D1, style="link")
+    slotter_closing.measure_design(sc, A, C, B1, B2, S, beyond=" beyond C", b1b2=False)
     names = _finish(sc, g, C, ee, [q.name for q in ANSWERS if q.name not in ("DE", "B1B2")])
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
 
