@@ -81,9 +81,13 @@ def _form(g: Mapping[str, Any]) -> tuple[str, str]:
     has = {k for k in ("psi", "phi1", "phi2", "phi") if g.get(k) is not None}
     closing = [k for k in CLOSINGS if g.get(k) not in (None, False)]
     if g.get("CD") is None:
+        if has == {"psi"} and sorted(closing) == ["AB", "AD"]:
+            if g["K"] == 1.0:
+                raise NotAMechanism("the crank-and-frame form needs K > 1 (K = 1 has no θ-circle)")
+            return "crank_frame", "AB+AD"
         if has != {"psi"} or sorted(closing) != ["AB", "BC"]:
-            raise NotAMechanism("without CD give AB, BC and psi (the links form: rocker and frame are designed); "
-                                "otherwise give CD")
+            raise NotAMechanism("without CD give AB, BC and psi (the links form: rocker and frame are designed), or "
+                                "AB, AD and psi (coupler and rocker are designed); otherwise give CD")
         if g["K"] == 1.0:
             raise NotAMechanism("the links form needs K > 1 (with K = 1 the extreme positions C1, C2 are collinear with A)")
         if g["AB"] >= g["BC"]:
@@ -204,6 +208,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
     family, closing = _form(g)
     if family == "links":
         return crank_rocker_links.construct(g)
+    if family == "crank_frame":
+        from . import crank_rocker_crank_frame
+        return crank_rocker_crank_frame.construct(g)
     K, CD = g["K"], g["CD"]
     sc = Scene("Crank-rocker designed by K")
     th = add_theta_step(sc, K)
@@ -467,6 +474,9 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     family, closing = _form(g)
     if family == "links":
         return sorted(crank_rocker_links.analytic(g), key=preference)
+    if family == "crank_frame":
+        from ..analytic.crank_rocker_best import designs_at_ratio
+        return sorted(designs_at_ratio(g["K"], g["psi"], g["AD"], g["AB"]), key=preference)
     K, CD = g["K"], g["CD"]
     if family == "positions":
         c1, c2 = (p.tuple() for p in extreme_positions(g))

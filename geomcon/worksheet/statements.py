@@ -143,6 +143,11 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
                   "coupler BC = {BC} mm and the rocker swings through ψ = {psi}°.",
                   "按行程速比系数 K = {K} 设计曲柄摇杆机构 ABCD:曲柄长 AB = {AB} mm,连杆长 BC = {BC} mm,"
                   "摇杆摆角 ψ = {psi}°。"),
+        "crank_frame": ("Design a crank-rocker ABCD by its time-ratio coefficient K = {K}: the crank is AB = {AB} mm, "
+                        "the frame AD = {AD} mm and the rocker swings through ψ = {psi}°. Find the coupler BC and the "
+                        "rocker CD (every solution).",
+                        "按行程速比系数 K = {K} 设计曲柄摇杆机构 ABCD:曲柄长 AB = {AB} mm,机架长 AD = {AD} mm,"
+                        "摇杆摆角 ψ = {psi}°。求连杆 BC 和摇杆 CD(列出全部解)。"),
     },
     "crank_rocker.extremes": {
         "": ("A crank-rocker ABCD has the crank AB = {AB} mm, the coupler BC = {BC} mm, the rocker CD = {CD} mm "
@@ -329,7 +334,7 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
     has = {k for k, v in given.items() if v is not None and v is not False}
     if recipe == "crank_rocker.design_by_K":
         if "CD" not in has:
-            return "links"
+            return "links" if "BC" in has else "crank_frame"
         if "phi" in has:
             return "frame"
         closing = [c for c in ("BC", "AB", "AC1", "frame_line", "AD") if c in has]

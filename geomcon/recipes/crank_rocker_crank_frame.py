@@ -1,0 +1,125 @@
+"""``crank_rocker.design_by_K`` with the crank, the frame and the swing given (``K AB AD psi`` → BC, CD).
+
+Construction: the shape of a design does not depend on its size, so it is drawn with a rocker of the
+frame's length (D at the origin, C1 and C2 symmetric about the vertical through D at ψ apart); every A on the
+admissible arcs of the two θ-circles gives a design of that shape, whose crank-to-frame ratio
+(AC2 − AC1)/(2·AD′) varies along the arcs. The points where it equals AB/AD (sampled along each arc, each
+change of sign bisected) are the solutions, each scaled by AD/AD′; C1 is taken as the folded position (the
+mirror point is the same design).
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping
+
+from ..analytic.crank_rocker_best import designs_at_ratio
+from ..geometry import Point, segment
+from ..scene import Role, Scene, marks
+from ..scene.tape import lifted
+from .base import Construction
+from .common import angle_deg, folded_flag, gamma_min_of, half_difference, half_sum, near_flag
+from .crank_rocker_design import _rocker_end, admissible_arcs
+from .search import crossing
+from .theta_circle import add_theta_circle, add_theta_step
+
+SLOTS = 6
+"""Candidate designs kept (the ratio meets AB/AD at most a few times along the arcs)."""
+CD_MAX = 100.0
+"""Designs whose rocker exceeds 100 frames are not sought (twin alike): A then lies within 1 % of the
+frame's length from D on the unit drawing, the Grashof margin is a few parts in 10⁵ of the links and the
+ratio's difference AC2 − AC1 loses the digits the back-substitution needs."""
+
+
+def _ratio_roots(D: Point, C1: Point, C2: Point, ratio: float, *arcs_per_side: Any) -> tuple[Point, ...]:
+    """The points of the admissible arcs where (AC_far − AC_near)/(2·AD′) = ratio, C1 folded."""
+    def f(arc, t: float) -> float:
+        A = arc.at(t)
+        return half_difference(A, C1, C2) / math.hypot(A.x - D.x, A.y - D.y) - ratio
+
+    out = []
+    for arcs in arcs_per_side:
+        for arc in arcs:
+            n = 720
+            ts = [i / n for i in range(n + 1)]
+            vals = [f(arc, t) for t in ts]
+            for i in range(n):
+                if vals[i] == 0.0 or vals[i] * vals[i + 1] < 0.0:
+                    t = ts[i] if vals[i] == 0.0 else crossing(lambda x, arc=arc, s=vals[i] > 0: (f(arc, x) > 0) == s,
+                                                              ts[i], ts[i + 1])
+                    A = arc.at(t)
+                    rocker = math.hypot(C1.x - D.x, C1.y - D.y)
+                    if folded_flag(A, C1, C2) and rocker <= CD_MAX * math.hypot(A.x - D.x, A.y - D.y):
+                        out.append(A)
+    return tuple(out)
+
+
+def _nth(points: tuple[Point, ...], i: int) -> Point | None:
+    return points[i] if i < len(points) else None
+
+
+def _scaled(AD: float, A: Point, D: Point, x: float) -> float:
+    return x * AD / math.hypot(A.x - D.x, A.y - D.y)
+
+
+def _given(AD: float) -> float:
+    return AD
+
+
+def _true(*_: Any) -> bool:
+    return True
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """The unit-size θ-circles; A where the crank-to-frame ratio is AB/AD; each design scaled to AD."""
+    K, AB, AD, psi = g["K"], g["AB"], g["AD"], g["psi"]
+    sc = Scene("Crank-rocker designed by K from the crank, the frame and the swing")
+    th = add_theta_step(sc, K)
+    D = sc.given("D", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot D of the rocker", "摇杆固定铰链 D"))
+    if sc.drawing:
+        sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
+    C1 = sc.given("C1", lifted(_rocker_end, AD, 90.0 + psi / 2.0), style="joint",
+                  caption=(f"A rocker of the frame's length {AD:g}: extreme position DC1", f"取摇杆长等于机架长 {AD:g}:极限位置 DC1"))
+    C2 = sc.given("C2", lifted(_rocker_end, AD, 90.0 - psi / 2.0), style="joint",
+                  caption=(f"and DC2, ψ = ∠C1DC2 = {psi:g}°", f"及 DC2,ψ = ∠C1DC2 = {psi:g}°"))
+    if sc.drawing:
+        sc.add("DC1", segment, D, C1, role=Role.GIVEN, style="link")
+        sc.add("DC2", segment, D, C2, role=Role.GIVEN, style="link")
+    arcs = []
+    for s, pre, en, zh, lab in ((-1, "n", "on D's side", "D 所在一侧", "P"), (1, "f", "on the far side", "远离 D 的一侧", "P′")):
+        kT = add_theta_circle(sc, C1, C2, th, s, side_words=(en, zh), prefix=pre, label=lab)
+        arcs.append(sc.add(f"{pre}arcs", admissible_arcs, kT, C1, C2, D, AD, None, style="admissible",
+                           caption=(f"Admissible arcs {en}: a crank, C1 and C2 on one side of AD", f"A 的可行弧段({zh})")))
+    ratio = sc.add("ratio", _ratio_of, AB, AD, visible=False)
+    roots = sc.add("roots", _ratio_roots, D, C1, C2, ratio, *arcs, visible=False,
+                   caption=("", ""))
+    sols = []
+    opt = dict(optional=True, visible=False)
+    for i in range(SLOTS):
+        A = sc.add(f"A_{i + 1}", _nth, roots, i, optional=True, style="candidate", label=f"A{i + 1}",
+                   caption=((f"The points of the arcs where (AC2 − AC1)/(2·AD′) = AB/AD = {AB:g}/{AD:g}",
+                             f"在可行弧段上找 (AC2 − AC1)/(2AD′) = AB/AD 的点") if i == 0 else ("", "")))
+        for name, op, args in (("AB", _scaled, (AD, A, D, sc.add(f"ab_{i}", half_difference, A, C1, C2, **opt))),
+                               ("BC", _scaled, (AD, A, D, sc.add(f"bc_{i}", half_sum, A, C1, C2, **opt))),
+                               ("CD", _scaled, (AD, A, D, AD))):
+            sc.add(f"{name}_{i}", op, *args, unit="mm", **opt)
+        sc.add(f"AD_{i}", _given, AD, unit="mm", **opt)
+        sc.add(f"psi_{i}", angle_deg, D, C1, C2, unit="deg", **opt)
+        sc.add(f"gamma_min_{i}", gamma_min_of, A, D, C1, C2, unit="deg", **opt)
+        sc.add(f"C1_folded_{i}", folded_flag, A, C1, C2, **opt)
+        sc.add(f"A_near_{i}", near_flag, A, C1, C2, D, **opt)
+        sc.add(f"valid_{i}", _true, A, **opt)
+        sols.append({"AB": f"AB_{i}", "BC": f"BC_{i}", "AD": f"AD_{i}", "CD": f"CD_{i}", "psi": f"psi_{i}",
+                     "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
+                     "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
+    return Construction(sc, dict(sols[0]), {"D": "D", "C1": "C1", "C2": "C2"}, solutions=tuple(sols),
+                        no_solution=f"no crank-rocker with K = {K:g}, ψ = {psi:g}° has the crank AB = {AB:g} on the frame AD = {AD:g}")
+
+
+def _ratio_of(AB: float, AD: float) -> float:
+    return AB / AD
+
+
+def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
+    """The twin: the family in CD with the frame fixed, AB(CD) = AB solved slot by slot
+    (:func:`geomcon.analytic.crank_rocker_best.designs_at_ratio`)."""
+    return designs_at_ratio(g["K"], g["psi"], g["AD"], g["AB"])
