@@ -20,8 +20,8 @@ Problem files are untrusted: nothing in them is evaluated, and every size is lim
 Examples
 --------
 >>> p = problem_from_dict({"recipe": "guide_bar.extremes", "given": {"AB": 145, "AC": 290}}, name="demo")
->>> p.given
-{'AB': 145.0, 'AC': 290.0}
+>>> p.given                                  # optional givens without a default are None
+{'AB': 145.0, 'AC': 290.0, 'e': None, 'L': None}
 >>> problem_from_dict({"recipe": "guide_bar.extremes", "given": {"AB": -1, "AC": 290}}, name="demo")
 Traceback (most recent call last):
 ...
