@@ -36,7 +36,7 @@ def test_seed_001_02():
     assert a["double_crank"] == ()
     assert a["double_rocker"] == ((0, 190), (290, 610))
     assert a["immovable"] == ((610, math.inf),)
-    assert a["grashof"] == ((0, 130), (190, 290))
+    assert a["grashof_ranges"] == ((0, 130), (190, 290))
     assert a["boundaries"] == (190, 290, 610)
     assert sol.to_json()["answers"]["immovable"] == [[610.0, None]]          # unbounded: null in JSON
 

@@ -12,7 +12,7 @@ Examples
 >>> r = link_ranges({"AB": 160, "CD": 240, "AD": 210}, "AD")
 >>> r["crank_rocker"], r["double_crank"], r["double_rocker"], r["immovable"]
 ([[190.0, 290.0]], [], [[0.0, 190.0], [290.0, 610.0]], [[610.0, inf]])
->>> r["grashof"], r["boundaries"]
+>>> r["grashof_ranges"], r["boundaries"]
 ([[0.0, 130.0], [190.0, 290.0]], [190.0, 290.0, 610.0])
 """
 from __future__ import annotations
@@ -65,9 +65,9 @@ def link_ranges(known: dict[str, float], frame: str = "AD") -> dict[str, list[li
         pieces.append((lo, hi, kind(mid)))
         if hi != math.inf:
             pieces.append((hi, hi, kind(hi)))
-    out: dict[str, list[list[float]]] = {k: [] for k in KINDS + ("grashof",)}
+    out: dict[str, list[list[float]]] = {k: [] for k in KINDS + ("grashof_ranges",)}
     for lo, hi, k in pieces:
-        for name in (k, "grashof") if _grashof({**known, unknown: (lo + hi) / 2.0 if hi != math.inf else lo + scale}
+        for name in (k, "grashof_ranges") if _grashof({**known, unknown: (lo + hi) / 2.0 if hi != math.inf else lo + scale}
                                                if hi != lo else {**known, unknown: lo}) else (k,):
             run = out[name]
             if run and run[-1][1] >= lo:

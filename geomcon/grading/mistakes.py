@@ -179,6 +179,22 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
         Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
                 given={"omega": _negated}),
     ),
+    "four_bar.analysis": (
+        _K_INV,
+        Mistake("theta_psi", "read", "θ measured at the rocker's pivot (the swing ψ) instead of at the crank's",
+                "在摇杆转动中心处量角(摆角 ψ)当作了极位夹角 θ", answer="theta", step="psi"),
+        Mistake("pressure_vs_transmission", "read", "the transmission angle γ given for the pressure angle α = 90° − γ",
+                "把传动角 γ 当作了压力角 α = 90° − γ", answer="alpha", step="gamma"),
+        Mistake("other_extreme_position", "op",
+                "γmin taken at the other driver-on-frame position (the larger transmission angle)",
+                "最小传动角取在了主动件与机架共线的另一位置(较大者)", step="gamma_min", op=largest_of),
+    ),
+    "rotating_guide_bar.extremes": (
+        Mistake("slow_quick", "read", "the return stroke's crank angle given for the working stroke's",
+                "把空回行程的曲柄转角当作了工作行程的", answer="phi_slow", step="phi_quick"),
+        Mistake("K_inverted", "op", "K computed upside down, φquick/φslow", "K 算成了 φquick/φslow",
+                step="K", op=lambda slow, quick: quick / slow),
+    ),
     "four_bar.instant_centres": (
         Mistake("ratio_inverted", "op", "ω1/ω3 given for ω3/ω1 (P34P13/P14P13)", "把 ω1/ω3 当作了 ω3/ω1",
                 step="w3_w1", op=ratio_upside_down),

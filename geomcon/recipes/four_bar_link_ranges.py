@@ -31,7 +31,7 @@ ANSWERS = (
     Quantity("double_crank", "interval[]", "lengths giving a double-crank"),
     Quantity("double_rocker", "interval[]", "lengths giving a double-rocker"),
     Quantity("immovable", "interval[]", "lengths for which the chain cannot move (high = inf: unbounded)"),
-    Quantity("grashof", "interval[]", "lengths for which Grashof's condition s + l ≤ p + q holds"),
+    Quantity("grashof_ranges", "interval[]", "lengths for which Grashof's condition s + l ≤ p + q holds"),
     Quantity("boundaries", "mm[]", "the lengths where the type changes (each a change-point or a flat chain)"),
 )
 
@@ -110,9 +110,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
             kind, gr = _kind({**known, x: e}, frame)
             pieces.append((e, e, kind, gr))
             lo = e
-    runs: dict[str, list[list[Any]]] = {k: [] for k in list(KIND_NAMES) + ["grashof"]}
+    runs: dict[str, list[list[Any]]] = {k: [] for k in list(KIND_NAMES) + ["grashof_ranges"]}
     for lo_, hi_, kind, gr in pieces:
-        for name in (kind, "grashof") if gr else (kind,):
+        for name in (kind, "grashof_ranges") if gr else (kind,):
             r = runs[name]
             if r and r[-1][1] == lo_:
                 r[-1][1] = hi_
@@ -120,7 +120,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 r.append([lo_, hi_])
     answers = {}
     top = 1.15 * edges[-1]
-    for i, (name, (en, zh)) in enumerate(list(KIND_NAMES.items()) + [("grashof", ("Grashof", "满足杆长条件"))]):
+    for i, (name, (en, zh)) in enumerate(list(KIND_NAMES.items()) + [("grashof_ranges", ("Grashof", "满足杆长条件"))]):
         flat = [v for iv in runs[name] for v in iv]
         sc.add(name, _intervals, *flat, role=Role.MEASUREMENT,
                caption=(f"{en}: {x} in " + (", ".join(f"[{lo_:g}, {hi_:g}]" for lo_, hi_ in runs[name]) or "no range"),

@@ -113,6 +113,26 @@ NAMES: dict[str, AnswerName] = {
     "sens_C1": _n("ΔC1", "per 0.1° of error", "每 0.1° 误差的偏移"),
     "sens_C1_mm": _n("ΔC1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "A": _n("A", "fixed pivot", "固定铰链"),
+    # linkage analysis (issue 14)
+    "type": _n("type", "type of the chain", "机构类型"),
+    "A_full": _b("A turns fully", "A 为周转副"),
+    "B_full": _b("B turns fully", "B 为周转副"),
+    "C_full": _b("C turns fully", "C 为周转副"),
+    "D_full": _b("D turns fully", "D 为周转副"),
+    "input_crank": _b("the link at the first pivot is a crank", "第一固定铰链处的连架杆为曲柄"),
+    "output_crank": _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
+    "dead_points": _b("dead points in the motion", "存在死点"),
+    "gamma": _n("γ", "transmission angle at φ", "φ 位置的传动角"),
+    "crank_rocker": _n("crank-rocker", "lengths for a crank-rocker", "曲柄摇杆机构的杆长范围"),
+    "double_crank": _n("double-crank", "lengths for a double-crank", "双曲柄机构的杆长范围"),
+    "double_rocker": _n("double-rocker", "lengths for a double-rocker", "双摇杆机构的杆长范围"),
+    "immovable": _n("immovable", "lengths for which the chain cannot move", "不能运动的杆长范围"),
+    "grashof_ranges": _n("Grashof", "lengths for which s + l ≤ p + q", "满足杆长条件的杆长范围"),
+    "boundaries": _n("boundaries", "lengths where the type changes", "类型改变处的杆长"),
+    "phi_slow": _n("φslow", "crank angle of the working stroke", "工作行程曲柄转角"),
+    "phi_quick": _n("φquick", "crank angle of the return stroke", "空回行程曲柄转角"),
+    "S": _n("S", "stroke of the ram", "滑枕行程"),
+    "B1B2": _n("B1B2", "where B's path crosses ee", "B 点轨迹与导路的交点距离"),
     "D": _n("D", "fixed pivot", "固定铰链"),
     "grashof_margin": _n("(p + q) − (s + l)", "Grashof margin", "杆长条件余量"),
     "output_crank": _b("CD turns fully", "CD 能整周转动"),
@@ -155,7 +175,7 @@ NAMES: dict[str, AnswerName] = {
 }
 """Every answer's printed name. An answer missing here prints its name with ``_`` as a space."""
 
-UNITS = {"deg": "°", "": "", "bool": "", "point": "", "choice": "", "table": ""}
+UNITS = {"deg": "°", "": "", "bool": "", "point": "", "choice": "", "table": "", "interval": " mm"}
 """How a unit follows a number (any other unit: a space and the unit as the recipe names it, e.g. ``rad/s²``)."""
 
 
@@ -190,9 +210,28 @@ def shown_value(v: Any, unit: str, lang: str = "en") -> str:
     """
     if isinstance(v, bool):
         return ("是" if v else "否") if lang == "zh" else ("yes" if v else "no")
+    if isinstance(v, str):                                  # a word (a choice): the chain's type …
+        return WORDS.get(v, (v, v))[1 if lang == "zh" else 0]
     if isinstance(v, (tuple, list)):
-        return "[" + ", ".join(f"{x:.3f}" for x in v) + "]" + unit_text(unit)
+        return "[" + ", ".join(_element(x) for x in v) + "]" + unit_text(unit)
     return _number(float(v), unit)
+
+
+def _element(x: Any) -> str:
+    """A list's element: a number (∞ for an unbounded end) or an interval ``[low, high]``.
+
+    >>> _element((190.0, float("inf"))), _element(2.5)
+    ('[190.000, ∞]', '2.500')
+    """
+    if isinstance(x, (tuple, list)):
+        return "[" + ", ".join(_element(y) for y in x) + "]"
+    return "∞" if x == float("inf") else f"{x:.3f}"
+
+
+WORDS = {"crank-rocker": ("crank-rocker", "曲柄摇杆机构"), "double-crank": ("double-crank", "双曲柄机构"),
+         "double-rocker": ("double-rocker", "双摇杆机构"), "change-point": ("change-point", "变点机构"),
+         "immovable": ("immovable", "不能运动")}
+"""Answers that are words, printed in each language."""
 
 
 def _remarks(twin: bool | None, printed: Sequence[str], lang: str) -> str:
