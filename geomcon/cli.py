@@ -119,7 +119,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
 
 UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
               "deg[]": "list, °", "[]": "list", "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s",
-              "rad/s": "rad/s"}
+              "rad/s": "rad/s", "mm/s²": "mm/s²", "rad/s²": "rad/s²", "mm/s[]": "list, mm/s", "mm/s²[]": "list, mm/s²",
+              "rad/s[]": "list, rad/s", "rad/s²[]": "list, rad/s²"}
 """How ``geomcon recipes`` names a unit."""
 
 

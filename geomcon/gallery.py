@@ -33,8 +33,9 @@ def to_json_text(sol: Solution) -> str:
 
 def _law_names() -> tuple[str, ...]:
     """The motion laws' names (imported here: a linkage solve never loads the cam modules, nor numpy)."""
+    from .cam.custom_laws import HANDBOOK_LAWS
     from .cam.laws import LAW_NAMES
-    return LAW_NAMES
+    return (*LAW_NAMES, *HANDBOOK_LAWS)
 
 
 def problem_files(problems_dir: Path) -> list[Path]:
@@ -121,7 +122,7 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
         "The full optimum table of seed 004 (crank-slider, best working-stroke transmission angle) is in "
         "[004-02_best_by_K_table.md](004-02_best_by_K_table.md).",
         "",
-        "The five motion laws' s–v–a diagrams (rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm): "
+        "The s–v–a diagrams of the five standard motion laws and the handbooks' three (rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm): "
         + ", ".join(f"[{n}](law_{n}.svg)" for n in _law_names()) + ".",
         "",
         "A graded class (`geomcon check`, issue 13): the worksheet key [grading_key.json](grading_key.json), a "
@@ -169,11 +170,12 @@ def problem_motion_svg(sol: Solution) -> str:
 def law_diagrams() -> dict[str, str]:
     """One s–v–a sheet per motion law: rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm."""
     from .cam.diagrams import motion_diagrams_svg
+    from .cam.custom_laws import HANDBOOK_LAWS
     from .cam.laws import LAWS
     from .cam.program import parse_program
 
     out = {}
-    for name, lw in LAWS.items():
+    for name, lw in {**LAWS, **HANDBOOK_LAWS}.items():
         prog = parse_program([{"kind": "rise", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90},
                               {"kind": "return", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90}])
         out[f"law_{name}.svg"] = motion_diagrams_svg(prog, 20.0, title=f"{name} ({lw.zh}), impact: {lw.impact}")

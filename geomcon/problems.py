@@ -59,6 +59,7 @@ RANGES = {
     "mm/s": (0.0, 1e14),         # a follower's speed (printed answers only)
     "rad/s": (0.0, 1e6),         # an angular speed
     "rad/s²": (0.0, 1e12),       # an angular acceleration
+    "mm/s²": (0.0, 1e20),        # a follower's acceleration (printed answers only)
 }
 """Magnitude range of every given number by unit (lengths: a nonzero |x| in [lo, hi]; others |x| ≤ hi)."""
 

@@ -115,6 +115,15 @@ class Law:
         The same on one float, returning floats (the scalar path; the same bits as ``fn``).
     peak1 : float
         The largest |f′| on [0, 1] (exact: 1, 2, π/2, 2, 15/8), a bound for a quick test of the speeds.
+    fn3 : callable or None
+        ``fn3(x) -> f‴(x)`` on one float (the jerk; where the extrema of f″ are sought,
+        :mod:`geomcon.cam.kinematics`).
+    cuts : tuple of float
+        Fractions inside (0, 1) where f‴ (or f″) jumps: the ends of the law's smooth pieces (a piece owns the
+        half-open interval that starts at its left end).
+    params : tuple
+        The numbers a parametrised law was made from (coefficients, a table), so that two laws made from the
+        same numbers are equal.
     """
 
     name: str
@@ -123,6 +132,9 @@ class Law:
     fn: Callable
     fn1: Callable[[float], tuple[float, float, float]]
     peak1: float = math.inf
+    fn3: Callable[[float], float] | None = None
+    cuts: tuple[float, ...] = ()
+    params: tuple = ()
 
     def f(self, x: float) -> float:
         """f(x) for one x in [0, 1]."""
@@ -135,12 +147,28 @@ class Law:
         return np.asarray(f, dtype=float), np.asarray(d1, dtype=float), np.asarray(d2, dtype=float)
 
 
+def _zero3(x: float) -> float:
+    return 0.0
+
+
+def _cosine3(x: float) -> float:
+    return -math.pi ** 3 / 2.0 * math.sin(math.pi * x)
+
+
+def _cycloidal3(x: float) -> float:
+    return 4.0 * math.pi ** 2 * math.cos(2.0 * math.pi * x)
+
+
+def _poly345_3(x: float) -> float:
+    return 60.0 * (1.0 - 6.0 * x + 6.0 * x * x)
+
+
 LAWS: dict[str, Law] = {l.name: l for l in (
-    Law("uniform", "等速运动规律", "rigid", _uniform, _uniform1, 1.0),
-    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic, _parabolic1, 2.0),
-    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine, _cosine1, math.pi / 2.0),
-    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal, _cycloidal1, 2.0),
-    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345, _poly345_1, 1.875),
+    Law("uniform", "等速运动规律", "rigid", _uniform, _uniform1, 1.0, _zero3),
+    Law("parabolic", "等加速等减速运动规律", "soft", _parabolic, _parabolic1, 2.0, _zero3, (0.5,)),
+    Law("cosine", "余弦加速度(简谐)运动规律", "soft", _cosine, _cosine1, math.pi / 2.0, _cosine3),
+    Law("cycloidal", "正弦加速度(摆线)运动规律", "none", _cycloidal, _cycloidal1, 2.0, _cycloidal3),
+    Law("poly345", "五次多项式(3-4-5)运动规律", "none", _poly345, _poly345_1, 1.875, _poly345_3),
 )}
 LAW_NAMES = tuple(LAWS)
 
@@ -154,9 +182,19 @@ ALIASES = {
 
 
 def law(name: str) -> Law:
-    """The law called ``name`` (or one of its aliases); an unknown name raises :class:`NotAMechanism` listing
-    the known ones."""
-    key = ALIASES.get(name, name)
-    if key not in LAWS:
-        raise NotAMechanism(f"unknown motion law '{name}' (known: {', '.join(LAW_NAMES)}; aliases: {', '.join(ALIASES)})")
-    return LAWS[key]
+    """The law called ``name`` (or one of its aliases): one of the five standard laws or of the handbook laws
+    of :mod:`geomcon.cam.custom_laws` (``double_harmonic``, ``modified_trapezoid``, ``modified_sine``); an
+    unknown name raises :class:`NotAMechanism` listing the known ones. The parametrised laws (``poly``,
+    ``table``) are made by :func:`geomcon.cam.custom_laws.custom_law` from their numbers.
+
+    >>> law("modified_sine").impact, law("改进梯形").name
+    ('none', 'modified_trapezoid')
+    """
+    from .custom_laws import HANDBOOK_ALIASES, HANDBOOK_LAWS, PARAMETRISED
+    key = ALIASES.get(name, HANDBOOK_ALIASES.get(name, name))
+    if key in LAWS:
+        return LAWS[key]
+    if key in HANDBOOK_LAWS:
+        return HANDBOOK_LAWS[key]
+    known = ", ".join((*LAW_NAMES, *HANDBOOK_LAWS, *PARAMETRISED))
+    raise NotAMechanism(f"unknown motion law '{name}' (known: {known}; aliases: {', '.join((*ALIASES, *HANDBOOK_ALIASES))})")

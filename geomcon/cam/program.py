@@ -11,7 +11,11 @@ A problem file gives the program as a list of tables::
 The angles are cam angles in degrees and must add up to 360°. ``h`` is the stroke: mm for a translating
 follower, degrees for an oscillating one; s comes out in the unit of h, its derivatives per radian of cam
 angle. A segment owns the half-open interval [start, end) of cam angle; δ = 360° belongs to the last one.
-A program without a return may be shorter than a turn (a motion-law exercise); cam profiles need
+A rise or return may also use the handbook laws (``double_harmonic``, ``modified_trapezoid``,
+``modified_sine``), a polynomial in the normalised angle x = (δ − start)/angle, ``{kind = "rise", angle = 120,
+law = "poly", coefficients = [0, 0, 0, 10, -15, 6]}`` (f = Σ c_k x^k), or a table of normalised points
+``{…, law = "table", points = [[0, 0], [0.5, 0.5], [1, 1]]}`` joined by a clamped cubic spline
+(:mod:`geomcon.cam.custom_laws`). A program without a return may be shorter than a turn (a motion-law exercise); cam profiles need
 :attr:`Program.full`.
 
 Examples
@@ -34,7 +38,11 @@ from typing import Any, Mapping, Sequence
 import numpy as np
 
 from ..errors import NotAMechanism
+from .custom_laws import PARAM_KEY, PARAMETRISED, custom_law
 from .laws import Law, law
+
+PARAM_KEYS = tuple(PARAM_KEY.values())
+PARAM_LAW = {v: k for k, v in PARAM_KEY.items()}
 
 KINDS = ("rise", "dwell", "return")
 FULL_TURN_REL = 1e-9
@@ -329,9 +337,14 @@ def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") 
     rises = returns = 0
     for i, t in enumerate(tables):
         where = f"{key}[{i}]"
-        extra = [k for k in t if k not in ("kind", "angle", "law")]
+        extra = [k for k in t if k not in ("kind", "angle", "law", *PARAM_KEYS)]
         if extra:
-            raise NotAMechanism(f"{where}: unknown key '{extra[0]}' (a segment takes kind, angle, law)")
+            raise NotAMechanism(f"{where}: unknown key '{extra[0]}' (a segment takes kind, angle, law; "
+                                "coefficients for law = \"poly\", points for law = \"table\")")
+        stray = [k for k in PARAM_KEYS if k in t and t.get("law") != PARAM_LAW[k]]
+        if stray:
+            raise NotAMechanism(f"{where}: {stray[0]} is given for law = {t.get('law')!r}: only law = "
+                                f"\"{PARAM_LAW[stray[0]]}\" takes it")
         kind = t.get("kind")
         if kind not in KINDS:
             raise NotAMechanism(f"{where}: kind must be one of {', '.join(KINDS)}, got {kind!r}")
@@ -342,11 +355,15 @@ def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") 
             lw = None
         else:
             if not isinstance(t.get("law"), str):
-                raise NotAMechanism(f"{where}: a {kind} needs law = one of uniform, parabolic, cosine, cycloidal, poly345")
-            try:
-                lw = law(t["law"])
-            except NotAMechanism as exc:
-                raise NotAMechanism(f"{where}: {exc}") from None
+                raise NotAMechanism(f"{where}: a {kind} needs law = one of uniform, parabolic, cosine, cycloidal, "
+                                    "poly345, double_harmonic, modified_trapezoid, modified_sine, poly, table")
+            if t["law"] in PARAMETRISED:
+                lw = custom_law(t["law"], t, where)
+            else:
+                try:
+                    lw = law(t["law"])
+                except NotAMechanism as exc:
+                    raise NotAMechanism(f"{where}: {exc}") from None
         rises += kind == "rise"
         returns += kind == "return"
         segs.append(Segment(kind, start, float(angle), lw))

@@ -53,6 +53,25 @@ TOL = Quantity("tolerance", "mm", "largest chord error of the sampled profile (d
 STRICT = Quantity("strict", "bool", f"strict profile tolerance ({STRICT_TOLERANCE_REL:g} of the cam's size: "
                   "1e-5 mm on a 100 mm cam)", required=False, default=False, minimum=None)
 
+OMEGA = Quantity("omega", "", "angular speed of the cam, rad/s (gives the follower's velocity and acceleration); "
+                 "0 < ω ≤ 1e4 rad/s (95 000 rpm)", required=False, maximum=1e4)
+SPEED_ANSWERS = (
+    Quantity("v", "mm/s[]", "with omega: follower velocity ω·ds/dδ at the cam angles of `at` (> 0 moving away from O)"),
+    Quantity("a", "mm/s²[]", "with omega: follower acceleration ω²·d²s/dδ² at the cam angles of `at` (ω constant)"),
+    Quantity("v_max", "mm/s", "with omega: largest |v| over the turn (exact: at a root of s″ or an end)"),
+    Quantity("a_max", "mm/s²", "with omega: largest |a| over the turn (exact; one-sided at the ends of pieces; a "
+             "uniform law's infinite accelerations at its rigid impacts are not counted)"),
+)
+"""The follower's speeds of a translating cam when ω is given (:mod:`geomcon.cam.kinematics`)."""
+ARM_SPEED_ANSWERS = (
+    Quantity("omega2", "rad/s[]", "with omega: the arm's angular velocity ω·dψ/dδ at the cam angles of `at` (> 0 "
+             "swinging out, away from its lowest position)"),
+    Quantity("epsilon2", "rad/s²[]", "with omega: the arm's angular acceleration ω²·d²ψ/dδ² at the cam angles of `at`"),
+    Quantity("omega2_max", "rad/s", "with omega: largest |ω2| over the turn (exact)"),
+    Quantity("epsilon2_max", "rad/s²", "with omega: largest |ε2| over the turn (exact; one-sided at the ends of pieces)"),
+)
+"""The arm's angular speeds of an oscillating cam when ω is given."""
+
 PRESSURE_ANSWERS = (
     Quantity("alpha_max_rise", "deg", "largest pressure angle during the rise"),
     Quantity("delta_alpha_max_rise", "deg", "cam angle where it occurs"),
@@ -454,3 +473,25 @@ def arm_at(A0: Point, B0: Point, cam: ArmMotion, at: tuple[float, ...]) -> dict[
 def column(table: dict[str, np.ndarray], key: str) -> tuple[float, ...]:
     """One column of a table of arrays as a list answer."""
     return tuple(float(v) for v in table[key])
+
+
+def add_speed_steps(sc: Scene, answers: dict[str, str], g, program: Program, h: float, *, angular: bool) -> None:
+    """With ``omega`` given: the follower's speeds at ``at`` and their exact maxima over the turn
+    (:func:`geomcon.cam.kinematics.speeds_at`, :func:`~geomcon.cam.kinematics.speed_maxima`): v, a, v_max,
+    a_max of a translating follower, or ω2, ε2 and their maxima of an arm (``angular``, h in degrees)."""
+    omega = g.get("omega")
+    if omega is None:
+        return
+    from ..cam.kinematics import speed_maxima, speeds_at
+    names = ("omega2", "epsilon2", "omega2_max", "epsilon2_max") if angular else ("v", "a", "v_max", "a_max")
+    k = math.pi / 180.0 if angular else 1.0
+    sc.add("speed_maxima", speed_maxima, program, h, float(omega), k, visible=False)
+    for name, i in ((names[2], 0), (names[3], 2)):
+        sc.add(name, pick, Ref("speed_maxima"), i, role=Role.MEASUREMENT, unit="", visible=False)
+        answers[name] = name
+    at = tuple(g.get("at") or ())
+    if at:
+        sc.add("speeds_at", speeds_at, program, h, float(omega), at, k, visible=False)
+        for name, i in ((names[0], 0), (names[1], 1)):
+            sc.add(name, pick, Ref("speeds_at"), i, role=Role.MEASUREMENT, unit="", visible=False)
+            answers[name] = name

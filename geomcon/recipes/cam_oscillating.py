@@ -27,7 +27,8 @@ from ..errors import NotAMechanism
 from ..geometry import LeftOf, Point, RightOf, circle, circle_circle, segment
 from ..scene import Ref, Role, Scene
 from .base import Construction, Quantity, Recipe
-from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, ArmInversion, add_base_circle,
+from ..analytic.cam_motion import follower_speeds
+from .cam_common import (ARM_SPEED_ANSWERS, OMEGA, PRESSURE_ANSWERS, add_speed_steps, AT, PROGRAM, ROTATION, STRICT, TOL, ArmInversion, add_base_circle,
                          add_cam_centre, add_motion_diagram, add_profile_steps, add_roller_circles, arm_division_angles,
                          arm_at, arm_contacts, arm_pressures, arm_velocity, at_least, collect, column,
                          extremum_value, laid_off, minus, normal_segment, pick,
@@ -58,6 +59,7 @@ GIVENS = (
              "to 24 (default: parts of at most 15°)", required=False, maximum=24.0),
     TOL,
     STRICT,
+    OMEGA,
 )
 ANSWERS = (
     Quantity("psi_max", "deg", "angular stroke ψmax, measured between the arm's first and top positions"),
@@ -77,6 +79,7 @@ ANSWERS = (
     Quantity("face_length", "mm", "flat face: the face length the contact sweeps from the pivot's foot, "
              "max(face_max, 0) − min(face_min, 0)"),
     Quantity("face_contact", "mm[]", "flat face: place of the contact along the face at the cam angles of `at`"),
+    *ARM_SPEED_ANSWERS,
 )
 POINTS = ("O", "A0", "B0")
 ROLLER_WARN = 3.0
@@ -331,6 +334,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add(name, column if key else collect_all, ref, *((key,) if key else ()), role=Role.MEASUREMENT,
                    visible=False)
             answers[name] = name
+    add_speed_steps(sc, answers, g, prog, h, angular=True)
     return Construction(sc, answers, {p: p for p in POINTS})
 
 
@@ -360,6 +364,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
         if roller:
             px, py = cam.roller_contact(d, rr)
             out.update(profile_x=collect(*px), profile_y=collect(*py))
+    out.update(follower_speeds(g, angular=True))
     return [out]
 
 

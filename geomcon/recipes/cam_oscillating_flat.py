@@ -20,7 +20,8 @@ from ..geometry import (LeftOf, NearestTo, Point, RightOf, Segment, circle, circ
                         segment, thales_circle)
 from ..scene import Ref, Role, Scene
 from .base import Construction
-from .cam_common import (SCALAR_AT, ArmInversion, add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps,
+from ..analytic.cam_motion import follower_speeds
+from .cam_common import (SCALAR_AT, add_speed_steps, ArmInversion, add_base_circle, add_cam_centre, add_motion_diagram, add_profile_steps,
                          arm_at, arm_division_angles, arm_velocity, collect, column, extremum_deg, extremum_value, flat_convex, negate,
                          pick, pressure_mark, profile_tolerance, program_of, speed_ratio, velocity_segment)
 from .common import add_angle_mark, add_pivot, angle_deg
@@ -500,6 +501,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
         sc.add("alpha", face_pressures_at, fam, pos, role=Role.MEASUREMENT, visible=False)
         sc.add("face_contact", face_places_at, fam, A0, inv, tau, at, role=Role.MEASUREMENT, visible=False)
         answers.update({k: k for k in ("psi", "alpha", "face_contact")})
+    add_speed_steps(sc, answers, g, prog, h, angular=True)
     return Construction(sc, answers, {"O": "O", "A0": "A0", "T0": "T0"})
 
 
@@ -588,4 +590,5 @@ def analytic_flat(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     at = tuple(g.get("at") or ())
     if at:
         out.update(lists_flat(cam, at))
+    out.update(follower_speeds(g, angular=True))
     return [out]

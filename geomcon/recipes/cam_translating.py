@@ -28,7 +28,8 @@ from ..geometry import Point, Segment, circle, distance, segment
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 from .base import Construction, Quantity, Recipe
-from .cam_common import (PRESSURE_ANSWERS, AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
+from ..analytic.cam_motion import follower_speeds
+from .cam_common import (OMEGA, PRESSURE_ANSWERS, SPEED_ANSWERS, add_speed_steps, AT, PROGRAM, ROTATION, STRICT, TOL, add_base_circle, add_cam_centre, add_motion_diagram,
                          add_profile_steps, add_roller_circles, at_least, division_angles, extremum_deg, extremum_value,
                          flat_convex, negate, pick,
                          inversion_sign, minus, normal_segment, pitch_polyline, pressure_mark,
@@ -48,6 +49,7 @@ GIVENS = (
              default=None, maximum=90.0),
     TOL,
     STRICT,
+    OMEGA,
 )
 ANSWERS = (
     Quantity("h", "mm", "stroke, measured between the lowest and highest inverted positions"),
@@ -60,6 +62,7 @@ ANSWERS = (
     Quantity("face_width", "mm", "flat face: the face length the contact sweeps (left + right)"),
     Quantity("s", "mm[]", "displacement at the cam angles of `at`"),
     Quantity("alpha", "deg[]", "pressure angle at the cam angles of `at`"),
+    *SPEED_ANSWERS,
 )
 RISE_WARN = 3.0
 """A warning when ρmin of the pitch curve is below this many roller radii."""
@@ -452,6 +455,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add("alpha", alphas_at, curve, inv, at, visible=False)
     if at:
         answers.update({"s": "s", "alpha": "alpha"})
+    add_speed_steps(sc, answers, g, prog, h, angular=False)
     return Construction(sc, answers, {"O": "O", "B0": "B0"})
 
 
@@ -495,6 +499,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
         if at:
             out["s"] = tuple(float(x) for x in prog.motion(h, np.asarray(at, dtype=float))[0])
             out["alpha"] = tuple(0.0 for _ in at)
+        out.update(follower_speeds(g, angular=False))
         return [out]
     rho = cam.rho_min_pitch()
     out.update({"rho_min_pitch": rho, "rho_min_actual": rho - rr, "undercut": follower == "roller" and rr >= rho})
@@ -507,6 +512,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
     if at:
         out["s"] = tuple(float(x) for x in prog.motion(h, np.asarray(at, dtype=float))[0])
         out["alpha"] = tuple(float(x) for x in cam.alpha(np.asarray(at, dtype=float)))
+    out.update(follower_speeds(g, angular=False))
     return [out]
 
 

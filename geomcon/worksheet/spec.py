@@ -403,6 +403,11 @@ def _forms(q: Quantity) -> str:
     return "a list of numbers or a list of such lists (one of them)"
 
 
+LAW_NUMBERS = ("coefficients", "points")
+"""Program fields that are lists by nature (a ``poly`` law's coefficients, a ``table`` law's points): kept as
+given (checked by the program's parser), never read as a list of choices."""
+
+
 def _program(name: str, rows: list, where: str, slots: list[Slot]) -> list[dict[str, Any]]:
     """A motion program whose fields may hold lists and ranges (slots ``(name, row, field)``)."""
     _check_rows(rows, where)
@@ -414,6 +419,8 @@ def _program(name: str, rows: list, where: str, slots: list[Slot]) -> list[dict[
             if isinstance(v, dict):
                 slots.append(Slot((name, i, field), grid=_grid(v, at)))
                 kept[field] = None
+            elif field in LAW_NUMBERS and isinstance(v, list):   # a law's own numbers: one fixed value, not choices
+                kept[field] = v
             elif isinstance(v, list):
                 slots.append(Slot((name, i, field), choices=_choices(
                     v, at, lambda x: _is_number(x) or isinstance(x, str), "numbers or words")))

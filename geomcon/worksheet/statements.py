@@ -42,7 +42,11 @@ def fill(template: str, values: Mapping[str, str]) -> str:
 LAWS = {"uniform": ("uniform velocity", "等速运动"), "parabolic": ("constant acceleration (parabolic)", "等加速等减速运动"),
         "cosine": ("cosine acceleration (simple harmonic)", "余弦加速度运动"),
         "cycloidal": ("sine acceleration (cycloidal)", "正弦加速度运动"),
-        "poly345": ("3-4-5 polynomial", "3-4-5 多项式运动")}
+        "poly345": ("3-4-5 polynomial", "3-4-5 多项式运动"),
+        "double_harmonic": ("double-harmonic", "双谐波运动"),
+        "modified_trapezoid": ("modified trapezoidal acceleration", "改进梯形加速度运动"),
+        "modified_sine": ("modified sine acceleration", "改进正弦加速度运动"),
+        "poly": ("polynomial", "多项式运动"), "table": ("tabulated", "列表给定的运动")}
 FOLLOWERS = {"knife": ("knife-edge", "尖顶"), "roller": ("roller", "滚子"), "flat": ("flat-faced", "平底")}
 ROTATION = {"ccw": ("counter-clockwise", "逆时针"), "cw": ("clockwise", "顺时针")}
 
@@ -63,6 +67,25 @@ def number(x: Any) -> str:
     return repr(x) if 1e-4 <= abs(x) < 1e15 else f"{x:g}"
 
 
+def _law_numbers(row: Mapping[str, Any], lang: str) -> str:
+    """The numbers of a parametrised law in words: a polynomial's coefficients, a table's points.
+
+    >>> _law_numbers({"law": "poly", "coefficients": [0, 0, 3, -2]}, "en")
+    ' f(x) = Σ c_k x^k with c = (0, 0, 3, -2), x = δ/Φ'
+    >>> _law_numbers({"law": "table", "points": [[0, 0], [0.5, 0.4], [1, 1]]}, "zh")
+    ',过点 (x, f) = (0, 0)、(0.5, 0.4)、(1, 1) 的三次样条(端点速度为零)'
+    """
+    if row.get("law") == "poly" and isinstance(row.get("coefficients"), (list, tuple)):
+        c = ", ".join(number(v) for v in row["coefficients"])
+        return (f" f(x) = Σ c_k x^k with c = ({c}), x = δ/Φ", f" f(x) = Σ c_k x^k,c = ({c}),x = δ/Φ")[lang == "zh"]
+    if row.get("law") == "table" and isinstance(row.get("points"), (list, tuple)):
+        pts = [f"({number(p[0])}, {number(p[1])})" for p in row["points"] if isinstance(p, (list, tuple)) and len(p) == 2]
+        if lang == "zh":
+            return ",过点 (x, f) = " + "、".join(pts) + " 的三次样条(端点速度为零)"
+        return " (the clamped cubic spline through (x, f) = " + ", ".join(pts) + ")"
+    return ""
+
+
 def program_words(program: Any, lang: str) -> str:
     """A cam's motion program in words.
 
@@ -77,6 +100,7 @@ def program_words(program: Any, lang: str) -> str:
     for row in program if isinstance(program, (list, tuple)) else ():
         kind, angle, law = row.get("kind"), number(row.get("angle", 0)), row.get("law", "")
         en_law, zh_law = LAWS.get(law, (str(law), str(law)))
+        en_law, zh_law = en_law + _law_numbers(row, "en"), zh_law + _law_numbers(row, "zh")
         if lang == "zh":
             if kind == "dwell":
                 word = "远休止角" if last == "rise" else "近休止角"
@@ -304,11 +328,32 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "偏置曲柄滑块机构中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,导路位于 A 下方 e = {e} mm,曲柄转角 φ = {phi}°。"
              "求机构的全部瞬心(P34 在垂直于导路的无穷远处,其余用三心定理求)。"),
     },
+    "cam.oscillating": {
+        "omega": ("A disc cam turning {rotation} drives an oscillating {follower} follower: the arm's pivot A0 is "
+             "a = {a} mm from the cam's centre O, the arm is L = {L} mm long, the base circle r0 = {r0} mm, and "
+             "the arm swings through h = {h}°; motion program: {program}.",
+             "一盘形凸轮{rotation}转动,推动摆动{follower}从动件:摆杆转轴 A0 与凸轮回转中心 O 相距 a = {a} mm,"
+             "摆杆长 L = {L} mm,基圆半径 r0 = {r0} mm,最大摆角 h = {h}°;运动规律:{program}。"),
+    },
+    "cam.base_radius": {
+        "alpha+rho": ("A disc cam turning {rotation} drives a translating {follower} follower through the stroke h = {h} mm; "
+             "motion program: {program}. The pressure angle must not exceed {alpha_allow}° and the profile's "
+             "radius of curvature must be at least {rho_allow} mm. Find the smallest base circle.",
+             "一盘形凸轮{rotation}转动,推动直动{follower}从动件,行程 h = {h} mm;运动规律:{program}。"
+             "许用压力角 {alpha_allow}°,廓线曲率半径不得小于 {rho_allow} mm。求最小基圆半径。"),
+        "flat": ("A disc cam turning {rotation} drives a translating flat-faced follower through the stroke h = {h} mm; "
+                 "motion program: {program}. Contact stress asks the profile's radius of curvature to be at least "
+                 "{rho_allow} mm everywhere. Find the smallest base circle.",
+                 "一盘形凸轮{rotation}转动,推动直动平底从动件,行程 h = {h} mm;运动规律:{program}。"
+                 "按接触应力要求,凸轮廓线各处曲率半径不得小于 {rho_allow} mm。求最小基圆半径。"),
+    },
 }
 """Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
 
 ROLLER = (" The roller's radius is rr = {rr} mm.", "滚子半径 rr = {rr} mm。")
 """Added to a cam statement when the follower has a roller."""
+OMEGA_WORDS = (" The cam turns at a constant ω = {omega} rad/s.", "凸轮以等角速度 ω = {omega} rad/s 转动。")
+"""Added to a cam statement when ω is given (the follower's speeds are then asked)."""
 CAM_DRAW = (" Draw the cam profile by the inversion method.", "试用反转法绘制凸轮轮廓。")
 """Ends a cam statement (after the roller)."""
 
@@ -355,6 +400,12 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return "offset" if given.get("e") not in (None, 0, 0.0) else "centric"
     if recipe == "four_bar.kinematics":
         return "E" if "BE" in has else ""
+    if recipe == "cam.oscillating":                 # (without ω: the generic statement, as before)
+        return "omega" if "omega" in has and given.get("follower") != "flat" else None
+    if recipe == "cam.base_radius":                 # the curvature-limited forms; the others: generic
+        if "rho_allow" not in has or given.get("motion") == "oscillating":
+            return None
+        return "flat" if given.get("follower") == "flat" else ("alpha+rho" if "alpha_allow" in has else None)
     if recipe in TEMPLATES:
         return ""
     return None
@@ -369,7 +420,10 @@ def default_template(recipe: str, given: Mapping[str, Any], title: str = "") -> 
     if recipe.startswith("cam."):
         if given.get("follower") == "roller" and given.get("rr") is not None:
             en, zh = en + ROLLER[0], zh + ROLLER[1]
-        en, zh = en + CAM_DRAW[0], zh + CAM_DRAW[1]
+        if given.get("omega") is not None:
+            en, zh = en + OMEGA_WORDS[0], zh + OMEGA_WORDS[1]
+        if recipe != "cam.base_radius":
+            en, zh = en + CAM_DRAW[0], zh + CAM_DRAW[1]
     return en, zh
 
 
@@ -414,8 +468,19 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "w3_w1": ("the ratio ω3/ω1", "角速度比 ω3/ω1"), "w2_w1": ("the ratio ω2/ω1", "角速度比 ω2/ω1"),
     "i13": ("the transmission ratio i13", "传动比 i13"),
     "vC_w1": ("the slider's velocity per unit crank speed vC/ω1", "滑块速度与曲柄角速度之比 vC/ω1"),
+    "v_max": ("the follower's largest speed vmax", "从动件最大速度 vmax"),
+    "a_max": ("the follower's largest acceleration amax", "从动件最大加速度 amax"),
+    "omega2_max": ("the arm's largest angular speed ω2,max", "摆杆最大角速度 ω2,max"),
+    "epsilon2_max": ("the arm's largest angular acceleration ε2,max", "摆杆最大角加速度 ε2,max"),
+    "r0": ("the smallest base circle r0", "最小基圆半径 r0"),
 }
 """How a statement names an asked answer (English, Chinese); others are named by their answer name."""
+
+
+AT_WORDS = {"v": ("the follower's velocity v", "从动件速度 v"), "a": ("the follower's acceleration a", "从动件加速度 a"),
+            "omega2": ("the arm's angular velocity ω2", "摆杆角速度 ω2"),
+            "epsilon2": ("the arm's angular acceleration ε2", "摆杆角加速度 ε2")}
+"""How a statement names a list answer at a cam angle of ``at`` (besides s and α)."""
 
 
 def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: str) -> str:
@@ -432,6 +497,9 @@ def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: s
             return (f"the displacement s at {where}", f"{where} 时的位移 s")[k]
         if name == "alpha":
             return (f"the pressure angle α at {where}", f"{where} 时的压力角 α")[k]
+        if name in AT_WORDS:
+            en, zh = AT_WORDS[name]
+            return (f"{en} at {where}", f"{where} 时的{zh}")[k]
         return f"{name} ({where})"
     return ANSWER_WORDS.get(name, (name, name))[k]
 
