@@ -229,3 +229,21 @@ def test_bad_laws_are_refused_naming_the_segment(row, message):
     with pytest.raises(NotAMechanism) as exc:
         parse_program([{"kind": "rise", "angle": 180, **row}, {"kind": "return", "angle": 180, "law": "cosine"}])
     assert "program[0]" in str(exc.value) and message in str(exc.value), str(exc.value)
+
+
+def test_statements_name_the_new_forms():
+    from geomcon.worksheet.statements import answer_words, default_template, fill, shown_givens, template_form
+    g = {"follower": "flat", "h": 39.5, "rho_allow": 40, "rotation": "ccw",
+         "program": [{"kind": "rise", "angle": 180, "law": "poly", "coefficients": [0, 2, -1]},
+                     {"kind": "return", "angle": 180, "law": "table", "points": [[0, 0], [0.5, 0.4], [1, 1]]}]}
+    assert template_form("cam.base_radius", g) == "flat"
+    en, zh = (fill(t, shown_givens("cam.base_radius", g, lang)) for t, lang in zip(default_template("cam.base_radius", g),
+                                                                                  ("en", "zh")))
+    assert "c = (0, 2, -1)" in en and "(0.5, 0.4)" in en and "40 mm" in en and "{" not in en
+    assert "平底" in zh and "40 mm" in zh and "{" not in zh
+    assert template_form("cam.base_radius", {"h": 20, "alpha_allow": 30}) is None          # unchanged: generic
+    assert template_form("cam.oscillating", {"follower": "roller", "a": 100}) is None
+    t = {"follower": "knife", "r0": 40, "h": 20, "omega": 12.5, "program": []}
+    assert "ω = {omega} rad/s" in default_template("cam.translating", t)[0]
+    assert answer_words("v", 1, {"at": [30, 60]}, "en") == "the follower's velocity v at δ = 60°"
+    assert answer_words("epsilon2", 0, {"at": [30]}, "zh") == "δ = 30° 时的摆杆角加速度 ε2"

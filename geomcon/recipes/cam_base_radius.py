@@ -45,6 +45,8 @@ from ..errors import NotAMechanism
 from ..geometry import Arc, Line, Point, Polyline, Segment, circle, line_line, rotate, segment
 from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
+from .cam_base_radius_rho import (add_rho_steps, analytic_flat_rho, construct_flat_rho, is_rho_form, margins,
+                                  twin_grow, validate_rho)
 from .common import add_angle_mark, add_bar, angle_deg, length
 
 ALPHA_MIN = 1e-6
@@ -56,8 +58,8 @@ GIVENS = (
     Quantity("h", "mm", "stroke: mm (translating), or the arm's angular stroke ψmax in degrees (oscillating)"),
     Quantity("program", "table[]", "motion program: rise, dwells, return (a full turn)"),
     Quantity("alpha_allow", "deg", "allowed pressure angle of the rise, 1e-6° ≤ α_allow < 90° (below, the lines "
-             "at ±α_allow are within 1e-8 rad of each other; an arm needs about α_allow > h/2 for the wedges to meet)",
-             minimum=ALPHA_MIN, inclusive=True, maximum=90.0),
+             "at ±α_allow are within 1e-8 rad of each other; an arm needs about α_allow > h/2 for the wedges to meet); "
+             "required except for a flat face", required=False, minimum=ALPHA_MIN, inclusive=True, maximum=90.0),
     Quantity("alpha_allow_return", "deg", "allowed pressure angle of the return (unconstrained when absent), "
              "1e-6° ≤ α < 90°", required=False, minimum=ALPHA_MIN, inclusive=True, maximum=90.0),
     Quantity("rotation", "choice", "sense of rotation of the cam", required=False, default="ccw", minimum=None,
@@ -70,6 +72,11 @@ GIVENS = (
     Quantity("a", "mm", "oscillating: a fixed centre distance OA0; absent: the best one", required=False),
     Quantity("arm", "choice", "oscillating: side of the line A0→O the roller lies on, as in cam.oscillating",
              required=False, default="left", minimum=None, choices=("left", "right")),
+    Quantity("rho_allow", "mm", "translating: smallest allowed radius of curvature — of the pitch curve (knife, "
+             "roller; its convex parts) or of the profile (flat face: r0 + s + s″ ≥ ρallow)", required=False),
+    Quantity("follower", "choice", "translating: knife or roller (the pressure-angle design) or flat (a flat face: "
+             "curvature limit only, α ≡ 0)", required=False, default=None, minimum=None,
+             choices=("knife", "roller", "flat")),
 )
 ANSWERS = (
     Quantity("r0", "mm", "smallest base circle radius of the pitch curve"),
@@ -79,6 +86,10 @@ ANSWERS = (
     Quantity("rr_max", "mm", "largest roller radius by the rule rr ≤ 0.8·ρmin"),
     Quantity("a", "mm", "oscillating: the centre distance OA0 (best, or as given)"),
     Quantity("psi0", "deg", "oscillating: the arm's initial angle ψ0 = ∠OA0B0"),
+    Quantity("r0_alpha", "mm", "with rho_allow (knife, roller): the base circle the pressure-angle limit alone needs"),
+    Quantity("r0_rho", "mm", "with rho_allow: the base circle the curvature limit needs (at the design's offset; at "
+             "least r0_alpha for a knife or roller)"),
+    Quantity("rho_min_profile", "mm", "flat face: the designed profile's smallest radius of curvature, min(r0 + s + s″)"),
 )
 
 
@@ -90,7 +101,16 @@ def _program(g: Mapping[str, Any]) -> Program:
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
-    _program(g)
+    prog = _program(g)
+    if is_rho_form(g):
+        validate_rho(g, prog)
+        if g.get("follower") == "flat":
+            return []
+    elif g.get("alpha_allow") is None:
+        raise NotAMechanism("alpha_allow is missing (the allowed pressure angle of the rise, degrees)")
+    if g.get("follower") is not None and g.get("motion", "translating") == "oscillating":
+        raise NotAMechanism(f"follower = {g['follower']!r} is given for an oscillating follower (knife or roller arm: "
+                            "leave it out)")
     for key in ("alpha_allow", "alpha_allow_return"):
         if g.get(key) is not None and not 0.0 < g[key] < 90.0:
             raise NotAMechanism(f"{key} = {g[key]:g}° must lie in (0°, 90°)")
@@ -237,6 +257,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     the arm's positions with their velocity-image points (oscillating, :func:`construct_arm`)."""
     if g.get("motion", "translating") == "oscillating":
         return construct_arm(g)
+    if g.get("follower") == "flat":
+        return construct_flat_rho(g, _program(g))
     prog, h = _program(g), g["h"]
     rotation = g.get("rotation", "ccw")
     k = 1.0 if rotation == "ccw" else -1.0
@@ -283,7 +305,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("dim_r0", lambda o, b, v: marks.Dimension(o, b, "r0", v, 0.08 * scale), O, B0, r0, role=Role.ANNOTATION,
            style="dim")
     names = ("r0", "e", "s0", "rho_min_pitch", "rr_max")
-    return Construction(sc, {n: n for n in names}, {"O": "O", "B0": "B0"})
+    answers = {n: n for n in names}
+    if g.get("rho_allow") is not None:
+        add_rho_steps(sc, answers, g, prog)
+    return Construction(sc, answers, {"O": "O", "B0": "B0"})
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
@@ -296,8 +321,13 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         cam = arm_cam(g, out["a"], out["r0"], out["psi0"])
         rho = arm_rho_min(cam)
         return [{**out, "rho_min_pitch": rho, "rr_max": RR_FACTOR * rho}]
+    if g.get("follower") == "flat":
+        return analytic_flat_rho(g, prog)
     out = best_base(prog, g["h"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
                     alpha_allow_return=g.get("alpha_allow_return"), e=g.get("e"))
+    if g.get("rho_allow") is not None:
+        r0 = twin_grow(prog, g["h"], g.get("rotation", "ccw"), out["e"], out["r0"], g["rho_allow"])
+        out = {**out, "r0_alpha": out["r0"], "r0_rho": r0, "r0": r0, "s0": math.sqrt((r0 - out["e"]) * (r0 + out["e"]))}
     rho = TranslatingCam(prog, g["h"], out["r0"], out["e"], g.get("rotation", "ccw")).rho_min_pitch()
     return [{**out, "rho_min_pitch": rho, "rr_max": RR_FACTOR * rho}]
 
@@ -312,6 +342,12 @@ def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str
         if g.get("alpha_allow_return") is not None and prog.ret is not None:
             over = max(over, cam.worst_pressure("return")[0] - g["alpha_allow_return"])
         return [("alpha_max − alpha_allow (the active limit)", over, 0.0, "deg")]
+    if g.get("follower") == "flat":
+        rho = TranslatingCam(prog, g["h"], ans["r0"], 0.0, g.get("rotation", "ccw")).flat_rho_min()
+        return [("rho_min_profile − rho_allow (the active limit)", rho - g["rho_allow"], 0.0, "mm")]
+    if g.get("rho_allow") is not None:
+        return [("the limits' smallest relative margin (0: one active, none exceeded)",
+                 margins(g, prog, ans["r0"], ans["e"]), 0.0, "")]
     cam = TranslatingCam(prog, g["h"], ans["r0"], ans["e"], g.get("rotation", "ccw"))
     over = cam.alpha_max("rise")[0] - g["alpha_allow"]
     if g.get("alpha_allow_return") is not None:

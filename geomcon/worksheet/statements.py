@@ -71,13 +71,13 @@ def _law_numbers(row: Mapping[str, Any], lang: str) -> str:
     """The numbers of a parametrised law in words: a polynomial's coefficients, a table's points.
 
     >>> _law_numbers({"law": "poly", "coefficients": [0, 0, 3, -2]}, "en")
-    ' f(x) = Σ c_k x^k with c = (0, 0, 3, -2), x = δ/Φ'
+    ' (f(x) = Σ c_k x^k with c = (0, 0, 3, -2), x = δ/Φ)'
     >>> _law_numbers({"law": "table", "points": [[0, 0], [0.5, 0.4], [1, 1]]}, "zh")
     ',过点 (x, f) = (0, 0)、(0.5, 0.4)、(1, 1) 的三次样条(端点速度为零)'
     """
     if row.get("law") == "poly" and isinstance(row.get("coefficients"), (list, tuple)):
         c = ", ".join(number(v) for v in row["coefficients"])
-        return (f" f(x) = Σ c_k x^k with c = ({c}), x = δ/Φ", f" f(x) = Σ c_k x^k,c = ({c}),x = δ/Φ")[lang == "zh"]
+        return (f" (f(x) = Σ c_k x^k with c = ({c}), x = δ/Φ)", f" f(x) = Σ c_k x^k,c = ({c}),x = δ/Φ")[lang == "zh"]
     if row.get("law") == "table" and isinstance(row.get("points"), (list, tuple)):
         pts = [f"({number(p[0])}, {number(p[1])})" for p in row["points"] if isinstance(p, (list, tuple)) and len(p) == 2]
         if lang == "zh":
@@ -100,7 +100,7 @@ def program_words(program: Any, lang: str) -> str:
     for row in program if isinstance(program, (list, tuple)) else ():
         kind, angle, law = row.get("kind"), number(row.get("angle", 0)), row.get("law", "")
         en_law, zh_law = LAWS.get(law, (str(law), str(law)))
-        en_law, zh_law = en_law + _law_numbers(row, "en"), zh_law + _law_numbers(row, "zh")
+        en_more, zh_law = _law_numbers(row, "en"), zh_law + _law_numbers(row, "zh")
         if lang == "zh":
             if kind == "dwell":
                 word = "远休止角" if last == "rise" else "近休止角"
@@ -111,7 +111,7 @@ def program_words(program: Any, lang: str) -> str:
             if kind == "dwell":
                 parts.append(f"dwell {angle}°")
             else:
-                parts.append(f"{kind} through {angle}° with {en_law} motion")
+                parts.append(f"{kind} through {angle}° with {en_law} motion{en_more}")
         last = kind
     return (",".join(parts)) if lang == "zh" else ", ".join(parts)
 
@@ -336,11 +336,12 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "摆杆长 L = {L} mm,基圆半径 r0 = {r0} mm,最大摆角 h = {h}°;运动规律:{program}。"),
     },
     "cam.base_radius": {
-        "alpha+rho": ("A disc cam turning {rotation} drives a translating {follower} follower through the stroke h = {h} mm; "
-             "motion program: {program}. The pressure angle must not exceed {alpha_allow}° and the profile's "
+        "alpha+rho": ("A disc cam turning {rotation} drives a translating roller (or knife-edge) follower through the "
+                      "stroke h = {h} mm; "
+             "motion program: {program}. The pressure angle must not exceed {alpha_allow}° and the pitch curve's "
              "radius of curvature must be at least {rho_allow} mm. Find the smallest base circle.",
-             "一盘形凸轮{rotation}转动,推动直动{follower}从动件,行程 h = {h} mm;运动规律:{program}。"
-             "许用压力角 {alpha_allow}°,廓线曲率半径不得小于 {rho_allow} mm。求最小基圆半径。"),
+             "一盘形凸轮{rotation}转动,推动直动滚子(或尖顶)从动件,行程 h = {h} mm;运动规律:{program}。"
+             "许用压力角 {alpha_allow}°,理论廓线曲率半径不得小于 {rho_allow} mm。求最小基圆半径。"),
         "flat": ("A disc cam turning {rotation} drives a translating flat-faced follower through the stroke h = {h} mm; "
                  "motion program: {program}. Contact stress asks the profile's radius of curvature to be at least "
                  "{rho_allow} mm everywhere. Find the smallest base circle.",
