@@ -64,15 +64,15 @@ def _root(g: Callable[[float], float], lo: float, hi: float, glo: float) -> floa
             hi = mid
 
 
-def largest_abs(value: Callable[[float], float], slope: Callable[[float], float],
-                cuts: tuple[float, ...]) -> tuple[float, float]:
-    """(max |value|, where) on [0, 1]: the ends of every piece (one-sided: a piece's right end just below the
-    cut) and the roots of ``slope`` inside each piece."""
+def candidates(slope: Callable[[float], float], cuts: tuple[float, ...]) -> list[float]:
+    """Where a function whose derivative is ``slope`` may be extreme on [0, 1]: the ends of every piece
+    (one-sided: a piece's right end just below the cut) and the roots of ``slope`` inside each piece (sign
+    changes on a grid of :data:`GRID` cells, bisected)."""
     edges = (0.0, *cuts, 1.0)
-    best, where = -1.0, 0.0
+    cands = []
     for p0, p1 in zip(edges, edges[1:]):
         right = p1 if p1 == 1.0 else math.nextafter(p1, p0)
-        cands = [p0, right]
+        cands += [p0, right]
         xs = [p0 + (right - p0) * i / GRID for i in range(GRID + 1)]
         gs = [slope(x) for x in xs]
         for x0, x1, g0, g1 in zip(xs, xs[1:], gs, gs[1:]):
@@ -80,10 +80,17 @@ def largest_abs(value: Callable[[float], float], slope: Callable[[float], float]
                 cands.append(x0)
             elif g1 != 0.0 and (g0 > 0.0) != (g1 > 0.0):
                 cands.append(_root(slope, x0, x1, g0))
-        for x in cands:
-            v = abs(value(x))
-            if v > best:
-                best, where = v, x
+    return cands
+
+
+def largest_abs(value: Callable[[float], float], slope: Callable[[float], float],
+                cuts: tuple[float, ...]) -> tuple[float, float]:
+    """(max |value|, where) on [0, 1] over the :func:`candidates` (the first one reaching it)."""
+    best, where = -1.0, 0.0
+    for x in candidates(slope, cuts):
+        v = abs(value(x))
+        if v > best:
+            best, where = v, x
     return best, where
 
 
@@ -134,24 +141,12 @@ def speed_maxima(program: Program, h: float, omega: float, scale: float = 1.0) -
 
 def smallest(value: Callable[[float], float], slope: Callable[[float], float], cuts: tuple[float, ...]
              ) -> tuple[float, float]:
-    """(min of value, where) on [0, 1]: :func:`largest_abs`'s candidates (piece ends, one-sided, and the
-    roots of ``slope``), the smallest value."""
+    """(min of value, where) on [0, 1] over the :func:`candidates` (the first one reaching it)."""
     best, where = math.inf, 0.0
-    edges = (0.0, *cuts, 1.0)
-    for p0, p1 in zip(edges, edges[1:]):
-        right = p1 if p1 == 1.0 else math.nextafter(p1, p0)
-        cands = [p0, right]
-        xs = [p0 + (right - p0) * i / GRID for i in range(GRID + 1)]
-        gs = [slope(x) for x in xs]
-        for x0, x1, g0, g1 in zip(xs, xs[1:], gs, gs[1:]):
-            if g0 == 0.0:
-                cands.append(x0)
-            elif g1 != 0.0 and (g0 > 0.0) != (g1 > 0.0):
-                cands.append(_root(slope, x0, x1, g0))
-        for x in cands:
-            v = value(x)
-            if v < best:
-                best, where = v, x
+    for x in candidates(slope, cuts):
+        v = value(x)
+        if v < best:
+            best, where = v, x
     return best, where
 
 
