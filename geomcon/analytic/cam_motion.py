@@ -17,7 +17,7 @@ Examples
 >>> round(s, 12), round(v * math.pi / 10.0, 4)
 (5.0, 1.7596)
 >>> [round(x, 6) for x in maxima(prog, 10.0)]
-[5.601011, 2.240507]
+[5.600992, 5.600992]
 """
 from __future__ import annotations
 

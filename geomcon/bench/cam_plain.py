@@ -178,10 +178,21 @@ def _roller(out: dict[str, Any], g: Mapping[str, Any]) -> None:
     out["undercut"] = roller and rr >= out["rho_min_pitch"]
 
 
+COVERS = "the scalar reference covers knife and roller followers with the five standard laws, without omega"
+
+
+def _plain_form(g: Mapping[str, Any]) -> bool:
+    """A knife or roller follower, every law one of :data:`LAWS`, no ω (the follower's speeds and the handbook
+    and parametrised laws are the twin's to check)."""
+    rows = g.get("program") or ()
+    return (g.get("follower") in ("knife", "roller") and g.get("omega") is None
+            and all(r.get("kind") == "dwell" or r.get("law") in LAWS for r in rows))
+
+
 def translating_plain(g: Mapping[str, Any]) -> dict[str, Any]:
     """``cam.translating`` with a knife or roller follower: the answers above, by scalar code."""
-    if g["follower"] not in ("knife", "roller"):
-        raise ValueError("the scalar reference covers knife and roller followers")
+    if not _plain_form(g):
+        raise ValueError(COVERS)
     h, r0, e = g["h"], g["r0"], g.get("e") or 0.0
     k = 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0
     s0 = math.sqrt((r0 - e) * (r0 + e))
@@ -210,8 +221,8 @@ def translating_plain(g: Mapping[str, Any]) -> dict[str, Any]:
 
 def oscillating_plain(g: Mapping[str, Any]) -> dict[str, Any]:
     """``cam.oscillating`` with a knife or roller follower: the answers above (and ψ0), by scalar code."""
-    if g["follower"] not in ("knife", "roller"):
-        raise ValueError("the scalar reference covers knife and roller followers")
+    if not _plain_form(g):
+        raise ValueError(COVERS)
     a, L, r0, h = g["a"], g["L"], g["r0"], g["h"]
     sg = 1 if g.get("rotation", "ccw") == "ccw" else -1
     tu = -1 if g.get("arm", "left") == "left" else 1
@@ -265,4 +276,4 @@ CAM_PLAIN: dict[str, Callable[[Mapping[str, Any]], dict[str, Any]]] = {
 
 def covered(recipe: str, given: Mapping[str, Any]) -> bool:
     """Whether :data:`CAM_PLAIN` has a reference for this problem."""
-    return recipe in CAM_PLAIN and given.get("follower") in ("knife", "roller")
+    return recipe in CAM_PLAIN and _plain_form(given)
