@@ -269,8 +269,9 @@ def _point(value: Any, where: str) -> tuple[float, float]:
 
 
 def _tables(value: Any, where: str) -> tuple[dict[str, Any], ...]:
-    """A non-empty list of tables (e.g. a cam's motion program); the recipe checks their contents."""
-    if not isinstance(value, list) or not value or not all(isinstance(v, Mapping) for v in value):
+    """A non-empty list of tables (e.g. a cam's motion program); the recipe checks their contents. A tuple of
+    tables (the normalised form this returns, as a drafted variant passes it again) is taken too."""
+    if not isinstance(value, (list, tuple)) or not value or not all(isinstance(v, Mapping) for v in value):
         raise ProblemError(f"{where} must be a non-empty list of tables, e.g. [{{kind = \"rise\", angle = 120}}], "
                            f"got {_short(value)}")
     if len(value) > LIMITS["table_rows"]:

@@ -103,6 +103,46 @@ def ratio_upside_down(P: Any, fixed1: Any, fixed2: Any) -> float:
     return ratio_along(P, fixed2, fixed1)
 
 
+def accel_times_omega(program: Any, h: float, omega: float, *rest: Any) -> tuple:
+    """A cam follower's speeds with the acceleration taken as ω·s″ (ω not squared): :func:`speeds_at` or
+    :func:`speed_maxima`'s result with every acceleration divided by ω."""
+    from ..cam.kinematics import speed_maxima, speeds_at
+    if rest and isinstance(rest[0], tuple):                         # speeds_at(program, h, ω, at, scale)
+        v, a = speeds_at(program, h, omega, *rest)
+        return v, tuple(x / omega for x in a)
+    vm, dv, am, da = speed_maxima(program, h, omega, *rest)
+    return vm, dv, am / omega, da
+
+
+def rise_only(program: Any, h: float, omega: float, *rest: Any) -> tuple:
+    """The maxima of the rise alone (the return's larger speeds not looked at)."""
+    from ..cam.kinematics import speed_maxima
+    from ..cam.program import Program
+    return speed_maxima(Program(tuple(s for s in program.segments if s.kind != "return")), h, omega, *rest)
+
+
+def rpm_as_rad_s(omega: Any) -> Any:
+    """ω in rev/min used as if it were rad/s: the given ω (rad/s) times 60/(2π)."""
+    return float(omega) * 30.0 / __import__("math").pi if omega else omega
+
+
+def floor_added(rho_allow: float, floor: tuple) -> float:
+    """A flat face's r0 = ρallow + min(s + s″) (the sign of the minimum lost)."""
+    return rho_allow + floor[0]
+
+
+_SPEEDS = (
+    Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
+            step="speeds_at", op=accel_times_omega),
+    Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
+            step="speed_maxima", op=accel_times_omega),
+    Mistake("rise_only", "op", "the largest speed and acceleration of the rise only (the return's not compared)",
+            "只求了推程的最大速度和加速度(未与回程比较)", step="speed_maxima", op=rise_only),
+    Mistake("rpm_as_rad_s", "given", "the cam's speed in rev/min used as rad/s (not times 2π/60)",
+            "把转速 (r/min) 当作角速度 (rad/s) 使用(未乘 2π/60)", given={"omega": rpm_as_rad_s}),
+)
+"""The follower-speed mistakes of the cam recipes with a given ω."""
+
 _K_INV = Mistake("K_inverted", "op", "K computed upside down, (180° − θ)/(180° + θ)", "K 算成了 (180° − θ)/(180° + θ)",
                  step="K", op=k_inverted)
 _PITCH = ("the pitch curve's value given for the actual profile (the roller radius not subtracted)",
@@ -142,12 +182,20 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
         _TURN,
         Mistake("offset_side", "given", "the offset laid off on the other side of the cam's centre",
                 "偏距偏在了凸轮中心的另一侧", given={"e": _negated}),
+        *_SPEEDS,
     ),
     "cam.oscillating": (
         Mistake("pitch_vs_actual", "read", *_PITCH, answer="rho_min_actual", step="rho_min_pitch"),
         Mistake("pitch_vs_actual", "read", *_PITCH, answer="profile_x", step="pitch_x"),
         Mistake("pitch_vs_actual", "read", *_PITCH, answer="profile_y", step="pitch_y"),
         _TURN,
+        *_SPEEDS,
+    ),
+    "cam.base_radius": (
+        Mistake("alpha_limit_only", "read", "the base circle of the pressure-angle limit alone (ρmin not checked)",
+                "只按许用压力角确定基圆(未校核曲率半径)", answer="r0", step="r0_alpha"),
+        Mistake("floor_sign", "op", "r0 = ρallow + min(s + s″): the minimum's sign lost",
+                "r0 取成了 ρallow + min(s + s″)(最小值的符号弄错)", step="r0", op=floor_added),
     ),
     "cam.eccentric": (
         Mistake("pitch_vs_actual", "read", "the base circle of the pitch curve given for the actual profile's",
@@ -210,5 +258,5 @@ def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
     return MISTAKES.get(recipe, ())
 
 
-__all__ = ["KINDS", "MISTAKES", "Mistake", "coriolis_left_out", "coriolis_reversed", "k_inverted", "largest_of",
+__all__ = ["KINDS", "MISTAKES", "Mistake", "accel_times_omega", "floor_added", "rise_only", "rpm_as_rad_s", "coriolis_left_out", "coriolis_reversed", "k_inverted", "largest_of",
            "left_out", "mistakes_of", "ratio_upside_down"]

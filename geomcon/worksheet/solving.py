@@ -28,7 +28,18 @@ def solve_given(recipe: str, given: Mapping[str, Any]) -> Solution:
         Bad givens (``ProblemError``) or no mechanism (``NotAMechanism``).
     """
     rec = get_recipe(recipe)
-    return solve(Problem(id=recipe, recipe=rec.name, given=validate_given(rec, given)))
+    raw = {k: _raw(v) for k, v in given.items() if v is not None}      # a problem's normalised givens, as a file's
+    return solve(Problem(id=recipe, recipe=rec.name, given=validate_given(rec, raw)))
+
+
+def _raw(value: Any) -> Any:
+    """A normalised given as a problem file writes it: tuples (lists, a program's rows) back to lists; an
+    absent optional given (None) is left out by the caller.
+
+    >>> _raw((1.0, (2.0, 3.0)))
+    [1.0, [2.0, 3.0]]
+    """
+    return [_raw(v) for v in value] if isinstance(value, tuple) else value
 
 
 def read(sol: Solution, refs: Sequence[AnswerRef]) -> list[dict[str, float | None]]:
