@@ -489,7 +489,7 @@ class Solution:
                 printed.append(f"{p['published']:g}" + (f"{sep}{how}" if how else "") + doubt)
             lines.append(result_line(q.name, self.answers[q.name], q.unit,
                                      twin=None if not rows else all(r["ok"] for r in rows), printed=printed,
-                                     lang=lang))
+                                     lang=lang, recipe=self.recipe.name))
         return lines
 
     def info_steps(self) -> list[int]:

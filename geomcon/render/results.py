@@ -172,8 +172,25 @@ NAMES: dict[str, AnswerName] = {
     "w2_w1": _n("ω2/ω1", "from P24", "由 P24 求得"),
     "i13": _n("i13", "transmission ratio ω1/ω3", "传动比 ω1/ω3"),
     "vC_w1": _n("vC/ω1", "slider velocity per unit crank speed", "滑块速度与曲柄角速度之比"),
+    # cams: the follower's speeds (issue 14), the base circle's limits
+    "v_max": _n("vmax", "largest follower speed", "从动件最大速度"),
+    "a_max": _n("amax", "largest follower acceleration", "从动件最大加速度"),
+    "omega2_max": _n("ω2,max", "largest angular speed of the arm", "摆杆最大角速度"),
+    "epsilon2_max": _n("ε2,max", "largest angular acceleration of the arm", "摆杆最大角加速度"),
+    "r0_alpha": _n("r0,α", "base circle of the pressure-angle limit alone", "仅按许用压力角的基圆半径"),
+    "r0_rho": _n("r0,ρ", "base circle of the curvature limit", "按曲率半径限制的基圆半径"),
+    "rho_min_profile": _n("ρmin", "smallest radius of curvature of the profile", "实际廓线最小曲率半径"),
 }
 """Every answer's printed name. An answer missing here prints its name with ``_`` as a space."""
+
+RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
+    ("cam.translating", "v"): _n("v", "follower velocity at the cam angles asked", "从动件速度"),
+    ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
+    ("cam.oscillating", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
+    ("cam.oscillating", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
+}
+"""Printed names that differ by recipe (an arm's ω2 is not a coupler's; a cam follower's a is not a centre
+distance): looked up before :data:`NAMES`."""
 
 UNITS = {"deg": "°", "": "", "bool": "", "point": "", "choice": "", "table": "", "interval": " mm"}
 """How a unit follows a number (any other unit: a space and the unit as the recipe names it, e.g. ``rad/s²``)."""
@@ -189,13 +206,14 @@ def unit_text(unit: str) -> str:
     return UNITS[u] if u in UNITS else f" {u}"
 
 
-def name_of(answer: str) -> AnswerName:
-    """The printed name of ``answer`` (a fallback for a name not in :data:`NAMES`).
+def name_of(answer: str, recipe: str = "") -> AnswerName:
+    """The printed name of ``answer`` (of ``recipe`` when it names it its own way: :data:`RECIPE_NAMES`; a
+    fallback for a name not in :data:`NAMES`).
 
-    >>> name_of("theta").symbol, name_of("new_answer").symbol
-    ('θ', 'new answer')
+    >>> name_of("theta").symbol, name_of("new_answer").symbol, name_of("omega2", "cam.oscillating").zh
+    ('θ', 'new answer', '摆杆角速度')
     """
-    return NAMES.get(answer) or AnswerName(answer.replace("_", " "), "", "")
+    return RECIPE_NAMES.get((recipe, answer)) or NAMES.get(answer) or AnswerName(answer.replace("_", " "), "", "")
 
 
 def _number(v: float, unit: str) -> str:
@@ -247,19 +265,19 @@ def _remarks(twin: bool | None, printed: Sequence[str], lang: str) -> str:
 
 
 def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None, printed: Sequence[str] = (),
-                lang: str = "en") -> str:
+                lang: str = "en", recipe: str = "") -> str:
     """One result line of a drawing: the answer by its symbol (a number) or as a statement (yes/no), its value,
     what agreed with what (``twin``: the construction against the analytic twin) and the textbook's printed
     values with their deviation (``printed``, already worded).
 
     ``lang`` is ``en``, ``zh`` or ``both`` (the English line, then the Chinese words).
     """
-    nm = name_of(answer)
+    nm = name_of(answer, recipe)
     is_bool = isinstance(value, bool) or unit == "bool" or (not nm.symbol and unit == "")
     if is_bool:
         value = bool(value)
     if lang == "both":
-        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en")
+        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en", recipe=recipe)
         if not nm.zh:
             return en
         return f"{en}  {nm.zh}：{shown_value(value, unit, 'zh')}" if is_bool else f"{en}  {nm.zh}"
@@ -271,4 +289,4 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     return head + _remarks(twin, printed, lang)
 
 
-__all__ = ["AnswerName", "NAMES", "name_of", "result_line", "shown_value", "unit_text"]
+__all__ = ["AnswerName", "NAMES", "RECIPE_NAMES", "name_of", "result_line", "shown_value", "unit_text"]
