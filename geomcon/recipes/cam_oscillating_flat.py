@@ -464,7 +464,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
             "turn A0T′ with them and lay off ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, … (the arm's directions)",
             f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′;A0T′ 随之反转,"
             "并在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …(摆杆方向)") if first else ("", ""))
-        sc.add(f"pivot_d{i}", same_point, A, style="point", label=f"{i}′")
+        sc.add(f"pivot_d{i}", same_point, A, style="division", label=f"{i}′")
         sc.add(f"face_d{i}", face_segment, A, D, O, f, reach, style="path", caption=(
             f"Draw the face in each inverted position, {abs(f):g} from 1′, 2′, … along the arm's direction"
             if f else "Draw the face along the arm's direction from 1′, 2′, …: the inverted face lines",

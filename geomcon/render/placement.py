@@ -38,6 +38,14 @@ XY = tuple[float, float]
 DISTANCES = (0.0, 2.0, 4.5, 8.0)
 """Extra distances (paper mm) beyond the gap at which a text is tried, nearest first."""
 
+LABEL_DISTANCES = (0.0, 1.0, 2.0, 3.0)
+"""The distances tried for a point's label: its box then lies within gap + 3 mm of the point (gap = the
+marker's radius + 0.4 mm), so that a reader never takes it for another point's label."""
+
+LABEL_REACH = 6.0
+"""The most (paper mm) a point's label box lies from its point, whatever the marker (checked over the
+gallery by the tests)."""
+
 FAR_PENALTY = 0.25
 """Score lost per step of :data:`DISTANCES`."""
 
@@ -62,6 +70,9 @@ class Request:
         Explicit box centres to choose from, best first (instead of directions around the anchor).
     rotate : float
         Rotation of the box about its centre, degrees (clockwise as seen).
+    distances : tuple of float
+        Extra distances (paper mm) beyond the gap at which the box is tried, nearest first (a point's label
+        stays near its point: :data:`LABEL_DISTANCES`).
     """
 
     anchor: XY
@@ -72,6 +83,7 @@ class Request:
     spread: float = 0.004
     candidates: tuple[XY, ...] = ()
     rotate: float = 0.0
+    distances: tuple[float, ...] = DISTANCES
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
@@ -128,7 +140,20 @@ class Placer:
         self._obstacles = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles],
                                 [a for _, _, a in obstacles], split=True)
         self._placed = Layer([])
+        self._boxes: list[shapely.Geometry] = []
+        self._tree: shapely.STRtree | None = None
         self._frame = frame
+
+    def covers_placed(self, boxes: np.ndarray) -> np.ndarray:
+        """Whether each of ``boxes`` meets a text box or leader placed before (such a place is as bad as
+        one outside the frame: two texts never print on top of each other while any other place is left)."""
+        out = np.zeros(len(boxes), dtype=bool)
+        if self._boxes and len(boxes):
+            if self._tree is None:
+                self._tree = shapely.STRtree(self._boxes)
+            hit = self._tree.query(boxes, predicate="intersects")[0]
+            out[hit] = True
+        return out
 
     def _near(self, bounds: np.ndarray, owner: str) -> tuple[tuple[Layer, Nearby], ...]:
         """What may come near each of the boxes ``bounds``: obstacles not ``owner``'s, placed geometries."""
@@ -155,6 +180,8 @@ class Placer:
     def commit(self, geom: shapely.Geometry) -> None:
         """Record something placed (a text's box, a leader line): later texts keep clear of it."""
         self._placed.append(geom)
+        self._boxes.append(geom)
+        self._tree = None
 
     def place(self, req: Request, owner: str) -> XY:
         """Place ``req`` at its best position and record it; returns the box centre."""
@@ -181,6 +208,7 @@ class _Scan:
         self.bounds = shapely.bounds(self.boxes)
         f, b = placer._frame, self.bounds
         inside = (f[0] <= b[:, 0]) & (f[1] <= b[:, 1]) & (b[:, 2] <= f[2]) & (b[:, 3] <= f[3])
+        inside &= ~placer.covers_placed(self.boxes)
         self.outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
         self.static = [ENOUGH - penalty - out for penalty, out in zip(self.cost, self.outside)]
         self.reach = list(itertools.accumulate(reversed(self.static), max))[::-1]   # the best static from i on
@@ -278,10 +306,10 @@ def _centres(req: Request) -> tuple[list[XY], list[float]]:
     with np.errstate(divide="ignore"):
         tx = np.where(ax > 1e-12, (req.width / 2) / ax, math.inf)
         ty = np.where(ay > 1e-12, (req.height / 2) / ay, math.inf)
-    reach = (req.gap + np.array(DISTANCES)[:, None]) + np.minimum(tx, ty)
+    reach = (req.gap + np.array(req.distances)[:, None]) + np.minimum(tx, ty)
     cx, cy = req.anchor[0] + ux * reach, req.anchor[1] + uy * reach
     rank = np.arange(len(ux))
-    penalty = FAR_PENALTY * np.arange(len(DISTANCES))[:, None] + req.spread * rank
+    penalty = FAR_PENALTY * np.arange(len(req.distances))[:, None] + req.spread * rank
     return list(zip(cx.ravel().tolist(), cy.ravel().tolist())), penalty.ravel().tolist()
 
 

@@ -18,6 +18,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import shapely
+
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider, Vector
 from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
@@ -28,12 +30,37 @@ from .shapes import ArcP, Pen, Poly
 from .style import MARK_TEXT_SIZE, PAPER, Style
 
 HATCH = 0.2     # width of hatch strokes
+MARK_DISTANCES = (0.0, 2.0, 4.5, 8.0, 12.0, 16.0)
+"""Distances (paper mm beyond the gap) at which an angle's text is tried: farther than a label may go, since
+a value always prints (a leader joins a far text to its arc)."""
 
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
-    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side."""
+    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side; turned
+    from its side by the least multiple of 45° that keeps it off every link of the figure (a ground drawn
+    across a link reads as a frame the link cannot pass)."""
     c = ctx.view.p(g.at)
-    u = (math.cos(g.angle), -math.sin(g.angle))        # towards the ground, on paper
+    first = None
+    for k in (0, 1, -1, 2, -2, 3, -3, 4):
+        out = _ground_at(c, g.angle + k * math.pi / 4, style)
+        first = first or out
+        if not _crosses_links(c, out, ctx):
+            return out
+    return first
+
+
+def _crosses_links(c: XY, drawn: Drawn, ctx: Context) -> bool:
+    """Whether a ground symbol at paper point ``c`` meets a link, away from the hinge it holds."""
+    if not ctx.links:
+        return False
+    hinge = shapely.Point(c).buffer(1.7, 8)
+    geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
+    return bool(shapely.intersects(geo, shapely.MultiLineString([list(s) for s in ctx.links])))
+
+
+def _ground_at(c: XY, angle: float, style: Style) -> Drawn:
+    """The ground symbol at paper point ``c``, the ground towards model angle ``angle``."""
+    u = (math.cos(angle), -math.sin(angle))        # towards the ground, on paper
     n = (-u[1], u[0])
     base = _add(c, u, 4.2)
     p = pen(style)
@@ -114,8 +141,8 @@ def _radius(m: AngleMark, va: Point, vb: Point, ctx: Context) -> float:
 
 
 def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
-    """The arc of a marked angle and its text (``θ=12.51°``, or just the symbol where the full text finds
-    no room), placed later near the bisector, outside the arc."""
+    """The arc of a marked angle and its text with its value, as the textbook prints it (``θ=12.51°``),
+    placed later near the bisector outside the arc, or farther with a leader where the figure is crowded."""
     if m.a == m.vertex or m.b == m.vertex:
         return Drawn()
     va, vb, flip = angle_rays(m)
@@ -130,8 +157,7 @@ def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
     if flip:                                              # the extension the arc starts from
         out.shapes.append(Poly((c, _add(c, _paper_dir(va), r + 2.5)), Pen(style.stroke, 0.18, (1.2, 0.8))))
     mid, prefer = arc.at(0.5), -(a0 + phi / 2)
-    short = _mark_text(rich_runs(m.symbol), mid, prefer, None)
-    out.texts.append(_mark_text(rich_runs(m.text), mid, prefer, short))
+    out.texts.append(_mark_text(rich_runs(m.text), mid, prefer, None))
     return out
 
 
@@ -139,7 +165,7 @@ def _mark_text(runs: tuple[tuple[str, bool], ...], anchor: XY, prefer: float,
                fallback: TextRequest | None) -> TextRequest:
     sub = any(s for _, s in runs)
     req = Request(anchor, text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * (0.95 if sub else 0.78), 0.5,
-                  prefer, spread=0.05)
+                  prefer, spread=0.05, distances=MARK_DISTANCES)
     return TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text", fallback=fallback)
 
 

@@ -1,0 +1,102 @@
+"""What a teacher saw wrong in the drawings (issue 11), checked over every gallery figure so that none comes
+back: texts printed on top of each other, labels far from their points, angle marks without their value, a
+ground symbol drawn across a link."""
+from __future__ import annotations
+
+import functools
+import itertools
+from pathlib import Path
+
+import pytest
+import shapely
+from shapely import affinity
+
+from geomcon.geometry.primitives import Point
+from geomcon.problems import load_problem
+from geomcon.render.figure import Figure, build_figure
+from geomcon.render.placement import LABEL_REACH
+from geomcon.render.shapes import Poly, Text, obstacle
+from geomcon.render.svg import MARGIN, TITLE_H
+from geomcon.render.view import figure_target
+from geomcon.scene.marks import AngleMark, Ground
+from geomcon.solve import solve
+
+PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
+
+
+@functools.lru_cache(maxsize=None)
+def figure(name: str) -> Figure:
+    """The full figure of a bundled problem, drawn as its SVG draws it."""
+    sc = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml")).drawing_scene
+    return build_figure(sc, None, None, (MARGIN, MARGIN + TITLE_H), figure_target(len(sc.frames())))
+
+
+def box(t: Text) -> shapely.Geometry:
+    """A text's box on paper, turned as the text is."""
+    b = shapely.box(*t.box)
+    return affinity.rotate(b, t.rotate, origin=b.centroid) if t.rotate else b
+
+
+def runs(t: Text) -> str:
+    return "".join(s for s, _ in t.runs)
+
+
+def angle_marks(v) -> list[AngleMark]:
+    if isinstance(v, AngleMark):
+        return [v]
+    if isinstance(v, (tuple, list)):
+        return [m for x in v for m in angle_marks(x)]
+    return []
+
+
+NAMES = [p.stem for p in PROBLEMS]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_two_texts_of_a_figure_overlap(name):
+    fig = figure(name)
+    texts = [(g.key, t) for g in fig.groups for t in g.texts]
+    bad = [(k1, runs(a), k2, runs(b)) for (k1, a), (k2, b) in itertools.combinations(texts, 2)
+           if box(a).intersection(box(b)).area > 1e-9]
+    assert not bad
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_label_lies_near_its_point(name):
+    """A point's label box lies within LABEL_REACH (6 mm of paper, at the figure's scale) of its point."""
+    fig = figure(name)
+    far = [(g.key, runs(t), round(box(t).distance(shapely.Point(fig.view.p(fig.values[g.key]))), 2))
+           for g in fig.groups if isinstance(fig.values[g.key], Point) for t in g.texts if t.cls == "label"]
+    assert LABEL_REACH == 6.0
+    assert not [f for f in far if f[2] > LABEL_REACH]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_angle_mark_shows_its_value(name):
+    """As the textbook prints them: ``θ=12.51°``, never the bare symbol."""
+    fig = figure(name)
+    for g in fig.groups:
+        marks = angle_marks(fig.values[g.key])
+        if marks:
+            assert sorted(runs(t) for t in g.texts) == sorted(m.text for m in marks), g.key
+            assert all("=" in runs(t) and runs(t).endswith("°") for t in g.texts)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_ground_symbol_crosses_a_link(name):
+    fig = figure(name)
+    links = [obstacle(sh) for g in fig.groups if g.layer == "links" for sh in g.shapes
+             if isinstance(sh, Poly) and len(sh.pts) == 2]
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if isinstance(v, Ground) and links:
+            hinge = shapely.Point(fig.view.p(v.at)).buffer(1.6)
+            symbol = shapely.union_all([obstacle(sh) for sh in g.shapes]).difference(hinge)
+            assert not symbol.intersects(shapely.union_all(links)), g.key
+
+
+def test_the_gallery_has_many_angle_marks_and_grounds():
+    """The checks above look at something: the gallery's figures hold dozens of angle marks and grounds."""
+    marks = sum(len(angle_marks(figure(n).values[g.key])) for n in NAMES for g in figure(n).groups)
+    grounds = sum(isinstance(figure(n).values[g.key], Ground) for n in NAMES for g in figure(n).groups)
+    assert marks >= 80 and grounds >= 60
