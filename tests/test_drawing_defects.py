@@ -15,10 +15,10 @@ from geomcon.geometry.primitives import Point
 from geomcon.problems import load_problem
 from geomcon.render.figure import Figure, build_figure
 from geomcon.render.placement import LABEL_REACH
-from geomcon.render.shapes import Poly, Text, obstacle
+from geomcon.render.shapes import ArcP, Poly, Text, obstacle
 from geomcon.render.svg import MARGIN, TITLE_H
 from geomcon.render.view import figure_target
-from geomcon.scene.marks import AngleMark, Ground
+from geomcon.scene.marks import AngleMark, Ground, Rotation
 from geomcon.solve import solve
 
 PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
@@ -100,3 +100,42 @@ def test_the_gallery_has_many_angle_marks_and_grounds():
     marks = sum(len(angle_marks(figure(n).values[g.key])) for n in NAMES for g in figure(n).groups)
     grounds = sum(isinstance(figure(n).values[g.key], Ground) for n in NAMES for g in figure(n).groups)
     assert marks >= 80 and grounds >= 60
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_two_points_of_a_figure_share_a_label(name):
+    """200-12 labelled two different velocity images K*: every label names one point."""
+    fig = figure(name)
+    seen: dict[str, Point] = {}
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if isinstance(v, Point):
+            for t in g.texts:
+                if t.cls == "label":
+                    other = seen.setdefault(runs(t), v)
+                    assert abs(other - v) <= 1e-9 * size, (runs(t), g.key)
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if load_problem(
+    Path(__file__).parent.parent / "problems" / f"{n}.toml").recipe.startswith("cam.")])
+def test_every_cam_figure_shows_its_sense_of_rotation(name):
+    """The protocol says 'turn the follower by −ω': the figure draws ω, an arrow at the cam centre O turning
+    the way the problem says (counter-clockwise by default)."""
+    fig = figure(name)
+    problem = load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml")
+    rot = [fig.values[g.key] for g in fig.groups if isinstance(fig.values[g.key], Rotation)]
+    assert len(rot) == 1
+    assert rot[0].at == fig.values["O"]
+    assert rot[0].sense == (1.0 if problem.given.get("rotation", "ccw") == "ccw" else -1.0)
+    (group,) = [g for g in fig.groups if g.key == "omega"]
+    assert [runs(t) for t in group.texts] == ["ω"]
+    assert sum(isinstance(s, ArcP) for s in group.shapes) == 1
+
+
+def test_the_two_binding_lines_of_200_12_tell_their_allowances():
+    fig = figure("200-12_oscillating_base_radius")
+    texts = sorted(runs(t) for g in fig.groups if g.key.startswith("bind_mark") for t in g.texts)
+    assert texts == ["α=35.00°", "α=45.00°"]
+    labels = sorted(runs(t) for g in fig.groups if g.key.startswith("bind_K") for t in g.texts)
+    assert labels == ["K1*", "K2*"]

@@ -233,7 +233,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     back = ("clockwise", "顺时针") if cam.sigma > 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with an oscillating {g['follower']} follower: inversion")
     drawing = sc.drawing                    # the arcs and ghost arms of the divisions: drawing only
-    O = add_cam_centre(sc)
+    O = add_cam_centre(sc, float(cam.sigma))
     A0 = add_pivot(sc, "A0", Point(0.0, a), (f"Arm pivot A0 with OA0 = a = {a:g}", f"摆杆转轴 A0,OA0 = a = {a:g}"),
                    ground_angle=math.pi / 2)
     sc.add("OA0", segment, O, A0, role=Role.GIVEN, style="frame")

@@ -359,7 +359,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     at = tuple(g.get("at") or ())
     turn_en, turn_zh = ("clockwise", "顺时针") if inv < 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with a translating {follower} follower: inversion")
-    O = add_cam_centre(sc)
+    O = add_cam_centre(sc, -inv)
     add_base_circle(sc, O, r0, ("profile", "实际廓线") if flat else ("pitch curve", "理论廓线"))
     if e != 0.0:
         sc.add("offset_circle", circle, O, abs(e), style="path",

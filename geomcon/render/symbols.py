@@ -21,7 +21,7 @@ from typing import Any
 import shapely
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
-from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider, Vector
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
 from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
                    draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
@@ -169,6 +169,29 @@ def _mark_text(runs: tuple[tuple[str, bool], ...], anchor: XY, prefer: float,
     return TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text", fallback=fallback)
 
 
+ROTATION_RADIUS = 6.5
+"""Radius (paper mm) of the arrow of a sense of rotation (ω) about its centre."""
+
+
+def draw_rotation(m: Rotation, style: Style, ctx: Context) -> Drawn:
+    """The arrow of a sense of rotation: an arc of 110° above its centre (the ground hangs below), its
+    arrowhead at the end the part turns towards, and the symbol ω placed beside it."""
+    c = ctx.view.p(m.at)
+    r = ROTATION_RADIUS
+    ccw = m.sense > 0
+    lo, hi = math.radians(35.0), math.radians(145.0)                    # model angles, above the centre
+    start, end = (lo, hi) if ccw else (hi, lo)
+    arc = ArcP(c, r, -start, -(end - start), pen(style))
+    tip = arc.at(1.0)
+    back = arc.at(0.93)                                                # the tangent's direction, backwards
+    out = Drawn([arc, _arrow(tip, back, style)])
+    runs = rich_runs(m.symbol)
+    req = Request(arc.at(0.5), text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * 0.78, 0.6, -math.pi / 2,
+                  spread=0.05, distances=MARK_DISTANCES)
+    out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, italic=True, cls="mark-text"))
+    return out
+
+
 def draw_right_angle(m: RightAngleMark, style: Style, ctx: Context) -> Drawn:
     """The small square of a right angle."""
     if m.a == m.vertex or m.b == m.vertex:
@@ -255,7 +278,7 @@ def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Dr
 
 _TABLE = {Segment: draw_segment, Polyline: draw_polyline, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
           AngleMark: draw_angle, RightAngleMark: draw_right_angle, Dimension: draw_dimension,
-          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Vector: draw_vector}
+          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Vector: draw_vector, Rotation: draw_rotation}
 
 
 def kind_of(value: Any) -> str:
@@ -266,6 +289,6 @@ def kind_of(value: Any) -> str:
         return "curve"
     if isinstance(value, (tuple, list)):
         return kind_of(value[0]) if value else "none"
-    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide)):
+    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide, Rotation)):
         return type(value).__name__
     return "none"
