@@ -11,14 +11,14 @@ import pytest
 import shapely
 from shapely import affinity
 
-from geomcon.geometry.primitives import Point
+from geomcon.geometry.primitives import Line, Point, Segment
 from geomcon.problems import load_problem
 from geomcon.render.figure import Figure, build_figure
 from geomcon.render.placement import LABEL_REACH
 from geomcon.render.shapes import ArcP, Poly, Text, obstacle
 from geomcon.render.svg import MARGIN, TITLE_H
 from geomcon.render.view import figure_target
-from geomcon.scene.marks import AngleMark, Ground, Rotation
+from geomcon.scene.marks import AngleMark, Ground, Guide, Rotation, Slider
 from geomcon.solve import solve
 
 PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
@@ -139,3 +139,53 @@ def test_the_two_binding_lines_of_200_12_tell_their_allowances():
     assert texts == ["α=35.00°", "α=45.00°"]
     labels = sorted(runs(t) for g in fig.groups if g.key.startswith("bind_K") for t in g.texts)
     assert labels == ["K1*", "K2*"]
+
+
+def _members(v):
+    return [m for x in v for m in _members(x)] if isinstance(v, (tuple, list)) else [v]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_slider_lies_on_a_drawn_bar_or_guide_along_its_motion(name):
+    """000-02 drew the guide bar C→D1 while the slider B1 sat 30 mm beyond D1, on no drawn link: every slider
+    block is centred on a drawn segment, line or guide running along its direction of motion."""
+    fig = figure(name)
+    drawn = [m for g in fig.groups if g.shapes for m in _members(fig.values[g.key])]
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    tol = 1e-9 * size
+
+    def carries(m, s: Slider) -> bool:
+        if isinstance(m, (Segment, Guide)):
+            a, b = m.a, m.b
+            if a == b:
+                return False
+            u = (b - a).unit()
+            t = (s.at - a).dot(u)
+            inside = -tol <= t <= abs(b - a) + tol
+        elif isinstance(m, Line):
+            a, u, inside = m.point, m.direction, True
+        else:
+            return False
+        off = abs((s.at - a).cross(u))
+        if isinstance(m, Guide):          # a guide's line is where the blocks' centres run
+            return inside and off <= tol and abs(s.direction.unit().cross(u)) <= 1e-9
+        return inside and off <= tol and abs(s.direction.unit().cross(u)) <= 1e-9
+
+    sliders = [m for m in drawn if isinstance(m, Slider)]
+    for s in sliders:
+        assert any(carries(m, s) for m in drawn if m is not s), (name, s)
+
+
+def test_the_slotter_by_K_draws_its_sliders_ram_and_theta():
+    """000-02: B1, B2 are slider blocks on their guide bars; the ram runs on a hatched guide; θ is marked; the
+    step that finds D1 says where D1 lies (between C and B1 here: CD1 = 115.24 < CB1 = 145.36)."""
+    fig = figure("000-02_slotter_design_by_K")
+    v = fig.values
+    keys = {g.key for g in fig.groups}
+    assert {"slider_B1", "slider_B2", "ram_guide_mark", "ram1", "ram2", "mark_theta"} <= keys
+    C, B1, D1 = v["C"], v["B1"], v["D1"]
+    assert abs(D1 - C) < abs(B1 - C)
+    assert v["CD1"].b == B1                       # the bar reaches the slider
+    sc = solve(load_problem(Path(__file__).parent.parent / "problems" / "000-02_slotter_design_by_K.toml")).scene
+    assert "between C and B1" in sc["D1"].caption[0]
+    assert [runs(t) for g in fig.groups if g.key == "mark_theta" for t in g.texts] == ["θ=51.43°"]
