@@ -11,10 +11,11 @@ import pytest
 import shapely
 from shapely import affinity
 
-from geomcon.geometry.primitives import Line, Point, Segment
+from geomcon.geometry.primitives import Line, Point, Ray, Segment
 from geomcon.problems import load_problem
 from geomcon.render.figure import Figure, build_figure
 from geomcon.render.placement import LABEL_REACH
+from geomcon.render.symbols import angle_rays
 from geomcon.render.shapes import ArcP, Poly, Text, obstacle
 from geomcon.render.svg import MARGIN, TITLE_H
 from geomcon.render.view import figure_target
@@ -189,3 +190,45 @@ def test_the_slotter_by_K_draws_its_sliders_ram_and_theta():
     sc = solve(load_problem(Path(__file__).parent.parent / "problems" / "000-02_slotter_design_by_K.toml")).scene
     assert "between C and B1" in sc["D1"].caption[0]
     assert [runs(t) for g in fig.groups if g.key == "mark_theta" for t in g.texts] == ["θ=51.43°"]
+
+
+def _along(d, vertex: Point, u: Point, tol: float) -> bool:
+    """Whether the drawn value ``d`` runs from ``vertex`` in direction ``u`` (a segment, a line, a ray)."""
+    if isinstance(d, Segment) and d.a != d.b:
+        w = (d.b - d.a).unit()
+        if abs((vertex - d.a).cross(w)) > tol or abs(u.cross(w)) > 1e-7:
+            return False
+        lo, hi = sorted([(d.a - vertex).dot(u), (d.b - vertex).dot(u)])
+        return hi > tol and lo <= tol
+    if isinstance(d, Line):
+        return abs((vertex - d.point).cross(d.direction)) <= tol and abs(u.cross(d.direction)) <= 1e-7
+    if isinstance(d, Ray):
+        return (abs((vertex - d.origin).cross(d.direction)) <= tol and abs(u.cross(d.direction)) <= 1e-7
+                and (vertex - d.origin).dot(d.direction) >= -tol and u.dot(d.direction) > 0)
+    return False
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_angle_arc_ends_on_drawn_lines(name):
+    """001-08's γ2 arc ended on the extension of B″C″, never drawn: each ray an angle's arc spans runs along
+    a drawn segment, line or ray from its vertex, or is the extension the mark draws itself."""
+    fig = figure(name)
+    drawn = [m for g in fig.groups if g.shapes for m in _members(fig.values[g.key])]
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    for g in fig.groups:
+        for m in angle_marks(fig.values[g.key]):
+            va, vb, flip = angle_rays(m)
+            rays = [vb] if flip else [va, vb]
+            for r in rays:
+                assert any(_along(d, m.vertex, r.unit(), 1e-7 * size) for d in drawn), (g.key, m.symbol)
+            if flip:                       # the extension is drawn by the mark: a dashed stroke from the vertex
+                c = fig.view.p(m.vertex)
+                assert any(isinstance(s, Poly) and s.pts[0] == c and s.pen.dash for s in next(
+                    x for x in fig.groups if x.key == g.key).shapes)
+
+
+def test_001_08_gamma_2_is_marked_from_b_c_extended():
+    fig = figure("001-08_crank_rocker")
+    (m,) = angle_marks(fig.values["mark_gamma_2"])
+    assert angle_rays(m)[2]                                   # obtuse ∠B″C″D: γ2 from B″C″ extended
+    assert [runs(t) for g in fig.groups if g.key == "mark_gamma_2" for t in g.texts] == ["γ2=42.18°"]

@@ -426,15 +426,17 @@ def binding_arm(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float]
     return segment(A0, arm_position(B0, A0, motion.tau, math.degrees(float(m.psi[0]))))
 
 
-def binding_mark(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float], K: Point, O: Point) -> marks.AngleMark:
-    """The angle at K between the arm's normal and the binding line K→O: the allowance of its part
+def binding_mark(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float], K: Point,
+                 O: Point) -> tuple[Segment, marks.AngleMark]:
+    """The arm's normal at K and the angle from it to the binding line K→O: the allowance of its part
     (α_allow of the rise or of the return), marked with its value so that the two lines tell apart."""
     arm = binding_arm(A0, B0, motion, pos)
     n = (arm.b - arm.a).unit().perp()
     if n.dot(O - K) < 0:
         n = -n
     reach = abs(O - K) * 0.5
-    return marks.angle_mark(K, K + n * reach, O, "α", math.degrees(angle_at(K, K + n, O)))
+    return (Segment(K - n * (0.15 * reach), K + n * reach),
+            marks.angle_mark(K, K + n * reach, O, "α", math.degrees(angle_at(K, K + n, O))))
 
 
 def construct_arm(g: Mapping[str, Any]) -> Construction:

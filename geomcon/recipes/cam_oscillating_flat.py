@@ -432,6 +432,8 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     psi0 = sc.add("psi0", angle_deg, A0, O, T1, role=Role.MEASUREMENT, unit="deg",
                   caption=(f"Measure ψ0 = ∠OA0T{'′' if f else '0'}: sin ψ0 = (r0 + f)/a",
                            f"量得初始摆角 ψ0 = ∠OA0T{'′' if f else '0'}(sin ψ0 = (r0 + f)/a)"))
+    if drawing:                              # the arm's lowest direction, the ray ψ0 is measured to
+        sc.add("A0T", segment, A0, T1, style="construction")
     add_angle_mark(sc, "mark_psi0", A0, O, T1, "ψ0", psi0)
     fam = sc.given("faces", flat_family(cam), visible=False)
     tau = cam.tau
