@@ -232,3 +232,21 @@ def test_001_08_gamma_2_is_marked_from_b_c_extended():
     (m,) = angle_marks(fig.values["mark_gamma_2"])
     assert angle_rays(m)[2]                                   # obtuse ∠B″C″D: γ2 from B″C″ extended
     assert [runs(t) for g in fig.groups if g.key == "mark_gamma_2" for t in g.texts] == ["γ2=42.18°"]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_label_is_nearer_its_point_than_any_other(name):
+    """001-19 printed "A" between the pivots A and C, nearer C: a label's box lies nearer its own point than
+    any other point drawn in the figure, so that it cannot be read as another's."""
+    fig = figure(name)
+    pts = [fig.view.p(fig.values[g.key]) for g in fig.groups if isinstance(fig.values[g.key], Point) and g.shapes]
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if not isinstance(v, Point):
+            continue
+        c = fig.view.p(v)
+        for t in g.texts:
+            if t.cls == "label":
+                own = box(t).distance(shapely.Point(c))
+                others = [box(t).distance(shapely.Point(q)) for q in pts if q != c]
+                assert not others or min(others) >= own, (g.key, runs(t))

@@ -115,9 +115,24 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
             req = Request(c, w, h, gap, style.label_dir, candidates=spots)
         else:
             away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
-            req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES)
+            req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
         out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional))
     return out
+
+
+RIVAL_REACH = 15.0
+"""Points within this (paper mm) of a point compete for its label's place (:class:`~.placement.Request`)."""
+
+
+def _rivals(c: XY, ctx: Context) -> tuple[XY, ...]:
+    """The other points of the figure near paper point ``c``, on paper."""
+    out = []
+    for p in ctx.points:
+        q = ctx.view.p(p)
+        d = math.hypot(q[0] - c[0], q[1] - c[1])
+        if 1e-9 < d <= RIVAL_REACH:
+            out.append(q)
+    return tuple(sorted(set(out)))
 
 
 def _line_part(p: Point, d: Point, lo: float, hi: float, style: Style, ctx: Context) -> Drawn:

@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Iterable
 
+import numpy as np
 import shapely
 import shapely.ops
 
@@ -26,7 +27,7 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import Placer
+from .placement import Placer, nearer_rival
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
@@ -231,8 +232,10 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 if alt_score > score + 0.3:
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
-            if t.optional and texts and shapely.intersects(box, texts).any():
+            if t.optional and ((texts and shapely.intersects(box, texts).any())
+                               or nearer_rival(t.request, np.array([box]))[0]):
                 continue                # a crowded row's label: left out rather than printed over another
+                                        # or nearer another point than its own
             texts.append(box)
             placer.commit(box)
             leader = _leader(t, box)

@@ -46,6 +46,10 @@ LABEL_REACH = 6.0
 """The most (paper mm) a point's label box lies from its point, whatever the marker (checked over the
 gallery by the tests)."""
 
+AMBIGUOUS = 5.0
+"""Score lost by a label's box nearer another point than its own (worse than covering a line, better than
+covering a text or leaving the frame)."""
+
 FAR_PENALTY = 0.25
 """Score lost per step of :data:`DISTANCES`."""
 
@@ -73,6 +77,9 @@ class Request:
     distances : tuple of float
         Extra distances (paper mm) beyond the gap at which the box is tried, nearest first (a point's label
         stays near its point: :data:`LABEL_DISTANCES`).
+    rivals : tuple of (float, float)
+        Other points near the anchor (a point's label): a box nearer one of them than the anchor would be
+        read as its label, and loses :data:`AMBIGUOUS`.
     """
 
     anchor: XY
@@ -84,6 +91,7 @@ class Request:
     candidates: tuple[XY, ...] = ()
     rotate: float = 0.0
     distances: tuple[float, ...] = DISTANCES
+    rivals: tuple[XY, ...] = ()
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
@@ -120,6 +128,21 @@ def half_extent(ux: float, uy: float, w: float, h: float) -> float:
     tx = (w / 2) / abs(ux) if abs(ux) > 1e-12 else math.inf
     ty = (h / 2) / abs(uy) if abs(uy) > 1e-12 else math.inf
     return min(tx, ty)
+
+
+def nearer_rival(req: Request, boxes: np.ndarray) -> list[bool]:
+    """Whether each of ``boxes`` lies nearer one of ``req.rivals`` than its anchor (a label read as
+    another point's).
+
+    >>> r = Request((0.0, 0.0), 2.0, 2.0, 0.5, 0.0, rivals=((6.0, 0.0),))
+    >>> nearer_rival(r, shapely.box([1.0, 4.0], [-1.0, -1.0], [3.0, 5.5], [1.0, 1.0]))
+    [False, True]
+    """
+    if not req.rivals or not len(boxes):
+        return [False] * len(boxes)
+    own = shapely.distance(boxes, shapely.Point(req.anchor))
+    other = np.min(shapely.distance(np.asarray(boxes)[:, None], shapely.points(np.array(req.rivals))[None, :]), axis=1)
+    return (other < own).tolist()
 
 
 class Placer:
@@ -210,6 +233,8 @@ class _Scan:
         inside = (f[0] <= b[:, 0]) & (f[1] <= b[:, 1]) & (b[:, 2] <= f[2]) & (b[:, 3] <= f[3])
         inside &= ~placer.covers_placed(self.boxes)
         self.outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
+        if req.rivals:
+            self.outside = [o + (AMBIGUOUS if bad else 0.0) for o, bad in zip(self.outside, nearer_rival(req, self.boxes))]
         self.static = [ENOUGH - penalty - out for penalty, out in zip(self.cost, self.outside)]
         self.reach = list(itertools.accumulate(reversed(self.static), max))[::-1]   # the best static from i on
         self.near = placer._near(self.bounds, owner)

@@ -37,8 +37,8 @@ a value always prints (a leader joins a far text to its arc)."""
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side; turned
-    from its side by the least multiple of 45° that keeps it off every link of the figure (a ground drawn
-    across a link reads as a frame the link cannot pass)."""
+    from its side by the least multiple of 45° that keeps it off every link and point of the figure (a
+    ground drawn across a link reads as a frame the link cannot pass)."""
     c = ctx.view.p(g.at)
     first = None
     for k in (0, 1, -1, 2, -2, 3, -3, 4):
@@ -50,12 +50,14 @@ def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
 
 
 def _crosses_links(c: XY, drawn: Drawn, ctx: Context) -> bool:
-    """Whether a ground symbol at paper point ``c`` meets a link, away from the hinge it holds."""
-    if not ctx.links:
-        return False
+    """Whether a ground symbol at paper point ``c`` meets a link away from the hinge it holds, or comes
+    within 1.5 mm of another point of the figure."""
     hinge = shapely.Point(c).buffer(1.7, 8)
     geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
-    return bool(shapely.intersects(geo, shapely.MultiLineString([list(s) for s in ctx.links])))
+    if ctx.links and shapely.intersects(geo, shapely.MultiLineString([list(s) for s in ctx.links])):
+        return True
+    near = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
+    return bool(near) and bool(shapely.dwithin(geo, shapely.MultiPoint(near), 1.5))
 
 
 def _ground_at(c: XY, angle: float, style: Style) -> Drawn:
