@@ -30,7 +30,7 @@ from .shapes import ArcP, Pen, Poly
 from .style import MARK_TEXT_SIZE, PAPER, Style
 
 HATCH = 0.2     # width of hatch strokes
-MARK_DISTANCES = (0.0, 2.0, 4.5, 8.0, 12.0, 16.0)
+MARK_DISTANCES = (0.0, 2.0, 4.5, 8.0, 12.0, 16.0, 22.0, 30.0)
 """Distances (paper mm beyond the gap) at which an angle's text is tried: farther than a label may go, since
 a value always prints (a leader joins a far text to its arc)."""
 
