@@ -56,3 +56,16 @@ def test_a_problem_with_one_solution_has_no_solution_2():
     assert sol.as_solution(1) is sol
     with pytest.raises(ProblemError, match="1 valid solution"):
         sol.as_solution(2)
+
+
+@pytest.mark.parametrize("n", [1, 3])
+def test_the_figure_draws_the_other_valid_designs_light(n):
+    """Each valid design but the drawn one appears in its folded position (crank, coupler, frame), light."""
+    drawn = solve(load_problem(JAW)).as_solution(n)
+    others = drawn.drawing_scene.value("other_designs")
+    assert len(others) == 3 * (len(drawn.solution_values) - 1) == 9
+    frames = sorted(round(abs(s.b - s.a), 9) for s in others[2::3])            # A–D of each other design
+    assert frames == sorted(round(s["AD"], 9) for s in drawn.solution_values[1:])
+    cranks = sorted(round(abs(s.b - s.a), 9) for s in others[0::3])
+    assert cranks == sorted(round(s["AB"], 9) for s in drawn.solution_values[1:])
+    assert drawn.drawing_scene["other_designs"].style == "ghost"
