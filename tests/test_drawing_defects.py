@@ -17,8 +17,8 @@ from geomcon.render.figure import Figure, build_figure
 from geomcon.render.placement import LABEL_REACH
 from geomcon.render.symbols import angle_rays
 from geomcon.render.shapes import ArcP, Poly, Text, obstacle
-from geomcon.render.svg import MARGIN, TITLE_H
-from geomcon.render.view import figure_target
+from geomcon.render.page import PageSpec
+from geomcon.render.svg import place_figure
 from geomcon.scene.marks import AngleMark, Ground, Guide, Rotation, Slider
 from geomcon.solve import solve
 
@@ -27,9 +27,11 @@ PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
 
 @functools.lru_cache(maxsize=None)
 def figure(name: str) -> Figure:
-    """The full figure of a bundled problem, drawn as its SVG draws it."""
-    sc = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml")).drawing_scene
-    return build_figure(sc, None, None, (MARGIN, MARGIN + TITLE_H), figure_target(len(sc.frames())))
+    """The full figure of a bundled problem, drawn as its sheet 1 draws it (default page: A4 landscape)."""
+    sol = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml"))
+    sc, page = sol.drawing_scene, PageSpec()
+    _, _, view = place_figure(sc, page, sol.figure_lines(page.lang), sol.warnings)
+    return build_figure(sc, None, view.box, view.origin, mu=view.mu)
 
 
 def box(t: Text) -> shapely.Geometry:

@@ -245,10 +245,11 @@ def draw_dimension(m: Dimension, style: Style, ctx: Context) -> Drawn:
     up = (math.sin(math.radians(ang)), -math.cos(math.radians(ang)))      # the text's "up", on paper
     outward = 1.0 if up[0] * n[0] + up[1] * n[1] >= 0 else -1.0
     cands = []
-    for side in (outward, -outward):
-        for t in (0.5, 0.3, 0.7, 0.15, 0.85):
-            base = (qa[0] + (qb[0] - qa[0]) * t, qa[1] + (qb[1] - qa[1]) * t)
-            cands.append(_add(base, up, side * (0.6 + h / 2)))
+    for gap in (0.6, 1.8 + h):              # on the dimension line, else a line further out (labels there)
+        for side in (outward, -outward):
+            for t in (0.5, 0.3, 0.7, 0.15, 0.85):
+                base = (qa[0] + (qb[0] - qa[0]) * t, qa[1] + (qb[1] - qa[1]) * t)
+                cands.append(_add(base, up, side * (gap + h / 2)))
     req = Request(((qa[0] + qb[0]) / 2, (qa[1] + qb[1]) / 2), w, h, 0.6, 0.0, spread=0.06,
                   candidates=tuple(cands), rotate=round(ang, 6))
     out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text"))
