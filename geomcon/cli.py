@@ -46,9 +46,13 @@ def _summary(sol) -> str:
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
     lines += [f"  {line}" for line in sol.info_lines()]
     others = sol.solution_values[1:]
+    numbers = sol.solution_numbers
     if others:
-        lines.append(f"  {len(others) + 1} valid solutions; the one above is the textbook's choice (solution 1); the others:")
-        for i, other in enumerate(others, 2):
+        which = ("the textbook's choice (solution 1)" if numbers[0] == 1 else
+                 f"solution {numbers[0]} (--solution {numbers[0]}; the textbook's choice is solution 1)")
+        lines.append(f"  {len(others) + 1} valid solutions; the one above is {which}; the others "
+                     "(--solution N draws solution N):")
+        for i, other in zip(numbers[1:], others):
             shown = ", ".join(f"{k} = {_shown_answer(v)}" for k, v in other.items())
             lines.append(f"    solution {i}: {shown}")
     lines += [f"  warning: {w}" for w in sol.warnings]
@@ -68,6 +72,18 @@ def _shown_answer(v) -> str:
     return f"{v:.4f}"
 
 
+def _solution_number(text: str) -> int:
+    """The N of ``--solution N``: a whole number from 1 (refused with the value otherwise).
+
+    >>> _solution_number("2")
+    2
+    """
+    t = str(text).strip()
+    if not (t.isascii() and t.isdigit()) or len(t) > 6 or int(t) < 1:
+        raise ProblemError(f"--solution: expected a whole number ≥ 1, got {text!r}")
+    return int(t)
+
+
 def cmd_solve(args: argparse.Namespace) -> int:
     from .fileio import write_all
     from .gallery import to_json_text
@@ -84,6 +100,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")           # numpy's floating-point chatter never reaches stderr
             sol = solve(load_problem(path))
+            if getattr(args, "solution", None) is not None:
+                sol = sol.as_solution(_solution_number(args.solution))
             text = to_json_text(sol) if args.json else _summary(sol) + "\n"
             files: dict[Path, str] = {}
             if args.svg or args.html or args.steps:
@@ -378,6 +396,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--profile-csv", metavar="OUT", help="cam recipes: write the actual profile as x,y,delta (mm, mm, deg)")
     s.add_argument("--diagrams", metavar="DIR", help="cam recipes: write the motion program's s–v–a (ψ–δ) diagrams "
                    "as DIR/<problem>_motion.svg")
+    s.add_argument("--solution", metavar="N", help="a problem with several valid solutions: report and draw solution N "
+                   "(1 = the textbook's choice; the text output lists them all)")
     s.set_defaults(func=cmd_solve)
     r = sub.add_parser("recipes", help="list recipes with their given and answer names")
     r.add_argument("--json", action="store_true")

@@ -140,11 +140,17 @@ class Solution:
         A solution map may name a ``_valid`` step (a candidate of a multi-solution construction); candidates
         whose ``_valid`` is false are left out.
         """
+        return [sol for _, sol in self._valid_candidates]
+
+    @cached_property
+    def _valid_candidates(self) -> list[tuple[int, dict[str, float]]]:
+        """(candidate index in the construction's ``solutions``, answers) of every valid solution, in the
+        order of :attr:`solution_values`."""
         maps = self.construction.solutions or (self.construction.answers,)
         vals = self.evaluate(k for m in maps for k in m.values())
         units = _answer_units(self.recipe)                         # in the recipe's declared order
         out = []
-        for m in maps:
+        for index, m in enumerate(maps):
             if "_valid" in m and not vals[m["_valid"]]:
                 continue
             sol = {}
@@ -154,15 +160,16 @@ class Solution:
                     v = vals[key]
                     sol[name] = v if type(v) is float and unit != "bool" else _value(unit, v)
             sol.update((n, _value("", vals[k])) for n, k in m.items() if n not in units and n != "_valid")
-            out.append(sol)
+            out.append((index, sol))
         if self.recipe.order is not None:
-            out.sort(key=self.recipe.order)
+            order = self.recipe.order
+            out.sort(key=lambda pair: order(pair[1]))
         if not out:
             why = self.construction.no_solution
             if self._taped:
                 why = planned(self.recipe.name, self.recipe.construct, self.problem.given).no_solution
             raise NotAMechanism(why or "no candidate of the construction is a valid mechanism")
-        for sol in out:
+        for _, sol in out:
             for k, v in sol.items():
                 if type(v) is float and v - v == 0.0 or type(v) is str:      # finite (the common case) or a word
                     continue
@@ -501,8 +508,49 @@ class Solution:
                 for q in self.recipe.answers if q.name in self.answers]
 
     def title(self) -> str:
-        """Title for drawings."""
-        return self.problem.title or self.scene.title
+        """Title for drawings (a drawing of another valid solution says which: "— solution 2 of 4")."""
+        return (self.problem.title or self.scene.title) + getattr(self, "_title_note", "")
+
+    def as_solution(self, n: int) -> Solution:
+        """The problem drawn and reported as its valid solution ``n`` (1 = the textbook's choice, as listed
+        by :attr:`solution_values`): the construction is built again with its choice step (``choice``: the
+        index of the candidate the drawing shows) fixed to that candidate, so the figure, its frames and its
+        results are those of solution ``n``.
+
+        Raises
+        ------
+        ProblemError
+            When ``n`` is not the number of a valid solution, or the recipe draws only one.
+        """
+        count = len(self.solution_values)
+        if n == 1:
+            return self
+        if not 1 <= n <= count:
+            raise ProblemError(f"--solution {n}: the problem has {count} valid solution{'s' if count != 1 else ''} "
+                               f"(1 to {count})")
+        scene = self.recipe.construct(self.problem.given).scene
+        if "choice" not in scene:
+            raise ProblemError(f"--solution {n}: recipe {self.recipe.name} draws one solution only")
+        index, _ = self._valid_candidates[n - 1]
+        scene.fix("choice", index)
+        c = self.construction
+        other = Solution(self.problem, self.recipe, Construction(scene, c.answers, c.points, c.solutions, c.warnings,
+                                                                  c.no_solution), self._validation)
+        cands = self._valid_candidates
+        other.__dict__["_valid_candidates"] = [cands[n - 1]] + cands[:n - 1] + cands[n:]
+        other._title_note = f" — solution {n} of {count}"
+        other.solution_numbers = [n] + [i for i in range(1, count + 1) if i != n]
+        return other
+
+    @property
+    def solution_numbers(self) -> list[int]:
+        """The number of each of :attr:`solution_values` (1 = the textbook's choice): 1, 2, … unless this is
+        the drawing of another solution (:meth:`as_solution`), which comes first."""
+        return self.__dict__.get("_numbers") or list(range(1, len(self.solution_values) + 1))
+
+    @solution_numbers.setter
+    def solution_numbers(self, numbers: list[int]) -> None:
+        self.__dict__["_numbers"] = list(numbers)
 
     @property
     def drawing_scene(self):

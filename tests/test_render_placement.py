@@ -11,7 +11,8 @@ import pytest
 import shapely
 from shapely import affinity
 
-from geomcon.render.placement import DISTANCES, ENOUGH, FAR_PENALTY, Placer, Request, directions, half_extent
+from geomcon.render.symbols import MARK_DISTANCES
+from geomcon.render.placement import AMBIGUOUS, DISTANCES, ENOUGH, LABEL_DISTANCES, FAR_PENALTY, Placer, Request, directions, half_extent
 
 
 class ReferencePlacer:
@@ -54,7 +55,7 @@ class ReferencePlacer:
             cands = [(c, req.spread * i) for i, c in enumerate(req.candidates)]
         else:
             cands = []
-            for j, extra in enumerate(DISTANCES):
+            for j, extra in enumerate(req.distances):
                 for rank, a in enumerate(directions(req.prefer)):
                     ux, uy = math.cos(a), math.sin(a)
                     reach = req.gap + extra + half_extent(ux, uy, req.width, req.height)
@@ -66,6 +67,11 @@ class ReferencePlacer:
             box = req.box(*centre)
             x0, y0, x1, y1 = box.bounds
             outside = 0.0 if f[0] <= x0 and f[1] <= y0 and x1 <= f[2] and y1 <= f[3] else 50.0
+            if any(box.intersects(g) for g in self._placed):     # on a text placed before: as bad as outside
+                outside = 50.0
+            if req.rivals and min(box.distance(shapely.Point(r)) for r in req.rivals) < box.distance(
+                    shapely.Point(req.anchor)):
+                outside += AMBIGUOUS                              # nearer another point than its own
             score = self.clearance(box, owner) - penalty - outside
             if score > best_score + 1e-12:
                 best, best_score = centre, score
@@ -116,7 +122,10 @@ def random_request(rng: random.Random, size: float = 60.0) -> Request:
                       for _ in range(rng.randint(1, 8)))
         return Request(anchor, w, h, 0.5, 0.0, 0.02, cands, rng.choice([0.0, 0.0, 30.0]))
     return Request(anchor, w, h, rng.uniform(0.2, 1.5), rng.uniform(-math.pi, math.pi),
-                   rng.choice([0.004, 0.02]), (), rng.choice([0.0, 0.0, 0.0, -45.0]))
+                   rng.choice([0.004, 0.02]), (), rng.choice([0.0, 0.0, 0.0, -45.0]),
+                   rng.choice([DISTANCES, LABEL_DISTANCES, MARK_DISTANCES]),
+                   tuple((anchor[0] + rng.uniform(-8, 8), anchor[1] + rng.uniform(-8, 8))
+                         for _ in range(rng.choice([0, 0, 1, 3]))))
 
 
 @pytest.mark.parametrize("seed", range(40))

@@ -43,10 +43,12 @@ from ..cam.program import Program, parse_program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
 from ..geometry import Arc, Line, Point, Polyline, Segment, circle, line_line, rotate, segment
+from ..geometry.measure import angle_at
 from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .cam_base_radius_rho import (add_rho_steps, analytic_flat_rho, construct_flat_rho, is_rho_form, margins,
                                   twin_grow, validate_rho)
+from .cam_common import add_rotation
 from .common import add_angle_mark, add_bar, angle_deg, length
 
 ALPHA_MIN = 1e-6
@@ -289,6 +291,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                                    f"The highest admissible point at e = {g['e']:g} from the axis: the centre O",
                                    "可行域内离 B0 最近的点即最佳回转中心 O" if g.get("e") is None else
                                    "在偏距 e 处可行域的最高点即回转中心 O"))
+    add_rotation(sc, O, k)
     r0 = sc.add("r0", length, O, B0, role=Role.MEASUREMENT, unit="mm",
                 caption=("r0 = OB0", "基圆半径 r0 = OB0"))
     sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
@@ -459,6 +462,19 @@ def binding_arm(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float]
     return segment(A0, arm_position(B0, A0, motion.tau, math.degrees(float(m.psi[0]))))
 
 
+def binding_mark(A0: Point, B0: Point, motion: ArmProgram, pos: tuple[str, float], K: Point,
+                 O: Point) -> tuple[Segment, marks.AngleMark]:
+    """The arm's normal at K and the angle from it to the binding line K→O: the allowance of its part
+    (α_allow of the rise or of the return), marked with its value so that the two lines tell apart."""
+    arm = binding_arm(A0, B0, motion, pos)
+    n = (arm.b - arm.a).unit().perp()
+    if n.dot(O - K) < 0:
+        n = -n
+    reach = abs(O - K) * 0.5
+    return (Segment(K - n * (0.15 * reach), K + n * reach),
+            marks.angle_mark(K, K + n * reach, O, "α", math.degrees(angle_at(K, K + n, O))))
+
+
 def construct_arm(g: Mapping[str, Any]) -> Construction:
     """The arm's positions, the velocity-image points K, the wedges at α_allow, the best O and r0."""
     prog, h, L = _program(g), g["h"], g["L"]
@@ -505,6 +521,7 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
          f"The admissible point of the circle of radius a = {g['a']:g} about A0 nearest B0: the centre O"),
         ("可行域内离 B0 最近的点即最佳凸轮中心 O" if g.get("a") is None else
          f"以 A0 为圆心、a = {g['a']:g} 为半径的圆在可行域内离 B0 最近的点即凸轮中心 O")))
+    add_rotation(sc, O, 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0)
     if g.get("a") is not None:
         sc.add("a_arc", arc_through, A0, O, 0.35, style="construction")
     a = sc.add("a", length, O, A0, role=Role.MEASUREMENT, unit="mm", caption=("a = OA0", "中心距 a = OA0"))
@@ -515,8 +532,10 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
         sc.add(f"bind_arm{j}", binding_arm, A0, B0, motion, pos, style="link-alt", optional=True,
                caption=("The binding position(s) of the arm, where the region's boundary passes through O",
                         "起作用的摆杆位置:可行域边界在该处通过 O") if j == 0 else ("", ""))
-        K = sc.add(f"bind_K{j}", binding_image, A0, B0, motion, pos, style="joint", label="K*", optional=True)
+        K = sc.add(f"bind_K{j}", binding_image, A0, B0, motion, pos, style="joint", label=f"K{j + 1}*", optional=True)
         sc.add(f"bind_line{j}", beyond, K, O, 0.25, style="admissible", optional=True)
+        sc.add(f"bind_mark{j}", binding_mark, A0, B0, motion, pos, K, O, role=Role.ANNOTATION, style="angle",
+               optional=True)
     r0 = sc.add("r0", length, O, B0, role=Role.MEASUREMENT, unit="mm", caption=("r0 = OB0", "基圆半径 r0 = OB0"))
     sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
     sc.add("OB0", segment, O, B0, style="construction")

@@ -34,7 +34,7 @@ from ..errors import NotAMechanism
 from ..geometry import Point, Polyline, circle, segment
 from ..scene import Ref, Role, Scene
 from .base import Construction
-from .cam_common import add_profile_steps, extremum_value, inversion_sign
+from .cam_common import add_profile_steps, add_rotation, extremum_value, inversion_sign
 
 GROW_MAX = 1e6
 """Largest factor by which the curvature limit may grow the base circle over the pressure angle's (a limit
@@ -109,6 +109,7 @@ def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
     inv = inversion_sign(g.get("rotation", "ccw"))
     sc = Scene("Base circle of a flat-faced follower from the curvature limit")
     O = sc.given("O", Point(0.0, 0.0), style="pivot", label="O", caption=("O: the cam's centre", "O:凸轮回转中心"))
+    add_rotation(sc, O, 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0)
     size = rho_allow + h
     origin = Point(1.6 * size, 0.0)
     width = 3.0 * size

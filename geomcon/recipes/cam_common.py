@@ -203,9 +203,18 @@ def normal_segment(P: Point, normal: Point, size: float) -> Segment:
 
 
 # ---------------------------------------------------------------------------------------------- drawing helpers
-def add_cam_centre(sc: Scene) -> Ref:
-    """The cam centre O (a fixed pivot at the origin)."""
-    return add_pivot(sc, "O", Point(0.0, 0.0), ("Cam centre O", "凸轮回转中心 O"))
+def add_cam_centre(sc: Scene, sense: float) -> Ref:
+    """The cam centre O (a fixed pivot at the origin) and the arrow of its sense of rotation ω
+    (``sense`` > 0: counter-clockwise)."""
+    O = add_pivot(sc, "O", Point(0.0, 0.0), ("Cam centre O", "凸轮回转中心 O"))
+    add_rotation(sc, O, sense)
+    return O
+
+
+def add_rotation(sc: Scene, O: Ref, sense: float) -> None:
+    """The arrow ω of the cam's sense of rotation about O, drawn with O (drawing only)."""
+    if sc.drawing:
+        sc.add("omega", marks.rotation, O, 1.0 if sense > 0 else -1.0, role=Role.ANNOTATION, style="angle")
 
 
 def add_base_circle(sc: Scene, O: Ref, r0: float, what: tuple[str, str] = ("pitch curve", "理论廓线")) -> Ref:

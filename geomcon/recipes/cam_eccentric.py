@@ -51,6 +51,7 @@ from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost
 from ..geometry.measure import angle_at, signed_angle
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
+from .cam_common import add_rotation
 from .common import add_pivot, angle_deg, difference, length
 
 UP = Point(0.0, 1.0)
@@ -306,6 +307,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     st = _state(g)
     sc = Scene("Eccentric-circle cam")
     O = add_pivot(sc, "O", Point(0.0, 0.0), ("Rotation centre O of the cam", "凸轮回转中心 O"))
+    add_rotation(sc, O, sense)
     how = {"delta": (f"turned by δ = {g.get('delta')}° from the lowest position", f"自最低位置转过 δ = {g.get('delta')}°"),
            "A_angle": (f"as shown: O→A at {g.get('A_angle')}° from the horizontal", f"如图:O→A 与水平线成 {g.get('A_angle')}°"),
            "contact_angle": (f"touching the follower at {g.get('contact_angle')}° from the ray O→A about A",
@@ -490,6 +492,7 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
     st = _state(g)
     sc = Scene("Eccentric-circle cam, oscillating follower")
     O = add_pivot(sc, "O", Point(0.0, 0.0), ("Rotation centre O of the cam", "凸轮回转中心 O"))
+    add_rotation(sc, O, sense)
     Q = add_pivot(sc, "Q", Point(0.0, a), (f"Arm pivot Q at a = {a:g} above O", f"摆杆回转中心 Q,OQ = a = {a:g}"))
     A = sc.given("A", _osc_A(E, Rp, a, L, left, sense, st, g.get(st) if st else 0.0, g.get("turn") or 0.0),
                  style="joint", caption=(f"Disc centre A at OA = {E:g} from O", f"圆盘中心 A,OA = {E:g}"))

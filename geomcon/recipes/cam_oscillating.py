@@ -236,7 +236,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     back = ("clockwise", "顺时针") if cam.sigma > 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with an oscillating {g['follower']} follower: inversion")
     drawing = sc.drawing                    # the arcs and ghost arms of the divisions: drawing only
-    O = add_cam_centre(sc)
+    O = add_cam_centre(sc, float(cam.sigma))
     A0 = add_pivot(sc, "A0", Point(0.0, a), (f"Arm pivot A0 with OA0 = a = {a:g}", f"摆杆转轴 A0,OA0 = a = {a:g}"),
                    ground_angle=math.pi / 2)
     sc.add("OA0", segment, O, A0, role=Role.GIVEN, style="frame")
@@ -257,7 +257,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     R = max(a, r0 + math.radians(h) * L + rr)
     add_motion_diagram(sc, prog, h, Point(1.55 * R, -0.5 * R), 3.0 * R, 0.5 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
-    As = [sc.add(f"A_d{i}", turned, A0, O, -float(cam.sigma), d, label=f"{i}′", style="point", caption=(
+    As = [sc.add(f"A_d{i}", turned, A0, O, -float(cam.sigma), d, label=f"{i}′", style="division", caption=(
         f"Divide the circle of radius a {back[0]} (−ω) from A0 as the cam angles of the divisions: 1′ … {n}′ "
         "(the pivot's inverted positions)",
         f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′(摆杆转轴的反转位置)")

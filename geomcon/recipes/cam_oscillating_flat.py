@@ -405,7 +405,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     back = ("clockwise", "顺时针") if cam.sigma > 0 else ("counter-clockwise", "逆时针")
     sc = Scene("Disc cam with an oscillating flat-faced follower: inversion")
     drawing = sc.drawing                    # the faces of the divisions, the worst positions: drawing only
-    O = add_cam_centre(sc)
+    O = add_cam_centre(sc, float(cam.sigma))
     A0 = add_pivot(sc, "A0", Point(0.0, a), (f"Arm pivot A0 with OA0 = a = {a:g}", f"摆杆转轴 A0,OA0 = a = {a:g}"),
                    ground_angle=math.pi / 2)
     if drawing:
@@ -433,6 +433,8 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     psi0 = sc.add("psi0", angle_deg, A0, O, T1, role=Role.MEASUREMENT, unit="deg",
                   caption=(f"Measure ψ0 = ∠OA0T{'′' if f else '0'}: sin ψ0 = (r0 + f)/a",
                            f"量得初始摆角 ψ0 = ∠OA0T{'′' if f else '0'}(sin ψ0 = (r0 + f)/a)"))
+    if drawing:                              # the arm's lowest direction, the ray ψ0 is measured to
+        sc.add("A0T", segment, A0, T1, style="construction")
     add_angle_mark(sc, "mark_psi0", A0, O, T1, "ψ0", psi0)
     fam = sc.given("faces", flat_family(cam), visible=False)
     tau = cam.tau
@@ -465,7 +467,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
             "turn A0T′ with them and lay off ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, … (the arm's directions)",
             f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′;A0T′ 随之反转,"
             "并在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …(摆杆方向)") if first else ("", ""))
-        sc.add(f"pivot_d{i}", same_point, A, style="point", label=f"{i}′")
+        sc.add(f"pivot_d{i}", same_point, A, style="division", label=f"{i}′")
         sc.add(f"face_d{i}", face_segment, A, D, O, f, reach, style="path", caption=(
             f"Draw the face in each inverted position, {abs(f):g} from 1′, 2′, … along the arm's direction"
             if f else "Draw the face along the arm's direction from 1′, 2′, …: the inverted face lines",
@@ -549,17 +551,20 @@ def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O:
                    "along it too, so α = 0 for a face through the pivot",
                    "最远接触点 K(face_max):过 K 的公法线垂直于平底并通过凸轮与摆杆的相对瞬心 P(在 OA0′ 上,"
                    "A0′P = a/(1 − εψ′));K 点速度亦沿此线,平底过转轴时压力角恒为 0")
-        else:
+        else:                       # the rise's K1, P1 and the return's K2, P2: one name for each point
             where = Ref(f"delta_alpha_max_{part}")
-            cap = (f"The {part}'s worst position (nearest contact K): the common normal KP through the relative instant "
-                   "centre P on OA0′ (A0′P = a/(1 − εψ′)), K's velocity ⊥ A0′K, α between them (tan α = |f|/l)",
-                   f"{'推程' if part == 'rise' else '回程'}压力角最大的位置(接触点 K 最近):公法线 KP 通过相对瞬心 P"
-                   "(在 OA0′ 上,A0′P = a/(1 − εψ′)),K 点速度 ⊥ A0′K,二者夹角即 α(tan α = |f|/l)")
+            n = "1" if part == "rise" else "2"
+            cap = (f"The {part}'s worst position (nearest contact K{n}): the common normal K{n}P{n} through the relative "
+                   f"instant centre P{n} on OA0′ (A0′P{n} = a/(1 − εψ′)), K{n}'s velocity ⊥ A0′K{n}, α between them "
+                   "(tan α = |f|/l)",
+                   f"{'推程' if part == 'rise' else '回程'}压力角最大的位置(接触点 K{n} 最近):公法线 K{n}P{n} 通过相对瞬心 "
+                   f"P{n}(在 OA0′ 上,A0′P{n} = a/(1 − εψ′)),K{n} 点速度 ⊥ A0′K{n},二者夹角即 α(tan α = |f|/l)")
+        tag = "" if part == "far" else ("1" if part == "rise" else "2")
         A, _, D = inv_pos.position(f"w_{part}", where, caption=cap)
         sc.add(f"wface_{part}", face_segment, A, D, O, f, Ref("face_reach"), style="link-alt")
-        K = sc.add(f"K_{part}", envelope_point, fam, where, style="joint", label="K")
+        K = sc.add(f"K_{part}", envelope_point, fam, where, style="joint", label=f"K{tag}")
         k = sc.add(f"k_{part}", speed_ratio, cam, where, None if part == "far" else part, visible=False)
-        P = sc.add(f"P_{part}", instant_centre, A, O, k, style="point", label="P")
+        P = sc.add(f"P_{part}", instant_centre, A, O, k, style="point", label=f"P{tag}")
         sc.add(f"normal_{part}", through, K, P, 0.15 * size, style="path")
         sc.add(f"arm_{part}", segment, A, K, style="ghost")
         if f:

@@ -362,7 +362,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     at = tuple(g.get("at") or ())
     turn_en, turn_zh = ("clockwise", "顺时针") if inv < 0 else ("counter-clockwise", "逆时针")
     sc = Scene(f"Disc cam with a translating {follower} follower: inversion")
-    O = add_cam_centre(sc)
+    O = add_cam_centre(sc, -inv)
     add_base_circle(sc, O, r0, ("profile", "实际廓线") if flat else ("pitch curve", "理论廓线"))
     if e != 0.0:
         sc.add("offset_circle", circle, O, abs(e), style="path",
@@ -389,7 +389,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     for i, dv in enumerate(divs, 1):
         s = prog.motion1(h, dv)[0]
         Cs.append(sc.add(f"C{i}", turned, B0, O, inv, dv, visible=False))
-        Bs.append(sc.add(f"B{i}", turned, Point(e, s0 + s), O, inv, dv, style="point", label=f"{i}′",
+        Bs.append(sc.add(f"B{i}", turned, Point(e, s0 + s), O, inv, dv, style="division", label=f"{i}′",
                          caption=("Lay off the displacements s1, s2, … from the base circle along the inverted axes: "
                                   "points 1′, 2′, …", "在各反转导路上自基圆量取位移 s1, s2, …,得 1′, 2′, …") if i == 1 else ("", "")))
     rise_end = divs.index(round(prog.rise.end, 9)) if round(prog.rise.end, 9) in divs else None

@@ -97,10 +97,9 @@ def add_bar(sc: Scene, key: str, a: Ref, b: Ref, name: tuple[str, str] = ("", ""
 
 
 def transmission_mark(c: Point, b: Point, d: Point, symbol: str, value: float):
-    """The mark of a transmission angle at joint ``c``: between c→d and c→b, or c→b extended beyond c when
-    ∠BCD is obtuse, so that the arc spans the acute angle its value names."""
-    if (b - c).dot(d - c) < 0:
-        b = c * 2.0 - b
+    """The mark of a transmission angle at joint ``c`` on the links c–b and c–d; when ∠BCD is obtuse its
+    value is the supplement and the arc spans the acute angle from b–c extended beyond c, which the mark
+    draws (:func:`geomcon.render.symbols.angle_rays`), so that the arc never ends on an undrawn line."""
     return marks.AngleMark(c, b, d, symbol, value, None)
 
 

@@ -28,7 +28,7 @@ from typing import Any, Mapping
 from ..analytic.design_by_k import rocker_design, rocker_design_valid
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
-from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherThan, Point, RightOf, Rightmost,
+from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherThan, Point, RightOf, Rightmost, Segment,
                         circle, circle_circle, line_circle, line_line, line_through, midpoint, point_along, segment)
 from ..scene import Ref, Role, Scene, marks
 from ..scene.tape import lifted
@@ -237,6 +237,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
         flat += [Ref(f"valid_{i}"), Ref(f"C1_folded_{i}"), Ref(f"A_near_{i}"), Ref(f"AD_{i}")]
     idx = sc.add("choice", best_index, *flat, visible=False)
     _draw_choice(sc, idx, cands, th)
+    if sc.drawing:                           # the other valid designs, light, with the last step
+        sc.add("other_designs", other_designs, idx, D, *(x for i, c in enumerate(cands, 1)
+                                                        for x in (Ref(f"valid_{i}"), c[0], c[1], c[2])), style="ghost")
     answers = {name: f"chosen_{name}" for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near")}
     answers.update(CD="CD", theta="theta", K="K")
     if g.get("H_out") is not None:
@@ -248,6 +251,22 @@ def construct(g: Mapping[str, Any]) -> Construction:
     points = {"D": "D", "A": "A", "C1": "Cf", "C2": "Ce", "B1": "B1", "B2": "B2"}
     return Construction(sc, answers, points, solutions=tuple(sols),
                         no_solution=_no_solution_message(g, closing))
+
+
+def other_designs(idx: int | None, D: Point, *flat: Any) -> tuple[Segment, ...]:
+    """The valid designs other than the drawn one (candidate ``idx``), each in its folded extreme position:
+    crank A–B1, coupler B1–C1 and the frame A–D (``flat`` holds valid, A, C1, C2 per candidate; the folded
+    position is the one nearer A, AB half the difference of AC)."""
+    out: list[Segment] = []
+    for i in range(0, len(flat), 4):
+        valid, A, P1, P2 = flat[i:i + 4]
+        if not valid or i // 4 == idx or A is None or P1 is None or P2 is None:
+            continue
+        cf, ce = (P1, P2) if abs(P1 - A) <= abs(P2 - A) else (P2, P1)
+        ab = (abs(ce - A) - abs(cf - A)) / 2
+        b1 = A + (A - cf).unit() * ab if cf != A else A
+        out += [Segment(A, b1), Segment(b1, cf), Segment(A, D)]
+    return tuple(s for s in out if s.a != s.b)
 
 
 def _add_output_arm(sc: Scene, H: float) -> str:

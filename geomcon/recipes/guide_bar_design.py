@@ -133,14 +133,49 @@ def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref
                     caption=("B2, the mirror image of B1 in the centre line", "B1 关于中心线的对称点 B2"))
         sc.add("AC", length, A, C, role=Role.MEASUREMENT, unit="mm", caption=("Frame AC", "机架 AC"))
         sc.add("AB", length, A, B1, visible=False, unit="mm")
-    drawing = sc.drawing                     # the cranks, right-angle marks and the ψ mark only a drawing needs
+    drawing = sc.drawing                     # the cranks, sliders, right-angle marks and the ψ, θ marks only a drawing needs
     for i, B in enumerate((B1, B2), 1) if drawing else ():
         add_bar(sc, f"AB{i}", A, B, (f"Crank AB{i} ⊥ guide bar CB{i}", f"曲柄 AB{i} ⊥ 导杆 CB{i}"), style="link" if i == 1 else "link-alt")
         sc.add(f"right{i}", marks.right_angle, B, A, C, role=Role.ANNOTATION, style="right-angle")
+        sc.add(f"slider_B{i}", _slider_on, B, C, role=Role.ANNOTATION, style="slider")   # the block on the guide bar
     ps = sc.add("psi", angle_deg, C, B1, B2, role=Role.MEASUREMENT, unit="deg", caption=("ψ = ∠B1CB2", "ψ = ∠B1CB2"))
     if drawing:
         add_angle_mark(sc, "mark_psi", C, B1, B2, "ψ", ps)
+        add_angle_mark(sc, "mark_theta", A, B1, B2, "θ", th)   # between AB2 and AB1 extended: ∠B1AB2 = 180° − θ
     return A, C, B1, B2, th
+
+
+def _slider_on(B: Point, C: Point) -> marks.Slider:
+    """The slider block at B, sliding along the guide bar CB."""
+    return marks.slider(B, B - C)
+
+
+def _ram_guide(guide: Line, D1: Point, D2: Point) -> marks.Guide:
+    """The ram's guide drawn (hatched on the side away from the coupler) over the feet of D1 and D2 on it,
+    a fifth of the stroke beyond each."""
+    a, b = foot(guide, D1), foot(guide, D2)
+    extra = (b - a) * 0.2
+    side = 1 if (b - a).cross(D1 - a) < 0 else -1
+    return marks.guide(a - extra, b + extra, side)
+
+
+def _ram_under(guide: Line, D: Point) -> marks.Slider:
+    """The ram's block on its guide under D."""
+    return marks.slider(foot(guide, D), guide.direction)
+
+
+def _bar_end(C: Point, B: Point, D: Point) -> Point:
+    """The end of the guide bar from C: the farther of the slider's pin B and the arm's end D, so that the
+    drawn bar carries both (D lies between C and B when CD < CB)."""
+    return D if abs(D - C) >= abs(B - C) else B
+
+
+def _d_beyond_b(g: Mapping[str, Any]) -> bool:
+    """Whether D1 lies beyond B1 from C (CD = H/(2 sin θ/2) > CB1), from the givens: chooses the caption's
+    wording only."""
+    half = math.radians(theta_from_k(g["K"]) / 2)
+    cb = g["AC"] * math.cos(half) if g.get("AC") is not None else g["AB"] / math.tan(half)
+    return g["H"] / (2 * math.sin(half)) > cb
 
 
 def _complement_turn(half: float) -> float:
@@ -169,14 +204,18 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     off = sc.add("off", Line, sc.given_at("Hh", -H / 2, 0.0, visible=False), Point(0.0, 1.0), caption=(
         f"The line parallel to the centre line at H/2 = {H / 2:g}", f"作与中心线相距 H/2 = {H / 2:g} 的平行线"))
     ray1 = sc.add("cb1", line_through, C, B1, visible=False)
-    D1 = sc.add("D1", meet_lines, ray1, off, role=Role.RESULT, style="joint", label="D1",
-                caption=("It meets CB1 extended at D1: D1D2 = H", "交 CB1 延长线于 D1,D1D2 = H"))
+    where = (("It meets CB1 extended at D1 (beyond B1): D1D2 = H", "交 CB1 延长线于 D1(在 B1 之外),D1D2 = H")
+             if _d_beyond_b(g) else
+             ("It meets CB1 at D1 (between C and B1): D1D2 = H", "交 CB1 于 D1(在 C 与 B1 之间),D1D2 = H"))
+    D1 = sc.add("D1", meet_lines, ray1, off, role=Role.RESULT, style="joint", label="D1", caption=where)
     D2 = sc.add("D2", reflect, D1, centre, role=Role.RESULT, style="joint", label="D2",
                 caption=("D2, the mirror image of D1", "D1 的对称点 D2"))
     CD = sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Guide bar CD = CD1", "导杆长 CD = CD1"))
     drawing = sc.drawing                     # the guide bars, the arc of D, the coupler and the slider only a drawing needs
-    for i, D in enumerate((D1, D2), 1) if drawing else ():
-        add_bar(sc, f"CD{i}", C, D, (f"Guide bar CD{i}", f"导杆 CD{i}") if i == 1 else ("", ""), style="link" if i == 1 else "link-alt")
+    for i, (B, D) in enumerate(((B1, D1), (B2, D2)), 1) if drawing else ():
+        end = sc.add(f"bar_end{i}", _bar_end, C, B, D, visible=False)
+        add_bar(sc, f"CD{i}", C, end, (f"Guide bar CD{i}, carrying the slider B{i}", f"导杆 CD{i}(滑块 B{i} 在其上)")
+                if i == 1 else ("", ""), style="link" if i == 1 else "link-alt")
     if drawing:
         sc.add("arcD", circle, C, CD, style="path", caption=("The arc of D about C", "D 点绕 C 的轨迹圆弧"))
     T = sc.add("T", line_circle, centre, sc.add("kCD", circle, C, CD, visible=False), branch=Ahead(C, A), style="point",
@@ -188,6 +227,14 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     sc.add("h", length, C, G, role=Role.MEASUREMENT, unit="mm", caption=("h = CG", "导路位置 h = CG"))
     dev = sc.add("deviation", length, G, M, role=Role.MEASUREMENT, unit="mm",
                  caption=("Largest deviation of D from the guide: GM = GT", "D 偏离导路的最大距离 GM = GT"))
+    if drawing:
+        sc.add("ram_guide_mark", _ram_guide, guide, D1, D2, role=Role.ANNOTATION, style="guide",
+               caption=("The ram's guide over the stroke", "滑枕(刨头)导路"))
+    if drawing and g.get("alpha_allow") is None and g.get("DE") is None:
+        for i, D in enumerate((D1, D2), 1):     # DE not yet chosen: the ram at its ends of stroke, under D1, D2
+            sc.add(f"ram{i}", _ram_under, guide, D, role=Role.ANNOTATION, style="slider", caption=(
+                "The ram at its ends of stroke under D1 and D2 (D1D2 = H; a coupler DE joins it to D)",
+                "滑枕位于行程两端(D1、D2 之下,D1D2 = H;连杆 DE 连接 D 与滑枕)") if i == 1 else ("", ""))
     if g.get("alpha_allow") is not None:
         DE = sc.add("DE", _sin_ratio, dev, g["alpha_allow"], role=Role.MEASUREMENT, unit="mm",
                     caption=(f"Shortest coupler DE = GM / sin αallow, αallow = {g['alpha_allow']:g}°",

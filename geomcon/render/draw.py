@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from .labels import Runs, label_runs, text_width
-from .placement import Request, half_extent
+from .placement import LABEL_DISTANCES, Request, half_extent
 from .shapes import Disc, ArcP, Pen, Poly, Shape
 from .style import LABEL_SIZE, PAPER, Style
 from .view import TAU, View, clip_arc, clip_interval
@@ -42,7 +42,9 @@ class TextRequest:
     italic: bool = False
     cls: str = "label"
     fallback: TextRequest | None = None
-    """A shorter text (an angle's symbol without its value) used when this one finds no free place."""
+    """A shorter text used when this one finds no free place."""
+    optional: bool = False
+    """Left out where it would cover another text (a label of a crowded numbered row)."""
 
 
 @dataclass
@@ -62,12 +64,14 @@ class Drawn:
 class Context:
     """What drawing a value may look at besides the value: the view, the points drawn in the figure (a
     construction circle is drawn as compass arcs through them), the centre of the drawing (labels prefer
-    to point away from it) and the angle marks drawn so far at each vertex (nested marks get larger arcs)."""
+    to point away from it), the angle marks drawn so far at each vertex (nested marks get larger arcs) and
+    the links of the figure on paper (a ground symbol turns away from them)."""
 
     view: View
     points: tuple[Point, ...] = ()
     centre: XY = (0.0, 0.0)
     marks_at: dict[tuple[float, float], int] = field(default_factory=dict)
+    links: tuple[tuple[XY, XY], ...] = ()
 
 
 def pen(style: Style) -> Pen:
@@ -111,9 +115,24 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
             req = Request(c, w, h, gap, style.label_dir, candidates=spots)
         else:
             away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
-            req = Request(c, w, h, gap, away)
-        out.texts.append(TextRequest(runs, size, req, italic=True))
+            req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
+        out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional))
     return out
+
+
+RIVAL_REACH = 15.0
+"""Points within this (paper mm) of a point compete for its label's place (:class:`~.placement.Request`)."""
+
+
+def _rivals(c: XY, ctx: Context) -> tuple[XY, ...]:
+    """The other points of the figure near paper point ``c``, on paper."""
+    out = []
+    for p in ctx.points:
+        q = ctx.view.p(p)
+        d = math.hypot(q[0] - c[0], q[1] - c[1])
+        if 1e-9 < d <= RIVAL_REACH:
+            out.append(q)
+    return tuple(sorted(set(out)))
 
 
 def _line_part(p: Point, d: Point, lo: float, hi: float, style: Style, ctx: Context) -> Drawn:

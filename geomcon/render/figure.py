@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Iterable
 
+import numpy as np
 import shapely
 import shapely.ops
 
@@ -26,7 +27,7 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import Placer
+from .placement import Placer, nearer_rival
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
@@ -160,7 +161,7 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         box = viewbox or grow(content_box(scene, steps, values), FIG_MARGIN * mu)
     view = View(box, mu, origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
-    ctx = Context(view, pts, _centre(view, pts))
+    ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -176,6 +177,17 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         pending.append((drawn, is_cur))
     _place_texts(view, groups, pending)
     return Figure(view, groups, values, n)
+
+
+def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
+    """The links of the frame (segments of a style on the links layer) on paper."""
+    out = []
+    for _, s in steps:
+        v = values[s.key]
+        segs = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Segment) and x.a != x.b]
+        if segs and resolve_style(s.style, s.role, "curve").layer == "links":
+            out += [(view.p(x.a), view.p(x.b)) for x in segs]
+    return tuple(out)
 
 
 def merged_labels(steps: list[tuple[int, Any]], values: dict[str, Any], box: Box) -> dict[str, str | None]:
@@ -210,6 +222,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     """Place every label and mark text, in step order, clear of all shapes of the frame."""
     obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
+    texts: list[Any] = []
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
         for t in drawn.texts:
@@ -219,6 +232,11 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 if alt_score > score + 0.3:
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
+            if t.optional and ((texts and shapely.intersects(box, texts).any())
+                               or nearer_rival(t.request, np.array([box]))[0]):
+                continue                # a crowded row's label: left out rather than printed over another
+                                        # or nearer another point than its own
+            texts.append(box)
             placer.commit(box)
             leader = _leader(t, box)
             if leader is not None:

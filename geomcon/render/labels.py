@@ -19,7 +19,7 @@ import re
 
 Runs = tuple[tuple[str, bool], ...]
 
-_LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴']*)$")
+_LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴'*]*)$")
 _SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max)\b")
 
 
@@ -27,6 +27,8 @@ def label_runs(label: str) -> Runs:
     """Runs of a point label: letters, then trailing digits as a subscript, then primes; ``"D (D1)"`` (a
     result drawn on the candidate it was chosen from) as both labels.
 
+    >>> label_runs("K2*")
+    (('K', False), ('2', True), ('*', False))
     >>> label_runs("D (D1)")
     (('D', False), (' (', False), ('D', False), ('1', True), (')', False))
     """

@@ -38,6 +38,18 @@ XY = tuple[float, float]
 DISTANCES = (0.0, 2.0, 4.5, 8.0)
 """Extra distances (paper mm) beyond the gap at which a text is tried, nearest first."""
 
+LABEL_DISTANCES = (0.0, 1.0, 2.0, 3.0)
+"""The distances tried for a point's label: its box then lies within gap + 3 mm of the point (gap = the
+marker's radius + 0.4 mm), so that a reader never takes it for another point's label."""
+
+LABEL_REACH = 6.0
+"""The most (paper mm) a point's label box lies from its point, whatever the marker (checked over the
+gallery by the tests)."""
+
+AMBIGUOUS = 5.0
+"""Score lost by a label's box nearer another point than its own (worse than covering a line, better than
+covering a text or leaving the frame)."""
+
 FAR_PENALTY = 0.25
 """Score lost per step of :data:`DISTANCES`."""
 
@@ -62,6 +74,12 @@ class Request:
         Explicit box centres to choose from, best first (instead of directions around the anchor).
     rotate : float
         Rotation of the box about its centre, degrees (clockwise as seen).
+    distances : tuple of float
+        Extra distances (paper mm) beyond the gap at which the box is tried, nearest first (a point's label
+        stays near its point: :data:`LABEL_DISTANCES`).
+    rivals : tuple of (float, float)
+        Other points near the anchor (a point's label): a box nearer one of them than the anchor would be
+        read as its label, and loses :data:`AMBIGUOUS`.
     """
 
     anchor: XY
@@ -72,6 +90,8 @@ class Request:
     spread: float = 0.004
     candidates: tuple[XY, ...] = ()
     rotate: float = 0.0
+    distances: tuple[float, ...] = DISTANCES
+    rivals: tuple[XY, ...] = ()
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
@@ -110,6 +130,21 @@ def half_extent(ux: float, uy: float, w: float, h: float) -> float:
     return min(tx, ty)
 
 
+def nearer_rival(req: Request, boxes: np.ndarray) -> list[bool]:
+    """Whether each of ``boxes`` lies nearer one of ``req.rivals`` than its anchor (a label read as
+    another point's).
+
+    >>> r = Request((0.0, 0.0), 2.0, 2.0, 0.5, 0.0, rivals=((6.0, 0.0),))
+    >>> nearer_rival(r, shapely.box([1.0, 4.0], [-1.0, -1.0], [3.0, 5.5], [1.0, 1.0]))
+    [False, True]
+    """
+    if not req.rivals or not len(boxes):
+        return [False] * len(boxes)
+    own = shapely.distance(boxes, shapely.Point(req.anchor))
+    other = np.min(shapely.distance(np.asarray(boxes)[:, None], shapely.points(np.array(req.rivals))[None, :]), axis=1)
+    return (other < own).tolist()
+
+
 class Placer:
     """Greedy text placement against fixed obstacles (shapely geometries in paper mm).
 
@@ -128,7 +163,20 @@ class Placer:
         self._obstacles = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles],
                                 [a for _, _, a in obstacles], split=True)
         self._placed = Layer([])
+        self._boxes: list[shapely.Geometry] = []
+        self._tree: shapely.STRtree | None = None
         self._frame = frame
+
+    def covers_placed(self, boxes: np.ndarray) -> np.ndarray:
+        """Whether each of ``boxes`` meets a text box or leader placed before (such a place is as bad as
+        one outside the frame: two texts never print on top of each other while any other place is left)."""
+        out = np.zeros(len(boxes), dtype=bool)
+        if self._boxes and len(boxes):
+            if self._tree is None:
+                self._tree = shapely.STRtree(self._boxes)
+            hit = self._tree.query(boxes, predicate="intersects")[0]
+            out[hit] = True
+        return out
 
     def _near(self, bounds: np.ndarray, owner: str) -> tuple[tuple[Layer, Nearby], ...]:
         """What may come near each of the boxes ``bounds``: obstacles not ``owner``'s, placed geometries."""
@@ -155,6 +203,8 @@ class Placer:
     def commit(self, geom: shapely.Geometry) -> None:
         """Record something placed (a text's box, a leader line): later texts keep clear of it."""
         self._placed.append(geom)
+        self._boxes.append(geom)
+        self._tree = None
 
     def place(self, req: Request, owner: str) -> XY:
         """Place ``req`` at its best position and record it; returns the box centre."""
@@ -181,7 +231,10 @@ class _Scan:
         self.bounds = shapely.bounds(self.boxes)
         f, b = placer._frame, self.bounds
         inside = (f[0] <= b[:, 0]) & (f[1] <= b[:, 1]) & (b[:, 2] <= f[2]) & (b[:, 3] <= f[3])
+        inside &= ~placer.covers_placed(self.boxes)
         self.outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
+        if req.rivals:
+            self.outside = [o + (AMBIGUOUS if bad else 0.0) for o, bad in zip(self.outside, nearer_rival(req, self.boxes))]
         self.static = [ENOUGH - penalty - out for penalty, out in zip(self.cost, self.outside)]
         self.reach = list(itertools.accumulate(reversed(self.static), max))[::-1]   # the best static from i on
         self.near = placer._near(self.bounds, owner)
@@ -278,10 +331,10 @@ def _centres(req: Request) -> tuple[list[XY], list[float]]:
     with np.errstate(divide="ignore"):
         tx = np.where(ax > 1e-12, (req.width / 2) / ax, math.inf)
         ty = np.where(ay > 1e-12, (req.height / 2) / ay, math.inf)
-    reach = (req.gap + np.array(DISTANCES)[:, None]) + np.minimum(tx, ty)
+    reach = (req.gap + np.array(req.distances)[:, None]) + np.minimum(tx, ty)
     cx, cy = req.anchor[0] + ux * reach, req.anchor[1] + uy * reach
     rank = np.arange(len(ux))
-    penalty = FAR_PENALTY * np.arange(len(DISTANCES))[:, None] + req.spread * rank
+    penalty = FAR_PENALTY * np.arange(len(req.distances))[:, None] + req.spread * rank
     return list(zip(cx.ravel().tolist(), cy.ravel().tolist())), penalty.ravel().tolist()
 
 

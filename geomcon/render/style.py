@@ -78,6 +78,9 @@ class Style:
         figure's centre. A fixed direction is held to firmly (tick labels of a diagram's axis).
     label_size : float or None
         Font size of a point's label, paper mm (None: :data:`LABEL_SIZE`).
+    label_optional : bool
+        A point of a numbered row (the divisions 1′, 2′, … of a cam): its label is left out where it would
+        cover another text (the row is crowded), never printed on top of it.
     """
 
     name: str
@@ -92,6 +95,7 @@ class Style:
     compass: bool = False
     label_dir: float | None = None
     label_size: float | None = None
+    label_optional: bool = False
 
 
 STYLES: dict[str, Style] = {s.name: s for s in (
@@ -101,7 +105,8 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("point", marker="dot", radius=0.55),
     Style("candidate", stroke="#7d8590", marker="hollow", radius=1.0, marker_width=0.3, layer="construction"),
     Style("given", marker="dot", radius=0.75),
-    Style("tick", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6),
+    Style("tick", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6, label_optional=True),
+    Style("division", marker="dot", radius=0.55, label_optional=True),
     # curves
     Style("frame", width=0.25, dash=(6.0, 1.2, 1.0, 1.2)),
     Style("construction", stroke="#8f959c", width=0.18, layer="construction", compass=True),

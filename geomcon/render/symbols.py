@@ -18,8 +18,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import shapely
+
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
-from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider, Vector
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
 from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
                    draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
@@ -28,12 +30,39 @@ from .shapes import ArcP, Pen, Poly
 from .style import MARK_TEXT_SIZE, PAPER, Style
 
 HATCH = 0.2     # width of hatch strokes
+MARK_DISTANCES = (0.0, 2.0, 4.5, 8.0, 12.0, 16.0, 22.0, 30.0)
+"""Distances (paper mm beyond the gap) at which an angle's text is tried: farther than a label may go, since
+a value always prints (a leader joins a far text to its arc)."""
 
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
-    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side."""
+    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side; turned
+    from its side by the least multiple of 45° that keeps it off every link and point of the figure (a
+    ground drawn across a link reads as a frame the link cannot pass)."""
     c = ctx.view.p(g.at)
-    u = (math.cos(g.angle), -math.sin(g.angle))        # towards the ground, on paper
+    first = None
+    for k in (0, 1, -1, 2, -2, 3, -3, 4):
+        out = _ground_at(c, g.angle + k * math.pi / 4, style)
+        first = first or out
+        if not _crosses_links(c, out, ctx):
+            return out
+    return first
+
+
+def _crosses_links(c: XY, drawn: Drawn, ctx: Context) -> bool:
+    """Whether a ground symbol at paper point ``c`` meets a link away from the hinge it holds, or comes
+    within 1.5 mm of another point of the figure."""
+    hinge = shapely.Point(c).buffer(1.7, 8)
+    geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
+    if ctx.links and shapely.intersects(geo, shapely.MultiLineString([list(s) for s in ctx.links])):
+        return True
+    near = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
+    return bool(near) and bool(shapely.dwithin(geo, shapely.MultiPoint(near), 1.5))
+
+
+def _ground_at(c: XY, angle: float, style: Style) -> Drawn:
+    """The ground symbol at paper point ``c``, the ground towards model angle ``angle``."""
+    u = (math.cos(angle), -math.sin(angle))        # towards the ground, on paper
     n = (-u[1], u[0])
     base = _add(c, u, 4.2)
     p = pen(style)
@@ -114,8 +143,8 @@ def _radius(m: AngleMark, va: Point, vb: Point, ctx: Context) -> float:
 
 
 def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
-    """The arc of a marked angle and its text (``θ=12.51°``, or just the symbol where the full text finds
-    no room), placed later near the bisector, outside the arc."""
+    """The arc of a marked angle and its text with its value, as the textbook prints it (``θ=12.51°``),
+    placed later near the bisector outside the arc, or farther with a leader where the figure is crowded."""
     if m.a == m.vertex or m.b == m.vertex:
         return Drawn()
     va, vb, flip = angle_rays(m)
@@ -130,8 +159,7 @@ def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
     if flip:                                              # the extension the arc starts from
         out.shapes.append(Poly((c, _add(c, _paper_dir(va), r + 2.5)), Pen(style.stroke, 0.18, (1.2, 0.8))))
     mid, prefer = arc.at(0.5), -(a0 + phi / 2)
-    short = _mark_text(rich_runs(m.symbol), mid, prefer, None)
-    out.texts.append(_mark_text(rich_runs(m.text), mid, prefer, short))
+    out.texts.append(_mark_text(rich_runs(m.text), mid, prefer, None))
     return out
 
 
@@ -139,8 +167,31 @@ def _mark_text(runs: tuple[tuple[str, bool], ...], anchor: XY, prefer: float,
                fallback: TextRequest | None) -> TextRequest:
     sub = any(s for _, s in runs)
     req = Request(anchor, text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * (0.95 if sub else 0.78), 0.5,
-                  prefer, spread=0.05)
+                  prefer, spread=0.05, distances=MARK_DISTANCES)
     return TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text", fallback=fallback)
+
+
+ROTATION_RADIUS = 6.5
+"""Radius (paper mm) of the arrow of a sense of rotation (ω) about its centre."""
+
+
+def draw_rotation(m: Rotation, style: Style, ctx: Context) -> Drawn:
+    """The arrow of a sense of rotation: an arc of 110° above its centre (the ground hangs below), its
+    arrowhead at the end the part turns towards, and the symbol ω placed beside it."""
+    c = ctx.view.p(m.at)
+    r = ROTATION_RADIUS
+    ccw = m.sense > 0
+    lo, hi = math.radians(35.0), math.radians(145.0)                    # model angles, above the centre
+    start, end = (lo, hi) if ccw else (hi, lo)
+    arc = ArcP(c, r, -start, -(end - start), pen(style))
+    tip = arc.at(1.0)
+    back = arc.at(0.93)                                                # the tangent's direction, backwards
+    out = Drawn([arc, _arrow(tip, back, style)])
+    runs = rich_runs(m.symbol)
+    req = Request(arc.at(0.5), text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * 0.78, 0.6, -math.pi / 2,
+                  spread=0.05, distances=MARK_DISTANCES)
+    out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, italic=True, cls="mark-text"))
+    return out
 
 
 def draw_right_angle(m: RightAngleMark, style: Style, ctx: Context) -> Drawn:
@@ -194,10 +245,11 @@ def draw_dimension(m: Dimension, style: Style, ctx: Context) -> Drawn:
     up = (math.sin(math.radians(ang)), -math.cos(math.radians(ang)))      # the text's "up", on paper
     outward = 1.0 if up[0] * n[0] + up[1] * n[1] >= 0 else -1.0
     cands = []
-    for side in (outward, -outward):
-        for t in (0.5, 0.3, 0.7, 0.15, 0.85):
-            base = (qa[0] + (qb[0] - qa[0]) * t, qa[1] + (qb[1] - qa[1]) * t)
-            cands.append(_add(base, up, side * (0.6 + h / 2)))
+    for gap in (0.6, 1.8 + h):              # on the dimension line, else a line further out (labels there)
+        for side in (outward, -outward):
+            for t in (0.5, 0.3, 0.7, 0.15, 0.85):
+                base = (qa[0] + (qb[0] - qa[0]) * t, qa[1] + (qb[1] - qa[1]) * t)
+                cands.append(_add(base, up, side * (gap + h / 2)))
     req = Request(((qa[0] + qb[0]) / 2, (qa[1] + qb[1]) / 2), w, h, 0.6, 0.0, spread=0.06,
                   candidates=tuple(cands), rotate=round(ang, 6))
     out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text"))
@@ -229,7 +281,7 @@ def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Dr
 
 _TABLE = {Segment: draw_segment, Polyline: draw_polyline, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
           AngleMark: draw_angle, RightAngleMark: draw_right_angle, Dimension: draw_dimension,
-          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Vector: draw_vector}
+          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Vector: draw_vector, Rotation: draw_rotation}
 
 
 def kind_of(value: Any) -> str:
@@ -240,6 +292,6 @@ def kind_of(value: Any) -> str:
         return "curve"
     if isinstance(value, (tuple, list)):
         return kind_of(value[0]) if value else "none"
-    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide)):
+    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide, Rotation)):
         return type(value).__name__
     return "none"

@@ -87,6 +87,25 @@ class Guide:
     side: int = -1
 
 
+@dataclass(frozen=True, slots=True)
+class Rotation:
+    """The sense of rotation of a part turning about ``at`` (a cam's ω): an arc with an arrowhead,
+    counter-clockwise for ``sense`` > 0, clockwise for ``sense`` < 0, marked ``symbol``."""
+
+    at: Point
+    sense: float
+    symbol: str = "ω"
+
+
+def rotation(at: Point, sense: float, symbol: str = "ω") -> Rotation:
+    """Build a :class:`Rotation` arrow (an annotation step operation).
+
+    >>> rotation(Point(0, 0), -1.0).sense
+    -1.0
+    """
+    return Rotation(at, sense, symbol)
+
+
 def angle_mark(vertex: Point, a: Point, b: Point, symbol: str, value: float, radius: float | None = None) -> AngleMark:
     """Build an :class:`AngleMark` (an annotation step operation)."""
     return AngleMark(vertex, a, b, symbol, value, radius)

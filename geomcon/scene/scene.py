@@ -488,6 +488,29 @@ class Scene:
         except GeomconError as exc:
             raise Unbuildable(key, self.caption(key)[0], exc) from None
 
+    def fix(self, key: str, value: Any) -> None:
+        """Give step ``key`` the value ``value`` before anything is evaluated, instead of computing it: a
+        drawing of another candidate of a construction fixes its choice step (``choice``) so.
+
+        >>> sc = Scene()
+        >>> i = sc.add("choice", int, 0)
+        >>> sc.fix("choice", 2)
+        >>> sc.value("choice")
+        2
+
+        Raises
+        ------
+        KeyError
+            When there is no such step.
+        ValueError
+            When the step was evaluated already (to another value).
+        """
+        if key not in self._rec:
+            raise KeyError(key)
+        if key in self._memo and self._memo[key] != value:
+            raise ValueError(f"step '{key}' was evaluated already")
+        self._memo[key] = value
+
     def is_evaluated(self, key: str) -> bool:
         """True when the step's value has been computed already."""
         return key in self._memo

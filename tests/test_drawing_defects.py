@@ -1,0 +1,255 @@
+"""What a teacher saw wrong in the drawings (issue 11), checked over every gallery figure so that none comes
+back: texts printed on top of each other, labels far from their points, angle marks without their value, a
+ground symbol drawn across a link."""
+from __future__ import annotations
+
+import functools
+import itertools
+from pathlib import Path
+
+import pytest
+import shapely
+from shapely import affinity
+
+from geomcon.geometry.primitives import Line, Point, Ray, Segment
+from geomcon.problems import load_problem
+from geomcon.render.figure import Figure, build_figure
+from geomcon.render.placement import LABEL_REACH
+from geomcon.render.symbols import angle_rays
+from geomcon.render.shapes import ArcP, Poly, Text, obstacle
+from geomcon.render.page import PageSpec
+from geomcon.render.svg import place_figure
+from geomcon.scene.marks import AngleMark, Ground, Guide, Rotation, Slider
+from geomcon.solve import solve
+
+PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
+
+
+@functools.lru_cache(maxsize=None)
+def figure(name: str) -> Figure:
+    """The full figure of a bundled problem, drawn as its sheet 1 draws it (default page: A4 landscape)."""
+    sol = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml"))
+    sc, page = sol.drawing_scene, PageSpec()
+    _, _, view = place_figure(sc, page, sol.figure_lines(page.lang), sol.warnings)
+    return build_figure(sc, None, view.box, view.origin, mu=view.mu)
+
+
+def box(t: Text) -> shapely.Geometry:
+    """A text's box on paper, turned as the text is."""
+    b = shapely.box(*t.box)
+    return affinity.rotate(b, t.rotate, origin=b.centroid) if t.rotate else b
+
+
+def runs(t: Text) -> str:
+    return "".join(s for s, _ in t.runs)
+
+
+def angle_marks(v) -> list[AngleMark]:
+    if isinstance(v, AngleMark):
+        return [v]
+    if isinstance(v, (tuple, list)):
+        return [m for x in v for m in angle_marks(x)]
+    return []
+
+
+NAMES = [p.stem for p in PROBLEMS]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_two_texts_of_a_figure_overlap(name):
+    fig = figure(name)
+    texts = [(g.key, t) for g in fig.groups for t in g.texts]
+    bad = [(k1, runs(a), k2, runs(b)) for (k1, a), (k2, b) in itertools.combinations(texts, 2)
+           if box(a).intersection(box(b)).area > 1e-9]
+    assert not bad
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_label_lies_near_its_point(name):
+    """A point's label box lies within LABEL_REACH (6 mm of paper, at the figure's scale) of its point."""
+    fig = figure(name)
+    far = [(g.key, runs(t), round(box(t).distance(shapely.Point(fig.view.p(fig.values[g.key]))), 2))
+           for g in fig.groups if isinstance(fig.values[g.key], Point) for t in g.texts if t.cls == "label"]
+    assert LABEL_REACH == 6.0
+    assert not [f for f in far if f[2] > LABEL_REACH]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_angle_mark_shows_its_value(name):
+    """As the textbook prints them: ``θ=12.51°``, never the bare symbol."""
+    fig = figure(name)
+    for g in fig.groups:
+        marks = angle_marks(fig.values[g.key])
+        if marks:
+            assert sorted(runs(t) for t in g.texts) == sorted(m.text for m in marks), g.key
+            assert all("=" in runs(t) and runs(t).endswith("°") for t in g.texts)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_ground_symbol_crosses_a_link(name):
+    fig = figure(name)
+    links = [obstacle(sh) for g in fig.groups if g.layer == "links" for sh in g.shapes
+             if isinstance(sh, Poly) and len(sh.pts) == 2]
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if isinstance(v, Ground) and links:
+            hinge = shapely.Point(fig.view.p(v.at)).buffer(1.6)
+            symbol = shapely.union_all([obstacle(sh) for sh in g.shapes]).difference(hinge)
+            assert not symbol.intersects(shapely.union_all(links)), g.key
+
+
+def test_the_gallery_has_many_angle_marks_and_grounds():
+    """The checks above look at something: the gallery's figures hold dozens of angle marks and grounds."""
+    marks = sum(len(angle_marks(figure(n).values[g.key])) for n in NAMES for g in figure(n).groups)
+    grounds = sum(isinstance(figure(n).values[g.key], Ground) for n in NAMES for g in figure(n).groups)
+    assert marks >= 80 and grounds >= 60
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_two_points_of_a_figure_share_a_label(name):
+    """200-12 labelled two different velocity images K*: every label names one point (a tick's label is a
+    value on an axis, not a name: two rows of a chart may show the same number)."""
+    fig = figure(name)
+    seen: dict[str, Point] = {}
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if isinstance(v, Point) and " style-tick" not in g.classes:
+            for t in g.texts:
+                if t.cls == "label":
+                    other = seen.setdefault(runs(t), v)
+                    assert abs(other - v) <= 1e-9 * size, (runs(t), g.key)
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if load_problem(
+    Path(__file__).parent.parent / "problems" / f"{n}.toml").recipe.startswith("cam.")])
+def test_every_cam_figure_shows_its_sense_of_rotation(name):
+    """The protocol says 'turn the follower by −ω': the figure draws ω, an arrow at the cam centre O turning
+    the way the problem says (counter-clockwise by default)."""
+    fig = figure(name)
+    problem = load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml")
+    rot = [fig.values[g.key] for g in fig.groups if isinstance(fig.values[g.key], Rotation)]
+    assert len(rot) == 1
+    assert rot[0].at == fig.values["O"]
+    assert rot[0].sense == (1.0 if problem.given.get("rotation", "ccw") == "ccw" else -1.0)
+    (group,) = [g for g in fig.groups if g.key == "omega"]
+    assert [runs(t) for t in group.texts] == ["ω"]
+    assert sum(isinstance(s, ArcP) for s in group.shapes) == 1
+
+
+def test_the_two_binding_lines_of_200_12_tell_their_allowances():
+    fig = figure("200-12_oscillating_base_radius")
+    texts = sorted(runs(t) for g in fig.groups if g.key.startswith("bind_mark") for t in g.texts)
+    assert texts == ["α=35.00°", "α=45.00°"]
+    labels = sorted(runs(t) for g in fig.groups if g.key.startswith("bind_K") for t in g.texts)
+    assert labels == ["K1*", "K2*"]
+
+
+def _members(v):
+    return [m for x in v for m in _members(x)] if isinstance(v, (tuple, list)) else [v]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_slider_lies_on_a_drawn_bar_or_guide_along_its_motion(name):
+    """000-02 drew the guide bar C→D1 while the slider B1 sat 30 mm beyond D1, on no drawn link: every slider
+    block is centred on a drawn segment, line or guide running along its direction of motion."""
+    fig = figure(name)
+    drawn = [m for g in fig.groups if g.shapes for m in _members(fig.values[g.key])]
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    tol = 1e-9 * size
+
+    def carries(m, s: Slider) -> bool:
+        if isinstance(m, (Segment, Guide)):
+            a, b = m.a, m.b
+            if a == b:
+                return False
+            u = (b - a).unit()
+            t = (s.at - a).dot(u)
+            inside = -tol <= t <= abs(b - a) + tol
+        elif isinstance(m, Line):
+            a, u, inside = m.point, m.direction, True
+        else:
+            return False
+        off = abs((s.at - a).cross(u))
+        if isinstance(m, Guide):          # a guide's line is where the blocks' centres run
+            return inside and off <= tol and abs(s.direction.unit().cross(u)) <= 1e-9
+        return inside and off <= tol and abs(s.direction.unit().cross(u)) <= 1e-9
+
+    sliders = [m for m in drawn if isinstance(m, Slider)]
+    for s in sliders:
+        assert any(carries(m, s) for m in drawn if m is not s), (name, s)
+
+
+def test_the_slotter_by_K_draws_its_sliders_ram_and_theta():
+    """000-02: B1, B2 are slider blocks on their guide bars; the ram runs on a hatched guide; θ is marked; the
+    step that finds D1 says where D1 lies (between C and B1 here: CD1 = 115.24 < CB1 = 145.36)."""
+    fig = figure("000-02_slotter_design_by_K")
+    v = fig.values
+    keys = {g.key for g in fig.groups}
+    assert {"slider_B1", "slider_B2", "ram_guide_mark", "ram1", "ram2", "mark_theta"} <= keys
+    C, B1, D1 = v["C"], v["B1"], v["D1"]
+    assert abs(D1 - C) < abs(B1 - C)
+    assert v["CD1"].b == B1                       # the bar reaches the slider
+    sc = solve(load_problem(Path(__file__).parent.parent / "problems" / "000-02_slotter_design_by_K.toml")).scene
+    assert "between C and B1" in sc["D1"].caption[0]
+    assert [runs(t) for g in fig.groups if g.key == "mark_theta" for t in g.texts] == ["θ=51.43°"]
+
+
+def _along(d, vertex: Point, u: Point, tol: float) -> bool:
+    """Whether the drawn value ``d`` runs from ``vertex`` in direction ``u`` (a segment, a line, a ray)."""
+    if isinstance(d, Segment) and d.a != d.b:
+        w = (d.b - d.a).unit()
+        if abs((vertex - d.a).cross(w)) > tol or abs(u.cross(w)) > 1e-7:
+            return False
+        lo, hi = sorted([(d.a - vertex).dot(u), (d.b - vertex).dot(u)])
+        return hi > tol and lo <= tol
+    if isinstance(d, Line):
+        return abs((vertex - d.point).cross(d.direction)) <= tol and abs(u.cross(d.direction)) <= 1e-7
+    if isinstance(d, Ray):
+        return (abs((vertex - d.origin).cross(d.direction)) <= tol and abs(u.cross(d.direction)) <= 1e-7
+                and (vertex - d.origin).dot(d.direction) >= -tol and u.dot(d.direction) > 0)
+    return False
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_angle_arc_ends_on_drawn_lines(name):
+    """001-08's γ2 arc ended on the extension of B″C″, never drawn: each ray an angle's arc spans runs along
+    a drawn segment, line or ray from its vertex, or is the extension the mark draws itself."""
+    fig = figure(name)
+    drawn = [m for g in fig.groups if g.shapes for m in _members(fig.values[g.key])]
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    for g in fig.groups:
+        for m in angle_marks(fig.values[g.key]):
+            va, vb, flip = angle_rays(m)
+            rays = [vb] if flip else [va, vb]
+            for r in rays:
+                assert any(_along(d, m.vertex, r.unit(), 1e-7 * size) for d in drawn), (g.key, m.symbol)
+            if flip:                       # the extension is drawn by the mark: a dashed stroke from the vertex
+                c = fig.view.p(m.vertex)
+                assert any(isinstance(s, Poly) and s.pts[0] == c and s.pen.dash for s in next(
+                    x for x in fig.groups if x.key == g.key).shapes)
+
+
+def test_001_08_gamma_2_is_marked_from_b_c_extended():
+    fig = figure("001-08_crank_rocker")
+    (m,) = angle_marks(fig.values["mark_gamma_2"])
+    assert angle_rays(m)[2]                                   # obtuse ∠B″C″D: γ2 from B″C″ extended
+    assert [runs(t) for g in fig.groups if g.key == "mark_gamma_2" for t in g.texts] == ["γ2=42.18°"]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_label_is_nearer_its_point_than_any_other(name):
+    """001-19 printed "A" between the pivots A and C, nearer C: a label's box lies nearer its own point than
+    any other point drawn in the figure, so that it cannot be read as another's."""
+    fig = figure(name)
+    pts = [fig.view.p(fig.values[g.key]) for g in fig.groups if isinstance(fig.values[g.key], Point) and g.shapes]
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if not isinstance(v, Point):
+            continue
+        c = fig.view.p(v)
+        for t in g.texts:
+            if t.cls == "label":
+                own = box(t).distance(shapely.Point(c))
+                others = [box(t).distance(shapely.Point(q)) for q in pts if q != c]
+                assert not others or min(others) >= own, (g.key, runs(t))
