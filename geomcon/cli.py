@@ -1,4 +1,4 @@
-"""The ``geomcon`` command: solve, recipes, gallery, bench.
+"""The ``geomcon`` command: solve, cycle, recipes, gallery, bench.
 
 Bad input never shows a traceback: it prints one line ``error: <file>: <what>`` on stderr and exits 2,
 and no output file is written (everything is rendered before anything is written).
@@ -139,6 +139,35 @@ def _shown(v) -> str:
     if isinstance(v, float):
         return f"{v:g}"
     return str(v)
+
+
+def cmd_cycle(args: argparse.Namespace) -> int:
+    """``geomcon cycle FILE``: a linkage over its crank turn (issue 15): the answers (stroke, K, extremes), and
+    on request the table (--csv), the s–v–a plots (--svg), the animation (--html), or the JSON (--json)."""
+    from .fileio import check_targets, write_all
+    from .kinematics.animation import animation_html
+    from .kinematics.output import json_text, summary, table_csv
+    from .kinematics.plots import cycle_plots_svg
+    from .kinematics.problem import load_cycle
+    from .kinematics.result import solve_cycle
+
+    path = args.file
+    outputs = {"--csv": args.csv, "--svg": args.svg, "--html": args.html}
+    try:
+        check_targets({k: v for k, v in outputs.items() if v})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            r = solve_cycle(load_cycle(path))
+            text = json_text(r) if args.json else summary(r)
+            makers = {"--csv": table_csv, "--svg": cycle_plots_svg, "--html": animation_html}
+            files = {Path(v): makers[k](r) for k, v in outputs.items() if v}
+        write_all(files)
+    except GeomconError as exc:
+        return _fail(path, str(exc))
+    except OSError as exc:
+        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+    sys.stdout.write(text)
+    return 0
 
 
 def cmd_recipes(args: argparse.Namespace) -> int:
@@ -379,6 +408,14 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--diagrams", metavar="DIR", help="cam recipes: write the motion program's s–v–a (ψ–δ) diagrams "
                    "as DIR/<problem>_motion.svg")
     s.set_defaults(func=cmd_solve)
+    c = sub.add_parser("cycle", help="a linkage (crank + Assur dyads) over its crank turn: table, extremes, "
+                       "stroke and K, s–v–a plots, animation")
+    c.add_argument("file", help="a cycle problem (problems/cycles/*.toml)")
+    c.add_argument("--json", action="store_true", help="print the result as one JSON object")
+    c.add_argument("--csv", metavar="OUT", help="write the table: phi_deg and the problem's columns")
+    c.add_argument("--svg", metavar="OUT", help="write the columns against the crank angle (s–v–a, ω, ε)")
+    c.add_argument("--html", metavar="OUT", help="write a self-contained animation of the linkage")
+    c.set_defaults(func=cmd_cycle)
     r = sub.add_parser("recipes", help="list recipes with their given and answer names")
     r.add_argument("--json", action="store_true")
     r.set_defaults(func=cmd_recipes)

@@ -79,3 +79,75 @@ def test_slotter_extremes_are_exact_roots_of_the_velocity():
         near = solve_chain(m, np.radians(np.arange(0, 360, 0.001)))
         y = near.points["C"].p.imag
         assert (s.value <= y.min() + 1e-12) if s.kind == "min" else (s.value >= y.max() - 1e-12)
+
+
+# Seed 002: the values an independent re-derivation of the seed's analysis found (seed-problems.md, 002-01
+# "corrected", 6 significant digits), in the seed's units: ω rad/s, ε rad/s², slider m, m/s, m/s².
+CORRECTED_002 = {
+    0: {"t2": -1.83473, "s2": 1950.2, "t3": 15.8374, "s3": 2386.12, "t4": -11.7283, "s4": -1741.14,
+        "xf": 1.22361, "vf": 0.779319, "af": -76.7929},
+    60: {"t2": 10.9094, "s2": 221.304, "t3": 26.9353, "s3": -86.8569, "t4": -17.0566, "s4": 282.495,
+         "xf": 1.14342, "vf": -8.7926, "af": -378.134},
+    300: {"t3": -61.2182, "s3": -5372.94, "s2": -5641.46, "s4": 4554.57, "af": 2360.58},
+}
+COLS_002 = {"a2": "BC.angle", "t2": "BC.omega", "s2": "BC.epsilon", "a3": "DC.angle", "t3": "DC.omega",
+            "s3": "DC.epsilon", "a4": "EF.angle", "t4": "EF.omega", "s4": "EF.epsilon", "xf": "F.x", "vf": "F.vx",
+            "af": "F.ax"}
+
+
+def _conveyor_at():
+    r = solve_cycle(load_cycle(CONVEYOR))
+    out = {}
+    for i, a in enumerate(r.problem.at):
+        row = {}
+        for k, q in COLS_002.items():
+            v = float(value(r.at_state, q)[i])
+            row[k] = v / 1000 if k in ("xf", "vf", "af") else (v % 360 if k[0] == "a" else v)
+        out[a] = row
+    return r, out
+
+
+def test_conveyor_true_values_agree_with_the_independent_rederivation():
+    _, at = _conveyor_at()
+    for a, want in CORRECTED_002.items():
+        for k, v in want.items():
+            assert at[a][k] == pytest.approx(v, rel=6e-6), (a, k, at[a][k], v)
+
+
+def test_conveyor_printed_output_audit():
+    _, at = _conveyor_at()
+    printed = read_rows(DATA / "seed002_conveyor_printed.csv")
+    assert len(printed) == 8
+    for row in printed:
+        a = float(row["a1"])
+        t = at[min(at, key=lambda x: abs(x - a))]
+        # positions agree where the program's a3 = acos(…) has the right sign
+        if not 345.43 <= a <= 352.39:
+            for k in ("a2", "a3", "a4", "xf"):
+                assert t[k] == pytest.approx(float(row[k]), rel=5e-6, abs=5e-6)
+        # the printed ω3 is the true ω3 · sin²(a3 − a2): the multiplication that should be a division
+        if abs(t["t3"]) > 1e-3:
+            s2 = math.sin(math.radians(t["a3"] - t["a2"])) ** 2
+            assert t["t3"] * s2 == pytest.approx(float(row["t3"]), rel=5e-6)
+            assert abs(t["t3"] - float(row["t3"])) > 0.1 * abs(t["t3"])
+    # at the printed rocker extreme the program takes the rocker's angle with the wrong sign
+    t = at[348.7432846]
+    assert t["a3"] == pytest.approx(360 - 0.269782, abs=1e-6) and t["xf"] == pytest.approx(1.22125, abs=5e-6)
+    assert float(printed[6]["a3"]) == pytest.approx(0.269782) and float(printed[6]["xf"]) == 1.22195
+
+
+def test_conveyor_stroke_theta_K_and_gamma_min():
+    r, _ = _conveyor_at()
+    a = r.answers
+    assert a["stroke(F.x)"] == pytest.approx(562.794, abs=5e-4)
+    assert a["K(DC.angle)"] == pytest.approx(2.07447, abs=5e-6)
+    assert a["theta(DC.angle)"] == pytest.approx(62.9068, abs=5e-5)
+    assert a["min(gamma(BC,DC))"] == pytest.approx(8.12517, abs=5e-6)
+    maxima = sorted(s.phi_deg for s in r.stationary if s.quantity == "F.x" and s.kind == "max")
+    assert [round(x, 2) for x in maxima] == [9.26, 335.24]
+    assert "K is not defined" in " ".join(r.warnings)
+    # the slider's maxima are where D, E, F are collinear (rocker DE along EF)
+    m = r.problem.mechanism
+    st = solve_chain(m, np.radians(maxima))
+    d = (st.links["DC"].theta - st.links["EF"].theta + np.pi) % (2 * np.pi) - np.pi
+    assert np.all(np.abs(d) < 1e-9)

@@ -30,7 +30,7 @@ import numpy as np
 from ..errors import ProblemError
 from .chain import Mechanism, solve_chain  # noqa: F401  (Mechanism: doctests)
 from .dyads import State
-from .quantities import derivatives, fold_gamma, parse_name
+from .quantities import derivatives, fold_gamma, parse_name, principal_deg
 
 GRID = 2880
 """Crank positions per turn of the grid on which margins and derivatives are bracketed (0.125°)."""
@@ -219,9 +219,9 @@ def stationary_points(m: Mechanism, name: str, start: float = 0.0, stop: float =
         q = derivatives(_at(m, x), name)[0][0]
         val = float(fold_gamma(np.array([q]))[0]) if obj == "gamma" else float(q)
         if obj != "gamma" and name.endswith(".angle"):
-            val = math.degrees(val) % 360.0
-        if obj == "gamma" and kind != "flat":
-            kind = "min" if val < 45 else "max"
+            val = float(principal_deg(np.array([val]))[0])
+        if obj == "gamma" and kind != "flat" and math.degrees(q) % 180.0 > 90.0:
+            kind = "min" if kind == "max" else "max"     # γ = 180° − μ there: an extreme of μ, reversed
         out.append(Stationary(name, math.degrees(x) % 360.0, val, kind))
     return sorted(out, key=lambda p: p.phi_deg)
 

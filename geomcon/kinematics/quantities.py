@@ -1,7 +1,7 @@
 """Named outputs of a solved linkage and their exact derivatives with respect to the crank angle.
 
-A quantity is named ``<point>.<x|y|vx|vy|ax|ay>`` (mm, mm/s, mm/s²), ``<link>.<angle|omega|epsilon>`` (deg,
-rad/s, rad/s²), ``<slider>.<s|v|a>`` (mm, mm/s, mm/s²) or ``gamma(<link>,<link>)``, the transmission angle
+A quantity is named ``<point>.<x|y|vx|vy|ax|ay>`` (mm, mm/s, mm/s²), ``<link>.<angle|omega|epsilon>`` (deg in
+(−180°, 180°], rad/s, rad/s²), ``<slider>.<s|v|a>`` (mm, mm/s, mm/s²) or ``gamma(<link>,<link>)``, the transmission angle
 between two links (deg, folded into [0°, 90°]).
 
 Examples
@@ -75,6 +75,16 @@ def _position_triple(st: State, name: str) -> tuple[np.ndarray, np.ndarray, np.n
     return sl.s, sl.v, sl.a
 
 
+def principal_deg(theta: np.ndarray) -> np.ndarray:
+    """An angle (rad) in degrees in (−180°, 180°].
+
+    >>> principal_deg(np.radians([180.0, -180.0, 350.0])).round(9).tolist()
+    [180.0, 180.0, -10.0]
+    """
+    d = 180.0 - np.mod(180.0 - np.degrees(theta), 360.0)
+    return d + 0.0
+
+
 def fold_gamma(mu: np.ndarray) -> np.ndarray:
     """The transmission angle (deg, in [0, 90]) of the angle ``mu`` (rad) between two links."""
     m = np.mod(np.degrees(mu), 180.0)
@@ -93,7 +103,7 @@ def value(st: State, name: str) -> np.ndarray:
     if obj in st.links:
         lk = st.links[obj]
         if fld == "angle":
-            return np.mod(np.degrees(lk.theta), 360.0)
+            return principal_deg(lk.theta)
         return lk.omega if fld == "omega" else lk.epsilon
     sl = st.slips[obj]
     return {"s": sl.s, "v": sl.v, "a": sl.a}[fld]

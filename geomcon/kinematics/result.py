@@ -28,7 +28,7 @@ from .chain import solve_chain
 from .cycle import Cycle, Stationary, run_cycle, stationary_points, stroke
 from .dyads import State
 from .problem import CycleProblem
-from .quantities import UNITS, parse_name, position_name, value
+from .quantities import UNITS, derivatives, parse_name, position_name, value
 
 
 @dataclass(frozen=True)
@@ -85,7 +85,11 @@ def solve_cycle(p: CycleProblem) -> CycleResult:
         vals = [s.value for s in pts]
         ends = [float(x) for x in value(cyc.state, q)[[0, -1]]]
         answers[f"min({q})"] = min(vals + ends)
-        answers[f"max({q})"] = max(vals + ends)
+        if base.startswith("gamma("):       # γ peaks at 90° where μ crosses it, not where μ is stationary
+            mu = np.degrees(derivatives(cyc.state, q)[0]) % 180.0
+            answers[f"max({q})"] = 90.0 if np.any(np.diff(np.sign(mu - 90.0)) != 0) else max(vals + ends)
+        else:
+            answers[f"max({q})"] = max(vals + ends)
     for q in p.strokes:
         s = stroke(m, q)
         answers[f"stroke({q})"] = s.stroke
