@@ -203,3 +203,15 @@ def test_chain_refuses_names_used_before_they_are_placed():
     m = Mechanism({"A": 0j}, Crank("AB", "A", "B", 1.0, 1.0), (RRR("C", "B", "D", 1.0, 1.0, 1, "BC", "DC"),))
     with pytest.raises(ProblemError, match="point 'D' is not placed before it"):
         check_chain(m)
+
+
+def test_positions_only_are_the_same_positions():
+    rng = random.Random(19)
+    m = _random_general(rng)
+    phi = np.radians(np.linspace(0, 360, 73))
+    full, pos = solve_chain(m, phi), solve_chain(m, phi, derivatives=False)
+    for k, pm in full.points.items():
+        assert np.array_equal(pm.p, pos.points[k].p, equal_nan=True)
+        assert pos.points[k].v is None or k in m.fixed
+    for k, lk in full.links.items():
+        assert np.array_equal(lk.theta, pos.links[k].theta, equal_nan=True)

@@ -117,10 +117,10 @@ def check_chain(m: Mechanism) -> None:
             raise ProblemError(f"{where}: p1 and p2 are the same point '{el.p1}'")
 
 
-def solve_chain(m: Mechanism, phi: np.ndarray) -> State:
-    """Every point, link and slip of ``m`` at the crank angles ``phi`` (rad), vectorised. At a dead or change
-    point itself the velocities are unbounded (inf or nan, silently: :func:`~.cycle.assembly` reports them)."""
-    st = State.start(phi, m.fixed)
+def solve_chain(m: Mechanism, phi: np.ndarray, derivatives: bool = True) -> State:
+    """Every point, link and slip of ``m`` at the crank angles ``phi`` (rad), vectorised (positions only when
+    ``derivatives`` is False). At a dead or change point itself the velocities are unbounded (inf or nan, silently: :func:`~.cycle.assembly` reports them)."""
+    st = State.start(phi, m.fixed, derivatives)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         m.crank.apply(st)
         for el in m.chain:

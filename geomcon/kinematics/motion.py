@@ -20,7 +20,8 @@ import numpy as np
 
 @dataclass(frozen=True)
 class PointMotion:
-    """Position ``p`` (mm), velocity ``v`` (mm/s) and acceleration ``a`` (mm/s²) of a point, complex arrays."""
+    """Position ``p`` (mm), velocity ``v`` (mm/s) and acceleration ``a`` (mm/s²) of a point, complex arrays
+    (``v`` and ``a`` None when only positions were asked for)."""
 
     p: np.ndarray
     v: np.ndarray
