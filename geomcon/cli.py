@@ -42,6 +42,11 @@ def _fail(where: str, msg: str) -> int:
     return EXIT_BAD_INPUT
 
 
+def _fail_write(where: str, exc: OSError) -> int:
+    """The one error line of an output that could not be written."""
+    return _fail(where, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+
+
 def _summary(sol) -> str:
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
     lines += [f"  {line}" for line in sol.info_lines()]
@@ -112,7 +117,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(path, str(exc))
     except OSError as exc:
-        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+        return _fail_write(path, exc)
     sys.stdout.write(text)
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
@@ -165,7 +170,7 @@ def cmd_cycle(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(path, str(exc))
     except OSError as exc:
-        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+        return _fail_write(path, exc)
     sys.stdout.write(text)
     return 0
 
@@ -289,7 +294,7 @@ def cmd_worksheet(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(path, str(exc))
     except OSError as exc:
-        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+        return _fail_write(path, exc)
     for line in w.summary:
         print(line)
     pages = sum(1 for name in w.files if name.startswith("sheets/"))

@@ -25,7 +25,7 @@ import numpy as np
 from ..analytic.kinematics import four_bar
 from ..kinematics.chain import Mechanism, solve_chain
 from ..kinematics.dyads import RRR, Crank
-from .clock import clock
+from .cam import _timed
 from .report import format_table
 
 AB, BC, CD, AD = 50.0, 70.0, 80.0, 90.0
@@ -41,15 +41,6 @@ class CycleRow:
     seconds: float
     rate: float
     rel_error: float
-
-
-def _best(fn, repeat: int):
-    best, out = math.inf, None
-    for _ in range(repeat):
-        t = clock()
-        out = fn()
-        best = min(best, clock() - t)
-    return out, max(best, 1e-9)
 
 
 def _error(phi_deg: np.ndarray, C: np.ndarray) -> float:
@@ -69,8 +60,8 @@ def measure_cycle(n: int = 1_000_000, repeat: int = 3, pylinkage: bool = True) -
     phi = np.radians(phi_deg)
     rows = []
     for label, der in (("geomcon positions", False), ("geomcon positions + velocities + accelerations", True)):
-        st, t = _best(lambda der=der: solve_chain(m, phi, der), repeat)
-        rows.append(CycleRow(label, n, t, n / t, _error(phi_deg, st.points["C"].p)))
+        st, t = _timed(lambda der=der: solve_chain(m, phi, der), repeat)
+        rows.append(CycleRow(label, n, t, n / max(t, 1e-9), _error(phi_deg, st.points["C"].p)))
     if pylinkage:
         rows += _pylinkage_rows(n, repeat, phi_deg)
     return rows
@@ -95,11 +86,11 @@ def _pylinkage_rows(n: int, repeat: int, phi_deg: np.ndarray) -> list[CycleRow]:
     def run():
         link.set_coords(start)
         return link.step_fast(iterations=n, dt=1.0)
-    tr, t = _best(run, repeat)
+    tr, t = _timed(run, repeat)
     # step k holds the crank advanced k + 1 steps
     C = tr[:, 3, 0] + 1j * tr[:, 3, 1]
     phi_pl = (np.arange(1, n + 1) * (360.0 / n)) % 360.0
-    rows.append(CycleRow("pylinkage step_fast (numba)" if _numba() else "pylinkage step_fast", n, t, n / t,
+    rows.append(CycleRow("pylinkage step_fast (numba)" if _numba() else "pylinkage step_fast", n, t, n / max(t, 1e-9),
                          _error(phi_pl, C)))
     try:
         link.set_input_velocity(crank, omega=10.0, alpha=0.0)
@@ -109,9 +100,9 @@ def _pylinkage_rows(n: int, repeat: int, phi_deg: np.ndarray) -> list[CycleRow]:
         def run_k():
             link.set_coords(start)
             return link.step_fast_with_kinematics(iterations=n, dt=1.0)
-        (pos, _, _), tk = _best(run_k, repeat)
+        (pos, _, _), tk = _timed(run_k, repeat)
         Ck = pos[:, 3, 0] + 1j * pos[:, 3, 1]
-        rows.append(CycleRow("pylinkage step_fast_with_kinematics", n, tk, n / tk, _error(phi_pl, Ck)))
+        rows.append(CycleRow("pylinkage step_fast_with_kinematics", n, tk, n / max(tk, 1e-9), _error(phi_pl, Ck)))
     except Exception:   # an older pylinkage without kinematics: positions only
         pass
     return rows

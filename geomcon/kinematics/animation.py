@@ -4,12 +4,9 @@ button and a slider over the crank angle. ``#frame=N`` in the address opens (pau
 
 Examples
 --------
->>> from .problem import cycle_from_dict
+>>> from .problem import demo_problem
 >>> from .result import solve_cycle
->>> p = cycle_from_dict({"kind": "cycle", "mechanism": {"fixed": {"A": [0, 0], "G": [0, 0]},
-...     "crank": {"link": "AB", "pivot": "A", "joint": "B", "length": 30, "omega": 10},
-...     "chain": [{"type": "RRP", "name": "C", "p": "B", "length": 90, "guide": {"through": "G", "angle": 0},
-...                "branch": 1, "link": "BC"}]}, "cycle": {"step": 5, "trace": ["C"]}}, name="demo")
+>>> p = demo_problem(step=5, trace=["C"])
 >>> page = animation_html(solve_cycle(p))
 >>> page.startswith("<!DOCTYPE html>") and "src=" not in page and "<link" not in page and '"frames"' in page
 True

@@ -68,6 +68,11 @@ def cis(theta: np.ndarray) -> np.ndarray:
     return out
 
 
+def carried(base: PointMotion, r: np.ndarray, w: np.ndarray, eps: np.ndarray) -> PointMotion:
+    """The motion of the point ``base + r`` of a link turning at ``w`` with ``eps`` (rigid-body formulas)."""
+    return PointMotion(base.p + r, base.v + 1j * w * r, base.a + (1j * eps - w * w) * r)
+
+
 @dataclass(frozen=True)
 class Crank:
     """The driving link ``link``: ``pivot`` (a fixed point) to ``joint``, ``length`` mm, at the crank angle φ
@@ -90,7 +95,7 @@ class Crank:
             return
         w = np.full(st.phi.shape, float(self.omega))
         eps = np.full(st.phi.shape, float(self.epsilon))
-        st.points[self.joint] = PointMotion(o.p + r, o.v + 1j * w * r, o.a + (1j * eps - w * w) * r)
+        st.points[self.joint] = carried(o, r, w, eps)
         st.links[self.link] = LinkMotion(st.phi.copy(), w, eps)
 
 
@@ -293,8 +298,7 @@ class OnLink:
         if not st.derivatives:
             st.points[self.name] = PointMotion(b.p + r, None, None)
             return
-        st.points[self.name] = PointMotion(b.p + r, b.v + 1j * lk.omega * r,
-                                           b.a + (1j * lk.epsilon - lk.omega ** 2) * r)
+        st.points[self.name] = carried(b, r, lk.omega, lk.epsilon)
 
 
 Element = Crank | RRR | RRP | RPR | PRP | OnLink

@@ -3,12 +3,9 @@
 
 Examples
 --------
->>> from .problem import cycle_from_dict
+>>> from .problem import demo_problem
 >>> from .result import solve_cycle
->>> p = cycle_from_dict({"kind": "cycle", "mechanism": {"fixed": {"A": [0, 0], "G": [0, 0]},
-...     "crank": {"link": "AB", "pivot": "A", "joint": "B", "length": 30, "omega": 10},
-...     "chain": [{"type": "RRP", "name": "C", "p": "B", "length": 90, "guide": {"through": "G", "angle": 0},
-...                "branch": 1, "link": "BC"}]}, "cycle": {"step": 90, "columns": ["C.x", "C.vx"]}}, name="demo")
+>>> p = demo_problem(step=90, columns=["C.x", "C.vx"])
 >>> print(table_csv(solve_cycle(p)), end="")
 phi_deg,C.x,C.vx
 0,120,0

@@ -3,13 +3,9 @@ marked. Deterministic: coordinates written to 0.001 mm of paper.
 
 Examples
 --------
->>> from .problem import cycle_from_dict
+>>> from .problem import demo_problem
 >>> from .result import solve_cycle
->>> p = cycle_from_dict({"kind": "cycle", "mechanism": {"fixed": {"A": [0, 0], "G": [0, 0]},
-...     "crank": {"link": "AB", "pivot": "A", "joint": "B", "length": 30, "omega": 10},
-...     "chain": [{"type": "RRP", "name": "C", "p": "B", "length": 90, "guide": {"through": "G", "angle": 0},
-...                "branch": 1, "link": "BC"}]}, "cycle": {"step": 5, "columns": ["C.x", "C.vx"],
-...                "extremes": ["C.x"]}}, name="demo")
+>>> p = demo_problem(step=5, columns=["C.x", "C.vx"], extremes=["C.x"])
 >>> svg = cycle_plots_svg(solve_cycle(p))
 >>> svg.startswith("<svg") and svg.count("<polyline") == 2 and "max 120" in svg
 True

@@ -289,6 +289,19 @@ def cycle_from_dict(data: Mapping[str, Any], *, name: str, path: str | None = No
                            ("title", "seed", "statement", "source", "notes")})
 
 
+def demo_problem(**cycle: Any) -> CycleProblem:
+    """A small problem for examples: the centric crank-slider 30/90 at ω = 10 rad/s, ``cycle`` its [cycle] table.
+
+    >>> demo_problem(step=180, columns=["C.x"]).phi_deg.tolist()
+    [0.0, 180.0, 360.0]
+    """
+    return cycle_from_dict({"kind": "cycle", "mechanism": {"fixed": {"A": [0, 0], "G": [0, 0]},
+                            "crank": {"link": "AB", "pivot": "A", "joint": "B", "length": 30, "omega": 10},
+                            "chain": [{"type": "RRP", "name": "C", "p": "B", "length": 90,
+                                       "guide": {"through": "G", "angle": 0}, "branch": 1, "link": "BC"}]},
+                            "cycle": cycle}, name="demo")
+
+
 def load_cycle(path: str | Path) -> CycleProblem:
     """Read and validate a cycle problem file (untrusted: see the module's notes)."""
     path = Path(path)

@@ -6,11 +6,8 @@ angles of the two motions, deg), ``K(q)``, ``theta(q)`` (for each ``strokes`` qu
 
 Examples
 --------
->>> from .problem import cycle_from_dict
->>> p = cycle_from_dict({"kind": "cycle", "mechanism": {"fixed": {"A": [0, 0], "G": [0, 0]},
-...     "crank": {"link": "AB", "pivot": "A", "joint": "B", "length": 30, "omega": 10},
-...     "chain": [{"type": "RRP", "name": "C", "p": "B", "length": 90, "guide": {"through": "G", "angle": 0},
-...                "branch": 1, "link": "BC"}]}, "cycle": {"step": 90, "strokes": ["C.x"]}}, name="demo")
+>>> from .problem import demo_problem
+>>> p = demo_problem(step=90, strokes=["C.x"])
 >>> r = solve_cycle(p)
 >>> r.answers["stroke(C.x)"], r.answers["K(C.x)"]
 (60.0, 1.0)
