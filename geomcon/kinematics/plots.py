@@ -56,7 +56,8 @@ def cycle_plots_svg(r: CycleResult) -> str:
     dwg.attribs["font-family"] = FONT
     dwg.add(dwg.rect((0, 0), (W, height), fill="#ffffff"))
     title = f"{r.problem.id}: " + (r.problem.title or "whole cycle")
-    dwg.add(dwg.text(title[:110], insert=(8.0, 8.0), font_size=4.0, font_weight="bold", fill=INK))
+    title = title if len(title) <= 80 else title[:79] + "…"
+    dwg.add(dwg.text(title, insert=(8.0, 8.0), font_size=3.6, font_weight="bold", fill=INK))
     x0, x1 = float(phi[0]), float(phi[-1])
 
     def X(d: float) -> float:
@@ -93,6 +94,7 @@ def cycle_plots_svg(r: CycleResult) -> str:
         pts = [(round(X(d), 3), round(Y(v), 3)) for d, v in zip(phi, vals) if math.isfinite(v)]
         g.add(dwg.polyline(pts, fill="none", stroke=BLUE, stroke_width=0.45))
         base = position_name(q)
+        shown = 0
         for s in r.stationary:
             if s.quantity != base:
                 continue
@@ -106,8 +108,13 @@ def cycle_plots_svg(r: CycleResult) -> str:
                 continue
             g.add(dwg.circle((X(s.phi_deg), Y(v)), r=0.8, fill=RED))
             if base == q:
-                g.add(dwg.text(f"{s.kind} {_g(v)} at {s.phi_deg:.3f}°", insert=(X(s.phi_deg) + 1.4, Y(v) - 1.2),
-                               font_size=2.6, fill=RED))
+                right = X(s.phi_deg) > LEFT + 0.6 * PLOT_W        # labels on the right half read leftwards
+                dy = -1.2 if s.kind == "max" or Y(v) > y0 + 4.0 else 3.4
+                shown += 1
+                dy += 3.2 * ((shown - 1) % 2) * (1 if dy > 0 else -1) if right else 0.0
+                g.add(dwg.text(f"{s.kind} {_g(v)} at {s.phi_deg:.3f}°",
+                               insert=(X(s.phi_deg) + (-1.4 if right else 1.4), Y(v) + dy), font_size=2.6, fill=RED,
+                               text_anchor="end" if right else "start"))
     dwg.add(dwg.text("crank angle φ (°)", insert=(LEFT + PLOT_W, height - 1.5), font_size=2.8, text_anchor="end",
                      fill=INK))
     return dwg.tostring()
