@@ -215,3 +215,25 @@ def test_positions_only_are_the_same_positions():
         assert pos.points[k].v is None or k in m.fixed
     for k, lk in full.links.items():
         assert np.array_equal(lk.theta, pos.links[k].theta, equal_nan=True)
+
+
+def test_rocker_extremes_are_where_crank_and_coupler_are_collinear():
+    from geomcon.kinematics.cycle import stationary_points
+    rng = random.Random(20)
+    n = 0
+    while n < 12:
+        AB, BC, CD, AD = rng.uniform(5, 40), rng.uniform(60, 150), rng.uniform(40, 150), rng.uniform(60, 150)
+        if not (AB + max(BC, CD, AD) < min(BC, CD, AD) + sorted((BC, CD, AD))[1]):    # Grashof, AB the crank
+            continue
+        m = four_bar(AB, BC, CD, AD, rng.choice((-1, 1)) * 7.0, 0.0, rng.choice((1, -1)),
+                     rng.uniform(-3, 3), complex(rng.uniform(-50, 50), rng.uniform(-50, 50)))
+        try:
+            assembly(m, 0.0, 2 * math.pi)
+        except DeadPoint:
+            continue
+        pts = [p for p in stationary_points(m, "DC.angle") if p.kind in ("max", "min")]
+        assert len(pts) == 2
+        st = solve_chain(m, np.radians([p.phi_deg for p in pts]))
+        AC = np.abs(st.points["C"].p - m.fixed["A"])
+        assert sorted(AC.tolist()) == pytest.approx([BC - AB, BC + AB], rel=1e-9)
+        n += 1
