@@ -18,7 +18,8 @@ import numpy as np
 import svgwrite
 
 from .quantities import position_name, value
-from .result import CycleResult, unit_of
+from ..check import rounded
+from .result import CycleResult, scale_of, unit_of
 
 W, PANEL, GAP, LEFT, TOP = 170.0, 34.0, 13.0, 30.0, 16.0      # mm on paper
 PLOT_W = W - LEFT - 8.0
@@ -65,7 +66,8 @@ def cycle_plots_svg(r: CycleResult) -> str:
 
     for k, q in enumerate(cols):
         y0 = TOP + k * (PANEL + GAP)
-        vals = value(r.cycle.state, q)
+        sc = scale_of(q, r.problem.mechanism)      # numbers as the files hold them: no last-bit SIMD noise
+        vals = np.array([rounded(float(x), sc) if math.isfinite(x) else math.nan for x in value(r.cycle.state, q)])
         if q.endswith(".angle"):        # drawn continuous: a link through ±180° does not jump
             th = np.unwrap(np.radians(vals))
             vals = np.degrees(th - 2 * np.pi * np.round((th[0] - np.radians(vals[0])) / (2 * np.pi)))
@@ -99,21 +101,22 @@ def cycle_plots_svg(r: CycleResult) -> str:
             if s.quantity != base:
                 continue
             if base == q:
-                v = s.value
+                v = rounded(s.value, sc)
             else:
                 v = 0.0 if q.split(".")[1] in ("vx", "vy", "omega", "v") else None
                 if v is None:
                     continue
-            if not (x0 <= s.phi_deg <= x1):
+            at = rounded(s.phi_deg, 360.0)
+            if not (x0 <= at <= x1):
                 continue
-            g.add(dwg.circle((X(s.phi_deg), Y(v)), r=0.8, fill=RED))
+            g.add(dwg.circle((X(at), Y(v)), r=0.8, fill=RED))
             if base == q:
-                right = X(s.phi_deg) > LEFT + 0.6 * PLOT_W        # labels on the right half read leftwards
+                right = X(at) > LEFT + 0.6 * PLOT_W        # labels on the right half read leftwards
                 dy = -1.2 if s.kind == "max" or Y(v) > y0 + 4.0 else 3.4
                 shown += 1
                 dy += 3.2 * ((shown - 1) % 2) * (1 if dy > 0 else -1) if right else 0.0
-                g.add(dwg.text(f"{s.kind} {_g(v)} at {s.phi_deg:.3f}°",
-                               insert=(X(s.phi_deg) + (-1.4 if right else 1.4), Y(v) + dy), font_size=2.6, fill=RED,
+                g.add(dwg.text(f"{s.kind} {_g(v)} at {at:.3f}°",
+                               insert=(X(at) + (-1.4 if right else 1.4), Y(v) + dy), font_size=2.6, fill=RED,
                                text_anchor="end" if right else "start"))
     dwg.add(dwg.text("crank angle φ (°)", insert=(LEFT + PLOT_W, height - 1.5), font_size=2.8, text_anchor="end",
                      fill=INK))
