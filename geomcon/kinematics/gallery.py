@@ -30,10 +30,10 @@ def cycle_gallery(problems_dir: Path) -> tuple[dict[str, str], list[str]]:
         pid = r.problem.id
         files[f"{pid}.json"] = json_text(r)
         files[f"{pid}.csv"] = table_csv(r)
-        files[f"{pid}_sva.svg"] = cycle_plots_svg(r)
+        files[f"{pid}_motion.svg"] = cycle_plots_svg(r)
         files[f"{pid}_cycle.html"] = animation_html(r)
         shown = ", ".join(f"{k} = {v:.6g}" for k, v in r.answers.items() if k.startswith(("stroke", "K(", "min(")))
-        rows.append(f"| {pid} ([table]({pid}.csv), [s–v–a]({pid}_sva.svg), [animation]({pid}_cycle.html), "
+        rows.append(f"| {pid} ([table]({pid}.csv), [s–v–a]({pid}_motion.svg), [animation]({pid}_cycle.html), "
                     f"[JSON]({pid}.json)) | {len(r.cycle.phi_deg)} | {shown} |")
     if not rows:
         return files, []
