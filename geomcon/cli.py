@@ -1,4 +1,4 @@
-"""The ``geomcon`` command: solve, recipes, gallery, bench.
+"""The ``geomcon`` command: solve, cycle, recipes, gallery, bench.
 
 Bad input never shows a traceback: it prints one line ``error: <file>: <what>`` on stderr and exits 2,
 and no output file is written (everything is rendered before anything is written).
@@ -40,6 +40,11 @@ def one_line(text: str) -> str:
 def _fail(where: str, msg: str) -> int:
     print(f"error: {one_line(where)}: {one_line(msg)}", file=sys.stderr)
     return EXIT_BAD_INPUT
+
+
+def _fail_write(where: str, exc: OSError) -> int:
+    """The one error line of an output that could not be written."""
+    return _fail(where, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
 
 
 def _summary(sol) -> str:
@@ -130,7 +135,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(path, str(exc))
     except OSError as exc:
-        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+        return _fail_write(path, exc)
     sys.stdout.write(text)
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
@@ -157,6 +162,35 @@ def _shown(v) -> str:
     if isinstance(v, float):
         return f"{v:g}"
     return str(v)
+
+
+def cmd_cycle(args: argparse.Namespace) -> int:
+    """``geomcon cycle FILE``: a linkage over its crank turn (issue 15): the answers (stroke, K, extremes), and
+    on request the table (--csv), the s–v–a plots (--svg), the animation (--html), or the JSON (--json)."""
+    from .fileio import check_targets, write_all
+    from .kinematics.animation import animation_html
+    from .kinematics.output import json_text, summary, table_csv
+    from .kinematics.plots import cycle_plots_svg
+    from .kinematics.problem import load_cycle
+    from .kinematics.result import solve_cycle
+
+    path = args.file
+    outputs = {"--csv": args.csv, "--svg": args.svg, "--html": args.html}
+    try:
+        check_targets({k: v for k, v in outputs.items() if v})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            r = solve_cycle(load_cycle(path))
+            text = json_text(r) if args.json else summary(r)
+            makers = {"--csv": table_csv, "--svg": cycle_plots_svg, "--html": animation_html}
+            files = {Path(v): makers[k](r) for k, v in outputs.items() if v}
+        write_all(files)
+    except GeomconError as exc:
+        return _fail(path, str(exc))
+    except OSError as exc:
+        return _fail_write(path, exc)
+    sys.stdout.write(text)
+    return 0
 
 
 def cmd_recipes(args: argparse.Namespace) -> int:
@@ -278,7 +312,7 @@ def cmd_worksheet(args: argparse.Namespace) -> int:
     except GeomconError as exc:
         return _fail(path, str(exc))
     except OSError as exc:
-        return _fail(path, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
+        return _fail_write(path, exc)
     for line in w.summary:
         print(line)
     pages = sum(1 for name in w.files if name.startswith("sheets/"))
@@ -399,6 +433,14 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--solution", metavar="N", help="a problem with several valid solutions: report and draw solution N "
                    "(1 = the textbook's choice; the text output lists them all)")
     s.set_defaults(func=cmd_solve)
+    c = sub.add_parser("cycle", help="a linkage (crank + Assur dyads) over its crank turn: table, extremes, "
+                       "stroke and K, s–v–a plots, animation")
+    c.add_argument("file", help="a cycle problem (problems/cycles/*.toml)")
+    c.add_argument("--json", action="store_true", help="print the result as one JSON object")
+    c.add_argument("--csv", metavar="OUT", help="write the table: phi_deg and the problem's columns")
+    c.add_argument("--svg", metavar="OUT", help="write the columns against the crank angle (s–v–a, ω, ε)")
+    c.add_argument("--html", metavar="OUT", help="write a self-contained animation of the linkage")
+    c.set_defaults(func=cmd_cycle)
     r = sub.add_parser("recipes", help="list recipes with their given and answer names")
     r.add_argument("--json", action="store_true")
     r.set_defaults(func=cmd_recipes)

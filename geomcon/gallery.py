@@ -96,6 +96,9 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
         devs = "; ".join(_deviation(r) for r in sol.published) or "—"
         rows.append(f"| [{pid}]({pid}.svg) (sheets {more}; [player]({pid}.html)){extra} | `{sol.recipe.name}` | "
                     f"{answers} | {devs} |")
+    from .kinematics.gallery import cycle_gallery
+    cycle_out, cycle_rows = cycle_gallery(problems_dir)
+    files.update(cycle_out)
     files["004-02_best_by_K_table.md"] = best_by_k_table()
     files.update(law_diagrams())
     from .grading.example import gallery_files
@@ -135,6 +138,7 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
         "| problem | recipe | answers | printed answers (deviation from exact) |",
         "|---|---|---|---|",
         *rows,
+        *cycle_rows,
         "",
     ])
     return files

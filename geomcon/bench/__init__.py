@@ -10,6 +10,8 @@ solve asked for its answers only is compared with one asked for the SVG drawing 
 evaluated, which shows the scene's laziness.
 
 (g) Grading a class of 100 000 rows × 6 answers with diagnosis (:mod:`.grading`).
+(h) Whole cycles: four-bar positions per second over a crank turn, geomcon's vectorised chain beside pylinkage
+(numba) where installed (:mod:`.cycle`).
 
 The table is printed and the time–error plot written (atomically) as SVG.
 """
@@ -19,6 +21,7 @@ from pathlib import Path
 
 from ..fileio import write_all
 from .cam import cam_table, measure_cam
+from .cycle import cycle_table, measure_cycle
 from .exact import exact_table, measure_exact
 from .grading import grading_table, measure_grading
 from .lean import lean_table, measure_lean
@@ -47,6 +50,7 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
     text += "\n\n" + synthesis_table(measure_synthesis(1 if quick else 3))
     text += "\n\n" + cam_table(measure_cam(quick))
     text += "\n\n" + grading_table(measure_grading(rows=10_000 if quick else 100_000))
+    text += "\n\n" + cycle_table(measure_cycle(200_000 if quick else 1_000_000, 1 if quick else 3))
     write_all({out: render_plot(extremes, quick=quick)})
     print(text + f"\nplot written to {out}")
     return 0
