@@ -65,8 +65,10 @@ def _given(AD: float) -> float:
     return AD
 
 
-def _true(*_: Any) -> bool:
-    return True
+def sees_theta(A: Point, C1: Point, C2: Point, theta: float) -> bool:
+    """True when A sees the chord C1C2 under θ: a θ-circle's points see it under θ on one arc and 180° − θ on the
+    other, and a point of the other arc is a design of another K ((180° + (180° − θ))/(180° − (180° − θ)))."""
+    return abs(angle_deg(A, C1, C2) - theta) <= abs(angle_deg(A, C1, C2) - (180.0 - theta))
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
@@ -107,7 +109,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add(f"gamma_min_{i}", gamma_min_of, A, D, C1, C2, unit="deg", **opt)
         sc.add(f"C1_folded_{i}", folded_flag, A, C1, C2, **opt)
         sc.add(f"A_near_{i}", near_flag, A, C1, C2, D, **opt)
-        sc.add(f"valid_{i}", _true, A, **opt)
+        sc.add(f"valid_{i}", sees_theta, A, C1, C2, th, **opt)
         sols.append({"AB": f"AB_{i}", "BC": f"BC_{i}", "AD": f"AD_{i}", "CD": f"CD_{i}", "psi": f"psi_{i}",
                      "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
