@@ -268,3 +268,22 @@ def test_no_gallery_drawing_is_wider_or_taller_than_its_paper():
         _, scale, view = place_figure(sol.drawing_scene, page, sol.figure_lines(page.lang), sol.warnings)
         x0, y0, x1, y1 = view.paper_box
         assert scale in STANDARD and fx0 <= x0 and x1 <= fx1 and fy0 <= y0 and y1 <= tb[1], (p.name, view.paper_box)
+
+
+def test_a_file_name_with_control_characters_gives_well_formed_sheets(tmp_path):
+    """The title block prints the problem file's name: a name holding U+0001 or a newline (found by the fuzz)
+    is written escaped, and every sheet and the player stay well-formed XML."""
+    import subprocess
+    import sys
+    import xml.dom.minidom
+
+    f = tmp_path / "weird\x01name\nx.toml"
+    f.write_text('recipe = "guide_bar.extremes"\n[given]\nAB = 50\nAC = 100\n', encoding="utf-8")
+    r = subprocess.run([sys.executable, "-m", "geomcon", "solve", str(f), "--svg", str(tmp_path / "s.svg"),
+                        "--html", str(tmp_path / "p.html")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    outs = sorted(tmp_path.glob("s*.svg")) + [tmp_path / "p.html"]
+    assert len(outs) >= 3
+    for out in outs:
+        xml.dom.minidom.parse(str(out))
+    assert "weird\\x01name\\nx" in (tmp_path / "s.svg").read_text(encoding="utf-8")

@@ -163,6 +163,17 @@ class TitleBlock:
     lang: str = "both"
 
 
+def printable(text_: str) -> str:
+    r"""``text_`` with every character that XML cannot hold or a reader cannot see written as its escape (a
+    problem file's name is chosen by whoever saved it: ``a\x01b.toml`` would make the sheet ill-formed XML).
+
+    >>> printable("001-08_crank_rocker"), printable("a\x01b\nc")
+    ('001-08_crank_rocker', 'a\\x01b\\nc')
+    """
+    return "".join(ch if ch.isprintable() or ch == " " else ch.encode("unicode_escape").decode("ascii")
+                   for ch in text_)
+
+
 def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
     """The title block group: four rows — title; problem file and recipe; scale, μl and paper; geomcon's
     version and the sheet number."""
@@ -179,8 +190,8 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
         scale = [f"{text('Scale', '比例', lang)} {tb.scale}", f"μl = {mu:g} mm/mm"]
     else:
         scale = [text("Scale", "比例", lang) + " —", ""]
-    rows = [[tb.title],
-            [f"{text('Problem', '题目', lang)} {tb.problem}", f"{text('Recipe', '作图法', lang)} {tb.recipe}"],
+    rows = [[printable(tb.title)],
+            [f"{text('Problem', '题目', lang)} {printable(tb.problem)}", f"{text('Recipe', '作图法', lang)} {tb.recipe}"],
             scale + [f"{text('Paper', '图幅', lang)} {tb.paper}"],
             [f"geomcon {version()}", f"{text('Sheet', '第', lang)} {tb.sheet}/{tb.sheets}"
              + ("" if lang == "en" else " 张")]]
