@@ -23,18 +23,18 @@ against the link); the twin is the complex vector loop differentiated exactly
 """
 from __future__ import annotations
 
-import math
 from typing import Any, Mapping
 
 from ..analytic.kinematics import four_bar
 from ..errors import NotAMechanism
-from ..geometry import LeftOf, Point, RightOf, circle, circle_circle, line_through, perpendicular, segment
+from ..geometry import line_through, perpendicular, segment
 from ..scene import Role, Scene
 from ..scene.marks import vector
 from .base import Construction, Quantity, Recipe
-from .common import add_bar, add_pivot
-from .kinematics_common import (EPSILON, OMEGA, PHI, SCALES, add_crank_acceleration, add_crank_velocity, add_image,
-                                crank_pin, image, meet, normal_length, rate, scaled_length, turned, twin_scales)
+from .common import add_bar
+from .kinematics_common import (EPSILON, OMEGA, PHI, SCALES, add_crank_acceleration, add_crank_velocity, add_four_bar_at,
+                                add_image, four_bar_assembles, image, meet, normal_length, rate, scaled_length, turned,
+                                twin_scales)
 
 GIVENS = (
     Quantity("AB", "mm", "crank"),
@@ -63,39 +63,19 @@ ANSWERS = (
 def _validate(g: Mapping[str, Any]) -> list[str]:
     if g["omega"] == 0:
         raise NotAMechanism("omega = 0: the crank does not turn, the polygons have no scale")
-    AB, BC, CD, AD, phi = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"]
-    b = complex(AB * math.cos(math.radians(phi)), AB * math.sin(math.radians(phi)))
-    d = abs(AD - b)
-    if not abs(BC - CD) < d < BC + CD:
-        raise NotAMechanism(f"at phi = {phi:g}° the links do not assemble: BD = {d:.6g} is outside "
-                            f"(|BC − CD|, BC + CD) = ({abs(BC - CD):.6g}, {BC + CD:.6g})"
-                            + (" — a dead point: BC and CD collinear" if math.isclose(d, BC + CD) or
-                               math.isclose(d, abs(BC - CD)) else ""))
+    four_bar_assembles(g)
     return []
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
     """Build the linkage at φ and its velocity and acceleration polygons."""
-    AB, BC, CD, AD, phi, omega = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"], g["omega"]
+    AB, BC, CD, AD, omega = g["AB"], g["BC"], g["CD"], g["AD"], g["omega"]
     epsilon = g.get("epsilon", 0.0) or 0.0
-    below = g.get("branch", "above") == "below"
     BE = g.get("BE")
     ang = g.get("angle_CBE", 0.0) or 0.0
     sc = Scene("Four-bar: velocity and acceleration polygons")
-    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
-    D = add_pivot(sc, "D", (AD, 0.0), (f"Fixed pivot D on the frame line, AD = {AD:g}", f"在机架线上取 D,使 AD = {AD:g}"))
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
-               caption=(f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"))
-    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
-    kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
-    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint", label="C",
-               caption=("They meet at C", "两圆交于 C"))
+    A, D, B, C = add_four_bar_at(sc, g)
     drawing = sc.drawing
-    if drawing:
-        sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
-        add_bar(sc, "AB", A, B, ("Draw the linkage ABCD at this position", "画出该位置的机构 ABCD"))
-        add_bar(sc, "BC", B, C)
-        add_bar(sc, "CD", C, D)
     E = None
     if BE is not None:
         E = sc.add("E", image, B, C, BE, BC, ang, style="joint", label="E",

@@ -21,13 +21,11 @@ import math
 from typing import Any, Mapping
 
 from ..analytic.kinematics import crank_slider, four_bar
-from ..errors import Degenerate, NotAMechanism
-from ..geometry import (LeftOf, Line, Point, RightOf, ToRightOf, circle, circle_circle, line_circle, line_line,
-                        line_through, perpendicular, segment)
+from ..errors import Degenerate
+from ..geometry import Line, Point, line_line, line_through, perpendicular
 from ..scene import Role, Scene
 from .base import Construction, Quantity, Recipe
-from .common import add_bar, add_pivot
-from .kinematics_common import PHI, crank_pin
+from .kinematics_common import PHI, add_four_bar_at, add_slider_at, four_bar_assembles, slider_assembles
 from .synthesis_common import xy
 
 BRANCH = Quantity("branch", "choice", "assembly: C left (above) or right (below) of the directed line B→D",
@@ -70,12 +68,7 @@ FOUR_ANSWERS = (
 
 
 def _four_validate(g: Mapping[str, Any]) -> list[str]:
-    AB, BC, CD, AD, phi = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"]
-    b = complex(AB * math.cos(math.radians(phi)), AB * math.sin(math.radians(phi)))
-    d = abs(AD - b)
-    if not abs(BC - CD) < d < BC + CD:
-        raise NotAMechanism(f"at phi = {phi:g}° the links do not assemble: BD = {d:.6g} is outside "
-                            f"(|BC − CD|, BC + CD) = ({abs(BC - CD):.6g}, {BC + CD:.6g})")
+    four_bar_assembles(g)
     return []
 
 
@@ -87,22 +80,8 @@ def _inverse(x: float) -> float:
 
 def four_construct(g: Mapping[str, Any]) -> Construction:
     """The linkage at φ, its joints as centres, P13 and P24 by Kennedy's theorem, the ratios measured."""
-    AB, BC, CD, AD, phi = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"]
-    below = g.get("branch", "above") == "below"
     sc = Scene("Four-bar: instant centres by Kennedy's theorem")
-    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A = P14 at the origin", "固定铰链 A 即瞬心 P14,取为原点"))
-    D = add_pivot(sc, "D", (AD, 0.0), (f"Fixed pivot D = P34, AD = {AD:g}", f"固定铰链 D 即瞬心 P34,AD = {AD:g}"))
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
-               caption=(f"Crank at φ = {phi:g}°: B = P12", f"曲柄转角 φ = {phi:g}°:B 即瞬心 P12"))
-    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
-    kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
-    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint", label="C",
-               caption=("They meet at C = P23", "两圆交于 C,即瞬心 P23"))
-    if sc.drawing:
-        sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
-        add_bar(sc, "AB", A, B, ("Draw the linkage ABCD", "画出机构 ABCD"))
-        add_bar(sc, "BC", B, C)
-        add_bar(sc, "CD", C, D)
+    A, D, B, C = add_four_bar_at(sc, g, centres=True)
     lBC = sc.add("lBC", line_through, B, C, caption=("Extend BC (P12P23)", "延长 BC(P12P23 连线)"))
     lAD = sc.add("lAD", line_through, A, D, caption=("Extend AD (P14P34)", "延长 AD(P14P34 连线)"))
     P13 = sc.add("P13", kennedy, lBC, lAD, "P13", style="point", label="P13",
@@ -154,29 +133,14 @@ SLIDER_ANSWERS = (
 
 
 def _slider_validate(g: Mapping[str, Any]) -> list[str]:
-    AB, BC, e, phi = g["AB"], g["BC"], g["e"], g["phi"]
-    h = AB * math.sin(math.radians(phi)) + e
-    if abs(h) >= BC:
-        raise NotAMechanism(f"at phi = {phi:g}° B is {abs(h):.6g} from the guide, not less than BC = {BC:g}")
+    slider_assembles(g)
     return []
 
 
 def slider_construct(g: Mapping[str, Any]) -> Construction:
     """The crank-slider at φ; P34 at infinity (⊥ the guide); P13 and P24 by Kennedy's theorem."""
-    AB, BC, e, phi = g["AB"], g["BC"], g["e"], g["phi"]
     sc = Scene("Crank-slider: instant centres by Kennedy's theorem")
-    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A = P14 at the origin", "固定铰链 A 即瞬心 P14,取为原点"))
-    F = sc.given_at("F", 0.0, -e, style="point", caption=(f"F with AF = e = {e:g} (below A)", f"取 AF = e = {e:g}(A 下方)"))
-    gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given",
-                caption=("The guide through F; P34 lies at infinity perpendicular to it", "过 F 作导路;P34 在垂直于导路的无穷远处"))
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
-               caption=(f"Crank at φ = {phi:g}°: B = P12", f"曲柄转角 φ = {phi:g}°:B 即瞬心 P12"))
-    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
-    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint", label="C",
-               caption=("It meets the guide at C = P23", "交导路于 C,即瞬心 P23"))
-    if sc.drawing:
-        add_bar(sc, "AB", A, B, ("Draw the linkage ABC", "画出机构 ABC"))
-        add_bar(sc, "BC", B, C)
+    A, F, gl, B, C = add_slider_at(sc, g, centres=True)
     lBC = sc.add("lBC", line_through, B, C, caption=("Extend BC (P12P23)", "延长 BC(P12P23 连线)"))
     nA = sc.add("nA", perpendicular, gl, A, caption=("Through A ⊥ the guide (P14P34)", "过 A 作导路的垂线(P14P34 连线)"))
     P13 = sc.add("P13", kennedy, lBC, nA, "P13", style="point", label="P13",

@@ -14,11 +14,12 @@ import math
 
 from typing import Any
 
-from ..errors import Degenerate
-from ..geometry import Line, Point, line_line
-from ..scene import Ref, Role, Scene
+from ..errors import Degenerate, NotAMechanism
+from ..geometry import LeftOf, Line, Point, RightOf, ToRightOf, circle, circle_circle, line_circle, line_line, segment
+from ..scene import Ref, Role, Scene, marks
 from ..scene.marks import vector
 from .base import Quantity
+from .common import add_bar, add_pivot
 
 PHI = Quantity("phi", "deg", "crank angle, counter-clockwise from +x (from A→D for the four-bar)", minimum=-360.0,
                inclusive=True, maximum=360.0)
@@ -156,6 +157,86 @@ def add_crank_acceleration(sc: Scene, A: Ref, B: Ref, omega: Any, epsilon: Any, 
     return mu_a, p2, b2
 
 
+def four_bar_assembles(g: Any) -> None:
+    """Refuse a four-bar that cannot be assembled at its crank angle (BD outside (|BC − CD|, BC + CD)), naming a
+    dead point when BC and CD are collinear."""
+    AB, BC, CD, AD, phi = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"]
+    d = math.hypot(AD - AB * math.cos(math.radians(phi)), AB * math.sin(math.radians(phi)))
+    if not abs(BC - CD) < d < BC + CD:
+        raise NotAMechanism(f"at phi = {phi:g}° the links do not assemble: BD = {d:.6g} is outside "
+                            f"(|BC − CD|, BC + CD) = ({abs(BC - CD):.6g}, {BC + CD:.6g})"
+                            + (" — a dead point: BC and CD collinear" if math.isclose(d, BC + CD) or
+                               math.isclose(d, abs(BC - CD)) else ""))
+
+
+def slider_assembles(g: Any) -> None:
+    """Refuse a crank-slider whose rod cannot reach the guide at its crank angle (|y of B + e| ≥ BC)."""
+    AB, BC, e, phi = g["AB"], g["BC"], g["e"], g["phi"]
+    h = AB * math.sin(math.radians(phi)) + e
+    if abs(h) >= BC:
+        raise NotAMechanism(f"at phi = {phi:g}° B is {abs(h):.6g} from the guide, not less than BC = {BC:g}"
+                            + (": the rod is perpendicular to the guide (a dead point)" if math.isclose(abs(h), BC) else ""))
+
+
+def add_four_bar_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref, Ref, Ref]:
+    """The four-bar at its crank angle: A, D, B on the crank circle, C where the circles about B and D meet on the
+    side ``branch`` names, and (drawing) the frame and the links; ``centres`` names the joints as instant centres.
+    Returns (A, D, B, C)."""
+    AB, BC, CD, AD, phi = g["AB"], g["BC"], g["CD"], g["AD"], g["phi"]
+    below = g.get("branch", "above") == "below"
+    if centres:
+        words = (("Fixed pivot A = P14 at the origin", "固定铰链 A 即瞬心 P14,取为原点"),
+                 (f"Fixed pivot D = P34, AD = {AD:g}", f"固定铰链 D 即瞬心 P34,AD = {AD:g}"),
+                 (f"Crank at φ = {phi:g}°: B = P12", f"曲柄转角 φ = {phi:g}°:B 即瞬心 P12"),
+                 ("They meet at C = P23", "两圆交于 C,即瞬心 P23"), ("Draw the linkage ABCD", "画出机构 ABCD"))
+    else:
+        words = (("Fixed pivot A at the origin", "取固定铰链 A 为原点"),
+                 (f"Fixed pivot D on the frame line, AD = {AD:g}", f"在机架线上取 D,使 AD = {AD:g}"),
+                 (f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"),
+                 ("They meet at C", "两圆交于 C"), ("Draw the linkage ABCD at this position", "画出该位置的机构 ABCD"))
+    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0])
+    D = add_pivot(sc, "D", (AD, 0.0), words[1])
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B", caption=words[2])
+    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
+    kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
+    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint", label="C",
+               caption=words[3])
+    if sc.drawing:
+        sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
+        add_bar(sc, "AB", A, B, words[4])
+        add_bar(sc, "BC", B, C)
+        add_bar(sc, "CD", C, D)
+    return A, D, B, C
+
+
+def add_slider_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref, Ref, Ref, Ref]:
+    """The offset crank-slider at its crank angle (the guide y = −e, C to the right of B) and, drawing, its links;
+    ``centres`` names the joints as instant centres. Returns (A, F, guide, B, C)."""
+    AB, BC, e, phi = g["AB"], g["BC"], g["e"], g["phi"]
+    if centres:
+        words = (("Fixed pivot A = P14 at the origin", "固定铰链 A 即瞬心 P14,取为原点"),
+                 ("The guide through F; P34 lies at infinity perpendicular to it", "过 F 作导路;P34 在垂直于导路的无穷远处"),
+                 (f"Crank at φ = {phi:g}°: B = P12", f"曲柄转角 φ = {phi:g}°:B 即瞬心 P12"),
+                 ("It meets the guide at C = P23", "交导路于 C,即瞬心 P23"), ("Draw the linkage ABC", "画出机构 ABC"))
+    else:
+        words = (("Fixed pivot A at the origin", "取固定铰链 A 为原点"),
+                 ("The slider's guide through F, parallel to x", "过 F 作滑块导路(水平)"),
+                 (f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"),
+                 ("It meets the guide at C", "交导路于 C"), ("Draw the linkage ABC at this position", "画出该位置的机构 ABC"))
+    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0])
+    F = sc.given_at("F", 0.0, -e, style="point", caption=(f"F with AF = e = {e:g} (below A)", f"取 AF = e = {e:g}(A 下方)"))
+    gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given", caption=words[1])
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B", caption=words[2])
+    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
+    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint", label="C", caption=words[3])
+    if sc.drawing:
+        add_bar(sc, "AB", A, B, words[4])
+        add_bar(sc, "BC", B, C)
+        if not centres:
+            sc.add("slider", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+    return A, F, gl, B, C
+
+
 def twin_scales(g: Any) -> dict[str, float]:
     """The polygons' scales as the twins state them: μv = |ω|, μa = √(ω⁴ + ε²)."""
     return {"mu_v": abs(g["omega"]), "mu_a": math.hypot(g["omega"] ** 2, g.get("epsilon", 0.0) or 0.0)}
@@ -173,5 +254,6 @@ def add_image(sc: Scene, key: str, b: Ref, c: Ref, BE: Any, BC: Any, angle: Any,
     return e
 
 
-__all__ = ["EPSILON", "OMEGA", "PHI", "SCALES", "accel_scale", "add_image", "twin_scales", "add_crank_acceleration", "add_crank_velocity", "along", "crank_pin", "image", "meet", "normal_length", "pole_beside", "rate", "ratio",
+__all__ = ["EPSILON", "OMEGA", "PHI", "SCALES", "accel_scale", "add_four_bar_at", "add_image", "add_slider_at",
+           "four_bar_assembles", "slider_assembles", "twin_scales", "add_crank_acceleration", "add_crank_velocity", "along", "crank_pin", "image", "meet", "normal_length", "pole_beside", "rate", "ratio",
            "scaled_length", "turned"]

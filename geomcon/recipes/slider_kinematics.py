@@ -24,13 +24,14 @@ from typing import Any, Mapping
 
 from ..analytic.kinematics import crank_slider, guide_bar
 from ..errors import NotAMechanism
-from ..geometry import Line, Point, ToRightOf, circle, line_circle, line_through, parallel, perpendicular, segment
-from ..scene import Role, Scene, marks
+from ..geometry import Point, line_through, parallel, perpendicular, segment
+from ..scene import Role, Scene
 from ..scene.marks import vector
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot
 from .guide_bar import _block_along
-from .kinematics_common import (EPSILON, OMEGA, PHI, SCALES, add_crank_acceleration, add_crank_velocity, along,
+from .kinematics_common import (EPSILON, OMEGA, PHI, SCALES, add_crank_acceleration, add_crank_velocity, add_slider_at,
+                                along, slider_assembles,
                                 crank_pin, meet, normal_length, rate, turned, twin_scales)
 
 def _omega(g: Mapping[str, Any]) -> None:
@@ -56,32 +57,16 @@ SLIDER_ANSWERS = (
 
 def _slider_validate(g: Mapping[str, Any]) -> list[str]:
     _omega(g)
-    AB, BC, e, phi = g["AB"], g["BC"], g["e"], g["phi"]
-    h = AB * math.sin(math.radians(phi)) + e
-    if abs(h) >= BC:
-        raise NotAMechanism(f"at phi = {phi:g}° B is {abs(h):.6g} from the guide, not less than BC = {BC:g}"
-                            + (": the rod is perpendicular to the guide (a dead point)" if math.isclose(abs(h), BC) else ""))
+    slider_assembles(g)
     return []
 
 
 def slider_construct(g: Mapping[str, Any]) -> Construction:
     """Build the crank-slider at φ and its velocity and acceleration polygons."""
-    AB, BC, e, phi, omega = g["AB"], g["BC"], g["e"], g["phi"], g["omega"]
+    AB, BC, e, omega = g["AB"], g["BC"], g["e"], g["omega"]
     epsilon = g.get("epsilon", 0.0) or 0.0
     sc = Scene("Crank-slider: velocity and acceleration polygons")
-    A = add_pivot(sc, "A", Point(0.0, 0.0), ("Fixed pivot A at the origin", "取固定铰链 A 为原点"))
-    F = sc.given_at("F", 0.0, -e, style="point", caption=(f"F with AF = e = {e:g} (below A)", f"取 AF = e = {e:g}(A 下方)"))
-    gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given",
-                caption=("The slider's guide through F, parallel to x", "过 F 作滑块导路(水平)"))
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
-               caption=(f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"))
-    kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
-    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint", label="C",
-               caption=("It meets the guide at C", "交导路于 C"))
-    if sc.drawing:
-        add_bar(sc, "AB", A, B, ("Draw the linkage ABC at this position", "画出该位置的机构 ABC"))
-        add_bar(sc, "BC", B, C)
-        sc.add("slider", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+    A, F, gl, B, C = add_slider_at(sc, g)
     gap = _gap(AB, BC, abs(e))
     mu_v, p, b = add_crank_velocity(sc, A, B, AB, omega, gap, (A, F, B, C))
     lBC = sc.add("lBC", line_through, B, C, visible=False)
