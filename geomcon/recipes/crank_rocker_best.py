@@ -16,11 +16,11 @@ from typing import Any, Mapping
 from ..analytic.crank_rocker_best import crank_rocker_best
 from ..errors import NotAMechanism
 from ..geometry import Point, segment
-from ..scene import Role, Scene, marks
-from ..scene.tape import lifted
+from ..scene import Role, Scene
 from .base import Construction, Quantity, Recipe
 from .common import gamma_min_of, half_difference, half_sum, length
-from .crank_rocker_design import _rocker_end, admissible_arcs
+from .crank_rocker_crank_frame import add_frame_rocker
+from .crank_rocker_design import admissible_arcs
 from .search import maximise
 from .theta_circle import K_MAX_OBTUSE, add_theta_circle, add_theta_step, refuse_tiny_theta
 
@@ -104,16 +104,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     K, psi, AD = g["K"], g["psi"], g["AD"]
     sc = Scene("Crank-rocker by K with the largest γmin")
     th = add_theta_step(sc, K)
-    D = sc.given("D", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot D of the rocker", "摇杆固定铰链 D"))
+    D, C1, C2 = add_frame_rocker(sc, AD, psi)
     if sc.drawing:
-        sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
-    C1 = sc.given("C1", lifted(_rocker_end, AD, 90.0 + psi / 2.0), style="joint",
-                  caption=(f"A rocker of the frame's length {AD:g}: extreme position DC1", f"取摇杆长等于机架长 {AD:g}:极限位置 DC1"))
-    C2 = sc.given("C2", lifted(_rocker_end, AD, 90.0 - psi / 2.0), style="joint",
-                  caption=(f"and DC2, ψ = ∠C1DC2 = {psi:g}°", f"及 DC2,ψ = ∠C1DC2 = {psi:g}°"))
-    if sc.drawing:
-        sc.add("DC1", segment, D, C1, role=Role.GIVEN, style="link")
-        sc.add("DC2", segment, D, C2, role=Role.GIVEN, style="link")
         sc.add("chord", segment, C1, C2, style="construction", caption=("Join C1C2", "连接 C1C2"))
     arcs = []
     for s, pre, en, zh, lab in ((-1, "n", "on D's side", "D 所在一侧", "P"), (1, "f", "on the far side", "远离 D 的一侧", "P′")):

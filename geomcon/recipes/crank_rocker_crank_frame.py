@@ -71,11 +71,9 @@ def sees_theta(A: Point, C1: Point, C2: Point, theta: float) -> bool:
     return abs(angle_deg(A, C1, C2) - theta) <= abs(angle_deg(A, C1, C2) - (180.0 - theta))
 
 
-def construct(g: Mapping[str, Any]) -> Construction:
-    """The unit-size θ-circles; A where the crank-to-frame ratio is AB/AD; each design scaled to AD."""
-    K, AB, AD, psi = g["K"], g["AB"], g["AD"], g["psi"]
-    sc = Scene("Crank-rocker designed by K from the crank, the frame and the swing")
-    th = add_theta_step(sc, K)
+def add_frame_rocker(sc: Scene, AD: Any, psi: Any) -> tuple[Any, Any, Any]:
+    """D and a rocker as long as the frame AD in its two extreme positions DC1, DC2 (ψ apart, symmetric about
+    the vertical through D): the unit drawing on which the forms closing on the frame find A. Returns (D, C1, C2)."""
     D = sc.given("D", Point(0.0, 0.0), style="pivot", caption=("Fixed pivot D of the rocker", "摇杆固定铰链 D"))
     if sc.drawing:
         sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
@@ -86,6 +84,15 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if sc.drawing:
         sc.add("DC1", segment, D, C1, role=Role.GIVEN, style="link")
         sc.add("DC2", segment, D, C2, role=Role.GIVEN, style="link")
+    return D, C1, C2
+
+
+def construct(g: Mapping[str, Any]) -> Construction:
+    """The unit-size θ-circles; A where the crank-to-frame ratio is AB/AD; each design scaled to AD."""
+    K, AB, AD, psi = g["K"], g["AB"], g["AD"], g["psi"]
+    sc = Scene("Crank-rocker designed by K from the crank, the frame and the swing")
+    th = add_theta_step(sc, K)
+    D, C1, C2 = add_frame_rocker(sc, AD, psi)
     arcs = []
     for s, pre, en, zh, lab in ((-1, "n", "on D's side", "D 所在一侧", "P"), (1, "f", "on the far side", "远离 D 的一侧", "P′")):
         kT = add_theta_circle(sc, C1, C2, th, s, side_words=(en, zh), prefix=pre, label=lab)
