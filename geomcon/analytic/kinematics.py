@@ -12,7 +12,11 @@ Conventions (shared with the linkage recipes):
 - crank-slider: A at the origin, the guide the line y = −e, the slider to the right of B (as in
   ``crank_slider.extremes``); ``phi`` from +x; the slider's velocity and acceleration are signed along +x;
 - guide-bar: A at the origin, the guide's pivot C at (0, −AC); ``phi`` from +x; the slip of the block along the
-  guide is signed along C→B and the Coriolis component along C→B turned +90°.
+  guide is signed along C→B and the Coriolis component along C→B turned +90°;
+- slotter (the six-bar of seed 000: crank, guide bar, coupler and ram): A at the origin, the guide bar's pivot C at
+  (−AC, 0), its arm CD on the far side of C from the block B, the ram E on the vertical path x = −(AC + CF), above
+  D (``branch = "above"``) or below; the ram's velocity and acceleration are signed along +y, the coupler DE is
+  link 4.
 
 Examples
 --------
@@ -163,6 +167,60 @@ def guide_bar(AB: float, AC: float, phi: float, omega: float, epsilon: float = 0
             "a_slip": a_slip, "a_coriolis": cor, "CB": s}
 
 
+def slotter(AB: float, AC: float, CD: float, DE: float, CF: float, phi: float, omega: float, epsilon: float = 0.0,
+            branch: Branch = "above") -> dict[str, float]:
+    """The slotter's six-bar (crank AB, guide bar through the block B turning about C, arm CD, coupler DE, ram E on
+    the vertical path x = −(AC + CF)) at ``phi``: the loop A→B = A→C + C→B in the guide's frame, then the ram's
+    loop C→D→E, both differentiated exactly.
+
+    Returns
+    -------
+    dict
+        ``omega3``, ``epsilon3`` (the guide bar), ``v_slip``, ``a_slip``, ``a_coriolis`` (the block B2 relative to
+        the guide, as :func:`guide_bar`), ``vB3`` (speed of the guide's point at B), ``vD``, ``aD`` (magnitudes),
+        ``omega4``, ``epsilon4`` (the coupler DE), ``vE``, ``aE`` (the ram, signed along +y), ``yE``.
+
+    Examples
+    --------
+    >>> r = slotter(AB=70, AC=161, CD=115, DE=46, CF=115.4, phi=180, omega=4.8147)
+    >>> round(r["omega3"], 9), round(r["vE"], 6), abs(r["v_slip"]) < 1e-12
+    (-3.703615385, 425.915769, True)
+    """
+    t1 = _unit(phi)
+    r = AB * t1 + AC                                      # C→B, C at −AC
+    s = abs(r)
+    if s == 0.0:
+        raise NotAMechanism("B coincides with C: the guide's direction is undefined")
+    u = r / s
+    q = t1 * u.conjugate()                                # the crank's direction in the guide's frame
+    vB = 1j * AB * omega * q                              # = slip + i·s·ω3
+    slip, w3 = vB.real, vB.imag / s
+    aB = AB * (1j * epsilon - omega * omega) * q          # = (a_slip − s·ω3²) + i·(s·ε3 + 2·ω3·slip)
+    a_slip = aB.real + s * w3 * w3
+    cor = 2.0 * w3 * slip
+    e3 = (aB.imag - cor) / s
+    D = -AC - CD * u                                      # the arm's end, beyond C
+    rD = D + AC
+    vD = 1j * w3 * rD
+    aD = (1j * e3 - w3 * w3) * rD
+    h = -(AC + CF) - D.real                               # from D across to the path
+    if abs(h) >= DE:
+        raise NotAMechanism(f"at phi = {phi:g}° D is {abs(h):.6g} from the ram's path, not less than DE = {DE:g}"
+                            + (" (the coupler perpendicular to the path: a dead point)" if abs(h) == DE else ""))
+    dy = math.sqrt((DE - h) * (DE + h)) * (1.0 if branch == "above" else -1.0)
+    t4 = complex(h, dy) / DE                              # the coupler's direction D→E
+    # vD + i·ω4·DE·t4 is vertical: its real part is 0
+    w4 = vD.real / (DE * t4.imag)
+    vE = vD.imag + w4 * DE * t4.real
+    rest = aD - w4 * w4 * DE * t4                         # + i·ε4·DE·t4, vertical
+    e4 = rest.real / (DE * t4.imag)
+    aE = rest.imag + e4 * DE * t4.real
+    return {"theta3": math.degrees(cmath.phase(u)), "omega3": w3, "epsilon3": e3, "v_slip": slip, "a_slip": a_slip,
+            "a_coriolis": cor, "CB": s, "vB3": abs(w3) * s, "vD": abs(vD), "aD": abs(aD),
+            "theta4": math.degrees(cmath.phase(t4)), "omega4": w4, "epsilon4": e4, "vE": vE, "aE": aE,
+            "yE": D.imag + dy}
+
+
 def four_bar_instant_centres(AB: float, BC: float, CD: float, AD: float, phi: float,
                              branch: Branch = "above") -> dict[str, complex | None]:
     """The six instant centres of a four-bar (1 crank, 2 coupler, 3 rocker, 4 frame) and ω3/ω1, ω2/ω1.
@@ -200,4 +258,4 @@ def four_bar_instant_centres(AB: float, BC: float, CD: float, AD: float, phi: fl
     return out
 
 
-__all__ = ["crank_slider", "four_bar", "four_bar_instant_centres", "guide_bar"]
+__all__ = ["crank_slider", "four_bar", "four_bar_instant_centres", "guide_bar", "slotter"]

@@ -11,11 +11,12 @@ Point(x=0.0, y=3.0)
 from __future__ import annotations
 
 import math
-
+from dataclasses import dataclass
 from typing import Any
 
 from ..errors import Degenerate, NotAMechanism
-from ..geometry import LeftOf, Line, Point, RightOf, ToRightOf, circle, circle_circle, line_circle, line_line, segment
+from ..geometry import (LeftOf, Line, Point, RightOf, ToRightOf, circle, circle_circle, line_circle, line_line,
+                        line_through, parallel, perpendicular, segment)
 from ..scene import Ref, Role, Scene, marks
 from ..scene.marks import vector
 from .base import Quantity
@@ -157,6 +158,148 @@ def add_crank_acceleration(sc: Scene, A: Ref, B: Ref, omega: Any, epsilon: Any, 
     return mu_a, p2, b2
 
 
+def coriolis_end(b2: Point, b3: Point, b2_: Point, w3: float, mu_v: float, mu_a: float) -> Point:
+    """k′ = b2′ + aᵏB3B2/μa, with aᵏB3B2 = 2·ω3 × vB3B2 (vB3B2 = (b3 − b2)·μv turned 90° in the sense of ω3)."""
+    k = 2.0 * w3 * mu_v / mu_a
+    dx, dy = (b3.x - b2.x) * k, (b3.y - b2.y) * k
+    return Point(b2_.x - dy, b2_.y + dx)
+
+
+def across(p: Point, q: Point, a: Point, b: Point, mu: float) -> float:
+    """The polygon side ``p → q`` read along the direction a→b turned +90°, at the scale ``mu``."""
+    dx, dy = b.x - a.x, b.y - a.y
+    n = math.hypot(dx, dy)
+    return mu * ((q.y - p.y) * dx - (q.x - p.x) * dy) / n
+
+
+def add_guide_velocity(sc: Scene, A: Ref, B: Ref, C: Ref, lCB: Ref, AB: Any, omega: Any, gap: Any,
+                       beside: tuple[Ref, ...]) -> tuple[tuple[Ref, Ref, Ref, Ref], Ref]:
+    """The guide-bar's velocity polygon (the block B2 on the crank slides on the guide CB, B3 the guide's point at
+    B): pb2 ⊥ AB; the line through b2 ∥ CB meets the line through p ⊥ CB at b3; ω3 = pb3·μv/CB and the slip
+    b3b2·μv along C→B (steps ``omega3``, ``v_slip``). Returns (μv, p, b2, b3)."""
+    mu_v, p, b2 = add_crank_velocity(sc, A, B, AB, omega, gap, beside, label="b2")
+    sl = sc.add("sl", parallel, lCB, b2, caption=("Through b2, the direction of vB3B2 (∥ CB)", "过 b2 作 vB3B2 的方向线(∥ CB)"))
+    tp = sc.add("tp", perpendicular, lCB, p, caption=("Through p, the direction of vB3 (⊥ CB)", "过 p 作 vB3 的方向线(⊥ CB)"))
+    b3 = sc.add("b3", meet, sl, tp, style="point", label="b3", caption=("They meet at b3", "两线交于 b3"))
+    w3 = sc.add("omega3", rate, p, b3, C, B, mu_v, role=Role.MEASUREMENT, unit="rad/s",
+                caption=("ω3 = vB3/CB = pb3·μv/CB", "ω3 = vB3/lCB = pb3·μv/lCB"))
+    sc.add("v_slip", along, b3, b2, lCB, mu_v, role=Role.MEASUREMENT, unit="mm/s",
+           caption=("Slip vB2B3 = b3b2·μv (signed along C→B)", "相对滑动速度 vB2B3 = b3b2·μv(沿 C→B 为正)"))
+    return (mu_v, p, b2, b3), w3
+
+
+def add_guide_acceleration(sc: Scene, A: Ref, B: Ref, C: Ref, lCB: Ref, omega: Any, epsilon: Any, gap: Any,
+                           beside: tuple[Ref, ...], v: tuple[Ref, Ref, Ref, Ref], w3: Ref) -> tuple[Ref, ...]:
+    """The guide-bar's acceleration polygon after its velocity polygon ``v`` = (μv, p, b2, b3): p′b2′ is aB2; the
+    pole p′ beside ``beside``; the
+    Coriolis component 2ω3·vB3B2 from b2′ to k′ (vB3B2 turned 90° in the sense of ω3); the line through k′ ∥ CB
+    (aʳ) meets the line ⊥ CB through n3 (p′n3 = ω3²·CB along B→C) at b3′; ε3, a_slip and a_coriolis read off.
+    Returns (μa, p′, b2′, k′, n3, b3′)."""
+    mu_v, p, b2, b3 = v
+    mu_a, p2, b2_ = add_crank_acceleration(sc, A, B, omega, epsilon, gap, beside, label="b2′")
+    k_ = sc.add("k", coriolis_end, b2, b3, b2_, w3, mu_v, mu_a, style="point", label="k′",
+                caption=("From b2′, the Coriolis component aᵏB3B2 = 2ω3·vB3B2: vB3B2 turned 90° in the sense of ω3",
+                         "自 b2′ 作哥氏加速度 aᵏB3B2 = 2ω3·vB3B2,方向为 vB3B2 沿 ω3 转向转 90°"))
+    rl = sc.add("rl", parallel, lCB, k_, caption=("Through k′, the direction of aʳB3B2 (∥ CB)", "过 k′ 作 aʳB3B2 的方向线(∥ CB)"))
+    k3 = sc.add("k_n3", normal_length, w3, mu_a, visible=False)
+    n3 = sc.add("n3", turned, p2, B, C, k3, 0.0, style="point", label="n3",
+                caption=("From p′, p′n3 ∥ BC: aB3ⁿ = ω3²·CB, towards C", "自 p′ 作 p′n3 ∥ BC:aB3ⁿ = ω3²·lCB,指向 C"))
+    t3 = sc.add("t3", perpendicular, lCB, n3, caption=("Through n3, the direction of aB3ᵗ (⊥ CB)", "过 n3 作 aB3ᵗ 的方向线(⊥ CB)"))
+    b3_ = sc.add("b3a", meet, rl, t3, style="point", label="b3′", caption=("They meet at b3′", "两线交于 b3′"))
+    sc.add("epsilon3", rate, n3, b3_, C, B, mu_a, role=Role.MEASUREMENT, unit="rad/s²",
+           caption=("ε3 = aB3ᵗ/CB = n3b3′·μa/CB", "ε3 = aB3ᵗ/lCB = n3b3′·μa/lCB"))
+    sc.add("a_slip", along, b3_, k_, lCB, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
+           caption=("Relative acceleration aʳB2B3 = b3′k′·μa (signed along C→B)", "相对加速度 aʳB2B3 = b3′k′·μa(沿 C→B 为正)"))
+    sc.add("a_coriolis", across, k_, b2_, C, B, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
+           caption=("Coriolis aᵏB2B3 = k′b2′·μa (signed along C→B turned +90°)", "哥氏加速度 aᵏB2B3 = k′b2′·μa(沿 C→B 逆转 90° 为正)"))
+    return mu_a, p2, b2_, k_, n3, b3_
+
+
+def guide_vectors(v: tuple[Ref, ...], a: tuple[Ref, ...]) -> tuple[tuple[str, Ref, Ref], ...]:
+    """The arrows of the guide-bar's polygons (``v`` from :func:`add_guide_velocity`, ``a`` from
+    :func:`add_guide_acceleration`)."""
+    _, p, b2, b3 = v
+    _, p2, b2_, k_, n3, b3_ = a
+    return (("v_pb3", p, b3), ("v_b2b3", b2, b3), ("a_b2k", b2_, k_), ("a_kb3", k_, b3_), ("a_pn3", p2, n3),
+            ("a_n3b3", n3, b3_), ("a_pb3", p2, b3_))
+
+
+@dataclass(frozen=True)
+class RRP:
+    """How an RRP dyad's polygon steps are named: the joint ``J`` it hangs from, the slider ``X``, the link number
+    ``n``, the path's positive direction and words, and the keys of the two lines through the poles.
+
+    >>> d = RRP("D", "E", "4", "+y", ("the ram's path", "滑枕导路"), ("tpE", "taE"))
+    >>> d.j, d.x, d.line
+    ('d', 'e', 'lDE')
+    """
+
+    J: str = "B"
+    X: str = "C"
+    n: str = "2"
+    axis: str = "+x"
+    path: tuple[str, str] = ("the guide", "导路")
+    poles: tuple[str, str] = ("tp", "t3")
+
+    @property
+    def j(self) -> str:
+        return self.J.lower()
+
+    @property
+    def x(self) -> str:
+        return self.X.lower()
+
+    @property
+    def line(self) -> str:
+        return f"l{self.J}{self.X}"
+
+
+def add_rrp_velocity(sc: Scene, J: Ref, X: Ref, path: Ref, j: Ref, p: Ref, mu_v: Ref, d: RRP = RRP()) -> tuple[Ref, Ref, Ref]:
+    """An RRP dyad's velocity polygon (vX = vJ + vXJ): the line through j ⊥ JX meets the line through p ∥ the
+    path at x; vX read signed along the path and ωn = vXJ/JX. Returns (the line JX, x, ωn)."""
+    JX, jx, n = f"{d.J}{d.X}", f"{d.j}{d.x}", d.n
+    lJX = sc.add(d.line, line_through, J, X, visible=False)
+    tj = sc.add(f"t{d.j}", perpendicular, lJX, j, caption=(f"Through {d.j}, the direction of v{d.X}{d.J} (⊥ {JX})",
+                                                          f"过 {d.j} 作 v{d.X}{d.J} 的方向线(⊥ {JX})"))
+    tp = sc.add(d.poles[0], parallel, path, p, caption=(f"Through p, the direction of v{d.X} (∥ {d.path[0]})",
+                                                        f"过 p 作 v{d.X} 的方向线(∥ {d.path[1]})"))
+    x = sc.add(d.x, meet, tj, tp, style="point", label=d.x, caption=(f"They meet at {d.x}", f"两线交于 {d.x}"))
+    sc.add(f"v{d.X}", along, p, x, path, mu_v, role=Role.MEASUREMENT, unit="mm/s",
+           caption=(f"Measure v{d.X} = p{d.x}·μv (signed along {d.axis})", f"量得 v{d.X} = p{d.x}·μv(沿 {d.axis} 为正)"))
+    w = sc.add(f"omega{n}", rate, j, x, J, X, mu_v, role=Role.MEASUREMENT, unit="rad/s",
+               caption=(f"ω{n} = v{d.X}{d.J}/{JX} = {jx}·μv/{JX} (sense: {jx} carried to {d.X})",
+                        f"ω{n} = v{d.X}{d.J}/l{JX} = {jx}·μv/l{JX}(将 {jx} 移至 {d.X} 点判断转向)"))
+    return lJX, x, w
+
+
+def add_rrp_acceleration(sc: Scene, J: Ref, X: Ref, path: Ref, lJX: Ref, j_: Ref, p2: Ref, w: Ref, mu_a: Ref,
+                         d: RRP = RRP()) -> tuple[Ref, Ref]:
+    """An RRP dyad's acceleration polygon (aX = aJ + aXJⁿ + aXJᵗ): from j′ the normal ωn²·JX towards J to nn, the
+    line through nn ⊥ JX meets the line through p′ ∥ the path at x′; aX read signed along the path and
+    εn = nnx′/JX. Returns (nn, x′)."""
+    JX, XJ, n, j, x = f"{d.J}{d.X}", f"{d.X}{d.J}", d.n, d.j, d.x
+    k = sc.add(f"k_n{n}", normal_length, w, mu_a, visible=False)
+    nn = sc.add(f"n{n}", turned, j_, X, J, k, 0.0, style="point", label=f"n{n}",
+                caption=(f"From {j}′, {j}′n{n} ∥ {XJ}: a{XJ}ⁿ = ω{n}²·{JX}, towards {d.J}",
+                         f"自 {j}′ 作 {j}′n{n} ∥ {XJ}:a{XJ}ⁿ = ω{n}²·l{JX},指向 {d.J}"))
+    tn = sc.add(f"t{n}", perpendicular, lJX, nn, caption=(f"Through n{n}, the direction of a{XJ}ᵗ (⊥ {JX})",
+                                                         f"过 n{n} 作 a{XJ}ᵗ 的方向线(⊥ {JX})"))
+    tp = sc.add(d.poles[1], parallel, path, p2, caption=(f"Through p′, the direction of a{d.X} (∥ {d.path[0]})",
+                                                         f"过 p′ 作 a{d.X} 的方向线(∥ {d.path[1]})"))
+    x_ = sc.add(f"{x}2", meet, tn, tp, style="point", label=f"{x}′", caption=(f"They meet at {x}′", f"两线交于 {x}′"))
+    sc.add(f"a{d.X}", along, p2, x_, path, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
+           caption=(f"Measure a{d.X} = p′{x}′·μa (signed along {d.axis})", f"量得 a{d.X} = p′{x}′·μa(沿 {d.axis} 为正)"))
+    sc.add(f"epsilon{n}", rate, nn, x_, J, X, mu_a, role=Role.MEASUREMENT, unit="rad/s²",
+           caption=(f"ε{n} = a{XJ}ᵗ/{JX} = n{n}{x}′·μa/{JX}", f"ε{n} = a{XJ}ᵗ/l{JX} = n{n}{x}′·μa/l{JX}"))
+    return nn, x_
+
+
+def rrp_vectors(p: Ref, j: Ref, x: Ref, p2: Ref, j_: Ref, nn: Ref, x_: Ref, d: RRP = RRP()) -> tuple[tuple[str, Ref, Ref], ...]:
+    """The arrows of an RRP dyad's polygons."""
+    return ((f"v_p{d.x}", p, x), (f"v_{d.j}{d.x}", j, x), (f"a_{d.j}n{d.n}", j_, nn), (f"a_n{d.n}{d.x}", nn, x_),
+            (f"a_p{d.x}", p2, x_))
+
+
 def four_bar_assembles(g: Any) -> None:
     """Refuse a four-bar that cannot be assembled at its crank angle (BD outside (|BC − CD|, BC + CD)), naming a
     dead point when BC and CD are collinear."""
@@ -254,6 +397,8 @@ def add_image(sc: Scene, key: str, b: Ref, c: Ref, BE: Any, BC: Any, angle: Any,
     return e
 
 
-__all__ = ["EPSILON", "OMEGA", "PHI", "SCALES", "accel_scale", "add_four_bar_at", "add_image", "add_slider_at",
+__all__ = ["EPSILON", "OMEGA", "PHI", "RRP", "SCALES", "accel_scale", "across", "add_guide_acceleration",
+           "add_guide_velocity", "add_rrp_acceleration", "add_rrp_velocity", "coriolis_end", "guide_vectors",
+           "rrp_vectors", "add_four_bar_at", "add_image", "add_slider_at",
            "four_bar_assembles", "slider_assembles", "twin_scales", "add_crank_acceleration", "add_crank_velocity", "along", "crank_pin", "image", "meet", "normal_length", "pole_beside", "rate", "ratio",
            "scaled_length", "turned"]
