@@ -189,7 +189,7 @@ def slotter(AB: float, AC: float, CD: float, DE: float, CF: float, phi: float, o
     t1 = _unit(phi)
     r = AB * t1 + AC                                      # C→B, C at −AC
     s = abs(r)
-    if s == 0.0:
+    if s <= 1e-12 * (AB + AC):
         raise NotAMechanism("B coincides with C: the guide's direction is undefined")
     u = r / s
     q = t1 * u.conjugate()                                # the crank's direction in the guide's frame

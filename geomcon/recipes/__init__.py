@@ -51,6 +51,7 @@ _WHERE: dict[str, tuple[str, str]] = {
     "guide_bar.kinematics": ("slider_kinematics", "GUIDE"),
     "four_bar.instant_centres": ("instant_centres", "FOUR"),
     "crank_slider.instant_centres": ("instant_centres", "SLIDER"),
+    "slotter.kinematics": ("slotter_kinematics", "RECIPE"),
 }
 """Public recipe name → (module of :mod:`geomcon.recipes`, attribute holding its :class:`Recipe`)."""
 
