@@ -10,7 +10,7 @@ import math
 
 import pytest
 
-from geomcon.analytic.kinematics import four_bar, guide_bar
+from geomcon.analytic.kinematics import four_bar, guide_bar, slotter
 from geomcon.grading import grade
 from geomcon.grading.answers import read_answers
 from geomcon.grading.keyfile import key_from_problem
@@ -75,3 +75,31 @@ def test_instant_centre_ratio_inverted():
     assert (a["w3_w1"]["diagnosis"], b["i13"]["diagnosis"]) == ("ratio_inverted", "ratio_inverted")
     both = _graded("400-04_four_bar_instant_centres.toml", ["w3_w1", "i13"], [[1 / w3, w3]])["rows"][0]["answers"]
     assert both["w3_w1"]["diagnosis"] in ("ratio_inverted", "swapped") and both["w3_w1"]["verdict"] == "wrong"
+
+
+def _ram_aE(r: dict, DE: float, aD: complex) -> float:
+    """The ram's acceleration closed from D's acceleration ``aD``: aE = aD + (iε4 − ω4²)·DE·t4, vertical."""
+    t4 = cmath.exp(1j * math.radians(r["theta4"]))
+    rest = aD - r["omega4"] ** 2 * DE * t4
+    e4 = rest.real / (DE * t4.imag)
+    return rest.imag + e4 * DE * t4.real
+
+
+def test_slotter_mistakes():
+    """At 000-03's position: the Coriolis term left out or reversed (ε3), the guide's normal ω3²·CB left out (the
+    slip's acceleration loses it), D's image d′ on b3′'s side (aD reversed, the ram's polygon closed on it)."""
+    g = load_problem(ROOT / "problems/000-03_slotter_velocity_polygons.toml").given
+    r = slotter(g["AB"], g["AC"], g["CD"], g["DE"], g["CF"], g["phi"], g["omega"], g["epsilon"], g["branch"])
+    aD = complex(r["aDx"], r["aDy"])
+    assert math.isclose(_ram_aE(r, g["DE"], aD), r["aE"], rel_tol=1e-12)
+    shift = 2 * r["omega3"] * r["v_slip"] / r["CB"]
+    data = _graded("000-03_slotter_velocity_polygons.toml", ["epsilon3", "a_slip", "aE"],
+                   [[r["epsilon3"], r["a_slip"], r["aE"]],
+                    [r["epsilon3"] + shift, r["a_slip"] - r["CB"] * r["omega3"] ** 2, _ram_aE(r, g["DE"], -aD)],
+                    [r["epsilon3"] + 2 * shift, r["a_slip"], r["aE"]]])
+    right, wrong, other = (row["answers"] for row in data["rows"])
+    assert right["epsilon3"]["verdict"] == right["a_slip"]["verdict"] == right["aE"]["verdict"] == "correct"
+    assert (wrong["epsilon3"]["verdict"], wrong["epsilon3"]["diagnosis"]) == ("wrong", "coriolis_omitted")
+    assert (wrong["a_slip"]["verdict"], wrong["a_slip"]["diagnosis"]) == ("wrong", "normal_omitted")
+    assert (wrong["aE"]["verdict"], wrong["aE"]["diagnosis"]) == ("wrong", "image_same_side")
+    assert (other["epsilon3"]["verdict"], other["epsilon3"]["diagnosis"]) == ("wrong", "coriolis_direction")

@@ -178,7 +178,8 @@ def slotter(AB: float, AC: float, CD: float, DE: float, CF: float, phi: float, o
     dict
         ``omega3``, ``epsilon3`` (the guide bar), ``v_slip``, ``a_slip``, ``a_coriolis`` (the block B2 relative to
         the guide, as :func:`guide_bar`), ``vB3`` (speed of the guide's point at B), ``vD``, ``aD`` (magnitudes),
-        ``omega4``, ``epsilon4`` (the coupler DE), ``vE``, ``aE`` (the ram, signed along +y), ``yE``.
+        ``omega4``, ``epsilon4`` (the coupler DE), ``vE``, ``aE`` (the ram, signed along +y), ``yE``, and D's
+        components ``vDx``, ``vDy``, ``aDx``, ``aDy``.
 
     Examples
     --------
@@ -218,7 +219,7 @@ def slotter(AB: float, AC: float, CD: float, DE: float, CF: float, phi: float, o
     return {"theta3": math.degrees(cmath.phase(u)), "omega3": w3, "epsilon3": e3, "v_slip": slip, "a_slip": a_slip,
             "a_coriolis": cor, "CB": s, "vB3": abs(w3) * s, "vD": abs(vD), "aD": abs(aD),
             "theta4": math.degrees(cmath.phase(t4)), "omega4": w4, "epsilon4": e4, "vE": vE, "aE": aE,
-            "yE": D.imag + dy}
+            "yE": D.imag + dy, "vDx": vD.real, "vDy": vD.imag, "aDx": aD.real, "aDy": aD.imag}
 
 
 def four_bar_instant_centres(AB: float, BC: float, CD: float, AD: float, phi: float,

@@ -172,6 +172,54 @@ def guide_bar_kinematics(rng: random.Random) -> ValidCase:
     return ValidCase({"recipe": "guide_bar.kinematics", "given": g}, _expect(vals, scales), kind)
 
 
+def _slotter_at(g: dict[str, Any], p: Any) -> tuple[Any, Any, Any, Any, Any]:
+    """The slotter at the crank angle ``p`` (rad) by atan2 and Pythagoras only: the guide bar's angle, CB, D's
+    coordinates, the coupler's angle and the ram's height."""
+    m = _m()
+    bx, by = g["AB"] * m.cos(p) + g["AC"], g["AB"] * m.sin(p)
+    th3 = m.atan2(by, bx)
+    dx, dy = -g["AC"] - g["CD"] * m.cos(th3), -g["CD"] * m.sin(th3)
+    h = -(g["AC"] + g["CF"]) - dx
+    up = m.sqrt(g["DE"] ** 2 - h * h) * (1 if g["branch"] == "above" else -1)
+    return th3, m.hypot(bx, by), (dx, dy), m.atan2(up, h), dy + up
+
+
+def slotter_kinematics(rng: random.Random) -> ValidCase:
+    S, kind = _scale(rng)
+    while True:
+        AB, AC, CD, DE = (rng.uniform(10, 200) * S for _ in range(4))
+        phi = rng.uniform(-180, 360)
+        a = math.radians(phi)
+        bx, by = AB * math.cos(a) + AC, AB * math.sin(a)
+        if math.hypot(bx, by) > 0.1 * AC:
+            break
+    reach = 0.9 if rng.random() < 0.9 else 0.999
+    if reach > 0.9:
+        kind = "near-degenerate: the coupler nearly perpendicular to the ram's path"
+    CF = CD * bx / math.hypot(bx, by) + rng.choice((-1, 1)) * rng.uniform(0, reach) * DE
+    w, e = _motion(rng)
+    g = {"AB": AB, "AC": AC, "CD": CD, "DE": DE, "CF": CF, "phi": phi, "omega": w, "epsilon": e,
+         "branch": rng.choice(("above", "below"))}
+    m = _m()
+    ph = _crank(phi, w, e)
+    at = lambda i: (lambda t: _slotter_at(g, ph(t))[i])
+    dx = lambda t: _slotter_at(g, ph(t))[2][0]
+    dy = lambda t: _slotter_at(g, ph(t))[2][1]
+    w3, s1 = _d(at(0), 1), _d(at(1), 1)
+    vals = {"omega3": w3, "epsilon3": _d(at(0), 2), "v_slip": s1, "a_slip": _d(at(1), 2), "a_coriolis": 2 * w3 * s1,
+            "vB3": abs(w3) * _slotter_at(g, ph(0))[1], "vD": m.hypot(_d(dx, 1), _d(dy, 1)),
+            "aD": m.hypot(_d(dx, 2), _d(dy, 2)), "omega4": _d(at(3), 1), "epsilon4": _d(at(3), 2),
+            "vE": _d(at(4), 1), "aE": _d(at(4), 2)}
+    lever = 1 + AB / math.hypot(bx, by)
+    steep = 1 / math.sqrt(1 - reach ** 2)
+    wsc, asc = abs(w) * lever, (w * w + abs(e)) * lever * lever
+    L = AB + CD
+    scales = {"omega3": wsc, "epsilon3": asc, "v_slip": wsc * L, "a_slip": asc * L, "a_coriolis": asc * L,
+              "vB3": wsc * L, "vD": wsc * L, "aD": asc * L, "omega4": wsc * steep * L / DE,
+              "epsilon4": asc * steep ** 3 * L / DE, "vE": wsc * steep * L, "aE": asc * steep ** 3 * L}
+    return ValidCase({"recipe": "slotter.kinematics", "given": g}, _expect(vals, scales), kind)
+
+
 def four_bar_instant_centres(rng: random.Random) -> ValidCase:
     S, kind = _scale(rng)
     g, k2 = _fourbar_links(rng, S)
@@ -214,6 +262,7 @@ GENERATORS: dict[str, Generator] = {name: _ranged(gen) for name, gen in (
     ("four_bar.kinematics", four_bar_kinematics),
     ("crank_slider.kinematics", crank_slider_kinematics),
     ("guide_bar.kinematics", guide_bar_kinematics),
+    ("slotter.kinematics", slotter_kinematics),
     ("four_bar.instant_centres", four_bar_instant_centres),
     ("crank_slider.instant_centres", crank_slider_instant_centres),
 )}

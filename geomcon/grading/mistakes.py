@@ -92,9 +92,15 @@ def coriolis_left_out(b2: Any, b3: Any, b2_: Any, *_: Any) -> Any:
 
 def coriolis_reversed(b2: Any, b3: Any, b2_: Any, w3: float, mu_v: float, mu_a: float) -> Any:
     """The Coriolis component laid off against the sense of ω3."""
-    from ..recipes.slider_kinematics import coriolis_end
+    from ..recipes.kinematics_common import coriolis_end
     k = coriolis_end(b2, b3, b2_, w3, mu_v, mu_a)
     return b2_ * 2.0 - k
+
+
+def image_same_side(pole: Any, q: Any, C: Any, B: Any, D: Any) -> Any:
+    """D's image laid off on the same side of the pole as B's (the arm's reversal about C forgotten)."""
+    from ..recipes.slotter_kinematics import arm_image
+    return pole * 2.0 - arm_image(pole, q, C, B, D)
 
 
 def ratio_upside_down(P: Any, fixed1: Any, fixed2: Any) -> float:
@@ -224,6 +230,22 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
                 "哥氏加速度的方向画反了(未按 ω3 转向转 90°)", step="k", op=coriolis_reversed),
         Mistake("normal_omitted", "op", "the normal component ω3²·CB of B3 left out", "漏掉了 B3 点的法向加速度 ω3²·lCB",
                 step="k_n3", op=left_out),
+        Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
+                given={"omega": _negated}),
+    ),
+    "slotter.kinematics": (
+        Mistake("coriolis_omitted", "op", "the Coriolis component 2ω3·vB3B2 left out", "漏掉了哥氏加速度 2ω3·vB3B2",
+                step="k", op=coriolis_left_out),
+        Mistake("coriolis_direction", "op", "the Coriolis component laid off against the sense of ω3",
+                "哥氏加速度的方向画反了(未按 ω3 转向转 90°)", step="k", op=coriolis_reversed),
+        Mistake("normal_omitted", "op", "the normal component ω3²·CB of B3 left out", "漏掉了 B3 点的法向加速度 ω3²·lCB",
+                step="k_n3", op=left_out),
+        Mistake("normal_omitted", "op", "the normal component ω4²·DE of E relative to D left out",
+                "漏掉了 E 相对 D 的法向加速度 ω4²·lDE", step="k_n4", op=left_out),
+        Mistake("image_same_side", "op", "D's image d laid off on b3's side of p (D lies beyond C, opposite B)",
+                "D 的速度影像 d 取在了 b3 一侧(D 与 B 分居 C 两侧)", step="d", op=image_same_side),
+        Mistake("image_same_side", "op", "D's image d′ laid off on b3′'s side of p′ (D lies beyond C, opposite B)",
+                "D 的加速度影像 d′ 取在了 b3′ 一侧(D 与 B 分居 C 两侧)", step="d2", op=image_same_side),
         Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
                 given={"omega": _negated}),
     ),

@@ -130,8 +130,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     kD = sc.add("kD", circle, D, DE, caption=(f"Circle about D with radius DE = {DE:g}", f"以 D 为圆心、DE = {DE:g} 为半径作圆"))
     side = Above(C, A) if above else Below(C, A)
     E = sc.add("E", line_circle, path, kD, branch=side, style="joint", label="E",
-               caption=(f"It meets the path at the ram E ({'above' if above else 'below'} D)",
-                        f"交导路于滑枕 E(在 D {'上' if above else '下'}方)"))
+               caption=("It meets the path at the ram E", "交导路于滑枕 E"))
     drawing = sc.drawing
     if drawing:
         add_bar(sc, "AB", A, B, ("Draw the crank AB, the guide bar DCB, the coupler DE and the ram",

@@ -165,6 +165,11 @@ NAMES: dict[str, AnswerName] = {
     "v_slip": _n("vB2B3", "velocity of B2 along the guide", "B2 相对导杆的速度"),
     "a_slip": _n("arB2B3", "relative acceleration of B2 along the guide", "B2 相对导杆的加速度"),
     "a_coriolis": _n("akB2B3", "Coriolis acceleration", "科氏加速度"),
+    "vB3": _n("vB3", "velocity of the guide's point under the block", "导杆上与滑块重合点的速度"),
+    "vD": _n("vD", "velocity of D", "D 点速度"),
+    "aD": _n("aD", "acceleration of D", "D 点加速度"),
+    "omega4": _n("ω4", "angular velocity of link 4 (coupler DE)", "构件 4(连杆 DE)的角速度"),
+    "epsilon4": _n("ε4", "angular acceleration of link 4 (coupler DE)", "构件 4(连杆 DE)的角加速度"),
     # instant centres
     "P13": _n("P13", "instant centre of crank and rocker", "曲柄与摇杆的瞬心"),
     "P24": _n("P24", "instant centre of coupler and frame", "连杆与机架的瞬心"),

@@ -49,6 +49,7 @@ LAWS = {"uniform": ("uniform velocity", "等速运动"), "parabolic": ("constant
         "poly": ("polynomial", "多项式运动"), "table": ("tabulated", "列表给定的运动")}
 FOLLOWERS = {"knife": ("knife-edge", "尖顶"), "roller": ("roller", "滚子"), "flat": ("flat-faced", "平底")}
 ROTATION = {"ccw": ("counter-clockwise", "逆时针"), "cw": ("clockwise", "顺时针")}
+SIDES = {"above": ("above", "上方"), "below": ("below", "下方")}
 
 
 def number(x: Any) -> str:
@@ -128,6 +129,8 @@ def shown_givens(recipe: str, given: Mapping[str, Any], lang: str) -> dict[str, 
             out[name] = FOLLOWERS.get(v, (str(v), str(v)))[k]
         elif name == "rotation":
             out[name] = ROTATION.get(v, (str(v), str(v)))[k]
+        elif name == "branch":
+            out[name] = SIDES.get(v, (str(v), str(v)))[k]
         elif isinstance(v, (list, tuple)):
             out[name] = ", ".join(number(x) for x in v)
         elif isinstance(v, str):
@@ -314,6 +317,17 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "角速度 ω = {omega} rad/s,角加速度 ε = {epsilon} rad/s²(均以逆时针为正)。试作速度多边形和加速度多边形"
              "(含哥氏加速度)。"),
     },
+    "slotter.kinematics": {
+        "": ("In the slotting machine the crank AB = {AB} mm turns about A; its block B slides on the guide bar, which "
+             "turns about C, AC = {AC} mm to the left of A; the guide bar's arm CD = {CD} mm lies beyond C, and the "
+             "coupler DE = {DE} mm drives the ram E on a vertical path CF = {CF} mm beyond C, E {branch} D. The crank "
+             "stands at φ = {phi}° from +x and turns counter-clockwise positive at ω = {omega} rad/s with "
+             "ε = {epsilon} rad/s². Draw the velocity and acceleration polygons, the Coriolis component included.",
+             "插床机构中,曲柄 AB = {AB} mm 绕 A 转动,其上滑块 B 在导杆上滑动,导杆绕 C 摆动,C 在 A 左侧 AC = {AC} mm;"
+             "导杆在 C 另一侧的臂长 CD = {CD} mm,连杆 DE = {DE} mm 带动滑枕 E 沿铅垂导路运动,导路在 C 外侧 CF = {CF} mm,"
+             "E 在 D {branch}。曲柄转角 φ = {phi}°(自 +x 量起),角速度 ω = {omega} rad/s,角加速度 ε = {epsilon} rad/s²"
+             "(均以逆时针为正)。试作速度多边形和加速度多边形(含哥氏加速度)。"),
+    },
     "four_bar.instant_centres": {
         "": ("In the four-bar ABCD the crank is AB = {AB} mm, the coupler BC = {BC} mm, the rocker CD = {CD} mm and the "
              "frame AD = {AD} mm; the crank stands at φ = {phi}° from AD. Find all the instant centres (Kennedy's "
@@ -466,6 +480,10 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "v_slip": ("the block's sliding velocity along the guide", "滑块沿导杆的相对速度"),
     "a_slip": ("the block's relative acceleration along the guide", "滑块沿导杆的相对加速度"),
     "a_coriolis": ("the Coriolis acceleration", "哥氏加速度"),
+    "vB3": ("the velocity of the guide bar's point B3 under the block", "导杆上与滑块重合点 B3 的速度"),
+    "vD": ("the velocity of D", "D 点的速度 vD"), "aD": ("the acceleration of D", "D 点的加速度 aD"),
+    "omega4": ("the coupler DE's angular velocity ω4", "连杆 DE 的角速度 ω4"),
+    "epsilon4": ("the coupler DE's angular acceleration ε4", "连杆 DE 的角加速度 ε4"),
     "w3_w1": ("the ratio ω3/ω1", "角速度比 ω3/ω1"), "w2_w1": ("the ratio ω2/ω1", "角速度比 ω2/ω1"),
     "i13": ("the transmission ratio i13", "传动比 i13"),
     "vC_w1": ("the slider's velocity per unit crank speed vC/ω1", "滑块速度与曲柄角速度之比 vC/ω1"),
