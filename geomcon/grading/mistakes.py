@@ -137,6 +137,18 @@ def floor_added(rho_allow: float, floor: tuple) -> float:
     return rho_allow + floor[0]
 
 
+_GUIDE_POLYGONS = (
+    Mistake("coriolis_omitted", "op", "the Coriolis component 2ω3·vB3B2 left out", "漏掉了哥氏加速度 2ω3·vB3B2",
+            step="k", op=coriolis_left_out),
+    Mistake("coriolis_direction", "op", "the Coriolis component laid off against the sense of ω3",
+            "哥氏加速度的方向画反了(未按 ω3 转向转 90°)", step="k", op=coriolis_reversed),
+    Mistake("normal_omitted", "op", "the normal component ω3²·CB of B3 left out", "漏掉了 B3 点的法向加速度 ω3²·lCB",
+            step="k_n3", op=left_out),
+)
+"""The guide bar's polygon mistakes (``guide_bar.kinematics`` and the slotter's guide part: the same steps)."""
+_GUIDE_CRANK = Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
+                       given={"omega": _negated})
+
 _SPEEDS = (
     Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
             step="speeds_at", op=accel_times_omega),
@@ -223,31 +235,15 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
         Mistake("crank_reversed", "given", "vB laid off against the sense of ω", "vB 的方向与 ω 转向相反",
                 given={"omega": _negated}),
     ),
-    "guide_bar.kinematics": (
-        Mistake("coriolis_omitted", "op", "the Coriolis component 2ω3·vB3B2 left out", "漏掉了哥氏加速度 2ω3·vB3B2",
-                step="k", op=coriolis_left_out),
-        Mistake("coriolis_direction", "op", "the Coriolis component laid off against the sense of ω3",
-                "哥氏加速度的方向画反了(未按 ω3 转向转 90°)", step="k", op=coriolis_reversed),
-        Mistake("normal_omitted", "op", "the normal component ω3²·CB of B3 left out", "漏掉了 B3 点的法向加速度 ω3²·lCB",
-                step="k_n3", op=left_out),
-        Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
-                given={"omega": _negated}),
-    ),
-    "slotter.kinematics": (
-        Mistake("coriolis_omitted", "op", "the Coriolis component 2ω3·vB3B2 left out", "漏掉了哥氏加速度 2ω3·vB3B2",
-                step="k", op=coriolis_left_out),
-        Mistake("coriolis_direction", "op", "the Coriolis component laid off against the sense of ω3",
-                "哥氏加速度的方向画反了(未按 ω3 转向转 90°)", step="k", op=coriolis_reversed),
-        Mistake("normal_omitted", "op", "the normal component ω3²·CB of B3 left out", "漏掉了 B3 点的法向加速度 ω3²·lCB",
-                step="k_n3", op=left_out),
+    "guide_bar.kinematics": _GUIDE_POLYGONS + (_GUIDE_CRANK,),
+    "slotter.kinematics": _GUIDE_POLYGONS + (
         Mistake("normal_omitted", "op", "the normal component ω4²·DE of E relative to D left out",
                 "漏掉了 E 相对 D 的法向加速度 ω4²·lDE", step="k_n4", op=left_out),
         Mistake("image_same_side", "op", "D's image d laid off on b3's side of p (D lies beyond C, opposite B)",
                 "D 的速度影像 d 取在了 b3 一侧(D 与 B 分居 C 两侧)", step="d", op=image_same_side),
         Mistake("image_same_side", "op", "D's image d′ laid off on b3′'s side of p′ (D lies beyond C, opposite B)",
                 "D 的加速度影像 d′ 取在了 b3′ 一侧(D 与 B 分居 C 两侧)", step="d2", op=image_same_side),
-        Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
-                given={"omega": _negated}),
+        _GUIDE_CRANK,
     ),
     "four_bar.analysis": (
         _K_INV,

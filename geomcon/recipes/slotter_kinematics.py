@@ -29,6 +29,7 @@ from ..scene.marks import vector
 from .base import Construction, Quantity, Recipe
 from .common import add_bar, add_pivot
 from .guide_bar import _block_along
+from .slider_kinematics import _gap, _omega
 from .kinematics_common import (EPSILON, OMEGA, PHI, RRP, SCALES, add_guide_acceleration, add_guide_velocity,
                                 add_rrp_acceleration, add_rrp_velocity, crank_pin, guide_vectors, rrp_vectors,
                                 scaled_length, twin_scales)
@@ -82,8 +83,7 @@ def arm_end(g: Mapping[str, Any]) -> tuple[float, float]:
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
-    if g["omega"] == 0:
-        raise NotAMechanism("omega = 0: the crank does not turn, the polygons have no scale")
+    _omega(g)
     _, h = arm_end(g)
     if abs(h) >= g["DE"]:
         raise NotAMechanism(f"at phi = {g['phi']:g}° D is {abs(h):.6g} from the ram's path, not less than "
@@ -102,11 +102,6 @@ def arm_image(pole: Point, q: Point, C: Point, B: Point, D: Point) -> Point:
     bx, by = B.x - C.x, B.y - C.y
     k = ((D.x - C.x) * bx + (D.y - C.y) * by) / (bx * bx + by * by)
     return Point(pole.x + k * (q.x - pole.x), pole.y + k * (q.y - pole.y))
-
-
-def _gap(*lengths: Any) -> Any:
-    """Free space between the linkage and a polygon, with room for the crank's side (as long as AB) pointing back."""
-    return sum(lengths) / 6.0 + lengths[0]
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
