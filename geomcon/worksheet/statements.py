@@ -489,8 +489,13 @@ def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: s
 
     >>> answer_words("s", 1, {"at": [30, 60]}, "en"), answer_words("alpha", 0, {"at": [30]}, "zh")
     ('the displacement s at δ = 60°', 'δ = 30° 时的压力角 α')
+    >>> answer_words("boundaries", 1, {"AB": 160}, "en")
+    'the 2nd length (from the shortest) at which the type changes'
     """
     k = 1 if lang == "zh" else 0
+    if index is not None and name == "boundaries":
+        return (f"the {_ordinal(index + 1)} length (from the shortest) at which the type changes",
+                f"从小到大第 {index + 1} 个类型改变处的杆长")[k]
     if index is not None:
         at = given.get("at") or ()
         where = f"δ = {number(at[index])}°" if index < len(at) else f"[{index}]"
@@ -503,6 +508,16 @@ def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: s
             return (f"{en} at {where}", f"{where} 时的{zh}")[k]
         return f"{name} ({where})"
     return ANSWER_WORDS.get(name, (name, name))[k]
+
+
+def _ordinal(n: int) -> str:
+    """1st, 2nd, 3rd, 4th … 11th, 12th, 13th, 21st.
+
+    >>> [_ordinal(n) for n in (1, 2, 3, 4, 11, 12, 13, 21)]
+    ['1st', '2nd', '3rd', '4th', '11th', '12th', '13th', '21st']
+    """
+    suffix = "th" if 10 <= n % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix}"
 
 
 def find_sentence(words: list[str], lang: str) -> str:
