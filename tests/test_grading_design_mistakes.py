@@ -138,3 +138,29 @@ def test_slotter_closing_mistakes(tmp_path, closing):
     assert got[0] == {c: ("correct", "") for c in cols}
     assert got[1] == {ask: ("wrong", "stroke_angle"), "CD": ("wrong", "arm_full_stroke"),
                       "theta": ("wrong", "theta_crank_angle")}
+
+
+# ---------------------------------------------------------------------------------------- crank_rocker.design_by_K, C1_C2
+def test_c1_c2_exchanged_is_diagnosed():
+    """Issue 13 left ``C1_C2`` (the given extreme position taken as the extended one) declared but produced by
+    no test. It occurs wherever the data fix C1 and the design still has both readings: the frame form
+    (001-15: K 1.5, CD 75, AD 100, ∠ADC1 45°). Closed form: A at the origin, D at (AD, 0), C1 at 45° above
+    the frame from D; C2 on the rocker circle on the ray from A at θ to AC1 (t² − 2t·AD·cos β + AD² − CD² = 0);
+    AB = |AC2 − AC1|/2, BC = (AC1 + AC2)/2. The textbook's C1 is the folded position (AC1 < AC2); the other
+    root has AC1 > AC2: C1 taken as the extended position."""
+    K, CD, AD, phi = 1.5, 75.0, 100.0, 45.0
+    th = theta_from_k(K)
+    c1 = (AD - CD * math.cos(math.radians(phi)), CD * math.sin(math.radians(phi)))
+    ac1, b1 = math.hypot(*c1), math.atan2(c1[1], c1[0])
+    designs = {}
+    for s in (1, -1):
+        b = b1 + s * math.radians(th)
+        p = AD * math.cos(b)
+        q = p * p - (AD * AD - CD * CD)
+        for t in ((p - math.sqrt(q), p + math.sqrt(q)) if q >= 0 else ()):
+            if t > 0:
+                designs[ac1 < t] = (abs(t - ac1) / 2, (t + ac1) / 2)
+    key = key_from_problem("problems/001-15_crank_rocker_frame_and_position.toml")
+    got = verdicts(key, ["AB", "BC"], [list(designs[True]), list(designs[False])])
+    assert got[0] == {"AB": ("correct", ""), "BC": ("correct", "")}
+    assert got[1] == {"AB": ("wrong", "C1_C2"), "BC": ("wrong", "C1_C2")}
