@@ -200,6 +200,19 @@ def along_doubled(c: Any, b: Any, d: float) -> Any:
     return point_along(c, b, 2.0 * d)
 
 
+def not_halved(x: float, k: float) -> float:
+    """θ/2 taken as θ: the extreme positions of a guide bar drawn at ±θ to CA (ψ = θ, each half θ/2)."""
+    return x
+
+
+def mirrored_about_first(v: Any) -> Any:
+    """Angles turned the other way from the first: ψi → 2ψ1 − ψi (the inversion made in the wrong sense: the
+    points turned through +(ψi − ψ1) where the method turns them through −(ψi − ψ1))."""
+    if not isinstance(v, (list, tuple)) or not v:
+        return v
+    return type(v)(2.0 * float(v[0]) - float(x) for x in v)
+
+
 _SPEEDS = (
     Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
             step="speeds_at", op=accel_times_omega),
@@ -273,11 +286,44 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
         Mistake("arm_full_stroke", "op", "the arm CD taken as the whole stroke S instead of S/2",
                 "导杆臂长 CD 取成了整个行程 S(应为 S/2)", step="D1", op=along_doubled),
     ),
+    "crank_slider.design_by_K": (
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, step="compl", op=theta_not_complement),
+    ),
+    "crank_slider.best_by_K": (
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, step="compl", op=theta_not_complement),
+    ),
+    "guide_bar.design_by_K": (
+        Mistake("theta_not_halved", "op", "the extreme positions drawn at ±θ to CA instead of ±θ/2 (ψ = θ in all)",
+                "导杆两极限位置与 CA 的夹角取成了 ±θ(应为 ±θ/2,ψ = θ)", step="half", op=not_halved),
+    ),
+    "shaper.design_by_K": (
+        Mistake("theta_not_halved", "op", "the extreme positions drawn at ±θ to CA instead of ±θ/2 (ψ = θ in all)",
+                "导杆两极限位置与 CA 的夹角取成了 ±θ(应为 ±θ/2,ψ = θ)", step="half", op=not_halved),
+    ),
+    "four_bar.function_generation": (
+        Mistake("inversion_direction", "given", "the points turned the wrong way about D in the inversion (+Δψ for −Δψ)",
+                "反转时各点绕 D 的转向弄反了(应转 −Δψ)", given={"psi": mirrored_about_first}),
+    ),
+    "rocker_slider.three_positions": (
+        Mistake("inversion_direction", "given", "the points turned the wrong way about D in the inversion (+Δψ for −Δψ)",
+                "反转时各点绕 D 的转向弄反了(应转 −Δψ)", given={"psi": mirrored_about_first}),
+    ),
+    "rocker_slider.two_positions": (
+        Mistake("inversion_direction", "given", "the point turned the wrong way about D in the inversion (+Δψ for −Δψ)",
+                "反转时该点绕 D 的转向弄反了(应转 −Δψ)", given={"psi": mirrored_about_first}),
+    ),
+    "crank_slider.instant_centres": (
+        Mistake("ratio_inverted", "op", "ω1/ω2 given for ω2/ω1 (P24P12/P14P12)", "把 ω1/ω2 当作了 ω2/ω1",
+                step="w2_w1", op=ratio_upside_down),
+        Mistake("wrong_centre", "rewire", "vC/ω1 read at P24 (the rod's centre) instead of P13 (the crank's and the slider's)",
+                "vC/ω1 取在了 P24(连杆的绝对瞬心)处,应取 P13(曲柄与滑块的相对瞬心)", step="vC_w1", old="P13", new="P24"),
+    ),
     "crank_rocker.design_by_K": (
         Mistake("C1_C2", "candidate", "C1 and C2 exchanged (C1 taken as the extended position)",
                 "C1 与 C2 弄反了(把拉直共线位置当作 C1)", flag="C1_folded"),
         Mistake("far_theta_circle", "candidate", "A taken on the far arc of the θ-circle",
                 "A 取在了 θ 圆的另一段圆弧上", flag="A_near"),
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, steps=("ncompl", "fcompl"), op=theta_not_complement),
     ),
     "cam.translating": (
         Mistake("pitch_vs_actual", "read", *_PITCH, answer="rho_min_actual", step="rho_min_pitch"),
@@ -350,9 +396,22 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
                 step="w3_w1", op=ratio_upside_down),
         Mistake("ratio_inverted", "read", "ω3/ω1 given for the transmission ratio i13 = ω1/ω3", "把 ω3/ω1 当作了传动比 i13",
                 answer="i13", step="w3_w1"),
+        Mistake("ratio_inverted", "op", "ω1/ω2 given for ω2/ω1 (P24P12/P14P12)", "把 ω1/ω2 当作了 ω2/ω1",
+                step="w2_w1", op=ratio_upside_down),
     ),
 }
 """Recipe name → its declared mistakes (recipes of later issues add their entries here)."""
+
+NONE_DECLARED: dict[str, str] = {
+    "four_bar.three_positions": (
+        "A and D are the circumcentres of B1B2B3 and C1C2C3: any two of the three perpendicular bisectors give the "
+        "same point, and no step has a branch, so a wrong pivot is a drafting error or A and D exchanged (swapped)"),
+    "four_bar.three_positions_fixed_pivots": (
+        "the inversion maps D into the coupler's first position by each position's rigid motion; turned the wrong "
+        "way it is not the design of any changed givens, so it cannot be replayed as a given; a wrong C1 is a "
+        "drafting error or one of the shared codes (swapped, scale, sign)"),
+}
+"""Recipes that declare no mistake of their own, and why (the shared codes still apply to them)."""
 
 
 def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
@@ -360,6 +419,6 @@ def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
     return MISTAKES.get(recipe, ())
 
 
-__all__ = ["KINDS", "MISTAKES", "Mistake", "accel_times_omega", "along_doubled", "grashof_as_crank", "half_theta_turn",
+__all__ = ["KINDS", "MISTAKES", "NONE_DECLARED", "Mistake", "mirrored_about_first", "not_halved", "accel_times_omega", "along_doubled", "grashof_as_crank", "half_theta_turn",
            "larger_frame_gamma", "longest_case_forgotten", "offset_added_twice", "theta_not_complement", "floor_added", "rise_only", "rpm_as_rad_s", "coriolis_left_out", "coriolis_reversed", "k_inverted", "largest_of",
            "left_out", "mistakes_of", "ratio_upside_down"]
