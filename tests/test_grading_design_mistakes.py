@@ -164,3 +164,38 @@ def test_c1_c2_exchanged_is_diagnosed():
     got = verdicts(key, ["AB", "BC"], [list(designs[True]), list(designs[False])])
     assert got[0] == {"AB": ("correct", ""), "BC": ("correct", "")}
     assert got[1] == {"AB": ("wrong", "C1_C2"), "BC": ("wrong", "C1_C2")}
+
+
+# ---------------------------------------------------------------------------------------- the gaps test_recipes_complete found
+def test_guide_bar_design_theta_not_halved():
+    """001-05b (K 2, AC 290): the extreme positions at ±θ/2 to CA give AB = AC·sin(θ/2) = 145; drawn at ±θ,
+    AB = AC·sin θ."""
+    th = math.radians(theta_from_k(2.0))
+    key = key_from_problem("problems/001-05b_guide_bar_design_by_K.toml")
+    got = verdicts(key, ["AB"], [[290 * math.sin(th / 2)], [290 * math.sin(th)]])
+    assert got == [{"AB": ("correct", "")}, {"AB": ("wrong", "theta_not_halved")}]
+
+
+def test_function_generation_inversion_direction():
+    """100-05: the points turned the wrong way about D are the design of ψ mirrored about ψ1 (2ψ1 − ψi): the
+    twin run on those angles."""
+    from geomcon.analytic.function_generation import function_generation
+    phi, psi = [40, 90, 140], [92.16, 105.09, 125.96]
+    right = function_generation(100, 30, phi, psi)
+    wrong = function_generation(100, 30, phi, [2 * psi[0] - p for p in psi])
+    key = key_from_problem("problems/100-05_four_bar_function_generation.toml")
+    got = verdicts(key, ["BC", "CD"], [[right["BC"], right["CD"]], [wrong["BC"], wrong["CD"]]])
+    assert got == [{"BC": ("correct", ""), "CD": ("correct", "")},
+                   {"BC": ("wrong", "inversion_direction"), "CD": ("wrong", "inversion_direction")}]
+
+
+def test_crank_slider_instant_centre_mistakes():
+    """400-05 (AB 120, BC 250, e 60, φ 30°): ω2/ω1 from the vector loop, inverted ω1/ω2; vC/ω1 read at P24,
+    where AB extended meets the perpendicular to the guide through C: P24 = (xC, xC·tan φ), so −xC·tan φ."""
+    from geomcon.analytic.kinematics import crank_slider
+    r = crank_slider(120, 250, 60, 30, 1.0)
+    key = key_from_problem("problems/400-05_crank_slider_instant_centres.toml")
+    got = verdicts(key, ["w2_w1", "vC_w1"], [[r["omega2"], r["vC"]],
+                                             [1 / r["omega2"], -r["xC"] * math.tan(math.radians(30))]])
+    assert got == [{"w2_w1": ("correct", ""), "vC_w1": ("correct", "")},
+                   {"w2_w1": ("wrong", "ratio_inverted"), "vC_w1": ("wrong", "wrong_centre")}]
