@@ -134,3 +134,27 @@ def test_every_answer_has_a_printed_name_and_unit(recipe):
         assert (n.symbol or q.unit == "bool" or q.name in ("C1_folded", "A_near")) and n.en and n.zh, q.name
         unit_text(q.unit)                                    # every unit prints
         assert q.unit in ("", "deg", "bool", "choice") or unit_text(q.unit).strip(), (q.name, q.unit)
+
+
+NOT_A_KEY = {
+    "001-01_crank_rocker_change_point.toml": "a change-point chain: AB ± its drafting error leaves the crank "
+                                             "condition, so the drawing cannot determine the answers",
+    "100-03_four_bar_fixed_pivots_coupler_point.toml": "the givens are tied (B1, B2, B3 at one distance from A): "
+                                                       "A drafted alone leaves the domain",
+    "100-04_four_bar_fixed_pivots_coupler_angles.toml": "as 100-03",
+}
+NO_SCALAR = {"001-02_four_bar_link_ranges.toml": "its answers are lists; a problem file's key grades scalars only "
+                                                 "(a worksheet asks boundaries[i])"}
+
+
+@pytest.mark.parametrize("name", [c[1] for c in CASES])
+def test_every_bundled_problem_is_a_key(name):
+    """``geomcon check PROBLEM.toml``: a cam whose ``at`` was left out (the default ()) was refused, 'given at
+    must be a non-empty list' (200-03, 000-04, 000-08), because the validated default went back into the
+    drafting solves as a given. The exceptions say why."""
+    if name in NOT_A_KEY:
+        with pytest.raises(GeomconError, match="drafting error leaves the domain"):
+            key_from_problem(ROOT / "problems" / name)
+        return
+    key = key_from_problem(ROOT / "problems" / name)
+    assert bool(key.columns) == (name not in NO_SCALAR)
