@@ -241,8 +241,9 @@ def test_statements_name_the_new_forms():
                                                                                   ("en", "zh")))
     assert "c = (0, 2, -1)" in en and "(0.5, 0.4)" in en and "40 mm" in en and "{" not in en
     assert "平底" in zh and "40 mm" in zh and "{" not in zh
-    assert template_form("cam.base_radius", {"h": 20, "alpha_allow": 30}) is None          # unchanged: generic
-    assert template_form("cam.oscillating", {"follower": "roller", "a": 100}) is None
+    # the pressure-angle forms and an arm without ω have statements of their own now (tests/test_recipes_complete.py)
+    assert template_form("cam.base_radius", {"h": 20, "alpha_allow": 30}) == "alpha"
+    assert template_form("cam.oscillating", {"follower": "roller", "a": 100}) == ""
     t = {"follower": "knife", "r0": 40, "h": 20, "omega": 12.5, "program": []}
     assert "ω = {omega} rad/s" in default_template("cam.translating", t)[0]
     assert answer_words("v", 1, {"at": [30, 60]}, "en") == "the follower's velocity v at δ = 60°"

@@ -58,8 +58,8 @@ def test_exactly_one_closing(given):
 
 def test_statements():
     from geomcon.worksheet.statements import default_template, fill, shown_givens, template_form
-    for g, form in ((dict(K=2, H=150, AB=40), "AB"), (dict(K=2, H=150, AC=20), "AC")):
+    # the B1B2 form has a statement of its own too now (tests/test_recipes_complete.py)
+    for g, form in ((dict(K=2, H=150, AB=40), "AB"), (dict(K=2, H=150, AC=20), "AC"), (dict(K=2, H=150, B1B2=60), "B1B2")):
         assert template_form(R, g) == form
         en, zh = (fill(t, shown_givens(R, g, lang)) for t, lang in zip(default_template(R, g), ("en", "zh")))
         assert "{" not in en + zh and all(str(v) in en and str(v) in zh for v in g.values())
-    assert template_form(R, dict(K=2, H=150, B1B2=60)) is None

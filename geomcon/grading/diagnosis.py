@@ -183,7 +183,10 @@ def prepare(ex: ExerciseKey) -> Prepared:
                 got = var.values([src])
                 add(m.code, {var.answers[m.answer]: got[src]}, m.en, m.zh, only=m.answer)
             elif m.kind == "op":
-                add(m.code, var.values(keys, op=(m.step, m.op)), m.en, m.zh, only=m.answer)
+                ks = [steps[a.column] for a in ex.answers if a.column in steps and a.ref.name == m.answer] \
+                    if m.answer else keys
+                if ks:
+                    add(m.code, var.values(ks, op=tuple((s, m.op) for s in m.where())), m.en, m.zh, only=m.answer)
             elif m.kind == "rewire":
                 add(m.code, var.values(keys, rewire=(m.step, m.old, m.new)), m.en, m.zh, only=m.answer)
             elif m.kind == "given":

@@ -224,7 +224,9 @@ def key_from_problem(path: str | Path) -> Key:
         factor = scale.factor
     except ValueError:
         factor = 1.0
-    given = dict(problem.given)
+    # the problem's givens as written: a default filled in by validation (a cam's at = ()) is not a given, and an
+    # empty list would be refused when the drafting tolerance solves the problem again
+    given = {k: v for k, v in problem.given.items() if v != ()}
     tols = tolerances(recipe.name, given, refs, nominal, factor)
     out = []
     for r in refs:

@@ -10,7 +10,8 @@ feedback. Kinds:
     pitch curve's ρmin given for the actual profile's).
 ``op``
     step ``step`` computed by ``op`` instead, with the same arguments (K = (180° − θ)/(180° + θ); the larger
-    transmission angle of the two crank-on-frame positions instead of the smaller).
+    transmission angle of the two crank-on-frame positions instead of the smaller); ``steps`` names several
+    steps made the same wrong way in one replay (both θ-circles, both lines through A).
 ``rewire``
     step ``step`` made from step ``new`` where the recipe uses ``old`` (α taken at the other position).
 ``given``
@@ -53,6 +54,11 @@ class Mistake:
     new: str = ""
     given: Mapping[str, Callable[[Any], Any]] = field(default_factory=dict)
     flag: str = ""
+    steps: tuple[str, ...] = ()
+
+    def where(self) -> tuple[str, ...]:
+        """The steps an ``op`` mistake replaces: ``steps``, else ``step``."""
+        return self.steps or (self.step,)
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -149,6 +155,83 @@ _GUIDE_POLYGONS = (
 _GUIDE_CRANK = Mistake("crank_reversed", "given", "vB2 laid off against the sense of ω", "vB2 的方向与 ω 转向相反",
                        given={"omega": _negated})
 
+
+def theta_not_complement(theta: float, side: int) -> float:
+    """The line from C1 drawn at θ to C1C2 where the θ-circle's construction draws it at 90° − θ (the
+    circle then sees C1C2 under 90° − θ)."""
+    return side * theta
+
+
+def larger_frame_gamma(A: Any, D: Any, P1: Any, P2: Any) -> float:
+    """γmin read at the crank-on-frame position with the larger transmission angle."""
+    from ..recipes.common import frame_gammas
+    return max(frame_gammas(A, D, P1, P2))
+
+
+def _grashof_as_crank(L: Mapping[str, float], frame: str, x: str) -> tuple[str, bool]:
+    """A student's rule: every chain that satisfies Grashof's condition is a crank-rocker (where the shortest
+    link lies not looked at)."""
+    from ..recipes.four_bar_link_ranges import grashof_kind
+    k, gr = grashof_kind(L, frame, x)
+    return (k if k == "immovable" else "crank_rocker" if gr else "double_rocker"), gr
+
+
+def _longest_unchecked(L: Mapping[str, float], frame: str, x: str) -> tuple[str, bool]:
+    """A student's rule: the case 'the unknown link is the longest' not written down, so its Grashof
+    inequality is never checked (the chain typed by its shortest link alone there)."""
+    from ..recipes.four_bar_link_ranges import by_shortest, grashof_kind
+    k, gr = grashof_kind(L, frame, x)
+    if k != "immovable" and not gr and L[x] >= max(v for n, v in L.items() if n != x):
+        return by_shortest(L, frame), True
+    return k, gr
+
+
+def grashof_as_crank(*args: Any) -> tuple[float, ...]:
+    """``four_bar.link_ranges``' boundaries when Grashof's condition alone is taken for a crank-rocker."""
+    from ..recipes.four_bar_link_ranges import boundaries_of
+    return boundaries_of(*args, kind=_grashof_as_crank)
+
+
+def longest_case_forgotten(*args: Any) -> tuple[float, ...]:
+    """``four_bar.link_ranges``' boundaries with the case 'the unknown is the longest link' left out."""
+    from ..recipes.four_bar_link_ranges import boundaries_of
+    return boundaries_of(*args, kind=_longest_unchecked)
+
+
+def offset_added_twice(AB: float, e: float) -> float:
+    """The second parallel through C drawn at AB + e as the first (the offset added on both sides: the
+    extremes taken symmetric about AC). Only where the textbook's second parallel lies on the other side of A
+    (e < AB); for e ≥ AB the student's drawing is not this replay, and the mistake is not offered."""
+    if e >= AB:
+        raise ValueError("e ≥ AB: both parallels lie on one side of A")
+    return AB + e
+
+
+def half_theta_turn(K: float, sign: float) -> float:
+    """The line through A at θ/2 to AC where the stroke's crank angle 180° − θ puts it at 90° − θ/2."""
+    from ..analytic.linkages import theta_from_k
+    return sign * __import__("math").radians(theta_from_k(K) / 2.0)
+
+
+def along_doubled(c: Any, b: Any, d: float) -> Any:
+    """D laid off at twice the distance: the arm CD taken as the whole stroke S instead of S/2."""
+    from ..geometry import point_along
+    return point_along(c, b, 2.0 * d)
+
+
+def not_halved(x: float, k: float) -> float:
+    """θ/2 taken as θ: the extreme positions of a guide bar drawn at ±θ to CA (ψ = θ, each half θ/2)."""
+    return x
+
+
+def mirrored_about_first(v: Any) -> Any:
+    """Angles turned the other way from the first: ψi → 2ψ1 − ψi (the inversion made in the wrong sense: the
+    points turned through +(ψi − ψ1) where the method turns them through −(ψi − ψ1))."""
+    if not isinstance(v, (list, tuple)) or not v:
+        return v
+    return type(v)(2.0 * float(v[0]) - float(x) for x in v)
+
+
 _SPEEDS = (
     Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
             step="speeds_at", op=accel_times_omega),
@@ -165,6 +248,8 @@ _K_INV = Mistake("K_inverted", "op", "K computed upside down, (180° − θ)/(18
                  step="K", op=k_inverted)
 _PITCH = ("the pitch curve's value given for the actual profile (the roller radius not subtracted)",
           "给出的是理论廓线的值(未减去滚子半径)")
+_THETA_LINE = ("the line from C1 drawn at θ to C1C2 instead of at 90° − θ (the circle then sees C1C2 under 90° − θ)",
+               "过 C1 所作直线与 C1C2 成 θ 角而非 90° − θ(所得圆上对 C1C2 的张角为 90° − θ)")
 _TURN = Mistake("inversion_direction", "given", "the follower turned with ω instead of −ω in the inversion",
                 "反转时从动件按 ω 方向而非 −ω 方向转动", given={"rotation": _other_rotation})
 
@@ -188,12 +273,76 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
                 "the transmission angle taken with the crank perpendicular to the guide on the near side",
                 "传动角取在了曲柄垂直于导路的另一位置(靠近导路一侧)", step="gamma_min", old="alpha_3", new="alpha_4"),
     ),
-    "guide_bar.extremes": (_K_INV,),
+    "guide_bar.extremes": (
+        _K_INV,
+        Mistake("offset_forgotten", "given", "the offset e of the guide left out (sin(ψ/2) = AB/AC, H = 2·L·AB/AC)",
+                "忽略了导路的偏距 e(按 sin(ψ/2) = AB/AC、H = 2·L·AB/AC 计算)", given={"e": lambda v: 0.0 if v else v}),
+        Mistake("offset_symmetric", "op",
+                "both parallels through C drawn at AB + e (the extremes taken symmetric about AC)",
+                "两个极限位置的导路平行线都取在距 A 为 AB + e 处(误认为两极限位置关于 AC 对称)",
+                step="r2", op=offset_added_twice),
+    ),
+    "four_bar.link_ranges": (
+        Mistake("grashof_as_crank", "op",
+                "every chain satisfying Grashof's condition taken for a crank-rocker (the shortest link's place ignored)",
+                "把满足杆长条件的情况都当作曲柄摇杆机构(未看最短杆的位置)", step="boundaries", op=grashof_as_crank),
+        Mistake("longest_case_forgotten", "op",
+                "the case with the unknown link the longest not considered (its Grashof inequality never checked)",
+                "漏掉了未知杆为最长杆的情况(未校核该情况的杆长条件)", step="boundaries", op=longest_case_forgotten),
+    ),
+    "crank_rocker.best_by_K": (
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, steps=("ncompl", "fcompl"), op=theta_not_complement),
+        Mistake("other_extreme_position", "op",
+                "γmin read at the other crank-on-frame position (the larger transmission angle)",
+                "最小传动角取在了曲柄与机架共线的另一位置(较大者)", step="gamma_min", op=larger_frame_gamma),
+    ),
+    "slotter.design_by_K": (
+        Mistake("stroke_angle", "op",
+                "the lines through A drawn at θ/2 to AC (∠B1AB2 taken as θ instead of 180° − θ)",
+                "过 A 的两直线与 AC 成 θ/2(把 ∠B1AB2 当作 θ,应为 180° − θ)", steps=("turn1", "turn2"), op=half_theta_turn),
+        Mistake("theta_crank_angle", "read", "the crank angle of one stroke ∠B1AB2 = 180° − θ given for θ",
+                "把一个行程的曲柄转角 ∠B1AB2 = 180° − θ 当作了极位夹角 θ", answer="theta", step="crank_angle"),
+        Mistake("arm_full_stroke", "op", "the arm CD taken as the whole stroke S instead of S/2",
+                "导杆臂长 CD 取成了整个行程 S(应为 S/2)", step="D1", op=along_doubled),
+    ),
+    "crank_slider.design_by_K": (
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, step="compl", op=theta_not_complement),
+    ),
+    "crank_slider.best_by_K": (
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, step="compl", op=theta_not_complement),
+    ),
+    "guide_bar.design_by_K": (
+        Mistake("theta_not_halved", "op", "the extreme positions drawn at ±θ to CA instead of ±θ/2 (ψ = θ in all)",
+                "导杆两极限位置与 CA 的夹角取成了 ±θ(应为 ±θ/2,ψ = θ)", step="half", op=not_halved),
+    ),
+    "shaper.design_by_K": (
+        Mistake("theta_not_halved", "op", "the extreme positions drawn at ±θ to CA instead of ±θ/2 (ψ = θ in all)",
+                "导杆两极限位置与 CA 的夹角取成了 ±θ(应为 ±θ/2,ψ = θ)", step="half", op=not_halved),
+    ),
+    "four_bar.function_generation": (
+        Mistake("inversion_direction", "given", "the points turned the wrong way about D in the inversion (+Δψ for −Δψ)",
+                "反转时各点绕 D 的转向弄反了(应转 −Δψ)", given={"psi": mirrored_about_first}),
+    ),
+    "rocker_slider.three_positions": (
+        Mistake("inversion_direction", "given", "the points turned the wrong way about D in the inversion (+Δψ for −Δψ)",
+                "反转时各点绕 D 的转向弄反了(应转 −Δψ)", given={"psi": mirrored_about_first}),
+    ),
+    "rocker_slider.two_positions": (
+        Mistake("inversion_direction", "given", "the point turned the wrong way about D in the inversion (+Δψ for −Δψ)",
+                "反转时该点绕 D 的转向弄反了(应转 −Δψ)", given={"psi": mirrored_about_first}),
+    ),
+    "crank_slider.instant_centres": (
+        Mistake("ratio_inverted", "op", "ω1/ω2 given for ω2/ω1 (P24P12/P14P12)", "把 ω1/ω2 当作了 ω2/ω1",
+                step="w2_w1", op=ratio_upside_down),
+        Mistake("wrong_centre", "rewire", "vC/ω1 read at P24 (the rod's centre) instead of P13 (the crank's and the slider's)",
+                "vC/ω1 取在了 P24(连杆的绝对瞬心)处,应取 P13(曲柄与滑块的相对瞬心)", step="vC_w1", old="P13", new="P24"),
+    ),
     "crank_rocker.design_by_K": (
         Mistake("C1_C2", "candidate", "C1 and C2 exchanged (C1 taken as the extended position)",
                 "C1 与 C2 弄反了(把拉直共线位置当作 C1)", flag="C1_folded"),
         Mistake("far_theta_circle", "candidate", "A taken on the far arc of the θ-circle",
                 "A 取在了 θ 圆的另一段圆弧上", flag="A_near"),
+        Mistake("theta_circle_angle", "op", *_THETA_LINE, steps=("ncompl", "fcompl"), op=theta_not_complement),
     ),
     "cam.translating": (
         Mistake("pitch_vs_actual", "read", *_PITCH, answer="rho_min_actual", step="rho_min_pitch"),
@@ -266,9 +415,22 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
                 step="w3_w1", op=ratio_upside_down),
         Mistake("ratio_inverted", "read", "ω3/ω1 given for the transmission ratio i13 = ω1/ω3", "把 ω3/ω1 当作了传动比 i13",
                 answer="i13", step="w3_w1"),
+        Mistake("ratio_inverted", "op", "ω1/ω2 given for ω2/ω1 (P24P12/P14P12)", "把 ω1/ω2 当作了 ω2/ω1",
+                step="w2_w1", op=ratio_upside_down),
     ),
 }
 """Recipe name → its declared mistakes (recipes of later issues add their entries here)."""
+
+NONE_DECLARED: dict[str, str] = {
+    "four_bar.three_positions": (
+        "A and D are the circumcentres of B1B2B3 and C1C2C3: any two of the three perpendicular bisectors give the "
+        "same point, and no step has a branch, so a wrong pivot is a drafting error or A and D exchanged (swapped)"),
+    "four_bar.three_positions_fixed_pivots": (
+        "the inversion maps D into the coupler's first position by each position's rigid motion; turned the wrong "
+        "way it is not the design of any changed givens, so it cannot be replayed as a given; a wrong C1 is a "
+        "drafting error or one of the shared codes (swapped, scale, sign)"),
+}
+"""Recipes that declare no mistake of their own, and why (the shared codes still apply to them)."""
 
 
 def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
@@ -276,5 +438,6 @@ def mistakes_of(recipe: str) -> tuple[Mistake, ...]:
     return MISTAKES.get(recipe, ())
 
 
-__all__ = ["KINDS", "MISTAKES", "Mistake", "accel_times_omega", "floor_added", "rise_only", "rpm_as_rad_s", "coriolis_left_out", "coriolis_reversed", "k_inverted", "largest_of",
+__all__ = ["KINDS", "MISTAKES", "NONE_DECLARED", "Mistake", "mirrored_about_first", "not_halved", "accel_times_omega", "along_doubled", "grashof_as_crank", "half_theta_turn",
+           "larger_frame_gamma", "longest_case_forgotten", "offset_added_twice", "theta_not_complement", "floor_added", "rise_only", "rpm_as_rad_s", "coriolis_left_out", "coriolis_reversed", "k_inverted", "largest_of",
            "left_out", "mistakes_of", "ratio_upside_down"]

@@ -74,10 +74,11 @@ class Variant:
         """A step's caption (English, Chinese), its branch rule included."""
         return self.scene.caption(key)
 
-    def values(self, keys: Iterable[str], *, flip: str | None = None, op: tuple[str, Callable] | None = None,
+    def values(self, keys: Iterable[str], *, flip: str | None = None, op: tuple[str, Callable] | tuple[tuple[str, Callable], ...] | None = None,
                rewire: tuple[str, str, str] | None = None, constant: Mapping[str, Any] | None = None) -> dict[str, Any]:
         """The values of ``keys`` in a replay with one change (or none): ``flip`` a step's branch rule, replace
-        a step's operation (``op = (key, fn)``, the same arguments), ``rewire = (key, old, new)`` a step's
+        a step's operation (``op = (key, fn)``, the same arguments; or a tuple of such pairs: one mistake made at
+        each of several steps, e.g. both θ-circles drawn the same wrong way), ``rewire = (key, old, new)`` a step's
         reference to ``old`` made to ``new``, or ``constant`` step values (a student's numbers).
 
         Raises
@@ -93,8 +94,8 @@ class Variant:
             r = rec[flip]
             changed[flip] = r[:4] + (_Other(r[4]),) + r[5:]
         if op is not None:
-            r = rec[op[0]]
-            changed[op[0]] = (op[1],) + r[1:]
+            for key, fn in ((op,) if isinstance(op[0], str) else op):
+                changed[key] = (fn,) + rec[key][1:]
         if rewire is not None:
             key, old, new = rewire
             r = rec[key]

@@ -310,6 +310,12 @@ def gamma_min_of(A: Point, D: Point, P1: Point, P2: Point) -> float:
     BC + (AD − AB) − CD = AC_f + AD − DC_f), measured by :func:`excess_by_foot`; then
     tan²(γ/2) = E_BC·E_CD/(perimeter·E_BD). Near the Grashof boundary an extreme position lies within rounding
     of the frame line: its excess, O(h²), survives in the points but not in the lengths AB, BC (γ ∝ h)."""
+    return min(frame_gammas(A, D, P1, P2))
+
+
+def frame_gammas(A: Point, D: Point, P1: Point, P2: Point) -> tuple[float, float]:
+    """The transmission angles of :func:`gamma_min_of`'s two crank-on-frame positions (crank folded back onto
+    the frame, crank extended along it), each reduced to ≤ 90°."""
     ax, ay = A.x, A.y
     d1, d2 = math.hypot(P1.x - ax, P1.y - ay), math.hypot(P2.x - ax, P2.y - ay)     # abs(P1 − A), abs(P2 − A)
     Cf, Ce = (P1, P2) if d1 < d2 else (P2, P1)
@@ -320,7 +326,7 @@ def gamma_min_of(A: Point, D: Point, P1: Point, P2: Point) -> float:
                                 (excess_by_foot(D, A, Cf), excess_by_foot(A, D, Ce), excess_by_foot(Cf, A, D), b + c + d + a)):
         g = math.degrees(2.0 * math.atan2(math.sqrt(max(0.0, e_b * e_c)), math.sqrt(max(0.0, per * e_bd))))
         out.append(min(g, 180.0 - g))
-    return min(out)
+    return out[0], out[1]
 
 
 def preference(sol: Mapping[str, float]) -> tuple[float, float, float]:

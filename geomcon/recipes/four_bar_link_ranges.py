@@ -11,7 +11,7 @@ keeps its crank, so 190 ≤ BC ≤ 290 is closed). The drawing is the axis of x 
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any, Callable, Iterable, Mapping
 
 from ..analytic.four_bar_analysis import LINKS, LOOPS, link_name
 from ..analytic.link_ranges import link_ranges
@@ -49,28 +49,85 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     return []
 
 
-def _kind(L: Mapping[str, Any], frame: str) -> tuple[str, bool]:
-    """Grashof's rule on a chain (lengths by name): its type and whether s + l ≤ p + q."""
+def _kind(L: Mapping[str, Any], frame: str, x: str = "") -> tuple[str, bool]:
+    """Grashof's rule on a chain (lengths by name): its type and whether s + l ≤ p + q (``x``, the unknown
+    link, is not needed by the rule; a student's rule (:mod:`geomcon.grading.mistakes`) may look at it)."""
     order = sorted(LINKS, key=lambda n: L[n])
     s, p, q, l_ = (L[n] for n in order)
     if l_ >= s + p + q - REL_TOL * l_:
         return "immovable", False
     if s + l_ > p + q + REL_TOL * l_:
         return "double_rocker", False
+    return by_shortest(L, frame), True
+
+
+def by_shortest(L: Mapping[str, Any], frame: str) -> str:
+    """The type of a chain that satisfies Grashof's condition: the joints of the shortest link turn fully, a
+    neighbour of the frame at such a joint is a crank."""
+    s, l_ = min(L.values()), max(L.values())
     shortest = [n for n in LINKS if L[n] <= s + REL_TOL * l_]
     j = LOOPS[frame]
     a = any(j[0] in n for n in shortest)
     b = any(j[3] in n for n in shortest)
-    return ("double_crank" if a and b else "crank_rocker" if a or b else "double_rocker"), True
+    return "double_crank" if a and b else "crank_rocker" if a or b else "double_rocker"
+
+
+grashof_kind = _kind
+"""The textbook's rule (public: :mod:`geomcon.grading.mistakes` replays a student's rule beside it)."""
+
+Kind = Callable[[Mapping[str, Any], str, str], tuple[str, bool]]
+
+
+def pieces_of(known: Mapping[str, float], x: str, frame: str, cuts: Iterable[float], kind: Kind = _kind
+              ) -> tuple[list[float], dict[str, list[list[float]]]]:
+    """The axis of the unknown ``x`` cut at the positive ``cuts``: the cuts in order, and the runs of each
+    type (and of Grashof's condition), each piece and each cut classified by ``kind``."""
+    edges: list[float] = []
+    for v in sorted(v for v in cuts if v > 0):         # decisions on the givens: guards of a tape
+        if not edges or v > edges[-1]:
+            edges.append(v)
+    pieces: list[tuple[Any, Any, str, bool]] = []
+    lo = 0.0
+    c = max(known.values())
+    for e in edges + [None]:
+        mid = (lo + e) / 2.0 if e is not None else lo + c
+        k, gr = kind({**known, x: mid}, frame, x)
+        pieces.append((lo, e if e is not None else math.inf, k, gr))
+        if e is not None:
+            k, gr = kind({**known, x: e}, frame, x)
+            pieces.append((e, e, k, gr))
+            lo = e
+    runs: dict[str, list[list[Any]]] = {k: [] for k in list(KIND_NAMES) + ["grashof_ranges"]}
+    for lo_, hi_, k, gr in pieces:
+        for name in (k, "grashof_ranges") if gr else (k,):
+            r = runs[name]
+            if r and r[-1][1] == lo_:
+                r[-1][1] = hi_
+            else:
+                r.append([lo_, hi_])
+    return edges, runs
+
+
+def ends_of(edges: list[float], runs: Mapping[str, list[list[float]]]) -> list[float]:
+    """The cuts where the type changes: the ends of the types' runs."""
+    return [e for e in edges if any(e in (iv[0], iv[1]) for name in KIND_NAMES for iv in runs[name])]
+
+
+def boundaries_of(frame: str, x: str, na: str, a: float, nb: str, b: float, nc: str, c: float, *cases: float,
+                  kind: Kind = _kind) -> tuple[float, ...]:
+    """The ``boundaries`` step: the lengths of ``x`` where the type changes, from the case analysis's lengths
+    ``cases`` (and a, c, where the unknown changes rank), each piece classified by ``kind``.
+
+    >>> boundaries_of("AD", "BC", "AB", 160, "AD", 210, "CD", 240, 130, 190, 290, 610)
+    (190, 290, 610)
+    """
+    known = {na: a, nb: b, nc: c}
+    return tuple(ends_of(*pieces_of(known, x, frame, list(cases) + [a, c], kind)))
 
 
 def _intervals(*flat: float) -> tuple[tuple[float, float], ...]:
     """Pairs ((low, high), …) from the flat list low1, high1, low2, high2 …"""
     return tuple((flat[i], flat[i + 1]) for i in range(0, len(flat), 2))
-
-
-def _listed(*values: float) -> tuple[float, ...]:
-    return tuple(values)
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
@@ -91,33 +148,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
                                     f"{x} = {na} + {nb} + {nc} 时四杆共线"))]
     if c - a - b > 0:
         cases.append(("x_flat_short", (c, -a, -b), (f"and at {x} = {nc} − {na} − {nb}", f"及 {x} = {nc} − {na} − {nb}")))
-    cut_values = []
+    cut_values, case_refs = [], []
     for key, terms, caption in cases:
-        sc.add(key, _plus, *terms, role=Role.MEASUREMENT, unit="mm", caption=caption)
+        case_refs.append(sc.add(key, _plus, *terms, role=Role.MEASUREMENT, unit="mm", caption=caption))
         cut_values.append(terms[0] + terms[1] + terms[2])
-    cut_values += [a, c]                                     # where the unknown changes rank
-    edges: list[Any] = []
-    for v in sorted(v for v in cut_values if v > 0):         # decisions on the givens: guards of a tape
-        if not edges or v > edges[-1]:
-            edges.append(v)
-    pieces: list[tuple[Any, Any, str, bool]] = []
-    lo = 0.0
-    for e in edges + [None]:
-        mid = (lo + e) / 2.0 if e is not None else lo + c
-        kind, gr = _kind({**known, x: mid}, frame)
-        pieces.append((lo, e if e is not None else math.inf, kind, gr))
-        if e is not None:
-            kind, gr = _kind({**known, x: e}, frame)
-            pieces.append((e, e, kind, gr))
-            lo = e
-    runs: dict[str, list[list[Any]]] = {k: [] for k in list(KIND_NAMES) + ["grashof_ranges"]}
-    for lo_, hi_, kind, gr in pieces:
-        for name in (kind, "grashof_ranges") if gr else (kind,):
-            r = runs[name]
-            if r and r[-1][1] == lo_:
-                r[-1][1] = hi_
-            else:
-                r.append([lo_, hi_])
+    edges, runs = pieces_of(known, x, frame, cut_values + [a, c])
     answers = {}
     top = 1.15 * edges[-1]
     for i, (name, (en, zh)) in enumerate(list(KIND_NAMES.items()) + [("grashof_ranges", ("Grashof", "满足杆长条件"))]):
@@ -137,9 +172,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 q = sc.add(f"{name}_{k}_hi", Point, hi_d, y, style="tick", role=Role.RESULT,
                            label="∞" if hi_ == math.inf else f"{hi_:g}")
                 sc.add(f"{name}_{k}", segment, p, q, style="admissible", role=Role.RESULT)
-    ends = [e for e in edges if any(e in (iv[0], iv[1]) for name in KIND_NAMES for iv in runs[name])]
+    ends = ends_of(edges, runs)
     named = [(e, _kind({**known, x: e}, frame)[0]) for e in ends]
-    sc.add("boundaries", _listed, *ends, role=Role.MEASUREMENT, unit="mm",
+    sc.add("boundaries", boundaries_of, frame, x, na, a, nb, b, nc, c, *case_refs, role=Role.MEASUREMENT, unit="mm",
            caption=("The type changes at " + "; ".join(
                f"{x} = {v:g} ({'flat: the links cannot move' if k == 'immovable' else 'change-point s + l = p + q, still a ' + KIND_NAMES[k][0]})"
                for v, k in named),

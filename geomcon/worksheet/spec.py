@@ -512,6 +512,10 @@ def _answer_ref(recipe: Recipe, value: Any, where: str) -> AnswerRef:
     index = None if m.group(2) is None else int(m.group(2))
     if q.unit == "bool":
         raise ProblemError(f"{where}: {value!r} is a yes/no answer; ask for numbers")
+    if q.unit in ("choice", "interval[]"):
+        lists = [f"'{a.name}[0]'" for a in recipe.answers if a.unit.endswith("[]") and a.unit != "interval[]"]
+        raise ProblemError(f"{where}: {value!r} is {'a word' if q.unit == 'choice' else 'a list of intervals [low, high]'}"
+                           f", not a number; ask for numbers" + (f" (e.g. {lists[0]})" if lists else ""))
     if q.unit.endswith("[]") and index is None:
         raise ProblemError(f"{where}: {value!r} is a list answer; name one element, e.g. '{q.name}[0]'")
     if not q.unit.endswith("[]") and index is not None:

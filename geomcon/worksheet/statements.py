@@ -252,6 +252,11 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "在所有满足条件的设计中求最小传动角最大者的 AB、BC、CD 及 γmin。"),
     },
     "slotter.design_by_K": {
+        "B1B2": ("Design the rotating guide-bar drive of a slotting machine by its time-ratio coefficient K = {K}: "
+                 "the slider's stroke is H = {H} mm, and the path of the crank pin B crosses the slider's path ee at "
+                 "two points B1B2 = {B1B2} mm apart.",
+                 "按行程速比系数 K = {K} 设计插床的转动导杆机构:滑块行程 H = {H} mm,曲柄销 B 的轨迹与滑块导路 ee "
+                 "的两交点相距 B1B2 = {B1B2} mm。"),
         "AB": ("Design the rotating guide-bar (Whitworth) drive of a slotting machine by its time-ratio coefficient "
                "K = {K}: the crank is AB = {AB} mm and the ram's stroke H = {H} mm, the ram's guide passing through "
                "the guide bar's pivot C perpendicular to AC. Find the centre distance AC and the arm CD.",
@@ -342,14 +347,102 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "偏置曲柄滑块机构中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,导路位于 A 下方 e = {e} mm,曲柄转角 φ = {phi}°。"
              "求机构的全部瞬心(P34 在垂直于导路的无穷远处,其余用三心定理求)。"),
     },
+    "crank_slider.extremes": {
+        "": ("An offset crank-slider has the crank AB = {AB} mm, the connecting rod BC = {BC} mm and the offset "
+             "e = {e} mm of the slider's guide from A. Draw the slider's two extreme positions.",
+             "偏置曲柄滑块机构中,曲柄 AB = {AB} mm,连杆 BC = {BC} mm,滑块导路相对 A 的偏距 e = {e} mm。"
+             "作出滑块的两个极限位置。"),
+    },
+    "crank_slider.best_by_K": {
+        "": ("Design an offset crank-slider with the time-ratio coefficient K = {K} and the slider's stroke "
+             "H = {H} mm; of all such designs, take the one whose smallest transmission angle in the working "
+             "stroke is the largest.",
+             "设计偏置曲柄滑块机构,行程速比系数 K = {K},滑块行程 H = {H} mm;在所有满足条件的设计中,"
+             "取工作行程最小传动角最大者。"),
+    },
+    "guide_bar.design_by_K": {
+        "AC": ("Design an oscillating guide-bar mechanism by its time-ratio coefficient K = {K}: the centre "
+               "distance is AC = {AC} mm.",
+               "按行程速比系数 K = {K} 设计摆动导杆机构,机架长(中心距)AC = {AC} mm。"),
+        "AB": ("Design an oscillating guide-bar mechanism by its time-ratio coefficient K = {K}: the crank is "
+               "AB = {AB} mm.",
+               "按行程速比系数 K = {K} 设计摆动导杆机构,曲柄长 AB = {AB} mm。"),
+    },
+    "shaper.design_by_K": {
+        "AC": ("Design the crank and slotted-lever (guide-bar) drive of a shaper by its time-ratio coefficient "
+               "K = {K}: the ram's stroke is H = {H} mm and the centre distance AC = {AC} mm.",
+               "按行程速比系数 K = {K} 设计牛头刨床的导杆机构:刨头行程 H = {H} mm,中心距 AC = {AC} mm。"),
+        "AB": ("Design the crank and slotted-lever (guide-bar) drive of a shaper by its time-ratio coefficient "
+               "K = {K}: the ram's stroke is H = {H} mm and the crank AB = {AB} mm.",
+               "按行程速比系数 K = {K} 设计牛头刨床的导杆机构:刨头行程 H = {H} mm,曲柄长 AB = {AB} mm。"),
+    },
+    "four_bar.three_positions": {
+        "": ("Design a hinged four-bar ABCD whose coupler BC takes three given positions: B1 ({B1}), C1 ({C1}); "
+             "B2 ({B2}), C2 ({C2}); B3 ({B3}), C3 ({C3}) (coordinates in mm). Find the fixed pivots A and D "
+             "(perpendicular bisectors) and the link lengths.",
+             "设计铰链四杆机构 ABCD,使连杆 BC 依次占据三个给定位置:B1({B1})、C1({C1});B2({B2})、C2({C2});"
+             "B3({B3})、C3({C3})(坐标,单位 mm)。用中垂线法求固定铰链 A、D 及各杆长度。"),
+    },
+    "four_bar.three_positions_fixed_pivots": {
+        "": ("The fixed pivots of a hinged four-bar are A ({A}) and D ({D}); the input link's joint B takes the "
+             "positions B1 ({B1}), B2 ({B2}), B3 ({B3}) (coordinates in mm)",
+             "铰链四杆机构的固定铰链为 A({A})、D({D}),主动件上的铰链 B 依次位于 B1({B1})、B2({B2})、B3({B3})"
+             "(坐标,单位 mm)"),
+    },
+    "four_bar.function_generation": {
+        "": ("Design a hinged four-bar ABCD as a function generator: the frame is AD = {AD} mm and the crank "
+             "AB = {AB} mm; the crank's directions φ = {phi}° (from A→D) are to correspond to the rocker's "
+             "directions ψ = {psi}° (from AD extended beyond D). Find the joint C1 by the inversion method about "
+             "D, the coupler BC and the rocker CD.",
+             "按给定函数关系设计铰链四杆机构 ABCD:机架 AD = {AD} mm,曲柄 AB = {AB} mm,要求曲柄位置角 φ = {phi}°"
+             "(自 A→D 量起)依次对应摇杆位置角 ψ = {psi}°(自 AD 延长线量起)。用反转法(绕 D 反转)求 C1 及连杆 BC、"
+             "摇杆 CD 的长度。"),
+    },
+    "rocker_slider.three_positions": {
+        "": ("A rocker turns about D ({D}) and drives a slider through a rod EF; the slider's guide passes "
+             "through (0, {e}) mm. The rocker's marked line takes the directions ψ = {psi}° (from +x), and the "
+             "slider's pin E is to be at s = {s} mm along the guide in the corresponding positions. Find the "
+             "rod's joint F1 on the rocker by the inversion method, DF and EF.",
+             "摇杆绕 D({D})转动,通过连杆 EF 带动滑块,滑块导路过点 (0, {e}) mm。摇杆标线依次位于 ψ = {psi}°"
+             "(自 +x 量起),要求滑块铰链 E 相应位于导路上 s = {s} mm 处。用反转法求摇杆上的铰链 F1 及 DF、EF。"),
+    },
+    "rocker_slider.two_positions": {
+        "": ("A rocker turns about D ({D}) and drives a slider through a rod EF; the slider's guide passes "
+             "through (0, {e}) mm. The rocker's marked line takes the directions ψ = {psi}° (from +x) while the "
+             "slider moves to s = {s} mm along the guide; the rod's joint on the rocker is F1 ({F1}) in position 1. "
+             "Find the slider's joint E1 by the inversion method and the rod EF.",
+             "摇杆绕 D({D})转动,通过连杆 EF 带动滑块,滑块导路过点 (0, {e}) mm。摇杆标线依次位于 ψ = {psi}°"
+             "(自 +x 量起)时滑块相应位于导路上 s = {s} mm 处;连杆与摇杆的铰链在位置 1 为 F1({F1})。"
+             "用反转法求滑块上的铰链 E1 及连杆 EF。"),
+    },
+    "cam.eccentric": {
+        "": ("An eccentric circular disc of radius R = {R} mm turns {rotation} about O; its centre A lies "
+             "OA = {OA} mm from O. It drives a {follower} follower.",
+             "偏心圆盘凸轮半径 R = {R} mm,绕 O {rotation}转动,其几何中心 A 与 O 相距 OA = {OA} mm,"
+             "推动{follower}从动件。"),
+    },
     "cam.oscillating": {
         "omega": ("A disc cam turning {rotation} drives an oscillating {follower} follower: the arm's pivot A0 is "
              "a = {a} mm from the cam's centre O, the arm is L = {L} mm long, the base circle r0 = {r0} mm, and "
              "the arm swings through h = {h}°; motion program: {program}.",
              "一盘形凸轮{rotation}转动,推动摆动{follower}从动件:摆杆转轴 A0 与凸轮回转中心 O 相距 a = {a} mm,"
              "摆杆长 L = {L} mm,基圆半径 r0 = {r0} mm,最大摆角 h = {h}°;运动规律:{program}。"),
+        "flat": ("A disc cam turning {rotation} drives an oscillating flat-faced follower: the arm's pivot A0 is "
+                 "a = {a} mm from the cam's centre O, the base circle r0 = {r0} mm, and the arm swings through "
+                 "h = {h}°; motion program: {program}.",
+                 "一盘形凸轮{rotation}转动,推动摆动平底从动件:摆杆转轴 A0 与凸轮回转中心 O 相距 a = {a} mm,"
+                 "基圆半径 r0 = {r0} mm,最大摆角 h = {h}°;运动规律:{program}。"),
     },
     "cam.base_radius": {
+        "alpha": ("A disc cam turning {rotation} drives a translating roller (or knife-edge) follower through the "
+                  "stroke h = {h} mm; motion program: {program}. The pressure angle must not exceed {alpha_allow}°.",
+                  "一盘形凸轮{rotation}转动,推动直动滚子(或尖顶)从动件,行程 h = {h} mm;运动规律:{program}。"
+                  "许用压力角 {alpha_allow}°。"),
+        "oscillating": ("A disc cam turning {rotation} drives an oscillating roller (or knife-edge) follower whose arm "
+                        "is L = {L} mm long and swings through h = {h}°; motion program: {program}. The pressure "
+                        "angle must not exceed {alpha_allow}°.",
+                        "一盘形凸轮{rotation}转动,推动摆动滚子(或尖顶)从动件,摆杆长 L = {L} mm,最大摆角 h = {h}°;"
+                        "运动规律:{program}。许用压力角 {alpha_allow}°。"),
         "alpha+rho": ("A disc cam turning {rotation} drives a translating roller (or knife-edge) follower through the "
                       "stroke h = {h} mm; "
              "motion program: {program}. The pressure angle must not exceed {alpha_allow}° and the pitch curve's "
@@ -363,7 +456,51 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
                  "按接触应力要求,凸轮廓线各处曲率半径不得小于 {rho_allow} mm。求最小基圆半径。"),
     },
 }
+TEMPLATES["cam.oscillating"][""] = TEMPLATES["cam.oscillating"]["omega"]     # the text names no ω (OMEGA_WORDS does)
 """Default statements: recipe → form → (English, Chinese) text with ``{given}`` placeholders."""
+
+CLAUSES: dict[str, tuple[tuple[str, tuple[str, str]], ...]] = {
+    "crank_slider.best_by_K": (
+        ("e_min", (" The offset e must be at least {e_min} mm.", "偏距 e 不得小于 {e_min} mm。")),
+        ("e_max", (" The offset e must be at most {e_max} mm.", "偏距 e 不得大于 {e_max} mm。"))),
+    "shaper.design_by_K": (
+        ("alpha_allow", (" The pressure angle at the ram must not exceed {alpha_allow}°.", "刨头处的压力角不得超过 {alpha_allow}°。")),
+        ("DE", (" The link DE driving the ram is {DE} mm long.", "带动刨头的连杆 DE = {DE} mm。"))),
+    "slotter.design_by_K": (
+        ("alpha_allow", (" The pressure angle at the ram must not exceed {alpha_allow}°.", "滑枕处的压力角不得超过 {alpha_allow}°。")),),
+    "four_bar.three_positions_fixed_pivots": (
+        ("K1", ("; a point K of the coupler passes through K1 ({K1}), K2 ({K2}), K3 ({K3})",
+                ";连杆上一点 K 依次通过 K1({K1})、K2({K2})、K3({K3})")),
+        ("coupler_angles", ("; the coupler line BK has the directions {coupler_angles}° in the three positions",
+                            ";连杆标线 BK 在三个位置的方位角依次为 {coupler_angles}°")),
+        ("", (". Find the coupler's joint C1 by the inversion method and the link lengths.",
+              "。用反转法求连杆铰链 C1 及各杆长度。"))),
+    "rocker_slider.three_positions": (
+        ("guide_angle", (" The guide is inclined at {guide_angle}° to +x.", "导路与 +x 轴成 {guide_angle}°。")),),
+    "rocker_slider.two_positions": (
+        ("guide_angle", (" The guide is inclined at {guide_angle}° to +x.", "导路与 +x 轴成 {guide_angle}°。")),),
+    "cam.eccentric": (
+        ("e", (" The follower's axis is offset e = {e} mm to the right of O.", "从动件导路位于 O 右侧,偏距 e = {e} mm。")),
+        ("a", (" The follower is an arm pivoted a = {a} mm from O, of length L = {L} mm.",
+               "从动件为摆杆,其转轴与 O 相距 a = {a} mm,摆杆长 L = {L} mm。")),
+        ("delta", (" In the position asked the cam has turned δ = {delta}° from the follower's lowest position.",
+                   "所求位置为凸轮自从动件最低位置转过 δ = {delta}° 处。")),
+        ("A_angle", (" In the position asked the ray O→A makes {A_angle}° with the perpendicular to the guide.",
+                     "所求位置 O→A 与导路的垂线成 {A_angle}°。")),
+        ("contact_angle", (" In the position asked the contact lies on the ray from A at {contact_angle}° to O→A.",
+                           "所求位置的接触点位于自 A 出发、与 O→A 成 {contact_angle}° 的射线上。")),
+        ("turn", (" The cam then turns a further {turn}°.", "凸轮再转过 {turn}°。"))),
+    "cam.base_radius": (
+        ("e", (" The offset is fixed at e = {e} mm.", "偏距取定为 e = {e} mm。")),
+        ("a", (" The centre distance is fixed at a = {a} mm.", "中心距取定为 a = {a} mm。")),
+        ("alpha_allow_return", (" On the return the pressure angle must not exceed {alpha_allow_return}°.",
+                                "回程许用压力角 {alpha_allow_return}°。"))),
+    "cam.oscillating": (
+        ("face_offset", (" The flat face lies {face_offset} mm from the pivot A0, towards the cam.",
+                         "平底与摆杆转轴 A0 相距 {face_offset} mm(偏向凸轮一侧)。")),),
+}
+"""Sentences added to a recipe form's statement for each optional given the variant has, in order (``""``:
+always added, closing the sentence)."""
 
 ROLLER = (" The roller's radius is rr = {rr} mm.", "滚子半径 rr = {rr} mm。")
 """Added to a cam statement when the follower has a roller."""
@@ -404,8 +541,10 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return next((k for k in ("e", "AB", "BC") if k in has), None)
     if recipe == "guide_bar.extremes":
         return "+".join(w for w, k in (("offset", "e"), ("lever", "L")) if k in has and given[k] != 0)
-    if recipe == "slotter.design_by_K":                  # the Whitworth forms; B1B2 keeps the generic statement
-        return next((k for k in ("AB", "AC") if k in has and "B1B2" not in has), None)
+    if recipe == "slotter.design_by_K":
+        return next((k for k in ("B1B2", "AB", "AC") if k in has), None)
+    if recipe in ("guide_bar.design_by_K", "shaper.design_by_K"):
+        return next((k for k in ("AC", "AB") if k in has), None)
     if recipe == "rotating_guide_bar.extremes":
         return "arm" if "CD" in has else ""
     if recipe == "four_bar.link_ranges":                 # the form names the unknown link
@@ -415,11 +554,13 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return "offset" if given.get("e") not in (None, 0, 0.0) else "centric"
     if recipe == "four_bar.kinematics":
         return "E" if "BE" in has else ""
-    if recipe == "cam.oscillating":                 # (without ω: the generic statement, as before)
-        return "omega" if "omega" in has and given.get("follower") != "flat" else None
-    if recipe == "cam.base_radius":                 # the curvature-limited forms; the others: generic
-        if "rho_allow" not in has or given.get("motion") == "oscillating":
-            return None
+    if recipe == "cam.oscillating":
+        return "flat" if given.get("follower") == "flat" else "omega" if "omega" in has else ""
+    if recipe == "cam.base_radius":
+        if given.get("motion") == "oscillating":
+            return "oscillating" if "rho_allow" not in has and "L" in has and "alpha_allow" in has else None
+        if "rho_allow" not in has:
+            return "alpha" if "alpha_allow" in has and given.get("follower") != "flat" else None
         return "flat" if given.get("follower") == "flat" else ("alpha+rho" if "alpha_allow" in has else None)
     if recipe in TEMPLATES:
         return ""
@@ -432,12 +573,16 @@ def default_template(recipe: str, given: Mapping[str, Any], title: str = "") -> 
     if form is None or form not in TEMPLATES.get(recipe, {}):
         return generic_template(title or recipe, given)
     en, zh = TEMPLATES[recipe][form]
+    has = {k for k, v in given.items() if v is not None and v is not False}
+    for name, (e, z) in CLAUSES.get(recipe, ()):
+        if not name or name in has:
+            en, zh = en + e, zh + z
     if recipe.startswith("cam."):
         if given.get("follower") == "roller" and given.get("rr") is not None:
             en, zh = en + ROLLER[0], zh + ROLLER[1]
         if given.get("omega") is not None:
             en, zh = en + OMEGA_WORDS[0], zh + OMEGA_WORDS[1]
-        if recipe != "cam.base_radius":
+        if recipe not in ("cam.base_radius", "cam.eccentric"):     # an eccentric disc's profile is its circle
             en, zh = en + CAM_DRAW[0], zh + CAM_DRAW[1]
     return en, zh
 
@@ -507,8 +652,13 @@ def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: s
 
     >>> answer_words("s", 1, {"at": [30, 60]}, "en"), answer_words("alpha", 0, {"at": [30]}, "zh")
     ('the displacement s at δ = 60°', 'δ = 30° 时的压力角 α')
+    >>> answer_words("boundaries", 1, {"AB": 160}, "en")
+    'the 2nd length (from the shortest) at which the type changes'
     """
     k = 1 if lang == "zh" else 0
+    if index is not None and name == "boundaries":
+        return (f"the {_ordinal(index + 1)} length (from the shortest) at which the type changes",
+                f"从小到大第 {index + 1} 个类型改变处的杆长")[k]
     if index is not None:
         at = given.get("at") or ()
         where = f"δ = {number(at[index])}°" if index < len(at) else f"[{index}]"
@@ -521,6 +671,16 @@ def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: s
             return (f"{en} at {where}", f"{where} 时的{zh}")[k]
         return f"{name} ({where})"
     return ANSWER_WORDS.get(name, (name, name))[k]
+
+
+def _ordinal(n: int) -> str:
+    """1st, 2nd, 3rd, 4th … 11th, 12th, 13th, 21st.
+
+    >>> [_ordinal(n) for n in (1, 2, 3, 4, 11, 12, 13, 21)]
+    ['1st', '2nd', '3rd', '4th', '11th', '12th', '13th', '21st']
+    """
+    suffix = "th" if 10 <= n % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix}"
 
 
 def find_sentence(words: list[str], lang: str) -> str:
@@ -536,5 +696,5 @@ def find_sentence(words: list[str], lang: str) -> str:
     return "Find " + ", ".join(words[:-1]) + f" and {words[-1]}."
 
 
-__all__ = ["ANSWER_WORDS", "CHOICE", "TEMPLATES", "answer_words", "default_template", "fill", "find_sentence",
+__all__ = ["ANSWER_WORDS", "CHOICE", "CLAUSES", "TEMPLATES", "answer_words", "default_template", "fill", "find_sentence",
            "generic_template", "number", "program_words", "shown_givens", "template_form", "CAM_DRAW", "ROLLER"]
