@@ -1,18 +1,26 @@
 """``geomcon bench``, whole cycles: four-bar positions per second over a crank turn, geomcon's vectorised chain
 (:mod:`geomcon.kinematics`) beside pylinkage (numba-compiled ``step_fast``) where it is installed.
 
-The four-bar 50/70/80/90 (crank-rocker, open branch) is swept through N crank angles: geomcon positions only,
-and positions + velocities + accelerations; pylinkage ``step_fast`` (positions) and
-``step_fast_with_kinematics`` after a warm-up call (numba's compilation is not counted). Each row also gives
-the largest distance of its C from the closed-form twin (:func:`geomcon.analytic.kinematics.four_bar`) over
-1000 of its positions, relative to the linkage's size. Times are CPU seconds, best of ``repeat``.
+The four-bar 50/70/80/90 (crank-rocker, open branch) is swept through the same N crank angles by every row, in
+float64: geomcon's compiled plan (:mod:`geomcon.kinematics.plan`, the fast path) for the joints' positions
+(what pylinkage's ``step_fast`` returns), for positions + velocities + accelerations (what
+``step_fast_with_kinematics`` returns; the links' ω and ε come with them), and for everything with the links'
+angles too; the reference path (:func:`~geomcon.kinematics.chain.solve_chain`, complex arrays) for the same
+two; pylinkage after a warm-up call (numba's compilation is not counted). Times are CPU seconds, best of
+``repeat``.
+
+Each rate is given as a ratio to pylinkage's positions and, so that a figure carries over between runs on a
+machine whose speed drifts, as the row's time over the time numpy takes for one cosine and one sine of each
+of the N angles (the first row, timed in the same run: a position cannot cost less than that). Each row also
+gives the largest distance of its C from the closed-form twin (:func:`geomcon.analytic.kinematics.four_bar`)
+over 1000 of its positions, relative to the linkage's size.
 
 Examples
 --------
 >>> rows = measure_cycle(n=20_000, repeat=1, pylinkage=False)
->>> [r.method for r in rows]
-['geomcon positions', 'geomcon positions + velocities + accelerations']
->>> all(r.rel_error < 1e-12 for r in rows)
+>>> [r.method for r in rows][:3]
+['numpy cos + sin of the N angles', 'geomcon positions', 'geomcon positions + velocities + accelerations']
+>>> all(r.rel_error < 1e-12 for r in rows[1:])
 True
 """
 from __future__ import annotations
@@ -25,6 +33,7 @@ import numpy as np
 from ..analytic.kinematics import four_bar
 from ..kinematics.chain import Mechanism, solve_chain
 from ..kinematics.dyads import RRR, Crank
+from ..kinematics.plan import compile_chain
 from .cam import _timed
 from .report import format_table
 
@@ -52,15 +61,33 @@ def _error(phi_deg: np.ndarray, C: np.ndarray) -> float:
     return worst / AD
 
 
+NUMPY = "numpy cos + sin of the N angles"
+"""The first row: the stable yardstick of a run."""
+
+
+def _cos_sin(phi: np.ndarray) -> np.ndarray:
+    out = np.empty((2, phi.shape[0]))
+    np.cos(phi, out=out[0])
+    np.sin(phi, out=out[1])
+    return out
+
+
 def measure_cycle(n: int = 1_000_000, repeat: int = 3, pylinkage: bool = True) -> list[CycleRow]:
     """The rows of the table (pylinkage's only when it imports and ``pylinkage`` is True)."""
     m = Mechanism({"A": 0j, "D": complex(AD)}, Crank("AB", "A", "B", AB, 10.0),
                   (RRR("C", "B", "D", BC, CD, 1, "BC", "DC"),))
+    plan = compile_chain(m)
     phi_deg = np.arange(n) * (360.0 / n)
     phi = np.radians(phi_deg)
-    rows = []
-    for label, der in (("geomcon positions", False), ("geomcon positions + velocities + accelerations", True)):
-        st, t = _timed(lambda der=der: solve_chain(m, phi, der), repeat)
+    _, t = _timed(lambda: _cos_sin(phi), repeat)
+    rows = [CycleRow(NUMPY, n, t, n / max(t, 1e-9), math.nan)]
+    runs = (("geomcon positions", lambda: plan.solve(phi, False, False)),
+            ("geomcon positions + velocities + accelerations", lambda: plan.solve(phi, True, False)),
+            ("geomcon all, with the links' angles", lambda: plan.solve(phi, True, True)),
+            ("geomcon reference path, positions", lambda: solve_chain(m, phi, False)),
+            ("geomcon reference path, all", lambda: solve_chain(m, phi, True)))
+    for label, run in runs:
+        st, t = _timed(run, repeat)
         rows.append(CycleRow(label, n, t, n / max(t, 1e-9), _error(phi_deg, st.points["C"].p)))
     if pylinkage:
         rows += _pylinkage_rows(n, repeat, phi_deg)
@@ -117,12 +144,16 @@ def _numba() -> bool:
 
 
 def cycle_table(rows: list[CycleRow]) -> str:
-    """The rows as the bench prints them, with each rate's ratio to pylinkage's positions."""
+    """The rows as the bench prints them, with each rate's ratio to pylinkage's positions and each time's
+    ratio to numpy's cos + sin of the same angles."""
     ref = next((r.rate for r in rows if r.method.startswith("pylinkage step_fast") and "kinematics" not in r.method),
                None)
+    base = next((r.seconds for r in rows if r.method == NUMPY), None)
     body = [[r.method, f"{r.n:,}", f"{r.seconds:.3g}", f"{r.rate / 1e6:.2f}",
-             f"{r.rate / ref:.2f}×" if ref else "—", f"{r.rel_error:.1e}"] for r in rows]
+             f"{r.rate / ref:.2f}×" if ref else "—", f"{r.seconds / base:.2f}" if base else "—",
+             "—" if math.isnan(r.rel_error) else f"{r.rel_error:.1e}"] for r in rows]
     note = "" if ref else "\npylinkage was not measured (not installed: pip install -e '.[test]' brings it)."
-    return ("Whole cycle: four-bar 50/70/80/90 swept through N crank angles (CPU time, best of repeats)\n"
-            + format_table(["method", "N", "s", "M positions/s", "vs pylinkage", "max |C − twin|/AD"], body,
-                           "lrrrrr") + note)
+    return ("Whole cycle: four-bar 50/70/80/90 swept through the same N crank angles, float64 (CPU time, best of "
+            "repeats;\n'× cos+sin': the row's time over numpy's cos + sin of the N angles in this run)\n"
+            + format_table(["method", "N", "s", "M positions/s", "vs pylinkage", "× cos+sin", "max |C − twin|/AD"],
+                           body, "lrrrrrr") + note)
