@@ -102,6 +102,14 @@ def _near(a, ref):
     return a + 2 * mp.pi * mp.nint((ref - a) / (2 * mp.pi))
 
 
+def guess_of(st) -> tuple[dict, dict, dict]:
+    """The starting guess for :func:`motion` from a double-precision state at one crank angle: the points,
+    link angles and slips it found."""
+    return ({k: complex(v.p[0]) for k, v in st.points.items()},
+            {k: float(v.theta[0]) for k, v in st.links.items()},
+            {k: float(v.s[0]) for k, v in st.slips.items()})
+
+
 def motion(m: Mechanism, phi0: float, guess: dict) -> dict:
     """({point: triple}, {link: triple}, {slip: triple}) at the crank angle ``phi0`` (deg), each triple the value
     and its first and second time derivatives: complex for points, the angle (rad) for links, real for slips."""

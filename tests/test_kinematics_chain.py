@@ -148,10 +148,7 @@ def test_general_chains_random_against_60_digit_newton_twin():
             st = solve_chain(m, np.radians([phi]))
         if min(float(v[0]) for v in st.margins.values()) < 0.02:
             continue
-        guess = ({k: complex(v.p[0]) for k, v in st.points.items()},
-                 {k: float(v.theta[0]) for k, v in st.links.items()},
-                 {k: float(v.s[0]) for k, v in st.slips.items()})
-        rp, rl, rs = mp_twin.motion(m, phi, guess)
+        rp, rl, rs = mp_twin.motion(m, phi, mp_twin.guess_of(st))
         L, w, e = m.scale(), abs(m.crank.omega), abs(m.crank.epsilon)
         for name, pm in st.points.items():
             for got, want, sc in ((pm.p[0], rp[name][0], L), (pm.v[0], rp[name][1], L * w),

@@ -128,10 +128,7 @@ def test_fast_motion_is_as_exact_as_the_reference_against_the_60_digit_twin():
         ref, fast = _both(m, np.radians([phi]))
         if min(float(v[0]) for v in ref.margins.values()) < 0.02:
             continue
-        guess = ({k: complex(v.p[0]) for k, v in ref.points.items()},
-                 {k: float(v.theta[0]) for k, v in ref.links.items()},
-                 {k: float(v.s[0]) for k, v in ref.slips.items()})
-        rp, rl, rs = mp_twin.motion(m, phi, guess)
+        rp, rl, rs = mp_twin.motion(m, phi, mp_twin.guess_of(ref))
         L, w, e = m.scale(), abs(m.crank.omega), abs(m.crank.epsilon)
         for j, q in enumerate("pva"):
             sc = max([abs(complex(rp[k][j])) for k in rp] + [L if j == 0 else 0.0])

@@ -147,6 +147,14 @@ def _crank(el: Crank, out: _Out, chunk: int) -> Kernel:
     return run
 
 
+def _dot_times(ax, ay, bx, by, q, out: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """(a · b)·q into ``out`` (``t`` a working array)."""
+    np.multiply(ax, bx, out=out)
+    out += np.multiply(ay, by, out=t)
+    out *= q
+    return out
+
+
 def _rrr(el: RRR, out: _Out, chunk: int) -> Kernel:
     l1s, l2s, b = el.l1 ** 2, el.l2 ** 2, el.branch
     half = 0.5 * (l1s - l2s)
@@ -196,13 +204,8 @@ def _rrr(el: RRR, out: _Out, chunk: int) -> Kernel:
         np.divide(-1.0, q, out=q)                # −1 / det[i·u1, −i·u2]
         np.subtract(Bvx, Avx, out=cx)
         np.subtract(Bvy, Avy, out=cy)
-        w1, w2 = K1[1][sl], K2[1][sl]
-        np.multiply(cx, u2x, out=w1)
-        w1 += np.multiply(cy, u2y, out=t)
-        w1 *= q
-        np.multiply(cx, u1x, out=w2)
-        w2 += np.multiply(cy, u1y, out=t)
-        w2 *= q
+        w1 = _dot_times(cx, cy, u2x, u2y, q, K1[1][sl], t)
+        w2 = _dot_times(cx, cy, u1x, u1y, q, K2[1][sl], t)
         np.multiply(w1, w1, out=s1)
         s2 = np.multiply(w2, w2, out=ka)
         np.subtract(Bax, Aax, out=rx)            # B.a − A.a + ω1²·u1 − ω2²·u2
@@ -211,13 +214,8 @@ def _rrr(el: RRR, out: _Out, chunk: int) -> Kernel:
         np.subtract(Bay, Aay, out=ry)
         ry += np.multiply(s1, u1y, out=t)
         ry -= np.multiply(s2, u2y, out=t)
-        e1, e2 = K1[2][sl], K2[2][sl]
-        np.multiply(rx, u2x, out=e1)
-        e1 += np.multiply(ry, u2y, out=t)
-        e1 *= q
-        np.multiply(rx, u1x, out=e2)
-        e2 += np.multiply(ry, u1y, out=t)
-        e2 *= q
+        e1 = _dot_times(rx, ry, u2x, u2y, q, K1[2][sl], t)
+        e2 = _dot_times(rx, ry, u1x, u1y, q, K2[2][sl], t)
         vx = np.multiply(w1, u1y, out=cx)
         np.subtract(Avx, vx, out=vx)
         vy = np.multiply(w1, u1x, out=cy)
