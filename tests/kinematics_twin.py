@@ -112,7 +112,14 @@ def guess_of(st) -> tuple[dict, dict, dict]:
 
 def motion(m: Mechanism, phi0: float, guess: dict) -> dict:
     """({point: triple}, {link: triple}, {slip: triple}) at the crank angle ``phi0`` (deg), each triple the value
-    and its first and second time derivatives: complex for points, the angle (rad) for links, real for slips."""
+    and its first and second time derivatives: complex for points, the angle (rad) for links, real for slips.
+    Always in 60 digits, whatever precision another test left mpmath at (a test that sets ``mp.dps`` lower
+    made the differences in time lose their digits: 5e-11 where 1e-15 is asked)."""
+    with mp.workdps(60):
+        return _motion(m, phi0, guess)
+
+
+def _motion(m: Mechanism, phi0: float, guess: dict) -> dict:
     w, e = mp.mpf(m.crank.omega), mp.mpf(m.crank.epsilon)
     p0 = mp.radians(mp.mpf(phi0))
     sols = {}

@@ -42,7 +42,7 @@ from typing import Callable
 import numpy as np
 
 from .chain import Mechanism, check_chain
-from .dyads import PRP, RPR, RRP, RRR, Crank, Element, Guide, OnLink, State
+from .dyads import PRP, RPR, RRP, RRR, Crank, Guide, OnLink, State
 from .motion import LinkMotion, PointMotion, SlipMotion
 
 CHUNK = 16384
@@ -461,4 +461,4 @@ def solve_fast(m: Mechanism, phi: np.ndarray, derivatives: bool = True, angles: 
     return compile_chain(m).solve(phi, derivatives, angles)
 
 
-__all__ = ["CHUNK", "Element", "Plan", "compile_chain", "solve_fast"]
+__all__ = ["CHUNK", "Plan", "compile_chain", "solve_fast"]
