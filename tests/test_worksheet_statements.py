@@ -47,7 +47,7 @@ def test_default_statement_of_each_form(key):
     en, zh = statement(ex, v, "en"), statement(ex, v, "zh")
     assert "{" not in en + zh and "}" not in en + zh
     assert en.startswith(("Design", "A ")) and en.rstrip().endswith(".")
-    assert zh.endswith("。") and "," in zh                  # full-width punctuation in Chinese
+    assert zh.endswith("。") and "，" in zh and "," not in zh.replace(", ", "")   # full-width punctuation
     for name in given.splitlines():
         value = name.split(" = ")[1]
         if value[:1].isdigit():

@@ -3,7 +3,7 @@ words and its unit, and the result lines of a drawing built from it.
 
 A number reads ``θ = 12.506°``, a yes/no answer ``C1 folded: yes``; the remark in brackets says what agreed
 with what (``= analytic``: the construction equals the independent analytic twin) and how the printed answer
-of the textbook deviates. Chinese text uses full-width punctuation (，：；（）).
+of the textbook deviates. Chinese text uses full-width punctuation （，：；（））.
 
 Examples
 --------
@@ -154,8 +154,8 @@ NAMES: dict[str, AnswerName] = {
     # kinematics (velocity and acceleration polygons)
     "omega2": _n("ω2", "angular velocity of BC", "连杆角速度"),
     "epsilon2": _n("ε2", "angular acceleration of BC", "连杆角加速度"),
-    "omega3": _n("ω3", "angular velocity of link 3 (rocker or guide)", "构件 3(摇杆或导杆)的角速度"),
-    "epsilon3": _n("ε3", "angular acceleration of link 3 (rocker or guide)", "构件 3(摇杆或导杆)的角加速度"),
+    "omega3": _n("ω3", "angular velocity of link 3 (rocker or guide)", "构件 3（摇杆或导杆）的角速度"),
+    "epsilon3": _n("ε3", "angular acceleration of link 3 (rocker or guide)", "构件 3（摇杆或导杆）的角加速度"),
     "vC": _n("vC", "velocity of C", "C 点速度"),
     "aC": _n("aC", "acceleration of C", "C 点加速度"),
     "vE": _n("vE", "velocity of E", "E 点速度"),
@@ -168,8 +168,8 @@ NAMES: dict[str, AnswerName] = {
     "vB3": _n("vB3", "velocity of the guide's point under the block", "导杆上与滑块重合点的速度"),
     "vD": _n("vD", "velocity of D", "D 点速度"),
     "aD": _n("aD", "acceleration of D", "D 点加速度"),
-    "omega4": _n("ω4", "angular velocity of link 4 (coupler DE)", "构件 4(连杆 DE)的角速度"),
-    "epsilon4": _n("ε4", "angular acceleration of link 4 (coupler DE)", "构件 4(连杆 DE)的角加速度"),
+    "omega4": _n("ω4", "angular velocity of link 4 (coupler DE)", "构件 4（连杆 DE）的角速度"),
+    "epsilon4": _n("ε4", "angular acceleration of link 4 (coupler DE)", "构件 4（连杆 DE）的角加速度"),
     # instant centres
     "P13": _n("P13", "instant centre of crank and rocker", "曲柄与摇杆的瞬心"),
     "P24": _n("P24", "instant centre of coupler and frame", "连杆与机架的瞬心"),
@@ -212,8 +212,8 @@ def unit_text(unit: str) -> str:
 
 
 def name_of(answer: str, recipe: str = "") -> AnswerName:
-    """The printed name of ``answer`` (of ``recipe`` when it names it its own way: :data:`RECIPE_NAMES`; a
-    fallback for a name not in :data:`NAMES`).
+    """The printed name of ``answer`` （of ``recipe`` when it names it its own way：：data：`RECIPE_NAMES`; a
+    fallback for a name not in ：data：`NAMES`）.
 
     >>> name_of("theta").symbol, name_of("new_answer").symbol, name_of("omega2", "cam.oscillating").zh
     ('θ', 'new answer', '摆杆角速度')

@@ -34,6 +34,7 @@ from .accept import Accepted
 from .assign import Assignment
 from .drafting import DEGREES, PAPER_MM
 from .spec import Exercise, Spec
+from ..render.page import zh_punct
 from .statements import CHOICE, answer_words, default_template, fill, find_sentence, shown_givens
 
 _DIGITS36 = "0123456789abcdefghijklmnopqrstuvwxyz"
@@ -91,11 +92,11 @@ def statement(ex: Exercise, v: Accepted, lang: str) -> str:
     values = {**shown_givens(ex.recipe, {**defaults, **given}, lang), "choice": choice}
     own = ex.statement.get(lang) if ex.statement is not None else None
     if own is not None:
-        return fill(own, values)
+        return zh_punct(fill(own, values)) if lang == "zh" else fill(own, values)
     template = default_template(ex.recipe, given, get_recipe(ex.recipe).title)[k]
     words = [answer_words(r.name, r.index, given, lang) for r in ex.ask]
     parts = [fill(template, values), find_sentence(words, lang)] + ([choice] if choice else [])
-    return ("" if lang == "zh" else " ").join(parts)
+    return zh_punct("".join(parts)) if lang == "zh" else " ".join(parts)
 
 
 def _langs(lang: str) -> tuple[str, ...]:

@@ -1,0 +1,68 @@
+"""Chinese text uses full-width punctuation (issue 12): every zh statement template of every recipe, every word
+a statement is built from, every printed answer name, and statements rendered with numbers filled in."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from geomcon.render.page import zh_punct
+from geomcon.render.results import NAMES, RECIPE_NAMES
+from geomcon.worksheet import statements as st
+
+def half_width(text: str) -> list[str]:
+    """The places in ``text`` where Chinese text uses half-width punctuation: where :func:`zh_punct` (the rule:
+    a comma, semicolon, colon, question or exclamation mark touching Chinese, brackets around Chinese or opened
+    right after it) would change it. A formula or a point's coordinates after a letter, D(0, 0), stay ASCII."""
+    fixed = zh_punct(text)
+    if fixed == text:
+        return []
+    i = next(k for k, (a, b) in enumerate(zip(text, fixed)) if a != b) if len(fixed) == len(text) else 0
+    return [text[max(0, i - 8):i + 8]]
+
+
+def _zh_words() -> list[tuple[str, str]]:
+    out = [(f"{r} {f or '-'}", zh) for r, forms in st.TEMPLATES.items() for f, (_, zh) in forms.items()]
+    out += [(f"CHOICE {r}", zh) for r, (_, zh) in st.CHOICE.items()]
+    out += [(f"ANSWER_WORDS {k}", zh) for k, (_, zh) in st.ANSWER_WORDS.items()]
+    out += [(f"AT_WORDS {k}", zh) for k, (_, zh) in st.AT_WORDS.items()]
+    for name in ("LAWS", "FOLLOWERS", "ROTATION"):
+        out += [(f"{name} {k}", zh) for k, (_, zh) in getattr(st, name).items()]
+    out += [(name, getattr(st, name)[1]) for name in ("ROLLER", "OMEGA_WORDS", "CAM_DRAW")]
+    out += [(f"result {k}", n.zh) for k, n in {**NAMES, **{"/".join(k): v for k, v in RECIPE_NAMES.items()}}.items()]
+    return out
+
+
+def test_the_detector_can_fail():
+    assert half_width("摇杆长 CD = 90 mm,摆角") and half_width("曲柄(AC > AB)") and half_width("机构?")
+    assert not half_width(zh_punct("摇杆长 CD = 90 mm,摆角 ψ = 40°(极限位置 DC1、DC2); K = (1 + x)/2"))
+
+
+@pytest.mark.parametrize("where, zh", _zh_words(), ids=[w for w, _ in _zh_words()])
+def test_every_zh_text_is_full_width(where, zh):
+    assert not half_width(zh), f"{where}: {half_width(zh)}"
+
+
+def test_rendered_statements_are_full_width():
+    from tests.test_worksheet_statements import FORMS
+    from geomcon.worksheet.accept import Accepted
+    from geomcon.worksheet.key import statement
+    from geomcon.worksheet.spec import parse_spec
+    for (recipe, form), (given, ask) in sorted(FORMS.items()):
+        spec = parse_spec(f'[[exercise]]\nrecipe = "{recipe}"\nask = {ask!r}\n[exercise.given]\n{given}\n'.replace("'", '"'))
+        ex = spec.exercises[0]
+        zh = statement(ex, Accepted(0, ex.given_of(0), None, None, (), True), "zh")
+        assert not half_width(zh), f"{recipe} {form}: {half_width(zh)}"
+        assert zh.endswith("。") and "，" in zh
+
+
+def test_a_spec_statement_in_chinese_is_made_full_width():
+    from geomcon.worksheet.accept import Accepted
+    from geomcon.worksheet.key import statement
+    from geomcon.worksheet.spec import parse_spec
+    spec = parse_spec('[[exercise]]\nrecipe = "crank_rocker.extremes"\nask = ["theta"]\n'
+                      'statement = {en = "AB = {AB}.", zh = "曲柄 AB = {AB} mm,求极位夹角(用作图法)?"}\n'
+                      '[exercise.given]\nAB = 50\nBC = 70\nCD = 80\nAD = 90\n')
+    ex = spec.exercises[0]
+    zh = statement(ex, Accepted(0, ex.given_of(0), None, None, (), False), "zh")
+    assert zh == "曲柄 AB = 50 mm，求极位夹角（用作图法）？"
