@@ -53,6 +53,16 @@ WORKSHEET_SPEC = Path("tests") / "data" / "worksheet_class.toml"
 """The sample worksheet spec the gallery shows (relative to the folder holding ``problems/``)."""
 
 
+def _page_order(path: str) -> tuple[int, bool]:
+    """A worksheet page of the gallery's one student in page order: ``1``, ``1-sd``, ``1-2``, ``1-3``, ``1-3-sd``.
+
+    >>> sorted(["w/1-3-sd.svg", "w/1.svg", "w/1-3.svg", "w/1-2.svg"], key=_page_order)
+    ['w/1.svg', 'w/1-2.svg', 'w/1-3.svg', 'w/1-3-sd.svg']
+    """
+    parts = path.rsplit("/", 1)[-1].removesuffix(".svg").split("-")
+    return (int(parts[1]) if len(parts) > 1 and parts[1].isdigit() else 1, parts[-1] == "sd")
+
+
 def worksheet_gallery(spec_path: Path) -> dict[str, str]:
     """One student's worksheet of the sample spec and its key: ``worksheet/sheets/…``, ``worksheet/key/…``,
     ``worksheet/sheets.html``, ``worksheet/key.html`` (the key's answers are in the key pages)."""
@@ -106,11 +116,11 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
     spec = Path(problems_dir).resolve().parent / WORKSHEET_SPEC
     sheet = worksheet_gallery(spec) if spec.is_file() else {}
     files.update(sheet)
-    pages = sorted(n for n in sheet if n.startswith("worksheet/sheets/"))
+    pages = sorted((n for n in sheet if n.startswith("worksheet/sheets/")), key=_page_order)
     worksheet_line = ("A worksheet of `tests/data/worksheet_class.toml` for one student (`geomcon worksheet … --count 1`): "
                       + ", ".join(f"[{n.split('/')[-1][:-4]}]({n})" for n in pages)
                       + " — [print-ready](worksheet/sheets.html); its key, to lay over the sheet: "
-                      + ", ".join(f"[{n.split('/')[-1][:-4]}]({n})" for n in sorted(x for x in sheet if x.startswith("worksheet/key/")))
+                      + ", ".join(f"[{n.split('/')[-1][:-4]}]({n})" for n in sorted((x for x in sheet if x.startswith("worksheet/key/")), key=_page_order))
                       + " — [key.html](worksheet/key.html).") if sheet else ""
     files["README.md"] = "\n".join([
         "# Gallery",

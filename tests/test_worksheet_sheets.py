@@ -44,9 +44,9 @@ def _student_files(files: dict[str, str]) -> dict[str, str]:
 def test_every_output_byte_is_deterministic(spec, six):
     again = make_worksheet(spec, numbered(6))
     assert again.files == six.files
-    assert {n for n in six.files if n.startswith("sheets/")} >= {f"sheets/{i}-{n}.svg" for i in range(1, 7)
-                                                               for n in (1, 2, 3)}
-    assert {f"key/{i}-{n}.svg" for i in range(1, 7) for n in (1, 2, 3)} == {n for n in six.files if n.startswith("key/")}
+    pages = {f"{i}{'' if n == 1 else f'-{n}'}.svg" for i in range(1, 7) for n in (1, 2, 3)}   # sheets/<id>.svg, <id>-2 …
+    assert {n for n in six.files if n.startswith("sheets/")} >= {f"sheets/{p}" for p in pages}
+    assert {f"key/{p}" for p in pages} == {n for n in six.files if n.startswith("key/")}
 
 
 def test_adding_a_student_changes_no_one_else_s_pages(spec, six):
@@ -58,7 +58,7 @@ def test_adding_a_student_changes_no_one_else_s_pages(spec, six):
     for sid in sections:
         one = re.search(rf'<section[^>]* id="{re.escape(sid)}">.*?</section>', six.files["sheets.html"], re.S)
         assert one.group(0) in seven.files["sheets.html"], sid
-    assert any(n.startswith("sheets/7-") for n in seven.files)
+    assert "sheets/7.svg" in seven.files and "sheets/7-2.svg" in seven.files
 
 
 def _shown_forms(answer: dict) -> set[str]:
@@ -78,13 +78,13 @@ def test_no_answer_in_any_student_file(six, key6):
         for f in forms:
             assert not re.search(rf"(?<![\d.]){re.escape(f)}(?!\d)", text), (name, f)
     # the test can fail: the key pages do show the answers
-    key1 = six.files["key/1-1.svg"]
+    key1 = six.files["key/1.svg"]
     a = key6["students"][0]["exercises"][0]["answers"]["AB"]
     assert f"{a['value']:.{decimals(a['tol'])}f}" in key1
 
 
 def test_a_student_sheet_holds_only_integers_outside_its_text(six):
-    svg = six.files["sheets/1-1.svg"]
+    svg = six.files["sheets/1.svg"]
     attrs = " ".join(re.findall(r'\s(?:d|x|y|cx|cy|r|width|height|font-size|stroke-width|dy)="([^"]*)"', svg))
     assert attrs and not re.search(r"\d\.\d", attrs)
 
@@ -98,8 +98,13 @@ def test_one_sheet_per_page_and_pages_per_student(six, key6):
     assert articles == [s["id"] for s in key6["students"]]
     assert html.count("break-after: page") == 1 and "@page A4-portrait { size: A4 portrait; margin: 0; }" in html
     for s in key6["students"]:                         # each exercise's sheet, and a cam's s–δ page when needed
-        mine = [sid for _, sid in sections if sid.startswith(f"{s['id']}-")]
-        assert [m for m in mine if not m.endswith("-sd")] == [f"{s['id']}-{n}" for n in (1, 2, 3)]
+        mine = [sid for _, sid in sections if sid == s["id"] or sid.startswith(f"{s['id']}-")]
+        assert [m for m in mine if not m.endswith("-sd")] == [s["id"], f"{s['id']}-2", f"{s['id']}-3"]
+        for m in mine:                                 # an s–δ page follows its exercise's page, named after it
+            if m.endswith("-sd"):
+                assert mine[mine.index(m) - 1] == m.removesuffix("-sd")
+    keys = sorted(n for n in six.files if n.startswith("key/"))
+    assert keys == sorted(f"key/{sid}.svg" for _, sid in sections if not sid.endswith("-sd"))
 
 
 def _paths(svg: str, group: str) -> list[list[tuple[float, float]]]:
@@ -121,7 +126,7 @@ def test_the_givens_are_drawn_to_true_scale(six, key6):
     for s in key6["students"]:
         e1, e2, e3 = s["exercises"]
         f1, f2, f3 = (Scale.parse(e["scale"]).factor for e in (e1, e2, e3))
-        svg1 = six.files[f"sheets/{s['id']}-1.svg"]
+        svg1 = six.files[f"sheets/{s['id']}.svg"]
         head = svg1[:svg1.index(">")]
         w, h = (re.search(rf' {k}="(\d+)mm"', head).group(1) for k in ("width", "height"))
         assert f'viewBox="0 0 {w}00 {h}00"' in head and {w, h} == {"210", "297"}
@@ -160,7 +165,7 @@ def test_nothing_overlaps_on_a_page(spec, six):
 
 
 def test_the_key_page_nests_the_construction_at_the_sheet_s_scale(six, key6):
-    svg = six.files["key/1-1.svg"]
+    svg = six.files["key/1.svg"]
     m = re.search(r'<svg height="(\d+)" id="construction" viewBox="0 0 ([\d.]+) ([\d.]+)" width="(\d+)" x="(\d+)" '
                   r'y="(\d+)"', svg)
     assert m, svg[:2000]
@@ -177,7 +182,13 @@ def test_page_names_stay_inside_the_folder_and_never_clash():
     names = [page_name(i, 1) for i in ids]
     assert len(set(names)) == len(names)
     assert all(re.fullmatch(r"[a-z0-9_.-]+", n) and not n.startswith(".") and "/" not in n for n in names)
-    assert page_name("2023001", 2) == "2023001-2"
+    assert page_name("2023001", 1) == "2023001" and page_name("2023001", 2) == "2023001-2"
+    # no id's first page is another id's further page: ids ending as a further page does are hashed
+    ids = ["1", "1-2", "1-sd", "1-2-sd", "2023-001", "2023-15", "x-20", "x-21"]
+    pages = [page_name(i, n) + sd for i in ids for n in range(1, 21) for sd in ("", "-sd")]
+    assert len(set(pages)) == len(pages)
+    assert [page_name(i, 1) for i in ("2023-001", "x-21")] == ["2023-001", "x-21"]
+    assert all("." in page_name(i, 1) for i in ("1-2", "1-sd", "1-2-sd", "2023-15", "x-20"))
 
 
 def test_names_and_ids_are_escaped(tmp_path):

@@ -26,7 +26,7 @@ Examples
 ... ''')
 >>> w = make_worksheet(spec, numbered(2))
 >>> sorted(w.files), w.summary[0][:40]
-(['key.html', 'key.json', 'key/1-1.svg', 'key/2-1.svg', 'sheets.html', 'sheets/1-1.svg', 'sheets/2-1.svg', 'variants.csv'], 'exercise 1 (guide_bar.extremes): 2 of 2 ')
+(['key.html', 'key.json', 'key/1.svg', 'key/2.svg', 'sheets.html', 'sheets/1.svg', 'sheets/2.svg', 'variants.csv'], 'exercise 1 (guide_bar.extremes): 2 of 2 ')
 """
 from __future__ import annotations
 

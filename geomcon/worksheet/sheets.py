@@ -8,16 +8,21 @@ answer box per asked answer with its unit, and the givens drawn to true scale at
 student's page holds no answer: nothing of the solution but the givens is read, and every coordinate is an
 integer in hundredths of a millimetre.
 
-Page names (:func:`page_name`) are ``<id>-<n>`` (n the exercise's number) when the student's id is made of
-lower-case letters, digits, ``_`` and ``-`` only; any other id (upper case, a path separator, CJK …) is written
-as its safe characters lower-cased (or ``id`` when none is left), a dot (which no plain id holds) and 8 hexadecimal digits of its SHA-256:
-a name depends on the id alone (adding a student renames no one's file) and cannot leave the output folder or
-clash by case. A cam whose figure leaves its s–δ axes no room on the page gets a second page, ``<name>-sd``.
+Page names (:func:`page_name`) keep issue 12's contract, ``sheets/<id>.svg`` and ``key/<id>.svg``: a student's
+first page (exercise 1) is ``<id>``, the page of exercise n ``<id>-<n>`` (``-2``, ``-3`` …, as the print sheets of
+``geomcon solve`` continue with ``out-2.svg``), and the key page of a sheet has the sheet's name. A cam whose figure
+leaves its s–δ axes no room on the page gets a second page named after its exercise's page, ``<page>-sd``
+(``<id>-sd``, ``<id>-3-sd``); the key has no such page. An id is written as it is when it is made of lower-case
+letters, digits, ``_`` and ``-`` only and does not end in what a further page appends (``-2`` … ``-20``,
+``-sd``), so that no id's first page is another id's further page; any other id (upper case, a path separator,
+CJK, ``2023-15`` …) is written as its safe characters lower-cased (or ``id`` when none is left), a dot (which no
+plain id holds) and 8 hexadecimal digits of its SHA-256: a name depends on the id alone (adding a student renames
+no one's file) and cannot leave the output folder or clash by case.
 
 Examples
 --------
->>> page_name("2023001", 1), page_name("../Ann", 2)
-('2023001-1', 'ann.eb825571-2')
+>>> page_name("2023001", 1), page_name("2023001", 2), page_name("../Ann", 2), page_name("2023-001", 1)
+('2023001', '2023001-2', 'ann.eb825571-2', '2023-001')
 """
 from __future__ import annotations
 
@@ -46,6 +51,9 @@ from .statements import number
 FONT = "Noto Sans CJK SC, Noto Sans, DejaVu Sans, sans-serif"
 INK = "#000"
 _SAFE = re.compile(r"[a-z0-9_-]{1,64}")
+_SUFFIX = re.compile(r"-([2-9]|1[0-9]|20)(-sd)?$|-sd$")
+"""What a further page appends to a student's page name (exercises 2 … 20, a cam's s–δ page): an id that
+ends so is written in the hashed form, or its first page could be another student's further page."""
 
 SYMBOLS = {"theta": "θ", "psi": "ψ", "gamma_min": "γmin", "phi": "φ", "alpha": "α", "alpha_max_rise": "αmax (rise)",
            "alpha_max_return": "αmax (return)", "rho_min_pitch": "ρmin", "rho_min_actual": "ρa,min", "K": "K"}
@@ -56,12 +64,15 @@ SD_PAGE_H = 90.0
 
 
 def page_name(student_id: str, n: int) -> str:
-    """The file name (without ``.svg``) of a student's page of exercise ``n`` (see the module)."""
-    if _SAFE.fullmatch(student_id):
-        return f"{student_id}-{n}"
-    safe = re.sub(r"[^a-z0-9_-]+", "", student_id.lower())[:40]
-    digest = hashlib.sha256(student_id.encode("utf-8")).hexdigest()[:8]
-    return f"{safe or 'id'}.{digest}-{n}"
+    """The file name (without ``.svg``) of a student's page of exercise ``n`` (see the module): ``<id>`` for
+    exercise 1, ``<id>-<n>`` for the others."""
+    if _SAFE.fullmatch(student_id) and not _SUFFIX.search(student_id):
+        base = student_id
+    else:
+        safe = re.sub(r"[^a-z0-9_-]+", "", student_id.lower())[:40]
+        digest = hashlib.sha256(student_id.encode("utf-8")).hexdigest()[:8]
+        base = f"{safe or 'id'}.{digest}"
+    return base if n == 1 else f"{base}-{n}"
 
 
 @dataclass(frozen=True)
