@@ -2,7 +2,7 @@
 
 A student's variants of an exercise are tried in an order of the student's own: the distinct pool indices of
 ``draw(seed, exercise digest, exercise number, student id, t) mod pool`` for t = 0, 1, … (after
-:data:`DRAWS` draws, the indices after the last one in turn, so a small pool is covered whole). The first
+:data:`DRAWS` draws, the indices after the last one in turn, so that the order visits the whole pool). The first
 accepted variant that no student listed earlier holds is the student's. So:
 
 - a student's variant depends on the spec's exercise (its recipe and givens: editing a statement, points or
@@ -10,12 +10,23 @@ accepted variant that no student listed earlier holds is the student's. So:
   when two sequences meet on the same accepted variant (rare in a large pool);
 - a student added at the end of the class list changes no one else's variant, and ``--count`` N + 1 keeps
   the variants of 1 … N;
-- no two students share a variant unless a student's :data:`TRIES` tries find accepted variants only already
-  taken (the pool is exhausted or nearly so: a pool no larger than :data:`TRIES` is then truly exhausted);
-  the statistics count such students (``shared``).
+- no two students share a variant while the pool allows: a student whose :data:`TRIES` tries find accepted
+  variants, all taken, goes on along their order through the rest of the pool (at most :data:`BUDGET` variants
+  judged per exercise) for one nobody holds. Only when the whole pool is judged and every acceptable variant is
+  taken (or the budget ends the search) does the student share, taking of the variants met the one held by the
+  fewest students (the first in their order on a tie), so that the class is spread evenly. The statistics say
+  so: ``shared`` students, ``exhausted`` (the whole pool was judged) and then the pool's exact number of
+  acceptable variants.
+
+The trade-off: "a variant derived from (spec, exercise, student id) alone" and "adding a student changes no one
+else's" cannot both hold with "no two students share while the pool allows": uniqueness needs to know who came
+first. The class order decides, and only for a student whose own order meets a taken variant first; a student
+appended later never moves an earlier one.
 
 A spec whose acceptance is too low is refused: when a student's :data:`TRIES` tries find no acceptable variant
-at all, or an exercise has judged :data:`BUDGET` variants, with the acceptance rate and the rejection counts.
+and none is known in the whole exercise (a student who finds none while others have goes on through the pool
+likewise), or an exercise has judged :data:`BUDGET` variants before every student has one, with the acceptance
+rate and the rejection counts.
 
 Examples
 --------
@@ -70,6 +81,14 @@ class Stats:
     rejected: dict[str, int] = field(default_factory=dict)
     examples: dict[str, str] = field(default_factory=dict)
     shared: int = 0
+    most: int = 1
+    """The most students holding one variant."""
+
+    @property
+    def exhausted(self) -> bool:
+        """Whether the whole pool was judged (then :attr:`accepted` is the pool's exact number of acceptable
+        variants)."""
+        return self.tried == self.pool
 
     @property
     def rate(self) -> float:
@@ -81,7 +100,17 @@ class Stats:
         why = ", ".join(f"{k} {v}" for k, v in self.rejected.items())
         return (f"exercise {self.n} ({self.recipe}): {self.accepted} of {self.tried} variants judged were accepted "
                 f"({100 * self.rate:.0f} %) from a pool of {self.pool}" + (f"; rejected: {why}" if why else "")
-                + (f"; {self.shared} students share a variant (pool exhausted)" if self.shared else ""))
+                + (f"; {self.shared} students share a variant: {self.short()}" if self.shared else ""))
+
+    def short(self) -> str:
+        """Why students share a variant: the pool holds no more acceptable variants, or the budget ended the
+        search."""
+        if self.exhausted:
+            return (f"the pool of {self.pool} variants holds only {self.accepted} acceptable ones (every variant "
+                    f"judged), so at most {self.accepted} students can have a variant of their own; each variant is "
+                    f"held by at most {self.most} students (widen the givens' ranges or relax [require] for more)")
+        return (f"{BUDGET} variants of the pool of {self.pool} judged found only {self.accepted} acceptable ones "
+                f"(the rest of the pool was not judged); each variant is held by at most {self.most} students")
 
 
 @dataclass(frozen=True)
@@ -129,16 +158,18 @@ def assign_exercise(ex: Exercise, students: Sequence[Student], paper: Paper, see
     cache: dict[int, Accepted | Rejected] = {}
     counts: Counter = Counter()
     examples: dict[str, str] = {}
-    taken: set[int] = set()
+    holders: Counter = Counter()                  # pool index → students holding it
     out: list[Accepted] = []
     shared = 0
     for s in students:
         mine: Accepted | None = None
-        fallback: Accepted | None = None
+        met: list[Accepted] = []                   # accepted variants met, all taken
         for n, idx in enumerate(order(seed, ex, s.id), 1):
             v = cache.get(idx)
             if v is None:
                 if len(cache) >= BUDGET:
+                    if len(cache) > sum(counts.values()):
+                        continue                   # past the budget: only variants already judged are met
                     raise _refusal(ex, f"{BUDGET} variants judged without filling the class", counts, examples,
                                    len(cache), len(cache) - sum(counts.values()))
                 v = cache[idx] = judge_fn(ex, idx, paper)
@@ -146,27 +177,26 @@ def assign_exercise(ex: Exercise, students: Sequence[Student], paper: Paper, see
                     counts[v.reason] += 1
                     examples.setdefault(v.reason, v.detail)
             if isinstance(v, Accepted):
-                if idx not in taken:
+                if not holders[idx]:
                     mine = v
                     break
-                if fallback is None:
-                    fallback = v
-            if n >= TRIES:
-                break
+                met.append(v)
+            if n >= TRIES and not met and len(cache) == sum(counts.values()):
+                break                              # TRIES tries, and no acceptable variant known at all
         if mine is None:
-            if fallback is None:
+            if not met:
                 tried = min(TRIES, ex.pool)
                 why = (f"unsatisfiable [exercise.require]: no variant among the {tried} tried for student {s.id!r} "
                        "meets it" if counts and counts.most_common(1)[0][0] == "require"
                        else f"no acceptable variant among the {tried} tried for student {s.id!r}")
                 raise _refusal(ex, why, counts, examples, len(cache), len(cache) - sum(counts.values()))
-            mine = fallback
+            mine = min(met, key=lambda x: holders[x.index])        # the least held; the first met on a tie
             shared += 1
-        taken.add(mine.index)
+        holders[mine.index] += 1
         out.append(mine)
     rejected = {k: counts[k] for k in REASONS if counts[k]}
     stats = Stats(ex.n, ex.recipe, ex.pool, len(cache), len(cache) - sum(counts.values()), rejected,
-                  {k: examples[k] for k in rejected}, shared)
+                  {k: examples[k] for k in rejected}, shared, max(holders.values(), default=1))
     return out, stats
 
 

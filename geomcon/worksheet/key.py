@@ -119,16 +119,20 @@ def key_data(spec: Spec, a: Assignment, *, paper: str, lang: str, seed: int | st
     """The key as a JSON-ready dictionary (see the module)."""
     used = spec.seed if seed is None else seed
     students = []
+    held: list[dict[int, list[str]]] = [{} for _ in spec.exercises]      # per exercise: variant → ids holding it
     for s, variants in zip(a.students, a.variants):
         exercises = []
-        for ex, v in zip(spec.exercises, variants):
+        for j, (ex, v) in enumerate(zip(spec.exercises, variants)):
+            before = held[j].setdefault(v.index, [])
             exercises.append({
                 "n": ex.n, "recipe": ex.recipe,
                 "given": plain({k: x for k, x in v.given.items() if x is not None}),
                 "scale": str(v.scale), "sheet": str(v.sheet),
                 "statement": {lg: statement(ex, v, lg) for lg in _langs(lang)},
                 "answers": _answers(ex, v),
+                **({"shared_with": list(before)} if before else {}),
             })
+            before.append(s.id)
         students.append({"id": s.id, "name": s.name, "variant": variant_code([v.index for v in variants]),
                          "exercises": exercises})
     return {
@@ -137,6 +141,8 @@ def key_data(spec: Spec, a: Assignment, *, paper: str, lang: str, seed: int | st
         "exercises": [{"n": ex.n, "recipe": ex.recipe, "ask": [r.text for r in ex.ask], "points": plain(list(ex.points)),
                        "pool": st.pool, "judged": st.tried, "accepted": st.accepted,
                        "acceptance": float(f"{st.rate:.3g}"), "rejected": dict(st.rejected), "shared": st.shared,
+                       "pool_exhausted": st.exhausted, "acceptable": st.accepted if st.exhausted else None,
+                       **({"sharing": st.short()} if st.shared else {}),
                        **({"diagnose": {k: list(v) for k, v in ex.diagnose.items()}} if ex.diagnose else {})}
                       for ex, st in zip(spec.exercises, a.stats)],
         "students": students,
