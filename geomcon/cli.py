@@ -47,34 +47,41 @@ def _fail_write(where: str, exc: OSError) -> int:
     return _fail(where, f"cannot write output: {exc.strerror or exc}" + (f" ({exc.filename})" if exc.filename else ""))
 
 
-def _summary(sol) -> str:
+def _summary(sol, lang: str = "en") -> str:
+    """The text a solve prints: the header, the results as the figure prints them (``θ = 12.506° (= analytic;
+    textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings (``警告：`` and the Chinese
+    sentence for zh, both for ``both``) and the steps evaluated."""
+    from .render.results import result_line
+    from .render.warning_words import warning_zh
+
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
-    lines += [f"  {line}" for line in sol.info_lines()]
+    lines += [f"  {line}" for line in sol.figure_lines(lang)]
     others = sol.solution_values[1:]
     numbers = sol.solution_numbers
+    units = {q.name: q.unit for q in sol.recipe.answers}
+    zh = lang == "zh"
     if others:
-        which = ("the textbook's choice (solution 1)" if numbers[0] == 1 else
-                 f"solution {numbers[0]} (--solution {numbers[0]}; the textbook's choice is solution 1)")
-        lines.append(f"  {len(others) + 1} valid solutions; the one above is {which}; the others "
-                     "(--solution N draws solution N):")
+        if zh:
+            which = ("教材所取的解（解 1）" if numbers[0] == 1 else f"解 {numbers[0]}（--solution {numbers[0]}；教材所取的为解 1）")
+            lines.append(f"  共 {len(others) + 1} 个有效解；上面是{which}；其余的解（--solution N 画出解 N）：")
+        else:
+            which = ("the textbook's choice (solution 1)" if numbers[0] == 1 else
+                     f"solution {numbers[0]} (--solution {numbers[0]}; the textbook's choice is solution 1)")
+            lines.append(f"  {len(others) + 1} valid solutions; the one above is {which}; the others "
+                         "(--solution N draws solution N):")
         for i, other in zip(numbers[1:], others):
-            shown = ", ".join(f"{k} = {_shown_answer(v)}" for k, v in other.items())
-            lines.append(f"    solution {i}: {shown}")
-    lines += [f"  warning: {w}" for w in sol.warnings]
+            shown = ("，" if zh else ", ").join(result_line(k, v, units.get(k, ""), lang="zh" if zh else "en",
+                                                            recipe=sol.recipe.name) for k, v in other.items())
+            lines.append(f"    {'解' if zh else 'solution'} {i}{'：' if zh else ': '}{shown}")
+    for w in sol.warnings:
+        words = warning_zh(w) if lang != "en" else None
+        if lang != "zh" or words is None:
+            lines.append(f"  warning: {w}")
+        if words is not None:
+            lines.append(f"  警告：{words}")
     st = sol.stats
     lines.append(f"  steps evaluated {st['steps_evaluated']} of {st['steps_total']}")
     return "\n".join(lines)
-
-
-def _shown_answer(v) -> str:
-    """An answer in the text summary: 4 decimals, lists in brackets, bools as words."""
-    if isinstance(v, bool):
-        return "yes" if v else "no"
-    if isinstance(v, str):
-        return v
-    if isinstance(v, (tuple, list)):
-        return "[" + ", ".join(_shown_answer(x) for x in v) + "]"
-    return f"{v:.4f}"
 
 
 def _solution_number(text: str) -> int:
@@ -107,7 +114,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
             sol = solve(load_problem(path))
             if getattr(args, "solution", None) is not None:
                 sol = sol.as_solution(_solution_number(args.solution))
-            text = to_json_text(sol) if args.json else _summary(sol) + "\n"
+            text = to_json_text(sol) if args.json else _summary(sol, args.lang) + "\n"
             files: dict[Path, str] = {}
             if args.svg or args.html or args.steps:
                 from .render.page import PageSpec, sheet_names

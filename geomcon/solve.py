@@ -560,13 +560,16 @@ class Solution:
 
     def sheets(self, page=None, *, upto: int | None = None, viewbox=None) -> list[str]:
         """The printed sheets (:func:`geomcon.render.svg.render_sheets`): the drawing at a standard scale with
-        results, warnings and title block, then the construction protocol; ``page`` a
+        results, warnings (in the page's language: :mod:`geomcon.render.warning_words`) and title block, then the
+        construction protocol; ``page`` a
         :class:`~geomcon.render.page.PageSpec` (default A4 landscape, both languages)."""
         from .render.page import PageSpec
         from .render.svg import render_sheets
+        from .render.warning_words import warning_lines
         page = page or PageSpec()
         return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(),
-                             info=self.figure_lines(page.lang), warnings=self.warnings, info_steps=self.info_steps(),
+                             info=self.figure_lines(page.lang), warnings=warning_lines(self.warnings, page.lang),
+                             info_steps=self.info_steps(),
                              page=page, problem=self.problem.id + ".toml" if self.problem.path else self.problem.id,
                              recipe=self.recipe.name)
 

@@ -203,7 +203,8 @@ def test_the_summary_says_how_many_solutions_there_are_and_lists_the_others(caps
     assert main(["solve", str(ROOT / "problems" / "001-10_crank_rocker_design_coupler.toml")]) == 0
     out = capsys.readouterr().out
     assert "2 valid solutions; the one above is the textbook's choice (solution 1)" in out
-    assert "solution 2: AB = 66.9811, BC = 260.0000, AD = 467.6398" in out
+    assert "solution 2: AB = 66.981 mm, BC = 260.000 mm, AD = 467.640 mm" in out
+    assert "C1 folded: yes, A on D's side of C1C2: no" in out       # yes/no answers as the figure words them
     assert main(["solve", str(ROOT / "problems" / "001-08_crank_rocker.toml")]) == 0
     assert "valid solutions" not in capsys.readouterr().out
 
@@ -212,7 +213,7 @@ def test_a_printed_answer_beyond_drafting_accuracy_is_doubtful_in_text_json_and_
     p = _write(tmp_path, GOOD.replace("theta = 12.5", "theta = 25"))
     assert main(["solve", str(p)]) == 0                   # a printed answer never fails the solve
     out = capsys.readouterr().out
-    assert "(printed 25, +99.91 %, doubtful: beyond drafting accuracy)" in out
+    assert "θ = 12.506° (= analytic; textbook 25, +99.91 %, doubtful)" in out
     assert "published theta = 25 is doubtful" in out
     assert main(["solve", str(p), "--json", "--svg", str(tmp_path / "f.svg")]) == 0
     (pub,) = json.loads(capsys.readouterr().out)["published"]
@@ -231,3 +232,37 @@ def test_warnings_are_shown_in_the_figure_every_frame_and_the_player(tmp_path, c
     clean = _write(tmp_path, GOOD, name="clean.toml")
     assert main(["solve", str(clean), "--svg", str(tmp_path / "c.svg")]) == 0
     assert "Warnings" not in (tmp_path / "c.svg").read_text(encoding="utf-8")
+
+
+def test_the_summary_reads_as_the_figure_in_the_language_asked(tmp_path, capsys):
+    """The terminal prints the Results block's lines (θ = 12.506° …, not theta = 12.5056° ✓ twin) and the
+    warnings in the language of --lang: English, Chinese (警告：…, full-width) or both."""
+    p = _write(tmp_path, GOOD.replace("theta = 12.5", "theta = 25"))
+    assert main(["solve", str(p), "--lang", "en"]) == 0
+    en = capsys.readouterr().out
+    assert "  θ = 12.506° (= analytic; textbook 25, +99.91 %, doubtful)\n" in en and "✓ twin" not in en
+    assert "\n  theta =" not in en and "警告" not in en and "  warning: published theta = 25 is doubtful" in en
+    assert main(["solve", str(p), "--lang", "zh"]) == 0
+    zh = capsys.readouterr().out
+    assert "  极位夹角 θ = 12.506°（与解析解一致；教材 25，+99.91 %，存疑）" in zh
+    assert "  警告：教材答案 theta = 25 存疑：与精确值 12.5056 相差 +99.91 %，超出作图精度（±3 %）" in zh
+    assert "warning:" not in zh
+    assert main(["solve", str(p)]) == 0                  # --lang both, the default
+    both = capsys.readouterr().out
+    assert "warning: published theta = 25" in both and "警告：教材答案 theta = 25" in both
+    assert main(["solve", str(p), "--json"]) == 0        # JSON keeps its keys and English warnings: a contract
+    data = json.loads(capsys.readouterr().out)
+    assert data["warnings"][0].startswith("published theta = 25 is doubtful") and "theta" in data["answers"]
+
+
+def test_warnings_in_the_figure_follow_lang(tmp_path, capsys):
+    p = _write(tmp_path, GOOD.replace("theta = 12.5", "theta = 25"))
+    for lang, has, lacks in (("zh", "教材答案 theta = 25 存疑", "published theta"),
+                             ("en", "published theta = 25 is doubtful", "教材答案"),
+                             ("both", "教材答案 theta = 25 存疑", None)):
+        out = tmp_path / f"{lang}.svg"
+        assert main(["solve", str(p), "--svg", str(out), "--html", str(tmp_path / f"{lang}.html"), "--lang", lang]) == 0
+        capsys.readouterr()
+        for f in (out, tmp_path / f"{lang}.html"):
+            text = f.read_text(encoding="utf-8")
+            assert has in text and (lacks is None or lacks not in text), (lang, f.name)

@@ -77,48 +77,7 @@ def text(en: str, zh: str, lang: str) -> str:
     return en if lang == "en" or not zh else zh if lang == "zh" else f"{en}  {zh}"
 
 
-def _cjk(ch: str) -> bool:
-    o = ord(ch)
-    return 0x2E80 <= o <= 0x9FFF or 0xF900 <= o <= 0xFAFF or 0x3000 <= o <= 0x303F or 0xFF00 <= o <= 0xFFEF
-
-
-_FULL = {",": "，", ";": "；", ":": "：", "(": "（", ")": "）", "?": "？", "!": "！"}
-
-
-def zh_punct(s: str) -> str:
-    """Chinese text with full-width punctuation: a comma, semicolon, colon, question or exclamation mark next to
-    a Chinese character becomes ，；：？！ (in a text holding Chinese, a comma, semicolon or colon followed by
-    neither a space nor a digit too: ``s–δ:δ 轴``), brackets around Chinese text or opened right after a
-    Chinese ideograph （）; a formula keeps its ASCII signs (``K = (180° + θ)/(180° − θ)``, ``1:2``, ``[1, 2]``).
-
-    >>> zh_punct("在机架线上取 D,使 AD = 90")
-    '在机架线上取 D，使 AD = 90'
-    >>> zh_punct("交摇杆圆于 C1(位于直线 AD 上方的交点); K = (180° + θ)/(180° − θ)")
-    '交摇杆圆于 C1（位于直线 AD 上方的交点）；K = (180° + θ)/(180° − θ)'
-    >>> zh_punct("验证 AB 为曲柄(AC > AB + e),何时不能成为机构?位移线图 s–δ:δ 轴,比例 1:2")
-    '验证 AB 为曲柄（AC > AB + e），何时不能成为机构？位移线图 s–δ：δ 轴，比例 1:2'
-    """
-    out = list(s)
-    stack: list[int] = []
-    chinese = any(_cjk(c) for c in s)
-    for i, ch in enumerate(s):
-        if ch == "(":
-            stack.append(i)
-        elif ch == ")" and stack:
-            j = stack.pop()
-            if any(_cjk(c) for c in s[j + 1:i]) or (j > 0 and "\u4e00" <= s[j - 1] <= "\u9fff"):
-                out[j], out[i] = _FULL["("], _FULL[")"]
-        elif ch in ",;:?!":
-            before = "".join(out[:i]).rstrip()[-1:]
-            after = s[i + 1:].lstrip()[:1]
-            nxt = s[i + 1:i + 2]
-            if ((before and _cjk(before)) or (after and _cjk(after) and ch not in "?!")
-                    or (chinese and ch in ",;:" and nxt and not nxt.isspace() and not nxt.isdigit())):
-                out[i] = _FULL[ch]
-    text = "".join(out)
-    for full in "，；：？！":
-        text = text.replace(full + " ", full)
-    return text
+from .zh import _cjk, zh_punct  # noqa: E402  (re-exported: Chinese punctuation lives in a module of its own)
 
 
 def frame_box(sheet: Sheet) -> Box:
