@@ -31,7 +31,7 @@ def test_solution_n_is_drawn_and_reported(n, tmp_path, capsys):
     svg = tmp_path / "s.svg"
     assert main(["solve", str(JAW), "--solution", str(n), "--svg", str(svg)]) == 0
     out = capsys.readouterr().out
-    assert f"AB = {want['AB']:.4f} mm" in out.splitlines()[1]            # the answers shown are solution n's
+    assert f"AB = {want['AB']:.3f} mm" in out.splitlines()[1]            # the answers shown are solution n's
     text = svg.read_text()
     assert (f"solution {n} of 4" in text) == (n > 1)
     lines = sol.as_solution(n).figure_lines("en")                      # the sheet's results: solution n's

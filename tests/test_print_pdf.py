@@ -27,12 +27,12 @@ DPI = 600
 TOL = 0.2               # mm on paper
 
 
-def _print(tmp: Path, page: PageSpec) -> tuple[Path, list[str]]:
-    sol = solve(load_problem(ROOT / "problems" / "001-08_crank_rocker.toml"))
+def _print(tmp: Path, page: PageSpec, problem: str = "001-08_crank_rocker") -> tuple[Path, list[str]]:
+    sol = solve(load_problem(ROOT / "problems" / f"{problem}.toml"))
     sheets = sol.sheets(page)
-    html = tmp / "001-08.html"
+    html = tmp / f"{problem}.html"
     html.write_text(sol.html(page, sheets), encoding="utf-8")
-    pdf = tmp / "001-08.pdf"
+    pdf = tmp / f"{problem}.pdf"
     out = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-pdf-header-footer",
                           f"--print-to-pdf={pdf}", html.as_uri() + "#step=999"], capture_output=True, text=True,
                          timeout=180)
@@ -59,10 +59,10 @@ def test_every_printed_page_is_a4_landscape_one_per_sheet(printed):
         assert abs(w - 297.0) <= TOL and abs(h - 210.0) <= TOL, (w, h)
 
 
-def _raster(pdf: Path, tmp: Path) -> np.ndarray:
-    """Page 1 in grey at :data:`DPI` (a binary PGM from pdftoppm)."""
-    stem = tmp / "page1"
-    subprocess.run([PDFTOPPM, "-gray", "-r", str(DPI), "-f", "1", "-l", "1", "-singlefile", str(pdf), str(stem)],
+def _raster(pdf: Path, tmp: Path, page: int = 1) -> np.ndarray:
+    """Page ``page`` in grey at :data:`DPI` (a binary PGM from pdftoppm)."""
+    stem = tmp / f"page{page}"
+    subprocess.run([PDFTOPPM, "-gray", "-r", str(DPI), "-f", str(page), "-l", str(page), "-singlefile", str(pdf), str(stem)],
                    check=True, capture_output=True, timeout=180)
     data = stem.with_suffix(".pgm").read_bytes()
     m = re.match(rb"P5\s+(\d+)\s+(\d+)\s+(\d+)\s", data)
@@ -88,7 +88,13 @@ def test_a_length_measured_on_the_printed_page_is_the_stated_one(printed, tmp_pa
     assert abs(img.shape[1] / DPI * 25.4 - 297.0) <= TOL
     left, right = _dark_extent(img, 105.0, 5.0, 292.0)          # outermost ink across the middle: the frame
     assert abs(left - (20.0 - 0.35)) <= TOL and abs(right - (287.0 + 0.35)) <= TOL, (left, right)
-    root = ET.fromstring(sheets[0])
+    _check_scale_bar(img, sheets[0])
+
+
+def _check_scale_bar(img: np.ndarray, sheet: str) -> float:
+    """The scale bar of ``sheet`` measured on its printed page is its stated length × the stated scale; returns
+    the scale factor (paper / real)."""
+    root = ET.fromstring(sheet)
     bar = root.find(f".//{SVG}g[@id='scale']")
     x0, y, x1 = map(float, re.match(r"M([\d.]+) ([\d.]+)H([\d.]+)", bar.find(f"{SVG}path").get("d")).groups())
     stated = float(re.search(r">([\d.]+) mm<", ET.tostring(bar, encoding="unicode")).group(1))
@@ -97,3 +103,36 @@ def test_a_length_measured_on_the_printed_page_is_the_stated_one(printed, tmp_pa
     a, b = _dark_extent(img, y, x0 - 3.0, x1 + 3.0)
     assert abs((b - a - 0.3) - stated * factor) <= TOL, (b - a - 0.3, stated * factor)
     assert abs(a - (x0 - 0.15)) <= TOL                           # and where the sheet puts it
+    assert f"{scale.group(1)}:{scale.group(2)}" in re.sub(r"<[^>]+>", " ", ET.tostring(
+        root.find(f".//{SVG}g[@id='title-block']"), encoding="unicode"))   # the title block states the same scale
+    return factor
+
+
+def _dark_run(img: np.ndarray, x_mm: float, y0_mm: float, y1_mm: float) -> float:
+    """The centre (mm) of the dark pixels in the column at ``x_mm`` between ``y0_mm`` and ``y1_mm``."""
+    px = DPI / 25.4
+    col = img[int(y0_mm * px):int(y1_mm * px), int(round(x_mm * px))]
+    dark = np.nonzero(col < 160)[0]
+    assert dark.size, (x_mm, y0_mm, y1_mm)
+    return y0_mm + (dark[0] + dark[-1] + 1) / 2 / px
+
+
+@pytest.mark.skipif(PDFTOPPM is None, reason="pdftoppm not installed (apt-get install poppler-utils)")
+def test_a_cam_is_printed_at_a_scale_to_construct_on(tmp_path):
+    """200-01 (r0 = 40 mm) on A4 portrait: the cam alone on sheet 1 at 1:1 — its base circle measured on the
+    printed page is 80.0 mm across (it was 40 mm at 1:2 when the s–δ diagram shared the sheet) — and the s–δ
+    diagram on sheet 2 at its own stated scale, whose scale bar measures true."""
+    pdf, sheets = _print(tmp_path, PageSpec("A4", "portrait", "en"), "200-01_cam_roller_offset")
+    boxes = _media_boxes(pdf)
+    assert len(boxes) == len(sheets) >= 3 and all(abs(w - 210.0) <= TOL and abs(h - 297.0) <= TOL for w, h in boxes)
+    one = _raster(pdf, tmp_path, 1)
+    assert _check_scale_bar(one, sheets[0]) == 1.0
+    circle = ET.fromstring(sheets[0]).find(f".//{SVG}g[@id='step-base_circle']/{SVG}circle")
+    cx, cy, r = (float(circle.get(k)) for k in ("cx", "cy", "r"))
+    assert r == 40.0                                             # r0 = 40 mm drawn as 40 mm
+    x = cx - 0.3 * r                                             # a chord clear of O's ground symbol and the axes
+    half = r * (1 - 0.09) ** 0.5
+    top, bottom = _dark_run(one, x, cy - half - 1.0, cy - half + 1.0), _dark_run(one, x, cy + half - 1.0, cy + half + 1.0)
+    assert abs((bottom - top) - 2 * half) <= TOL, (bottom - top, 2 * half)
+    assert "diagram-head" in sheets[1] and "step-sd_curve" in sheets[1] and "step-sd_curve" not in sheets[0]
+    assert _check_scale_bar(_raster(pdf, tmp_path, 2), sheets[1]) == 0.5

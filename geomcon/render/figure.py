@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Iterable
+from typing import Any, Callable, Iterable
 
 import numpy as np
 import shapely
@@ -71,11 +71,13 @@ class Figure:
 
 
 # ---------------------------------------------------------------------------------------------- extent
-def shown_steps(scene: Scene, upto: int | None) -> tuple[list[tuple[int, Step]], int]:
-    """The (number, step) pairs of frames 1…upto and the number of frames shown."""
+def shown_steps(scene: Scene, upto: int | None, keep: Callable[[Step], bool] | None = None
+                ) -> tuple[list[tuple[int, Step]], int]:
+    """The (number, step) pairs of frames 1…upto (only the steps ``keep`` keeps, when given: a sheet that draws
+    part of the construction) and the number of frames shown."""
     frames = scene.frames()
     n = len(frames) if upto is None else max(0, min(int(upto), len(frames)))
-    return [(i, s) for i, group in enumerate(frames[:n], 1) for s in group], n
+    return [(i, s) for i, group in enumerate(frames[:n], 1) for s in group if keep is None or keep(s)], n
 
 
 def _points_of(v: Any) -> list[Point]:
@@ -148,11 +150,12 @@ def fit_view(content: Box, target: float = FIG_TARGET) -> Box:
 # ---------------------------------------------------------------------------------------------- building
 def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
                  origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET,
-                 mu: float | None = None) -> Figure:
+                 mu: float | None = None, keep: Callable[[Step], bool] | None = None) -> Figure:
     """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted;
     ``target`` is the paper width aimed at, unless the scale ``mu`` (model mm per paper mm) is given: then the
-    view is ``viewbox``, or the content with :data:`FIG_MARGIN` paper mm around it, drawn at exactly ``mu``."""
-    steps, n = shown_steps(scene, upto)
+    view is ``viewbox``, or the content with :data:`FIG_MARGIN` paper mm around it, drawn at exactly ``mu``;
+    ``keep`` draws only the steps it keeps (a cam on one sheet, its s–δ diagram on another)."""
+    steps, n = shown_steps(scene, upto, keep)
     values = scene.evaluate([s.key for _, s in steps])
     if mu is None:
         box = viewbox or fit_view(content_box(scene, steps, values), target)

@@ -26,14 +26,14 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import svgwrite
 
 from ..paper import STANDARD, Scale, Sheet, choose_scale
 from ..scene import Scene
 from .figure import Figure, build_figure, content_box, shown_steps
-from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, title_block,
+from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
                    title_block_box)
 from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
@@ -149,7 +149,8 @@ def _mu(scale: Scale) -> float:
 
 
 def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (), warnings: Sequence[str] = (),
-                 upto: int | None = None, viewbox: Box | None = None) -> tuple[SheetLayout, Scale, View]:
+                 upto: int | None = None, viewbox: Box | None = None, keep: Callable[[Any], bool] | None = None
+                 ) -> tuple[SheetLayout, Scale, View]:
     """Where sheet 1 puts the drawing: the layout, the standard scale, and the view (model box, μl, top-left
     corner on paper) — the drawing centred in the layout's area.
 
@@ -158,7 +159,7 @@ def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] 
     >>> str(scale), view.mu
     ('1:1', 1.0)
     """
-    steps, _ = shown_steps(scene, upto)
+    steps, _ = shown_steps(scene, upto if keep is None else None, keep)
     content = viewbox or content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
     sl, scale = _best_layout(page, info, warnings, content, 0.0 if viewbox else FIG_MARGIN)
     mu = _mu(scale)
@@ -198,7 +199,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
                   info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
                   recipe: str = "") -> list[str]:
     """The printed sheets of the scene (or of its frame ``upto``): sheet 1 the drawing at a standard scale
-    with its scale bar, results, warnings and title block; then the construction protocol's sheets.
+    with its scale bar, results, warnings and title block; a cam's s–δ diagram on sheet 2 at its own scale when
+    that draws the cam larger (:func:`diagram_apart`); then the construction protocol's sheets.
 
     Parameters
     ----------
@@ -231,14 +233,19 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     """
     sheet, lang = page.sheet, page.lang
     sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
-    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu)
+    apart = None if viewbox is not None else diagram_apart(scene, page, info, warnings, scale)
+    if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
+        sl, scale, view = apart
+    keep = None if apart is None else _not_diagram
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
     origin = view.origin
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
-    moved = not sl.info_here and bool(info or warnings)      # the results head sheet 2
+    moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
     skip = sl.info_h if moved else 0.0
     pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip) if protocol else []
-    n = 1 + max(len(pages), int(moved))
+    extra = int(apart is not None)
+    n = 1 + extra + max(len(pages), int(moved))
     block = TitleBlock(title or scene.title, problem or "—", recipe or "—", scale, str(sheet), 1, n, lang)
 
     dwg = document(sheet)
@@ -251,18 +258,70 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang))
     dwg.add(title_block(dwg, sheet, block))
     out = [dwg.tostring()]
+    if apart is not None:
+        out.append(_diagram_sheet(scene, page, replace(block, sheet=2), upto))
     shown = fig.shown
-    for number in range(2, n + 1):
+    values = fig.values if apart is None else scene.evaluate([st.key for _, st in shown_steps(scene, upto)[0]])
+    for number in range(2 + extra, n + 1):
         d = _text_sheet(sheet, replace(block, sheet=number, scale=None))
         top = fy0 + INSET
-        if moved and number == 2:
+        k = number - 2 - extra
+        if moved and k == 0:
             d.add(render_info(d, info, fx0 + INSET, top - 4.0, sl.info_w, warnings, info_steps, upto, lang))
             top += skip
-        if number - 2 < len(pages):
-            d.add(render_protocol(d, pages[number - 2], fx0 + INSET, top, fig.values, shown,
+        if k < len(pages):
+            d.add(render_protocol(d, pages[k], fx0 + INSET, top, values, shown,
                                   shown if upto is not None else None, lang))
         out.append(d.tostring())
     return out
+
+
+DIAGRAM = "sd_"
+"""Key prefix of the steps of a cam's s–δ (ψ–δ) diagram (:func:`geomcon.recipes.cam_common.add_motion_diagram`)."""
+
+
+def _not_diagram(step: Any) -> bool:
+    return not step.key.startswith(DIAGRAM)
+
+
+def _diagram(step: Any) -> bool:
+    return step.key.startswith(DIAGRAM)
+
+
+def diagram_apart(scene: Scene, page: PageSpec, info: Sequence[str], warnings: Sequence[str],
+                  together: Scale) -> tuple[SheetLayout, Scale, View] | None:
+    """Where sheet 1 puts a cam drawn without its s–δ diagram, when the diagram shares the figure and leaving it
+    to a sheet of its own (:func:`_diagram_sheet`) draws the cam at a larger standard scale than ``together``
+    (200-01 on A4 landscape: 1:2 either way; 001-23a: 1:2 → 1:1; on A4 portrait 200-01: 1:2 → 1:1); else None."""
+    if not any(s.key.startswith(DIAGRAM) for group in scene.frames() for s in group):
+        return None
+    alone = place_figure(scene, page, info, warnings, keep=_not_diagram)
+    return alone if alone[1] > together else None
+
+
+def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | None) -> str:
+    """The sheet of a cam's s–δ diagram: drawn at the largest standard scale that fits the sheet (its own, stated
+    in the title block and by a scale bar; the s axis at the cam's scale times its ratio), every step a group
+    with its protocol number, as on sheet 1, so the player and the frames replay it."""
+    sheet = page.sheet
+    sl = _layouts(page, (), ())[0]
+    steps, _ = shown_steps(scene, None, _diagram)
+    content = content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
+    scale = figure_scale(content, sl.area)
+    mu = _mu(scale)
+    box = grow(content, FIG_MARGIN * mu)
+    origin = centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area)
+    fig = build_figure(scene, upto, box, origin, mu=mu, keep=_diagram)
+    d = _text_sheet(sheet, replace(block, scale=scale))
+    fx0, fy0, _, _ = frame_box(sheet)
+    from .protocol import _line
+    head = _line(d, text("Displacement diagram", "位移线图", page.lang), fx0 + INSET, fy0 + INSET + 4.0, INFO_SIZE,
+                 INK, "diagram-head")
+    head.attribs["font-weight"] = "bold"
+    d.add(head)
+    d.add(_figure_group(d, fig))
+    d.add(_scale_bar(d, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
+    return d.tostring()
 
 
 def _text_sheet(sheet: Sheet, block: TitleBlock) -> svgwrite.Drawing:
