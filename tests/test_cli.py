@@ -266,3 +266,5 @@ def test_warnings_in_the_figure_follow_lang(tmp_path, capsys):
         for f in (out, tmp_path / f"{lang}.html"):
             text = f.read_text(encoding="utf-8")
             assert has in text and (lacks is None or lacks not in text), (lang, f.name)
+        sheet = out.read_text(encoding="utf-8")
+        assert ("图幅 A4 横向" in sheet) == (lang == "zh") and ("Warnings" in sheet) == (lang != "zh")

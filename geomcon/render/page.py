@@ -129,6 +129,17 @@ class TitleBlock:
     lang: str = "both"
 
 
+def _paper_words(paper: str, lang: str) -> str:
+    """The paper as the title block names it: ``A4 landscape``, in Chinese ``A4 横向`` / ``A4 纵向``.
+
+    >>> _paper_words("A3 portrait", "zh"), _paper_words("A4 landscape", "both")
+    ('A3 纵向', 'A4 landscape')
+    """
+    if lang != "zh":
+        return paper
+    return paper.replace(" landscape", " 横向").replace(" portrait", " 纵向")
+
+
 def printable(text_: str) -> str:
     r"""``text_`` with every character that XML cannot hold or a reader cannot see written as its escape (a
     problem file's name is chosen by whoever saved it: ``a\x01b.toml`` would make the sheet ill-formed XML).
@@ -158,7 +169,7 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
         scale = [text("Scale", "比例", lang) + " —", ""]
     rows = [[printable(tb.title)],
             [f"{text('Problem', '题目', lang)} {printable(tb.problem)}", f"{text('Recipe', '作图法', lang)} {tb.recipe}"],
-            scale + [f"{text('Paper', '图幅', lang)} {tb.paper}"],
+            scale + [f"{text('Paper', '图幅', lang)} {_paper_words(tb.paper, lang)}"],
             [f"geomcon {version()}", f"{text('Sheet', '第', lang)} {tb.sheet}/{tb.sheets}"
              + ("" if lang == "en" else " 张")]]
     for r, cells in enumerate(rows):
