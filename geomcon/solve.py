@@ -252,7 +252,8 @@ class Solution:
         built, exact = self.solution_values, self.analytic
         if len(built) <= 1 or len(exact) <= 1:
             return [(i, i) for i in range(min(len(built), len(exact)))]
-        units = {q.name: q.unit for q in self.recipe.answers}
+        units = _answer_units(self.recipe)
+        scales = {k: self.unit_scale(u) for k, u in units.items()}
 
         def cost(b: dict, e: dict) -> float:
             worst = 0.0
@@ -260,9 +261,13 @@ class Solution:
                 y = e.get(k)
                 if y is None:
                     continue
-                pairs = ((x, y),) if type(x) is float and type(y) is float else [(p, q) for _, p, q in _pairs(k, x, y)]
-                scale = self.unit_scale(units.get(k, ""))
-                for p, q in pairs:
+                scale = scales.get(k)
+                if scale is None:                                  # a named step beyond the declared answers
+                    scale = self.unit_scale("")
+                if type(x) is float and type(y) is float:          # the common case, at once
+                    worst = max(worst, abs(x - y) / max(abs(x), abs(y), scale))
+                    continue
+                for _, p, q in _pairs(k, x, y):
                     p, q = float(p), float(q)
                     worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
             return worst
