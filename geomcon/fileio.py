@@ -14,7 +14,6 @@ Examples
 from __future__ import annotations
 
 import os
-import tempfile
 from pathlib import Path
 from typing import Mapping
 
@@ -76,6 +75,10 @@ def write_all(files: Mapping[Path | str, str]) -> None:
     Every temporary is removed whatever fails, and a target that turns out not to be writable by rename
     stops the writing before the first rename.
     """
+    if not files:
+        return
+    import tempfile          # here: a solve that writes nothing (JSON to stdout) does not load it (random, shutil…)
+
     mode = 0o666 & ~_umask()
     staged: list[tuple[str, Path]] = []
     try:

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import Any, Callable, TypeVar
 
 from .scene import LeanScenes, PlanMiss
+from .scene.scene import _LEAN
 
 T = TypeVar("T")
 
@@ -20,9 +21,12 @@ def planned(plan: str, fn: Callable[..., T], *args: Any) -> T:
     >>> c.scene.lean, round(c.scene.value("theta"), 9)
     (True, 60.0)
     """
+    token = _LEAN.set((plan, False))            # LeanScenes(plan), without the object (a solve validates with it)
     try:
-        with LeanScenes(plan):
-            return fn(*args)
+        return fn(*args)
     except PlanMiss:
-        with LeanScenes(plan, learn=True):
-            return fn(*args)
+        pass
+    finally:
+        _LEAN.reset(token)
+    with LeanScenes(plan, learn=True):
+        return fn(*args)

@@ -19,7 +19,7 @@ True
 from __future__ import annotations
 
 import math
-from functools import cached_property
+from .cached import cached_property
 from typing import Any
 
 from .check import PUBLISHED_WARN_REL, audit_row, check_row, error_text, rounded, scale_for
@@ -79,6 +79,31 @@ def _answer_units(recipe: Recipe) -> dict[str, str]:
     return units
 
 
+Table = tuple[tuple[str, ...], tuple[tuple[str | None, tuple[tuple[str, str, str], ...], tuple[tuple[str, str], ...]], ...]]
+_TABLES: dict[int, tuple[Any, Table]] = {}
+"""Answer tables of taped constructions, by the identity of their solution maps (a replay hands every solve
+of one tape the same maps), each held with its maps so that the identity stays theirs."""
+_TABLES_MAX = 1024
+
+
+def answer_table(units: dict[str, str], maps: tuple) -> Table:
+    """How a construction's solution maps read: every step key they name (in order), and per map its
+    ``_valid`` step (or None), its answers ``(name, step key, unit)`` in the recipe's declared order and any
+    further named steps ``(name, step key)``.
+
+    Examples
+    --------
+    >>> keys, rows = answer_table({"theta": "deg", "ok": "bool"}, ({"ok": "s2", "theta": "s1", "_valid": "v"},))
+    >>> keys, rows
+    (('s2', 's1', 'v'), (('v', (('theta', 's1', 'deg'), ('ok', 's2', 'bool')), ()),))
+    """
+    keys = tuple(k for m in maps for k in m.values())
+    rows = tuple((m.get("_valid"),
+                  tuple((name, m[name], unit) for name, unit in units.items() if m.get(name) is not None),
+                  tuple((n, k) for n, k in m.items() if n not in units and n != "_valid")) for m in maps)
+    return keys, rows
+
+
 def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     """Matching scalar parts of two answer values: ``("s[0]", a[0], b[0])``… for lists;
     bools compare as the numbers 1 and 0.
@@ -107,8 +132,9 @@ class Solution:
         self._built = list(construction.warnings)
         self._taped = is_taped(self.scene)      # replayed: its refusal text holds the recording's numbers
 
-        given = problem.given
-        self.scene.rebuild_with(lambda: recipe.construct(given).scene)   # a skipped step completes the scene
+        if not self._taped:                     # a replay can complete itself already (construct_taped)
+            given = problem.given
+            self.scene.rebuild_with(lambda: recipe.construct(given).scene)   # a skipped step completes the scene
 
     def evaluate(self, keys) -> dict[str, Any]:
         """Values of the scene's steps ``keys``."""
@@ -146,20 +172,29 @@ class Solution:
     def _valid_candidates(self) -> list[tuple[int, dict[str, float]]]:
         """(candidate index in the construction's ``solutions``, answers) of every valid solution, in the
         order of :attr:`solution_values`."""
-        maps = self.construction.solutions or (self.construction.answers,)
-        vals = self.evaluate(k for m in maps for k in m.values())
-        units = _answer_units(self.recipe)                         # in the recipe's declared order
+        c = self.construction
+        units = _answer_units(self.recipe)
+        if self._taped:                                   # the same maps on every replay of one tape
+            ident = c.solutions or c.answers
+            entry = _TABLES.get(id(ident))
+            if entry is None or entry[0] is not ident:
+                if len(_TABLES) >= _TABLES_MAX:
+                    _TABLES.clear()
+                entry = _TABLES[id(ident)] = (ident, answer_table(units, c.solutions or (c.answers,)))
+            keys, rows = entry[1]
+        else:
+            keys, rows = answer_table(units, c.solutions or (c.answers,))
+        vals = self.scene.evaluate(keys)
         out = []
-        for index, m in enumerate(maps):
-            if "_valid" in m and not vals[m["_valid"]]:
+        for index, (valid, named, extra) in enumerate(rows):
+            if valid is not None and not vals[valid]:
                 continue
             sol = {}
-            for name, unit in units.items():
-                key = m.get(name)
-                if key is not None:
-                    v = vals[key]
-                    sol[name] = v if type(v) is float and unit != "bool" else _value(unit, v)
-            sol.update((n, _value("", vals[k])) for n, k in m.items() if n not in units and n != "_valid")
+            for name, key, unit in named:
+                v = vals[key]
+                sol[name] = v if type(v) is float and unit != "bool" else _value(unit, v)
+            for name, key in extra:
+                sol[name] = _value("", vals[key])
             out.append((index, sol))
         if self.recipe.order is not None:
             order = self.recipe.order
@@ -217,7 +252,8 @@ class Solution:
         built, exact = self.solution_values, self.analytic
         if len(built) <= 1 or len(exact) <= 1:
             return [(i, i) for i in range(min(len(built), len(exact)))]
-        units = {q.name: q.unit for q in self.recipe.answers}
+        units = _answer_units(self.recipe)
+        scales = {k: self.unit_scale(u) for k, u in units.items()}
 
         def cost(b: dict, e: dict) -> float:
             worst = 0.0
@@ -225,9 +261,13 @@ class Solution:
                 y = e.get(k)
                 if y is None:
                     continue
-                pairs = ((x, y),) if type(x) is float and type(y) is float else [(p, q) for _, p, q in _pairs(k, x, y)]
-                scale = self.unit_scale(units.get(k, ""))
-                for p, q in pairs:
+                scale = scales.get(k)
+                if scale is None:                                  # a named step beyond the declared answers
+                    scale = self.unit_scale("")
+                if type(x) is float and type(y) is float:          # the common case, at once
+                    worst = max(worst, abs(x - y) / max(abs(x), abs(y), scale))
+                    continue
+                for _, p, q in _pairs(k, x, y):
                     p, q = float(p), float(q)
                     worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
             return worst

@@ -254,8 +254,8 @@ def rocker_design_valid(a: float, b: float, CD: float, AD: float, h1: float, h2:
     return a < ls[0] and a + ls[2] <= ls[0] + ls[1] + REL_TOL * ls[2]
 
 
-def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float, float],
-                  **closing: float | bool | None) -> list[dict[str, float]]:
+def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float, float], *,
+                  c1_folded_only: bool = False, **closing: float | bool | None) -> list[dict[str, float]]:
     """Every valid crank-rocker for the rocker extremes c1, c2 (D at the origin) and one closing condition.
 
     Valid by :func:`rocker_design_valid`: AB is a crank by Grashof and the two extremes lie on one side of
@@ -264,13 +264,16 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
     answer defines it, 180°(K − 1)/(K + 1) (as the frame and links forms; the designed linkage's own θ is the
     back-substitution's K), ψ = ∠c1Dc2 and γmin (:func:`geomcon.analytic.linkages.crank_rocker_gamma_from_positions`) from the points,
     not read back from the designed lengths, which lose an extreme position lying within rounding of the frame
-    line (the Grashof boundary).
+    line (the Grashof boundary). ``c1_folded_only`` keeps only the designs in which c1 is the folded extreme
+    (with ψ given the two extremes are symmetric, and the others are their mirror images).
     """
     from .linkages import crank_rocker_gamma_from_positions
 
     sols = []
     for ax, ay in rocker_design_candidates(K, CD, c1, c2, **closing):
         d1, d2 = math.dist((ax, ay), c1), math.dist((ax, ay), c2)
+        if c1_folded_only and not d1 < d2:
+            continue
         a, b = abs(d2 - d1) / 2, (d1 + d2) / 2
         ad = math.hypot(ax, ay)
         if ad == 0:

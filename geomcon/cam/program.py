@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 from bisect import bisect_right
 from dataclasses import dataclass
-from functools import cached_property
+from ..cached import cached_property
 from typing import Any, Mapping, Sequence
 
 import numpy as np

@@ -98,7 +98,7 @@ def point_along(origin: Point, toward: Point, dist: float) -> Point:
     >>> point_along(Point(1, 1), Point(4, 5), 10)
     Point(x=7.0, y=9.0)
     """
-    if origin == toward:
+    if origin.x == toward.x and origin.y == toward.y:           # origin == toward, without the tuples
         raise Degenerate("ray toward its own origin")
     ux, uy = unit_xy(toward.x - origin.x, toward.y - origin.y)     # Ray.toward(origin, toward).at(dist)
     return Point(origin.x + ux * dist, origin.y + uy * dist)
@@ -153,4 +153,4 @@ def _collinear(a: Point, b: Point, c: Point) -> str:
 
 def thales_circle(a: Point, b: Point) -> Circle:
     """The circle on ``ab`` as diameter (every point of it sees ``ab`` under a right angle)."""
-    return Circle(midpoint(a, b), abs(b - a) / 2.0)
+    return Circle(midpoint(a, b), math.hypot(b.x - a.x, b.y - a.y) / 2.0)      # abs(b − a), without the Point

@@ -499,9 +499,9 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     K, CD = g["K"], g["CD"]
     if family == "positions":
         c1, c2 = (p.tuple() for p in extreme_positions(g))
-        sols = rocker_design(K, CD, c1, c2, **{closing: g[closing]})
-        if g.get("psi") is not None and closing != "AC1":   # symmetric: mirror images are the same designs
-            sols = [s for s in sols if s["c1_folded"]]
+        # ψ given (and the closing condition symmetric): the mirror images are the same designs
+        sols = rocker_design(K, CD, c1, c2, c1_folded_only=g.get("psi") is not None and closing != "AC1",
+                             **{closing: g[closing]})
         def side(x: float, y: float) -> float:             # which side of the line c1→c2
             return (c2[0] - c1[0]) * (y - c1[1]) - (c2[1] - c1[1]) * (x - c1[0])
 

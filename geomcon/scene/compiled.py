@@ -5,7 +5,9 @@ The source is generated from the recorded steps' shapes alone: local names ``v0,
 constants and branch rules bound by name in the function's namespace (``f3``, ``c3_1``, ``b3``); no key, label
 or value of a problem ever becomes source text (keys are read and written through a tuple of them). A request
 whose steps are not all plain calls (nested references such as a tuple of points) gets no function and is
-evaluated step by step as before. An optional step (a candidate that may not exist) is None when a step it
+evaluated step by step as before. The branches of one intersection (two steps calling the same operation on
+the same arguments, each with its own rule) share one call: each rule chooses from the same candidates, as
+two separate calls would give them (the operations are pure). An optional step (a candidate that may not exist) is None when a step it
 refers to is None or, for an intersection, when nothing meets, as the scene's own evaluation decides.
 
 Examples
@@ -64,6 +66,7 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     body: list[str] = []
     loaded: list[str] = []
     computed: list[str] = []
+    shared: dict[tuple, str] = {}            # (operation, argument names) → the variable of its candidates
     for i, k in enumerate(order):
         op, args, kwargs, mode, branch, brefs, optional, _, _ = rec[k]
         v = names[k] = f"v{i}"
@@ -91,21 +94,30 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
             body.append(f"        {v} = None")
             body.append("    else:")
             pad = "        "
-        body.append(f"{pad}{v} = f{i}({', '.join(parts)})")
-        if branch is not None:
-            refs = []
-            for j, b in enumerate(brefs):
-                if type(b) is Ref:
-                    refs.append(names[b[0]])
-                else:
-                    ns[f"r{i}_{j}"] = b
-                    refs.append(f"r{i}_{j}")
-            ns[f"b{i}"] = branch.rule
-            if optional:
-                body.append(f"{pad}{v} = b{i}({', '.join([v] + refs)}) if {v} else None")
+        if branch is None:
+            body.append(f"{pad}{v} = f{i}({', '.join(parts)})")
+            computed.append(k)
+            continue
+        refs = []
+        for j, b in enumerate(brefs):
+            if type(b) is Ref:
+                refs.append(names[b[0]])
             else:
-                body.append(f"{pad}if not {v}: raise _NoIntersection('')")
-                body.append(f"{pad}{v} = b{i}({', '.join([v] + refs)})")
+                ns[f"r{i}_{j}"] = b
+                refs.append(f"r{i}_{j}")
+        ns[f"b{i}"] = branch.rule
+        if optional:
+            body.append(f"{pad}{v} = f{i}({', '.join(parts)})")
+            body.append(f"{pad}{v} = b{i}({', '.join([v] + refs)}) if {v} else None")
+        else:
+            # the two branches of one intersection (B1 left of A, B2 right of A) call it on the same
+            # arguments: it is computed once and each rule chooses from the same candidates
+            raw = shared.get((op, tuple(parts)))
+            if raw is None:
+                raw = shared[(op, tuple(parts))] = f"u{i}"
+                body.append(f"{pad}{raw} = f{i}({', '.join(parts)})")
+                body.append(f"{pad}if not {raw}: raise _NoIntersection('')")
+            body.append(f"{pad}{v} = b{i}({', '.join([raw] + refs)})")
         computed.append(k)
     ns["_IN"], ns["_OUT"] = tuple(loaded), tuple(computed)
     outs = ", ".join(names[k] for k in computed)

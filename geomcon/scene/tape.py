@@ -41,7 +41,7 @@ from __future__ import annotations
 import operator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from functools import cached_property
+from ..cached import cached_property
 from typing import Any, Callable, Iterator, Mapping
 
 from ..geometry.branch import Branch
