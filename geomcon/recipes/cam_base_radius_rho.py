@@ -49,8 +49,15 @@ def is_rho_form(g: Mapping[str, Any]) -> bool:
 def validate_rho(g: Mapping[str, Any], prog: Program) -> None:
     """Refuse what the curvature forms cannot do, naming the given."""
     if g.get("motion", "translating") == "oscillating":
-        raise NotAMechanism("rho_allow / follower: the curvature limit is for translating followers only (give "
-                            "motion = \"translating\" or leave rho_allow out)")
+        if g.get("rho_allow") is None:
+            return                      # (a follower type given for an arm is refused by the recipe's validation)
+        if g.get("alpha_allow") is None:
+            raise NotAMechanism("alpha_allow is missing: an oscillating follower's base circle needs the allowed "
+                                "pressure angle as well as rho_allow")
+        if g.get("a") is not None:
+            raise NotAMechanism(f"a = {g['a']:g} is given with rho_allow: the curvature limit moves the cam centre, so "
+                                "the centre distance cannot stay fixed (leave a out)")
+        return
     if g.get("rho_allow") is None:
         raise NotAMechanism("follower = \"flat\" needs rho_allow (the smallest radius of curvature of the profile, "
                             "mm): a translating flat face has no pressure angle to limit")
