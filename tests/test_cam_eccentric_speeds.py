@@ -102,3 +102,16 @@ def test_seed_001_27_speeds():
     assert all(r["ok"] for r in sol.checks)
     for k in ("a", "v_max", "a_max"):
         assert sol.answers[k] == pytest.approx(sol.analytic[0][k], rel=1e-9)
+
+
+def test_problem_001_31b_arm_speeds():
+    """001-31's cam at ω = 10 rad/s, δ = 60°: ω2, ε2 and their maxima, construction against twin; ω2 against
+    the drawn instant centre P (ω2 = ω·OP/QP, the arm swinging out)."""
+    from geomcon.problems import load_problem
+    sol = solve(load_problem("problems/001-31b_eccentric_oscillating_roller_speeds.toml"))
+    assert all(r["ok"] for r in sol.checks)
+    for k in ("omega2", "epsilon2", "omega2_max", "epsilon2_max"):
+        assert sol.answers[k] == pytest.approx(sol.analytic[0][k], rel=1e-9)
+    P = sol.evaluate(["P"])["P"]
+    assert sol.answers["omega2"] == pytest.approx(10.0 * abs(P.y) / abs(90.0 - P.y), rel=1e-12)
+    assert sol.answers["omega2"] > 0

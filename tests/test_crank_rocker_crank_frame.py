@@ -131,11 +131,24 @@ def _direct(rng):
     return dict(K=K, AB=AD * rng.uniform(0.01, 0.9), AD=AD, psi=rng.uniform(1, 179))
 
 
+def _condition(g, twin):
+    """The designs' relative change per relative change of K or ψ (the twin's, perturbed by 1e-8): the problem's
+    own condition. Both routes are backward-exact (θ, ψ back to ~1e-14°), so their lengths may differ by about
+    this times 1e-16: up to 1.9e-9 over 3958 instances (random seed 777000 + 1790: BC moves 3.6e6 times as
+    much as ψ, near a fold of (BC, CD) → (θ, ψ))."""
+    out = 0.0
+    for dk, dp in ((1e-8, 0.0), (0.0, 1e-8)):
+        moved = crank_frame_designs(g["K"] * (1 + dk), g["AB"], g["AD"], g["psi"] * (1 + dp), cd_max=CD_MAX)
+        for x, y in zip(moved, twin):
+            out = max(out, abs(x["BC"] - y["BC"]) / y["BC"] / 1e-8, abs(x["CD"] - y["CD"]) / y["CD"] / 1e-8)
+    return out
+
+
 @pytest.mark.parametrize("chunk", range(4))
 def test_construction_and_closed_form_agree_on_random_instances(chunk):
     """800 instances (200 a chunk), three in four from random crank-rockers, one in four drawn directly:
     the construction's designs (along the θ-circles' arcs) and the closed form's are the same in number, and
-    BC, CD agree to 1e-9 relative (γmin near the Grashof boundary is left to the solver's conditioned checks,
+    BC, CD agree to 1e-9 relative, plus 1e-15 times the problem's condition (:func:`_condition`) (γmin near the Grashof boundary is left to the solver's conditioned checks,
     which must all pass, checked on one instance in five)."""
     rng = random.Random(90000 + chunk)
     done = 0
@@ -155,8 +168,9 @@ def test_construction_and_closed_form_agree_on_random_instances(chunk):
         except NotAMechanism:
             got = []
         assert len(got) == len(twin), (g, got, twin)
+        tol = 1e-9 + 1e-15 * _condition(g, twin)
         for x in got:
-            assert any(math.isclose(x["BC"], y["BC"], rel_tol=1e-9) and math.isclose(x["CD"], y["CD"], rel_tol=1e-9)
+            assert any(math.isclose(x["BC"], y["BC"], rel_tol=tol) and math.isclose(x["CD"], y["CD"], rel_tol=tol)
                        for y in twin), (g, x, twin)
         if got and done % 5 == 0:                  # the solver's own checks (twin, back-substitution), 1 in 5
             assert all(r["ok"] for r in sol.checks), (g, [r for r in sol.checks if not r["ok"]])

@@ -45,7 +45,7 @@ from ..cam.arm_replay import ArmReplay
 from ..cam.eccentric import Oscillating, Translating, check_disc
 from ..cam.eccentric_speeds import arm_maxima, arm_speeds, translating_maxima, translating_speeds
 from ..cam.profile import maximise
-from ..errors import NotAMechanism
+from ..errors import GeomconError, NotAMechanism
 from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, circle, circle_circle, line_circle, line_line,
                         point_along,
                         line_through, rotate, segment, thales_circle)
@@ -576,6 +576,12 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
              "alpha_max_return", "alpha_max", "delta", "psi", "alpha"]
     if g.get("omega") is not None:
         args = (A, Q, L, Rp, left, sense, g["omega"])
+        if sc.drawing:
+            nAB = sc.add("normal_AB", line_through, A, B, style="construction",
+                         caption=("The normal at the contact: the line AB", "接触点公法线:直线 AB"))
+            lOQ = sc.add("line_OQ", line_through, O, Q, style="construction", caption=("", ""))
+            sc.add("P", _meeting, nAB, lOQ, style="point", label="P", optional=True,
+                   caption=("…meets the line of centres OQ at the instant centre P", "交中心线 OQ 于瞬心 P"))
         sc.add("omega2", arm_omega2, *args, role=Role.MEASUREMENT, unit="rad/s",
                caption=("The normal AB meets OQ at the instant centre P: ω2 = ω·OP/QP",
                         "法线 AB 交 OQ 于瞬心 P:ω2 = ω·OP/QP"))
@@ -588,6 +594,15 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
                caption=("ε2,max over the turn", "整周最大角加速度 ε2,max"))
         names += ["omega2", "epsilon2", "omega2_max", "epsilon2_max"]
     return Construction(sc, {n: n for n in names}, {"O": "O", "Q": "Q", "A": "A", "B": "B", "B0": "B0", "B1": "B1"})
+
+
+def _meeting(l1: Line, l2: Line) -> Point | None:
+    """Where two lines meet, None when they are parallel (the instant centre at infinity)."""
+    try:
+        pts = line_line(l1, l2)
+    except GeomconError:
+        return None
+    return pts[0] if pts else None
 
 
 def _osc_A(E: float, Rp: float, a: float, L: float, left: bool, sense: float, st: str | None, value: float,
