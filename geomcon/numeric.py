@@ -70,3 +70,49 @@ def derivative(f: Callable[[float], float], x: float, h: float) -> float:
     d = [(f(x + s) - f(x - s)) / (2.0 * s) for s in (h, h / 2.0, h / 4.0)]
     r1, r2 = (4.0 * d[1] - d[0]) / 3.0, (4.0 * d[2] - d[1]) / 3.0
     return (16.0 * r2 - r1) / 15.0
+
+
+def bisect_up(f: Callable[[float], float], lo: float, hi: float) -> float:
+    """The crossing of f from f(lo) < 0 to f(hi) ≥ 0 by bisection to the last bit: the end on the f ≥ 0 side.
+
+    >>> bisect_up(lambda x: x * x - 2.0, 1.0, 2.0) ** 2 >= 2.0, abs(bisect_up(lambda x: x * x - 2.0, 1.0, 2.0) - 2 ** 0.5) < 1e-15
+    (True, True)
+    """
+    while True:
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            return hi
+        if f(mid) < 0.0:
+            lo = mid
+        else:
+            hi = mid
+
+
+def illinois(f: Callable[[float], float], lo: float, flo: float, hi: float, fhi: float, *,
+             iterations: int = 200) -> float:
+    """The crossing of f from flo = f(lo) < 0 to fhi = f(hi) ≥ 0 by regula falsi, Illinois variant (the value
+    kept at an end that stays twice is halved): an exact root when one is hit, else the end on the f ≥ 0 side
+    once the bracket is within 4e-16 of it or a trial point leaves it.
+
+    >>> abs(illinois(lambda x: x ** 3 - 2.0, 1.0, -1.0, 2.0, 6.0) - 2 ** (1 / 3)) < 1e-15
+    True
+    """
+    side = 0
+    for _ in range(iterations):
+        x = (lo * fhi - hi * flo) / (fhi - flo)
+        if not lo < x < hi or hi - lo <= 4e-16 * hi:
+            break
+        fx = f(x)
+        if fx == 0.0:
+            return x
+        if fx < 0.0:
+            lo, flo = x, fx
+            if side == -1:
+                fhi /= 2.0
+            side = -1
+        else:
+            hi, fhi = x, fx
+            if side == 1:
+                flo /= 2.0
+            side = 1
+    return hi

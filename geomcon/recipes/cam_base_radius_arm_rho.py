@@ -24,6 +24,7 @@ from ..cam.arm_twin import arm_rho_min
 from ..cam.profile import rho_min
 from ..errors import NotAMechanism
 from ..geometry import Point
+from ..numeric import bisect_up, illinois
 from .common import angle_deg
 
 GROW_MAX = 1e3
@@ -55,32 +56,7 @@ def _first_root(f: Callable[[float], float], scale: float, scan: int, refine: st
             hi, fhi = t, ft
             break
         lo, flo = t, ft
-    if refine == "bisect":
-        while True:
-            mid = 0.5 * (lo + hi)
-            if not lo < mid < hi:
-                return hi
-            if f(mid) < 0.0:
-                lo = mid
-            else:
-                hi = mid
-    side = 0
-    for _ in range(200):
-        x = (lo * fhi - hi * flo) / (fhi - flo)
-        if not lo < x < hi or hi - lo <= 4e-16 * hi:
-            break
-        fx = f(x)
-        if fx >= 0.0:
-            hi, fhi = x, fx
-            if side == 1:
-                flo /= 2.0
-            side = 1
-        else:
-            lo, flo = x, fx
-            if side == -1:
-                fhi /= 2.0
-            side = -1
-    return hi
+    return bisect_up(f, lo, hi) if refine == "bisect" else illinois(f, lo, flo, hi, fhi)
 
 
 def _check_alpha(g: Mapping[str, Any], cam, r0: float) -> None:
