@@ -101,7 +101,9 @@ def test_a_loose_curvature_limit_leaves_the_pressure_angle_design():
     ({"follower": "flat", "rho_allow": 30, "alpha_allow": 30}, "alpha_allow = 30 is given for a flat-faced follower"),
     ({"follower": "flat", "rho_allow": 30, "e": 5}, "e = 5 is given for a flat-faced follower"),
     ({"rho_allow": 30}, "alpha_allow is missing"),
-    ({"rho_allow": 30, "alpha_allow": 30, "motion": "oscillating", "L": 50}, "translating followers only"),
+    ({"rho_allow": 30, "alpha_allow": 30, "motion": "oscillating", "L": 50, "a": 60}, "a = 60 is given with rho_allow"),
+    ({"rho_allow": 30, "alpha_allow": 30, "motion": "oscillating", "L": 50, "follower": "flat"},
+     "is given for an oscillating follower"),
     ({}, "alpha_allow is missing"),
 ])
 def test_refusals(extra, message):

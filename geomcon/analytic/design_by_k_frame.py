@@ -1,6 +1,6 @@
 """Crank-rocker designs by K with the frame given: the closed form of A (the twin of the θ-circle met by the
-circle of radius AD about D), and the one-parameter family of designs along the rocker's length that the
-forms ``K AB AD psi`` and ``best_by_K`` search.
+circle of radius AD about D), and the one-parameter family of designs along the rocker's length that
+``best_by_K`` searches.
 
 With the rocker's extremes c1, c2 (D at the origin, |c1| = |c2| = CD, chord L = |c1c2|) take coordinates x
 along c1→c2 from the chord's midpoint and y to its left; D is at (0, h). A sees the chord under θ when

@@ -138,6 +138,16 @@ def rpm_as_rad_s(omega: Any) -> Any:
     return float(omega) * 30.0 / __import__("math").pi if omega else omega
 
 
+def _over_omega(name: str) -> Callable[..., float]:
+    """An op replaying the eccentric cam's step ``name`` (:mod:`geomcon.recipes.cam_eccentric_speeds`, whose
+    last argument is ω) with its value divided by ω: an acceleration taken as ω·s″ (ω not squared)."""
+    def op(*args: Any) -> float:
+        from ..recipes import cam_eccentric_speeds
+        return getattr(cam_eccentric_speeds, name)(*args) / args[-1]
+    op.__name__ = f"{name}_times_omega"
+    return op
+
+
 def floor_added(rho_allow: float, floor: tuple) -> float:
     """A flat face's r0 = ρallow + min(s + s″) (the sign of the minimum lost)."""
     return rho_allow + floor[0]
@@ -363,10 +373,26 @@ MISTAKES: dict[str, tuple[Mistake, ...]] = {
                 "只按许用压力角确定基圆(未校核曲率半径)", answer="r0", step="r0_alpha"),
         Mistake("floor_sign", "op", "r0 = ρallow + min(s + s″): the minimum's sign lost",
                 "r0 取成了 ρallow + min(s + s″)(最小值的符号弄错)", step="r0", op=floor_added),
+        Mistake("centre_not_moved", "read", "the centre distance of the pressure-angle design kept after the base "
+                "circle was grown for the curvature limit (oscillating)",
+                "按曲率半径增大基圆后仍沿用按压力角设计的中心距 a(摆动从动件)", answer="a", step="a_alpha"),
+        Mistake("centre_not_moved", "read", "the initial arm angle of the pressure-angle design kept after the base "
+                "circle was grown for the curvature limit (oscillating)",
+                "按曲率半径增大基圆后仍沿用按压力角设计的初始摆角 ψ0(摆动从动件)", answer="psi0", step="psi0_alpha"),
     ),
     "cam.eccentric": (
         Mistake("pitch_vs_actual", "read", "the base circle of the pitch curve given for the actual profile's",
                 "给出的是理论廓线的基圆半径(未减去滚子半径)", answer="r0_actual", step="r0"),
+        Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
+                step="a", op=_over_omega("guide_accel")),
+        Mistake("omega_not_squared", "op", "the acceleration taken as ω·s″ (ω not squared)", "加速度算成了 ω·s″(ω 未平方)",
+                step="a_max", op=_over_omega("guide_a_max")),
+        Mistake("omega_not_squared", "op", "the angular acceleration taken as ω·ψ″ (ω not squared)",
+                "角加速度算成了 ω·ψ″(ω 未平方)", step="epsilon2", op=_over_omega("arm_epsilon2")),
+        Mistake("omega_not_squared", "op", "the angular acceleration taken as ω·ψ″ (ω not squared)",
+                "角加速度算成了 ω·ψ″(ω 未平方)", step="epsilon2_max", op=_over_omega("arm_epsilon2_max")),
+        Mistake("rpm_as_rad_s", "given", "the cam's speed in rev/min used as rad/s (not times 2π/60)",
+                "把转速 (r/min) 当作角速度 (rad/s) 使用(未乘 2π/60)", given={"omega": rpm_as_rad_s}),
     ),
     "four_bar.kinematics": (
         Mistake("normal_omitted", "op", "the normal component ω2²·BC of C relative to B left out of the acceleration polygon",

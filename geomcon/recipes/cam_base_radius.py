@@ -22,7 +22,9 @@ from it otherwise), so that KiO is parallel to the contact normal (:mod:`geomcon
 the two lines at α_allow to the arm's normal bound the wedge O must lie in. O is the admissible point nearest
 B0 — the smallest base circle r0 = OB0 — or, with ``a`` given, the admissible point of the circle of radius
 a about A0 nearest B0; the binding positions (one, or two at a vertex of the region) are drawn with the
-line KO, which makes α_allow with their normal. Answers r0, a = OA0, ψ0 = ∠OA0B0, ρmin and rr_max.
+line KO, which makes α_allow with their normal. Answers r0, a = OA0, ψ0 = ∠OA0B0, ρmin and rr_max. With
+``rho_allow`` the centre then moves perpendicular to A0B0 until the pitch curve's ρmin reaches it
+(:mod:`.cam_base_radius_arm_rho`).
 
 The roller bound: ρmin of the pitch curve of the designed cam (convex parts, exact derivatives), and the
 textbook rule rr ≤ 0.8·ρmin (``rr_max``; rr < ρmin is the bare undercut limit).
@@ -44,10 +46,11 @@ from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
 from ..geometry import Arc, Line, Point, Polyline, Segment, circle, line_line, rotate, segment
 from ..geometry.measure import angle_at
-from ..scene import Role, Scene, marks
+from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .cam_base_radius_rho import (add_rho_steps, analytic_flat_rho, construct_flat_rho, is_rho_form, margins,
                                   twin_grow, validate_rho)
+from .cam_base_radius_arm_rho import arm_margins, grow_arm_centre, twin_arm_grow
 from .cam_common import add_rotation
 from .common import add_angle_mark, add_bar, angle_deg, length
 
@@ -74,8 +77,9 @@ GIVENS = (
     Quantity("a", "mm", "oscillating: a fixed centre distance OA0; absent: the best one", required=False),
     Quantity("arm", "choice", "oscillating: side of the line A0→O the roller lies on, as in cam.oscillating",
              required=False, default="left", minimum=None, choices=("left", "right")),
-    Quantity("rho_allow", "mm", "translating: smallest allowed radius of curvature — of the pitch curve (knife, "
-             "roller; its convex parts) or of the profile (flat face: r0 + s + s″ ≥ ρallow)", required=False),
+    Quantity("rho_allow", "mm", "smallest allowed radius of curvature — of the pitch curve (knife, roller, translating "
+             "or oscillating; its convex parts) or of the profile (translating flat face: r0 + s + s″ ≥ ρallow)",
+             required=False),
     Quantity("follower", "choice", "translating: knife or roller (the pressure-angle design) or flat (a flat face: "
              "curvature limit only, α ≡ 0)", required=False, default=None, minimum=None,
              choices=("knife", "roller", "flat")),
@@ -106,7 +110,7 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     prog = _program(g)
     if is_rho_form(g):
         validate_rho(g, prog)
-        if g.get("follower") == "flat":
+        if g.get("follower") == "flat" and g.get("motion", "translating") == "translating":
             return []
     elif g.get("alpha_allow") is None:
         raise NotAMechanism("alpha_allow is missing (the allowed pressure angle of the rise, degrees)")
@@ -321,6 +325,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     if g.get("motion", "translating") == "oscillating":
         out = ArmTwin(prog, g["h"], g["L"], alpha_allow=g["alpha_allow"], rotation=g.get("rotation", "ccw"),
                       arm=g.get("arm", "left"), alpha_allow_return=g.get("alpha_allow_return")).best(g.get("a"))
+        if g.get("rho_allow") is not None:
+            out = {**out, **twin_arm_grow(g, out)}
         cam = arm_cam(g, out["a"], out["r0"], out["psi0"])
         rho = arm_rho_min(cam)
         return [{**out, "rho_min_pitch": rho, "rr_max": RR_FACTOR * rho}]
@@ -341,6 +347,8 @@ def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str
     prog = _program(g)
     if g.get("motion", "translating") == "oscillating":
         cam = arm_cam(g, ans["a"], ans["r0"], ans["psi0"])
+        if g.get("rho_allow") is not None:
+            return [("the limits' smallest relative margin (0: one active, none exceeded)", arm_margins(g, cam), 0.0, "")]
         over = cam.worst_pressure("rise")[0] - g["alpha_allow"]
         if g.get("alpha_allow_return") is not None and prog.ret is not None:
             over = max(over, cam.worst_pressure("return")[0] - g["alpha_allow_return"])
@@ -548,7 +556,38 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
     sc.add("rr_max", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm",
            caption=("rr ≤ 0.8·ρmin", "滚子半径 rr ≤ 0.8ρmin"))
     names = ("r0", "a", "psi0", "rho_min_pitch", "rr_max")
-    return Construction(sc, {n: n for n in names}, {"O": "O", "A0": "A0", "B0": "B0"})
+    answers = {n: n for n in names}
+    if g.get("rho_allow") is not None:
+        _add_arm_rho_steps(sc, answers, g, O, A0, B0)
+    return Construction(sc, answers, {"O": "O", "A0": "A0", "B0": "B0"})
+
+
+def _add_arm_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any], O, A0, B0) -> None:
+    """The centre moved perpendicular to A0B0 until ρmin of the pitch curve reaches ρallow; the designed a, r0,
+    ψ0, ρmin and rr_max measured again (:mod:`.cam_base_radius_arm_rho`)."""
+    rho_allow = g["rho_allow"]
+    sc.add("r0_alpha", float, Ref("r0"), role=Role.MEASUREMENT, unit="mm", visible=False)
+    sc.add("a_alpha", float, Ref("a"), unit="mm", visible=False)          # the pressure angle's design, for the
+    sc.add("psi0_alpha", float, Ref("psi0"), unit="deg", visible=False)   # declared mistake 'centre_not_moved'
+    Od = sc.add("O_design", grow_arm_centre, g, O, A0, B0, role=Role.RESULT, style="pivot", label="O′", caption=(
+        f"Move O perpendicular to A0B0, away from B0, until ρmin of the pitch curve reaches ρallow = {rho_allow:g}: "
+        "the designed centre O′",
+        f"沿垂直于 A0B0 的方向(远离 B0)移动 O,直至理论廓线 ρmin 达到 ρallow = {rho_allow:g}:所得凸轮中心 O′"))
+    sc.add("O_path", segment, O, Od, style="construction")
+    r0 = sc.add("r0_design", length, Od, B0, role=Role.MEASUREMENT, unit="mm", caption=("r0 = O′B0", "基圆半径 r0 = O′B0"))
+    sc.add("r0_rho", lambda r, ra: r if r > ra else ra, r0, Ref("r0"), visible=False)
+    sc.add("base_design", circle, Od, r0, style="theta-circle", caption=("Its base circle", "其基圆"))
+    sc.add("O_B0_design", segment, Od, B0, style="construction")
+    sc.add("O_A0_design", segment, Od, A0, style="frame")
+    a = sc.add("a_design", length, Od, A0, role=Role.MEASUREMENT, unit="mm", caption=("a = O′A0", "中心距 a = O′A0"))
+    psi0 = sc.add("psi0_design", angle_deg, A0, Od, B0, role=Role.MEASUREMENT, unit="deg",
+                  caption=("ψ0 = ∠O′A0B0", "初始摆角 ψ0 = ∠O′A0B0"))
+    add_angle_mark(sc, "mark_psi0_design", A0, Od, B0, "ψ0′", psi0)
+    rho = sc.add("rho_design", lambda o_a, r, p: rho_min(arm_cam(g, o_a, r, p).pitch_curve()).value, a, r0, psi0,
+                 role=Role.MEASUREMENT, unit="mm", caption=("ρmin of the designed pitch curve", "所设计理论廓线的 ρmin"))
+    sc.add("rr_max_design", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm", visible=False)
+    answers.update({"r0": "r0_design", "a": "a_design", "psi0": "psi0_design", "rho_min_pitch": "rho_design",
+                    "rr_max": "rr_max_design", "r0_alpha": "r0_alpha", "r0_rho": "r0_rho"})
 
 
 RECIPE = Recipe(

@@ -32,6 +32,7 @@ from ..cam.program import Program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
 from ..geometry import Point, Polyline, circle, segment
+from ..numeric import bisect_up, illinois
 from ..scene import Ref, Role, Scene
 from .base import Construction
 from .cam_common import add_profile_steps, add_rotation, extremum_value, inversion_sign
@@ -49,8 +50,15 @@ def is_rho_form(g: Mapping[str, Any]) -> bool:
 def validate_rho(g: Mapping[str, Any], prog: Program) -> None:
     """Refuse what the curvature forms cannot do, naming the given."""
     if g.get("motion", "translating") == "oscillating":
-        raise NotAMechanism("rho_allow / follower: the curvature limit is for translating followers only (give "
-                            "motion = \"translating\" or leave rho_allow out)")
+        if g.get("rho_allow") is None:
+            return                      # (a follower type given for an arm is refused by the recipe's validation)
+        if g.get("alpha_allow") is None:
+            raise NotAMechanism("alpha_allow is missing: an oscillating follower's base circle needs the allowed "
+                                "pressure angle as well as rho_allow")
+        if g.get("a") is not None:
+            raise NotAMechanism(f"a = {g['a']:g} is given with rho_allow: the curvature limit moves the cam centre, so "
+                                "the centre distance cannot stay fixed (leave a out)")
+        return
     if g.get("rho_allow") is None:
         raise NotAMechanism("follower = \"flat\" needs rho_allow (the smallest radius of curvature of the profile, "
                             "mm): a translating flat face has no pressure angle to limit")
@@ -179,25 +187,7 @@ def grow_for_rho(prog: Program, h: float, rotation: str, e: float, r0_alpha: flo
                                 f"angle's r0 = {r0_alpha:.6g}")
         lo, flo, hi = hi, fhi, 2.0 * hi
         fhi = f(hi)
-    side = 0
-    for _ in range(200):
-        x = (lo * fhi - hi * flo) / (fhi - flo)
-        if not lo < x < hi or hi - lo <= 4e-16 * hi:
-            break
-        fx = f(x)
-        if fx == 0.0:
-            return x
-        if (fx < 0.0) == (flo < 0.0):
-            lo, flo = x, fx
-            if side == -1:
-                fhi /= 2.0
-            side = -1
-        else:
-            hi, fhi = x, fx
-            if side == 1:
-                flo /= 2.0
-            side = 1
-    return hi
+    return illinois(f, lo, flo, hi, fhi)
 
 
 def add_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any], prog: Program) -> None:
@@ -235,14 +225,7 @@ def twin_grow(prog: Program, h: float, rotation: str, e: float, r0_alpha: float,
     lo, hi = r0_alpha, 2.0 * r0_alpha
     while f(hi) < 0.0:
         lo, hi = hi, 2.0 * hi
-    while True:
-        mid = 0.5 * (lo + hi)
-        if not lo < mid < hi:
-            return hi
-        if f(mid) < 0.0:
-            lo = mid
-        else:
-            hi = mid
+    return bisect_up(f, lo, hi)
 
 
 def margins(g: Mapping[str, Any], prog: Program, r0: float, e: float) -> float:

@@ -43,8 +43,9 @@ from typing import Any, Mapping
 
 from ..cam.arm_replay import ArmReplay
 from ..cam.eccentric import Oscillating, Translating, check_disc
+from ..cam.eccentric_speeds import arm_maxima, arm_speeds, translating_maxima, translating_speeds
 from ..cam.profile import maximise
-from ..errors import NotAMechanism
+from ..errors import GeomconError, NotAMechanism
 from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, circle, circle_circle, line_circle, line_line,
                         point_along,
                         line_through, rotate, segment, thales_circle)
@@ -52,6 +53,8 @@ from ..geometry.measure import angle_at, signed_angle
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .cam_common import add_rotation
+from .cam_eccentric_speeds import (arm_epsilon2, arm_epsilon2_max, arm_omega2, arm_omega2_max, guide_a_max, guide_accel,
+                                   guide_v_max)
 from .common import add_pivot, angle_deg, difference, length
 
 UP = Point(0.0, 1.0)
@@ -101,6 +104,13 @@ ANSWERS = (
     Quantity("psi", "deg", "state: the arm's swing from its lowest position (oscillating)"),
     Quantity("alpha", "deg", "state: pressure angle"),
     Quantity("v", "mm/s", "state: follower velocity, mm/s (> 0 moving away from O), when omega is given"),
+    Quantity("a", "mm/s²", "state: follower acceleration ω²·d²s/dδ² (translating, ω constant), when omega is given"),
+    Quantity("v_max", "mm/s", "largest |v| over the turn (translating), when omega is given"),
+    Quantity("a_max", "mm/s²", "largest |a| over the turn (translating), when omega is given"),
+    Quantity("omega2", "rad/s", "state: the arm's angular velocity ω·dψ/dδ (> 0 swinging out), when omega is given"),
+    Quantity("epsilon2", "rad/s²", "state: the arm's angular acceleration ω²·d²ψ/dδ², when omega is given"),
+    Quantity("omega2_max", "rad/s", "largest |ω2| over the turn (oscillating), when omega is given"),
+    Quantity("epsilon2_max", "rad/s²", "largest |ε2| over the turn (oscillating), when omega is given"),
 )
 
 
@@ -382,6 +392,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                caption=("Instant centre P: AB meets the line through O ⊥ the guide; v = ω·OP",
                         "瞬心 P:AB 与过 O 垂直于导路的直线之交点;v = ω·OP"))
         answers["v"] = "v"
+        answers.update(_add_guide_speeds(sc, A, D, Rp, False, R, sense, g["omega"]))
     answers.update(_alpha_extremes(sc, O, A, pitch, B0, B1, ref0, e, sense, rise))
     if e:
         sc.add("offset_correct", offset_correct, e, sense, role=Role.MEASUREMENT, visible=False)
@@ -479,7 +490,23 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
                caption=("Instant centre P below A on the line through O ⊥ the guide; v = ω·OP",
                         "瞬心 P(法线与过 O 垂直导路之线的交点);v = ω·OP"))
         answers["v"] = "v"
+        answers.update(_add_guide_speeds(sc, A, D, R, True, R, sense, g["omega"]))
     return Construction(sc, answers, {"O": "O", "A": "A", "K": "K", "F": "F"})
+
+
+def _add_guide_speeds(sc: Scene, A: Ref, D: Ref, Rp: float, flat: bool, R: float, sense: float,
+                      omega: float) -> dict[str, str]:
+    """a at the drawn position and v_max, a_max over the turn, by replaying the instant centre
+    (:mod:`.cam_eccentric_speeds`)."""
+    args = (A, D, Rp, flat, R, sense, omega)
+    sc.add("a", guide_accel, *args, role=Role.MEASUREMENT, unit="mm/s²",
+           caption=("a = ω·dv/dδ: the disc turned a little either way, P found again (central differences)",
+                    "a = ω·dv/dδ:圆盘前后稍转,再求瞬心 P(中心差分)"))
+    sc.add("v_max", guide_v_max, *args, role=Role.MEASUREMENT, unit="mm/s",
+           caption=("vmax: P replayed over the turn", "vmax:整周逐点求瞬心 P"))
+    sc.add("a_max", guide_a_max, *args, role=Role.MEASUREMENT, unit="mm/s²",
+           caption=("amax over the turn", "整周最大加速度 amax"))
+    return {"a": "a", "v_max": "v_max", "a_max": "a_max"}
 
 
 def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
@@ -545,9 +572,37 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
                         f"{'推' if part == 'rise' else '回'}程最大压力角(反转逐点作图)"))
     sc.add("alpha_max", max, Ref("alpha_max_rise"), Ref("alpha_max_return"), role=Role.MEASUREMENT, unit="deg",
            visible=False)
-    names = ("r0", "r0_actual", "psi0", "psi_max", "rise_angle", "return_angle", "alpha_max_rise",
-             "alpha_max_return", "alpha_max", "delta", "psi", "alpha")
+    names = ["r0", "r0_actual", "psi0", "psi_max", "rise_angle", "return_angle", "alpha_max_rise",
+             "alpha_max_return", "alpha_max", "delta", "psi", "alpha"]
+    if g.get("omega") is not None:
+        args = (A, Q, L, Rp, left, sense, g["omega"])
+        if sc.drawing:
+            nAB = sc.add("normal_AB", line_through, A, B, style="construction",
+                         caption=("The normal at the contact: the line AB", "接触点公法线:直线 AB"))
+            lOQ = sc.add("line_OQ", line_through, O, Q, style="construction", caption=("", ""))
+            sc.add("P", _meeting, nAB, lOQ, style="point", label="P", optional=True,
+                   caption=("…meets the line of centres OQ at the instant centre P", "交中心线 OQ 于瞬心 P"))
+        sc.add("omega2", arm_omega2, *args, role=Role.MEASUREMENT, unit="rad/s",
+               caption=("The normal AB meets OQ at the instant centre P: ω2 = ω·OP/QP",
+                        "法线 AB 交 OQ 于瞬心 P:ω2 = ω·OP/QP"))
+        sc.add("epsilon2", arm_epsilon2, *args, role=Role.MEASUREMENT, unit="rad/s²",
+               caption=("ε2 = ω·dω2/dδ: the disc turned a little either way, P found again (central differences)",
+                        "ε2 = ω·dω2/dδ:圆盘前后稍转,再求瞬心 P(中心差分)"))
+        sc.add("omega2_max", arm_omega2_max, *args, role=Role.MEASUREMENT, unit="rad/s",
+               caption=("ω2,max: P replayed over the turn", "ω2,max:整周逐点求瞬心 P"))
+        sc.add("epsilon2_max", arm_epsilon2_max, *args, role=Role.MEASUREMENT, unit="rad/s²",
+               caption=("ε2,max over the turn", "整周最大角加速度 ε2,max"))
+        names += ["omega2", "epsilon2", "omega2_max", "epsilon2_max"]
     return Construction(sc, {n: n for n in names}, {"O": "O", "Q": "Q", "A": "A", "B": "B", "B0": "B0", "B1": "B1"})
+
+
+def _meeting(l1: Line, l2: Line) -> Point | None:
+    """Where two lines meet, None when they are parallel (the instant centre at infinity)."""
+    try:
+        pts = line_line(l1, l2)
+    except GeomconError:
+        return None
+    return pts[0] if pts else None
 
 
 def _osc_A(E: float, Rp: float, a: float, L: float, left: bool, sense: float, st: str | None, value: float,
@@ -597,10 +652,17 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     st = _state(g)
     kw = {st: g[st]} if st else {}
     phi = cam.phi_from(turn=g.get("turn") or 0.0, **kw)
+    omega = g.get("omega")
     if isinstance(cam, Translating):
-        out.update(cam.state(phi, g.get("omega")))
+        out.update(cam.state(phi, omega))
+        if omega is not None:
+            out["a"] = translating_speeds(cam, phi, omega)[1]
+            out["v_max"], out["a_max"] = translating_maxima(cam, omega)
     else:
         out.update(cam.state(phi))
+        if omega is not None:
+            out["omega2"], out["epsilon2"] = arm_speeds(cam, phi, omega)
+            out["omega2_max"], out["epsilon2_max"] = arm_maxima(cam, omega)
     return [out]
 
 

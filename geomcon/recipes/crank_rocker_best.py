@@ -15,6 +15,7 @@ from typing import Any, Mapping
 
 from ..analytic.crank_rocker_best import crank_rocker_best
 from ..errors import NotAMechanism
+from ..numeric import stationary
 from ..geometry import Point, segment
 from ..scene import Role, Scene
 from .base import Construction, Quantity, Recipe
@@ -56,39 +57,14 @@ def best_on_arcs(D: Point, C1: Point, C2: Point, *arcs_per_side: Any) -> Point:
             def f(t: float, arc=arc) -> float:
                 return gamma_min_of(arc.at(t), D, C1, C2)
             t = maximise(f, 0.0, 1.0, width=1e-15)
-            t = _stationary(f, t, min(t, 1.0 - t) / 1.1)
+            w = min(t, 1.0 - t) / 1.1                 # the arc's ends bound the refining bracket
+            t = stationary(f, t, [r for r in (1e-2, 1e-3, 1e-4) if r <= w])
             value = f(t)
             if best is None or value > best[0]:
                 best = (value, arc.at(t))
     if best is None:
         raise NotAMechanism("no point of the θ-circles gives a crank-rocker with this K and ψ")
     return best[1]
-
-
-def _stationary(f, t: float, w: float) -> float:
-    """The maximum of a smooth f near ``t`` on the arc: the sign change of f(x + h) − f(x − h) within t ± r
-    (r = 1e-2, else 1e-3, 1e-4 of the arc, as far as the arc's ends allow ``w``), for h = r/10, r/20, r/40,
-    combined by Richardson's rule twice (a chord's midpoint lies O(h²) off the maximum); the golden
-    bracket alone holds t only to √ε. At a kink or an end of the arc ``t`` stays."""
-    for r in (1e-2, 1e-3, 1e-4):
-        if r > w:
-            continue
-        roots = []
-        for h in (r / 10.0, r / 20.0, r / 40.0):
-            d = lambda x, h=h: f(x + h) - f(x - h)    # noqa: E731
-            lo, hi = t - r, t + r
-            if not (d(lo) > 0.0 > d(hi)):
-                break
-            for _ in range(200):
-                m = (lo + hi) / 2.0
-                if m in (lo, hi):
-                    break
-                lo, hi = (m, hi) if d(m) > 0.0 else (lo, m)
-            roots.append((lo + hi) / 2.0)
-        if len(roots) == 3:
-            r1, r2 = (4.0 * roots[1] - roots[0]) / 3.0, (4.0 * roots[2] - roots[1]) / 3.0
-            return (16.0 * r2 - r1) / 15.0             # Richardson twice: the h² and h⁴ offsets cancel
-    return t
 
 
 def _ratio(AD: float, A: Point, D: Point) -> float:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from ..analytic.crank_rocker_best import designs_at_ratio
+from ..analytic.design_by_k_crank_frame import crank_frame_designs
 from ..geometry import Point, segment
 from ..scene import Role, Scene, marks
 from ..scene.tape import lifted
@@ -129,6 +129,6 @@ def _ratio_of(AB: float, AD: float) -> float:
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
-    """The twin: the family in CD with the frame fixed, AB(CD) = AB solved slot by slot
-    (:func:`geomcon.analytic.crank_rocker_best.designs_at_ratio`)."""
-    return designs_at_ratio(g["K"], g["psi"], g["AD"], g["AB"])
+    """The twin: the designs in closed form, a quadratic in BC² (at most two roots)
+    (:func:`geomcon.analytic.design_by_k_crank_frame.crank_frame_designs`)."""
+    return crank_frame_designs(g["K"], g["AB"], g["AD"], g["psi"], cd_max=CD_MAX)

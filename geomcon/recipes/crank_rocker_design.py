@@ -494,8 +494,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     if family == "links":
         return sorted(crank_rocker_links.analytic(g), key=preference)
     if family == "crank_frame":
-        from ..analytic.crank_rocker_best import designs_at_ratio
-        return sorted(designs_at_ratio(g["K"], g["psi"], g["AD"], g["AB"]), key=preference)
+        from . import crank_rocker_crank_frame
+        return sorted(crank_rocker_crank_frame.analytic(g), key=preference)
     K, CD = g["K"], g["CD"]
     if family == "positions":
         c1, c2 = (p.tuple() for p in extreme_positions(g))

@@ -193,6 +193,9 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
     ("cam.oscillating", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
     ("cam.oscillating", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
+    ("cam.eccentric", "a"): _n("a", "follower acceleration", "从动件加速度"),
+    ("cam.eccentric", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
+    ("cam.eccentric", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
 }
 """Printed names that differ by recipe (an arm's ω2 is not a coupler's; a cam follower's a is not a centre
 distance): looked up before :data:`NAMES`."""

@@ -449,6 +449,13 @@ TEMPLATES: dict[str, dict[str, tuple[str, str]]] = {
              "radius of curvature must be at least {rho_allow} mm. Find the smallest base circle.",
              "一盘形凸轮{rotation}转动，推动直动滚子（或尖顶）从动件，行程 h = {h} mm；运动规律：{program}。"
              "许用压力角 {alpha_allow}°，理论廓线曲率半径不得小于 {rho_allow} mm。求最小基圆半径。"),
+        "arm+rho": ("A disc cam turning {rotation} swings a roller (or knife-edge) arm L = {L} mm long through h = {h}°; "
+                    "motion program: {program}. The pressure angle must not exceed {alpha_allow}° and the pitch "
+                    "curve's radius of curvature must be at least {rho_allow} mm. Find the smallest base circle, the "
+                    "centre distance a and the initial arm angle ψ0.",
+                    "一盘形凸轮{rotation}转动，推动摆动滚子（或尖顶）从动件，摆杆长 L = {L} mm，最大摆角 h = {h}°；"
+                    "运动规律：{program}。许用压力角 {alpha_allow}°，理论廓线曲率半径不得小于 {rho_allow} mm。"
+                    "求最小基圆半径、中心距 a 及初始摆角 ψ0。"),
         "flat": ("A disc cam turning {rotation} drives a translating flat-faced follower through the stroke h = {h} mm; "
                  "motion program: {program}. Contact stress asks the profile's radius of curvature to be at least "
                  "{rho_allow} mm everywhere. Find the smallest base circle.",
@@ -558,7 +565,9 @@ def template_form(recipe: str, given: Mapping[str, Any]) -> str | None:
         return "flat" if given.get("follower") == "flat" else "omega" if "omega" in has else ""
     if recipe == "cam.base_radius":
         if given.get("motion") == "oscillating":
-            return "oscillating" if "rho_allow" not in has and "L" in has and "alpha_allow" in has else None
+            if "rho_allow" in has:
+                return "arm+rho" if "alpha_allow" in has and "L" in has else None
+            return "oscillating" if "L" in has and "alpha_allow" in has else None
         if "rho_allow" not in has:
             return "alpha" if "alpha_allow" in has and given.get("follower") != "flat" else None
         return "flat" if given.get("follower") == "flat" else ("alpha+rho" if "alpha_allow" in has else None)
