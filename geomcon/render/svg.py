@@ -35,6 +35,7 @@ from ..scene import Scene
 from .figure import Figure, build_figure, content_box, shown_steps
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, title_block,
                    title_block_box)
+from .serial import svg_string
 from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
@@ -250,7 +251,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     if sl.info_here and (info or warnings):
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang))
     dwg.add(title_block(dwg, sheet, block))
-    out = [dwg.tostring()]
+    out = [svg_string(dwg)]
     shown = fig.shown
     for number in range(2, n + 1):
         d = _text_sheet(sheet, replace(block, sheet=number, scale=None))
@@ -261,7 +262,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         if number - 2 < len(pages):
             d.add(render_protocol(d, pages[number - 2], fx0 + INSET, top, fig.values, shown,
                                   shown if upto is not None else None, lang))
-        out.append(d.tostring())
+        out.append(svg_string(d))
     return out
 
 
