@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 import svgwrite
 
+from ..render.serial import svg_string
 from .program import Program
 
 W, PANEL, GAP, LEFT, TOP = 170.0, 42.0, 14.0, 28.0, 16.0      # mm on paper
@@ -48,7 +49,8 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
     pieces = _pieces(program, h)
     span = program.segments[-1].end
     height = TOP + 3 * PANEL + 2 * GAP + 18.0
-    dwg = svgwrite.Drawing(size=(f"{_f(W)}mm", f"{_f(height)}mm"), viewBox=f"0 0 {_f(W)} {_f(height)}", profile="full")
+    dwg = svgwrite.Drawing(size=(f"{_f(W)}mm", f"{_f(height)}mm"), viewBox=f"0 0 {_f(W)} {_f(height)}", profile="full",
+                           debug=False)
     dwg.attribs["font-family"] = FONT
     dwg.add(dwg.rect((0, 0), (W, height), fill="#ffffff"))
     if title:
@@ -111,4 +113,4 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
                                     + ", ".join(f"{i.angle:g}°" for i in impacts if i.kind == k) for k in kinds)
                           if kinds else "none (无冲击)")
     dwg.add(dwg.text(note, insert=(_f(LEFT - 18.0), _f(height - 4.0)), font_size=3.0, fill=INK))
-    return dwg.tostring()
+    return svg_string(dwg)

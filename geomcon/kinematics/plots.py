@@ -19,6 +19,7 @@ import svgwrite
 
 from .quantities import position_name, value
 from ..check import rounded
+from ..render.serial import svg_string
 from .result import CycleResult, scale_of, unit_of
 
 W, PANEL, GAP, LEFT, TOP = 170.0, 34.0, 13.0, 30.0, 16.0      # mm on paper
@@ -53,7 +54,7 @@ def cycle_plots_svg(r: CycleResult) -> str:
     phi = r.cycle.phi_deg
     height = TOP + len(cols) * (PANEL + GAP) + 4.0
     dwg = svgwrite.Drawing(size=(f"{_f(W)}mm", f"{_f(height)}mm"), viewBox=f"0 0 {_f(W)} {_f(height)}",
-                           profile="full")
+                           profile="full", debug=False)
     dwg.attribs["font-family"] = FONT
     dwg.add(dwg.rect((0, 0), (W, height), fill="#ffffff"))
     title = f"{r.problem.id}: " + (r.problem.title or "whole cycle")
@@ -120,4 +121,4 @@ def cycle_plots_svg(r: CycleResult) -> str:
                                text_anchor="end" if right else "start"))
     dwg.add(dwg.text("crank angle φ (°)", insert=(LEFT + PLOT_W, height - 1.5), font_size=2.8, text_anchor="end",
                      fill=INK))
-    return dwg.tostring()
+    return svg_string(dwg)

@@ -35,6 +35,7 @@ from ..scene import Scene
 from .figure import Figure, build_figure, content_box, shown_steps
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
                    title_block_box)
+from .serial import svg_string
 from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
@@ -257,7 +258,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     if sl.info_here and (info or warnings):
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang))
     dwg.add(title_block(dwg, sheet, block))
-    out = [dwg.tostring()]
+    out = [svg_string(dwg)]
     if apart is not None:
         out.append(_diagram_sheet(scene, page, replace(block, sheet=2), upto))
     shown = fig.shown
@@ -272,7 +273,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         if k < len(pages):
             d.add(render_protocol(d, pages[k], fx0 + INSET, top, values, shown,
                                   shown if upto is not None else None, lang))
-        out.append(d.tostring())
+        out.append(svg_string(d))
     return out
 
 
@@ -321,7 +322,7 @@ def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | 
     d.add(head)
     d.add(_figure_group(d, fig))
     d.add(_scale_bar(d, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
-    return d.tostring()
+    return svg_string(d)
 
 
 def _text_sheet(sheet: Sheet, block: TitleBlock) -> svgwrite.Drawing:

@@ -20,6 +20,7 @@ from typing import Any
 import svgwrite
 
 from ..render.figure import build_figure
+from ..render.serial import svg_string
 from ..render.shapes import to_svg
 from ..render.style import CSS
 from .accept import FIGURE_MARGIN
@@ -89,12 +90,12 @@ def key_svg(p: Page) -> str:
     dwg.add(frame(dwg, p))
     dwg.add(header(dwg, p, key=True))
     if p.part == "sd":
-        return dwg.tostring() + "\n"
+        return svg_string(dwg) + "\n"
     values = [shown(a.value, a.tol) for a in p.variant.answers]
     dwg.add(answer_boxes(dwg, p, values))
     dwg.add(figure_group(dwg, p))
     dwg.add(overlay_group(dwg, p))
-    return dwg.tostring() + "\n"
+    return svg_string(dwg) + "\n"
 
 
 def key_files(pages: list[Page], title: str, lang: str) -> dict[str, str]:

@@ -35,6 +35,7 @@ from typing import Any, Sequence
 import svgwrite
 
 from ..render.labels import label_runs, text_width
+from ..render.serial import svg_string
 from ..errors import ProblemError
 from ..solve import Solution
 from .accept import Accepted
@@ -296,13 +297,13 @@ def student_svg(p: Page) -> str:
     dwg.add(header(dwg, p))
     if p.part == "sd":
         dwg.add(diagram_axes(dwg, p))
-        return dwg.tostring() + "\n"
+        return svg_string(dwg) + "\n"
     dwg.add(answer_boxes(dwg, p))
     dwg.add(givens_group(dwg, p))
     axes = diagram_axes(dwg, p)
     if axes is not None:
         dwg.add(axes)
-    return dwg.tostring() + "\n"
+    return svg_string(dwg) + "\n"
 
 
 # ------------------------------------------------------------------------------------------------ html
