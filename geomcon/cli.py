@@ -255,7 +255,8 @@ def _current_file(exc: Exception, problems: Path) -> str:
 def cmd_bench(args: argparse.Namespace) -> int:
     from .bench import run_bench
 
-    return run_bench(quick=args.quick, out=Path(args.out))
+    return run_bench(quick=args.quick, out=Path(args.out),
+                     cycle_record=Path(args.cycle_record) if args.cycle_record else None)
 
 
 def cmd_fuzz(args: argparse.Namespace) -> int:
@@ -462,6 +463,9 @@ def build_parser() -> argparse.ArgumentParser:
                        "time against error: construction vs crank sweep, vs sympy; answers vs drawing")
     b.add_argument("--quick", action="store_true", help="fewer repetitions and sweep sizes (about 15 s instead of 45 s)")
     b.add_argument("--out", default="bench.svg", metavar="SVG", help="where to write the plot")
+    b.add_argument("--cycle-record", default=None, metavar="JSON",
+                   help="also write the whole-cycle rows as the record the gallery draws "
+                        "(problems/cycles/bench_record.json)")
     b.set_defaults(func=cmd_bench)
     f = sub.add_parser("fuzz", help="seeded fuzz: hostile problem files and random valid problems; exit 1 on any failure")
     f.add_argument("--hostile", type=int, default=200, metavar="N", help="mutated problem files in all")

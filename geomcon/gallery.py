@@ -106,9 +106,20 @@ def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]
         devs = "; ".join(_deviation(r) for r in sol.published) or "—"
         rows.append(f"| [{pid}]({pid}.svg) (sheets {more}; [player]({pid}.html)){extra} | `{sol.recipe.name}` | "
                     f"{answers} | {devs} |")
+    from .bench.cycle_record import RECORD, cycle_figure, load_record
     from .kinematics.gallery import cycle_gallery
     cycle_out, cycle_rows = cycle_gallery(problems_dir)
     files.update(cycle_out)
+    record = Path(problems_dir) / RECORD
+    if record.is_file():
+        try:
+            files["bench_cycle.svg"] = cycle_figure(load_record(record))
+        except (ValueError, UnicodeDecodeError) as exc:      # JSONDecodeError is a ValueError
+            err = GeomconError(str(exc).removeprefix(f"{record}: "))
+            err.file = str(record)  # type: ignore[attr-defined]
+            raise err from None
+        cycle_rows = [*cycle_rows, "", "The whole-cycle bench against pylinkage + numba, as recorded from one full "
+                      "`geomcon bench` run (`problems/cycles/bench_record.json`): [bench_cycle.svg](bench_cycle.svg)."]
     files["004-02_best_by_K_table.md"] = best_by_k_table()
     files.update(law_diagrams())
     from .grading.example import gallery_files

@@ -32,7 +32,7 @@ from .report import report
 from .synthesis import measure_synthesis, synthesis_table
 
 
-def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
+def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_record: Path | None = None) -> int:
     """Measure, print the tables, write the plot to ``out``; return the exit code (0).
 
     Parameters
@@ -41,6 +41,9 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
         Fewer repetitions and sweeps of N ≤ 36,000 only (seconds instead of about a minute).
     out : Path
         Where the SVG plot goes.
+    cycle_record : Path or None
+        Where to write the whole-cycle rows as the JSON record the gallery draws
+        (``problems/cycles/bench_record.json``); None writes none.
     """
     config = QUICK if quick else FULL
     extremes = measure_extremes(config)
@@ -51,8 +54,15 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg")) -> int:
     text += "\n\n" + synthesis_table(measure_synthesis(1 if quick else 3))
     text += "\n\n" + cam_table(measure_cam(quick))
     text += "\n\n" + grading_table(measure_grading(rows=10_000 if quick else 100_000))
-    text += "\n\n" + cycle_table(measure_cycle(200_000 if quick else 1_000_000, 1 if quick else 3))
-    write_all({out: render_plot(extremes, quick=quick)})
+    cycle = measure_cycle(200_000 if quick else 1_000_000, 1 if quick else 3)
+    text += "\n\n" + cycle_table(cycle)
+    files = {out: render_plot(extremes, quick=quick)}
+    if cycle_record is not None:
+        import time
+        from .cycle_record import record_of, record_text
+        stamp = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+        files[cycle_record] = record_text(record_of(cycle, f"{stamp}, geomcon bench{' --quick' if quick else ''}"))
+    write_all(files)
     print(text + f"\nplot written to {out}")
     return 0
 
