@@ -37,7 +37,9 @@ def _mm_per_unit(root: ET.Element) -> float:
 
 
 def _problem_sheets() -> list[Path]:
-    return sorted(p for p in GALLERY.glob("*.svg") if not p.name.startswith("law_") and "_motion" not in p.name)
+    """The problems' sheets: files named for a problem (``<nnn>-…``), not the laws', the s–v–a diagrams or the
+    bench figure (``bench_cycle.svg``, a chart on screen, not a drawing sheet)."""
+    return sorted(p for p in GALLERY.glob("*.svg") if p.name[:1].isdigit() and "_motion" not in p.name)
 
 
 # ------------------------------------------------------------------------------------------- page and scale

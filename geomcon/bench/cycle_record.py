@@ -85,7 +85,9 @@ def load_record(path: Path) -> dict[str, Any]:
     return parse_record(json.loads(raw.decode("utf-8")), str(path))
 
 
-W, ROW, LEFT, TOP, BAR_W = 1200, 34, 330, 70, 380
+W, ROW, LEFT, TOP, BAR_W = 1180, 34, 330, 70, 380
+MM = 0.25
+"""Millimetres of paper per unit: the chart is 295 mm wide (A4 landscape), its smallest text (11 units) 2.75 mm."""
 FONT = "DejaVu Sans, Arial, Helvetica, sans-serif"
 
 
@@ -97,7 +99,7 @@ def cycle_figure(record: Mapping[str, Any]) -> str:
     rows = [r for r in record["rows"] if r["method"] != NUMPY]
     top = max(r["m_per_s"] for r in rows)
     h = TOP + ROW * len(rows) + 86
-    d = svgwrite.Drawing(size=(f"{W}px", f"{h}px"), viewBox=f"0 0 {W} {h}", debug=False)
+    d = svgwrite.Drawing(size=(f"{W * MM:g}mm", f"{h * MM:g}mm"), viewBox=f"0 0 {W} {h}", debug=False)
     d.add(d.rect((0, 0), (W, h), fill="white"))
     t = {"font_family": FONT, "fill": "#222"}
     d.add(d.text("Whole cycle: four-bar 50/70/80/90, positions per second over the same N crank angles",
