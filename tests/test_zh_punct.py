@@ -66,3 +66,21 @@ def test_a_spec_statement_in_chinese_is_made_full_width():
     ex = spec.exercises[0]
     zh = statement(ex, Accepted(0, ex.given_of(0), None, None, (), False), "zh")
     assert zh == "曲柄 AB = 50 mm，求极位夹角（用作图法）？"
+
+
+def test_no_line_of_any_gallery_svg_begins_with_closing_punctuation():
+    """Chinese line breaking: a wrapped line never starts with ，。、；：）etc. (the warnings block of 001-23a
+    once printed a lone '）' on a line of its own)."""
+    import xml.etree.ElementTree as ET
+    from pathlib import Path
+
+    from geomcon.render.labels import _CLOSING
+
+    gallery = Path(__file__).resolve().parents[1] / "gallery"
+    bad = []
+    for p in sorted(gallery.rglob("*.svg")):
+        for el in ET.parse(p).getroot().iter("{http://www.w3.org/2000/svg}text"):
+            line = "".join(el.itertext()).lstrip()
+            if line[:1] and line[0] in _CLOSING and not line[0].isascii():
+                bad.append((p.name, line[:20]))
+    assert not bad, bad[:5]

@@ -148,7 +148,9 @@ def _tokens(s: str) -> list[str]:
     return out
 
 
-_CLOSING = ",。、;:)」』!?"
+_CLOSING = "，。、；：）」』！？》】,;:)!?"
+"""Punctuation that never begins a line: it stays with the character before it (full-width forms, which Chinese
+text uses, and their ASCII twins)."""
 
 
 def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> list[str]:
@@ -161,6 +163,8 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
     --------
     >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)
     ['以 A 为圆心、BC', '− AB = 20 为半径', '作圆']
+    >>> wrap("速度突降，刚性冲击）", 21.6, 2.4)        # a closing mark never starts a line
+    ['速度突降，刚性冲', '击）']
     """
     return list(_wrap(text, width, size, last_reserve))
 
