@@ -15,8 +15,12 @@ machine, is what counts:
   sizes, its time scaled linearly from the largest N measured);
 - the batch API's cost per variant, against one solve at a time.
 
-Timings are medians of repeated runs (the garbage collector on, as in use); tests check the arithmetic of the
-rows, never a time.
+Each row's thing and its reference are timed *interleaved* (:func:`interleaved`): round after round, each runs
+``number`` times in turn, the garbage collector off while timing (as :mod:`timeit` does) and a collection between
+rounds, and each keeps its shortest round. Timed one after the other, a row's two sides saw different moments of
+a shared machine (a burst of another job's work, a full collection of what an earlier table left): the first
+row of a run once measured 2.9× where the same code measures 1.4×. Tests check the arithmetic of the rows,
+never a time.
 
 Examples
 --------
@@ -28,6 +32,7 @@ True
 """
 from __future__ import annotations
 
+import gc
 import math
 import os
 import random
@@ -100,8 +105,42 @@ class LeanRow:
         return ok
 
 
+def interleaved(fns: Sequence[Callable[[], Any]], *, number: int, rounds: int, warm: int = 3) -> list[float]:
+    """The time of one call (seconds) of each of ``fns``, timed interleaved: after ``warm`` calls of each
+    (imports, the recipe's evaluation plan, its tape), ``rounds`` rounds in which each function runs ``number``
+    times in turn; each keeps its shortest round (divided by ``number``). The garbage collector is off while
+    timing, as :mod:`timeit` has it, and collects between rounds, so that no round pays for what an earlier one
+    (or an earlier table) left behind.
+
+    >>> a, b = interleaved([lambda: sum(range(50)), lambda: sum(range(5000))], number=20, rounds=3)
+    >>> 0 < a < b
+    True
+    """
+    for fn in fns:
+        for _ in range(warm):
+            fn()
+    best = [math.inf] * len(fns)
+    was_enabled = gc.isenabled()
+    try:
+        for _ in range(rounds):
+            gc.collect()
+            gc.disable()
+            for i, fn in enumerate(fns):
+                t0 = clock()
+                for _ in range(number):
+                    fn()
+                best[i] = min(best[i], (clock() - t0) / number)
+            if was_enabled:
+                gc.enable()
+    finally:
+        if was_enabled:
+            gc.enable()
+    return best
+
+
 def median_time(fn: Callable[[], Any], *, number: int, repeat: int) -> float:
-    """The median over ``repeat`` runs of the mean time of ``number`` calls of ``fn`` (seconds)."""
+    """The median over ``repeat`` runs of the mean time of ``number`` calls of ``fn`` (seconds): for the cam
+    rows, whose single calls take milliseconds."""
     for _ in range(3):                            # warm: imports, the recipe's evaluation plan, its tape
         fn()
     runs = []
@@ -118,21 +157,22 @@ def _problem(recipe: str, given: Mapping[str, Any]):
 
 
 def linkage_rows(quick: bool) -> list[LeanRow]:
-    """Answers only against the plain DAG (where written), and answers with checks, per linkage problem."""
-    number, repeat = (200, 3) if quick else (1000, 7)
+    """Answers only against the plain DAG (where written), and answers with checks, per linkage problem: the
+    three timed interleaved (:func:`interleaved`)."""
+    number, rounds = (100, 5) if quick else (200, 25)
     rows = []
     for pid, recipe, given in LINKAGES:
         p = _problem(recipe, given)
-        t = median_time(lambda: solve(p).answers, number=number, repeat=repeat)
         plain = PLAIN.get(recipe)
-        if plain is not None:
-            g = p.given
-            ref = median_time(lambda: plain(g), number=number, repeat=repeat)
-            rows.append(LeanRow("answers only", f"{pid} {recipe}", t, "plain DAG", ref, "≤ 50 µs, ≤ 1.5×", 50e-6, 1.5))
+        g = p.given
+        fns = [lambda: solve(p).answers, lambda: solve(p).checks] + ([lambda: plain(g)] if plain else [])
+        t, tc, *ref = interleaved(fns, number=number, rounds=rounds)
+        if ref:
+            rows.append(LeanRow("answers only", f"{pid} {recipe}", t, "plain DAG", ref[0], "≤ 50 µs, ≤ 1.5×", 50e-6,
+                                1.5))
         else:
             rows.append(LeanRow("answers only", f"{pid} {recipe}", t, "—", None, "≤ 50 µs", 50e-6, None,
                                 note="no plain replica"))
-        tc = median_time(lambda: solve(p).checks, number=number, repeat=repeat)
         rows.append(LeanRow("answers + twin checks", f"{pid} {recipe}", tc, "answers only", t, "≤ 100 µs",
                             100e-6, None))
     return rows
@@ -182,12 +222,14 @@ def process_rows(quick: bool) -> list[LeanRow]:
     # with PYTHONDONTWRITEBYTECODE (some tools set it) would compile every module on every start instead
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
 
-    def run(*args: str) -> float:
-        child_seconds([sys.executable, *args], env)              # writes the byte-code caches if missing
-        return statistics.median(child_seconds([sys.executable, *args], env) for _ in range(repeat))
-
-    base = run("-c", "pass")
-    t = run("-m", "geomcon", "solve", str(path))
+    argvs = ([sys.executable, "-c", "pass"], [sys.executable, "-m", "geomcon", "solve", str(path)])
+    for argv in argvs:
+        child_seconds(argv, env)                                 # writes the byte-code caches if missing
+    runs: tuple[list[float], list[float]] = ([], [])
+    for _ in range(repeat):                                      # interleaved, as the in-process rows
+        for argv, out in zip(argvs, runs):
+            out.append(child_seconds(argv, env))
+    base, t = (statistics.median(r) for r in runs)
     return [LeanRow("whole process", f"geomcon solve {WHOLE[:6]}", t, "python -c pass", base, "≤ 120 ms", 0.120, None,
                     note="byte-code cached, as installed")]
 
@@ -283,19 +325,24 @@ def _variants(recipe: str, n: int) -> list[dict[str, float]]:
 
 
 def batch_rows(quick: bool) -> list[LeanRow]:
-    """The batch API's cost per variant, with and without checks, against one solve at a time."""
+    """The batch API's cost per variant, with and without checks, against one solve at a time of the same
+    variants as loaded problems (validated beforehand, outside the timing: the batch validates each variant
+    within it); the four timed interleaved."""
     n = 200 if quick else 1000
     out = []
     for recipe in ("crank_rocker.extremes", "crank_slider.design_by_K"):
         drawn = _variants(recipe, n)
         rows = [g for g, err in zip(drawn, solve_batch(recipe, drawn, checks=False).errors) if err is None]
         problems = [_problem(recipe, g) for g in rows]
-        n = len(rows)                         # the valid variants (a random draw may fail Grashof)
-        single = median_time(lambda: [solve(p).answers for p in problems], number=1, repeat=3) / n
-        for checks in (False, True):
-            t = median_time(lambda: solve_batch(recipe, rows, checks=checks), number=1, repeat=3) / n
-            out.append(LeanRow(f"batch per variant{' + checks' if checks else ''}", f"{n} × {recipe}", t,
-                               "one solve at a time (answers)", single, "reported", None, None))
+        count = len(rows)                     # the valid variants (a random draw may fail Grashof)
+        single, batch, single_checks, batch_checks = (t / count for t in interleaved(
+            [lambda: [solve(p).answers for p in problems], lambda: solve_batch(recipe, rows, checks=False),
+             lambda: [solve(p).checks for p in problems], lambda: solve_batch(recipe, rows, checks=True)],
+            number=1, rounds=2 if quick else 5, warm=1))
+        out.append(LeanRow("batch per variant", f"{count} × {recipe}", batch, "one solve at a time (answers)",
+                           single, "≤ 1×", None, 1.0))
+        out.append(LeanRow("batch per variant + checks", f"{count} × {recipe}", batch_checks,
+                           "one solve at a time (checks)", single_checks, "≤ 1×", None, 1.0))
     return out
 
 
@@ -326,8 +373,8 @@ def lean_table(rows: Sequence[LeanRow]) -> str:
              + (f" ({r.note})" if r.note else "")) for r in rows]
     met = sum(r.met for r in rows if r.target != "reported")
     total = sum(1 for r in rows if r.target != "reported")
-    return ("(0) lean core: each target as a ratio to a reference timed in the same run (medians)\n"
+    return ("(0) lean core: each target as a ratio to a reference timed in the same run, interleaved\n"
             + baseline_line(rows) + "\n\n"
             + format_table(("measured", "case", "time", "reference", "ratio", "target", ""), body, "llrlrll")
             + f"\n\n{met} of {total} targets met on this run. Ratios are time / reference (\"× faster\": reference"
-            " / time). The sweep rows use part (a)'s best-of times on both sides; the rest are medians.")
+            " / time). Linkage and batch rows: the shortest of interleaved rounds, gc off while timing; the whole process and cams: medians; the sweep rows: part (a)'s best-of times on both sides.")
