@@ -6,6 +6,13 @@ givens exactly as a problem file's, solves it with lean, planned scenes (the rec
 learned on the first variant and reused), and collects the answers. A variant that is bad input or no
 mechanism does not stop the batch: its error is reported in its place.
 
+Once the recipe is taped (:mod:`geomcon.taped`), a variant whose givens follow a recorded path is solved
+without a scene or a :class:`~geomcon.solve.Solution`: the tape's arithmetic on its givens, the compiled plan
+of the answer steps (the one single solves run, shared), and the answers read as a solution reads them; the
+twin checks then run on a solution holding those answers. Whatever that lane does not cover (a path not
+recorded yet, a failing step, no valid candidate, a value that is not finite) is solved as one problem, which
+gives its answers or words its refusal exactly as :func:`~geomcon.solve.solve` does.
+
 Examples
 --------
 >>> b = solve_batch("guide_bar.extremes", [{"AB": 145, "AC": 290}, {"AB": 300, "AC": 290}])
@@ -23,9 +30,12 @@ from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
 from .errors import GeomconError
+from .plan import planned
 from .problems import Problem, validate_given
-from .recipes import get_recipe
-from .solve import solve
+from .recipes import Construction, Recipe, get_recipe
+from .scene.scene import Scene
+from .solve import Solution, read_candidates, solve, taped_table
+from .taped import taped_values
 
 BATCH_MAX = 100_000
 """Most variants one call takes (the caller splits larger sets)."""
@@ -73,8 +83,13 @@ def _rows(givens: Sequence[Mapping[str, Any]] | Mapping[str, Sequence[Any]]) -> 
             raise ValueError(f"columns of different lengths: {', '.join(f'{k}: {len(v)}' for k, v in cols.items())}")
         n = sizes.pop() if sizes else 0
         return [{k: v[i] for k, v in cols.items()} for i in range(n)]
-    return [({k: (v.item() if hasattr(v, "item") else v) for k, v in g.items()} if isinstance(g, Mapping) else g)
-            for g in givens]
+    return [({k: (v if type(v) in _PLAIN else v.item() if hasattr(v, "item") else v) for k, v in g.items()}
+             if isinstance(g, Mapping) else g) for g in givens]
+
+
+_PLAIN = frozenset((float, int, str, bool, list, tuple))
+"""Types a given arrives as from TOML or Python (no numpy scalar to unwrap: a failed ``hasattr`` costs more than
+the rest of a row's copy)."""
 
 
 def solve_batch(recipe: str, givens: Sequence[Mapping[str, Any]] | Mapping[str, Sequence[Any]], *,
@@ -106,27 +121,111 @@ def solve_batch(recipe: str, givens: Sequence[Mapping[str, Any]] | Mapping[str, 
     rows = _rows(givens)
     if len(rows) > BATCH_MAX:
         raise ValueError(f"{len(rows)} variants; at most {BATCH_MAX} per call")
-    answers: list[dict[str, Any] | None] = []
-    errors: list[str | None] = []
-    ok: list[bool] = []
-    warns: list[list[str]] = []
+    n = len(rows)
+    answers: list[dict[str, Any] | None] = [None] * n
+    errors: list[str | None] = [None] * n
+    ok: list[bool] = [False] * n
+    warns: list[list[str]] = [[] for _ in range(n)]
+    # in phases, each over every variant, so that each phase's code stays hot (interleaved, validation and
+    # replay cost a sixth more per variant on the development machine)
+    valid: list[tuple[int, dict[str, Any], list[str]]] = []
+    validate = rec.validate
     for i, row in enumerate(rows):
         try:
             given = validate_given(rec, row)
-            problem = Problem(id=f"{recipe}[{i}]", recipe=rec.name, given=given)
-            sol = solve(problem)
-            answers.append(sol.answers)
-            good = sol.ok if checks else True
-            warns.append(sol.warnings if checks else sol.construction_warnings)
+            valid.append((i, given, planned(rec.name, validate, given) if validate is not None else []))
         except GeomconError as exc:
-            answers.append(None)
-            errors.append(str(exc))
-            ok.append(False)
-            warns.append([])
+            errors[i] = str(exc)
+    fast = [_replayed(rec, given) for _, given, _ in valid]
+    sols: list[tuple[int, Solution]] = []
+    for (i, given, warnings), replayed in zip(valid, fast):
+        if replayed is not None and not checks:
+            answers[i], ok[i], warns[i] = replayed[0][0][1], True, list(warnings)
             continue
-        errors.append(None)
-        ok.append(good)
+        try:
+            problem = Problem(id=f"{recipe}[{i}]", recipe=rec.name, given=given)
+            sols.append((i, solve(problem) if replayed is None else _solution(rec, problem, warnings, *replayed)))
+        except GeomconError as exc:
+            errors[i] = str(exc)
+    # the checks in phases too: the answers, the twins, the rows, the words (each kept as it is made)
+    for out, step in ((answers, _ANSWERS), (None, _TWIN), (ok, _OK), (warns, _WORDS)) if checks else \
+            ((answers, _ANSWERS), (warns, _BUILT)):
+        alive = []
+        for i, sol in sols:
+            try:
+                got = step(sol)
+            except GeomconError as exc:
+                answers[i], ok[i], warns[i], errors[i] = None, False, [], str(exc)
+                continue
+            if out is not None:
+                out[i] = got
+            alive.append((i, sol))
+        sols = alive
+    if not checks:
+        for i, _ in sols:
+            ok[i] = True
     return Batch(rec.name, answers, errors, ok, warns)
+
+
+def _ANSWERS(s: Solution) -> Any:
+    return s.answers
+
+
+def _TWIN(s: Solution) -> Any:
+    return s.analytic
+
+
+def _OK(s: Solution) -> bool:
+    return s.ok
+
+
+def _WORDS(s: Solution) -> list[str]:
+    return s.warnings
+
+
+def _BUILT(s: Solution) -> list[str]:
+    return s.construction_warnings
+
+
+def _replayed(rec: Recipe, given: dict[str, Any]) -> tuple[list, Any, dict] | None:
+    """The valid candidates ``[(index, answers), …]`` of ``given`` (as :class:`~geomcon.solve.Solution` reads
+    them), the tape and its memo, by the recipe's current tape and the compiled plan of its answer steps; None
+    when the tape does not cover these givens or a value needs the full solve to be judged or refused."""
+    try:
+        found = taped_values(rec, given)
+    except Exception:              # the tape's arithmetic leaves its domain: the single solve says how
+        return None
+    if found is None:
+        return None
+    tape, memo = found
+    keys, table = taped_table(rec, tape.solutions, tape.answers)
+    run = tape.program(keys)
+    if run is None:
+        return None
+    try:
+        run(memo)
+    except Exception:              # the single solve evaluates step by step and words the failure
+        return None
+    out = read_candidates(rec, table, memo)
+    if not out:
+        return None
+    for _, sol in out:
+        for v in sol.values():
+            if not (type(v) is float and v - v == 0.0 or type(v) is str):   # finite (the common case) or a word
+                return None
+    return out, tape, memo
+
+
+def _solution(rec: Recipe, problem: Problem, warnings: list[str], out: list, tape: Any, memo: dict) -> Solution:
+    """The :class:`~geomcon.solve.Solution` of a replayed variant holding the answers already read, for its
+    twin checks (its scene is the replay's, and completes itself when anything else is asked of it)."""
+    sc = Scene.replayed(tape, memo)
+    given = problem.given
+    sc.rebuild_with(lambda: rec.construct(given).scene)
+    sol = Solution(problem, rec, Construction(sc, tape.answers, tape.points, tape.solutions, (), tape.no_solution),
+                   warnings)
+    sol.__dict__["_valid_candidates"] = out
+    return sol
 
 
 __all__ = ["BATCH_MAX", "Batch", "solve_batch"]

@@ -104,6 +104,44 @@ def answer_table(units: dict[str, str], maps: tuple) -> Table:
     return keys, rows
 
 
+def taped_table(recipe: Recipe, solutions: tuple, answers: Any) -> Table:
+    """:func:`answer_table` of a tape's solution maps, made once per tape (a replay hands every solve of one
+    tape the same maps: the table is kept by their identity, with them)."""
+    ident = solutions or answers
+    entry = _TABLES.get(id(ident))
+    if entry is None or entry[0] is not ident:
+        if len(_TABLES) >= _TABLES_MAX:
+            _TABLES.clear()
+        entry = _TABLES[id(ident)] = (ident, answer_table(_answer_units(recipe), solutions or (answers,)))
+    return entry[1]
+
+
+def read_candidates(recipe: Recipe, rows: tuple, vals: dict[str, Any]) -> list[tuple[int, dict[str, Any]]]:
+    """(candidate index, answers) of every candidate whose ``_valid`` step holds, from the step values
+    ``vals`` read through an :func:`answer_table`'s rows, in the recipe's order of preference.
+
+    >>> from geomcon.recipes import get_recipe
+    >>> r = get_recipe("guide_bar.extremes")
+    >>> read_candidates(r, answer_table({"theta": "deg"}, ({"theta": "t"},))[1], {"t": 60.0})
+    [(0, {'theta': 60.0})]
+    """
+    out = []
+    for index, (valid, named, extra) in enumerate(rows):
+        if valid is not None and not vals[valid]:
+            continue
+        sol = {}
+        for name, key, unit in named:
+            v = vals[key]
+            sol[name] = v if type(v) is float and unit != "bool" else _value(unit, v)
+        for name, key in extra:
+            sol[name] = _value("", vals[key])
+        out.append((index, sol))
+    if recipe.order is not None:
+        order = recipe.order
+        out.sort(key=lambda pair: order(pair[1]))
+    return out
+
+
 def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     """Matching scalar parts of two answer values: ``("s[0]", a[0], b[0])``… for lists;
     bools compare as the numbers 1 and 0.
@@ -173,32 +211,11 @@ class Solution:
         """(candidate index in the construction's ``solutions``, answers) of every valid solution, in the
         order of :attr:`solution_values`."""
         c = self.construction
-        units = _answer_units(self.recipe)
         if self._taped:                                   # the same maps on every replay of one tape
-            ident = c.solutions or c.answers
-            entry = _TABLES.get(id(ident))
-            if entry is None or entry[0] is not ident:
-                if len(_TABLES) >= _TABLES_MAX:
-                    _TABLES.clear()
-                entry = _TABLES[id(ident)] = (ident, answer_table(units, c.solutions or (c.answers,)))
-            keys, rows = entry[1]
+            keys, rows = taped_table(self.recipe, c.solutions, c.answers)
         else:
-            keys, rows = answer_table(units, c.solutions or (c.answers,))
-        vals = self.scene.evaluate(keys)
-        out = []
-        for index, (valid, named, extra) in enumerate(rows):
-            if valid is not None and not vals[valid]:
-                continue
-            sol = {}
-            for name, key, unit in named:
-                v = vals[key]
-                sol[name] = v if type(v) is float and unit != "bool" else _value(unit, v)
-            for name, key in extra:
-                sol[name] = _value("", vals[key])
-            out.append((index, sol))
-        if self.recipe.order is not None:
-            order = self.recipe.order
-            out.sort(key=lambda pair: order(pair[1]))
+            keys, rows = answer_table(_answer_units(self.recipe), c.solutions or (c.answers,))
+        out = read_candidates(self.recipe, rows, self.scene.evaluate(keys))
         if not out:
             why = self.construction.no_solution
             if self._taped:
@@ -255,7 +272,8 @@ class Solution:
         units = _answer_units(self.recipe)
         scales = {k: self.unit_scale(u) for k, u in units.items()}
 
-        def cost(b: dict, e: dict) -> float:
+        def cost(b: dict, e: dict, bound: float = math.inf) -> float:
+            """The worst relative difference of ``b`` and ``e``; any value above ``bound`` once it exceeds it."""
             worst = 0.0
             for k, x in b.items():
                 y = e.get(k)
@@ -266,12 +284,22 @@ class Solution:
                     scale = self.unit_scale("")
                 if type(x) is float and type(y) is float:          # the common case, at once
                     worst = max(worst, abs(x - y) / max(abs(x), abs(y), scale))
-                    continue
-                for _, p, q in _pairs(k, x, y):
-                    p, q = float(p), float(q)
-                    worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
+                else:
+                    for _, p, q in _pairs(k, x, y):
+                        p, q = float(p), float(q)
+                        worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
+                if worst > bound:
+                    return worst
             return worst
 
+        n = len(built)
+        if n == len(exact):
+            # the usual case: both lists in the recipe's order, each solution nearest its twin. When every other
+            # pairing is worse than the worst of these, the greedy choice below takes exactly these n pairs
+            # first, so the others need only be shown worse (a cost cut off once it passes that bound)
+            diagonal = max(cost(built[i], exact[i]) for i in range(n))
+            if all(cost(built[i], exact[j], diagonal) > diagonal for i in range(n) for j in range(n) if i != j):
+                return [(i, i) for i in range(n)]
         ranked = sorted((cost(b, e), i, j) for i, b in enumerate(built) for j, e in enumerate(exact))
         used_i: set[int] = set()
         used_j: set[int] = set()

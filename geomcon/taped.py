@@ -78,18 +78,32 @@ def is_taped(scene: Scene) -> bool:
     return scene._stale
 
 
-def construct_taped(recipe: Recipe, given: Mapping[str, Any]) -> Construction:
-    """``recipe.construct(given)`` in a lean scene: replayed from a tape when a current one exists, else
-    planned (and, when that solve followed a plan, taped for the next solves of this shape)."""
+def taped_values(recipe: Recipe, given: Mapping[str, Any]) -> tuple[Tape, dict[str, Any]] | None:
+    """The current tape of ``recipe`` for the shape of ``given`` whose guards hold on it, and the memo a replay
+    starts from (the tape's own steps computed: :meth:`~geomcon.scene.tape.Tape.values`); None when there is
+    none (not yet recorded, not tapeable, another path through the recipe's decisions)."""
     key = shape_of(recipe.name, given)
     entries = _TAPES.get(key) if key is not None else None
     if entries:
         for tape, _, _ in entries:
             if tape is not None and _current(entries[0], recipe.name, tape.title):
-                c = replay(tape, given)
-                if c is not None:          # its captions are the recording's: it can complete itself
-                    c.scene.rebuild_with(lambda: recipe.construct(given).scene)
-                    return c
+                memo = tape.values(given)
+                if memo is not None:
+                    return tape, memo
+    return None
+
+
+def construct_taped(recipe: Recipe, given: Mapping[str, Any]) -> Construction:
+    """``recipe.construct(given)`` in a lean scene: replayed from a tape when a current one exists, else
+    planned (and, when that solve followed a plan, taped for the next solves of this shape)."""
+    found = taped_values(recipe, given)
+    if found is not None:
+        tape, memo = found
+        sc = Scene.replayed(tape, memo)
+        sc.rebuild_with(lambda: recipe.construct(given).scene)    # its captions are the recording's
+        return Construction(sc, tape.answers, tape.points, tape.solutions, (), tape.no_solution)
+    key = shape_of(recipe.name, given)
+    entries = _TAPES.get(key) if key is not None else None
     c = planned(recipe.name, recipe.construct, given)
     if key is None or c.scene.unplanned():
         return c

@@ -65,3 +65,23 @@ def test_bad_calls_raise():
     with pytest.raises(ValueError, match="different lengths"):
         solve_batch("guide_bar.extremes", {"AB": [1.0, 2.0], "AC": [3.0]})
     assert len(solve_batch("guide_bar.extremes", [])) == 0
+
+
+@pytest.mark.parametrize("recipe", ["crank_rocker.extremes", "crank_slider.extremes", "guide_bar.extremes",
+                                    "crank_slider.design_by_K", "crank_rocker.design_by_K"])
+def test_the_replayed_lane_gives_what_single_solves_give(recipe):
+    # many variants: the first teach the plan and the tape, the rest take the batch's replayed lane; the
+    # answers (bit for bit), the verdicts, the warnings and the refusals are those of one-by-one solves
+    from tests.test_bench_lean import _variants
+    rows = list(_variants(recipe, 60))
+    for checks in (True, False):
+        b = solve_batch(recipe, rows, checks=checks)
+        for row, got, err, ok, words in zip(rows, b.answers, b.errors, b.ok, b.warnings):
+            try:
+                sol = solve(problem_from_dict({"recipe": recipe, "given": row}, name="x"))
+                want = sol.answers
+                want_ok, want_words = (sol.ok, sol.warnings) if checks else (True, sol.construction_warnings)
+            except ValueError as exc:
+                assert got is None and err == str(exc) and not ok and words == []
+                continue
+            assert (got, err, ok, words) == (want, None, want_ok, want_words)
