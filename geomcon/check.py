@@ -81,19 +81,21 @@ def error_text(err: float, magnitude: float) -> float:
     return 0.0
 
 
-def check_row(quantity: str, construction: float, analytic: float, scale: float) -> dict:
+def check_row(quantity: str, construction: float, analytic: float, scale: float, unit: str | None = None) -> dict:
     """One row of ``checks``: construction vs analytic to ``CHECK_REL`` of ``max(|a|, |b|, scale)`` (``tol``,
-    the absolute error allowed; the solver may widen it by the problem's condition)."""
+    the absolute error allowed; the solver may widen it by the problem's condition); with ``unit``, the row
+    ends with it (a solution's rows say the unit of each quantity).
+
+    >>> check_row("K", 1.5, 1.5, 1.0, "")["unit"], list(check_row("K", 1.5, 1.5, 1.0))[-1]
+    ('', 'ok')
+    """
     err = abs(construction - analytic)
     tol = CHECK_REL * max(abs(construction), abs(analytic), scale)
-    return {
-        "quantity": quantity,
-        "construction": construction,
-        "analytic": analytic,
-        "abs_error": err,
-        "tol": tol,
-        "ok": math.isfinite(err) and err <= tol,
-    }
+    if unit is None:
+        return {"quantity": quantity, "construction": construction, "analytic": analytic, "abs_error": err,
+                "tol": tol, "ok": math.isfinite(err) and err <= tol}
+    return {"quantity": quantity, "construction": construction, "analytic": analytic, "abs_error": err,
+            "tol": tol, "ok": math.isfinite(err) and err <= tol, "unit": unit}
 
 
 def audit_row(quantity: str, published: float, exact: float, scale: float = 1.0) -> dict:

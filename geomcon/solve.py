@@ -86,6 +86,41 @@ of one tape the same maps), each held with its maps so that the identity stays t
 _TABLES_MAX = 1024
 
 
+_PAIRS: dict[str, tuple[tuple[str, str], ...]] = {}
+
+
+def _answer_pairs(recipe: Recipe) -> tuple[tuple[str, str], ...]:
+    """``(name, unit)`` of each declared answer, in order (made once per recipe)."""
+    pairs = _PAIRS.get(recipe.name)
+    if pairs is None:
+        pairs = _PAIRS[recipe.name] = tuple((q.name, q.unit) for q in recipe.answers)
+    return pairs
+
+
+_LENGTHS: dict[str, tuple[tuple[str, bool], ...]] = {}
+
+
+def _length_givens(recipe: Recipe) -> tuple[tuple[str, bool], ...]:
+    """``(name, True)`` of each given length in mm, ``(name, False)`` of each point or list of lengths, in the
+    recipe's order (made once per recipe)."""
+    out = _LENGTHS.get(recipe.name)
+    if out is None:
+        out = _LENGTHS[recipe.name] = tuple((q.name, q.unit == "mm") for q in recipe.givens
+                                            if q.unit in ("mm", "point", "mm[]"))
+    return out
+
+
+_UNIT_SETS: dict[str, tuple[str, ...]] = {}
+
+
+def _answer_unit_set(recipe: Recipe) -> tuple[str, ...]:
+    """The distinct units of the recipe's answers (made once per recipe)."""
+    units = _UNIT_SETS.get(recipe.name)
+    if units is None:
+        units = _UNIT_SETS[recipe.name] = tuple(dict.fromkeys(q.unit for q in recipe.answers))
+    return units
+
+
 def answer_table(units: dict[str, str], maps: tuple) -> Table:
     """How a construction's solution maps read: every step key they name (in order), and per map its
     ``_valid`` step (or None), its answers ``(name, step key, unit)`` in the recipe's declared order and any
@@ -182,13 +217,14 @@ class Solution:
     def length_scale(self) -> float:
         """The largest given length or coordinate: the scale of relative comparisons of lengths."""
         sizes = [1e-300]
-        for q in self.recipe.givens:
-            v = self.problem.given.get(q.name)
+        given = self.problem.given
+        for name, single in _length_givens(self.recipe):
+            v = given.get(name)
             if v is None:
                 continue
-            if q.unit == "mm":
+            if single:
                 sizes.append(abs(v))
-            elif q.unit in ("point", "mm[]"):
+            else:
                 sizes += [abs(x) for x in v]
         return max(sizes)
 
@@ -270,7 +306,8 @@ class Solution:
         if len(built) <= 1 or len(exact) <= 1:
             return [(i, i) for i in range(min(len(built), len(exact)))]
         units = _answer_units(self.recipe)
-        scales = {k: self.unit_scale(u) for k, u in units.items()}
+        by_unit = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
+        scales = {k: by_unit[u] for k, u in units.items()}
 
         def cost(b: dict, e: dict, bound: float = math.inf) -> float:
             """The worst relative difference of ``b`` and ``e``; any value above ``bound`` once it exceeds it."""
@@ -361,40 +398,47 @@ class Solution:
         """Construction vs analytic twin for every answer of every solution, each row judged at CHECK_REL and,
         when it fails there, at the problem's own condition."""
         rows = []
+        scales = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
+        isfinite = math.isfinite
         for i, j in self.matching:
             built, exact = self.solution_values[i], self.analytic[j]
             prefix = f"solutions[{i}]." if i else ""
-            for q in self.recipe.answers:
-                b, e = built.get(q.name), exact.get(q.name)
+            for name, unit in _answer_pairs(self.recipe):
+                b, e = built.get(name), exact.get(name)
                 if b is None or e is None:
                     continue
-                if type(b) is float and type(e) is float:               # a number: one row, at once
-                    parts: Any = ((prefix + q.name, b, e, q.name),)
-                else:
-                    parts = [(name, x, y, flat) for (name, x, y), (flat, _, _)
-                             in zip(_pairs(prefix + q.name, b, e), _pairs(q.name, b, e))]
-                scale = self.unit_scale(q.unit)
-                for name, x, y, flat in parts:
+                if type(b) is float and type(e) is float and not b == e == math.inf:
+                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it)
+                    err = abs(b - e)
+                    tol = CHECK_REL * max(abs(b), abs(e), scales[unit])
+                    row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err, "tol": tol,
+                           "ok": isfinite(err) and err <= tol, "unit": unit}
+                    rows.append(row if row["ok"] else self._conditioned(row, j, name, unit))
+                    continue
+                parts: Any = ([(prefix + name, b, e, name)] if type(b) is float and type(e) is float else
+                              [(label, x, y, flat) for (label, x, y), (flat, _, _)
+                               in zip(_pairs(prefix + name, b, e), _pairs(name, b, e))])
+                scale = self.unit_scale(unit)
+                for label, x, y, flat in parts:
                     if type(x) is str or type(y) is str:                 # a word (a choice): equal or not
-                        rows.append({"quantity": name, "construction": x, "analytic": y, "abs_error": float(x != y),
-                                     "tol": 0.0, "ok": x == y, "unit": q.unit})
+                        rows.append({"quantity": label, "construction": x, "analytic": y, "abs_error": float(x != y),
+                                     "tol": 0.0, "ok": x == y, "unit": unit})
                         continue
                     if x == y == math.inf:                               # an unbounded interval's end
-                        rows.append({"quantity": name, "construction": x, "analytic": y, "abs_error": 0.0,
-                                     "tol": 0.0, "ok": True, "unit": q.unit})
+                        rows.append({"quantity": label, "construction": x, "analytic": y, "abs_error": 0.0,
+                                     "tol": 0.0, "ok": True, "unit": unit})
                         continue
-                    row = check_row(name, x, y, scale)
-                    row["unit"] = q.unit
+                    row = check_row(label, x, y, scale, unit)
                     if not row["ok"]:
-                        row = self._conditioned(row, j, flat, q.unit)
+                        row = self._conditioned(row, j, flat, unit)
                     rows.append(row)
         if self.recipe.back_check is not None:
             for i, built in enumerate(self.solution_values):
                 prefix = f"solutions[{i}]." if i else ""
                 for name, rebuilt, required, unit in planned(self.recipe.name, self.recipe.back_check,
                                                              self.problem.given, built):
-                    row = {**check_row(f"{prefix}back_substitution.{name}", rebuilt, required,
-                                       self.unit_scale(unit)), "unit": unit}
+                    row = check_row(f"{prefix}back_substitution.{name}", rebuilt, required, self.unit_scale(unit),
+                                    unit)
                     if not row["ok"]:
                         row = self._back_conditioned(row, name, i, self.problem.given, built)
                     rows.append(row)

@@ -77,6 +77,44 @@ def rebuilt(recipe: str, given: Mapping[str, Any]) -> Scene:
     return construct_taped(get_recipe(recipe), given).scene
 
 
+_RECIPES: dict[str, Any] = {}
+"""The analysis recipes a back-substitution rebuilds through, by name (looked up once)."""
+
+
+def _taped_values(recipe: Any, given: Mapping[str, Any]) -> Any:
+    global _taped_values
+    from ..taped import taped_values                # imported when first used: the taped module imports recipes
+    _taped_values = taped_values
+    return taped_values(recipe, given)
+
+
+def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...]) -> dict[str, Any]:
+    """``rebuilt(recipe, given).evaluate(keys)``, the values only: once the recipe is taped, its tape's
+    arithmetic and the compiled plan of ``keys`` run on a memo of their own, with no scene (a back-substitution
+    reads three numbers of each designed linkage); any other case, or a step that fails (worded by the scene),
+    takes the scene.
+
+    >>> v = rebuilt_values("guide_bar.extremes", {"AB": 145.0, "AC": 290.0}, ("theta",))
+    >>> round(v["theta"], 9)
+    60.0
+    """
+    r = _RECIPES.get(recipe)
+    if r is None:
+        from . import get_recipe
+        r = _RECIPES[recipe] = get_recipe(recipe)
+    try:
+        found = _taped_values(r, given)
+        if found is not None:
+            tape, memo = found
+            run = tape.program(keys)
+            if run is not None:
+                run(memo)
+                return {k: memo[k] for k in keys}
+    except Exception:                  # the scene evaluates step by step and says which step failed
+        pass
+    return rebuilt(recipe, given).evaluate(keys)
+
+
 def add_pivot(sc: Scene, key: str, at: Point | tuple[Any, Any], caption: tuple[str, str], *,
               ground_angle: float = -math.pi / 2) -> Ref:
     """A fixed pivot: the given point (a Point, or coordinates placed by the step: :meth:`Scene.given_at`)

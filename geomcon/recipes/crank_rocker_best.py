@@ -119,9 +119,9 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild with ``crank_rocker.extremes``: K, ψ and γmin must come back."""
-    from .common import rebuilt
-    sc = rebuilt("crank_rocker.extremes", {"AB": ans["AB"], "BC": ans["BC"], "CD": ans["CD"], "AD": g["AD"]})
-    v = sc.evaluate(["K", "psi", "gamma_min"])
+    from .common import rebuilt_values
+    v = rebuilt_values("crank_rocker.extremes", {"AB": ans["AB"], "BC": ans["BC"], "CD": ans["CD"], "AD": g["AD"]},
+                       ("K", "psi", "gamma_min"))
     return [("K", v["K"], g["K"], ""), ("psi", v["psi"], g["psi"], "deg"),
             ("gamma_min", v["gamma_min"], ans["gamma_min"], "deg")]
 

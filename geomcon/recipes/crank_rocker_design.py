@@ -36,7 +36,7 @@ from ..tolerance import tol
 from . import crank_rocker_links
 from .base import Construction, Quantity, Recipe
 from .common import (add_bar, angle_deg, best_index, folded_flag, gamma_min_of, half_difference, half_sum, is_valid,
-                     length, near_flag, one, pick, preference, rebuilt)
+                     length, near_flag, one, pick, preference, rebuilt_values)
 from .theta_circle import K_MAX_OBTUSE, add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
 GIVENS = (
@@ -564,8 +564,8 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild with ``crank_rocker.extremes``: K, ψ (when given) and γmin must come back."""
-    sc = rebuilt("crank_rocker.extremes", {"AB": ans["AB"], "BC": ans["BC"], "CD": ans["CD"], "AD": ans["AD"]})
-    v = sc.evaluate(["K", "psi", "gamma_min"])
+    v = rebuilt_values("crank_rocker.extremes", {"AB": ans["AB"], "BC": ans["BC"], "CD": ans["CD"], "AD": ans["AD"]},
+                       ("K", "psi", "gamma_min"))
     rows = [("K", v["K"], g["K"], ""), ("gamma_min", v["gamma_min"], ans["gamma_min"], "deg"),
             ("psi", v["psi"], ans["psi"], "deg")]
     if g.get("psi") is not None:

@@ -20,7 +20,7 @@ from ..geometry import Line, OtherThan, Point, line_circle, perpendicular, polar
 from ..scene import Role, Scene
 from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
-from .common import rebuilt
+from .common import rebuilt_values
 from .crank_slider_design import admissible_arc, finish_from_A
 from .theta_circle import (K_MAX_ACUTE, add_theta_step, add_theta_circle, arc_from_to,
                            refuse_tiny_theta)
@@ -148,7 +148,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild with ``crank_slider.extremes``: H, K and the slow stroke's γmin come back."""
-    v = rebuilt("crank_slider.extremes", {"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]}).evaluate(["H", "K", "gamma_min_slow"])
+    v = rebuilt_values("crank_slider.extremes", {"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]},
+                       ("H", "K", "gamma_min_slow"))
     return [("H", v["H"], g["H"], "mm"), ("K", v["K"], g["K"], ""), ("gamma_w_min", v["gamma_min_slow"], ans["gamma_w_min"], "deg")]
 
 

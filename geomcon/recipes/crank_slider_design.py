@@ -26,7 +26,7 @@ from ..geometry import (Above, Line, OtherThan, Point, ToLeftOf, circle, circle_
 from ..scene import Ref, Role, Scene, marks
 from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, along_line, angle_deg, length, rebuilt
+from .common import add_angle_mark, add_bar, along_line, angle_deg, length, rebuilt_values
 from .crank_slider import add_pressure_angles
 from .theta_circle import K_MAX_ACUTE, add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
 
@@ -283,8 +283,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
 
 def back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
     """Rebuild the designed linkage with ``crank_slider.extremes``: it must give back H, K and the condition."""
-    sc = rebuilt("crank_slider.extremes", {"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]})
-    v = sc.evaluate(["H", "K", "gamma_min"])
+    v = rebuilt_values("crank_slider.extremes", {"AB": ans["AB"], "BC": ans["BC"], "e": ans["e"]},
+                       ("H", "K", "gamma_min"))
     which = _closing(g)
     return [("H", v["H"], g["H"], "mm"), ("K", v["K"], g["K"], ""), (which, ans[which], g[which], "mm"),
             ("gamma_min", v["gamma_min"], ans["gamma_min"], "deg")]

@@ -216,6 +216,11 @@ class Tape:
         return frozenset([PREFIX + n for n in self.leaves] + [n[0] for n in self.nodes])
 
     @cached_property
+    def leaf_keys(self) -> tuple[tuple[str, str], ...]:
+        """``(memo key, given name)`` of each given the tape reads (the keys made once, not per replay)."""
+        return tuple((PREFIX + n, n) for n in self.leaves)
+
+    @cached_property
     def n_inputs(self) -> int:
         """How many steps the tape computes itself (a fresh replay's memo holds exactly these)."""
         return len(self.inputs)
@@ -231,7 +236,7 @@ class Tape:
     def values(self, given: Mapping[str, Any]) -> dict[str, Any] | None:
         """The tape's own steps on ``given``: the memo a replayed scene starts from (None when the arithmetic
         fails: the planned path then raises what the recipe raises)."""
-        memo = {PREFIX + n: given[n] for n in self.leaves}
+        memo = {key: given[n] for key, n in self.leaf_keys}
         try:
             for key, op, args in self.nodes:
                 memo[key] = op(*[memo[a[0]] if type(a) is Ref else a for a in args])
