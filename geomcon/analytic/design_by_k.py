@@ -22,7 +22,7 @@ import math
 
 from ..errors import NotAMechanism
 from ..tolerance import REL_TOL
-from .linkages import theta_from_k
+from .linkages import _tri_angle, crank_rocker_gamma_from_positions, theta_from_k
 
 
 def _sides_from_e(L: float, th: float, e: float) -> tuple[float, float]:
@@ -132,8 +132,6 @@ def _trilaterate(p: tuple[float, float], q: tuple[float, float], rp: float, rq: 
     """The points at distance rp from p and rq from q (0, 1 or 2): the angle at p of the triangle p q A by
     Kahan's formula (accurate when the triangle is nearly flat), sides short of a triangle by REL_TOL only
     taken as flat."""
-    from .linkages import _tri_angle
-
     dx, dy = q[0] - p[0], q[1] - p[1]
     d = math.hypot(dx, dy)
     sides = sorted([rp, rq, d])
@@ -267,8 +265,6 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
     line (the Grashof boundary). ``c1_folded_only`` keeps only the designs in which c1 is the folded extreme
     (with ψ given the two extremes are symmetric, and the others are their mirror images).
     """
-    from .linkages import crank_rocker_gamma_from_positions
-
     sols = []
     for ax, ay in rocker_design_candidates(K, CD, c1, c2, **closing):
         d1, d2 = math.dist((ax, ay), c1), math.dist((ax, ay), c2)

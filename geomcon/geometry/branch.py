@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..errors import AmbiguousBranch
+from .. import tolerance as _tolerance
 from ..tolerance import tol
 from .primitives import Point, unit_xy
 
@@ -49,11 +50,16 @@ def _pick(cands: tuple[Point, ...], score: Callable[[Point], float], what: str) 
     if len(cands) != 2:
         raise AmbiguousBranch(f"{what}: expected 1 or 2 candidates, got {len(cands)}")
     c0, c1 = cands
-    s0, s1 = score(c0), score(c1)
+    return _larger(c0, c1, score(c0), score(c1), what)
+
+
+def _larger(c0: Point, c1: Point, s0: float, s1: float, what: str) -> Point:
+    """Of two candidates with scores ``s0``, ``s1``, the one with the larger score; refuse a tie within
+    tolerance (``tol(scale, |s0|, |s1|)``, its arithmetic in place: every scale here is ≥ 0)."""
     scale = max(math.hypot(c0.x - c1.x, c0.y - c1.y), 1e-300)
-    if abs(s0 - s1) <= tol(scale, abs(s0), abs(s1)):
+    if abs(s0 - s1) <= _tolerance.REL_TOL * max(scale, abs(s0), abs(s1)):
         raise AmbiguousBranch(f"{what}: both intersections qualify equally (scores {s0:.6g}, {s1:.6g})")
-    return cands[0] if s0 > s1 else cands[1]
+    return c0 if s0 > s1 else c1
 
 
 def _direction_xy(a: Point, b: Point, what: str) -> tuple[float, float]:
@@ -128,7 +134,7 @@ class RightOf(Branch):
 def _upward_normal(a: Point, b: Point) -> tuple[float, float]:
     dx, dy = _direction_xy(a, b, "above/below a line")
     nx, ny = -dy, dx                          # the direction turned by +90°
-    if abs(ny) <= tol(1.0):
+    if abs(ny) <= _tolerance.REL_TOL:          # tol(1.0)
         raise AmbiguousBranch("above/below a vertical line is undefined: use left/right of a directed line")
     return (nx, ny) if ny > 0 else (-nx, -ny)
 
@@ -144,6 +150,11 @@ class Above(Branch):
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
         """Choose among ``cands`` given the rule's resolved points."""
         nx, ny = _upward_normal(a, b)
+        if len(cands) == 2:                   # the score of _pick's lambda below, in place
+            c0, c1 = cands
+            ax, ay = a.x, a.y
+            return _larger(c0, c1, nx * (c0.x - ax) + ny * (c0.y - ay), nx * (c1.x - ax) + ny * (c1.y - ay),
+                           "above a line")
         return _pick(cands, lambda p: nx * (p.x - a.x) + ny * (p.y - a.y), "above a line")
 
     def describe(self, label=None) -> tuple[str, str]:
@@ -162,6 +173,11 @@ class Below(Branch):
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
         """Choose among ``cands`` given the rule's resolved points."""
         nx, ny = _upward_normal(a, b)
+        if len(cands) == 2:                   # the score of _pick's lambda below, in place
+            c0, c1 = cands
+            ax, ay = a.x, a.y
+            return _larger(c0, c1, -(nx * (c0.x - ax) + ny * (c0.y - ay)), -(nx * (c1.x - ax) + ny * (c1.y - ay)),
+                           "below a line")
         return _pick(cands, lambda p: -(nx * (p.x - a.x) + ny * (p.y - a.y)), "below a line")
 
     def describe(self, label=None) -> tuple[str, str]:

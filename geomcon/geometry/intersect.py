@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 
 from ..errors import Coincident
+from .. import tolerance as _tolerance
 from ..tolerance import tol
 from .primitives import Circle, Line, Point
 
@@ -76,7 +77,7 @@ def line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
     r = circle.r
     ap = abs(p)
     gap = ap - r
-    if abs(gap) <= tol(r, ap):
+    if abs(gap) <= _tolerance.REL_TOL * max(r, ap):     # tol(r, ap) in place: r > 0, ap ≥ 0
         return (Point(px + ux * t0, py + uy * t0),)
     if gap > 0:
         return ()
@@ -98,7 +99,7 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     vx, vy = c2.center.x - ox, c2.center.y - oy   # local frame: the first centre at the origin
     d = math.hypot(vx, vy)
     scale = max(d, r1, r2)
-    eps = tol(scale)
+    eps = _tolerance.REL_TOL * scale         # tol(scale) in place: d ≥ 0 and the radii > 0
     if d <= eps:
         if abs(r1 - r2) <= eps:
             raise Coincident(f"the two circles coincide (radius {r1:.6g})")
