@@ -26,8 +26,7 @@ from ..geometry import (Ahead, Line, NearestTo, Point, circle, foot, line_circle
                         point_on_ray, reflect)
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length, refuse_alpha_allow
-from .guide_bar import construct as guide_bar_extremes
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg, length, rebuilt_values, refuse_alpha_allow
 from .theta_circle import add_theta_step, ray_line, refuse_tiny_theta, meet_lines, ray_from
 
 GUIDE_GIVENS = (
@@ -279,7 +278,9 @@ def guide_back_check(g: Mapping[str, Any], ans: Mapping[str, float]) -> list[tup
 
 
 def _rebuilt(ans: Mapping[str, float]) -> dict[str, float]:
-    return guide_bar_extremes({"AB": ans["AB"], "AC": ans["AC"]}).scene.evaluate(["K", "psi"])
+    """K and ψ of the designed guide-bar, rebuilt as a solve builds ``guide_bar.extremes`` (its tape once
+    recorded: :func:`~geomcon.recipes.common.rebuilt_values`), not by running its recipe again each time."""
+    return rebuilt_values("guide_bar.extremes", {"AB": ans["AB"], "AC": ans["AC"]}, ("K", "psi"))
 
 
 def _guide_rows(g: Mapping[str, Any], ans: Mapping[str, float], v: Mapping[str, float]) -> list[tuple[str, float, float, str]]:
