@@ -627,7 +627,8 @@ def _osc_alpha_max(Q0: Point, A: Point, O: Point, B0: Point, L: float, Rp: float
     the pitch circle, α measured; maximised over δ."""
     arm = osc_arm(Q0, A, O, L, Rp, left, sense)
     lo, hi = (0.0, math.radians(rise)) if part == "rise" else (math.radians(rise), 2 * math.pi)
-    return maximise(arm.alpha, [(lo, hi)], dense=720, g1=arm.alpha1).value   # peaks refined by Brent
+    # 720 samples a turn (the stroke's share of them), peaks refined by Brent
+    return maximise(arm.alpha, [(lo, hi)], dense=720, g1=arm.alpha1, turn=2 * math.pi).value
 
 
 def osc_arm(Q0: Point, A: Point, O: Point, L: float, Rp: float, left: bool, sense: float) -> ArmReplay:

@@ -136,17 +136,29 @@ def _arm(A: Point, Q: Point, L: float, Rp: float, left: bool, sense: float, omeg
     return kin
 
 
-def largest(kin: Callable[[Any], Triple], k: int) -> float:
+_GRID_U = np.linspace(0.0, 2.0 * math.pi, GRID + 1)
+_GRID_U.flags.writeable = False
+_LAST: list = [None, None]
+"""The last grid evaluation (its key, its values): a speed's maximum and its acceleration's maximum are two
+steps of one solve on the same linkage, whose grid is then evaluated once."""
+
+
+def largest(kin: Callable[[Any], Triple], k: int, key: Any = None) -> float:
     """max |kin(u)[k]| over the turn (k = 0: the speed, 1: the acceleration): the largest value at the roots
     of the next derivative, kin(u)[k + 1]: every sign change on the grid of :data:`GRID` cells (one array
-    call) refined by Brent's method on floats; a grid sample where it is 0 counts as it stands.
+    call, kept for the next call with the same ``key``) refined by Brent's method on floats; a grid sample
+    where it is 0 counts as it stands.
 
     >>> kin = lambda u: (np.sin(u), np.cos(u), -np.sin(u)) if isinstance(u, np.ndarray) else (math.sin(u), math.cos(u), -math.sin(u))
     >>> largest(kin, 0), round(largest(kin, 1), 15)
     (1.0, 1.0)
     """
-    u = np.linspace(0.0, 2.0 * math.pi, GRID + 1)
-    vals = kin(u)
+    u = _GRID_U
+    if key is not None and _LAST[0] == key:
+        vals = _LAST[1]
+    else:
+        vals = kin(u)
+        _LAST[0], _LAST[1] = key, vals
     f, slope = np.asarray(vals[k], dtype=float), np.asarray(vals[k + 1], dtype=float)
     best = float(np.max(np.abs(f[slope == 0.0]), initial=0.0))
     pos = slope > 0.0
@@ -171,12 +183,12 @@ def guide_accel(A: Point, D: Point, Rp: float, flat: bool, R: float, sense: floa
 
 def guide_v_max(A: Point, D: Point, Rp: float, flat: bool, R: float, sense: float, omega: float) -> float:
     """Largest |v| over the turn (mm/s)."""
-    return largest(_guide(A, D, Rp, flat, sense, omega), 0)
+    return largest(_guide(A, D, Rp, flat, sense, omega), 0, ("guide", A, D, Rp, flat, sense, omega))
 
 
 def guide_a_max(A: Point, D: Point, Rp: float, flat: bool, R: float, sense: float, omega: float) -> float:
     """Largest |a| over the turn (mm/s²)."""
-    return largest(_guide(A, D, Rp, flat, sense, omega), 1)
+    return largest(_guide(A, D, Rp, flat, sense, omega), 1, ("guide", A, D, Rp, flat, sense, omega))
 
 
 def arm_omega2(A: Point, Q: Point, L: float, Rp: float, left: bool, sense: float, omega: float) -> float:
@@ -201,10 +213,10 @@ def arm_epsilon2(A: Point, Q: Point, L: float, Rp: float, left: bool, sense: flo
 
 def arm_omega2_max(A: Point, Q: Point, L: float, Rp: float, left: bool, sense: float, omega: float) -> float:
     """Largest |ω2| over the turn (rad/s)."""
-    return largest(_arm(A, Q, L, Rp, left, sense, omega), 0)
+    return largest(_arm(A, Q, L, Rp, left, sense, omega), 0, ("arm", A, Q, L, Rp, left, sense, omega))
 
 
 def arm_epsilon2_max(A: Point, Q: Point, L: float, Rp: float, left: bool, sense: float, omega: float) -> float:
     """Largest |ε2| over the turn (rad/s²)."""
-    return largest(_arm(A, Q, L, Rp, left, sense, omega), 1)
+    return largest(_arm(A, Q, L, Rp, left, sense, omega), 1, ("arm", A, Q, L, Rp, left, sense, omega))
 
