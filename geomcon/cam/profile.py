@@ -832,10 +832,18 @@ def rho_min(curve: PitchCurve) -> Extremum:
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
 
 
+DECISIVE = 0.25
+"""The Riemann sum of a curve's area decides its orientation for good (kept as :attr:`PitchCurve.orientation`,
+so that later steps do not sample the curve again) when it is at least this fraction of the sum of its terms'
+sizes: a curve going round O (every cam's pitch curve) gives 1; only a curve that nearly cancels itself out
+is left to the property's own samples."""
+
+
 def _sense(curve: PitchCurve, d: np.ndarray, c6: Curve6) -> int:
     """The curve's orientation (:attr:`PitchCurve.orientation`) from samples of the whole turn in order with
     their exact derivatives: the sign of ∮(x y′ − y x′) dδ, twice the enclosed area (Riemann sum), unless the
-    orientation is known already or the sum does not decide it (then the property's samples do).
+    orientation is known already or the sum does not decide it (then the property's samples do). A sum far
+    from a tie (:data:`DECISIVE`) is kept as the curve's orientation.
 
     >>> def circle40(d):
     ...     c, s = np.cos(d), np.sin(d)
@@ -848,10 +856,14 @@ def _sense(curve: PitchCurve, d: np.ndarray, c6: Curve6) -> int:
     if known is not None:
         return known
     x, y, dx, dy = c6[:4]
-    area = float(np.sum((x * dy - y * dx)[:-1] * np.diff(d)))
+    terms = (x * dy - y * dx)[:-1] * np.diff(d)
+    area = float(np.sum(terms))
     if not (area != 0.0 and math.isfinite(area)):
         return curve.orientation
-    return 1 if area > 0.0 else -1
+    sense = 1 if area > 0.0 else -1
+    if abs(area) > DECISIVE * float(np.sum(np.abs(terms))):   # far from a tie: the property's own samples
+        curve.__dict__["orientation"] = sense                  # (1440, shoelace) cannot decide otherwise
+    return sense
 
 
 def rho_min_concave(curve: PitchCurve) -> Extremum:

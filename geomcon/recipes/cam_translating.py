@@ -18,7 +18,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..cam.profile import (TWO_PI, Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope1, envelope_rho_min,
+from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope1, envelope_rho_min,
                            flat_profile, frame_pressure_angle_slope, frame_pressure_angle_slope1, inverted, inverted1,
                            inverted_relative, inverted_relative1, maximise, pressure_angle, rho_min, roller_profile, turn_of)
 from ..cam.program import Program, parse_program
@@ -227,7 +227,7 @@ def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float)
         return frame_pressure_angle_slope1(fn1(d), rel1(d), -math.sin(inv * d), math.cos(inv * d))
 
     return maximise(g, [(math.radians(start_deg), math.radians(end_deg))], slope=slope,
-                    slope1=slope1 if fn1 is not None and rel1 is not None else None, turn=TWO_PI)
+                    slope1=slope1 if fn1 is not None and rel1 is not None else None)
 
 
 def alphas_at(curve: PitchCurve, inv: float, at: tuple[float, ...]) -> tuple[float, ...]:
