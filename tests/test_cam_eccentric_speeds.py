@@ -1,6 +1,6 @@
 """cam.eccentric with ω: a, v_max, a_max (translating) and ω2, ε2 and their maxima (oscillating). The
-construction replays its instant centre and differentiates numerically; the twin differentiates the exact motion
-by hand: random cams agree to 1e-9 of the quantity's scale. The hand derivatives are checked against finite
+construction solves the equivalent linkage's velocity, acceleration and jerk polygons; the twin differentiates the
+exact motion by hand: random cams agree to 1e-9 of the quantity's scale. The hand derivatives are checked against finite
 differences of the exact motion, and the flat face against its closed form (a Scotch yoke)."""
 from __future__ import annotations
 

@@ -248,3 +248,19 @@ def test_statements_name_the_new_forms():
     assert "ω = {omega} rad/s" in default_template("cam.translating", t)[0]
     assert answer_words("v", 1, {"at": [30, 60]}, "en") == "the follower's velocity v at δ = 60°"
     assert answer_words("epsilon2", 0, {"at": [30]}, "zh") == "δ = 30° 时的摆杆角加速度 ε2"
+
+
+@pytest.mark.parametrize("which", ["modified_trapezoid", "modified_sine", "double_harmonic", "poly", "table"])
+def test_array_forms_of_the_custom_laws_are_the_scalar_forms_bit_for_bit(which):
+    """The handbook, polynomial and table laws' array forms (one numpy pass, used by the searches' grids) give
+    the scalar forms' bits at 20001 points, the pieces' ends and just below them."""
+    import numpy as np
+    from geomcon.cam.custom_laws import custom_law, law
+    lw = (custom_law("poly", {"coefficients": [0, 0, 0, 0, 35, -84, 70, -20]}) if which == "poly" else
+          custom_law("table", {"points": [[0, 0], [0.2, 0.06], [0.4, 0.33], [0.6, 0.68], [0.8, 0.94], [1, 1]]})
+          if which == "table" else law(which))
+    ends = [0.0, 0.125, 0.2, 0.375, 0.4, 0.6, 0.625, 0.8, 0.875, 1.0]
+    x = np.concatenate([np.linspace(0.0, 1.0, 20001), ends, [math.nextafter(e, 0.0) for e in ends]])
+    got = lw.fn(x)
+    for i, xi in enumerate(x.tolist()):
+        assert tuple(float(g[i]) for g in got) == lw.fn1(xi), xi

@@ -1,6 +1,8 @@
 """The twin of the follower's motion: s, s′, s″ of a cam program written again from the laws' definitions,
 independently of :mod:`geomcon.cam.laws`, :mod:`geomcon.cam.custom_laws` and :mod:`geomcon.cam.program`,
-and the maxima of |s′| and |s″| found by sampling and golden-section refinement (not by roots).
+and the maxima of |s′| and |s″| at the ends of each smooth piece and the roots of the next derivative, s″ and
+s‴ (written here too: the closed forms', the handbook shapes' and the polynomial's differentiated, the
+spline's constant f‴ on each interval), bracketed on :data:`CELLS` cells and refined by Brent's method.
 
 - The five standard laws and the double-harmonic law: their closed forms in x = (δ − start)/Φ.
 - The modified trapezoid and modified sine: only their accelerations are written here (the handbook's
@@ -29,10 +31,9 @@ import numpy as np
 
 from ..cam.custom_laws import HANDBOOK_ALIASES
 from ..cam.laws import ALIASES
+from ..numeric import brent_root
 
 Triple = tuple[float, float, float]
-SAMPLES = 4001
-"""Samples per segment before the golden-section refinement of a maximum."""
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(24)
 
 
@@ -229,20 +230,108 @@ def _golden_max(g: Callable[[float], float], lo: float, hi: float) -> float:
     return max(gc, gd, g(lo), g(hi))
 
 
-def _segment_max(row: Mapping[str, Any], k: int) -> float:
-    """max |f^(k)| (k = 1, 2) on [0, 1]: samples, then golden sections around the best few (each between
-    its neighbouring samples), and the one-sided ends."""
-    xs = np.linspace(0.0, 1.0, SAMPLES).tolist()
+# ---------------------------------------------------------------------------------------- the third derivative
+def _closed3(name: str, x: float) -> float:
+    pi = math.pi
+    if name in ("uniform", "parabolic"):
+        return 0.0
+    if name == "cosine":
+        return -0.5 * pi ** 3 * math.sin(pi * x)
+    if name == "cycloidal":
+        w = 2.0 * pi
+        return w * w * math.cos(w * x)
+    if name == "poly345":
+        return 60.0 - 360.0 * x + 360.0 * x * x
+    if name == "double_harmonic":
+        return -0.5 * pi ** 3 * math.sin(pi * x) + pi ** 3 * math.sin(2.0 * pi * x)
+    raise KeyError(name)
 
-    def g(x):
+
+def _shape_slope(name: str, t: float) -> float:
+    """d/dt of the handbook shapes above (their pieces differentiated one by one)."""
+    q = 4.0 * math.pi
+    if name == "modified_trapezoid":
+        if t < 0.125:
+            return q * math.cos(q * t)
+        if t < 0.375 or 0.625 <= t < 0.875:
+            return 0.0
+        if t < 0.625:
+            return -q * math.sin(q * (t - 0.375))
+        return q * math.cos(q * (1.0 - t))
+    if t < 0.125:
+        return q * math.cos(q * t)
+    if t < 0.875:
+        return -q / 3.0 * math.sin(q * (t - 0.125) / 3.0)
+    return q * math.cos(q * (1.0 - t))
+
+
+def _table3(points: tuple[tuple[float, float], ...], x: float) -> float:
+    """The spline's f‴ (constant on each interval): the Hermite basis differentiated three times."""
+    m = _slopes(points)
+    i = 0
+    while i < len(points) - 2 and x >= points[i + 1][0]:
+        i += 1
+    (x0, f0), (x1, f1) = points[i], points[i + 1]
+    h = x1 - x0
+    return (12.0 * f0 + 6.0 * h * m[i] - 12.0 * f1 + 6.0 * h * m[i + 1]) / h ** 3
+
+
+def third(row: Mapping[str, Any], x: float) -> float:
+    """f‴ of a program row's law at x in [0, 1] (a piece's own value at its left end)."""
+    name = _name(row["law"])
+    if name == "poly":
+        c = [float(v) for v in row["coefficients"]]
+        return math.fsum(k * (k - 1) * (k - 2) * ck * x ** (k - 3) for k, ck in enumerate(c) if k >= 3)
+    if name == "table":
+        return _table3(tuple((float(p[0]), float(p[1])) for p in row["points"]), x)
+    if name in SHAPES:
+        return _amplitude(name) * _shape_slope(name, x)
+    return _closed3(name, x)
+
+
+def _smooth_pieces(row: Mapping[str, Any]) -> tuple[float, ...]:
+    """The edges of the law's smooth pieces on [0, 1]."""
+    name = _name(row["law"])
+    if name in SHAPES:
+        return SHAPES[name][1]
+    if name == "table":
+        return tuple(float(p[0]) for p in row["points"])
+    if name == "parabolic":
+        return (0.0, 0.5, 1.0)
+    return (0.0, 1.0)
+
+
+CELLS = 32
+"""Cells per smooth piece in which a sign change of the next derivative is looked for."""
+
+
+def _segment_max(row: Mapping[str, Any], k: int) -> float:
+    """max |f^(k)| (k = 1, 2) on [0, 1]: at the ends of the smooth pieces (a piece's right end one-sided) and at
+    the roots of f^(k+1) inside each (a sign change on :data:`CELLS` cells, refined by Brent's method,
+    :func:`geomcon.numeric.brent_root`)."""
+    def value(x: float) -> float:
         return abs(normalised(row, x)[k])
 
-    vals = [g(x) for x in xs]
-    best = max(vals)
-    order = sorted(range(len(xs)), key=lambda i: -vals[i])[:6]
-    for i in order:
-        lo, hi = xs[max(i - 1, 0)], xs[min(i + 1, len(xs) - 1)]
-        best = max(best, _golden_max(g, lo, hi))
+    name = _name(row["law"])
+    if k == 2:
+        slope: Callable[[float], float] = lambda x: third(row, x)              # noqa: E731
+    elif name in SHAPES:                          # f″ is the shape itself: no quadrature for a slope's sign
+        slope = SHAPES[name][0]
+    else:
+        slope = lambda x: normalised(row, x)[2]                                # noqa: E731
+
+    edges = _smooth_pieces(row)
+    best = max(value(0.0), value(1.0))
+    for a, b in zip(edges, edges[1:]):
+        right = math.nextafter(b, a)
+        best = max(best, value(a), value(right))
+        xs = [a + (right - a) * i / CELLS for i in range(CELLS)] + [right]
+        gs = [slope(x) for x in xs]
+        for x0, x1, g0, g1 in zip(xs, xs[1:], gs, gs[1:]):
+            if g0 == 0.0:
+                best = max(best, value(x0))
+            elif g1 != 0.0 and (g0 > 0.0) != (g1 > 0.0):
+                best = max(best, value(brent_root(slope, x0, x1, g0, g1)))
     return best
 
 

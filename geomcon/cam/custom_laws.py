@@ -82,10 +82,12 @@ def _impact(fn1: Callable[[float], tuple[float, float, float]]) -> str:
     return "soft" if max(abs(a0), abs(a1)) > 1e-12 else "none"
 
 
-def _finish(name: str, zh: str, fn1, fn3, cuts: tuple[float, ...] = (), params: tuple = ()) -> Law:
-    """The Law with its impact class and its exact peak |f′| (:func:`geomcon.cam.kinematics.law_peaks`)."""
+def _finish(name: str, zh: str, fn1, fn3, cuts: tuple[float, ...] = (), params: tuple = (), fn=None) -> Law:
+    """The Law with its impact class and its exact peak |f′| (:func:`geomcon.cam.kinematics.law_peaks`);
+    ``fn``, the array form, written with the scalar form's operations in the same order (else the scalar form
+    element by element)."""
     from .kinematics import law_peaks
-    lw = Law(name, zh, _impact(fn1), _vectorised(fn1), fn1, math.inf, fn3, cuts, params)
+    lw = Law(name, zh, _impact(fn1), fn or _vectorised(fn1), fn1, math.inf, fn3, cuts, params)
     return replace(lw, peak1=law_peaks(lw).v)
 
 
@@ -115,7 +117,29 @@ def _accel_law(pieces: list[tuple[float, float, float, float]]) -> tuple[Callabl
         x0, w, p, _, _ = rows[max(bisect_right(starts, x) - 1, 0)]
         return 0.0 if w == 0.0 else scale * w * math.cos(w * (x - x0) + p)
 
-    return fn1, fn3, tuple(starts[1:])
+    cols = [np.array(c, dtype=float) for c in zip(*rows)]        # x0, w, p, v, s of each piece
+    sn = np.array([math.sin(r[2]) for r in rows])                # the constants as the scalar form's math makes them
+    cs = np.array([math.cos(r[2]) for r in rows])
+    wsafe = np.where(cols[1] == 0.0, 1.0, cols[1])
+    arr = np.array(starts)
+
+    def fn(x):                                 # the array form: fn1's operations, piece by piece gathered
+        xa = np.asarray(x, dtype=float)
+        i = np.maximum(np.searchsorted(arr, xa, side="right") - 1, 0)
+        x0, w, p, v, s0 = (c[i] for c in cols)
+        t = xa - x0
+        ws = wsafe[i]
+        c = scale / ws
+        arg = ws * t + p
+        sin_arg = np.sin(arg)
+        const = w == 0.0
+        a = scale * p
+        f = np.where(const, s0 + v * t + a * t * t / 2.0, s0 + v * t + c * (t * cs[i] - (sin_arg - sn[i]) / ws))
+        f1 = np.where(const, v + a * t, v + c * (cs[i] - np.cos(arg)))
+        f2 = np.where(const, a, scale * sin_arg)
+        return f, f1, f2
+
+    return fn1, fn3, tuple(starts[1:]), fn
 
 
 def _vs(t: float, w: float, p: float, v: float, s: float) -> tuple[float, float]:
@@ -137,17 +161,25 @@ def _double_harmonic1(x: float) -> tuple[float, float, float]:
             math.pi ** 2 / 2.0 * (math.cos(a) - math.cos(b)))
 
 
+def _double_harmonic(x):
+    """:func:`_double_harmonic1` on an array (the same operations)."""
+    xa = np.asarray(x, dtype=float)
+    a, b = math.pi * xa, 2.0 * math.pi * xa
+    return (0.5 * ((1.0 - np.cos(a)) - 0.25 * (1.0 - np.cos(b))), math.pi / 2.0 * (np.sin(a) - 0.5 * np.sin(b)),
+            math.pi ** 2 / 2.0 * (np.cos(a) - np.cos(b)))
+
+
 def _double_harmonic3(x: float) -> float:
     return math.pi ** 3 / 2.0 * (2.0 * math.sin(2.0 * math.pi * x) - math.sin(math.pi * x))
 
 
 def _handbook() -> dict[str, Law]:
-    mt1, mt3, mt_cuts = _accel_law(_TRAPEZOID)
-    ms1, ms3, ms_cuts = _accel_law(_MSINE)
+    mt1, mt3, mt_cuts, mt = _accel_law(_TRAPEZOID)
+    ms1, ms3, ms_cuts, ms = _accel_law(_MSINE)
     return {l.name: l for l in (
-        _finish("double_harmonic", "双谐波运动规律", _double_harmonic1, _double_harmonic3),
-        _finish("modified_trapezoid", "改进梯形加速度运动规律", mt1, mt3, mt_cuts),
-        _finish("modified_sine", "改进正弦加速度运动规律", ms1, ms3, ms_cuts),
+        _finish("double_harmonic", "双谐波运动规律", _double_harmonic1, _double_harmonic3, fn=_double_harmonic),
+        _finish("modified_trapezoid", "改进梯形加速度运动规律", mt1, mt3, mt_cuts, fn=mt),
+        _finish("modified_sine", "改进正弦加速度运动规律", ms1, ms3, ms_cuts, fn=ms),
     )}
 
 
@@ -182,7 +214,11 @@ def poly_law(coefficients: tuple[float, ...]) -> Law:
     def fn1(x: float) -> tuple[float, float, float]:
         return _horner(c, x), _horner(d1, x), _horner(d2, x)
 
-    return _finish("poly", "多项式运动规律", fn1, lambda x: _horner(d3, x), (), c)
+    def fn(x):                                 # Horner on an array: the same operations, element by element
+        xa = np.asarray(x, dtype=float)
+        return _horner(c, xa) + 0.0 * xa, _horner(d1, xa) + 0.0 * xa, _horner(d2, xa) + 0.0 * xa
+
+    return _finish("poly", "多项式运动规律", fn1, lambda x: _horner(d3, x), (), c, fn=fn)
 
 
 # ---------------------------------------------------------------------------------------------- table
@@ -243,7 +279,19 @@ def table_law(points: tuple[tuple[float, float], ...]) -> Law:
         _, h, _, _, m0, m1 = row(x)
         return (m1 - m0) / h
 
-    return _finish("table", "列表(三次样条)运动规律", fn1, fn3, tuple(xs[1:-1]), tuple(zip(xs, fs)))
+    cols = [np.array(c, dtype=float) for c in zip(*rows)]
+    arr = np.array(starts)
+
+    def fn(x):                                 # fn1's operations on an array, each point's interval gathered
+        xa = np.asarray(x, dtype=float)
+        i = np.clip(np.searchsorted(arr, xa, side="right") - 1, 0, len(rows) - 1)
+        x0, h, f0, f1, m0, m1 = (c[i] for c in cols)
+        a, b = (x0 + h - xa) / h, (xa - x0) / h
+        s = a * f0 + b * f1 + ((a * a * a - a) * m0 + (b * b * b - b) * m1) * h * h / 6.0
+        v = (f1 - f0) / h + ((1.0 - 3.0 * a * a) * m0 + (3.0 * b * b - 1.0) * m1) * h / 6.0
+        return s, v, a * m0 + b * m1
+
+    return _finish("table", "列表(三次样条)运动规律", fn1, fn3, tuple(xs[1:-1]), tuple(zip(xs, fs)), fn=fn)
 
 
 def _numbers(value: Any, where: str, count: int) -> tuple[float, ...]:

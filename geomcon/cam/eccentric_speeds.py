@@ -8,7 +8,8 @@ Translating knife or roller, u = e − OA·cos φ, u′ = OA·sin φ, w = √(Rp
 
 a flat face: y = OA·sin φ + R. With δ the cam angle (dδ/dt = ω, dφ/dδ = ±1 by the sense of rotation),
 v = ±ω·y′ and a = ω²·y″. The maxima over the turn: |y′| at a root of y″, |y″| at a root of y‴ (bracketed on a
-grid of :data:`GRID` cells, bisected to the last bit).
+grid of :data:`GRID` cells, refined by Brent's method,
+:func:`geomcon.numeric.brent_root`).
 
 Oscillating roller: B = Q + L·(cos t, sin t) with |B − A| = Rp; differentiating the constraint twice
 (A′ = J·A, A″ = −A, J the quarter turn, n = (B − A)·J(B − Q)):
@@ -32,7 +33,7 @@ import math
 
 import numpy as np
 
-from .base_radius import bisect_root
+from ..numeric import brent_root
 from .eccentric import Oscillating, Translating
 from .profile import maximise
 
@@ -60,7 +61,7 @@ def translating_speeds(cam: Translating, phi: float, omega: float) -> tuple[floa
 
 
 def _largest_at_roots(value, slope, lo: float) -> float:
-    """max |value| over the roots of ``slope`` on [lo, lo + 2π] (grid of :data:`GRID` cells, bisected)."""
+    """max |value| over the roots of ``slope`` on [lo, lo + 2π] (grid of :data:`GRID` cells, Brent)."""
     xs = [lo + 2.0 * math.pi * i / GRID for i in range(GRID + 1)]
     gs = [slope(x) for x in xs]
     best = 0.0
@@ -68,7 +69,7 @@ def _largest_at_roots(value, slope, lo: float) -> float:
         if g0 == 0.0:
             best = max(best, abs(value(x0)))
         elif g1 != 0.0 and (g0 > 0.0) != (g1 > 0.0):
-            best = max(best, abs(value(bisect_root(slope, x0, x1))))
+            best = max(best, abs(value(brent_root(slope, x0, x1, g0, g1))))
     return best
 
 

@@ -56,11 +56,15 @@ from typing import Callable
 
 import numpy as np
 
+from ..numeric import brent_root
 from .profile import PitchCurve, brent_max1, pow1, sign1
 from .program import Program, Segment
 
 GRID = 240
 """Grid points per smooth piece of a segment for bracketing the extrema of α and of the curvature."""
+ROOT_XTOL = 1e-15
+"""The scalar root search's tolerance in fractions of the segment (1e-15·Φ rad): a flat maximum's value is
+then exact to ~1e-30 of its curvature, its place far beyond the printed digits."""
 
 
 @dataclass(frozen=True)
@@ -206,8 +210,8 @@ class ArmMotion:
 
         Candidates are the ends of each smooth piece (one-sided values) and the interior roots of ``slope``
         (a function with the sign of dg/dδ), located by bisection on its sign. Ties go to the smaller cam
-        angle. ``slope1``, the slope of one motion (δ, ψ, ψ′, ψ″) of :func:`segment_motion1` with the same
-        bits as ``slope``, bisects each bracket on floats (the same steps, so the same roots).
+        angle. ``slope1``, the slope of one motion (δ, ψ, ψ′, ψ″) of :func:`segment_motion1`, refines each
+        bracket on floats by Brent's method instead (:func:`_roots`).
         """
         k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
         seg, level = self.program.segments[k], levels(self.program, self.h)[k]
@@ -518,8 +522,9 @@ class OscillatingCam(ArmMotion):
 def _roots(fn: Callable, x0: float, x1: float, n: int = GRID, fn1: Callable[[float], float] | None = None
            ) -> list[float]:
     """Interior points of [x0, x1) where ``fn`` changes sign, refined by bisection to the last bit (all
-    brackets at once: one call of ``fn`` per halving, whatever their number; or, with ``fn1``, ``fn`` on one
-    float with the same bits, each bracket by the same halvings on floats). The grid is denser towards the
+    brackets at once: one call of ``fn`` per halving, whatever their number); or, with ``fn1`` (``fn`` on one
+    float), each bracket by Brent's method on floats (:func:`geomcon.numeric.brent_root`, to
+    :data:`ROOT_XTOL` of the segment: about ten calls where bisection takes fifty). The grid is denser towards the
     ends (1e-3 … 1e-9 of the piece), where a law starting or ending at rest makes the slope 0 and a maximum
     may hide within the first or last cell.
 
@@ -532,7 +537,8 @@ def _roots(fn: Callable, x0: float, x1: float, n: int = GRID, fn1: Callable[[flo
     i = np.nonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]
     lo, hi, s_lo = xs[i].astype(float), xs[i + 1].astype(float), np.sign(g[i])
     if fn1 is not None:
-        return [bisect_sign1(fn1, a, b, sa) for a, b, sa in zip(lo.tolist(), hi.tolist(), s_lo.tolist())]
+        return [brent_root(fn1, a, b, ga, gb, xtol=ROOT_XTOL)
+                for a, b, ga, gb in zip(lo.tolist(), hi.tolist(), g[i].tolist(), g[i + 1].tolist())]
     while lo.size:
         mid = 0.5 * (lo + hi)
         live = (mid > lo) & (mid < hi)
@@ -541,24 +547,6 @@ def _roots(fn: Callable, x0: float, x1: float, n: int = GRID, fn1: Callable[[flo
         same = np.sign(fn(mid)) == s_lo
         lo, hi = np.where(live & same, mid, lo), np.where(live & ~same, mid, hi)
     return lo.tolist()
-
-
-def bisect_sign1(fn1: Callable[[float], float], lo: float, hi: float, s_lo: float) -> float:
-    """The bracket [lo, hi] of a sign change of ``fn1`` (its sign at lo is ``s_lo``) halved on floats until lo
-    and hi are adjacent; returns lo (the steps of :func:`_roots` for one bracket).
-
-    >>> x = bisect_sign1(math.cos, 1.0, 2.0, 1.0)
-    >>> x == _roots(np.cos, 1.0, 2.0)[0]
-    True
-    """
-    while True:
-        mid = 0.5 * (lo + hi)
-        if not lo < mid < hi:
-            return lo
-        if sign1(fn1(mid)) == s_lo:
-            lo = mid
-        else:
-            hi = mid
 
 
 def _brent_maxima(f: Callable, f1: Callable[[float], float], x0: float, x1: float, n: int = GRID

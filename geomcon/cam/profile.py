@@ -294,8 +294,8 @@ maximum that is flat to roundoff has no better-defined place)."""
 
 def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float, float]],
              dense: int = _DENSE, xtol: float = 1e-11, slope: Callable[[np.ndarray], np.ndarray] | None = None,
-             *, slope1: Callable[[float], float] | None = None, g1: Callable[[float], float] | None = None
-             ) -> Extremum:
+             *, slope1: Callable[[float], float] | None = None, g1: Callable[[float], float] | None = None,
+             turn: float | None = None) -> Extremum:
     """The maximum of a function smooth on each piece, and where.
 
     With ``slope`` (a function with the sign of g′, from exact derivatives) the candidates are the ends of
@@ -314,6 +314,10 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     place; ``g1`` (g on one float) refines each sampled peak by Brent's method (:func:`brent_max1`, about a
     dozen calls where golden sections take forty-odd) to the same ``xtol``. The samples are evaluated in one
     call of ``g`` or ``slope`` for all the pieces. Without them, every step of a refinement is one array call.
+
+    ``turn`` (radians), when given, spreads the ``dense`` samples over that angle instead of over the pieces'
+    own length: a segment of a cam searched alone is then sampled as densely as the whole turn is (not
+    ``dense`` times over its own few degrees).
 
     Examples
     --------
@@ -334,10 +338,10 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     True
     """
     key = tuple((float(a), float(b)) for a, b in pieces)
-    grids = sample_grids(key, dense)
+    grids = sample_grids(key, dense, turn)
     places: list[float] = []
     if slope is not None and slope1 is not None:    # one call for all the pieces' samples, on floats after
-        return _maximise_by_slope1(g, key, grids, sample_grid(key, dense), slope, slope1)
+        return _maximise_by_slope1(g, key, grids, sample_grid(key, dense, turn), slope, slope1)
     if slope is not None:
         slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
@@ -361,7 +365,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
     lo, hi, cands = [], [], []
     mids, fmids, gains = [], [], []
-    values = _split(np.asarray(g(sample_grid(key, dense)), dtype=float), grids) if g1 is not None else None
+    values = _split(np.asarray(g(sample_grid(key, dense, turn)), dtype=float), grids) if g1 is not None else None
     for k, d in enumerate(grids):
         v = values[k] if values is not None else np.asarray(g(d), dtype=float)
         n = len(d) - 1
@@ -492,16 +496,18 @@ def parabola_gain(d: np.ndarray, v: np.ndarray, i: int) -> float:
 
 
 @lru_cache(maxsize=256)
-def sample_grids(pieces: tuple[tuple[float, float], ...], dense: int) -> tuple[np.ndarray, ...]:
-    """The samples :func:`maximise` takes of each piece: ``dense`` over the turn shared by length (at least
-    16 a piece), denser towards both ends (1e-2 … 1e-9 of the piece), the right end one-sided. The same
-    pieces give the same samples, so they are made once (read-only arrays).
+def sample_grids(pieces: tuple[tuple[float, float], ...], dense: int, turn: float | None = None
+                 ) -> tuple[np.ndarray, ...]:
+    """The samples :func:`maximise` takes of each piece: ``dense`` over the pieces (or over ``turn``
+    radians, when given) shared by length (at least 16 a piece), denser towards both ends (1e-2 … 1e-9 of the
+    piece), the right end one-sided. The same pieces give the same samples, so they are made once (read-only
+    arrays).
 
     >>> g = sample_grids(((0.0, 1.0),), 16)[0]
     >>> len(g), float(g[0]), bool(g[-1] == np.nextafter(1.0, 0.0)), g.flags.writeable
     (33, 0.0, True, False)
     """
-    total = sum(b - a for a, b in pieces)
+    total = sum(b - a for a, b in pieces) if turn is None else turn
     grids = []
     for a, b in pieces:
         n = max(16, int(math.ceil(dense * (b - a) / total)))
@@ -514,7 +520,7 @@ def sample_grids(pieces: tuple[tuple[float, float], ...], dense: int) -> tuple[n
 
 
 @lru_cache(maxsize=256)
-def sample_grid(pieces: tuple[tuple[float, float], ...], dense: int) -> np.ndarray:
+def sample_grid(pieces: tuple[tuple[float, float], ...], dense: int, turn: float | None = None) -> np.ndarray:
     """The samples of :func:`sample_grids` in one read-only array (their concatenation, made once): the array
     :func:`maximise` evaluates all the pieces' samples on, the same object for the same pieces, so that what
     is computed on it can be kept (:func:`envelope_terms`).
@@ -523,7 +529,7 @@ def sample_grid(pieces: tuple[tuple[float, float], ...], dense: int) -> np.ndarr
     >>> d is sample_grid(((0.0, 1.0), (1.0, 2.0)), 32), bool(np.all(d == np.concatenate(sample_grids(((0.0, 1.0), (1.0, 2.0)), 32))))
     (True, True)
     """
-    d = np.concatenate(sample_grids(pieces, dense))
+    d = np.concatenate(sample_grids(pieces, dense, turn))
     d.flags.writeable = False
     return d
 
@@ -826,10 +832,18 @@ def rho_min(curve: PitchCurve) -> Extremum:
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
 
 
+DECISIVE = 0.25
+"""The Riemann sum of a curve's area decides its orientation for good (kept as :attr:`PitchCurve.orientation`,
+so that later steps do not sample the curve again) when it is at least this fraction of the sum of its terms'
+sizes: a curve going round O (every cam's pitch curve) gives 1; only a curve that nearly cancels itself out
+is left to the property's own samples."""
+
+
 def _sense(curve: PitchCurve, d: np.ndarray, c6: Curve6) -> int:
     """The curve's orientation (:attr:`PitchCurve.orientation`) from samples of the whole turn in order with
     their exact derivatives: the sign of ∮(x y′ − y x′) dδ, twice the enclosed area (Riemann sum), unless the
-    orientation is known already or the sum does not decide it (then the property's samples do).
+    orientation is known already or the sum does not decide it (then the property's samples do). A sum far
+    from a tie (:data:`DECISIVE`) is kept as the curve's orientation.
 
     >>> def circle40(d):
     ...     c, s = np.cos(d), np.sin(d)
@@ -842,10 +856,14 @@ def _sense(curve: PitchCurve, d: np.ndarray, c6: Curve6) -> int:
     if known is not None:
         return known
     x, y, dx, dy = c6[:4]
-    area = float(np.sum((x * dy - y * dx)[:-1] * np.diff(d)))
+    terms = (x * dy - y * dx)[:-1] * np.diff(d)
+    area = float(np.sum(terms))
     if not (area != 0.0 and math.isfinite(area)):
         return curve.orientation
-    return 1 if area > 0.0 else -1
+    sense = 1 if area > 0.0 else -1
+    if abs(area) > DECISIVE * float(np.sum(np.abs(terms))):   # far from a tie: the property's own samples
+        curve.__dict__["orientation"] = sense                  # (1440, shoelace) cannot decide otherwise
+    return sense
 
 
 def rho_min_concave(curve: PitchCurve) -> Extremum:

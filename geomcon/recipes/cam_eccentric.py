@@ -496,16 +496,16 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
 
 def _add_guide_speeds(sc: Scene, A: Ref, D: Ref, Rp: float, flat: bool, R: float, sense: float,
                       omega: float) -> dict[str, str]:
-    """a at the drawn position and v_max, a_max over the turn, by replaying the instant centre
-    (:mod:`.cam_eccentric_speeds`)."""
+    """a at the drawn position and v_max, a_max over the turn, from the equivalent linkage's velocity,
+    acceleration and jerk polygons (:mod:`.cam_eccentric_speeds`)."""
     args = (A, D, Rp, flat, R, sense, omega)
     sc.add("a", guide_accel, *args, role=Role.MEASUREMENT, unit="mm/s²",
-           caption=("a = ω·dv/dδ: the disc turned a little either way, P found again (central differences)",
-                    "a = ω·dv/dδ:圆盘前后稍转,再求瞬心 P(中心差分)"))
+           caption=("a from the acceleration polygon of the equivalent crank-slider O–A–B (AB = R + rr)",
+                    "a:高副低代为曲柄滑块 O–A–B,作加速度多边形"))
     sc.add("v_max", guide_v_max, *args, role=Role.MEASUREMENT, unit="mm/s",
-           caption=("vmax: P replayed over the turn", "vmax:整周逐点求瞬心 P"))
+           caption=("vmax over the turn: the velocity polygon where a = 0", "vmax:整周速度多边形,取 a = 0 处"))
     sc.add("a_max", guide_a_max, *args, role=Role.MEASUREMENT, unit="mm/s²",
-           caption=("amax over the turn", "整周最大加速度 amax"))
+           caption=("amax over the turn: where the jerk is 0", "整周最大加速度 amax:取跃度为 0 处"))
     return {"a": "a", "v_max": "v_max", "a_max": "a_max"}
 
 
@@ -586,12 +586,12 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
                caption=("The normal AB meets OQ at the instant centre P: ω2 = ω·OP/QP",
                         "法线 AB 交 OQ 于瞬心 P:ω2 = ω·OP/QP"))
         sc.add("epsilon2", arm_epsilon2, *args, role=Role.MEASUREMENT, unit="rad/s²",
-               caption=("ε2 = ω·dω2/dδ: the disc turned a little either way, P found again (central differences)",
-                        "ε2 = ω·dω2/dδ:圆盘前后稍转,再求瞬心 P(中心差分)"))
+               caption=("ε2: the acceleration polygon of the equivalent four-bar O–A–B–Q",
+                        "ε2:高副低代为四杆机构 O–A–B–Q,作加速度多边形"))
         sc.add("omega2_max", arm_omega2_max, *args, role=Role.MEASUREMENT, unit="rad/s",
-               caption=("ω2,max: P replayed over the turn", "ω2,max:整周逐点求瞬心 P"))
+               caption=("ω2,max: the velocity polygon where ε2 = 0", "ω2,max:取 ε2 = 0 处"))
         sc.add("epsilon2_max", arm_epsilon2_max, *args, role=Role.MEASUREMENT, unit="rad/s²",
-               caption=("ε2,max over the turn", "整周最大角加速度 ε2,max"))
+               caption=("ε2,max: where dε2/dt = 0", "ε2,max:取 dε2/dt = 0 处"))
         names += ["omega2", "epsilon2", "omega2_max", "epsilon2_max"]
     return Construction(sc, {n: n for n in names}, {"O": "O", "Q": "Q", "A": "A", "B": "B", "B0": "B0", "B1": "B1"})
 
@@ -627,7 +627,8 @@ def _osc_alpha_max(Q0: Point, A: Point, O: Point, B0: Point, L: float, Rp: float
     the pitch circle, α measured; maximised over δ."""
     arm = osc_arm(Q0, A, O, L, Rp, left, sense)
     lo, hi = (0.0, math.radians(rise)) if part == "rise" else (math.radians(rise), 2 * math.pi)
-    return maximise(arm.alpha, [(lo, hi)], dense=720, g1=arm.alpha1).value   # peaks refined by Brent
+    # 720 samples a turn (the stroke's share of them), peaks refined by Brent
+    return maximise(arm.alpha, [(lo, hi)], dense=720, g1=arm.alpha1, turn=2 * math.pi).value
 
 
 def osc_arm(Q0: Point, A: Point, O: Point, L: float, Rp: float, left: bool, sense: float) -> ArmReplay:
