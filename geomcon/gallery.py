@@ -140,13 +140,18 @@ def _best_table() -> dict[str, str]:
 
 
 def _preload() -> None:
-    """Import what the jobs use, once, before workers are forked (a worker would import each module again)."""
+    """Import what the jobs use, once, before workers are forked (each worker would import, and without a
+    byte-code cache compile, every module it needs again): the renderer, the other parts, every recipe."""
+    from .analytic import cam_motion  # noqa: F401
     from .bench import cycle_record  # noqa: F401
     from .cam import diagrams  # noqa: F401
-    from .grading import example, moodle, report  # noqa: F401
+    from .grading import example, feedback, moodle, report  # noqa: F401
     from .kinematics import gallery  # noqa: F401
-    from .render import player, svg  # noqa: F401
+    from .recipes import RECIPES
+    from .render import player, results, svg, warning_words  # noqa: F401
     from . import worksheet  # noqa: F401
+    for name in RECIPES:
+        RECIPES[name]
 
 
 def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None = None) -> dict[str, str]:
