@@ -231,14 +231,14 @@ def cmd_gallery(args: argparse.Namespace) -> int:
         return _fail(str(problems), "no *.toml problem files here")
     try:
         if args.check:
-            stale = stale_files(problems, out, lang=args.lang)
+            stale = stale_files(problems, out, lang=args.lang, jobs=args.jobs)
             if stale:
                 print(f"gallery is stale ({len(stale)} files): " + ", ".join(stale), file=sys.stderr)
                 print("run: geomcon gallery", file=sys.stderr)
                 return EXIT_CHECK_FAILED
             print(f"gallery is up to date ({len(problem_files(problems))} problems)")
             return 0
-        files = build_gallery(problems, lang=args.lang)
+        files = build_gallery(problems, lang=args.lang, jobs=args.jobs)
     except GeomconError as exc:
         return _fail(_current_file(exc, problems), str(exc))
     write_all({out / name: text for name, text in files.items()})
@@ -246,6 +246,17 @@ def cmd_gallery(args: argparse.Namespace) -> int:
         stale.unlink()
     print(f"wrote {len(files)} files to {out}/ from {len(problem_files(problems))} problems")
     return 0
+
+
+def _jobs(text: str) -> int:
+    """``--jobs``: a whole number of at least 1."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number of processes, got {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected at least 1 process, got {n}")
+    return n
 
 
 def _current_file(exc: Exception, problems: Path) -> str:
@@ -458,6 +469,9 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--out", default="gallery", metavar="DIR")
     g.add_argument("--lang", choices=("en", "zh", "both"), default="both",
                    help="language of captions, results and headings (default both)")
+    g.add_argument("--jobs", type=_jobs, default=None, metavar="N",
+                   help="worker processes (default: every core; 1 = this process alone); the files are the same "
+                        "bytes for any N")
     g.set_defaults(func=cmd_gallery)
     b = sub.add_parser("bench", help="speed targets as ratios to references timed in the same run (the lean core); "
                        "time against error: construction vs crank sweep, vs sympy; answers vs drawing")

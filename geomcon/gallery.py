@@ -75,57 +75,115 @@ def worksheet_gallery(spec_path: Path) -> dict[str, str]:
             if name.startswith(("sheets", "key/")) or name == "key.html"}
 
 
-def build_gallery(problems_dir: Path, lang: str | None = None) -> dict[str, str]:
-    """Render every problem: ``{relative file name: text}`` for the JSON, the SVG sheets (``<id>.svg`` the
-    drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index; and one worksheet with its key (:func:`worksheet_gallery`) when the sample spec is beside
-    ``problems/``."""
+def problem_gallery(path: Path, lang: str | None = None) -> tuple[dict[str, str], str]:
+    """One problem's gallery files (its JSON, SVG sheets, player and, for a cam with a motion program, its
+    s–v–a sheet) and its row of the index: one job of :func:`build_gallery`. The figure is built once: the
+    player page embeds the very sheets."""
     from .render.page import sheet_names
 
     page = gallery_page(lang)
+    try:
+        sol = solve(load_problem(path))
+    except GeomconError as exc:
+        exc.file = str(path)  # type: ignore[attr-defined]  # the CLI names the failing file
+        raise
+    files: dict[str, str] = {}
+    pid = sol.problem.id
+    files[f"{pid}.json"] = to_json_text(sol)       # answers first: the JSON's stats show the lazy count
+    sheets = sol.sheets(page)
+    names = sheet_names(f"{pid}.svg", len(sheets))
+    for name, sheet in zip(names, sheets):
+        files[name] = sheet
+    more = ", ".join(f"[{i}]({n})" for i, n in enumerate(names[1:], 2))
+    files[f"{pid}.html"] = sol.html(page, sheets)
+    extra = ""
+    if "program" in sol.problem.given and sol.problem.given.get("h") is not None:
+        files[f"{pid}_motion.svg"] = problem_motion_svg(sol)
+        extra = f" ([s–v–a]({pid}_motion.svg))"
+    answers = ", ".join(f"{k} = {_short(v)}" for k, v in list(sol.answers.items())[:4])
+    devs = "; ".join(_deviation(r) for r in sol.published) or "—"
+    return files, (f"| [{pid}]({pid}.svg) (sheets {more}; [player]({pid}.html)){extra} | `{sol.recipe.name}` | "
+                   f"{answers} | {devs} |")
+
+
+def bench_gallery(problems_dir: Path) -> dict[str, str]:
+    """The bench figure drawn from the committed record (``problems/cycles/bench_record.json``), when there is one."""
+    from .bench.cycle_record import RECORD, cycle_figure, load_record
+    record = Path(problems_dir) / RECORD
+    if not record.is_file():
+        return {}
+    try:
+        return {"bench_cycle.svg": cycle_figure(load_record(record))}
+    except (ValueError, UnicodeDecodeError) as exc:      # JSONDecodeError is a ValueError
+        err = GeomconError(str(exc).removeprefix(f"{record}: "))
+        err.file = str(record)  # type: ignore[attr-defined]
+        raise err from None
+
+
+def _cycles(problems_dir: Path) -> tuple[dict[str, str], list[str]]:
+    from .kinematics.gallery import cycle_gallery
+    return cycle_gallery(problems_dir)
+
+
+def _grading() -> dict[str, str]:
+    from .grading.example import gallery_files
+    return gallery_files()
+
+
+def _worksheet(problems_dir: Path) -> dict[str, str]:
+    spec = Path(problems_dir).resolve().parent / WORKSHEET_SPEC
+    return worksheet_gallery(spec) if spec.is_file() else {}
+
+
+def _best_table() -> dict[str, str]:
+    return {"004-02_best_by_K_table.md": best_by_k_table()}
+
+
+def _preload() -> None:
+    """Import what the jobs use, once, before workers are forked (each worker would import, and without a
+    byte-code cache compile, every module it needs again): the renderer, the other parts, every recipe."""
+    from .analytic import cam_motion  # noqa: F401
+    from .bench import cycle_record  # noqa: F401
+    from .cam import diagrams  # noqa: F401
+    from .grading import example, feedback, moodle, report  # noqa: F401
+    from .kinematics import gallery  # noqa: F401
+    from .recipes import RECIPES
+    from .render import player, results, svg, warning_words  # noqa: F401
+    from . import worksheet  # noqa: F401
+    for name in RECIPES:
+        RECIPES[name]
+
+
+def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None = None) -> dict[str, str]:
+    """Render every problem: ``{relative file name: text}`` for the JSON, the SVG sheets (``<id>.svg`` the
+    drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index; and one worksheet with
+    its key (:func:`worksheet_gallery`) when the sample spec is beside ``problems/``.
+
+    The problems and the other parts are independent jobs run on ``jobs`` processes (default: every core this
+    process may use; :func:`geomcon.workers.run_ordered`) and put together in one fixed order: the files are the
+    same bytes for any ``jobs``."""
+    from .workers import run_ordered
+
+    paths = problem_files(problems_dir)
+    if jobs != 1:
+        _preload()
+    parts = [(_grading, ()), (_worksheet, (problems_dir,)), (_cycles, (problems_dir,)), (_best_table, ()),
+             (law_diagrams, ()), (bench_gallery, (problems_dir,))]       # the longest first: fewer idle cores
+    done = run_ordered(parts + [(problem_gallery, (p, lang)) for p in paths], jobs)
+    (grading, sheet, (cycle_out, cycle_rows), best, laws, bench), problems = done[:len(parts)], done[len(parts):]
     files: dict[str, str] = {}
     rows = []
-    for path in problem_files(problems_dir):
-        try:
-            sol = solve(load_problem(path))
-        except GeomconError as exc:
-            exc.file = str(path)  # type: ignore[attr-defined]  # the CLI names the failing file
-            raise
-        pid = sol.problem.id
-        files[f"{pid}.json"] = to_json_text(sol)       # answers first: the JSON's stats show the lazy count
-        sheets = sol.sheets(page)
-        names = sheet_names(f"{pid}.svg", len(sheets))
-        for name, sheet in zip(names, sheets):
-            files[name] = sheet
-        more = ", ".join(f"[{i}]({n})" for i, n in enumerate(names[1:], 2))
-        files[f"{pid}.html"] = sol.html(page, sheets)
-        extra = ""
-        if "program" in sol.problem.given and sol.problem.given.get("h") is not None:
-            files[f"{pid}_motion.svg"] = problem_motion_svg(sol)
-            extra = f" ([s–v–a]({pid}_motion.svg))"
-        answers = ", ".join(f"{k} = {_short(v)}" for k, v in list(sol.answers.items())[:4])
-        devs = "; ".join(_deviation(r) for r in sol.published) or "—"
-        rows.append(f"| [{pid}]({pid}.svg) (sheets {more}; [player]({pid}.html)){extra} | `{sol.recipe.name}` | "
-                    f"{answers} | {devs} |")
-    from .bench.cycle_record import RECORD, cycle_figure, load_record
-    from .kinematics.gallery import cycle_gallery
-    cycle_out, cycle_rows = cycle_gallery(problems_dir)
+    for out, row in problems:
+        files.update(out)
+        rows.append(row)
     files.update(cycle_out)
-    record = Path(problems_dir) / RECORD
-    if record.is_file():
-        try:
-            files["bench_cycle.svg"] = cycle_figure(load_record(record))
-        except (ValueError, UnicodeDecodeError) as exc:      # JSONDecodeError is a ValueError
-            err = GeomconError(str(exc).removeprefix(f"{record}: "))
-            err.file = str(record)  # type: ignore[attr-defined]
-            raise err from None
+    if bench:
+        files.update(bench)
         cycle_rows = [*cycle_rows, "", "The whole-cycle bench against pylinkage + numba, as recorded from one full "
                       "`geomcon bench` run (`problems/cycles/bench_record.json`): [bench_cycle.svg](bench_cycle.svg)."]
-    files["004-02_best_by_K_table.md"] = best_by_k_table()
-    files.update(law_diagrams())
-    from .grading.example import gallery_files
-    files.update(gallery_files())
-    spec = Path(problems_dir).resolve().parent / WORKSHEET_SPEC
-    sheet = worksheet_gallery(spec) if spec.is_file() else {}
+    files.update(best)
+    files.update(laws)
+    files.update(grading)
     files.update(sheet)
     pages = sorted((n for n in sheet if n.startswith("worksheet/sheets/")), key=_page_order)
     worksheet_line = ("A worksheet of `tests/data/worksheet_class.toml` for one student (`geomcon worksheet … --count 1`): "
@@ -233,9 +291,10 @@ def best_by_k_table(H: float = 100.0) -> str:
     ])
 
 
-def stale_files(problems_dir: Path, gallery_dir: Path, lang: str | None = None) -> list[str]:
-    """Names of gallery files that are missing, different, or no longer produced."""
-    want = build_gallery(problems_dir, lang)
+def stale_files(problems_dir: Path, gallery_dir: Path, lang: str | None = None, jobs: int | None = None) -> list[str]:
+    """Names of gallery files that are missing, different, or no longer produced (``jobs``: as
+    :func:`build_gallery`)."""
+    want = build_gallery(problems_dir, lang, jobs)
     gallery_dir = Path(gallery_dir)
     out = [name for name, text in want.items()
            if not (gallery_dir / name).is_file() or (gallery_dir / name).read_text(encoding="utf-8") != text]

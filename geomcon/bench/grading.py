@@ -66,11 +66,11 @@ def measure_grading(*, rows: int = 100_000, students: int = 40) -> GradingRow:
     from ..grading.example import synthetic_answers
     from ..grading.keyfile import key_from_json
     from ..grading.tables import grades_csv
-    from ..worksheet import make_worksheet
+    from ..worksheet import make_key
     from ..worksheet.roster import numbered
     from ..worksheet.spec import parse_spec
 
-    key = key_from_json(make_worksheet(parse_spec(SPEC), numbered(students)).files["key.json"])
+    key = key_from_json(make_key(parse_spec(SPEC), numbered(students)))
     data = synthetic_answers(key, rows=rows).encode()
     t0 = time.process_time()
     cache: dict = {}

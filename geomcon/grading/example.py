@@ -129,11 +129,11 @@ def gallery_files(students: int = 8) -> dict[str, str]:
     from .moodle import moodle_xml
     from .report import report_html
     from .tables import grades_csv, grades_json
-    from ..worksheet import make_worksheet
+    from ..worksheet import make_key
     from ..worksheet.roster import numbered
     from ..worksheet.spec import parse_spec
 
-    key_text = make_worksheet(parse_spec(CLASS_SPEC), numbered(students)).files["key.json"]
+    key_text = make_key(parse_spec(CLASS_SPEC), numbered(students))   # the key alone: its pages are not shown
     key = key_from_json(key_text)
     answers = synthetic_answers(key)
     book = grade(key, read_answers(answers.encode()))

@@ -26,6 +26,7 @@ import svgwrite
 from ..scene import Role, Scene
 from .labels import rich_runs, text_width, wrap
 from .page import text, zh_punct
+from .serial import Element
 from .shapes import add_runs
 from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
 from .view import fmt
@@ -190,8 +191,9 @@ def _column_heights(heights: Sequence[float], starts: Sequence[int]) -> list[flo
     return [sum(heights[a:b]) for a, b in zip(bounds, bounds[1:])]
 
 
-def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fill: str, cls: str) -> Any:
-    el = dwg.text("", insert=(fmt(x), fmt(y)), font_size=fmt(size), fill=fill, class_=cls)
+def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fill: str, cls: str) -> Element:
+    """A line of text with its subscript runs (``dwg``, the document it goes into, is not needed to make it)."""
+    el = Element("text", x=fmt(x), y=fmt(y), font_size=fmt(size), fill=fill, class_=cls)
     el.attribs["xml:space"] = "preserve"            # keep the spaces around subscript runs
     add_runs(el, rich_runs(text), size)
     return el
@@ -210,7 +212,7 @@ def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, valu
             break
         is_cur = e.number == current
         ink, grey = (HIGHLIGHT, HIGHLIGHT) if is_cur else (INK, GREY_TEXT)
-        g = dwg.g(id=f"proto-{e.key}", class_="proto current" if is_cur else "proto")
+        g = Element("g", id=f"proto-{e.key}", class_="proto current" if is_cur else "proto")
         g.attribs["data-step"] = str(e.number)
         x0 = x + e.column * (COL_W + COL_GAP)
         yy = top + e.y + PROTO_SIZE
@@ -221,7 +223,7 @@ def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, valu
         for j, ln in enumerate(e.en):
             el = _line(dwg, ln, x0 + NUM_W, yy, PROTO_SIZE, ink, "en")
             if value and j == len(e.en) - 1:
-                el.add(dwg.tspan(value, class_="value", font_weight="bold"))
+                el.add(Element("tspan", value, class_="value", font_weight="bold"))
             g.add(el)
             yy += EN_LH
         yy += ZH_LH - EN_LH

@@ -21,12 +21,10 @@ from typing import Any, Union
 
 import numpy as np
 import shapely
-import svgwrite
 
+from .serial import Element
 from .style import HALO, HIGHLIGHT, PAPER
 from .view import fmt
-
-_D = svgwrite.Drawing(profile="full", debug=False)   # element factory only; never saved
 
 XY = tuple[float, float]
 
@@ -139,22 +137,23 @@ def arc_d(a: ArcP) -> str:
     return f"M{fmt(x0)} {fmt(y0)}A{r} {r} 0 {large} {flag} {fmt(x1)} {fmt(y1)}"
 
 
-def to_svg(shape: Shape) -> Any:
-    """The svgwrite element of a shape."""
+def to_svg(shape: Shape) -> Element:
+    """The SVG element of a shape (:class:`~geomcon.render.serial.Element`: written as svgwrite writes it)."""
     if isinstance(shape, Poly):
         d = "M" + "L".join(f"{fmt(x)} {fmt(y)}" for x, y in shape.pts) + ("Z" if shape.closed else "")
-        return _D.path(d=d, fill=shape.fill, stroke_linecap="round", stroke_linejoin="round",
+        return Element("path", d=d, fill=shape.fill, stroke_linecap="round", stroke_linejoin="round",
                        class_="ink", **_pen_attrs(shape.pen))
     if isinstance(shape, ArcP):
-        return _D.path(d=arc_d(shape), fill="none", stroke_linecap="round", class_="ink", **_pen_attrs(shape.pen))
+        return Element("path", d=arc_d(shape), fill="none", stroke_linecap="round", class_="ink",
+                       **_pen_attrs(shape.pen))
     if isinstance(shape, Disc):
         cls = "ink" if shape.fill in ("none", PAPER) else "ink dot"
-        return _D.circle(center=(fmt(shape.c[0]), fmt(shape.c[1])), r=fmt(shape.r), fill=shape.fill, class_=cls,
-                         **_pen_attrs(shape.pen))
+        return Element("circle", cx=fmt(shape.c[0]), cy=fmt(shape.c[1]), r=fmt(shape.r), fill=shape.fill, class_=cls,
+                       **_pen_attrs(shape.pen))
     return _text(shape)
 
 
-def _text(t: Text) -> Any:
+def _text(t: Text) -> Element:
     attrs: dict[str, Any] = {"font_size": fmt(t.size), "fill": t.fill, "stroke": PAPER, "stroke_width": fmt(HALO),
                              "stroke_linejoin": "round", "paint_order": "stroke", "class_": t.cls}
     if t.anchor != "start":
@@ -164,7 +163,7 @@ def _text(t: Text) -> Any:
     if t.rotate:
         cx, cy = (t.box[0] + t.box[2]) / 2, (t.box[1] + t.box[3]) / 2
         attrs["transform"] = f"rotate({fmt(t.rotate)} {fmt(cx)} {fmt(cy)})"
-    el = _D.text("", insert=(fmt(t.x), fmt(t.y)), **attrs)
+    el = Element("text", x=fmt(t.x), y=fmt(t.y), **attrs)
     add_runs(el, t.runs, t.size)
     el.attribs["xml:space"] = "preserve"
     return el
@@ -178,11 +177,11 @@ def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float) -> None:
         target = SUB_DROP * size if sub else 0.0
         attrs: dict[str, Any] = {}
         if target != shift:
-            attrs["dy"] = [fmt(target - shift)]
+            attrs["dy"] = fmt(target - shift)
             shift = target
         if sub:
             attrs["font_size"] = fmt(size * SUB_SCALE)
-        el.add(_D.tspan(s, **attrs))
+        el.add(Element("tspan", s, **attrs))
 
 
 SUB_SCALE = 0.72

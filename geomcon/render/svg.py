@@ -35,7 +35,7 @@ from ..scene import Scene
 from .figure import Figure, build_figure, content_box, shown_steps
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
                    title_block_box)
-from .serial import svg_string
+from .serial import Element, svg_string
 from .protocol import info_height, paginate, render_info, render_protocol
 from .shapes import to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
@@ -346,9 +346,9 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
 def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
     root = dwg.g(id="figure")
     for name, groups in fig.layers():
-        layer = dwg.g(id=f"layer-{name}")
+        layer = Element("g", id=f"layer-{name}")
         for sd in groups:
-            g = dwg.g(id=step_id(sd.key), class_=sd.classes)
+            g = Element("g", id=step_id(sd.key), class_=sd.classes)
             g.attribs["data-step"] = str(sd.number)
             for shape in sd.shapes:
                 g.add(to_svg(shape))

@@ -63,11 +63,7 @@ def make_worksheet(spec: Spec, students: Sequence[Student], *, paper: str = "A4"
     ProblemError
         When an exercise's variants are too rarely acceptable to fill the class (the line says why).
     """
-    if paper not in PAPERS:
-        raise ValueError(f"paper must be one of {', '.join(PAPERS)}, got {paper!r}")
-    if lang not in LANGS:
-        raise ValueError(f"lang must be one of {', '.join(LANGS)}, got {lang!r}")
-    a = assign(spec, students, PAPERS[paper], seed)
+    a = _assigned(spec, students, paper, lang, seed)
     files = {"key.json": key_json(spec, a, paper=paper, lang=lang, seed=seed),
              "variants.csv": variants_csv(spec, a)}
     pages = make_pages(spec, a, lang)
@@ -76,4 +72,39 @@ def make_worksheet(spec: Spec, students: Sequence[Student], *, paper: str = "A4"
     return Worksheet(files, tuple(st.line() for st in a.stats), a)
 
 
-__all__ = ["LANGS", "Worksheet", "make_worksheet"]
+def make_key(spec: Spec, students: Sequence[Student], *, paper: str = "A4", lang: str = "both",
+             seed: int | str | None = None) -> str:
+    """``key.json``'s text alone: the very bytes of ``make_worksheet(…).files["key.json"]``, without drawing
+    the sheets and key pages (the key depends on the assignment only; grading needs nothing else, and the
+    pages are most of a worksheet's time).
+
+    Examples
+    --------
+    >>> from geomcon.worksheet.spec import parse_spec
+    >>> from geomcon.worksheet.roster import numbered
+    >>> spec = parse_spec('''
+    ... title = "Guide bar"
+    ... [[exercise]]
+    ... recipe = "guide_bar.extremes"
+    ... ask = ["theta"]
+    ... [exercise.given]
+    ... AB = {min = 100, max = 140, step = 10}
+    ... AC = 290
+    ... ''')
+    >>> make_key(spec, numbered(2)) == make_worksheet(spec, numbered(2)).files["key.json"]
+    True
+    """
+    return key_json(spec, _assigned(spec, students, paper, lang, seed), paper=paper, lang=lang, seed=seed)
+
+
+def _assigned(spec: Spec, students: Sequence[Student], paper: str, lang: str,
+              seed: int | str | None) -> Assignment:
+    """Every student's variants, after checking ``paper`` and ``lang``."""
+    if paper not in PAPERS:
+        raise ValueError(f"paper must be one of {', '.join(PAPERS)}, got {paper!r}")
+    if lang not in LANGS:
+        raise ValueError(f"lang must be one of {', '.join(LANGS)}, got {lang!r}")
+    return assign(spec, students, PAPERS[paper], seed)
+
+
+__all__ = ["LANGS", "Worksheet", "make_key", "make_worksheet"]
