@@ -24,7 +24,7 @@ from ..render.serial import svg_string
 from ..render.shapes import to_svg
 from ..render.style import CSS
 from .accept import FIGURE_MARGIN
-from .overlay import constructed_points, position_tolerances
+from .overlay import constructed_points, point_keys, position_tolerances
 from .pages import u
 from .sheets import U, Page, answer_boxes, frame, header, page_drawing, pages_html
 
@@ -71,9 +71,12 @@ def figure_group(dwg: svgwrite.Drawing, p: Page) -> Any:
 
 def overlay_group(dwg: svgwrite.Drawing, p: Page) -> Any:
     """A tolerance circle around each point the student constructs (the figure beneath names the points)."""
-    radii = position_tolerances(p.sol, p.variant.given, p.lay.scale.factor)
+    keys = point_keys(p.sol)
+    solved = p.variant.solved
+    radii = (solved.radii if solved is not None and solved.sol is p.sol
+             else position_tolerances(p.sol, p.variant.given, p.lay.scale.factor, keys=keys))
     g = dwg.g(id="overlay", fill="none", stroke=OVERLAY)
-    for name, (x, y) in constructed_points(p.sol).items():
+    for name, (x, y) in constructed_points(p.sol, keys).items():
         cx, cy = p.lay.to_paper(x, y)
         if not (p.lay.fig[0] <= cx <= p.lay.fig[2] and p.lay.fig[1] <= cy <= p.lay.fig[3]):
             continue                              # another solution's point, outside the sheet's figure
