@@ -245,3 +245,29 @@ AD = 70
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
     assert "exercise 1" in r.stderr and "do not fit" in r.stderr and not out.exists()
+
+
+def test_pages_reuse_what_judging_solved_with_the_same_numbers(spec, six):
+    """A page draws the solution its variant was judged on, and the overlay's circles come from the drafting
+    ends the answers' tolerances solved (lean scenes): the same box, given items and radii, to the last bit,
+    as solving the variant and every drafting end afresh in full."""
+    from geomcon.worksheet.overlay import position_tolerances
+    from geomcon.worksheet.readability import extent
+    from geomcon.worksheet.givens_figure import given_items
+    from geomcon.worksheet.solving import solve_given
+    for ex, v in zip(spec.exercises, six.assignment.variants[0]):
+        assert v.solved is not None
+        fresh = solve_given(ex.recipe, v.given)
+        assert v.solved.box == extent(fresh, [r.name for r in ex.ask])
+        assert v.solved.items == tuple(given_items(fresh))
+        radii = position_tolerances(fresh, v.given, v.scale.factor)
+        assert radii and v.solved.radii == radii, ex.recipe
+
+
+def test_a_cam_key_leaves_out_the_s_delta_diagram_outside_its_figure(six):
+    """The key's figure is clipped to the sheet's model box, which excludes a cam's s–δ diagram: its steps are
+    not drawn (nothing beyond the nested viewBox), the cam's own are."""
+    svg = six.files["key/1-3.svg"]
+    inner = svg[svg.index('id="construction"'):]
+    assert ">1′<" in inner and ">15′<" in inner                # the pitch points' labels
+    assert ">δ<" not in inner and ">s<" not in inner          # the diagram's axis labels

@@ -49,13 +49,15 @@ Examples
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Mapping
 
 from ..errors import GeomconError, ProblemError
 from ..paper import Paper, Scale, Sheet, best_fit, choose_scale
+from ..solve import Solution
 from .drafting import Undeterminable, tolerances
-from .givens_figure import given_gap, given_items, place_labels
+from .givens_figure import Item, given_gap, given_items, place_labels
+from .overlay import position_tolerances
 from .readability import MIN_CROSSING, MIN_POINT_GAP, closest_points, crossings, extent
 from .solving import read, solve_given
 from .spec import AnswerRef, Exercise
@@ -86,9 +88,25 @@ class AnswerKey:
 
 
 @dataclass(frozen=True)
+class Solved:
+    """What judging an accepted variant computed that its pages draw: its solution (the full scene, with the
+    values the checks evaluated), the model box of its figure (:func:`~.readability.extent`), the givens its
+    sheet draws (:func:`~.givens_figure.given_items`) and the radius (paper mm) of the key overlay's tolerance
+    circle around each point the student constructs (:func:`~.overlay.position_tolerances`, from the solutions
+    at the ends of each drafting interval that the answers' tolerances solved)."""
+
+    sol: Solution
+    box: tuple[float, float, float, float]
+    items: tuple[Item, ...]
+    radii: Mapping[str, float]
+
+
+@dataclass(frozen=True)
 class Accepted:
     """An accepted variant: pool index, raw givens, the sheet and scale its figure is drawn at, its answers;
-    ``several`` when it has several valid solutions (its statement names the textbook's choice)."""
+    ``several`` when it has several valid solutions (its statement names the textbook's choice); ``solved``
+    what judging it solved (:class:`Solved`; None for a variant made otherwise, which the pages solve again).
+    """
 
     index: int
     given: Mapping[str, Any]
@@ -96,6 +114,7 @@ class Accepted:
     sheet: Sheet
     answers: tuple[AnswerKey, ...]
     several: bool
+    solved: Solved | None = field(default=None, compare=False, repr=False)
 
     reason = None
 
@@ -211,7 +230,8 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
         nominal = {r.text: chosen[r.text] for r in ex.ask}
         try:
             limits = {r.text: ex.max_tol_rel * abs(nominal[r.text]) for r in ex.ask}
-            tols = tolerances(ex.recipe, given, ex.ask, nominal, scale.factor, limits=limits)
+            ends: dict[str, tuple[Solution, Solution]] = {}
+            tols = tolerances(ex.recipe, given, ex.ask, nominal, scale.factor, limits=limits, keep=ends)
         except Undeterminable as exc:
             return Rejected(index, "undeterminable", str(exc))
         for r in ex.ask:
@@ -232,8 +252,9 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
         rule = ex.tol.get(r.text)
         graded = rule.of(v) if rule is not None else t
         out.append(AnswerKey(r, v, graded, t, sol.unit_scale(r.unit)))
-    return Accepted(index, given, scale, sheet, tuple(out), several)
+    radii = position_tolerances(sol, given, scale.factor, ends)
+    return Accepted(index, given, scale, sheet, tuple(out), several, Solved(sol, box, tuple(items), radii))
 
 
-__all__ = ["Accepted", "AnswerKey", "DIAGRAM_MIN", "FIGURE_MARGIN", "REASONS", "Rejected", "TEXT_BAND", "diagram_strip", "fit", "judge",
-           "names_choice"]
+__all__ = ["Accepted", "AnswerKey", "DIAGRAM_MIN", "FIGURE_MARGIN", "REASONS", "Rejected", "Solved", "TEXT_BAND",
+           "diagram_strip", "fit", "judge", "names_choice"]

@@ -177,11 +177,13 @@ def nearest(candidates: Sequence[Mapping[str, float | None]], nominal: Mapping[s
 
 
 def shift_rows(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
-               factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given
-               ) -> Iterator[tuple[str, dict[str, float]]]:
+               factor: float, *, solve: Callable[[str, Mapping[str, Any]], Any] = solve_given,
+               keep: dict[str, tuple[Any, Any]] | None = None) -> Iterator[tuple[str, dict[str, float]]]:
     """(drafted quantity, {asked answer: its shift}) one drafted quantity at a time: each shift is
     d_i = (a(g_i + δ_i) − a(g_i − δ_i)) / 2 in the solution nearest the chosen one (``nominal``: the asked
-    answers' values there) at both ends.
+    answers' values there) at both ends. With ``keep``, each drafted quantity's two solutions (``g + δ``,
+    ``g − δ``) are stored there under its name, for the key's overlay (:mod:`.overlay`) to read its points
+    from without solving again.
 
     Raises
     ------
@@ -190,15 +192,20 @@ def shift_rows(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef],
     """
     for d in drafted(recipe, given, factor):
         ends = []
+        sols = []
         for g in (d.plus, d.minus):
             try:
-                cands = read(solve(recipe, g), refs)
+                sol = solve(recipe, g)
+                sols.append(sol)
+                cands = read(sol, refs)
             except GeomconError as exc:
                 raise Undeterminable(f"{d.name} ± its drafting error leaves the domain: {exc}") from None
             best = nearest(cands, nominal)
             if best is None:
                 raise Undeterminable(f"{d.name} ± its drafting error loses an asked answer")
             ends.append(best)
+        if keep is not None:
+            keep[d.name] = (sols[0], sols[1])
         yield d.name, {r.text: (ends[0][r.text] - ends[1][r.text]) / 2.0 for r in refs}
 
 
@@ -210,14 +217,16 @@ def shifts(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nom
 
 def tolerances(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef], nominal: Mapping[str, float],
                factor: float, *, limits: Mapping[str, float] | None = None,
-               solve: Callable[[str, Mapping[str, Any]], Any] = solve_given) -> dict[str, float]:
+               solve: Callable[[str, Mapping[str, Any]], Any] = solve_given,
+               keep: dict[str, tuple[Any, Any]] | None = None) -> dict[str, float]:
     """The drafting tolerance of each asked answer (``refs``, whose values in the chosen solution are
     ``nominal``) of a variant drawn at ``factor`` paper mm per real mm: √(Σ d_i² + r²) (:func:`shift_rows`,
     :func:`reading`).
 
     With ``limits`` (answer → largest tolerance accepted) the sum stops as soon as one answer's partial sum
     exceeds its limit, and the partial sums are returned: each is then a lower bound of the full tolerance, so
-    a variant rejected on it is rejected exactly as on the full sum, without the remaining solves.
+    a variant rejected on it is rejected exactly as on the full sum, without the remaining solves. ``keep``:
+    see :func:`shift_rows`.
 
     Raises
     ------
@@ -231,7 +240,7 @@ def tolerances(recipe: str, given: Mapping[str, Any], refs: Sequence[AnswerRef],
         return any(sums[k] > c for k, c in caps.items())
 
     if not over():
-        for _, by_ref in shift_rows(recipe, given, refs, nominal, factor, solve=solve):
+        for _, by_ref in shift_rows(recipe, given, refs, nominal, factor, solve=solve, keep=keep):
             for k, d in by_ref.items():
                 sums[k] += d * d
             if over():

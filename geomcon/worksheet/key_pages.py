@@ -4,7 +4,7 @@ with the same layout, so that a key printed on film lays over the sheet.
 A key page holds the sheet's header and statement, each asked answer with its tolerance and points in its box,
 the full construction (the scene's figure as geomcon draws it, :func:`geomcon.render.figure.build_figure`,
 nested in an ``<svg>`` whose viewBox maps the sheet's model box onto the sheet's figure area: 1 real mm =
-the scale's paper mm) and the overlay: a red tolerance circle around each point the student constructs
+the scale's paper mm; a cam's s–δ diagram, which lies outside that box, is left out) and the overlay: a red tolerance circle around each point the student constructs
 (:mod:`.overlay`), its radius the propagated positional tolerance.
 
 Examples
@@ -24,8 +24,9 @@ from ..render.serial import svg_string
 from ..render.shapes import to_svg
 from ..render.style import CSS
 from .accept import FIGURE_MARGIN
-from .overlay import constructed_points, position_tolerances
+from .overlay import constructed_points, point_keys, position_tolerances
 from .pages import u
+from .readability import DIAGRAM_PREFIX
 from .sheets import U, Page, answer_boxes, frame, header, page_drawing, pages_html
 
 OVERLAY = "#d0021b"
@@ -49,6 +50,13 @@ def shown(value: float, tol: float) -> str:
     return f"{value:.{d}f} ± {tol:.{d}f}"
 
 
+def _in_figure(step: Any) -> bool:
+    """Whether the key's figure draws a step: every step but a cam's s–δ diagram (``sd_…``), which lies
+    beside the cam, outside the sheet's model box (:func:`~.readability.extent`), where the nested ``<svg>``
+    would clip it away."""
+    return not step.key.startswith(DIAGRAM_PREFIX)
+
+
 def figure_group(dwg: svgwrite.Drawing, p: Page) -> Any:
     """The full construction, nested so that the sheet's model box fills the sheet's figure area."""
     f = p.lay.scale.factor
@@ -56,7 +64,7 @@ def figure_group(dwg: svgwrite.Drawing, p: Page) -> Any:
     b = p.lay.box
     box = (b[0] - m, b[1] - m, b[2] + m, b[3] + m)
     x0, y0, x1, y1 = p.lay.fig
-    fig = build_figure(p.sol.drawing_scene, None, box, (0.0, 0.0), x1 - x0)
+    fig = build_figure(p.sol.drawing_scene, None, box, (0.0, 0.0), x1 - x0, keep=_in_figure)
     vw, vh = fig.view.size
     inner = dwg.svg(insert=(u(x0), u(y0)), size=(u(x1 - x0), u(y1 - y0)), id="construction",
                     viewBox=f"0 0 {vw:.6g} {vh:.6g}")
@@ -71,9 +79,12 @@ def figure_group(dwg: svgwrite.Drawing, p: Page) -> Any:
 
 def overlay_group(dwg: svgwrite.Drawing, p: Page) -> Any:
     """A tolerance circle around each point the student constructs (the figure beneath names the points)."""
-    radii = position_tolerances(p.sol, p.variant.given, p.lay.scale.factor)
+    keys = point_keys(p.sol)
+    solved = p.variant.solved
+    radii = (solved.radii if solved is not None and solved.sol is p.sol
+             else position_tolerances(p.sol, p.variant.given, p.lay.scale.factor, keys=keys))
     g = dwg.g(id="overlay", fill="none", stroke=OVERLAY)
-    for name, (x, y) in constructed_points(p.sol).items():
+    for name, (x, y) in constructed_points(p.sol, keys).items():
         cx, cy = p.lay.to_paper(x, y)
         if not (p.lay.fig[0] <= cx <= p.lay.fig[2] and p.lay.fig[1] <= cy <= p.lay.fig[3]):
             continue                              # another solution's point, outside the sheet's figure

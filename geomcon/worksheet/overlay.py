@@ -61,27 +61,36 @@ def point_keys(sol: Solution) -> dict[str, str]:
 
 def constructed_points(sol: Solution, keys: Mapping[str, str] | None = None) -> Where:
     """Name → model position of every point the student constructs (those of ``keys``: name → step key, by
-    default :func:`point_keys`)."""
+    default :func:`point_keys`). Evaluated in the solution's scene as it is: a lean scene (a drafting end's)
+    completes itself only when a point is a step it skipped, and gives the same values as the full one."""
     keys = point_keys(sol) if keys is None else keys
-    values = sol.drawing_scene.evaluate(list(keys.values()))
+    values = sol.scene.evaluate(list(keys.values()))
     return {n: (values[k].x, values[k].y) for n, k in keys.items() if isinstance(values[k], Point)}
 
 
-def position_tolerances(sol: Solution, given: Mapping[str, Any], factor: float) -> dict[str, float]:
+def position_tolerances(sol: Solution, given: Mapping[str, Any], factor: float,
+                        solved: Mapping[str, tuple[Solution, Solution]] | None = None,
+                        keys: Mapping[str, str] | None = None) -> dict[str, float]:
     """Name → radius (paper mm) of the tolerance circle of each constructed point of ``sol`` (solved from the
-    raw givens ``given``) drawn at scale ``factor`` (paper mm per real mm); see the module. A drafting end that loses a point (the mechanism ends
-    within the drawing's accuracy) leaves that point's term out: the variant's answers were judged
-    determinable, the overlay is a guide."""
-    keys = point_keys(sol)
+    raw givens ``given``) drawn at scale ``factor`` (paper mm per real mm); see the module. A drafting end that
+    loses a point (the mechanism ends within the drawing's accuracy) leaves that point's term out: the
+    variant's answers were judged determinable, the overlay is a guide.
+
+    ``solved``: drafted quantity → its two ends' solutions, as judging the variant's tolerances solved them
+    (:attr:`.accept.Solved.ends`), read instead of solving again; ``keys``: :func:`point_keys` of ``sol`` when
+    known."""
+    keys = point_keys(sol) if keys is None else keys
     nominal = constructed_points(sol, keys)
     sums = {k: 0.0 for k in nominal}
     for d in drafted(sol.recipe.name, given, factor):
         if " boundary " in d.name:          # a cam's division points are renumbered when a segment grows
             continue
+        pair = solved.get(d.name) if solved is not None else None
         ends = []
-        for g in (d.plus, d.minus):
+        for i, g in enumerate((d.plus, d.minus)):
             try:
-                ends.append(constructed_points(solve_given(sol.recipe.name, g), keys))
+                end = pair[i] if pair is not None else solve_given(sol.recipe.name, g)
+                ends.append(constructed_points(end, keys))
             except (GeomconError, KeyError):
                 ends.append({})
         for k in nominal:

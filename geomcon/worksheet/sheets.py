@@ -130,15 +130,17 @@ def make_pages(spec: Spec, a: Assignment, lang: str) -> list[Page]:
     for s, variants in zip(a.students, a.variants):
         code = variant_code([v.index for v in variants])
         for ex, v in zip(spec.exercises, variants):
-            sol = solve_given(ex.recipe, v.given)
-            box = extent(sol, [r.name for r in ex.ask])
+            if v.solved is not None:                            # judged here: its solution, box and givens
+                sol, box, items = v.solved.sol, v.solved.box, v.solved.items
+            else:
+                sol = solve_given(ex.recipe, v.given)
+                box, items = extent(sol, [r.name for r in ex.ask]), tuple(given_items(sol))
             paragraphs = tuple(statement(ex, v, lg) for lg in langs(lang))
             try:
                 lay = layout(v.sheet, v.scale, box, paragraphs, slot_labels(ex, v), diagram=has_diagram(sol))
             except ValueError as exc:
                 raise ProblemError(f"exercise {ex.n} ({ex.recipe}), student {s.id!r}: {exc} at {v.scale}; "
                                    "shorten the statement or ask fewer answers") from None
-            items = tuple(given_items(sol))
             placed, _ = place_labels(items, lay.to_paper)
             page = Page(page_name(s.id, ex.n), s, code, ex, len(spec.exercises), v, sol, items, tuple(placed),
                         paragraphs, lay, spec.title)
