@@ -27,7 +27,8 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import Placer, nearer_rival
+from .placement import Placer, Request, nearer_rival
+from .rows import SEP, Fan, clusters, fans
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
@@ -221,14 +222,90 @@ def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:
     return ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
 
 
+def _rows(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> list[list[tuple[int, TextRequest]]]:
+    """The numbered rows of the frame: the optional labels (a cam's divisions, an axis's ticks) of each style,
+    in step order, as (group index, text) pairs."""
+    rows: dict[str, list[tuple[int, TextRequest]]] = {}
+    for i, (g, (drawn, _)) in enumerate(zip(groups, pending)):
+        for t in drawn.texts:
+            if t.optional:
+                style = next((c for c in g.classes.split() if c.startswith("style-")), "")
+                rows.setdefault(style, []).append((i, t))
+    return list(rows.values())
+
+
+def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]
+            ) -> dict[int, TextRequest]:
+    """The labels of crowded clusters of each numbered row (:mod:`.rows`), each at its place on the cluster's
+    line of labels: the layout whose worst label is clear (the nearest on the side away from the drawing first),
+    else the one whose worst label is the most clear. Keyed by ``id`` of the text replaced."""
+    out: dict[int, TextRequest] = {}
+    for row in _rows(groups, pending):
+        anchors = [t.request.anchor for _, t in row]
+        for run in clusters(anchors, [(t.request.width, t.request.height) for _, t in row], SEP):
+            members = [row[k] for k in run]
+            reqs = [t.request for _, t in members]
+            ax = sum(math.cos(r.prefer) for r in reqs)
+            ay = sum(math.sin(r.prefer) for r in reqs)
+            fixed = all(r.candidates for r in reqs)            # an axis's ticks: on their side only
+            options = fans([r.anchor for r in reqs], [(r.width, r.height) for r in reqs],
+                           max(max(r.gap for r in reqs) - 0.4, 0.0), (ax, ay), (1,) if fixed else (1, -1))
+            best: tuple[float, Fan] | None = None
+            for fan in options:
+                worst = min(placer.best(_at(r, c), groups[i].key)[1] for (i, _), r, c in zip(members, reqs, fan.centres))
+                if best is None or worst > best[0] + 1e-9:
+                    best = (worst, fan)
+                if worst >= CROWDED:
+                    break
+            assert best is not None
+            for (_, t), r, c in zip(members, reqs, best[1].centres):
+                fan_t = out[id(t)] = TextRequest(t.runs, t.size, _at(r, c), italic=t.italic, cls="label fan")
+                box = r.box(*c)
+                placer.commit(box)
+                leader = _fan_leader(fan_t, box)
+                if leader is not None:
+                    placer.commit(obstacle(leader))
+    return out
+
+
+def _at(r: Request, c: tuple[float, float]) -> Request:
+    """``r`` placed at the one centre ``c``."""
+    return Request(r.anchor, r.width, r.height, r.gap, r.prefer, candidates=(c,))
+
+
+def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
+    """A thin leader from a spread-out label's point (off its marker) to its box: every label of a crowded row
+    has one, so that none is read as its neighbour's."""
+    r = t.request
+    anchor = shapely.Point(r.anchor)
+    if box.distance(anchor) <= r.gap:
+        return None
+    _, near = shapely.ops.nearest_points(anchor, box.exterior)
+    ax, ay = r.anchor
+    dx, dy = near.x - ax, near.y - ay
+    n = math.hypot(dx, dy)
+    a, b = (r.gap - 0.2) / n, (n - 0.3) / n
+    return Poly(((ax + dx * a, ay + dy * a), (ax + dx * b, ay + dy * b)), Pen(INK, 0.15))
+
+
 def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
-    """Place every label and mark text, in step order, clear of all shapes of the frame."""
+    """Place every label and mark text, in step order, clear of all shapes of the frame; the labels of a crowded
+    numbered row go on a line beside it, with leaders (:func:`_fanned`)."""
     obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
     texts: list[Any] = []
+    fanned = _fanned(placer, groups, pending)
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
         for t in drawn.texts:
+            if id(t) in fanned:                 # placed (and recorded by the placer) with its row
+                t = fanned[id(t)]
+                texts.append(t.request.box(*t.request.candidates[0]))
+                leader = _fan_leader(t, texts[-1])
+                if leader is not None:
+                    g.shapes.append(recolour(leader, colour) if colour else leader)
+                g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
+                continue
             centre, score = placer.best(t.request, g.key)
             if score < CROWDED and t.fallback is not None:
                 alt, alt_score = placer.best(t.fallback.request, g.key)
