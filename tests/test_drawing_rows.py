@@ -5,6 +5,7 @@ its point by a leader (:mod:`geomcon.render.rows`). Checked over every figure th
 from __future__ import annotations
 
 import functools
+import math
 import itertools
 from pathlib import Path
 
@@ -18,7 +19,7 @@ from geomcon.gallery import gallery_page
 from geomcon.problems import load_problem
 from geomcon.render.figure import Figure, merged_labels, shown_steps
 from geomcon.render.placement import LABEL_REACH
-from geomcon.render.rows import FAN_REACH, clusters, fans, spread
+from geomcon.render.rows import FAN_REACH, clusters, fans, row_centre, spread
 from geomcon.render.shapes import Poly, Text
 from geomcon.solve import solve
 
@@ -119,3 +120,19 @@ def test_a_fan_lies_beyond_every_point_of_its_cluster_on_the_side_asked():
     for fan in fans(pts, [(3.0, 2.7)] * 4, 0.55, (0.0, 1.0)):
         side = [c[1] - 1.35 for c in fan.centres] if fan.side == 1 else [-(c[1] + 1.35) for c in fan.centres]
         assert min(side) >= 0.3 + 0.55 + fan.offset - 1.0, fan      # beyond the row (chord nearly level)
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if n.startswith(("001-23", "001-24", "200-0", "200-1"))])
+def test_a_cam_s_divisions_are_numbered_outside_the_row(name):
+    """A textbook numbers a cam's divisions outside the profile, along their rays. With the s–δ diagram beside
+    the cam the numbers of its far side went inside, next to their neighbours' points (200-16's 6′, 15′, 19′):
+    every division's number now lies farther from the row's centre than its point."""
+    for fig, _ in printed(name):
+        row = [(fig.view.p(fig.values[g.key]), t) for g in fig.groups for t in g.texts
+               if "style-division" in g.classes and t.cls.startswith("label")]
+        centre = row_centre([p for p, _ in row])
+        if centre is None:
+            continue
+        for p, t in row:
+            cx, cy = (t.box[0] + t.box[2]) / 2, (t.box[1] + t.box[3]) / 2
+            assert math.dist((cx, cy), centre) > math.dist(p, centre), (name, _runs(t))

@@ -16,7 +16,7 @@ False
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Iterable
 
 import numpy as np
@@ -27,8 +27,8 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import Placer, Request, nearer_rival
-from .rows import SEP, Fan, clusters, fans
+from .placement import LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
+from .rows import SEP, Fan, clusters, fans, row_centre
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
@@ -37,6 +37,8 @@ from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
 CROWDED = 0.5              # a text placed with less clearance (paper mm) tries its shorter form
 SOFT = 0.5                 # clearance allowance for crossing a thin construction line (paper mm)
+OUTWARD_TURNS = tuple(math.radians(a) for a in (0.0, 25.0, -25.0, 50.0, -50.0))
+"""Directions (off the outward ray from a cam's centre) at which a division's number is tried, nearest first."""
 LEADER_FROM = 3.0          # a mark text farther than this from its arc gets a leader line (paper mm)
 SMALL_CIRCLE = 0.25         # any circle with r ≤ this × the content's size fits in the view
 
@@ -234,6 +236,32 @@ def _rows(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> list[
     return list(rows.values())
 
 
+def _outward(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
+    """Number a row going round a centre (a cam's divisions round O: :func:`.rows.row_centre`) as a textbook
+    does, outside the profile: each label is tried along its ray from that centre and up to 50° either side of
+    it, at most 3 mm beyond its marker (before, a label went away from the drawing's centre, which with the s–δ
+    diagram beside the cam put the numbers of its far side inside the profile, next to their neighbours' points)."""
+    for row in _rows(groups, pending):
+        if any(t.request.candidates for _, t in row):
+            continue                                    # an axis's ticks keep their side
+        centre = row_centre([t.request.anchor for _, t in row])
+        if centre is None:
+            continue
+        for i, t in row:
+            r, texts = t.request, pending[i][0].texts
+            (ax, ay) = r.anchor
+            if (ax, ay) == centre:
+                continue
+            away = math.atan2(ay - centre[1], ax - centre[0])
+            spots = []
+            for turn in OUTWARD_TURNS:                # on the ray, at the ray's end if need be, first
+                for d in LABEL_DISTANCES:
+                    ux, uy = math.cos(away + turn), math.sin(away + turn)
+                    k = r.gap + half_extent(ux, uy, r.width, r.height) + d
+                    spots.append((ax + ux * k, ay + uy * k))
+            texts[texts.index(t)] = replace(t, request=replace(r, prefer=away, candidates=tuple(spots)))
+
+
 def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]
             ) -> dict[int, TextRequest]:
     """The labels of crowded clusters of each numbered row (:mod:`.rows`), each at its place on the cluster's
@@ -294,6 +322,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
     texts: list[Any] = []
+    _outward(groups, pending)
     fanned = _fanned(placer, groups, pending)
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None

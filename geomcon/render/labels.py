@@ -9,6 +9,8 @@ Examples
 (('B′′', False),)
 >>> rich_runs("Join AC2, γmin")
 (('Join AC', False), ('2', True), (', γ', False), ('min', True))
+>>> rich_runs("α′max, ρa,min")
+(('α′', False), ('max', True), (', ρ', False), ('a,min', True))
 >>> rich_runs("the rise's α_max, B_iK_i")
 (("the rise's α", False), ('max', True), (', B', False), ('i', True), ('K', False), ('i', True))
 >>> wrap("one two three", 8 * 2.7 * 0.55, 2.7)
@@ -22,10 +24,11 @@ import re
 Runs = tuple[tuple[str, bool], ...]
 
 _LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴'*]*)$")
-_SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max)\b|(?<=[A-Zα-ω])i(?![a-z])"
+_SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
+                  r"|(?<=[A-Zα-ω])i(?![a-z])"
                   r"|(?<=[A-Za-zα-ωΑ-Ω′])_([a-z0-9]+)")
 """What a caption prints as a subscript: digits after a capital or Greek letter (C1, γ1), min/max after a Greek
-letter (γmin), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
+letter, a prime between or a profile's letter before included (γmin, α′max, ρa,min), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
 underscore dropped, as the textbook prints αmax)."""
 _CODE = re.compile(r"\S*\.[A-Za-z]\S*")
 """A word that is code (a file or recipe name, ``cam_psi0.toml``, ``cam.base_radius``): printed as it is."""

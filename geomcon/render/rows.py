@@ -72,6 +72,31 @@ def clusters(anchors: Sequence[XY], sizes: Sequence[tuple[float, float]], sep: f
     return out
 
 
+def row_centre(anchors: Sequence[XY]) -> XY | None:
+    """The centre of the circle best fitting a row's points (least squares on x² + y² + Dx + Ey + F = 0): a cam's
+    centre O, as its divisions go round it; None for fewer than three points, or points that do not go round a
+    centre (on a line, or on an arc of less than 90°), whose labels keep the drawing's directions.
+
+    >>> c = row_centre([(10.0 + 5 * math.cos(a), 20.0 + 5 * math.sin(a)) for a in (0.0, 1.5, 3.0, 4.5)])
+    >>> round(c[0], 9), round(c[1], 9)
+    (10.0, 20.0)
+    >>> row_centre([(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)]) is None
+    True
+    """
+    if len(anchors) < 3:
+        return None
+    import numpy as np
+    a = np.array([[x, y, 1.0] for x, y in anchors])
+    b = -np.array([x * x + y * y for x, y in anchors])
+    if np.linalg.matrix_rank(a, tol=1e-9 * max(1.0, float(np.abs(a).max()))) < 3:
+        return None
+    (d, e, _), *_ = np.linalg.lstsq(a, b, rcond=None)
+    cx, cy = -d / 2, -e / 2
+    turns = sorted(math.atan2(y - cy, x - cx) for x, y in anchors)
+    gaps = [b2 - b1 for b1, b2 in zip(turns, turns[1:])] + [turns[0] + 2 * math.pi - turns[-1]]
+    return (float(cx), float(cy)) if 2 * math.pi - max(gaps) >= math.pi / 2 else None
+
+
 @dataclass(frozen=True, slots=True)
 class Fan:
     """One way of laying out a cluster's labels: their box centres (paper mm), in the cluster's order."""
@@ -112,4 +137,4 @@ def fans(anchors: Sequence[XY], sizes: Sequence[tuple[float, float]], marker: fl
     return out
 
 
-__all__ = ["FAN_REACH", "Fan", "OFFSETS", "SEP", "clusters", "fans", "spread"]
+__all__ = ["FAN_REACH", "Fan", "OFFSETS", "SEP", "clusters", "fans", "row_centre", "spread"]
