@@ -136,3 +136,13 @@ def test_a_cam_s_divisions_are_numbered_outside_the_row(name):
         for p, t in row:
             cx, cy = (t.box[0] + t.box[2]) / 2, (t.box[1] + t.box[3]) / 2
             assert math.dist((cx, cy), centre) > math.dist(p, centre), (name, _runs(t))
+
+
+def test_the_worksheet_key_numbers_every_division_inside_its_figure():
+    """The key's cam (exercise 3) touches its figure's left edge: numbering outside the profile only put 13′ off
+    the figure (x < 0, clipped); where outside has no room the number goes all round its point instead."""
+    import re
+    svg = (PROBLEMS.parent / "gallery" / "worksheet" / "key" / "1-3.svg").read_text(encoding="utf-8")
+    numbers = {t: float(x) for x, t in re.findall(r'<text class="label[^"]*"[^>]*? x="([-\d.]+)"[^>]*><tspan>(\d+′)</tspan>', svg)}
+    assert sorted(numbers, key=lambda t: int(t[:-1])) == [f"{i}′" for i in range(1, 16)]
+    assert min(numbers.values()) > 0.0

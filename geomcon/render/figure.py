@@ -27,7 +27,7 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
+from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
@@ -259,7 +259,8 @@ def _outward(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> No
                     ux, uy = math.cos(away + turn), math.sin(away + turn)
                     k = r.gap + half_extent(ux, uy, r.width, r.height) + d
                     spots.append((ax + ux * k, ay + uy * k))
-            texts[texts.index(t)] = replace(t, request=replace(r, prefer=away, candidates=tuple(spots)))
+            texts[texts.index(t)] = replace(t, request=replace(r, prefer=away, candidates=tuple(spots)),
+                                            fallback=t)         # all round, where outside has no room
 
 
 def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]
@@ -301,6 +302,18 @@ def _at(r: Request, c: tuple[float, float]) -> Request:
     return Request(r.anchor, r.width, r.height, r.gap, r.prefer, candidates=(c,))
 
 
+LED_DISTANCES = (0.0, 1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0)
+"""Distances beyond its gap at which a row's number with no room by its point is tried (it gets a leader)."""
+
+
+def _led(t: TextRequest) -> TextRequest:
+    """A row's number that found no place by its point (it would cover another text, or sit nearer another
+    point): tried all round at :data:`LED_DISTANCES`, to be joined to its point by a leader."""
+    r = t.request
+    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES)
+    return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan")
+
+
 def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
     """A thin leader from a spread-out label's point (off its marker) to its box: every label of a crowded row
     has one, so that none is read as its neighbour's."""
@@ -336,15 +349,25 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
                 continue
             centre, score = placer.best(t.request, g.key)
-            if score < CROWDED and t.fallback is not None:
+            outward = t.fallback is not None and t.fallback.runs == t.runs      # a division's number all round
+            if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
                 alt, alt_score = placer.best(t.fallback.request, g.key)
                 if alt_score > score + 0.3:
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
                                or nearer_rival(t.request, np.array([box]))[0]):
-                continue                # a crowded row's label: left out rather than printed over another
-                                        # or nearer another point than its own
+                t = _led(t)             # a row's number with no room by its point: farther, with a leader
+                centre, _ = placer.best(t.request, g.key)
+                box = t.request.box(*centre)
+                texts.append(box)
+                placer.commit(box)
+                leader = _fan_leader(t, box)
+                if leader is not None:
+                    placer.commit(obstacle(leader))
+                    g.shapes.append(recolour(leader, colour) if colour else leader)
+                g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+                continue
             texts.append(box)
             placer.commit(box)
             leader = _leader(t, box)
