@@ -228,7 +228,7 @@ def test_warnings_are_shown_in_the_figure_every_frame_and_the_player(tmp_path, c
     shown = [(tmp_path / "f.svg").read_text(encoding="utf-8"), (tmp_path / "f.html").read_text(encoding="utf-8"),
              *(f.read_text(encoding="utf-8") for f in sorted((tmp_path / "frames").glob("*.svg"))[:2])]
     for text in shown:
-        assert "Warnings  警告" in text and "published theta = 25 is doubtful" in text
+        assert "Warnings  警告" in text and "published θ = 25 is doubtful" in text
     clean = _write(tmp_path, GOOD, name="clean.toml")
     assert main(["solve", str(clean), "--svg", str(tmp_path / "c.svg")]) == 0
     assert "Warnings" not in (tmp_path / "c.svg").read_text(encoding="utf-8")
@@ -257,9 +257,9 @@ def test_the_summary_reads_as_the_figure_in_the_language_asked(tmp_path, capsys)
 
 def test_warnings_in_the_figure_follow_lang(tmp_path, capsys):
     p = _write(tmp_path, GOOD.replace("theta = 12.5", "theta = 25"))
-    for lang, has, lacks in (("zh", "教材答案 theta = 25 存疑", "published theta"),
-                             ("en", "published theta = 25 is doubtful", "教材答案"),
-                             ("both", "教材答案 theta = 25 存疑", None)):
+    for lang, has, lacks in (("zh", "教材答案 θ = 25 存疑", "published θ"),
+                             ("en", "published θ = 25 is doubtful", "教材答案"),
+                             ("both", "教材答案 θ = 25 存疑", None)):
         out = tmp_path / f"{lang}.svg"
         assert main(["solve", str(p), "--svg", str(out), "--html", str(tmp_path / f"{lang}.html"), "--lang", lang]) == 0
         capsys.readouterr()

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from geomcon.render.warning_words import RULES, warning_lines, warning_zh
+from geomcon.render.warning_words import RULES, printed_words, warning_lines, warning_zh
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = [
@@ -86,6 +86,20 @@ def test_every_warning_of_the_bundled_problems_is_translated():
 
 def test_lines_by_language():
     w = [EXAMPLES[6], "a sentence no rule knows"]
-    assert warning_lines(w, "en") == w
-    assert warning_lines(w, "zh") == [warning_zh(EXAMPLES[6]), "a sentence no rule knows"]
-    assert warning_lines(w, "both") == [EXAMPLES[6], warning_zh(EXAMPLES[6]), "a sentence no rule knows"]
+    en, zh = printed_words(EXAMPLES[6]), printed_words(warning_zh(EXAMPLES[6]), zh=True)
+    assert warning_lines(w, "en") == [en, w[1]]
+    assert warning_lines(w, "zh") == [zh, "a sentence no rule knows"]
+    assert warning_lines(w, "both") == [en, zh, "a sentence no rule knows"]
+
+
+def test_a_figure_prints_the_identifiers_a_warning_quotes_as_symbols():
+    """Issue 11: the figure printed ``alpha_allow`` and ``published profile_x[0]`` raw. It prints them as the Results
+    block does (α with the subscript allow, [α] in Chinese; x[0] of the profile points); JSON keeps the English."""
+    lines = warning_lines(["α_max of the return = 36.71° exceeds alpha_allow = 30° (at δ = 230.3°)",
+                           "published profile_x[0] = -26.825 is doubtful: it deviates from the exact -42.6357 by "
+                           "+37.08 %, beyond drafting accuracy (±3 %)"], "both")
+    assert lines[0].startswith("α_max of the return = 36.71° exceeds α_allow = 30°")
+    assert "超过许用压力角 [α] = 30°" in lines[1]
+    assert lines[2].startswith("published x[0] (profile points) = -26.825")
+    assert lines[3].startswith("教材答案 x[0]（实际廓线点） = -26.825")
+    assert not any(re.search(r"[a-z]_[a-z]", t) for t in lines[1::2])

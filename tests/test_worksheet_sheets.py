@@ -271,3 +271,35 @@ def test_a_cam_key_leaves_out_the_s_delta_diagram_outside_its_figure(six):
     inner = svg[svg.index('id="construction"'):]
     assert ">1′<" in inner and ">15′<" in inner                # the pitch points' labels
     assert ">δ<" not in inner and ">s<" not in inner          # the diagram's axis labels
+
+
+def _header_texts(svg: str) -> list[str]:
+    """The visible texts of a page's header group: title, exercise line, name line and statement lines."""
+    group = re.search(r'<g id="header">(.*?)</g>', svg, re.S).group(1)
+    return [re.sub(r"<[^>]+>", "", t) for t in re.findall(r"<text[^>]*>(.*?)</text>", group)]
+
+
+@pytest.mark.parametrize("lang", ["en", "zh", "both"])
+def test_a_page_header_is_in_the_page_s_language(spec, lang):
+    """Issue 11: under ``--lang zh`` the header read "Name 姓名 / ID 学号 / Variant 变体" in both languages. Its
+    words are now Chinese only under zh, English only under en and both under both, on every sheet and key page
+    (the title is the teacher's own text and stays as written)."""
+    w = make_worksheet(spec, numbered(1), lang=lang)
+    pages = {n: t for n, t in w.files.items() if n.endswith(".svg") and n.startswith(("sheets/", "key/"))}
+    assert len(pages) >= 7
+    english = re.compile(r"\b(KEY|Exercise|continued|scale|Name|ID|Variant|portrait|landscape|rise|return)\b")
+    chinese = re.compile(r"答案|题|续|比例|姓名|学号|变体|纵向|横向")
+    for name, svg in pages.items():
+        title, exercise, who, *_ = _header_texts(svg)
+        words = [title.replace(spec.title, ""), exercise, who]
+        if lang == "zh":
+            assert not any(english.search(t) for t in words), (name, words)
+            assert all(chinese.search(t) for t in words[1:]) and ": " not in who, (name, words)
+            assert "(rise)" not in svg and "(return)" not in svg            # answer boxes: αmax（推程）
+        elif lang == "en":
+            assert not any(chinese.search(t) for t in words), (name, words)
+            assert all(english.search(t) for t in words[1:]), (name, words)
+        else:
+            assert all(english.search(t) and chinese.search(t) for t in words[1:]), (name, words)
+        if name.startswith("key/"):
+            assert ("答案" in title) == (lang != "en") and ("KEY" in title) == (lang != "zh")

@@ -448,8 +448,8 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     if drawing:
         reach = sc.add("face_reach", grown, Ref("face_max"), 1.12, visible=False)
         sc.add("face0", face_segment, A0, T1, O, f, reach, style="link", role=Role.RESULT,
-               caption=("The flat face in its lowest position, long enough for every contact (face_max)",
-                        "平底的最低位置(长度按最远接触点 face_max 取)"))
+               caption=("The flat face in its lowest position, long enough for every contact (l_max)",
+                        "平底的最低位置(长度按最远接触点 l_max 取)"))
         if f:
             sc.add("arm0", segment, A0, sc.add("F0", face_foot, A0, T1, O, f, visible=False), style="link")
         sc.add("kA", circle, O, a, style="construction",
@@ -546,10 +546,10 @@ def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O:
     for part in parts:
         if part == "far":
             where = sc.add("delta_far", extremum_deg, Ref("face_hi"), visible=False)
-            cap = ("The farthest contact K (face_max): the common normal at K is perpendicular to the face and "
+            cap = ("The farthest contact K (l_max): the common normal at K is perpendicular to the face and "
                    "passes through the relative instant centre P on OA0′ (A0′P = a/(1 − εψ′)); K's velocity is "
                    "along it too, so α = 0 for a face through the pivot",
-                   "最远接触点 K(face_max):过 K 的公法线垂直于平底并通过凸轮与摆杆的相对瞬心 P(在 OA0′ 上,"
+                   "最远接触点 K(l_max):过 K 的公法线垂直于平底并通过凸轮与摆杆的相对瞬心 P(在 OA0′ 上,"
                    "A0′P = a/(1 − εψ′));K 点速度亦沿此线,平底过转轴时压力角恒为 0")
         else:                       # the rise's K1, P1 and the return's K2, P2: one name for each point
             where = Ref(f"delta_alpha_max_{part}")

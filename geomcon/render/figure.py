@@ -16,7 +16,7 @@ False
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Iterable
 
 import numpy as np
@@ -27,7 +27,8 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import Placer, nearer_rival
+from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
+from .rows import SEP, Fan, clusters, fans, row_centre
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
@@ -36,6 +37,8 @@ from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
 CROWDED = 0.5              # a text placed with less clearance (paper mm) tries its shorter form
 SOFT = 0.5                 # clearance allowance for crossing a thin construction line (paper mm)
+OUTWARD_TURNS = tuple(math.radians(a) for a in (0.0, 25.0, -25.0, 50.0, -50.0))
+"""Directions (off the outward ray from a cam's centre) at which a division's number is tried, nearest first."""
 LEADER_FROM = 3.0          # a mark text farther than this from its arc gets a leader line (paper mm)
 SMALL_CIRCLE = 0.25         # any circle with r ≤ this × the content's size fits in the view
 
@@ -221,24 +224,150 @@ def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:
     return ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
 
 
+def _rows(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> list[list[tuple[int, TextRequest]]]:
+    """The numbered rows of the frame: the optional labels (a cam's divisions, an axis's ticks) of each style,
+    in step order, as (group index, text) pairs."""
+    rows: dict[str, list[tuple[int, TextRequest]]] = {}
+    for i, (g, (drawn, _)) in enumerate(zip(groups, pending)):
+        for t in drawn.texts:
+            if t.optional:
+                style = next((c for c in g.classes.split() if c.startswith("style-")), "")
+                rows.setdefault(style, []).append((i, t))
+    return list(rows.values())
+
+
+def _outward(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
+    """Number a row going round a centre (a cam's divisions round O: :func:`.rows.row_centre`) as a textbook
+    does, outside the profile: each label is tried along its ray from that centre and up to 50° either side of
+    it, at most 3 mm beyond its marker (before, a label went away from the drawing's centre, which with the s–δ
+    diagram beside the cam put the numbers of its far side inside the profile, next to their neighbours' points)."""
+    for row in _rows(groups, pending):
+        if any(t.request.candidates for _, t in row):
+            continue                                    # an axis's ticks keep their side
+        centre = row_centre([t.request.anchor for _, t in row])
+        if centre is None:
+            continue
+        for i, t in row:
+            r, texts = t.request, pending[i][0].texts
+            (ax, ay) = r.anchor
+            if (ax, ay) == centre:
+                continue
+            away = math.atan2(ay - centre[1], ax - centre[0])
+            spots = []
+            for turn in OUTWARD_TURNS:                # on the ray, at the ray's end if need be, first
+                for d in LABEL_DISTANCES:
+                    ux, uy = math.cos(away + turn), math.sin(away + turn)
+                    k = r.gap + half_extent(ux, uy, r.width, r.height) + d
+                    spots.append((ax + ux * k, ay + uy * k))
+            texts[texts.index(t)] = replace(t, request=replace(r, prefer=away, candidates=tuple(spots)),
+                                            fallback=t)         # all round, where outside has no room
+
+
+def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]
+            ) -> dict[int, TextRequest]:
+    """The labels of crowded clusters of each numbered row (:mod:`.rows`), each at its place on the cluster's
+    line of labels: the layout whose worst label is clear (the nearest on the side away from the drawing first),
+    else the one whose worst label is the most clear. Keyed by ``id`` of the text replaced."""
+    out: dict[int, TextRequest] = {}
+    for row in _rows(groups, pending):
+        anchors = [t.request.anchor for _, t in row]
+        for run in clusters(anchors, [(t.request.width, t.request.height) for _, t in row], SEP):
+            members = [row[k] for k in run]
+            reqs = [t.request for _, t in members]
+            ax = sum(math.cos(r.prefer) for r in reqs)
+            ay = sum(math.sin(r.prefer) for r in reqs)
+            fixed = all(r.candidates for r in reqs)            # an axis's ticks: on their side only
+            options = fans([r.anchor for r in reqs], [(r.width, r.height) for r in reqs],
+                           max(max(r.gap for r in reqs) - 0.4, 0.0), (ax, ay), (1,) if fixed else (1, -1))
+            best: tuple[float, Fan] | None = None
+            for fan in options:
+                worst = min(placer.best(_at(r, c), groups[i].key)[1] for (i, _), r, c in zip(members, reqs, fan.centres))
+                if best is None or worst > best[0] + 1e-9:
+                    best = (worst, fan)
+                if worst >= CROWDED:
+                    break
+            assert best is not None
+            for (_, t), r, c in zip(members, reqs, best[1].centres):
+                fan_t = out[id(t)] = TextRequest(t.runs, t.size, _at(r, c), italic=t.italic, cls="label fan")
+                box = r.box(*c)
+                placer.commit(box)
+                leader = _fan_leader(fan_t, box)
+                if leader is not None:
+                    placer.commit(obstacle(leader))
+    return out
+
+
+def _at(r: Request, c: tuple[float, float]) -> Request:
+    """``r`` placed at the one centre ``c``."""
+    return Request(r.anchor, r.width, r.height, r.gap, r.prefer, candidates=(c,))
+
+
+LED_DISTANCES = (0.0, 1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0)
+"""Distances beyond its gap at which a row's number with no room by its point is tried (it gets a leader)."""
+
+
+def _led(t: TextRequest) -> TextRequest:
+    """A row's number that found no place by its point (it would cover another text, or sit nearer another
+    point): tried all round at :data:`LED_DISTANCES`, to be joined to its point by a leader."""
+    r = t.request
+    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES)
+    return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan")
+
+
+def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
+    """A thin leader from a spread-out label's point (off its marker) to its box: every label of a crowded row
+    has one, so that none is read as its neighbour's."""
+    r = t.request
+    anchor = shapely.Point(r.anchor)
+    if box.distance(anchor) <= r.gap:
+        return None
+    _, near = shapely.ops.nearest_points(anchor, box.exterior)
+    ax, ay = r.anchor
+    dx, dy = near.x - ax, near.y - ay
+    n = math.hypot(dx, dy)
+    a, b = (r.gap - 0.2) / n, (n - 0.3) / n
+    return Poly(((ax + dx * a, ay + dy * a), (ax + dx * b, ay + dy * b)), Pen(INK, 0.15))
+
+
 def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
-    """Place every label and mark text, in step order, clear of all shapes of the frame."""
+    """Place every label and mark text, in step order, clear of all shapes of the frame; the labels of a crowded
+    numbered row go on a line beside it, with leaders (:func:`_fanned`)."""
     obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
     texts: list[Any] = []
+    _outward(groups, pending)
+    fanned = _fanned(placer, groups, pending)
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
         for t in drawn.texts:
+            if id(t) in fanned:                 # placed (and recorded by the placer) with its row
+                t = fanned[id(t)]
+                texts.append(t.request.box(*t.request.candidates[0]))
+                leader = _fan_leader(t, texts[-1])
+                if leader is not None:
+                    g.shapes.append(recolour(leader, colour) if colour else leader)
+                g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
+                continue
             centre, score = placer.best(t.request, g.key)
-            if score < CROWDED and t.fallback is not None:
+            outward = t.fallback is not None and t.fallback.runs == t.runs      # a division's number all round
+            if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
                 alt, alt_score = placer.best(t.fallback.request, g.key)
                 if alt_score > score + 0.3:
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
                                or nearer_rival(t.request, np.array([box]))[0]):
-                continue                # a crowded row's label: left out rather than printed over another
-                                        # or nearer another point than its own
+                t = _led(t)             # a row's number with no room by its point: farther, with a leader
+                centre, _ = placer.best(t.request, g.key)
+                box = t.request.box(*centre)
+                texts.append(box)
+                placer.commit(box)
+                leader = _fan_leader(t, box)
+                if leader is not None:
+                    placer.commit(obstacle(leader))
+                    g.shapes.append(recolour(leader, colour) if colour else leader)
+                g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+                continue
             texts.append(box)
             placer.commit(box)
             leader = _leader(t, box)

@@ -9,6 +9,10 @@ Examples
 (('B′′', False),)
 >>> rich_runs("Join AC2, γmin")
 (('Join AC', False), ('2', True), (', γ', False), ('min', True))
+>>> rich_runs("α′max, ρa,min")
+(('α′', False), ('max', True), (', ρ', False), ('a,min', True))
+>>> rich_runs("the rise's α_max, B_iK_i")
+(("the rise's α", False), ('max', True), (', B', False), ('i', True), ('K', False), ('i', True))
 >>> wrap("one two three", 8 * 2.7 * 0.55, 2.7)
 ['one two', 'three']
 """
@@ -20,7 +24,14 @@ import re
 Runs = tuple[tuple[str, bool], ...]
 
 _LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴'*]*)$")
-_SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max)\b")
+_SUB = re.compile(r"(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
+                  r"|(?<=[A-Zα-ω])i(?![a-z])"
+                  r"|(?<=[A-Za-zα-ωΑ-Ω′])_([a-z0-9]+)")
+"""What a caption prints as a subscript: digits after a capital or Greek letter (C1, γ1), min/max after a Greek
+letter, a prime between or a profile's letter before included (γmin, α′max, ρa,min), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
+underscore dropped, as the textbook prints αmax)."""
+_CODE = re.compile(r"\S*\.[A-Za-z]\S*")
+"""A word that is code (a file or recipe name, ``cam_psi0.toml``, ``cam.base_radius``): printed as it is."""
 
 
 def label_runs(label: str) -> Runs:
@@ -45,14 +56,22 @@ def label_runs(label: str) -> Runs:
 
 
 def rich_runs(text: str) -> Runs:
-    """Runs of a caption: digits right after a capital or Greek letter (C1, AB2, γ1) and min/max after a
-    Greek letter (γmin) become subscripts."""
+    """Runs of a caption: digits right after a capital or Greek letter (C1, AB2, γ1), min/max after a Greek
+    letter (γmin), a lone i (Ci) and an underscored name (α_max, without its underscore) become subscripts;
+    file and recipe names (:data:`_CODE`) are left as they are.
+
+    >>> rich_runs("φ_slow/φ_quick in 000-04_slotter_cam_psi0.toml")
+    (('φ', False), ('slow', True), ('/φ', False), ('quick', True), (' in 000-04_slotter_cam_psi0.toml', False))
+    """
     out: list[tuple[str, bool]] = []
     pos = 0
+    code = [m.span() for m in _CODE.finditer(text)] if "." in text else []
     for m in _SUB.finditer(text):
+        if any(a <= m.start() < b for a, b in code):
+            continue
         if m.start() > pos:
             out.append((text[pos:m.start()], False))
-        out.append((m.group(0), True))
+        out.append((m.group(3) if m.group(3) is not None else m.group(0), True))
         pos = m.end()
     if pos < len(text):
         out.append((text[pos:], False))

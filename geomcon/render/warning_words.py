@@ -13,7 +13,7 @@ Examples
 '回程最大压力角 αmax = 36.71° 超过许用压力角 alpha_allow = 30°（δ = 230.3° 处）'
 >>> warning_lines(["published theta = 25 is doubtful: it deviates from the exact 12.5056 by +99.91 %, beyond "
 ...                "drafting accuracy (±3 %)"], "zh")
-['教材答案 theta = 25 存疑：与精确值 12.5056 相差 +99.91 %，超出作图精度（±3 %）']
+['教材答案 θ = 25 存疑：与精确值 12.5056 相差 +99.91 %，超出作图精度（±3 %）']
 >>> warning_zh("a sentence no rule knows") is None
 True
 """
@@ -159,19 +159,53 @@ def warning_zh(warning: str) -> str | None:
     return None
 
 
+_GIVEN_SYMBOLS = {"gamma_allow": ("γ_allow", "[γ]"), "alpha_allow": ("α_allow", "[α]")}
+"""A given a warning names by its problem-file key, as a figure prints it (English: γ with the subscript allow;
+Chinese: the textbook's [γ])."""
+_AUDITED = re.compile(r"(?<=^published )(\w+)(\[\d+\])?|(?<=^教材答案 )(\w+)(\[\d+\])?")
+
+
+def printed_words(line: str, zh: bool = False) -> str:
+    """A warning line with the identifiers it quotes written as the figure's Results block prints them: an audited
+    answer by its symbol (``theta`` → ``θ``; ``profile_x[0]`` → ``x[0] (profile points)``) and a given allowance
+    by its symbol (``alpha_allow`` → ``α_allow``, drawn as α with a subscript; ``[α]`` in Chinese).
+
+    >>> printed_words("published profile_x[0] = -26.8 is doubtful")
+    'published x[0] (profile points) = -26.8 is doubtful'
+    >>> printed_words("回程最大压力角 αmax = 36.71° 超过许用压力角 alpha_allow = 30°", zh=True)
+    '回程最大压力角 αmax = 36.71° 超过许用压力角 [α] = 30°'
+    """
+    from .results import name_of
+
+    def answer(m: re.Match) -> str:
+        key, index = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+        name = name_of(key)
+        if not name.symbol or name.symbol == key.replace("_", " "):
+            return m.group(0)
+        words = name.zh if zh else name.en
+        return name.symbol + (index or "") + (f"（{words}）" if zh else f" ({words})") * bool(index and words)
+
+    line = _AUDITED.sub(answer, line)
+    for key, (en, zh_form) in _GIVEN_SYMBOLS.items():
+        line = line.replace(key, zh_form if zh else en)
+    return line
+
+
 def warning_lines(warnings: Sequence[str], lang: str) -> list[str]:
     """The warnings as a figure prints them: English (``en``), Chinese (``zh``; a warning no rule knows stays in
-    English), or each in English followed by its Chinese (``both``)."""
+    English), or each in English followed by its Chinese (``both``); the identifiers they quote as the Results
+    block prints them (:func:`printed_words`)."""
     out = []
     for w in warnings:
         zh = warning_zh(w)
+        en = printed_words(w)
         if lang == "en" or zh is None:
-            out.append(w)
+            out.append(en)
         elif lang == "zh":
-            out.append(zh)
+            out.append(printed_words(zh, zh=True))
         else:
-            out += [w, zh]
+            out += [en, printed_words(zh, zh=True)]
     return out
 
 
-__all__ = ["RULES", "warning_lines", "warning_zh"]
+__all__ = ["RULES", "printed_words", "warning_lines", "warning_zh"]

@@ -113,7 +113,7 @@ def key_files(pages: list[Page], title: str, lang: str) -> dict[str, str]:
     """``key/<page>.svg`` for every sheet with a figure and ``key.html``."""
     svgs = [(p, key_svg(p)) for p in pages if p.part != "sd"]
     files = {f"key/{p.name}.svg": s for p, s in svgs}
-    files["key.html"] = pages_html(f"{title} — key", svgs, lang)
+    files["key.html"] = pages_html(f"{title} — {'答案' if lang == 'zh' else 'key'}", svgs, lang)
     return files
 
 

@@ -26,6 +26,7 @@ Examples
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import html
 import re
@@ -93,6 +94,8 @@ class Page:
     lay: Layout
     title: str
     part: str = ""
+    lang: str = "both"
+    """The page's language: ``en``, ``zh`` or ``both`` (statement and header)."""
 
 
 def answer_name(ref: AnswerRef, given: dict[str, Any]) -> str:
@@ -108,9 +111,16 @@ def answer_name(ref: AnswerRef, given: dict[str, Any]) -> str:
     return f"{base}(δ = {number(at[ref.index])}°)" if ref.index < len(at) else ref.text
 
 
-def slot_labels(ex: Exercise, v: Accepted) -> list[str]:
-    """Each asked answer's box label and unit, joined by a tab (:func:`~.pages.answer_slots`)."""
-    return [f"{answer_name(r, dict(v.given))} =\t{UNITS.get(r.unit, r.unit)}" for r in ex.ask]
+def slot_labels(ex: Exercise, v: Accepted, lang: str = "both") -> list[str]:
+    """Each asked answer's box label and unit, joined by a tab (:func:`~.pages.answer_slots`); under ``zh`` the
+    part a name adds is Chinese (``αmax（推程）``)."""
+    out = []
+    for r in ex.ask:
+        name = answer_name(r, dict(v.given))
+        if lang == "zh":
+            name = name.replace(" (rise)", "（推程）").replace(" (return)", "（回程）")
+        out.append(f"{name} =\t{UNITS.get(r.unit, r.unit)}")
+    return out
 
 
 def langs(lang: str) -> tuple[str, ...]:
@@ -137,13 +147,13 @@ def make_pages(spec: Spec, a: Assignment, lang: str) -> list[Page]:
                 box, items = extent(sol, [r.name for r in ex.ask]), tuple(given_items(sol))
             paragraphs = tuple(statement(ex, v, lg) for lg in langs(lang))
             try:
-                lay = layout(v.sheet, v.scale, box, paragraphs, slot_labels(ex, v), diagram=has_diagram(sol))
+                lay = layout(v.sheet, v.scale, box, paragraphs, slot_labels(ex, v, lang), diagram=has_diagram(sol))
             except ValueError as exc:
                 raise ProblemError(f"exercise {ex.n} ({ex.recipe}), student {s.id!r}: {exc} at {v.scale}; "
                                    "shorten the statement or ask fewer answers") from None
             placed, _ = place_labels(items, lay.to_paper)
             page = Page(page_name(s.id, ex.n), s, code, ex, len(spec.exercises), v, sol, items, tuple(placed),
-                        paragraphs, lay, spec.title)
+                        paragraphs, lay, spec.title, lang=lang)
             out.append(page)
             if has_diagram(sol) and lay.diagram is None:        # no free strip at the figure's scale
                 x0, y0, x1, _ = lay.frame
@@ -175,17 +185,56 @@ def svg_text(dwg: svgwrite.Drawing, s: str, x: float, y: float, size: float, *, 
     return el
 
 
+HEADER_WORDS: dict[str, tuple[str, str]] = {
+    "key": ("KEY", "答案"), "exercise": ("Exercise", "题"), "continued": ("continued", "续"),
+    "scale": ("scale", "比例"), "name": ("Name", "姓名"), "id": ("ID", "学号"), "variant": ("Variant", "变体")}
+"""The words of a page's header, English and Chinese."""
+
+
+def header_word(word: str, lang: str) -> str:
+    """A header word in the page's language: ``en``, ``zh``, or both (English then Chinese).
+
+    >>> header_word("name", "zh"), header_word("name", "en"), header_word("name", "both")
+    ('姓名', 'Name', 'Name 姓名')
+    """
+    en, zh = HEADER_WORDS[word]
+    return zh if lang == "zh" else en if lang == "en" else f"{en} {zh}"
+
+
+def header_lines(p: Page, key: bool = False) -> tuple[str, str, str]:
+    """The header's title, its exercise line (right) and its name line, in the page's language (:func:`header_word`;
+    a colon full-width in Chinese, the paper named as a title block names it).
+
+    >>> from types import SimpleNamespace as NS
+    >>> p = NS(lang="zh", title="T", part="sd", ex=NS(n=2), count=3, variant=NS(scale="1:2"),
+    ...        lay=NS(sheet="A4 portrait"), student=NS(name="", id="7"), code="AB")
+    >>> header_lines(p, key=True)[1:]
+    ('题 2/3（续：s–δ） · 比例 1:2 · A4 纵向', '姓名：________________    学号：7    变体：AB')
+    """
+    lg = p.lang
+    w = functools.partial(header_word, lang=lg)
+    colon = "：" if lg == "zh" else ": "
+    title = (f"{w('key')} — " if key else "") + p.title
+    cont = ((f"（{w('continued')}：s–δ）" if lg == "zh" else f" ({w('continued')}: s–δ)")
+            if p.part == "sd" else "")
+    paper = str(p.lay.sheet)
+    if lg == "zh":
+        paper = paper.replace(" landscape", " 横向").replace(" portrait", " 纵向")
+    exercise = f"{w('exercise')} {p.ex.n}/{p.count}{cont} · {w('scale')} {p.variant.scale} · {paper}"
+    name = p.student.name or "_" * 16
+    who = f"{w('name')}{colon}{name}    {w('id')}{colon}{p.student.id}    {w('variant')}{colon}{p.code}"
+    return title, exercise, who
+
+
 def header(dwg: svgwrite.Drawing, p: Page, key: bool = False) -> Any:
-    """Title, exercise, scale, name, id and variant code, and the statement."""
+    """Title, exercise, scale, name, id and variant code (in the page's language: :func:`header_lines`), and the
+    statement."""
     x0, y0, x1, _ = p.lay.frame
     g = dwg.g(id="header")
-    title = ("KEY 答案 — " if key else "") + p.title
+    title, exercise, who = header_lines(p, key)
     g.add(svg_text(dwg, title, x0 + 3, y0 + 6.5, 4.5, bold=True))
-    cont = " (continued 续: s–δ)" if p.part == "sd" else ""
-    g.add(svg_text(dwg, f"Exercise 题 {p.ex.n}/{p.count}{cont} · scale 比例 {p.variant.scale} · {p.lay.sheet}",
-                x1 - 3, y0 + 6.5, 3.0, anchor="end"))
-    name = p.student.name or "_" * 16
-    g.add(svg_text(dwg, f"Name 姓名: {name}    ID 学号: {p.student.id}    Variant 变体: {p.code}", x0 + 3, y0 + 12.5, 3.2))
+    g.add(svg_text(dwg, exercise, x1 - 3, y0 + 6.5, 3.0, anchor="end"))
+    g.add(svg_text(dwg, who, x0 + 3, y0 + 12.5, 3.2))
     g.add(dwg.line((u(x0), u(y0 + HEADER_H - 1.5)), (u(x1), u(y0 + HEADER_H - 1.5)), stroke=INK,
                    stroke_width=u(0.25)))
     size, y = p.lay.size, p.lay.text_top + p.lay.size * 1.2
@@ -201,7 +250,7 @@ def answer_boxes(dwg: svgwrite.Drawing, p: Page, values: Sequence[str] | None = 
     """One box per asked answer with its name and unit (``values`` written beside them: the key)."""
     x0 = p.lay.frame[0] + 3
     g = dwg.g(id="answers")
-    for i, (lab, (row, dx)) in enumerate(zip(slot_labels(p.ex, p.variant), p.lay.slots)):
+    for i, (lab, (row, dx)) in enumerate(zip(slot_labels(p.ex, p.variant, p.lang), p.lay.slots)):
         name, _, unit = lab.partition("\t")
         x, y = x0 + dx, p.lay.answers_top + row * ANSWER_H
         g.add(svg_text(dwg, name, x, y + 6.5, ANSWER_FONT))

@@ -1,0 +1,47 @@
+"""Every visible text of the gallery reads as the textbook prints it: no identifier written with an underscore
+(issue 11: 000-04's protocol printed "the return's α_max" where the figure prints α with the subscript max).
+
+Code is left as code: file and recipe names (``000-04_slotter_cam_psi0.toml``, ``cam.base_radius``), a problem's
+id, a motion law's key (``modified_sine``, as a problem file names it) and the grading and bench reports' codes
+(mistake codes, the benchmarked functions' names)."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from geomcon.gallery import _law_names
+
+GALLERY = Path(__file__).resolve().parents[1] / "gallery"
+RAW = re.compile(r"[^\s(),=:;，：（）]*[A-Za-zα-ωΑ-Ω′]_[A-Za-z0-9][^\s(),=:;，：（）]*")
+"""A word with an underscore after a letter: ``α_max``, ``gamma_allow``, ``profile_x[0]``."""
+CODE_FILES = ("grading_", "bench_")
+"""Reports whose tables list codes on purpose (mistake codes, function names)."""
+
+
+def visible_texts(text: str) -> list[str]:
+    """The text nodes of an SVG or HTML file, scripts and style sheets left out."""
+    text = re.sub(r"<script.*?</script>|<style.*?</style>", "", text, flags=re.S)
+    return [t for t in re.findall(r">([^<>]+)<", text) if t.strip()]
+
+
+def is_code(word: str, problem_ids: set[str], laws: set[str]) -> bool:
+    """A file, recipe or problem name, or a motion law's key."""
+    core = word.strip("'\"[]")
+    return (re.search(r"\.[A-Za-z]", core) is not None or core in problem_ids or core in laws
+            or re.match(r"\d{3}-\d{2}", core) is not None)
+
+
+def test_no_visible_text_of_the_gallery_shows_a_raw_underscore_name():
+    problem_ids = {p.stem for p in (GALLERY.parent / "problems").glob("*.toml")}
+    laws = set(_law_names())
+    files = [f for f in sorted(GALLERY.rglob("*")) if f.suffix in (".svg", ".html")]
+    assert len(files) > 300
+    raw = {}
+    for f in files:
+        if f.name.startswith(CODE_FILES):
+            continue
+        for t in visible_texts(f.read_text(encoding="utf-8")):
+            for w in RAW.findall(t):
+                if not is_code(w, problem_ids, laws):
+                    raw.setdefault(w, f.name)
+    assert not raw, raw
