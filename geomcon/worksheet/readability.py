@@ -142,6 +142,10 @@ def extent(sol: Solution, names: Iterable[str] | None = None) -> tuple[float, fl
         if c.r <= size or size == 0.0:
             x0, y0 = min(x0, c.center.x - c.r), min(y0, c.center.y - c.r)
             x1, y1 = max(x1, c.center.x + c.r), max(y1, c.center.y + c.r)
+    rr = sol.problem.given.get("rr") if sol.problem.given.get("follower") == "roller" else None
+    if rr and "pitch_curve" in keys:
+        r = float(rr)                        # the roller drawn at each pitch point reaches rr beyond the curve
+        x0, y0, x1, y1 = x0 - r, y0 - r, x1 + r, y1 + r
     return (x0, y0, x1, y1)
 
 
