@@ -225,6 +225,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     """Place every label and mark text, in step order, clear of all shapes of the frame."""
     obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
+    placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts])
     texts: list[Any] = []
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
@@ -236,7 +237,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
-                               or nearer_rival(t.request, np.array([box]))[0]):
+                               or nearer_rival(t.request, [centre])[0]):
                 continue                # a crowded row's label: left out rather than printed over another
                                         # or nearer another point than its own
             texts.append(box)
