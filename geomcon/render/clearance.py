@@ -198,11 +198,19 @@ def _diagonals(x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -
     return shapely.linestrings(np.stack([x0, y0, x1, y1], axis=1).reshape(-1, 2, 2))
 
 
+def _starts(changed: np.ndarray) -> np.ndarray:
+    """Where runs begin, from where each element differs from the one before: ``[True, *changed]``."""
+    out = np.empty(len(changed) + 1, dtype=bool)
+    out[0] = True
+    out[1:] = changed
+    return out
+
+
 def least(out: np.ndarray, rows: np.ndarray, values: np.ndarray) -> None:
     """``out[r] = min(out[r], values where rows == r)`` for rows sorted ascending (``np.minimum.at``, faster)."""
     if not len(rows):
         return
-    start = np.flatnonzero(np.r_[True, rows[1:] != rows[:-1]])
+    start = np.flatnonzero(_starts(rows[1:] != rows[:-1]))
     r = rows[start]
     out[r] = np.minimum(out[r], np.minimum.reduceat(values, start))
 
@@ -347,7 +355,7 @@ class Layer:
             return Measured(known, known, known, touching, (_NONE, _NONE))
         order = np.argsort(hk * len(self.geoms) + hp, kind="stable")
         hk, hp, hin = hk[order], hp[order], hin[order]
-        first = np.flatnonzero(np.r_[True, (hk[1:] != hk[:-1]) | (hp[1:] != hp[:-1])])
+        first = np.flatnonzero(_starts((hk[1:] != hk[:-1]) | (hp[1:] != hp[:-1])))
         gk, gp = hk[first], hp[first]
         covered = np.add.reduceat(hin, first)
         simple = self._simple_of(gp)
@@ -395,16 +403,18 @@ class Layer:
 
 
 class Placed:
-    """What was placed, one text after another: axis-parallel text boxes (measured against axis-parallel
-    candidates rectangle to rectangle) and anything else (leaders, turned boxes: a :class:`Layer`)."""
+    """What was placed, one text after another: axis-parallel text boxes and leaders (two-point line strings),
+    measured against axis-parallel candidates densely (rectangle to rectangle, box to segment), and anything
+    else (a turned box: then everything, as segments of a :class:`Layer`). What a box covers of a placed
+    geometry is left to GEOS (such a box is as bad as one outside the frame)."""
 
     def __init__(self) -> None:
         self.geoms: list[shapely.Geometry] = []
-        self._rects: list[tuple[float, float, float, float]] = []
+        self._rects: list[tuple[float, ...]] = []
         self._rect_ids: list[int] = []
-        self._other_ids: list[int] = []
-        self._others = Layer([])
-        self._queue: list[shapely.Geometry] = []
+        self._leaders: list[tuple[float, ...]] = []
+        self._leader_ids: list[int] = []
+        self._general = False
         self._arrays: tuple[np.ndarray, ...] | None = None
 
     def __len__(self) -> int:
@@ -416,56 +426,58 @@ class Placed:
         if rect is not None:
             self._rects.append(rect)
             self._rect_ids.append(len(self.geoms))
-            self._arrays = None
+        elif shapely.get_type_id(geom) == 1 and shapely.get_num_coordinates(geom) == 2:
+            self._leaders.append(tuple(shapely.get_coordinates(geom).ravel().tolist()))
+            self._leader_ids.append(len(self.geoms))
         else:
-            self._other_ids.append(len(self.geoms))
-            self._queue.append(geom)
+            self._general = True
         self.geoms.append(geom)
+        self._arrays = None
 
-    def _rect_arrays(self) -> tuple[np.ndarray, ...]:
+    def _dense(self) -> tuple[np.ndarray, ...]:
         if self._arrays is None:
-            r = np.array(self._rects, dtype=float).reshape(-1, 4)
-            self._arrays = (r[:, 0].copy(), r[:, 1].copy(), r[:, 2].copy(), r[:, 3].copy(),
-                            np.array(self._rect_ids, dtype=np.intp))
+            r = np.array(self._rects, dtype=float).reshape(-1, 4).T.copy()
+            g = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
+            self._arrays = (*r, np.array(self._rect_ids, dtype=np.intp), *g, np.array(self._leader_ids, dtype=np.intp))
         return self._arrays
 
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from everything placed (pending: box, index into :attr:`geoms`)."""
-        if boxes.turned.any():                                 # rare: all of it as segments
-            m = Layer(self.geoms).measure(boxes)
-            return m
+        if self._general or boxes.turned.any():                # rare: all of it as segments
+            return Layer(self.geoms).measure(boxes)
         n = len(boxes)
         known = np.full(n, ENOUGH)
-        touching = np.zeros(n, dtype=bool)
-        pend_k, pend_p = [_NONE], [_NONE]
-        if self._rects:
-            px0, py0, px1, py1, ids = self._rect_arrays()
+        hk, hp = [_NONE], [_NONE]
+        px0, py0, px1, py1, rid, ax, ay, bx, by, lid = self._dense()
+        if len(rid):
             gx = np.maximum(px0[None, :] - boxes.x1[:, None], boxes.x0[:, None] - px1[None, :])
             gy = np.maximum(py0[None, :] - boxes.y1[:, None], boxes.y0[:, None] - py1[None, :])
             touch = (gx <= 0.0) & (gy <= 0.0)
             np.maximum(gx, 0.0, out=gx)
             np.maximum(gy, 0.0, out=gy)
-            d = np.sqrt(gx * gx + gy * gy)
-            np.minimum(known, d.min(axis=1), out=known)
-            if touch.any():
-                k, j = np.nonzero(touch)
-                touching[k] = True
-                pend_k.append(k)
-                pend_p.append(ids[j])
-        if self._queue:
-            self._others.extend(self._queue)
-            self._queue = []
-        if self._others.geoms:
-            m = self._others.measure(boxes)
-            np.minimum(known, m.known, out=known)
-            touching |= m.touching
-            pend_k.append(m.pending[0])
-            pend_p.append(np.array(self._other_ids, dtype=np.intp)[m.pending[1]])
-        k, p = np.concatenate(pend_k), np.concatenate(pend_p)
+            gx *= gx
+            gy *= gy
+            gx += gy
+            np.minimum(known, np.sqrt(gx.min(axis=1)), out=known)
+            k, j = np.nonzero(touch)
+            hk.append(k)
+            hp.append(rid[j])
+        if len(lid):
+            q = len(lid)
+            k = np.repeat(np.arange(n), q)
+            d, hit = box_segment(boxes.x0[k], boxes.y0[k], boxes.x1[k], boxes.y1[k],
+                                 np.tile(ax, n), np.tile(ay, n), np.tile(bx, n), np.tile(by, n))
+            np.minimum(known, d.reshape(n, q).min(axis=1), out=known)
+            h = np.flatnonzero(hit)
+            hk.append(k[h])
+            hp.append(lid[h % q])
+        k, p = np.concatenate(hk), np.concatenate(hp)
+        touching = np.zeros(n, dtype=bool)
         if not len(k):
             return Measured(known, known, known, touching, (_NONE, _NONE))
         order = np.argsort(k, kind="stable")
         k, p = k[order], p[order]
+        touching[k] = True
         hi, lo = known.copy(), known.copy()
         least(hi, k, np.zeros(len(k)))
         least(lo, k, np.full(len(k), -2.0))

@@ -31,7 +31,7 @@ import numpy as np
 import shapely
 from shapely import affinity
 
-from .clearance import ENOUGH, Boxes, Layer, Measured, Placed, gaps, turn
+from .clearance import ENOUGH, Boxes, Layer, Measured, Placed, _starts, gaps, turn
 
 XY = tuple[float, float]
 
@@ -174,14 +174,14 @@ class _Text:
         self.static = (ENOUGH - self.cost) - outside
         self.known, self.hi = np.full(self.n, np.nan), np.full(self.n, np.nan)
         self.pending: dict[int, np.ndarray] = {}
-        self._at, self._best = 0, -math.inf
+        self._at, self._best, self._waves = 0, -math.inf, 0
 
     def record(self, rows: np.ndarray, m: Measured) -> None:
         """Keep the clearances ``m`` of the candidates ``rows``."""
         self.known[rows], self.hi[rows] = m.known, m.hi
         pk, pp = m.pending
         if len(pk):
-            cut = np.flatnonzero(np.r_[True, pk[1:] != pk[:-1], True])
+            cut = np.flatnonzero(np.concatenate((_starts(pk[1:] != pk[:-1]), [True])))
             for i, j in zip(cut[:-1].tolist(), cut[1:].tolist()):
                 self.pending[int(rows[pk[i]])] = pp[i:j]
 
@@ -204,11 +204,15 @@ class _Text:
                 best = h
             i += 1
         self._at, self._best = i, best
-        return self.unmeasured(i, best, WAVE) if i < self.n else _NONE
+        if i == self.n:
+            return _NONE
+        self._waves += 1
+        return self.unmeasured(i, best, WAVE << (self._waves - 1))
 
 
 WAVE = 16
-"""Candidates of a text measured at once (one distance of the sixteen directions)."""
+"""Candidates of a text measured in the first wave (one distance of the sixteen directions); each later wave
+takes twice as many as the one before (fewer waves for a text that needs many)."""
 
 _NONE = np.zeros(0, dtype=np.intp)
 
