@@ -1,56 +1,42 @@
-"""How clear a text box is of what is drawn and placed: exact scores and cheap bounds of them.
+"""How clear text boxes are of what is drawn and placed: many candidate boxes measured in one vectorised pass.
 
-The clearance of a box is its distance (capped at :data:`ENOUGH`) from every obstacle not its own (plus
-the obstacle's allowance) and from every box and leader placed before; a box touching something scores
-minus a measure of how much it covers. :func:`gaps` is that measure, by shapely (GEOS), and decides.
+The clearance of a box is its distance (capped at :data:`ENOUGH`) from every obstacle not its own (plus the
+obstacle's allowance) and from every box and leader placed before; a box touching something scores minus a
+measure of how much it covers (:func:`covering`: 0.3 × the length of a line inside it, or 0.3 × twice the root
+of the area it shares with an area, at most 2).
 
-Measuring many candidate boxes at once (:class:`Measure`) takes every distance from GEOS in one call and
-bounds what a touching box covers by estimates (:mod:`.boxgeom`) that differ from GEOS's values by far
-less than :data:`EPS`; the exact clearance, as :func:`gaps` defines it, is computed on demand. A long
-polyline is cut into pieces (:data:`PIECE` segments) so that only the pieces near a box are measured: its
-distance is the least of its segments', which the pieces share.
+Obstacles are flattened into segments (a point is one of zero length, an area its rings'), and the boxes are
+measured against the segments near them in closed form (:mod:`.boxgeom`: distances, and the length of a
+segment inside a box, so what a box covers of a line string that does not overlap itself is known at once).
+What a box covers of an area, or of a line string that overlaps itself, is left to shapely (GEOS): it is
+bounded (between the allowance less 2 and the allowance) until a choice needs it (:meth:`Measured.exact`).
+The closed forms agree with GEOS's distances to rounding (a few units in the last place).
 
 Examples
 --------
 >>> line = shapely.LineString([(0, 5), (10, 5)])
->>> layer = Layer([line], ["line"], [0.0], split=True)
->>> boxes = shapely.box([4.0, 4.0], [6.0, 4.0], [6.0, 6.0], [7.0, 6.0])     # clear of it, across it
->>> bounds = shapely.bounds(boxes)
->>> m = Measure(boxes, bounds, [(layer, *layer.near(bounds, "pt").pairs([0, 1]))], aligned=True)
->>> [m.exact(k) for k in range(2)]
-[1.0, -0.6]
->>> [m.bounds(k) for k in range(2)]                # the second touches the line: it covers 0 to all
-[(1.0, 1.0), (-2.0, 0.0)]
->>> round(m.refine(1), 6)                          # it covers at least 2 mm of it (less 1e-9)
--0.6
+>>> layer = Layer([line], ["line"], [0.0], index=True)
+>>> boxes = Boxes.aligned(np.array([5.0, 5.0]), np.array([3.5, 5.0]), 2.0, 1.0, np.full(2, layer.code("pt")))
+>>> m = layer.measure(boxes)                      # 1 mm clear of it; across it, covering 2 mm
+>>> m.known.tolist(), m.hi.tolist()
+([1.0, -0.6], [1.0, -0.6])
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable, Iterator, Sequence
+from typing import Sequence
 
 import numpy as np
 import shapely
 
-from .boxgeom import Box, box_overlap, inside_length
+from .boxgeom import box_point, box_segment, inside_length
 
 ENOUGH = 1.6
 """Clearance (paper mm) beyond which a candidate position counts as free."""
 
-EPS = 1e-9
-"""Paper mm by which an estimate may differ from GEOS's value (rounding differs by ~1e-13)."""
-
 REACH = ENOUGH + 1e-6
-"""Pairs are looked at when their bounds come this near: anything farther cannot lower a clearance."""
-
-PIECE = 8
-"""Segments per piece of a long polyline obstacle."""
-
-
-SEGMENTS, BOX, OTHER = 0, 1, 2
-"""Kinds of piece: points and line strings (by their segments), axis-parallel rectangles, anything else
-(measured by GEOS)."""
+"""Pairs are measured when their bounds come this near: anything farther cannot lower a clearance."""
 
 
 def covering(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
@@ -63,7 +49,8 @@ def covering(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
 
 
 def gaps(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
-    """Distances from ``box`` to ``geoms``; for those it touches, minus a measure of how much it covers."""
+    """Distances from ``box`` to ``geoms``; for those it touches, minus a measure of how much it covers (the
+    definition the closed forms follow)."""
     d = shapely.distance(box, geoms)
     hit = d == 0.0
     if hit.any():
@@ -71,272 +58,451 @@ def gaps(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
     return d
 
 
-def _is_box(xy: list[list[float]], bounds: Box) -> bool:
-    """Whether a polygon's exterior ``xy`` (no holes) is an axis-parallel rectangle, as ``shapely.box``
-    makes them: four distinct corners on its bounds, each side parallel to an axis."""
-    x0, y0, x1, y1 = bounds
-    if len(xy) != 5 or x0 == x1 or y0 == y1:
-        return False
-    if any((x != x0 and x != x1) or (y != y0 and y != y1) for x, y in xy):
-        return False
-    return all((xy[i][0] == xy[i + 1][0]) != (xy[i][1] == xy[i + 1][1]) for i in range(4))
+@dataclass(frozen=True)
+class Boxes:
+    """Candidate text boxes (paper mm): centres, half sizes, rotation (as ``shapely.affinity.rotate`` turns
+    them), bounds (of the turned box) and each one's owner code; one array each, of one length.
+
+    Examples
+    --------
+    >>> b = Boxes.aligned(np.array([1.0]), np.array([2.0]), 4.0, 2.0, np.array([0]))
+    >>> b.geom(0).bounds
+    (-1.0, 1.0, 3.0, 3.0)
+    """
+
+    cx: np.ndarray
+    cy: np.ndarray
+    hw: np.ndarray
+    hh: np.ndarray
+    cos: np.ndarray
+    sin: np.ndarray
+    x0: np.ndarray
+    y0: np.ndarray
+    x1: np.ndarray
+    y1: np.ndarray
+    owner: np.ndarray
+
+    @staticmethod
+    def aligned(cx: np.ndarray, cy: np.ndarray, width: float, height: float, owner: np.ndarray) -> Boxes:
+        """Axis-parallel boxes: ``shapely.box(cx - w/2, cy - h/2, cx + w/2, cy + h/2)``'s coordinates."""
+        hw, hh = np.full(len(cx), width / 2), np.full(len(cx), height / 2)
+        return Boxes(cx, cy, hw, hh, np.ones(len(cx)), np.zeros(len(cx)), cx - hw, cy - hh, cx + hw, cy + hh, owner)
+
+    @staticmethod
+    def turned_by(cx: np.ndarray, cy: np.ndarray, width: float, height: float, angle: float,
+                  owner: np.ndarray) -> Boxes:
+        """Boxes turned by ``angle`` degrees about their centres (:func:`turn`)."""
+        if not angle:
+            return Boxes.aligned(cx, cy, width, height, owner)
+        c, s = turn(angle)
+        hw, hh = width / 2, height / 2
+        ex, ey = abs(c) * hw + abs(s) * hh, abs(s) * hw + abs(c) * hh
+        n = len(cx)
+        return Boxes(cx, cy, np.full(n, hw), np.full(n, hh), np.full(n, c), np.full(n, s),
+                     cx - ex, cy - ey, cx + ex, cy + ey, owner)
+
+    @staticmethod
+    def concat(parts: Sequence[Boxes]) -> Boxes:
+        """One set of all ``parts``' boxes, in order."""
+        return Boxes(*(np.concatenate([getattr(p, f) for p in parts]) for f in Boxes.__dataclass_fields__))
+
+    def __len__(self) -> int:
+        return len(self.cx)
+
+    def take(self, rows: np.ndarray) -> Boxes:
+        """The boxes ``rows``."""
+        return Boxes(*(getattr(self, f)[rows] for f in Boxes.__dataclass_fields__))
+
+    @property
+    def turned(self) -> np.ndarray:
+        """Which boxes are rotated."""
+        return self.sin != 0.0
+
+    def geom(self, k: int) -> shapely.Geometry:
+        """Box ``k`` as a shapely polygon (for what GEOS measures)."""
+        if not self.sin[k]:
+            return shapely.box(float(self.x0[k]), float(self.y0[k]), float(self.x1[k]), float(self.y1[k]))
+        c, s, w, h = float(self.cos[k]), float(self.sin[k]), float(self.hw[k]), float(self.hh[k])
+        x, y = float(self.cx[k]), float(self.cy[k])
+        return shapely.Polygon([(x + c * u - s * v, y + s * u + c * v) for u, v in ((w, -h), (w, h), (-w, h), (-w, -h))])
+
+    def to_point(self, px: float, py: float) -> np.ndarray:
+        """Distance from each box to the point (a turned box measured in its own frame)."""
+        if not self.turned.any():
+            return box_point(self.x0, self.y0, self.x1, self.y1, px, py)
+        ux, uy = px - self.cx, py - self.cy
+        return box_point(-self.hw, -self.hh, self.hw, self.hh, ux * self.cos + uy * self.sin, uy * self.cos - ux * self.sin)
 
 
-@dataclass(frozen=True, slots=True)
-class Piece:
-    """A geometry to measure, or a piece of a long line string: the geometry, the index of the whole, its
-    kind, bounds and (points and line strings) vertices."""
+def turn(angle: float) -> tuple[float, float]:
+    """Cosine and sine of a rotation by ``angle`` degrees, as ``shapely.affinity.rotate`` computes them."""
+    a = angle * math.pi / 180.0
+    c, s = math.cos(a), math.sin(a)
+    return (0.0 if abs(c) < 2.5e-16 else c), (0.0 if abs(s) < 2.5e-16 else s)
 
-    geom: shapely.Geometry
-    parent: int
-    kind: int
-    bounds: Box
-    xy: np.ndarray | None = None
+
+def pair_distance(boxes: Boxes, k: np.ndarray, ax: np.ndarray, ay: np.ndarray, bx: np.ndarray, by: np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Distance between box ``k[i]`` and segment i (ends a, b), whether they meet, and the length of the
+    segment inside the box (0 where they miss). A turned box is measured in its own frame (the segment turned
+    back about its centre)."""
+    x0, y0, x1, y1 = boxes.x0[k], boxes.y0[k], boxes.x1[k], boxes.y1[k]
+    turned = boxes.sin[k] != 0.0
+    if turned.any():
+        t = np.flatnonzero(turned)
+        kt = k[t]
+        c, s, cx, cy = boxes.cos[kt], boxes.sin[kt], boxes.cx[kt], boxes.cy[kt]
+        ax, ay, bx, by = ax.copy(), ay.copy(), bx.copy(), by.copy()
+        x0[t], y0[t], x1[t], y1[t] = -boxes.hw[kt], -boxes.hh[kt], boxes.hw[kt], boxes.hh[kt]
+        for px, py in ((ax, ay), (bx, by)):
+            ux, uy = px[t] - cx, py[t] - cy
+            px[t], py[t] = ux * c + uy * s, uy * c - ux * s
+    d, hit = box_segment(x0, y0, x1, y1, ax, ay, bx, by)
+    inside = np.zeros(len(d))
+    h = np.flatnonzero(hit)
+    if len(h):
+        inside[h] = inside_length(x0[h], y0[h], x1[h], y1[h], ax[h], ay[h], bx[h], by[h])
+    return d, hit, inside
+
+
+@dataclass(frozen=True)
+class Measured:
+    """The clearances of some boxes from one layer: ``known`` what the closed forms give (the least of the
+    distances plus allowances, of what a box covers of simple line strings, and :data:`ENOUGH`); ``hi`` and
+    ``lo`` bounds that also hold what it covers of the geometries left to GEOS (``pending``: box, geometry
+    pairs, by box); ``touching`` whether a box meets anything of the layer."""
+
+    known: np.ndarray
+    hi: np.ndarray
+    lo: np.ndarray
+    touching: np.ndarray
+    pending: tuple[np.ndarray, np.ndarray]
+
+    def pending_of(self, k: int) -> np.ndarray:
+        """The geometries (indices) box ``k`` touches whose covering GEOS computes."""
+        rows, parents = self.pending
+        lo, hi = np.searchsorted(rows, [k, k + 1])
+        return parents[lo:hi]
+
+    def part(self, start: int, stop: int) -> Measured:
+        """The clearances of boxes ``start`` to ``stop``, numbered from 0."""
+        rows, parents = self.pending
+        lo, hi = np.searchsorted(rows, [start, stop])
+        return Measured(self.known[start:stop], self.hi[start:stop], self.lo[start:stop], self.touching[start:stop],
+                        (rows[lo:hi] - start, parents[lo:hi]))
+
+
+def _diagonals(x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
+    """Line strings from (x0, y0) to (x1, y1): their envelopes are what ``shapely.STRtree`` indexes and
+    queries, and they are made faster than boxes."""
+    return shapely.linestrings(np.stack([x0, y0, x1, y1], axis=1).reshape(-1, 2, 2))
+
+
+def _starts(changed: np.ndarray) -> np.ndarray:
+    """Where runs begin, from where each element differs from the one before: ``[True, *changed]``."""
+    out = np.empty(len(changed) + 1, dtype=bool)
+    out[0] = True
+    out[1:] = changed
+    return out
+
+
+def least(out: np.ndarray, rows: np.ndarray, values: np.ndarray) -> None:
+    """``out[r] = min(out[r], values where rows == r)`` for rows sorted ascending (``np.minimum.at``, faster)."""
+    if not len(rows):
+        return
+    start = np.flatnonzero(_starts(rows[1:] != rows[:-1]))
+    r = rows[start]
+    out[r] = np.minimum(out[r], np.minimum.reduceat(values, start))
+
+
+_NONE = np.zeros(0, dtype=np.intp)
 
 
 class Layer:
-    """Geometries prepared for measuring: their owners, allowances and bounds, and their pieces (a long
-    line string cut when ``split``). Geometries may be appended (what is placed, one text after another).
+    """Geometries flattened into segments for measuring: their owners (a box does not keep clear of its own
+    step's), allowances (added to their distances), bounds and whether each is an area. Geometries may be
+    appended (what is placed, one text after another): a layer built with ``index`` measures many boxes through
+    a tree of its segments, one without measures a few boxes against all it holds near
+    them.
 
     Parameters
     ----------
     geoms : sequence of shapely geometries
     owners : sequence of str, optional
-        The step that drew each (its own label does not keep clear of it).
+        The step that drew each.
     allow : sequence of float, optional
         Added to each one's distance (0 by default).
-    split : bool
-        Cut long line strings into pieces of :data:`PIECE` segments and index the pieces in a tree.
+    index : bool
+        Index the segments in a tree (geometries appended later are not).
     """
 
     def __init__(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
-                 allow: Sequence[float] | None = None, split: bool = False):
-        self._split = split
+                 allow: Sequence[float] | None = None, index: bool = False):
         self.geoms: list[shapely.Geometry] = []
-        self.simple: list[bool] = []
-        self.pieces: list[Piece] = []
-        self._owners: list[str] = []
-        self._allow: list[float] = []
-        self._bounds: list[Box] = []
+        self.codes: dict[str, int] = {}
+        self._parts: list[tuple[np.ndarray, ...]] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
-        self._segments: dict[int, list[list[float]]] = {}
+        self._simple: dict[int, bool] = {}
         self.extend(geoms, owners, allow)
-        self.tree = shapely.STRtree(self.arrays()[0]) if split and self.pieces else None
+        self.tree = None
+        if index and len(self.arrays()[0]):
+            self.tree = shapely.STRtree(_diagonals(*self.arrays()[:4]))
 
-    def append(self, geom: shapely.Geometry, owner: str = "", allow: float = 0.0) -> None:
-        """Add a geometry (not to the tree, which indexes those of the constructor only)."""
-        self.extend([geom], [owner], [allow])
+    def code(self, owner: str | None) -> int:
+        """The code of an owner's name (-1 for none or one that drew nothing here)."""
+        return -1 if owner is None else self.codes.get(owner, -1)
+
+    def append(self, geom: shapely.Geometry) -> None:
+        """Add a geometry (not to the tree)."""
+        self.extend([geom])
 
     def extend(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
                allow: Sequence[float] | None = None) -> None:
-        """Add geometries (not to the tree, which indexes those of the constructor only)."""
+        """Add geometries (not to the tree)."""
         n0, n = len(self.geoms), len(geoms)
+        if not n:
+            return
         g = np.empty(n, dtype=object)
         g[:] = list(geoms)
         self.geoms += g.tolist()
-        self._owners += list(owners) if owners is not None else [""] * n
-        self._allow += [float(a) for a in allow] if allow is not None else [0.0] * n
+        codes = [self.codes.setdefault(o, len(self.codes)) for o in owners] if owners is not None else [-1] * n
+        allowed = np.array(allow, dtype=float) if allow is not None else np.zeros(n)
+        parts, whole = shapely.get_parts(g, return_index=True)
+        areal = shapely.get_dimensions(parts) == 2
+        lines, owner = parts, whole
+        if areal.any():                                         # an area by its rings
+            rings, of = shapely.get_rings(parts[areal], return_index=True)
+            lines = np.concatenate([parts[~areal], rings])
+            owner = np.concatenate([whole[~areal], whole[areal][of]])
+        xy, which = shapely.get_coordinates(lines, return_index=True)
+        single = (np.bincount(which, minlength=len(lines)) == 1)[which]     # a point: a segment of zero length
+        same = which[1:] == which[:-1]
+        a = np.concatenate([xy[:-1][same], xy[single]])
+        b = np.concatenate([xy[1:][same], xy[single]])
+        parent = np.concatenate([owner[which[1:][same]], owner[which[single]]]) + n0
+        types = shapely.get_type_id(g)
+        simple = np.where((types == 0) | ((types == 1) & (shapely.get_num_coordinates(g) <= 2)), 1, -1)
+        simple[shapely.get_dimensions(g) == 2] = 0              # an area: what a box covers of it by GEOS
+        simple[(types > 1) & (types != 3)] = 0
+        self._parts.append((a[:, 0].copy(), a[:, 1].copy(), b[:, 0].copy(), b[:, 1].copy(), parent,
+                            np.array(codes, dtype=np.intp), allowed, shapely.bounds(g).reshape(-1, 4),
+                            shapely.get_dimensions(g) == 2, simple.astype(np.int8)))
         self._arrays = None
-        types = shapely.get_type_id(g).tolist()
-        bounds = shapely.bounds(g).reshape(-1, 4)
-        self._bounds += [tuple(b) for b in bounds.tolist()]
-        xy, which = shapely.get_coordinates(g, return_index=True)
-        count = np.bincount(which, minlength=n)
-        start = (np.cumsum(count) - count).tolist()
-        count = count.tolist()
-        simple = np.ones(n, dtype=bool)
-        knotty = np.nonzero((np.array(types) == 1) & (np.array(count) > 2))[0]
-        simple[knotty] = shapely.is_simple(g[knotty])
-        self.simple += simple.tolist()
-        holes = shapely.get_num_interior_rings(g).tolist()
-        cut: list[np.ndarray] = []               # the parts of long line strings, made in one call
-        for i in range(n):
-            c, t = count[i], types[i]
-            if not c:
-                continue                         # empty: nothing to keep clear of
-            coords = xy[start[i]:start[i] + c]
-            b = tuple(bounds[i].tolist())
-            if t not in (0, 1):
-                rect = t == 3 and holes[i] == 0 and _is_box(coords.tolist(), b)
-                self.pieces.append(Piece(g[i], n0 + i, BOX if rect else OTHER, b))
-            elif c == 1:
-                self.pieces.append(Piece(g[i], n0 + i, SEGMENTS, b, np.vstack([coords, coords])))
-            elif self._split and c > 2 * PIECE + 1:
-                for j in range(0, c - 1, PIECE):
-                    part = coords[j:j + PIECE + 1]
-                    cut.append(part)
-                    self.pieces.append(Piece(None, n0 + i, SEGMENTS, b, part))
-            else:
-                self.pieces.append(Piece(g[i], n0 + i, SEGMENTS, b, coords))
-        if cut:
-            made = shapely.linestrings(np.vstack(cut), indices=np.repeat(np.arange(len(cut)), [len(p) for p in cut]))
-            made_bounds = shapely.bounds(made).tolist()
-            k = 0
-            for j, p in enumerate(self.pieces):
-                if p.geom is None:
-                    self.pieces[j] = Piece(made[k], p.parent, SEGMENTS, tuple(made_bounds[k]), p.xy)
-                    k += 1
 
     def arrays(self) -> tuple[np.ndarray, ...]:
-        """The pieces' geometries, their wholes' indices, the wholes' owners, allowances and bounds, and the
-        pieces' bounds, as arrays."""
+        """The segments' ends (ax, ay, bx, by) and geometry, and the geometries' owner codes, allowances, bounds,
+        whether each is an area, and whether each is a simple line string or point (1), not (0) or not yet
+        known (-1)."""
         if self._arrays is None:
-            geoms = np.empty(len(self.pieces), dtype=object)
-            geoms[:] = [p.geom for p in self.pieces]
-            self._arrays = (geoms, np.array([p.parent for p in self.pieces], dtype=np.intp),
-                            np.array(self._owners, dtype=object), np.array(self._allow, dtype=float),
-                            np.array(self._bounds, dtype=float).reshape(-1, 4),
-                            np.array([p.bounds for p in self.pieces], dtype=float).reshape(-1, 4))
+            if not self._parts:
+                z = np.zeros(0)
+                self._arrays = (z, z, z, z, _NONE, _NONE, z, np.zeros((0, 4)), np.zeros(0, dtype=bool),
+                                np.zeros(0, dtype=np.int8))
+            else:
+                self._arrays = tuple(np.concatenate(c) for c in zip(*self._parts))
+                self._parts = [self._arrays]
         return self._arrays
 
-    def segments(self, piece: int) -> list[list[float]]:
-        """The segments [ax, ay, bx, by] of a point or line-string piece (a point is one of zero length)."""
-        out = self._segments.get(piece)
-        if out is None:
-            xy = self.pieces[piece].xy
-            assert xy is not None
-            out = self._segments[piece] = np.hstack([xy[:-1], xy[1:]]).tolist()
-        return out
+    def _simple_of(self, parents: np.ndarray) -> np.ndarray:
+        """Whether each geometry of ``parents`` is simple (what a box covers of it is the sum of what it covers of
+        its segments): points and line strings that do not overlap themselves."""
+        simple = self.arrays()[9]
+        unknown = np.unique(parents[simple[parents] < 0])
+        if len(unknown):
+            geoms = np.empty(len(unknown), dtype=object)
+            geoms[:] = [self.geoms[i] for i in unknown.tolist()]
+            simple[unknown] = shapely.is_simple(geoms)
+        return simple[parents] == 1
 
-    def near(self, bounds: np.ndarray, owner: str | None) -> Nearby:
-        """The pieces that may come within :data:`REACH` of each of the boxes ``bounds`` (their bounds'
-        distance, plus the allowance, does); with an ``owner``, only pieces of geometries whose bounds come
-        within :data:`ENOUGH` (the envelope test of ``STRtree.query``) and not drawn by it."""
-        if not self.pieces or not len(bounds):
-            return Nearby(np.zeros(0, dtype=np.intp), np.zeros((len(bounds), 0), dtype=bool))
-        _, parent, owners, allow, wb, pb = self.arrays()
-        x0, y0, x1, y1 = (v[:, None] for v in bounds.T)
+    def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
+        """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
+        tree, or all segments of the geometries near all the boxes), not of a box's own step."""
+        ax, ay, bx, by, parent, owner, _, bounds, _, _ = self.arrays()
+        if not len(ax) or not len(boxes):
+            return _NONE, _NONE
         if self.tree is not None:
-            local = np.sort(self.tree.query(shapely.box(x0.min() - REACH, y0.min() - REACH,
-                                                        x1.max() + REACH, y1.max() + REACH)))
+            k, s = self.tree.query(_diagonals(boxes.x0 - REACH, boxes.y0 - REACH, boxes.x1 + REACH, boxes.y1 + REACH))
         else:
-            local = np.arange(len(self.pieces))
-        idx = parent[local]
-        b = pb[local]
-        gx = np.maximum(np.maximum(b[:, 0] - x1, x0 - b[:, 2]), 0.0)
-        gy = np.maximum(np.maximum(b[:, 1] - y1, y0 - b[:, 3]), 0.0)
-        mask = np.hypot(gx, gy) + allow[idx] <= REACH    # the bounds' distance is at most the distance
-        if owner is not None:
-            ob = wb[idx]
-            mask &= (owners[idx] != owner) & ~((ob[:, 0] > x1 + ENOUGH) | (ob[:, 2] < x0 - ENOUGH)
-                                               | (ob[:, 1] > y1 + ENOUGH) | (ob[:, 3] < y0 - ENOUGH))
-        return Nearby(local, mask)
+            x0, y0 = boxes.x0.min() - REACH, boxes.y0.min() - REACH
+            x1, y1 = boxes.x1.max() + REACH, boxes.y1.max() + REACH
+            near = (bounds[:, 0] <= x1) & (x0 <= bounds[:, 2]) & (bounds[:, 1] <= y1) & (y0 <= bounds[:, 3])
+            s1 = np.flatnonzero(near[parent])
+            if not len(s1):
+                return _NONE, _NONE
+            k, s = np.repeat(np.arange(len(boxes)), len(s1)), np.tile(s1, len(boxes))
+        o = owner[parent[s]]
+        keep = (o != boxes.owner[k]) | (o < 0)
+        return k[keep], s[keep]
 
-
-@dataclass(frozen=True)
-class Nearby:
-    """The pieces (of a layer) that may come near each of some boxes: ``mask[i, j]`` for box ``i`` and
-    piece ``local[j]``."""
-
-    local: np.ndarray
-    mask: np.ndarray
-
-    def pairs(self, rows: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
-        """(row in ``rows``, piece) pairs of the boxes ``rows``, rows numbered from 0 in that order."""
-        r, j = np.nonzero(self.mask[rows])
-        return r, self.local[j]
-
-
-class Measure:
-    """The clearances of a few candidate boxes: bounds of each at once, tighter bounds and the exact one
-    on demand.
-
-    Every distance is GEOS's (one vectorised call per layer), so a box that touches nothing has its exact
-    clearance at once. What a touching box covers (an intersection, the costly part) is bounded instead,
-    by 0 and all at first, then (:meth:`refine`) by the length of a line string inside the box shrunk and
-    grown by :data:`EPS` (the longest single segment's for a line string that overlaps itself) or by the
-    overlap of two rectangles; it is computed only for a box whose exact clearance is asked for.
-
-    Parameters
-    ----------
-    boxes : array of shapely polygons
-    bounds : array (n, 4)
-        Their bounds.
-    near : sequence of (Layer, rows, pieces)
-        For each layer (what is drawn, what was placed), the (box, piece) pairs that may come near
-        (:meth:`Layer.near`).
-    aligned : bool
-        The boxes are axis-parallel rectangles (their bounds); otherwise :meth:`refine` does not tighten.
-    """
-
-    def __init__(self, boxes: np.ndarray, bounds: np.ndarray,
-                 near: Sequence[tuple[Layer, np.ndarray, np.ndarray]], aligned: bool):
+    def measure(self, boxes: Boxes) -> Measured:
+        """The clearances of ``boxes`` from this layer's geometries (not those of a box's own step)."""
+        ax, ay, bx, by, parent, _, allow, _, _, _ = self.arrays()
         n = len(boxes)
-        self._boxes, self._bounds, self._aligned = boxes, bounds, aligned
-        self._base = np.full(n, ENOUGH)          # the least distance plus allowance (touching ones at 0)
-        self._lo = self._base
-        self._touching: list[tuple[Layer, np.ndarray, np.ndarray]] = []
-        for layer, rows, pieces in near:
-            if not len(rows):
-                continue
-            geoms, parent, _, allow, _, _ = layer.arrays()
-            d = shapely.distance(boxes[rows], geoms[pieces])
-            np.minimum.at(self._base, rows, d + allow[parent[pieces]])
-            touch = d == 0.0
-            if touch.any():
-                self._touching.append((layer, rows[touch], pieces[touch]))
-        if self._touching:
-            self._lo = self._base.copy()
-            for layer, rows, pieces in self._touching:          # what it covers is at most 2
-                _, parent, _, allow, _, _ = layer.arrays()
-                np.minimum.at(self._lo, rows, allow[parent[pieces]] - 2.0)
+        k, s = self.pairs(boxes)
+        d, hit, inside = pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s])
+        p = parent[s]
+        known = np.full(n, ENOUGH)
+        least(known, k, d + allow[p])
+        touching = np.zeros(n, dtype=bool)
+        h = np.flatnonzero(hit)
+        touching[k[h]] = True
+        hk, hp, hin = k[h], p[h], inside[h]
+        ck, cp = self._contained(boxes)                        # boxes inside an area, clear of its rings
+        if len(ck):
+            touching[ck] = True
+            hk, hp, hin = np.concatenate([hk, ck]), np.concatenate([hp, cp]), np.concatenate([hin, np.zeros(len(ck))])
+        if not len(hk):
+            return Measured(known, known, known, touching, (_NONE, _NONE))
+        order = np.argsort(hk * len(self.geoms) + hp, kind="stable")
+        hk, hp, hin = hk[order], hp[order], hin[order]
+        first = np.flatnonzero(_starts((hk[1:] != hk[:-1]) | (hp[1:] != hp[:-1])))
+        gk, gp = hk[first], hp[first]
+        covered = np.add.reduceat(hin, first)
+        simple = self._simple_of(gp)
+        least(known, gk[simple], allow[gp[simple]] - np.minimum(2.0, 0.3 * covered[simple]))
+        pend_k, pend_p = gk[~simple], gp[~simple]
+        if not len(pend_k):
+            return Measured(known, known, known, touching, (_NONE, _NONE))
+        hi, lo = known.copy(), known.copy()
+        least(hi, pend_k, allow[pend_p])
+        least(lo, pend_k, allow[pend_p] - 2.0)
+        return Measured(known, hi, lo, touching, (pend_k, pend_p))
 
-    def bounds(self, k: int) -> tuple[float, float]:
-        """A lower and an upper bound of the clearance of box ``k`` (equal when it touches nothing)."""
-        return float(self._lo[k]), float(self._base[k])
+    def _contained(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
+        """(box, area) pairs, sorted by box, where the box lies within the area's bounds and meets the area (by
+        GEOS): a box wholly inside an area meets none of its rings."""
+        _, _, _, _, _, owner, _, bounds, areal, _ = self.arrays()
+        if not areal.any() or not len(boxes):
+            return _NONE, _NONE
+        w, h = (boxes.x1 - boxes.x0).min(), (boxes.y1 - boxes.y0).min()
+        a = np.flatnonzero(areal & (bounds[:, 2] - bounds[:, 0] >= w) & (bounds[:, 3] - bounds[:, 1] >= h))
+        if not len(a):
+            return _NONE, _NONE
+        ab = bounds[a]
+        within = ((ab[None, :, 0] <= boxes.x0[:, None]) & (ab[None, :, 1] <= boxes.y0[:, None])
+                  & (boxes.x1[:, None] <= ab[None, :, 2]) & (boxes.y1[:, None] <= ab[None, :, 3]))
+        k, j = np.nonzero(within)
+        p = a[j]
+        keep = (owner[p] != boxes.owner[k]) | (owner[p] < 0)
+        k, p = k[keep], p[keep]
+        if not len(k):
+            return _NONE, _NONE
+        geoms = np.empty(len(k), dtype=object)
+        geoms[:] = [self.geoms[i] for i in p.tolist()]
+        meets = shapely.intersects(np.array([boxes.geom(i) for i in k.tolist()], dtype=object), geoms)
+        return k[meets], p[meets]
 
-    def refine(self, k: int, enough: Callable[[float], bool] = lambda hi: False) -> float:
-        """A tighter upper bound of the clearance of box ``k``, from lower bounds of what it covers of each
-        geometry it touches; measured until ``enough(bound)`` holds."""
-        hi = float(self._base[k])
-        if not self._aligned or enough(hi):
-            return hi
-        box = tuple(self._bounds[k].tolist())
-        for layer, rows, pieces in self._touching:
-            for parent, covered in _covered(layer, pieces[rows == k].tolist(), box):
-                hi = min(hi, layer._allow[parent] - min(2.0, 0.3 * covered))
-                if enough(hi):
-                    return hi
-        return hi
-
-    def exact(self, k: int) -> float:
-        """The clearance of box ``k``: at most :data:`ENOUGH`, the least gap of :func:`gaps` (plus the
-        obstacle's allowance) over the obstacles in reach not its own and every placed geometry."""
-        best = float(self._base[k])
-        for layer, rows, pieces in self._touching:
-            _, parent, _, allow, _, _ = layer.arrays()
-            hit = np.unique(parent[pieces[rows == k]])
-            if len(hit):
-                geoms = np.empty(len(hit), dtype=object)
-                geoms[:] = [layer.geoms[h] for h in hit.tolist()]
-                best = min(best, float(np.min(covering(self._boxes[k], geoms) + allow[hit])))
-        return best
+    def exact(self, box: shapely.Geometry, parents: np.ndarray) -> float:
+        """The least of :func:`covering` plus allowance over the geometries ``parents`` (all touching ``box``)."""
+        if not len(parents):
+            return math.inf
+        allow = self.arrays()[6]
+        geoms = np.empty(len(parents), dtype=object)
+        geoms[:] = [self.geoms[i] for i in parents.tolist()]
+        return float(np.min(covering(box, geoms) + allow[parents]))
 
 
-def _covered(layer: Layer, pieces: list[int], box: Box) -> Iterator[tuple[int, float]]:
-    """At least what the axis-parallel ``box`` covers of each geometry whose ``pieces`` touch it, growing:
-    the length of a line string inside the box shrunk by :data:`EPS` (for one that overlaps itself, its
-    longest single segment's), summed a segment at a time; twice the root of the overlap of a rectangle;
-    0 for anything else. A geometry may be yielded several times, each time with more."""
-    x0, y0, x1, y1 = box
-    inner = (x0 + EPS, y0 + EPS, x1 - EPS, y1 - EPS)
-    sums: dict[int, float] = {}
-    for i in pieces:
-        piece = layer.pieces[i]
-        if piece.kind == BOX:
-            ox, oy = box_overlap(box, piece.bounds)
-            yield piece.parent, (2.0 * math.sqrt((ox - EPS) * (oy - EPS)) if ox > EPS and oy > EPS else 0.0)
-        elif piece.kind == OTHER:
-            yield piece.parent, 0.0
+class Placed:
+    """What was placed, one text after another: axis-parallel text boxes and leaders (two-point line strings),
+    measured against axis-parallel candidates densely (rectangle to rectangle, box to segment), and anything
+    else (a turned box: then everything, as segments of a :class:`Layer`). What a box covers of a placed
+    geometry is left to GEOS (such a box is as bad as one outside the frame)."""
+
+    def __init__(self) -> None:
+        self.geoms: list[shapely.Geometry] = []
+        self._rects: list[tuple[float, ...]] = []
+        self._rect_ids: list[int] = []
+        self._leaders: list[tuple[float, ...]] = []
+        self._leader_ids: list[int] = []
+        self._general = False
+        self._arrays: tuple[np.ndarray, ...] | None = None
+
+    def __len__(self) -> int:
+        return len(self.geoms)
+
+    def append(self, geom: shapely.Geometry) -> None:
+        """Record a placed geometry."""
+        rect = _rect_of(geom)
+        if rect is not None:
+            self._rects.append(rect)
+            self._rect_ids.append(len(self.geoms))
+        elif shapely.get_type_id(geom) == 1 and shapely.get_num_coordinates(geom) == 2:
+            self._leaders.append(tuple(shapely.get_coordinates(geom).ravel().tolist()))
+            self._leader_ids.append(len(self.geoms))
         else:
-            simple = layer.simple[piece.parent]
-            total = sums.get(piece.parent, 0.0)
-            for seg in layer.segments(i):
-                ax, ay, bx, by = seg
-                if (ax < x0 and bx < x0) or (ax > x1 and bx > x1) or (ay < y0 and by < y0) or (ay > y1 and by > y1):
-                    continue                        # wholly beside the box
-                length = inside_length(seg, inner)
-                if length > 0.0:
-                    total = total + length if simple else max(total, length)
-                    yield piece.parent, max(total - EPS, 0.0)
-            sums[piece.parent] = total
+            self._general = True
+        self.geoms.append(geom)
+        self._arrays = None
+
+    def _dense(self) -> tuple[np.ndarray, ...]:
+        if self._arrays is None:
+            r = np.array(self._rects, dtype=float).reshape(-1, 4).T.copy()
+            g = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
+            self._arrays = (*r, np.array(self._rect_ids, dtype=np.intp), *g, np.array(self._leader_ids, dtype=np.intp))
+        return self._arrays
+
+    def measure(self, boxes: Boxes) -> Measured:
+        """The clearances of ``boxes`` from everything placed (pending: box, index into :attr:`geoms`)."""
+        if self._general or boxes.turned.any():                # rare: all of it as segments
+            return Layer(self.geoms).measure(boxes)
+        n = len(boxes)
+        known = np.full(n, ENOUGH)
+        hk, hp = [_NONE], [_NONE]
+        px0, py0, px1, py1, rid, ax, ay, bx, by, lid = self._dense()
+        if len(rid):
+            gx = np.maximum(px0[None, :] - boxes.x1[:, None], boxes.x0[:, None] - px1[None, :])
+            gy = np.maximum(py0[None, :] - boxes.y1[:, None], boxes.y0[:, None] - py1[None, :])
+            touch = (gx <= 0.0) & (gy <= 0.0)
+            np.maximum(gx, 0.0, out=gx)
+            np.maximum(gy, 0.0, out=gy)
+            gx *= gx
+            gy *= gy
+            gx += gy
+            np.minimum(known, np.sqrt(gx.min(axis=1)), out=known)
+            k, j = np.nonzero(touch)
+            hk.append(k)
+            hp.append(rid[j])
+        if len(lid):
+            q = len(lid)
+            k = np.repeat(np.arange(n), q)
+            d, hit = box_segment(boxes.x0[k], boxes.y0[k], boxes.x1[k], boxes.y1[k],
+                                 np.tile(ax, n), np.tile(ay, n), np.tile(bx, n), np.tile(by, n))
+            np.minimum(known, d.reshape(n, q).min(axis=1), out=known)
+            h = np.flatnonzero(hit)
+            hk.append(k[h])
+            hp.append(lid[h % q])
+        k, p = np.concatenate(hk), np.concatenate(hp)
+        touching = np.zeros(n, dtype=bool)
+        if not len(k):
+            return Measured(known, known, known, touching, (_NONE, _NONE))
+        order = np.argsort(k, kind="stable")
+        k, p = k[order], p[order]
+        touching[k] = True
+        hi, lo = known.copy(), known.copy()
+        least(hi, k, np.zeros(len(k)))
+        least(lo, k, np.full(len(k), -2.0))
+        return Measured(known, hi, lo, touching, (k, p))
+
+    def exact(self, box: shapely.Geometry, parents: np.ndarray) -> float:
+        """The least of :func:`covering` over the placed geometries ``parents`` (all touching ``box``)."""
+        if not len(parents):
+            return math.inf
+        geoms = np.empty(len(parents), dtype=object)
+        geoms[:] = [self.geoms[i] for i in parents.tolist()]
+        return float(np.min(covering(box, geoms)))
+
+
+def _rect_of(geom: shapely.Geometry) -> tuple[float, float, float, float] | None:
+    """The bounds of an axis-parallel rectangle as ``shapely.box`` makes them (one ring of four distinct corners
+    on its bounds, each side parallel to an axis); None for anything else."""
+    if shapely.get_type_id(geom) != 3 or shapely.get_num_interior_rings(geom):
+        return None
+    xy = shapely.get_coordinates(geom).tolist()
+    x0, y0, x1, y1 = shapely.bounds(geom).tolist()
+    if len(xy) != 5 or x0 == x1 or y0 == y1:
+        return None
+    if any((x != x0 and x != x1) or (y != y0 and y != y1) for x, y in xy):
+        return None
+    if not all((xy[i][0] == xy[i + 1][0]) != (xy[i][1] == xy[i + 1][1]) for i in range(4)):
+        return None
+    return x0, y0, x1, y1

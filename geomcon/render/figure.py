@@ -335,7 +335,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
     texts: list[Any] = []
-    _outward(groups, pending)
+    _outward(groups, pending)                   # before measuring: it replaces a row's requests
+    placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts])
     fanned = _fanned(placer, groups, pending)
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
@@ -356,7 +357,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
-                               or nearer_rival(t.request, np.array([box]))[0]):
+                               or nearer_rival(t.request, [centre])[0]):
                 t = _led(t)             # a row's number with no room by its point: farther, with a leader
                 centre, _ = placer.best(t.request, g.key)
                 box = t.request.box(*centre)

@@ -6,11 +6,12 @@ markers, texts and the labels placed before wins. Clearances above :data:`ENOUGH
 label with room to spare takes its preferred direction; small penalties favour near and preferred
 positions among equally free ones.
 
-Scoring is bounded (:mod:`.clearance`): the candidates of a text are measured in batches, which gives
-bounds of each one's score at once, and only what decides the choice is scored exactly (by shapely, as
-:meth:`Placer.clearance` defines the score) — a candidate whose bound cannot beat the best so far is
-passed over, and so is every candidate before one whose lower bound beats all their upper bounds. The
-choice and its score are those of scoring every candidate in turn.
+Scoring is vectorised (:mod:`.clearance`): :meth:`Placer.prepare` measures every candidate of every text of a
+figure against the fixed drawing in one pass, and each text then measures its candidates against the few
+texts and leaders placed before it; only what a candidate covers of an area is left to shapely, computed for
+the candidates whose choice it decides. The candidates are tried in order, one replacing the best so far
+when its score is higher by more than 1e-12: the choice of scoring every candidate in turn by shapely (the
+closed forms agree with GEOS to rounding).
 
 Examples
 --------
@@ -22,7 +23,6 @@ True
 from __future__ import annotations
 
 import functools
-import itertools
 import math
 from dataclasses import dataclass
 from typing import Sequence
@@ -31,7 +31,7 @@ import numpy as np
 import shapely
 from shapely import affinity
 
-from .clearance import ENOUGH, Layer, Measure, Nearby
+from .clearance import ENOUGH, Boxes, Layer, Measured, Placed, _starts, gaps, turn
 
 XY = tuple[float, float]
 
@@ -130,19 +130,91 @@ def half_extent(ux: float, uy: float, w: float, h: float) -> float:
     return min(tx, ty)
 
 
-def nearer_rival(req: Request, boxes: np.ndarray) -> list[bool]:
-    """Whether each of ``boxes`` lies nearer one of ``req.rivals`` than its anchor (a label read as
-    another point's).
+def nearer_rival(req: Request, centres: Sequence[XY]) -> list[bool]:
+    """Whether the box of ``req`` centred at each of ``centres`` lies nearer one of ``req.rivals`` than its
+    anchor (a label read as another point's).
 
     >>> r = Request((0.0, 0.0), 2.0, 2.0, 0.5, 0.0, rivals=((6.0, 0.0),))
-    >>> nearer_rival(r, shapely.box([1.0, 4.0], [-1.0, -1.0], [3.0, 5.5], [1.0, 1.0]))
+    >>> nearer_rival(r, [(2.0, 0.0), (4.75, 0.0)])
     [False, True]
     """
-    if not req.rivals or not len(boxes):
-        return [False] * len(boxes)
-    own = shapely.distance(boxes, shapely.Point(req.anchor))
-    other = np.min(shapely.distance(np.asarray(boxes)[:, None], shapely.points(np.array(req.rivals))[None, :]), axis=1)
-    return (other < own).tolist()
+    if not req.rivals or not len(centres):
+        return [False] * len(centres)
+    c = np.array(centres, dtype=float).reshape(-1, 2)
+    return _rivalled(req, _boxes(req, c[:, 0], c[:, 1], -1)).tolist()
+
+
+def _rivalled(req: Request, boxes: Boxes) -> np.ndarray:
+    """:func:`nearer_rival` of ``boxes``."""
+    own = boxes.to_point(*req.anchor)
+    other = np.min([boxes.to_point(x, y) for x, y in req.rivals], axis=0)
+    return other < own
+
+
+class _Text:
+    """The candidates of one text and what is known of them: centres, penalties, boxes, the static loss
+    (outside the frame, nearer a rival point), their best possible scores, and the clearances from the drawing
+    of those measured so far (NaN for the others).
+
+    The drawing alone already rules candidates out: :meth:`advance` scans them in order with the clearance from
+    the drawing as the score (at least the final one: what is placed only lowers it) and stops at the first not
+    yet measured that could still win; the candidates it passes over need not be measured at all.
+    """
+
+    def __init__(self, req: Request, owner: int, frame: tuple[float, float, float, float]):
+        cx, cy, self.cost = _centres(req)
+        self.n = len(cx)
+        self.centres: list[XY] = list(zip(cx.tolist(), cy.tolist()))
+        self.boxes = b = _boxes(req, cx, cy, owner)
+        f = frame
+        self.framed = (f[0] <= b.x0) & (f[1] <= b.y0) & (b.x1 <= f[2]) & (b.y1 <= f[3])
+        self.rivalled = _rivalled(req, b) if req.rivals else np.zeros(self.n, dtype=bool)
+        outside = np.where(self.framed, 0.0, 50.0) + np.where(self.rivalled, AMBIGUOUS, 0.0)
+        self.outside = outside
+        self.static = (ENOUGH - self.cost) - outside
+        self.known, self.hi = np.full(self.n, np.nan), np.full(self.n, np.nan)
+        self.pending: dict[int, np.ndarray] = {}
+        self._at, self._best, self._waves = 0, -math.inf, 0
+
+    def record(self, rows: np.ndarray, m: Measured) -> None:
+        """Keep the clearances ``m`` of the candidates ``rows``."""
+        self.known[rows], self.hi[rows] = m.known, m.hi
+        pk, pp = m.pending
+        if len(pk):
+            cut = np.flatnonzero(np.concatenate((_starts(pk[1:] != pk[:-1]), [True])))
+            for i, j in zip(cut[:-1].tolist(), cut[1:].tolist()):
+                self.pending[int(rows[pk[i]])] = pp[i:j]
+
+    def unmeasured(self, start: int, best: float, count: int) -> np.ndarray:
+        """Up to ``count`` candidates from ``start`` on, not measured yet, that could beat ``best``."""
+        rest = np.flatnonzero(np.isnan(self.known[start:]) & (self.static[start:] > best + 1e-12)) + start
+        return rest[:count]
+
+    def advance(self) -> np.ndarray:
+        """Scan on with the drawing's clearances; the candidates to measure next (none when the scan is done)."""
+        i, best = self._at, self._best
+        hi = ((self.hi - self.cost) - self.outside).tolist()
+        static = self.static.tolist()
+        while i < self.n:
+            h = hi[i]
+            if h != h:                                      # not measured
+                if static[i] > best + 1e-12:
+                    break
+            elif h > best + 1e-12:
+                best = h
+            i += 1
+        self._at, self._best = i, best
+        if i == self.n:
+            return _NONE
+        self._waves += 1
+        return self.unmeasured(i, best, WAVE << (self._waves - 1))
+
+
+WAVE = 16
+"""Candidates of a text measured in the first wave (one distance of the sixteen directions); each later wave
+takes twice as many as the one before (fewer waves for a text that needs many)."""
+
+_NONE = np.zeros(0, dtype=np.intp)
 
 
 class Placer:
@@ -160,51 +232,93 @@ class Placer:
 
     def __init__(self, obstacles: Sequence[tuple[shapely.Geometry, str, float]],
                  frame: tuple[float, float, float, float]):
-        self._obstacles = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles],
-                                [a for _, _, a in obstacles], split=True)
-        self._placed = Layer([])
-        self._boxes: list[shapely.Geometry] = []
-        self._tree: shapely.STRtree | None = None
+        self._fixed = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles], [a for _, _, a in obstacles],
+                            index=True)
+        self._placed = Placed()
         self._frame = frame
+        self._ready: dict[tuple[Request, str], _Text] = {}
 
-    def covers_placed(self, boxes: np.ndarray) -> np.ndarray:
-        """Whether each of ``boxes`` meets a text box or leader placed before (such a place is as bad as
-        one outside the frame: two texts never print on top of each other while any other place is left)."""
-        out = np.zeros(len(boxes), dtype=bool)
-        if self._boxes and len(boxes):
-            if self._tree is None:
-                self._tree = shapely.STRtree(self._boxes)
-            hit = self._tree.query(boxes, predicate="intersects")[0]
-            out[hit] = True
-        return out
+    def prepare(self, jobs: Sequence[tuple[Request, str]]) -> None:
+        """Measure the candidates of every (request, owner) of ``jobs`` against the fixed drawing, in a few
+        waves each taking, for every text at once, the next candidates the drawing alone cannot rule out."""
+        todo = [j for j in dict.fromkeys(jobs) if j not in self._ready]
+        texts = [self._ready.setdefault(j, _Text(j[0], self._fixed.code(j[1]), self._frame)) for j in todo]
+        while texts:
+            wave = [(t, t.advance()) for t in texts]
+            wave = [(t, rows) for t, rows in wave if len(rows)]
+            self._measure(wave)
+            texts = [t for t, _ in wave]
 
-    def _near(self, bounds: np.ndarray, owner: str) -> tuple[tuple[Layer, Nearby], ...]:
-        """What may come near each of the boxes ``bounds``: obstacles not ``owner``'s, placed geometries."""
-        return (self._obstacles, self._obstacles.near(bounds, owner)), (self._placed, self._placed.near(bounds, None))
+    def _measure(self, wave: list[tuple[_Text, np.ndarray]]) -> None:
+        """Measure the candidates ``rows`` of each text of ``wave`` against the drawing, in one pass."""
+        if not wave:
+            return
+        m = self._fixed.measure(Boxes.concat([t.boxes.take(rows) for t, rows in wave]))
+        start = 0
+        for t, rows in wave:
+            t.record(rows, m.part(start, start + len(rows)))
+            start += len(rows)
 
     def clearance(self, box: shapely.Geometry, owner: str) -> float:
         """Distance (capped at :data:`ENOUGH`) from ``box`` to every obstacle not owned by ``owner`` (plus its
         allowance) and to everything placed so far; negative when the box covers something, the more the
-        more it covers (so that among crowded places the least covered wins)."""
-        boxes = np.array([box], dtype=object)
-        bounds = shapely.bounds(boxes)
-        return Measure(boxes, bounds, [(layer, *near.pairs([0])) for layer, near in self._near(bounds, owner)],
-                       False).exact(0)
+        more it covers (so that among crowded places the least covered wins). By shapely: the definition
+        the placer's closed forms follow."""
+        best = ENOUGH
+        codes, allow = self._fixed.arrays()[5:7]
+        keep = np.flatnonzero(codes != self._fixed.code(owner))
+        for geoms, plus in (([self._fixed.geoms[i] for i in keep.tolist()], allow[keep]), (self._placed.geoms, 0.0)):
+            if geoms:
+                g = np.empty(len(geoms), dtype=object)
+                g[:] = geoms
+                best = min(best, float(np.min(gaps(box, g) + plus)))
+        return best
 
     def best(self, req: Request, owner: str) -> tuple[XY, float]:
         """The centre of the best box for ``req`` and its score: its clearance less the penalties for
-        distance and for leaving the preferred direction (very negative outside the frame).
+        distance and for leaving the preferred direction (very negative outside the frame or on a text placed
+        before); the anchor and -inf when there is no candidate.
 
         The candidates are tried in order; one replaces the best so far when its score is higher by more
-        than 1e-12. Only what decides that is scored exactly (see :class:`_Scan`).
+        than 1e-12. What a candidate covers of an area is computed (by shapely) only when it decides that.
         """
-        return _Scan(self, req, owner).run()
+        self.prepare([(req, owner)])
+        t = self._ready[req, owner]
+        placed = self._placed.measure(t.boxes) if len(self._placed) else None
+        outside = t.outside
+        if placed is not None and placed.touching.any():       # on a text placed before: as bad as outside
+            outside = np.where(t.framed & ~placed.touching, 0.0, 50.0) + np.where(t.rivalled, AMBIGUOUS, 0.0)
+        best, best_score = None, -math.inf
+        i = 0
+        while i < t.n:
+            hi = t.hi if placed is None else np.minimum(t.hi, placed.hi)
+            upper = ((hi - t.cost) - outside).tolist()
+            static = ((ENOUGH - t.cost) - outside).tolist()
+            for i in range(i, t.n):
+                u = upper[i]
+                if u != u:                                      # not measured: measure what may still win
+                    if static[i] > best_score + 1e-12:
+                        self._measure([(t, t.unmeasured(i, best_score, t.n))])
+                        break
+                    continue
+                if u <= best_score + 1e-12:
+                    continue                                    # it cannot win
+                score = u
+                if i in t.pending or (placed is not None and len(placed.pending_of(i))):
+                    box = req.box(*t.centres[i])
+                    c = min(float(t.known[i]), self._fixed.exact(box, t.pending.get(i, _NONE)),
+                            math.inf if placed is None else float(placed.known[i]),
+                            math.inf if placed is None else self._placed.exact(box, placed.pending_of(i)))
+                    score = (c - float(t.cost[i])) - float(outside[i])
+                if score > best_score + 1e-12:
+                    best, best_score = i, score
+            else:
+                break
+        return (t.centres[best] if best is not None else req.anchor), best_score
 
     def commit(self, geom: shapely.Geometry) -> None:
         """Record something placed (a text's box, a leader line): later texts keep clear of it."""
         self._placed.append(geom)
-        self._boxes.append(geom)
-        self._tree = None
 
     def place(self, req: Request, owner: str) -> XY:
         """Place ``req`` at its best position and record it; returns the box centre."""
@@ -213,119 +327,18 @@ class Placer:
         return centre
 
 
-class _Scan:
-    """The candidates of one text, measured a batch at a time (:data:`BATCH`), and the choice among them.
-
-    Each measured candidate has a lower and an upper bound of its score (equal when its box touches
-    nothing); one not measured, its static bound (:data:`ENOUGH` less its penalties). A candidate whose
-    upper bound does not beat the best so far is passed over, and so is every candidate before one whose
-    lower bound beats all their upper bounds (that one replaces the best whatever they score); a touching
-    candidate's bounds are tightened before its exact score is computed.
-    """
-
-    def __init__(self, placer: Placer, req: Request, owner: str):
-        self.anchor = req.anchor
-        self.centres, self.cost = _centres(req)
-        self.n = len(self.centres)
-        self.boxes = _boxes(req, self.centres)
-        self.bounds = shapely.bounds(self.boxes)
-        f, b = placer._frame, self.bounds
-        inside = (f[0] <= b[:, 0]) & (f[1] <= b[:, 1]) & (b[:, 2] <= f[2]) & (b[:, 3] <= f[3])
-        inside &= ~placer.covers_placed(self.boxes)
-        self.outside = [0.0 if ok else 50.0 for ok in inside.tolist()]
-        if req.rivals:
-            self.outside = [o + (AMBIGUOUS if bad else 0.0) for o, bad in zip(self.outside, nearer_rival(req, self.boxes))]
-        self.static = [ENOUGH - penalty - out for penalty, out in zip(self.cost, self.outside)]
-        self.reach = list(itertools.accumulate(reversed(self.static), max))[::-1]   # the best static from i on
-        self.near = placer._near(self.bounds, owner)
-        self.aligned = not req.rotate
-        self.lower: list[float] = []
-        self.upper: list[float] = []
-        self.where: list[tuple[Measure, int] | None] = []
-
-    def measure(self, best_score: float) -> None:
-        """Measure the next batch: those that can still beat ``best_score``."""
-        start = len(self.upper)
-        stop = min(self.n, start + BATCH)
-        todo = [i for i in range(start, stop) if self.static[i] > best_score + 1e-12]
-        m = Measure(self.boxes[todo], self.bounds[todo], [(layer, *nb.pairs(todo)) for layer, nb in self.near],
-                    self.aligned) if todo else None
-        slot = {i: k for k, i in enumerate(todo)}
-        for i in range(start, stop):
-            k = slot.get(i)
-            if m is None or k is None:           # it cannot beat the best so far, nor any later best
-                self.lower.append(-math.inf)
-                self.upper.append(self.static[i])
-                self.where.append(None)
-            else:
-                lo, hi = m.bounds(k)
-                self.lower.append(lo - self.cost[i] - self.outside[i])
-                self.upper.append(hi - self.cost[i] - self.outside[i])
-                self.where.append((m, k))
-
-    def sure_winner(self, i: int, best_score: float) -> int | None:
-        """A later candidate that replaces the best whatever the ones from ``i`` to it score."""
-        top = max(best_score, self.upper[i])
-        j = i + 1
-        while j < self.n and self.reach[j] > top + 1e-12:
-            if j == len(self.upper):
-                self.measure(best_score)
-            if self.lower[j] > top + 1e-12:
-                return j
-            top = max(top, self.upper[j])
-            j += 1
-        return None
-
-    def run(self) -> tuple[XY, float]:
-        """The centre of the best candidate and its score (the anchor and -inf when there is none)."""
-        best, best_score = None, -math.inf
-        i = 0
-        while i < self.n:
-            if i == len(self.upper):
-                self.measure(best_score)
-            if self.upper[i] <= best_score + 1e-12:
-                i += 1                           # it cannot win
-                continue
-            j = self.sure_winner(i, best_score)
-            if j is None and self.lower[i] < self.upper[i]:     # it touches something: bound what it covers
-                m, k = self.where[i]                            # type: ignore[misc]
-                pen, out = self.cost[i], self.outside[i]
-                self.upper[i] = m.refine(k, lambda hi: hi - pen - out <= best_score + 1e-12) - pen - out
-                if self.upper[i] <= best_score + 1e-12:
-                    i += 1
-                    continue
-            i = i if j is None else j
-            m, k = self.where[i]                                # type: ignore[misc]
-            score = m.exact(k) - self.cost[i] - self.outside[i]
-            if score > best_score + 1e-12:
-                best, best_score = i, score
-            elif j is not None:
-                raise AssertionError("a sure winner did not win: its bounds were wrong")
-            i += 1
-        return (self.centres[best] if best is not None else self.anchor), best_score
+def _boxes(req: Request, cx: np.ndarray, cy: np.ndarray, owner: int) -> Boxes:
+    """The boxes of ``req`` centred at (cx, cy), turned as the text will be; all of the step ``owner``."""
+    return Boxes.turned_by(cx, cy, req.width, req.height, req.rotate, np.full(len(cx), owner, dtype=np.intp))
 
 
-BATCH = 16
-"""Candidates measured at once (one distance of the sixteen directions)."""
-
-
-def _boxes(req: Request, centres: Sequence[XY]) -> np.ndarray:
-    """``req.box`` at each centre (the same coordinates; one vectorised call when not rotated)."""
-    if req.rotate:
-        out = np.empty(len(centres), dtype=object)
-        out[:] = [req.box(cx, cy) for cx, cy in centres]
-        return out
-    c = np.array(centres, dtype=float).reshape(-1, 2)
-    hw, hh = req.width / 2, req.height / 2
-    return shapely.box(c[:, 0] - hw, c[:, 1] - hh, c[:, 0] + hw, c[:, 1] + hh)
-
-
-def _centres(req: Request) -> tuple[list[XY], list[float]]:
-    """The candidate box centres of ``req`` in the order they are tried, and their penalties: the explicit
-    candidates, or the directions of :func:`directions` at each of :data:`DISTANCES` beyond the gap (the
-    box's :func:`half_extent` along the direction added), computed as those functions compute them."""
+def _centres(req: Request) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The candidate box centres (x, y) of ``req`` in the order they are tried, and their penalties: the
+    explicit candidates, or the directions of :func:`directions` at each of :data:`DISTANCES` beyond the gap
+    (the box's :func:`half_extent` along the direction added), computed as those functions compute them."""
     if req.candidates:
-        return list(req.candidates), [req.spread * i for i in range(len(req.candidates))]
+        c = np.array(req.candidates, dtype=float).reshape(-1, 2)
+        return c[:, 0], c[:, 1], req.spread * np.arange(len(c))
     ux, uy = _units(req.prefer)
     ax, ay = np.abs(ux), np.abs(uy)
     with np.errstate(divide="ignore"):
@@ -335,7 +348,7 @@ def _centres(req: Request) -> tuple[list[XY], list[float]]:
     cx, cy = req.anchor[0] + ux * reach, req.anchor[1] + uy * reach
     rank = np.arange(len(ux))
     penalty = FAR_PENALTY * np.arange(len(req.distances))[:, None] + req.spread * rank
-    return list(zip(cx.ravel().tolist(), cy.ravel().tolist())), penalty.ravel().tolist()
+    return cx.ravel(), cy.ravel(), penalty.ravel()
 
 
 @functools.lru_cache(maxsize=1024)
