@@ -45,3 +45,41 @@ def test_no_visible_text_of_the_gallery_shows_a_raw_underscore_name():
                 if not is_code(w, problem_ids, laws):
                     raw.setdefault(w, f.name)
     assert not raw, raw
+
+
+POINT_SYMBOL = re.compile(r"(?<![A-Za-z0-9])[valn][A-Z][A-Z0-9]*|μ[va](?![A-Za-z])")
+"""A velocity, acceleration, length or polygon normal written with its points on the line (``vC``, ``aCBᵗ``,
+``lAB``, the point ``nB``) or a polygon's scale ``μv``, ``μa``: the textbook prints the points (the scale's
+letter) as a subscript, a separate run of the text."""
+
+
+def test_no_visible_text_of_the_gallery_writes_a_kinematic_symbol_without_its_subscript():
+    # issue 11: 400-02 printed "vC = -233.724 mm/s", "aC = …" and a point labelled "nB" (n with subscript B)
+    files = [f for f in sorted(GALLERY.glob("*.svg")) if not f.name.startswith(CODE_FILES)]
+    raw = {}
+    for f in files:
+        for t in visible_texts(f.read_text(encoding="utf-8")):
+            for w in POINT_SYMBOL.findall(t):
+                raw.setdefault(w, f.name)
+    assert not raw, raw
+
+
+def test_link_range_rows_are_headed_by_their_names_like_a_table():
+    # issue 11: 001-02's row names sat below-left of each row at scattered places, two with leaders; a table
+    # heads each row with its name: right-aligned at the row's start, on its line
+    from geomcon.render.labels import text_width
+    svg = (GALLERY / "001-02_four_bar_link_ranges.svg").read_text(encoding="utf-8")
+    rows = [(float(x0), float(y)) for x0, y in re.findall(r'd="M([\d.]+) ([\d.]+)L[\d.]+ \2"[^>]*stroke-dasharray', svg)]
+    names = ("crank-rocker", "double-crank", "double-rocker", "not a mechanism", "Grashof")
+    rights = []
+    for name in names:
+        m = re.search(r'font-size="([\d.]+)"[^>]*text-anchor="middle" x="([\d.]+)"[^>]*y="([\d.]+)"><tspan>'
+                      + re.escape(name) + "<", svg)
+        assert m, name
+        size, x, y = map(float, m.groups())
+        right = x + text_width(name, size) / 2
+        x0, ly = min(rows, key=lambda r: abs(r[1] - y))
+        assert 0.0 < x0 - right < 3.5, (name, x0, right)
+        assert abs(y - size * 0.35 - ly) < 0.6, (name, y, ly)
+        rights.append(right)
+    assert max(rights) - min(rights) < 0.5
