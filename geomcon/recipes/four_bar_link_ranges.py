@@ -163,7 +163,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         answers[name] = name
         y = -row * i
         if sc.drawing:
-            sc.add(f"row{i}", segment, sc.add(f"row{i}_0", Point, 0.0, y, label=en, style="tick",
+            sc.add(f"row{i}", segment, sc.add(f"row{i}_0", Point, 0.0, y, label=en, style="row-start",
                                               role=Role.ANNOTATION), sc.add(f"row{i}_1", Point, top, y, visible=False),
                    style="frame", role=Role.ANNOTATION)
             for k, (lo_, hi_) in enumerate(runs[name]):

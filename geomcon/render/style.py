@@ -107,6 +107,9 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("given", marker="dot", radius=0.75),
     Style("tick", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6, label_optional=True),
     Style("division", marker="dot", radius=0.55, label_optional=True),
+    Style("row-start", marker="dot", radius=0.45, label_dir=math.pi, label_size=2.6),
+    # the start of a table's row (001-02's link ranges): its name at its left, right-aligned with the other
+    # rows' names and centred on its line, as a textbook's table heads its rows
     # curves
     Style("frame", width=0.25, dash=(6.0, 1.2, 1.0, 1.2)),
     Style("construction", stroke="#8f959c", width=0.18, layer="construction", compass=True),
