@@ -24,21 +24,24 @@ import re
 Runs = tuple[tuple[str, bool], ...]
 
 _LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴'*]*)$")
-_SUB = re.compile(r"(?<=(?<![A-Za-z0-9])[valn])[A-Z][A-Z0-9]*|(?<=μ)[val](?![A-Za-z])"
+_SUB = re.compile(r"(?<=(?<![A-Za-z0-9])[valn])[A-Z][A-Z0-9]*|(?<=(?<![A-Za-z0-9])[va][ⁿᵗʳᵏ])[A-Z][A-Z0-9]*"
+                  r"|(?<=μ)[val](?![A-Za-z])|(?<=(?<![A-Za-z_])[a-z])\d+(?![\d.])|(?<=[A-Z])d\d+(?![\d.])"
                   r"|(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
                   r"|(?<=[A-Zα-ω])i(?![a-z])"
                   r"|(?<=[A-Za-zα-ωΑ-Ω′])_([a-z0-9]+)")
 """What a caption prints as a subscript: digits after a capital or Greek letter (C1, γ1), min/max after a Greek
 letter, a prime between or a profile's letter before included (γmin, α′max, ρa,min), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
 underscore dropped, as the textbook prints αmax), the points after a velocity, acceleration, length or
-polygon normal's letter (vC, aCBᵗ, lAB, nB: v with subscript C …) and a scale's letter (μv, μa, μl)."""
+polygon normal's letter (vC, aCBᵗ, aʳB2B3, lAB, nB: v with subscript C …), a scale's letter (μv, μa, μl), the
+digits after a lone small letter (r0, s0, i13, the polygon points b2, n3 as the figure labels them) and a dead
+point's d1 (Cd1: C with subscript d1)."""
 _CODE = re.compile(r"\S*\.[A-Za-z]\S*")
 """A word that is code (a file or recipe name, ``cam_psi0.toml``, ``cam.base_radius``): printed as it is."""
 
 
-_POINTS = re.compile(r"^([valn])([A-Z][A-Z0-9]*)([′″‴'*]*)$")
+_POINTS = re.compile(r"^([valn](?=[A-Z])|[A-Z](?=d\d))([A-Z][A-Z0-9]*|d\d+)([′″‴'*]*)$")
 """A polygon point named after the points it belongs to (nB: the end of B's normal acceleration, n with
-subscript B)."""
+subscript B) and a dead point (Cd1: C with subscript d1)."""
 
 
 def label_runs(label: str) -> Runs:
@@ -47,15 +50,15 @@ def label_runs(label: str) -> Runs:
 
     >>> label_runs("K2*")
     (('K', False), ('2', True), ('*', False))
-    >>> label_runs("nB")
-    (('n', False), ('B', True))
+    >>> label_runs("nB"), label_runs("Cd1")
+    ((('n', False), ('B', True)), (('C', False), ('d1', True)))
     >>> label_runs("D (D1)")
     (('D', False), (' (', False), ('D', False), ('1', True), (')', False))
     """
     if label.endswith(")") and " (" in label:
         head, tail = label[:-1].split(" (", 1)
         return label_runs(head) + ((" (", False),) + label_runs(tail) + ((")", False),)
-    m = _LABEL.match(label) or _POINTS.match(label)
+    m = _POINTS.match(label) or _LABEL.match(label)
     if not m:
         return ((label, False),)
     out = [(m.group(1), False), (m.group(2), True)]

@@ -29,7 +29,9 @@ from typing import Any, Literal
 import svgwrite
 
 from ..paper import PAPERS, Orientation, Scale, Sheet
-from .labels import text_width
+from .labels import rich_runs, text_width
+from .serial import Element
+from .shapes import add_runs
 from .style import FONT_FAMILY, INK
 from .view import Box, fmt
 
@@ -183,8 +185,14 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
             size = TB_TITLE if r == 0 else TB_TEXT
             cell = fitted(cell, cw - 3.0, size, 1.12 if r == 0 else 1.0)
             size = fit_size(cell, (cw - 3.0) / (1.12 if r == 0 else 1.0), size)
-            t = dwg.text(cell, insert=(fmt(x0 + c * cw + 1.5), fmt(y0 + r * TB_ROW + TB_ROW / 2 + 0.36 * size)),
-                         font_size=fmt(size), fill=INK, stroke="none", class_=f"tb tb-{r}-{c}")
+            at = (fmt(x0 + c * cw + 1.5), fmt(y0 + r * TB_ROW + TB_ROW / 2 + 0.36 * size))
+            if r == 0 or cell.startswith("μl"):         # the title and μl: subscripts as the textbook prints them
+                t = Element("text", class_=f"tb tb-{r}-{c}", fill=INK, font_size=fmt(size), stroke="none",
+                            x=at[0], y=at[1])
+                add_runs(t, rich_runs(cell), size, least=MIN_TEXT)
+                t.attribs["xml:space"] = "preserve"
+            else:
+                t = dwg.text(cell, insert=at, font_size=fmt(size), fill=INK, stroke="none", class_=f"tb tb-{r}-{c}")
             if r == 0:
                 t.attribs["font-weight"] = "bold"
             g.add(t)

@@ -169,8 +169,9 @@ def _text(t: Text) -> Element:
     return el
 
 
-def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float) -> None:
-    """Append text runs to a text element: subscripts as smaller tspans lowered with ``dy`` (the one shift
+def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float, least: float = 0.0) -> None:
+    """Append text runs to a text element: subscripts as smaller tspans (``SUB_SCALE`` of ``size``, at least
+    ``least``: a title block squeezed to fit keeps subscripts readable) lowered with ``dy`` (the one shift
     every SVG renderer agrees on), the following run raised back."""
     shift = 0.0
     for s, sub in runs:
@@ -180,7 +181,7 @@ def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float) -> None:
             attrs["dy"] = fmt(target - shift)
             shift = target
         if sub:
-            attrs["font_size"] = fmt(size * SUB_SCALE)
+            attrs["font_size"] = fmt(max(size * SUB_SCALE, least))
         el.add(Element("tspan", s, **attrs))
 
 

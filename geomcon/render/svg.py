@@ -37,7 +37,8 @@ from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_b
                    title_block_box)
 from .serial import Element, svg_string
 from .protocol import info_height, paginate, render_info, render_protocol
-from .shapes import to_svg
+from .labels import rich_runs
+from .shapes import add_runs, to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
 from .view import FIG_MARGIN, Box, View, fmt, grow, nice_values
 
@@ -372,8 +373,10 @@ def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float, scale: Sc
     g.add(dwg.text("0", insert=(fmt(x), fmt(y + 4.5)), font_size=size, text_anchor="middle", stroke="none", fill=INK))
     g.add(dwg.text(f"{length:g} mm", insert=(fmt(x + L), fmt(y + 4.5)), font_size=size, text_anchor="middle",
                    stroke="none", fill=INK))
-    g.add(dwg.text(f"{scale}   μl = {mu:g} mm/mm", insert=(fmt(x + L + 10.0), fmt(y + 1.2)), font_size=size,
-                   stroke="none", fill=INK))
+    t = Element("text", fill=INK, font_size=size, stroke="none", x=fmt(x + L + 10.0), y=fmt(y + 1.2))
+    add_runs(t, rich_runs(f"{scale}   μl = {mu:g} mm/mm"), INFO_SIZE)        # μ with subscript l
+    t.attribs["xml:space"] = "preserve"
+    g.add(t)
     return g
 
 
