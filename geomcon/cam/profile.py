@@ -341,7 +341,7 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     grids = sample_grids(key, dense, turn)
     places: list[float] = []
     if slope is not None and slope1 is not None:    # one call for all the pieces' samples, on floats after
-        return _maximise_by_slope1(g, key, grids, sample_grid(key, dense, turn), slope, slope1)
+        return _maximise_by_slope1(g, key, grids, sample_grid(key, dense, turn), slope, slope1, g1)
     if slope is not None:
         slopes = [np.asarray(slope(d), dtype=float) for d in grids]
         noise = SLOPE_NOISE * max(float(np.nanmax(np.abs(sl), initial=0.0)) for sl in slopes)
@@ -363,6 +363,8 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
         places += _bisect_all(slope, np.array(lo), np.array(hi)).tolist()
         vals = np.asarray(g(np.asarray(places)), dtype=float)
         return best_of([Extremum(float(v), x) for v, x in zip(vals, places)])
+    if g1 is not None:                              # one pass over all the pieces' samples, on floats after
+        return _maximise_by_g1(g, key, grids, sample_grid(key, dense, turn), g1, xtol)
     lo, hi, cands = [], [], []
     mids, fmids, gains = [], [], []
     values = _split(np.asarray(g(sample_grid(key, dense, turn)), dtype=float), grids) if g1 is not None else None
@@ -399,11 +401,13 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
 
 def _maximise_by_slope1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tuple[float, float], ...],
                         grids: Sequence[np.ndarray], grid: np.ndarray, slope: Callable[[np.ndarray], np.ndarray],
-                        slope1: Callable[[float], float]) -> Extremum:
+                        slope1: Callable[[float], float], g1: Callable[[float], float] | None = None) -> Extremum:
     """:func:`maximise` with a slope and its scalar form: the candidates of every piece found on the samples of
     all of them at once (``grid``, the pieces' ``grids`` concatenated), in the order of the loop over the
     pieces (each piece's ends, then the samples where a slope that is roundoff changes sign), then the roots
-    refined on floats (:func:`illinois1`), valued by one call of ``g`` and compared as :func:`best_of` does.
+    refined on floats (:func:`illinois1`), valued by one call of ``g`` (or, given ``g1``, g on one float with
+    the same bits, one candidate at a time: a few candidates cost less so than one numpy pass over them)
+    and compared as :func:`best_of` does.
 
     >>> pcs = ((0.0, 2.0), (2.0, TWO_PI))
     >>> args = (lambda d: np.sin(d) * np.exp(-d), pcs)
@@ -440,8 +444,61 @@ def _maximise_by_slope1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tup
         for lo, hi, flo, fhi, k in zip(grid[root].tolist(), grid[root + 1].tolist(), sl[root].tolist(),
                                        sl[root + 1].tolist(), piece.tolist()):
             places.append(illinois1(slope1, lo, hi, flo, fhi, widths[k]))
+    if g1 is not None:
+        return _best_of_pairs([g1(x) for x in places], places)
     vals = np.asarray(g(np.asarray(places)), dtype=float).tolist()
     return _best_of_pairs(vals, places)
+
+
+def _maximise_by_g1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tuple[float, float], ...],
+                    grids: Sequence[np.ndarray], grid: np.ndarray, g1: Callable[[float], float],
+                    xtol: float) -> Extremum:
+    """:func:`maximise` without a slope, with g on one float: the same candidates as its loop over the pieces
+    (each piece's ends, its :data:`REFINE` highest sampled peaks, ties by place, and those peaks refined by
+    :func:`brent_max1` unless pruned), found by one numpy pass over the samples of all the pieces at once
+    (``grid``), each piece's first and last sample compared with one neighbour only. The largest is chosen
+    as :func:`best_of` does (whatever the candidates' order).
+
+    >>> pcs = ((0.0, 2.0), (2.0, TWO_PI))
+    >>> args = (lambda d: np.sin(d) * np.exp(-d), pcs)
+    >>> g1 = lambda d: math.sin(d) * math.exp(-d)
+    >>> m = _maximise_by_g1(args[0], pcs, sample_grids(pcs, _DENSE), sample_grid(pcs, _DENSE), g1, 1e-11)
+    >>> abs(m.delta - math.pi / 4) < 1e-7, abs(m.value - math.sin(math.pi / 4) * math.exp(-math.pi / 4)) < 1e-16
+    (True, True)
+    """
+    v = np.asarray(g(grid), dtype=float)
+    sizes = np.array([len(d) for d in grids])
+    last = np.cumsum(sizes) - 1
+    first = last - sizes + 1
+    left = np.empty_like(v)
+    left[1:] = v[:-1]
+    left[first] = -np.inf                                     # the ends compare with one neighbour
+    right = np.empty_like(v)
+    right[:-1] = v[1:]
+    right[last] = -np.inf
+    peaks = np.nonzero((v >= left) & (v >= right) & ((v > left) | (v > right)))[0]   # never nan
+    piece = np.searchsorted(last, peaks)
+    order = np.lexsort((peaks, -v[peaks], piece))              # by piece, highest first, ties by place
+    peaks, piece = peaks[order], piece[order]
+    if peaks.size:
+        starts = np.searchsorted(piece, np.arange(len(grids)))
+        keep = np.arange(peaks.size) - starts[piece] < REFINE
+        peaks, piece = peaks[keep], piece[keep]
+    values = v[first].tolist() + v[last].tolist() + v[peaks].tolist()
+    places = grid[first].tolist() + grid[last].tolist() + grid[peaks].tolist()
+    top = max(x for x in values if x == x)
+    floor = top - PRUNE_REL * abs(top)
+    firsts = first.tolist()
+    for i, k, x, fx in zip(peaks.tolist(), piece.tolist(), grid[peaks].tolist(), v[peaks].tolist()):
+        d, j = grids[k], i - firsts[k]
+        vk = v[firsts[k]:firsts[k] + len(d)]
+        gain = parabola_gain(d, vk, j)
+        if fx + PRUNE_GAIN * gain >= floor and gain >= 0.0:    # else it cannot reach the best sample
+            n = len(d) - 1
+            at, best = brent_max1(g1, float(d[max(j - 1, 0)]), x, float(d[min(j + 1, n)]), fx, xtol)
+            values.append(best)
+            places.append(at)
+    return _best_of_pairs(values, places)
 
 
 def _best_of_pairs(values: list[float], places: list[float]) -> Extremum:
@@ -758,6 +815,19 @@ def pressure_angle(c6: Curve6, ux: np.ndarray, uy: np.ndarray) -> np.ndarray:
     """
     _, _, dx, dy = c6[:4]
     return np.arctan2(np.abs(dx * ux + dy * uy), np.abs(dx * uy - dy * ux))
+
+
+def pressure_angle1(c6: Curve1, ux: float, uy: float) -> float:
+    """:func:`pressure_angle` of one point (floats): the same operations, and atan2 is the C library's in
+    both, so the same bits.
+
+    >>> c6 = (0.0, 30.0, -30.0, 0.5, 0.0, 0.0)
+    >>> arr = pressure_angle(tuple(np.array([v]) for v in c6), 0.1, 1.0)
+    >>> pressure_angle1(c6, 0.1, 1.0) == float(arr[0])
+    True
+    """
+    _, _, dx, dy = c6[:4]
+    return math.atan2(abs(dx * ux + dy * uy), abs(dx * uy - dy * ux))
 
 
 def pressure_angle_slope(c6: Curve6, ux: np.ndarray, uy: np.ndarray, omega: np.ndarray | float) -> np.ndarray:

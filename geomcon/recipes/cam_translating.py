@@ -20,6 +20,7 @@ import numpy as np
 
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope1, envelope_rho_min,
                            flat_profile, frame_pressure_angle_slope, frame_pressure_angle_slope1, inverted, inverted1,
+                           pressure_angle1,
                            inverted_relative, inverted_relative1, maximise, pressure_angle, rho_min, roller_profile, turn_of)
 from ..cam.program import Program, parse_program
 from ..cam.translating import TranslatingCam
@@ -226,8 +227,12 @@ def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float)
     def slope1(d):                # the same on one float (the refinement's scalar path)
         return frame_pressure_angle_slope1(fn1(d), rel1(d), -math.sin(inv * d), math.cos(inv * d))
 
+    def g1(d):                    # g on one float (the candidates' values): the same bits
+        return math.degrees(pressure_angle1(fn1(d), -math.sin(inv * d), math.cos(inv * d)))
+
+    scalar = fn1 is not None and rel1 is not None
     return maximise(g, [(math.radians(start_deg), math.radians(end_deg))], slope=slope,
-                    slope1=slope1 if fn1 is not None and rel1 is not None else None)
+                    slope1=slope1 if scalar else None, g1=g1 if scalar else None)
 
 
 def alphas_at(curve: PitchCurve, inv: float, at: tuple[float, ...]) -> tuple[float, ...]:
