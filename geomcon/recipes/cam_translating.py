@@ -14,7 +14,8 @@ face, whose reference point is where its axis meets the face).
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from dataclasses import dataclass
+from typing import Any, Callable, Mapping
 
 import numpy as np
 
@@ -179,7 +180,24 @@ def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> Pi
         _, v, a = last1[1] if d == last1[0] else motion1(h, d, True)
         return inverted_relative1(d, rotation, (0.0, v), (0.0, a))
 
-    return PitchCurve(fn, program_breaks(prog), relative, fn1, relative1)
+    k = inv + 0.0                              # the inversion's k (−1 for a ccw cam) as in turn_of
+
+    def axis_slope(d):                         # α′ against the axis, formed in the follower's frame (no turn)
+        s, v, a = prog.motion(h, d, radians=True)
+        px, py = -k * (s0 + s), v + k * e          # P′ = q′ + kJq, q = (e, s0 + s)
+        return (px * a - py * (-k * v)) / (px * px + py * py) * np.sign(py * px)   # rel = q″ + kJq′ = (−kv, a)
+
+    return _TranslatingPitch(fn, program_breaks(prog), relative, fn1, relative1, axis_slope)
+
+
+@dataclass(frozen=True)
+class _TranslatingPitch(PitchCurve):
+    """A translating follower's pitch curve with ``axis_slope``: the pressure angle's slope against the
+    follower's axis (:func:`~geomcon.cam.profile.frame_pressure_angle_slope`) formed in the follower's frame
+    before any turn: P′ × rel and the signs of P′·u and P′ × u are the same in every frame, so the search's
+    samples need no cos, sin or turned vectors (the refinement's scalar path keeps the turned form)."""
+
+    axis_slope: Callable[[np.ndarray], np.ndarray] | None = None
 
 
 def _face_family(prog: Program, h: float, r0: float, inv: float) -> LineFamily:
@@ -222,6 +240,8 @@ def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float)
     def slope(d):                 # the axis turns with the follower's frame: its relative turn, no cancellation
         return frame_pressure_angle_slope(curve.eval(d), curve.relative(d), *_axis(inv, d))
 
+    fast = getattr(curve, "axis_slope", None)
+
     fn1, rel1 = curve.fn1, curve.relative1
 
     def slope1(d):                # the same on one float (the refinement's scalar path)
@@ -231,7 +251,7 @@ def worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float)
         return math.degrees(pressure_angle1(fn1(d), -math.sin(inv * d), math.cos(inv * d)))
 
     scalar = fn1 is not None and rel1 is not None
-    return maximise(g, [(math.radians(start_deg), math.radians(end_deg))], slope=slope,
+    return maximise(g, [(math.radians(start_deg), math.radians(end_deg))], slope=fast or slope,
                     slope1=slope1 if scalar else None, g1=g1 if scalar else None)
 
 
