@@ -269,6 +269,23 @@ def test_slope_roots_on_floats_equal_the_array_refinement(seed):
 
 
 @pytest.mark.parametrize("seed", SEEDS)
+def test_axis_slope_in_the_followers_frame_equals_the_turned_slope(seed):
+    """α′ sampled before the turn (the translating α search's grid) is the turned form's to roundoff."""
+    from geomcon.cam.profile import frame_pressure_angle_slope
+    rng = np.random.default_rng(seed)
+    prog, h = _program(rng), float(rng.uniform(1.0, 40.0))
+    r0 = float(rng.uniform(h, 4 * h))
+    e = float(rng.uniform(-0.8, 0.8)) * r0
+    inv = float(rng.choice([-1.0, 1.0]))
+    curve = transl._pitch_curve(prog, h, e, math.sqrt(r0 * r0 - e * e), inv)
+    d = np.linspace(0.0, 2 * math.pi, 2001)[:-1]
+    turned = frame_pressure_angle_slope(curve.eval(d), curve.relative(d), *transl._axis(inv, d))
+    fast = curve.axis_slope(d)
+    scale = float(np.abs(turned).max())
+    assert np.allclose(fast, turned, rtol=1e-12, atol=1e-12 * scale)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
 def test_oscillating_searches_on_floats_equal_the_array_searches(seed):
     rng = np.random.default_rng(seed)
     prog = _program(rng)
