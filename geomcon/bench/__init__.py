@@ -18,18 +18,22 @@ The table is printed and the time–error plot written (atomically) as SVG.
 """
 from __future__ import annotations
 
+from importlib import import_module
 from pathlib import Path
+from typing import Any
 
-from ..fileio import write_all
-from .cam import cam_table, measure_cam
-from .cycle import cycle_table, measure_cycle
-from .exact import exact_table, measure_exact
-from .grading import grading_table, measure_grading
-from .lean import lean_table, measure_lean
-from .measure import CASES, FULL, QUICK, Case, Config, DrawRow, ErrorRow, measure_drawing, measure_extremes
-from .plot import render_plot
-from .report import report
-from .synthesis import measure_synthesis, synthesis_table
+_LAZY = {"CASES": "measure", "FULL": "measure", "QUICK": "measure", "Case": "measure", "Config": "measure",
+         "DrawRow": "measure", "ErrorRow": "measure", "measure_drawing": "measure", "measure_extremes": "measure",
+         "render_plot": "plot"}
+"""The package's exports and the module each lives in: imported when first asked for (PEP 562), so that
+``geomcon gallery``, which needs only :mod:`.cycle_record`, does not import (and, without a byte-code cache,
+compile) every benchmark."""
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        return getattr(import_module(f".{_LAZY[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_record: Path | None = None) -> int:
@@ -45,6 +49,17 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_recor
         Where to write the whole-cycle rows as the JSON record the gallery draws
         (``problems/cycles/bench_record.json``); None writes none.
     """
+    from ..fileio import write_all
+    from .cam import cam_table, measure_cam
+    from .cycle import cycle_table, measure_cycle
+    from .exact import exact_table, measure_exact
+    from .grading import grading_table, measure_grading
+    from .lean import lean_table, measure_lean
+    from .measure import FULL, QUICK, measure_drawing, measure_extremes
+    from .plot import render_plot
+    from .report import report
+    from .synthesis import measure_synthesis, synthesis_table
+
     config = QUICK if quick else FULL
     extremes = measure_extremes(config)
     drawing = measure_drawing(config)
@@ -68,4 +83,4 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_recor
 
 
 __all__ = ["CASES", "FULL", "QUICK", "Case", "Config", "DrawRow", "ErrorRow", "measure_drawing",
-           "measure_extremes", "render_plot", "report", "run_bench"]
+           "measure_extremes", "render_plot", "run_bench"]
