@@ -211,4 +211,7 @@ def draw_arc(a: Arc, style: Style, ctx: Context) -> Drawn:
 
 def draw_polyline(pl: Polyline, style: Style, ctx: Context) -> Drawn:
     """A sampled curve (pitch curve, cam profile, path) as one SVG polyline (its points are part of the view's content box)."""
-    return Drawn([Poly(tuple(ctx.view.p(p) for p in pl.points), pen(style), closed=pl.closed)])
+    v = ctx.view                          # View.p inlined (same operations, same bits): curves have ~700 points
+    (ox, oy), x0, y1, mu = v.origin, v.box[0], v.box[3], v.mu
+    return Drawn([Poly(tuple([(ox + (p.x - x0) / mu, oy + (y1 - p.y) / mu) for p in pl.points]), pen(style),
+                       closed=pl.closed)])

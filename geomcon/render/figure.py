@@ -281,7 +281,9 @@ def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn
                            max(max(r.gap for r in reqs) - 0.4, 0.0), (ax, ay), (1,) if fixed else (1, -1))
             best: tuple[float, Fan] | None = None
             for fan in options:
-                worst = min(placer.best(_at(r, c), groups[i].key)[1] for (i, _), r, c in zip(members, reqs, fan.centres))
+                jobs = [(_at(r, c), groups[i].key) for (i, _), r, c in zip(members, reqs, fan.centres)]
+                placer.prepare(jobs)            # the fan's texts against the drawing in one pass, not one each
+                worst = min(placer.best(req, key)[1] for req, key in jobs)
                 if best is None or worst > best[0] + 1e-9:
                     best = (worst, fan)
                 if worst >= CROWDED:
