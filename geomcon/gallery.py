@@ -154,6 +154,34 @@ def _preload() -> None:
         RECIPES[name]
 
 
+EXPECTED_MS = {"_grading": 1035, "_cycles": 259, "_worksheet": 149, "law_diagrams": 72, "_best_table": 40,
+               "200-20_oscillating_base_radius_rho": 240, "000-04_slotter_cam_psi0": 176,
+               "000-07_slotter_cam_actual_profile": 175, "000-05_slotter_cam_motion_law": 155,
+               "000-08_slotter_cam_pressure_angle": 151, "200-19_base_radius_alpha_and_rho": 150,
+               "000-06_slotter_cam_pitch_points": 131, "200-15_cam_handbook_laws": 115,
+               "200-05_oscillating_roller_cam": 107, "200-03_cam_roller_undercut": 107,
+               "200-07_oscillating_flat_face": 103, "200-14_oscillating_arm_speeds": 101}
+"""The CPU milliseconds of the gallery's longest jobs (parts by function, problems by file stem), measured
+2026-11-26 in one process; any other job counts as :data:`OTHER_MS`. Jobs are started longest first, so that no
+long job starts last while the other cores idle; the results are put together in the fixed order all the same."""
+OTHER_MS = 40
+
+
+def _longest_first(jobs: list) -> list[int]:
+    """Indices of ``jobs`` (function, args) by expected cost, longest first; ties keep their order.
+
+    >>> from pathlib import Path
+    >>> _longest_first([(_best_table, ()), (problem_gallery, (Path("p/200-20_oscillating_base_radius_rho.toml"), None)),
+    ...                 (_grading, ())])
+    [2, 1, 0]
+    """
+    def cost(job) -> int:
+        fn, args = job
+        key = args[0].stem if fn is problem_gallery else fn.__name__
+        return EXPECTED_MS.get(key, OTHER_MS)
+    return sorted(range(len(jobs)), key=lambda i: -cost(jobs[i]))
+
+
 def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None = None) -> dict[str, str]:
     """Render every problem: ``{relative file name: text}`` for the JSON, the SVG sheets (``<id>.svg`` the
     drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index; and one worksheet with
@@ -168,8 +196,12 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
     if jobs != 1:
         _preload()
     parts = [(_grading, ()), (_worksheet, (problems_dir,)), (_cycles, (problems_dir,)), (_best_table, ()),
-             (law_diagrams, ()), (bench_gallery, (problems_dir,))]       # the longest first: fewer idle cores
-    done = run_ordered(parts + [(problem_gallery, (p, lang)) for p in paths], jobs)
+             (law_diagrams, ()), (bench_gallery, (problems_dir,))]
+    all_jobs = parts + [(problem_gallery, (p, lang)) for p in paths]
+    order = _longest_first(all_jobs)                # started longest first, put back in the fixed order
+    done = [None] * len(all_jobs)
+    for i, result in zip(order, run_ordered([all_jobs[i] for i in order], jobs)):
+        done[i] = result
     (grading, sheet, (cycle_out, cycle_rows), best, laws, bench), problems = done[:len(parts)], done[len(parts):]
     files: dict[str, str] = {}
     rows = []
