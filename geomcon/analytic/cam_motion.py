@@ -152,11 +152,17 @@ def _slopes(points: tuple[tuple[float, float], ...]) -> tuple[float, ...]:
     return (0.0, *np.linalg.solve(A, r).tolist(), 0.0)
 
 
-def _table(points: tuple[tuple[float, float], ...], x: float) -> Triple:
+def _interval(points: tuple[tuple[float, float], ...], x: float) -> tuple[int, tuple[float, ...]]:
+    """The table's interval holding ``x`` (its index) and the spline's slopes at the points."""
     m = _slopes(points)
     i = 0
     while i < len(points) - 2 and x >= points[i + 1][0]:
         i += 1
+    return i, m
+
+
+def _table(points: tuple[tuple[float, float], ...], x: float) -> Triple:
+    i, m = _interval(points, x)
     (x0, f0), (x1, f1) = points[i], points[i + 1]
     h = x1 - x0
     t = (x - x0) / h
@@ -267,10 +273,7 @@ def _shape_slope(name: str, t: float) -> float:
 
 def _table3(points: tuple[tuple[float, float], ...], x: float) -> float:
     """The spline's f‴ (constant on each interval): the Hermite basis differentiated three times."""
-    m = _slopes(points)
-    i = 0
-    while i < len(points) - 2 and x >= points[i + 1][0]:
-        i += 1
+    i, m = _interval(points, x)
     (x0, f0), (x1, f1) = points[i], points[i + 1]
     h = x1 - x0
     return (12.0 * f0 + 6.0 * h * m[i] - 12.0 * f1 + 6.0 * h * m[i + 1]) / h ** 3

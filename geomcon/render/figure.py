@@ -363,17 +363,11 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 t = _led(t)             # a row's number with no room by its point: farther, with a leader
                 centre, _ = placer.best(t.request, g.key)
                 box = t.request.box(*centre)
-                texts.append(box)
-                placer.commit(box)
                 leader = _fan_leader(t, box)
-                if leader is not None:
-                    placer.commit(obstacle(leader))
-                    g.shapes.append(recolour(leader, colour) if colour else leader)
-                g.shapes.append(_text_at(t, centre[0], centre[1], colour))
-                continue
+            else:
+                leader = _leader(t, box)
             texts.append(box)
             placer.commit(box)
-            leader = _leader(t, box)
             if leader is not None:
                 placer.commit(obstacle(leader))
                 g.shapes.append(recolour(leader, colour) if colour else leader)
