@@ -50,6 +50,15 @@ def _arm_cam(rng: np.random.Generator, prog) -> OscillatingCam:
     return cam
 
 
+def _translating_curve(rng: np.random.Generator):
+    """A random translating cam's program, sense (inv) and pitch curve (offset |e| < 0.8 r0)."""
+    prog, h = _program(rng), float(rng.uniform(1.0, 40.0))
+    r0 = float(rng.uniform(h, 4 * h))
+    e = float(rng.uniform(-0.8, 0.8)) * r0
+    inv = float(rng.choice([-1.0, 1.0]))
+    return prog, inv, transl._pitch_curve(prog, h, e, math.sqrt(r0 * r0 - e * e), inv)
+
+
 def _angles(rng: np.random.Generator, prog, radians: bool) -> np.ndarray:
     """Random angles over the turn and a little beyond, every segment end and parabolic middle and their
     neighbouring floats."""
@@ -99,11 +108,7 @@ def test_motion1_and_every_array_route_give_the_same_bits(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_translating_pitch_curve_scalar_form_gives_the_array_bits(seed):
     rng = np.random.default_rng(seed)
-    prog, h = _program(rng), float(rng.uniform(1.0, 40.0))
-    r0 = float(rng.uniform(h, 4 * h))
-    e = float(rng.uniform(-0.8, 0.8)) * r0
-    inv = float(rng.choice([-1.0, 1.0]))
-    curve = transl._pitch_curve(prog, h, e, math.sqrt(r0 * r0 - e * e), inv)
+    prog, inv, curve = _translating_curve(rng)
     d = np.sort(rng.uniform(0.0, TWO_PI, 300))
     c6, rel = curve.eval(d), curve.relative(d)
     ux, uy = transl._axis(inv, d)
@@ -255,11 +260,7 @@ def test_rho_min_by_brent_on_floats_equals_golden_sections_on_arrays(seed):
 @pytest.mark.parametrize("seed", SEEDS)
 def test_slope_roots_on_floats_equal_the_array_refinement(seed):
     rng = np.random.default_rng(seed)
-    prog, h = _program(rng), float(rng.uniform(1.0, 40.0))
-    r0 = float(rng.uniform(h, 4 * h))
-    e = float(rng.uniform(-0.8, 0.8)) * r0
-    inv = float(rng.choice([-1.0, 1.0]))
-    curve = transl._pitch_curve(prog, h, e, math.sqrt(r0 * r0 - e * e), inv)
+    prog, inv, curve = _translating_curve(rng)
     plain = PitchCurve(curve.fn, curve.breaks, curve.relative)
     for seg in (prog.rise, prog.ret):
         fast = transl.worst_alpha(curve, inv, seg.start, seg.end)
@@ -273,11 +274,7 @@ def test_axis_slope_in_the_followers_frame_equals_the_turned_slope(seed):
     """α′ sampled before the turn (the translating α search's grid) is the turned form's to roundoff."""
     from geomcon.cam.profile import frame_pressure_angle_slope
     rng = np.random.default_rng(seed)
-    prog, h = _program(rng), float(rng.uniform(1.0, 40.0))
-    r0 = float(rng.uniform(h, 4 * h))
-    e = float(rng.uniform(-0.8, 0.8)) * r0
-    inv = float(rng.choice([-1.0, 1.0]))
-    curve = transl._pitch_curve(prog, h, e, math.sqrt(r0 * r0 - e * e), inv)
+    prog, inv, curve = _translating_curve(rng)
     d = np.linspace(0.0, 2 * math.pi, 2001)[:-1]
     turned = frame_pressure_angle_slope(curve.eval(d), curve.relative(d), *transl._axis(inv, d))
     fast = curve.axis_slope(d)
