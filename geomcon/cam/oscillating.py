@@ -196,6 +196,11 @@ class ArmMotion:
             out += [math.radians(seg.start + seg.angle * x0) for x0, _ in pieces(seg)]
         return tuple(sorted(set(out) - {0.0}))
 
+    def rests(self) -> tuple[tuple[float, float], ...]:
+        """The dwells' cam angles [start, end] (rad): the arm at rest, the pitch curve an arc about O."""
+        return tuple((math.radians(seg.start), math.radians(seg.end)) for seg in self.program.segments
+                     if seg.kind == "dwell")
+
     def motion_rad(self, delta) -> Motion:
         """The motion at cam angles ``delta`` in radians, segment ends compared in radians (so that
         ``nextafter`` of a break, :meth:`breaks`, falls in the piece before it)."""
@@ -407,7 +412,7 @@ class OscillatingCam(ArmMotion):
         """The pitch curve as a :class:`~geomcon.cam.profile.PitchCurve` (parameter δ in radians); with
         ``scalar``, also on one float (:meth:`pitch1`: the searches' scalar path, the same bits)."""
         return PitchCurve(lambda d: self.pitch_of(self.motion_rad(d)), self.breaks(),
-                          fn1=self.pitch1_fn() if scalar else None)
+                          fn1=self.pitch1_fn() if scalar else None, still=self.rests())
 
     def pitch1_fn(self) -> Callable[[float], tuple[float, float, float, float, float, float]]:
         """:meth:`pitch_of` ∘ :meth:`motion_rad` at one cam angle (radians), on floats: the same operations

@@ -202,13 +202,17 @@ class PitchCurve:
     """A closed curve traced once as δ goes from 0 to 2π (see the module docstring). ``relative``, when
     given, is :func:`inverted_relative` of the same point (the follower-frame turn of the tangent).
     ``fn1`` and ``relative1``, when given, are ``fn`` and ``relative`` on one float, returning floats with the
-    same bits (the scalar path: the searches then refine one angle at a time without numpy)."""
+    same bits (the scalar path: the searches then refine one angle at a time without numpy). ``still``, when
+    given, are the cam angles [a, b] (radians) over which the follower rests: the curve is an arc about O
+    there, of constant curvature, so :func:`rho_min`'s scalar path takes only the ends of a piece inside
+    one (a dwell's samples differ only by roundoff and never decide its result)."""
 
     fn: CurveFn
     breaks: tuple[float, ...] = ()
     relative: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]] | None = None
     fn1: Callable[[float], Curve1] | None = None
     relative1: Callable[[float], tuple[float, float]] | None = None
+    still: tuple[tuple[float, float], ...] = ()
 
     def pieces(self) -> list[tuple[float, float]]:
         """The smooth pieces [a, b] of the turn, in order."""
@@ -452,12 +456,13 @@ def _maximise_by_slope1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tup
 
 def _maximise_by_g1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tuple[float, float], ...],
                     grids: Sequence[np.ndarray], grid: np.ndarray, g1: Callable[[float], float],
-                    xtol: float) -> Extremum:
+                    xtol: float, rests: Sequence[bool] = ()) -> Extremum:
     """:func:`maximise` without a slope, with g on one float: the same candidates as its loop over the pieces
     (each piece's ends, its :data:`REFINE` highest sampled peaks, ties by place, and those peaks refined by
     :func:`brent_max1` unless pruned), found by one numpy pass over the samples of all the pieces at once
     (``grid``), each piece's first and last sample compared with one neighbour only. The largest is chosen
-    as :func:`best_of` does (whatever the candidates' order).
+    as :func:`best_of` does (whatever the candidates' order). A piece flagged in ``rests`` (the follower at
+    rest: constant g) gives its ends only, no peaks.
 
     >>> pcs = ((0.0, 2.0), (2.0, TWO_PI))
     >>> args = (lambda d: np.sin(d) * np.exp(-d), pcs)
@@ -478,6 +483,9 @@ def _maximise_by_g1(g: Callable[[np.ndarray], np.ndarray], pieces: tuple[tuple[f
     right[last] = -np.inf
     peaks = np.nonzero((v >= left) & (v >= right) & ((v > left) | (v > right)))[0]   # never nan
     piece = np.searchsorted(last, peaks)
+    if any(rests):
+        moving = ~np.asarray(rests, dtype=bool)[piece]
+        peaks, piece = peaks[moving], piece[moving]
     order = np.lexsort((peaks, -v[peaks], piece))              # by piece, highest first, ties by place
     peaks, piece = peaks[order], piece[order]
     if peaks.size:
@@ -898,8 +906,33 @@ def rho_min(curve: PitchCurve) -> Extremum:
             sense.append(_sense(curve, d, c6))
         return sense[0] * curvature(c6)
 
-    top = maximise(g, curve.pieces(), g1=lambda d: sense[0] * curvature1(fn1(d)))
+    key = tuple(curve.pieces())
+    rests = tuple(any(s0 <= 0.5 * (a + b) <= s1 for s0, s1 in curve.still) for a, b in key)
+    if any(rests):          # the pieces where the follower rests sampled at their ends only
+        grids, grid = _rest_grids(key, rests)
+        top = _maximise_by_g1(g, key, grids, grid, lambda d: sense[0] * curvature1(fn1(d)), 1e-11, rests)
+    else:
+        top = maximise(g, key, g1=lambda d: sense[0] * curvature1(fn1(d)))
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+
+
+@lru_cache(maxsize=256)
+def _rest_grids(pieces: tuple[tuple[float, float], ...], rests: tuple[bool, ...]
+                ) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
+    """:func:`sample_grids` of ``pieces`` (:data:`_DENSE`) and their concatenation, each piece where the
+    follower rests (``rests``) cut down to its first and last sample (read-only arrays, made once). The other
+    pieces keep their samples, so their candidates are the same.
+
+    >>> grids, grid = _rest_grids(((0.0, 1.0), (1.0, 2.0)), (False, True))
+    >>> len(grids[1]), bool(np.all(grids[0] == sample_grids(((0.0, 1.0), (1.0, 2.0)), _DENSE)[0])), grid.size
+    (2, True, 739)
+    """
+    grids = tuple(d[[0, -1]] if rest else d for d, rest in zip(sample_grids(pieces, _DENSE), rests))
+    for d in grids:
+        d.flags.writeable = False
+    grid = np.concatenate(grids)
+    grid.flags.writeable = False
+    return grids, grid
 
 
 DECISIVE = 0.25

@@ -187,7 +187,7 @@ def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> Pi
         px, py = -k * (s0 + s), v + k * e          # P′ = q′ + kJq, q = (e, s0 + s)
         return (px * a - py * (-k * v)) / (px * px + py * py) * np.sign(py * px)   # rel = q″ + kJq′ = (−kv, a)
 
-    return _TranslatingPitch(fn, program_breaks(prog), relative, fn1, relative1, axis_slope)
+    return _TranslatingPitch(fn, program_breaks(prog), relative, fn1, relative1, axis_slope=axis_slope)
 
 
 @dataclass(frozen=True)
