@@ -210,16 +210,14 @@ class ArmMotion:
 
     def segment_max(self, kind: str, g: Callable[[Motion], np.ndarray],
                     slope: Callable[[Motion], np.ndarray],
-                    slope1: Callable[[tuple[float, float, float, float]], float] | None = None, *,
-                    maxima_only: bool = False) -> tuple[float, float]:
+                    slope1: Callable[[tuple[float, float, float, float]], float] | None = None) -> tuple[float, float]:
         """(max of ``g``, δ in degrees where it is reached) over the ``kind`` ("rise" or "return") segment.
 
         Candidates are the ends of each smooth piece (one-sided values) and the interior roots of ``slope``
         (a function with the sign of dg/dδ), located by bisection on its sign. Ties go to the smaller cam
         angle. ``slope1``, the slope of one motion (δ, ψ, ψ′, ψ″) of :func:`segment_motion1`, refines each
-        bracket on floats by Brent's method instead (:func:`_roots`). With ``maxima_only`` (for a ``slope``
-        with the exact sign of dg/dδ) only the brackets where it turns from + to − are refined: a − → +
-        change is a minimum of ``g``, never above the piece's ends or its maxima.
+        bracket on floats by Brent's method instead (:func:`_roots`). (The construction's pressure angle has
+        its own search, :func:`geomcon.cam.arm_alpha.segment_max_one_pass`; this one is the twin's.)
         """
         k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
         seg, level = self.program.segments[k], levels(self.program, self.h)[k]
@@ -227,8 +225,7 @@ class ArmMotion:
         h = self.h
         fn1 = None if slope1 is None else lambda x: slope1(segment_motion1(seg, level, h, x))
         for x0, x1 in pieces(seg):
-            roots = _roots(lambda x: slope(segment_motion(seg, level, self.h, x)), x0, x1, fn1=fn1,
-                           falling_only=maxima_only)
+            roots = _roots(lambda x: slope(segment_motion(seg, level, self.h, x)), x0, x1, fn1=fn1)
             m = segment_motion(seg, level, self.h, roots + [x0, x1])
             for a, delta in zip(g(m), np.degrees(m.delta)):
                 if a > best[0] + 1e-13 or (abs(a - best[0]) <= 1e-13 and delta < best[1]):
@@ -360,21 +357,24 @@ class OscillatingCam(ArmMotion):
         """(α_max, δ where it occurs) over the ``kind`` ("rise" or "return") segment, both in degrees.
 
         Candidates are the ends of each smooth piece (one-sided values) and the interior stationary points,
-        the roots of dα/dδ located by bisection on its exact sign: sign(N)(N′D − ND′) with tan α = |N|/D
-        (``route = "tan"``), or :meth:`pressure_arg_slope` with α from :meth:`pressure_arg`
-        (``route = "arg"``, the analytic twin's). Ties go to the smaller cam angle.
+        the roots of dα/dδ located on its exact sign: sign(N)(N′D − ND′) with tan α = |N|/D (``route = "tan"``,
+        :meth:`tan_slope`; only its changes from + to −, the maxima, searched by
+        :func:`~geomcon.cam.arm_alpha.segment_max_one_pass` — a − → + change is a minimum, such as the kink
+        α = 0 where N changes sign), or :meth:`pressure_arg_slope` with α from :meth:`pressure_arg`
+        (``route = "arg"``, the analytic twin's, by :meth:`ArmMotion.segment_max`). Ties go to the smaller
+        cam angle.
         """
-        alpha = self.pressure_of if route == "tan" else self.pressure_arg
+        k = next(i for i, s in enumerate(self.program.segments) if s.kind == kind)
+        if route == "tan":
+            from .arm_alpha import segment_max_one_pass
+            return segment_max_one_pass(self.program.segments[k], levels(self.program, self.h)[k], self.h,
+                                        self.pressure_of, self.tan_slope, self._tan_slope1())
+        return self.segment_max(kind, self.pressure_arg, self.pressure_arg_slope, self.pressure_arg_slope1())
 
-        def slope(m):
-            if route == "tan":
-                n, d, n1, d1 = self.tan_pressure_parts(m)
-                return np.sign(n) * (n1 * d - n * d1)
-            return self.pressure_arg_slope(m)
-
-        if route == "tan":              # the slope has dα/dδ's sign: its − → + changes (α = 0 where N changes sign,
-            return self.segment_max(kind, alpha, slope, self._tan_slope1(), maxima_only=True)    # a kink) are minima
-        return self.segment_max(kind, alpha, slope, self.pressure_arg_slope1())
+    def tan_slope(self, m: Motion) -> np.ndarray:
+        """sign(N)(N′D − ND′) (:meth:`tan_pressure_parts`): the sign of dα/dδ, exactly."""
+        n, d, n1, d1 = self.tan_pressure_parts(m)
+        return np.sign(n) * (n1 * d - n * d1)
 
     def _tan_slope1(self) -> Callable[[tuple[float, float, float, float]], float]:
         """The "tan" route's slope sign(N)(N′D − ND′) of one motion (δ, ψ, ψ′, ψ″), on floats: the operations
@@ -530,24 +530,22 @@ class OscillatingCam(ArmMotion):
         return x - rr * ox, y - rr * oy
 
 
-def _roots(fn: Callable, x0: float, x1: float, n: int = GRID, fn1: Callable[[float], float] | None = None,
-           falling_only: bool = False) -> list[float]:
+def _roots(fn: Callable, x0: float, x1: float, n: int = GRID, fn1: Callable[[float], float] | None = None
+           ) -> list[float]:
     """Interior points of [x0, x1) where ``fn`` changes sign, refined by bisection to the last bit (all
     brackets at once: one call of ``fn`` per halving, whatever their number); or, with ``fn1`` (``fn`` on one
     float), each bracket by Brent's method on floats (:func:`geomcon.numeric.brent_root`, to
     :data:`ROOT_XTOL` of the segment: about ten calls where bisection takes fifty). The grid is denser towards the
     ends (1e-3 … 1e-9 of the piece), where a law starting or ending at rest makes the slope 0 and a maximum
-    may hide within the first or last cell. With ``falling_only``, only the changes from + to −.
+    may hide within the first or last cell.
 
     >>> [round(r, 12) for r in _roots(np.cos, 0.0, 10.0)]
     [1.570796326795, 4.712388980385, 7.853981633974]
-    >>> [round(r, 12) for r in _roots(np.cos, 0.0, 10.0, falling_only=True)]
-    [1.570796326795, 7.853981633974]
     """
     near = (x1 - x0) * np.logspace(-9.0, -3.0, 7)
     xs = np.unique(np.concatenate([piece_grid(x0, x1, n), x0 + near, np.nextafter(x1, x0) - near]))
     g = fn(xs)
-    i = np.nonzero((g[:-1] > 0) & (g[1:] < 0) if falling_only else np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]
+    i = np.nonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)[0]
     lo, hi, s_lo = xs[i].astype(float), xs[i + 1].astype(float), np.sign(g[i])
     if fn1 is not None:
         return [brent_root(fn1, a, b, ga, gb, xtol=ROOT_XTOL)
