@@ -299,7 +299,7 @@ maximum that is flat to roundoff has no better-defined place)."""
 def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float, float]],
              dense: int = _DENSE, xtol: float = 1e-11, slope: Callable[[np.ndarray], np.ndarray] | None = None,
              *, slope1: Callable[[float], float] | None = None, g1: Callable[[float], float] | None = None,
-             turn: float | None = None) -> Extremum:
+             turn: float | None = None, still: Sequence[tuple[float, float]] = ()) -> Extremum:
     """The maximum of a function smooth on each piece, and where.
 
     With ``slope`` (a function with the sign of g′, from exact derivatives) the candidates are the ends of
@@ -323,6 +323,12 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     own length: a segment of a cam searched alone is then sampled as densely as the whole turn is (not
     ``dense`` times over its own few degrees).
 
+    ``still`` (intervals [a, b], radians) marks where the follower rests and the function is constant (a
+    dwell: the pitch curve an arc about O, a flat face's contact standing still on it): on the scalar paths
+    a piece inside one is sampled at its ends only and gives no peaks (:func:`_rest_grids`). Its samples
+    would differ only by roundoff, never refined (flat to :data:`FLAT_REL`, or a slope within its noise),
+    and the earliest of tied candidates wins, which its first sample is either way.
+
     Examples
     --------
     >>> m = maximise(lambda d: np.sin(d) * np.exp(-d), [(0.0, 2.0), (2.0, TWO_PI)])
@@ -344,6 +350,13 @@ def maximise(g: Callable[[np.ndarray], np.ndarray], pieces: Sequence[tuple[float
     key = tuple((float(a), float(b)) for a, b in pieces)
     grids = sample_grids(key, dense, turn)
     places: list[float] = []
+    scalar = slope1 is not None if slope is not None else g1 is not None
+    rests = tuple(any(s0 <= 0.5 * (a + b) <= s1 for s0, s1 in still) for a, b in key) if scalar else ()
+    if any(rests):                                  # the scalar paths on samples without a dwell's inside
+        grids, grid = _rest_grids(key, rests, dense, turn)
+        if slope is not None:
+            return _maximise_by_slope1(g, key, grids, grid, slope, slope1, g1)
+        return _maximise_by_g1(g, key, grids, grid, g1, xtol, rests)
     if slope is not None and slope1 is not None:    # one call for all the pieces' samples, on floats after
         return _maximise_by_slope1(g, key, grids, sample_grid(key, dense, turn), slope, slope1, g1)
     if slope is not None:
@@ -906,20 +919,14 @@ def rho_min(curve: PitchCurve) -> Extremum:
             sense.append(_sense(curve, d, c6))
         return sense[0] * curvature(c6)
 
-    key = tuple(curve.pieces())
-    rests = tuple(any(s0 <= 0.5 * (a + b) <= s1 for s0, s1 in curve.still) for a, b in key)
-    if any(rests):          # the pieces where the follower rests sampled at their ends only
-        grids, grid = _rest_grids(key, rests)
-        top = _maximise_by_g1(g, key, grids, grid, lambda d: sense[0] * curvature1(fn1(d)), 1e-11, rests)
-    else:
-        top = maximise(g, key, g1=lambda d: sense[0] * curvature1(fn1(d)))
+    top = maximise(g, curve.pieces(), g1=lambda d: sense[0] * curvature1(fn1(d)), still=curve.still)
     return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
 
 
 @lru_cache(maxsize=256)
-def _rest_grids(pieces: tuple[tuple[float, float], ...], rests: tuple[bool, ...]
-                ) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
-    """:func:`sample_grids` of ``pieces`` (:data:`_DENSE`) and their concatenation, each piece where the
+def _rest_grids(pieces: tuple[tuple[float, float], ...], rests: tuple[bool, ...], dense: int = _DENSE,
+                turn: float | None = None) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
+    """:func:`sample_grids` of ``pieces`` and their concatenation, each piece where the
     follower rests (``rests``) cut down to its first and last sample (read-only arrays, made once). The other
     pieces keep their samples, so their candidates are the same.
 
@@ -927,7 +934,7 @@ def _rest_grids(pieces: tuple[tuple[float, float], ...], rests: tuple[bool, ...]
     >>> len(grids[1]), bool(np.all(grids[0] == sample_grids(((0.0, 1.0), (1.0, 2.0)), _DENSE)[0])), grid.size
     (2, True, 739)
     """
-    grids = tuple(d[[0, -1]] if rest else d for d, rest in zip(sample_grids(pieces, _DENSE), rests))
+    grids = tuple(d[[0, -1]] if rest else d for d, rest in zip(sample_grids(pieces, dense, turn), rests))
     for d in grids:
         d.flags.writeable = False
     grid = np.concatenate(grids)
@@ -1228,6 +1235,9 @@ class LineFamily:
     memo: dict = field(default_factory=dict, compare=False, repr=False)
     """What :func:`envelope_terms` computed on the last few read-only sample arrays (:func:`sample_grid`): the
     searches over the turn share those samples."""
+    still: tuple[tuple[float, float], ...] = ()
+    """The cam angles [a, b] (radians) where the follower rests: the lines turn about O at a constant distance,
+    their envelope an arc about O (see :func:`maximise`)."""
 
     def pieces(self) -> list[tuple[float, float]]:
         """The smooth pieces of the turn."""
@@ -1442,7 +1452,7 @@ def envelope_rho_min(fam: LineFamily) -> Extremum:
         _, dphi, ddphi, p, dp, ddp = fn1(d)
         return -(p + div1(ddp * dphi - dp * ddphi, pow1(dphi, 3.0)))
 
-    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces(), g1=None if fn1 is None else g1)
+    low = maximise(lambda d: -envelope(fam, d)[3], fam.pieces(), g1=None if fn1 is None else g1, still=fam.still)
     return Extremum(-low.value, low.delta)
 
 

@@ -132,7 +132,7 @@ def flat_family(cam: FlatArmCam) -> LineFamily:
         return (half_pi - sigma * d + tau * (phi - half_pi), -sigma + tau * d1, tau * d2, a * s - f, a * c * d1,
                 a * (c * d2 - s * (d1 * d1)))
 
-    return LineFamily(fn, cam.breaks(), fn1)
+    return LineFamily(fn, cam.breaks(), fn1, still=cam.rests())
 
 
 def _pivot_path(A0: Point, inv: float, d: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -297,10 +297,11 @@ class _FaceSearch:
         return slope1
 
     def farthest(self) -> Extremum:
-        return maximise(self.place, self.pcs, slope=self.slope, slope1=self._slope1(1.0))
+        return maximise(self.place, self.pcs, slope=self.slope, slope1=self._slope1(1.0), still=self.fam.still)
 
     def nearest(self) -> Extremum:
-        lo = maximise(lambda d: -self.place(d), self.pcs, slope=lambda d: -self.slope(d), slope1=self._slope1(-1.0))
+        lo = maximise(lambda d: -self.place(d), self.pcs, slope=lambda d: -self.slope(d), slope1=self._slope1(-1.0),
+                      still=self.fam.still)
         if self.seg is not None:            # a minimum as flat as roundoff at an end of the segment: the end
             pcs = self.pcs
             ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
