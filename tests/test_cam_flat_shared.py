@@ -47,8 +47,8 @@ def _fresh(fam: LineFamily) -> LineFamily:
 
 def _unshared_place_search(cam: FlatArmCam, seg) -> tuple[Extremum, Extremum]:
     """(nearest, farthest) contact by :func:`maximise` on the plain array forms (fresh samples, every candidate
-    valued by :func:`face_place` on arrays, or one by one when a few), the segment end rule of the nearest as
-    :class:`_FaceSearch` applies it."""
+    valued by :func:`face_place` on arrays, or one by one when a few), a segment sampled as densely as the turn
+    and the segment end rule of the nearest as :class:`_FaceSearch` applies them."""
     fam = osc_flat.flat_family(cam)
     A0, inv, tau = Point(0.0, cam.a), -float(cam.sigma), cam.tau
     pcs = fam.pieces() if seg is None else osc_flat._segment_pieces(fam, seg)
@@ -65,7 +65,8 @@ def _unshared_place_search(cam: FlatArmCam, seg) -> tuple[Extremum, Extremum]:
         return lambda d: sign * osc_flat.face_place_slope1(fam, A0, inv, tau, d)
 
     hi = maximise(place, pcs, slope=slope, slope1=slope1(1.0))
-    lo = maximise(lambda d: -place(d), pcs, slope=lambda d: -slope(d), slope1=slope1(-1.0))
+    turn = None if seg is None else sum(b - a for a, b in fam.pieces())     # a segment as densely as the turn
+    lo = maximise(lambda d: -place(d), pcs, slope=lambda d: -slope(d), slope1=slope1(-1.0), turn=turn)
     if seg is not None:
         ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
         for lv, d in zip(place(ends), ends):

@@ -35,7 +35,7 @@ True
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from functools import lru_cache
 from typing import Callable, Sequence
 
@@ -1309,16 +1309,44 @@ def envelope_terms(fam: LineFamily, delta) -> EnvelopeTerms:
         hit = fam.memo.get(id(d))
         if hit is not None and hit[0] is d:
             return hit[1]
+        run = _memo_run(fam, d)
+        if run is not None:
+            return _keep_terms(fam, d, run)
     phi, dphi, ddphi, p, dp, ddp = fam.eval(d)
     lam = dp / dphi
     rho = p + (ddp * dphi - dp * ddphi) / dphi ** 3
     c, s = np.cos(phi), np.sin(phi)
     out = EnvelopeTerms(phi, dphi, ddphi, p, dp, ddp, c, s, lam, rho, p * c - lam * s, p * s + lam * c)
-    if keep:
-        if len(fam.memo) >= _MEMO_GRIDS:
-            fam.memo.clear()
-        fam.memo[id(d)] = (d, out)               # (d kept with it: its id is not reused while it is here)
+    return _keep_terms(fam, d, out) if keep else out
+
+
+def _keep_terms(fam: LineFamily, d: np.ndarray, out: EnvelopeTerms) -> EnvelopeTerms:
+    if len(fam.memo) >= _MEMO_GRIDS:
+        fam.memo.clear()
+    fam.memo[id(d)] = (d, out)                   # (d kept with it: its id is not reused while it is here)
     return out
+
+
+def _memo_run(fam: LineFamily, d: np.ndarray) -> EnvelopeTerms | None:
+    """The terms at ``d`` cut from those kept for a larger sample array that holds ``d`` as a run of
+    consecutive samples (a segment's samples within the turn's, taken as densely: :func:`maximise` with
+    ``turn``), or None. Each term is elementwise, so the cut holds the numbers computing them at ``d`` gives.
+
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, 0 * d, 0 * d))
+    >>> pcs = ((0.0, 1.0), (1.0, TWO_PI))
+    >>> whole, part = sample_grid(pcs, 64), sample_grid(pcs[1:], 64, TWO_PI - 1.0 + 1.0)
+    >>> t = envelope_terms(fam, whole)
+    >>> bool(np.all(envelope_terms(fam, part).x == t.x[-part.size:]))
+    True
+    """
+    n = d.size
+    if d.ndim != 1 or not n:
+        return None
+    for grid, terms in list(fam.memo.values()):
+        i = int(np.searchsorted(grid, d[0]))
+        if grid.ndim == 1 and i + n <= grid.size and grid[i] == d[0] and np.array_equal(grid[i:i + n], d):
+            return EnvelopeTerms(*(getattr(terms, f.name)[i:i + n] for f in fields(EnvelopeTerms)))
+    return None
 
 
 _MEMO_GRIDS = 4

@@ -241,6 +241,9 @@ class _FaceSearch:
     def __init__(self, fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any) -> None:
         self.fam, self.A0, self.inv, self.tau, self.seg = fam, A0, inv, tau, seg
         self.pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
+        self.turn = None if seg is None else sum(b - a for a, b in fam.pieces())
+        """A segment is sampled as densely as the turn (its samples are then the turn search's there, whose
+        envelope terms it cuts out: :func:`~geomcon.cam.profile.envelope_terms`)."""
         self.scalar = fam.fn1 is not None
         self._last: list = [None, None, None]
 
@@ -301,7 +304,7 @@ class _FaceSearch:
 
     def nearest(self) -> Extremum:
         lo = maximise(lambda d: -self.place(d), self.pcs, slope=lambda d: -self.slope(d), slope1=self._slope1(-1.0),
-                      still=self.fam.still)
+                      turn=self.turn, still=self.fam.still)
         if self.seg is not None:            # a minimum as flat as roundoff at an end of the segment: the end
             pcs = self.pcs
             ends = np.array([pcs[0][0], np.nextafter(pcs[-1][1], pcs[-1][0])])
