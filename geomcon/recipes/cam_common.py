@@ -467,7 +467,11 @@ def arm_contacts(pos: dict[str, np.ndarray], eps: int, curve: PitchCurve, rr: fl
     nx, ny = -pos["Ax"] + (pos["Ax"] - pos["Bx"]) * (1.0 - k), -pos["Ay"] + (pos["Ay"] - pos["By"]) * (1.0 - k)
     size = np.hypot(nx, ny)
     nx, ny = nx / size, ny / size
-    tx, ty = curve.eval(np.radians(np.asarray(pos["delta"], dtype=float)))[2:4]
+    d = np.radians(np.asarray(pos["delta"], dtype=float))
+    if curve.fn1 is not None and d.size <= SCALAR_AT:     # a few angles: the tangents on floats (only a side is read)
+        tx, ty = np.array([curve.fn1(x)[2:4] for x in d.tolist()], dtype=float).reshape(-1, 2).T
+    else:
+        tx, ty = curve.eval(d)[2:4]
     side = np.where(curve.orientation * (-ty * nx + tx * ny) >= 0.0, 1.0, -1.0)
     return pos["Bx"] + side * rr * nx, pos["By"] + side * rr * ny
 
