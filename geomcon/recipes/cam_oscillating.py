@@ -257,26 +257,25 @@ def construct(g: Mapping[str, Any]) -> Construction:
     R = max(a, r0 + math.radians(h) * L + rr)
     add_motion_diagram(sc, prog, h, Point(1.55 * R, -0.5 * R), 3.0 * R, 0.5 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
-    As = [sc.add(f"A_d{i}", turned, A0, O, -float(cam.sigma), d, label=f"{i}′", style="division", caption=(
-        f"Divide the circle of radius a {back[0]} (−ω) from A0 as the cam angles of the divisions: 1′ … {n}′ "
-        "(the pivot's inverted positions)",
-        f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′(摆杆转轴的反转位置)")
-        if i == 1 else ("", "")) for i, d in enumerate(divs, 1)]
-    Cs = []
-    for i, (A, d) in enumerate(zip(As, divs), 1):
-        Cs.append(sc.add(f"C_d{i}", turned, B0, O, -float(cam.sigma), d, style="point", caption=(
-            f"Arcs of radius L about 1′ … {n}′ meet the base circle at C1 … C{n} (the arm's initial position "
-            "turned with the frame)", f"以 1′ … {n}′ 为圆心、L 为半径作弧交基圆于 C1 … C{n}(摆杆起始位置随机架反转)")
-            if i == 1 else ("", "")))
-        if drawing:
-            sc.add(f"arc_d{i}", circle, A, L)
     Bs = []
-    for i, (A, C, d) in enumerate(zip(As, Cs, divs), 1):
-        Bs.append(sc.add(f"B_d{i}", laid_off, C, A, cam, d, style="point", caption=(
-            "Lay off the arm angles ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, …: ∠CiA0′Bi = ψi, A0′Bi = L, "
-            "points B1 … B" + str(n), "在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …:∠Ci A0′ Bi = ψi,得 B1 … B"
-            + str(n)) if i == 1 else ("", "")))
-        if drawing:
+    if drawing:                 # the divisions' inverted positions (pivot, arm, pitch point): drawing only
+        As = [sc.add(f"A_d{i}", turned, A0, O, -float(cam.sigma), d, label=f"{i}′", style="division", caption=(
+            f"Divide the circle of radius a {back[0]} (−ω) from A0 as the cam angles of the divisions: 1′ … {n}′ "
+            "(the pivot's inverted positions)",
+            f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′(摆杆转轴的反转位置)")
+            if i == 1 else ("", "")) for i, d in enumerate(divs, 1)]
+        Cs = []
+        for i, (A, d) in enumerate(zip(As, divs), 1):
+            Cs.append(sc.add(f"C_d{i}", turned, B0, O, -float(cam.sigma), d, style="point", caption=(
+                f"Arcs of radius L about 1′ … {n}′ meet the base circle at C1 … C{n} (the arm's initial position "
+                "turned with the frame)", f"以 1′ … {n}′ 为圆心、L 为半径作弧交基圆于 C1 … C{n}(摆杆起始位置随机架反转)")
+                if i == 1 else ("", "")))
+            sc.add(f"arc_d{i}", circle, A, L)
+        for i, (A, C, d) in enumerate(zip(As, Cs, divs), 1):
+            Bs.append(sc.add(f"B_d{i}", laid_off, C, A, cam, d, style="point", caption=(
+                "Lay off the arm angles ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, …: ∠CiA0′Bi = ψi, A0′Bi = L, "
+                "points B1 … B" + str(n), "在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …:∠Ci A0′ Bi = ψi,得 B1 … B"
+                + str(n)) if i == 1 else ("", "")))
             sc.add(f"arm_d{i}", segment, A, Bs[-1], style="ghost")
     top = prog.rise.end
     At, Ct, Bt = inv.position("top", top, visible=False)
@@ -309,16 +308,19 @@ def construct(g: Mapping[str, Any]) -> Construction:
             f"The {part}'s worst position (largest α): the arm A0′B and the common normal at B, through the relative "
             "instant centre P of cam and arm on OA0′ (A0′P = a/(1 − εψ′))",
             f"{zh}压力角最大的位置:摆杆 A0′B;过 B 的公法线通过凸轮与摆杆的相对瞬心 P(在 OA0′ 上,A0′P = a/(1 − εψ′))"))
-        add_bar(sc, f"warm_{part}", A, B, style="link-alt")
+        if drawing:                         # the arm, the common normal and B's velocity: drawing only
+            add_bar(sc, f"warm_{part}", A, B, style="link-alt")
         k = sc.add(f"k_{part}", speed_ratio, cam, where, part, visible=False)
-        n = sc.add(f"n_{part}", arm_normal, A, B, O, k, visible=False)
-        v = sc.add(f"v_{part}", arm_velocity, A, B, cam.tau if part == "rise" else -cam.tau, visible=False)
-        sc.add(f"normal_{part}", normal_segment, B, n, 0.6 * L, style="path")
-        sc.add(f"velocity_{part}", velocity_segment, B, v, 0.45 * L, style="ghost")
+        if drawing:
+            n = sc.add(f"n_{part}", arm_normal, A, B, O, k, visible=False)
+            v = sc.add(f"v_{part}", arm_velocity, A, B, cam.tau if part == "rise" else -cam.tau, visible=False)
+            sc.add(f"normal_{part}", normal_segment, B, n, 0.6 * L, style="path")
+            sc.add(f"velocity_{part}", velocity_segment, B, v, 0.45 * L, style="ghost")
         al = sc.add(f"alpha_max_{part}", arm_pressure_deg, A, B, O, k, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"α between the normal and the velocity of B (⊥ A0′B): the {part}'s α_max",
                              f"法线与 B 点速度方向(⊥ A0′B)之夹角:{zh}最大压力角"))
-        sc.add(f"mark_alpha_{part}", pressure_mark, B, n, v, al, 0.3 * L, role=Role.ANNOTATION, style="angle")
+        if drawing:
+            sc.add(f"mark_alpha_{part}", pressure_mark, B, n, v, al, 0.3 * L, role=Role.ANNOTATION, style="angle")
         answers[f"alpha_max_{part}"] = f"alpha_max_{part}"
         answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
     at = tuple(g.get("at") or ())
