@@ -18,7 +18,7 @@ from typing import Any, Mapping
 from ..analytic.guide_bar_offset import guide_bar_offset_extremes
 from ..errors import NotAMechanism
 from ..geometry import Point, ToLeftOf, ToRightOf, circle, circle_circle, point_along, rotate, segment, thales_circle
-from ..scene import Role, Scene
+from ..scene import Role, Scene, marks
 from .base import Construction, Quantity
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, k_ratio, length, total
 
@@ -109,9 +109,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add(f"guide{i}", segment, sc.add(f"G0{i}", _guide_end, C, T, B, 0.0, visible=False), G,
                    style="link" if i == 1 else "link-alt", role=Role.RESULT)
             sc.add(f"CD{i}", segment, C, D, style="ghost", role=Role.CONSTRUCTION)
+            sc.add(f"slider{i}", _block_along, B, C, T, role=Role.ANNOTATION, style="slider")   # B's block on the bar
     if L is not None:
         if drawing:
             sc.add("D1D2", segment, Ds[0], Ds[1], style="construction", caption=("Join D1D2", "连接 D1D2"))
+            for i, D in enumerate(Ds, 1):        # the ram's block at the lever's end, moving along D1D2
+                sc.add(f"ram{i}", _ram_block, D, Ds[0], Ds[1], role=Role.ANNOTATION, style="slider")
         sc.add("H", length, Ds[0], Ds[1], role=Role.MEASUREMENT, unit="mm",
                caption=("The ram's stroke H = D1D2", "滑枕行程 H = D1D2"))
         answers["H"] = "H"
@@ -120,6 +123,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
         add_angle_mark(sc, "mark_psi", C, T1, T2, "ψ", ps)
         add_angle_mark(sc, "mark_theta", A, B1x, B2, "θ", th)
     return Construction(sc, answers, points)
+
+
+def _block_along(b: Point, c: Point, t: Point) -> marks.Slider:
+    """The slider block at ``b`` on the guide bar, whose line is parallel to c→t."""
+    return marks.Slider(b, t - c)
+
+
+def _ram_block(d: Point, d1: Point, d2: Point) -> marks.Slider:
+    """The ram's block at the lever's end ``d``, sliding along the stroke D1D2."""
+    return marks.Slider(d, d2 - d1)
 
 
 def _abs_diff(a: float, b: float) -> float:

@@ -20,7 +20,7 @@ from ..geometry import (LeftOf, Line, Point, RightOf, ToRightOf, circle, circle_
 from ..scene import Ref, Role, Scene, marks
 from ..scene.marks import vector
 from .base import Quantity
-from .common import add_bar, add_pivot
+from .common import add_bar, add_pivot, guide_between
 
 PHI = Quantity("phi", "deg", "crank angle, counter-clockwise from +x (from A→D for the four-bar)", minimum=-360.0,
                inclusive=True, maximum=360.0)
@@ -126,6 +126,7 @@ def add_crank_velocity(sc: Scene, A: Ref, B: Ref, AB: Any, omega: Any, gap: Any,
                         f"作 p{label} ⊥ AB(指向与 ω 转向一致):vB = ω·lAB = {abs(omega) * AB:g} mm/s"))
     if sc.drawing:
         sc.add("v_pb", vector, p, b, role=Role.ANNOTATION, style="vector")
+        sc.add("omega1", marks.rotation, A, 1.0 if omega > 0 else -1.0, "ω1", role=Role.ANNOTATION, style="angle")
     return mu_v, p, b
 
 
@@ -375,8 +376,8 @@ def add_slider_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref, R
     if sc.drawing:
         add_bar(sc, "AB", A, B, words[4])
         add_bar(sc, "BC", B, C)
-        if not centres:
-            sc.add("slider", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+        sc.add("slider", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+        sc.add("guide_mark", guide_between, C, C, gl, 0.6 * AB, role=Role.ANNOTATION, style="guide")
     return A, F, gl, B, C
 
 

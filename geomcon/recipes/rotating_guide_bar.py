@@ -15,7 +15,7 @@ from typing import Any, Mapping
 from ..analytic.guide_bar_offset import rotating_guide_bar_extremes
 from ..errors import NotAMechanism
 from ..geometry import Leftmost, Point, Rightmost, circle, line_circle, line_through, point_along, segment
-from ..scene import Role, Scene
+from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg, difference, length
 
@@ -39,6 +39,16 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
         raise NotAMechanism(f"AB = {g['AB']:g} ≤ AC = {g['AC']:g}: the guide bar only swings (oscillating guide-bar, "
                             "guide_bar.extremes); a rotating guide-bar needs the crank longer than the frame")
     return []
+
+
+def _block(at: Point, c: Point, cr: Point) -> marks.Slider:
+    """A slider block at ``at`` moving along the guide c→cr."""
+    return marks.Slider(at, cr - c)
+
+
+def _farther(c: Point, b: Point, d: Point) -> Point:
+    """The guide bar's end from C: the farther of the block's pin B and the arm's end D (the bar carries both)."""
+    return d if abs(d - c) >= abs(b - c) else b
 
 
 def _ratio(slow: float, quick: float) -> float:
@@ -71,12 +81,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if drawing:
         add_bar(sc, "AB1", A, B1, ("Crank positions AB1, AB2", "曲柄位置 AB1、AB2"))
         add_bar(sc, "AB2", A, B2, style="link-alt")
+        for i, B in enumerate((B1, B2), 1):      # B's block on the guide bar, which lies along the guide here
+            if CD is None:
+                add_bar(sc, f"CB{i}", C, B, style="link" if i == 1 else "link-alt")
+            sc.add(f"slider{i}", _block, B, C, Cr, role=Role.ANNOTATION, style="slider")
     quick = sc.add("phi_quick", angle_deg, A, B1, B2, role=Role.MEASUREMENT, unit="deg",
                    caption=("The quick stroke: the crank turns through φ_quick = ∠B1AB2 (past C)",
                             "空回行程曲柄转角 φ_quick = ∠B1AB2(经过 C 一侧)"))
     slow = sc.add("phi_slow", _full_turn, quick, role=Role.MEASUREMENT, unit="deg",
                   caption=("The working stroke: φ_slow = 360° − φ_quick", "工作行程曲柄转角 φ_slow = 360° − φ_quick"))
-    sc.add("theta", difference, 180.0, quick, role=Role.MEASUREMENT, unit="deg",
+    th = sc.add("theta", difference, 180.0, quick, role=Role.MEASUREMENT, unit="deg",
            caption=("θ = 180° − φ_quick", "极位夹角 θ = 180° − φ_quick"))
     sc.add("K", _ratio, slow, quick, role=Role.MEASUREMENT, caption=("K = φ_slow/φ_quick", "K = φ_slow/φ_quick"))
     answers = {q.name: q.name for q in ANSWERS[:4]}
@@ -86,14 +100,22 @@ def construct(g: Mapping[str, Any]) -> Construction:
                      caption=(f"The arm's end D{i} on CB{i} at CD = {CD:g} from C", f"在 CB{i} 上截取 CD = {CD:g} 得 D{i}"))
               for i, B in enumerate((B1, B2), 1)]
         if drawing:
-            for i, D in enumerate(Ds, 1):
-                add_bar(sc, f"CD{i}", C, D, style="link" if i == 1 else "link-alt")
+            for i, (B, D) in enumerate(zip((B1, B2), Ds), 1):
+                end = sc.add(f"bar_end{i}", _farther, C, B, D, visible=False)
+                add_bar(sc, f"CD{i}", C, end, style="link" if i == 1 else "link-alt")
+                sc.add(f"ram{i}", _block, D, C, Cr, role=Role.ANNOTATION, style="slider", caption=(
+                    "The ram at its ends of stroke at D1 and D2 (there the coupler DE lies along the stroke line, so E "
+                    "moves by D1D2)", "滑枕位于行程两端 D1、D2 处(此时连杆 DE 沿导路,E 的行程等于 D1D2)") if i == 1 else ("", ""))
         sc.add("S", length, Ds[0], Ds[1], role=Role.MEASUREMENT, unit="mm",
                caption=("The ram's stroke S = D1D2", "滑枕行程 S = D1D2"))
         answers["S"] = "S"
         points |= {"D1": "D1", "D2": "D2"}
     if drawing:
         add_angle_mark(sc, "mark_quick", A, B1, B2, "φ_quick", quick)
+        B1x = sc.add("B1x", point_along, A, B1, -AB, visible=False)
+        sc.add("ext1", segment, A, B1x, style="construction", caption=("θ between AB2 and B1A extended",
+                                                                       "极位夹角 θ:AB2 与 B1A 延长线的夹角"))
+        add_angle_mark(sc, "mark_theta", A, B1x, B2, "θ", th)
     return Construction(sc, answers, points)
 
 

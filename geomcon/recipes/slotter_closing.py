@@ -97,3 +97,13 @@ def measure_design(sc: Scene, A: Any, C: Any, B1: Any, B2: Any, S: float, *, bey
     sc.add("CD", length, C, D1, role=Role.MEASUREMENT, unit="mm", caption=("Arm CD", "导杆臂长 CD"))
     if drawing:
         add_bar(sc, "CD1", C, D1, style="link")
+        for i, B in enumerate((B1, B2), 1):     # the guide bar along ee carries the crank pin's block at B
+            add_bar(sc, f"CB{i}", C, B, (("The guide bar along ee at each extreme, the block B on it",
+                                          "极限位置时导杆沿 ee,滑块 B 在导杆上") if i == 1 else ("", "")),
+                    style="link" if i == 1 else "link-alt")
+            sc.add(f"slider_B{i}", _block_along, B, C, role=Role.ANNOTATION, style="slider")
+
+
+def _block_along(b: Point, c: Point) -> marks.Slider:
+    """The block at ``b`` sliding along the guide bar c–b."""
+    return marks.Slider(b, b - c)

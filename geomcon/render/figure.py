@@ -26,7 +26,7 @@ import shapely.ops
 from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
-from .draw import Context, Drawn, TextRequest
+from .draw import Context, Drawn, TextRequest, _paper_dir
 from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
@@ -167,7 +167,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         box = viewbox or grow(content_box(scene, steps, values), FIG_MARGIN * mu)
     view = View(box, mu, origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
-    ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view))
+    ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
+                  sliders=_sliders(steps, values, view))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -193,6 +194,17 @@ def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) ->
         segs = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Segment) and x.a != x.b]
         if segs and resolve_style(s.style, s.role, "curve").layer == "links":
             out += [(view.p(x.a), view.p(x.b)) for x in segs]
+    return tuple(out)
+
+
+def _sliders(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
+    """The slider blocks of the frame on paper, as (centre, unit direction)."""
+    out = []
+    for _, s in steps:
+        v = values[s.key]
+        for x in (v if isinstance(v, (tuple, list)) else (v,)):
+            if isinstance(x, Slider):
+                out.append((view.p(x.at), _paper_dir(x.direction)))
     return tuple(out)
 
 

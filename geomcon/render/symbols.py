@@ -78,13 +78,48 @@ def _ground_at(c: XY, angle: float, style: Style) -> Drawn:
 
 
 def draw_slider(s: Slider, style: Style, ctx: Context) -> Drawn:
-    """A slider block centred on its joint, its long side along the direction of motion."""
+    """A slider block centred on its joint, its long side along the direction of motion; made smaller where
+    another block of the figure comes near, so that the two stay apart by :data:`BLOCK_GAP`
+    (:func:`_block_size`).
+
+    >>> from geomcon.geometry import Point
+    >>> from geomcon.render.style import STYLES
+    >>> from geomcon.render.view import View
+    >>> ctx = Context(View((-20.0, -20.0, 20.0, 20.0), 1.0, (0.0, 0.0)), sliders=(((20.0, 20.0), (1.0, 0.0)),
+    ...                                                                              ((26.0, 20.0), (1.0, 0.0))))
+    >>> xs = [x for x, _ in draw_slider(Slider(Point(0, 0), Point(1, 0)), STYLES["slider"], ctx).shapes[0].pts]
+    >>> round(max(xs) - min(xs), 6)                  # 6 mm from the next block: 4.8 mm long, 1.2 mm apart
+    4.8
+    """
     c = ctx.view.p(s.at)
     u = _paper_dir(s.direction)
+    return Drawn([Poly(_block(c, u, *_block_size(c, u, ctx)), pen(style), closed=True, fill=PAPER)])
+
+
+BLOCK_GAP = 0.8
+"""Least paper distance (mm) between two slider blocks on one guide line."""
+
+
+def _block(c: XY, u: XY, a: float, b: float) -> tuple[XY, ...]:
     n = (-u[1], u[0])
+    return tuple(_add(_add(c, u, i * a), n, j * b) for i, j in ((1, 1), (-1, 1), (-1, -1), (1, -1)))
+
+
+def _block_size(c: XY, u: XY, ctx: Context) -> tuple[float, float]:
+    """Half the length and half the width of the block at ``c`` along ``u``: those of :data:`SLIDER`, or less
+    where another block of the figure would come nearer than :data:`BLOCK_GAP`. Each pair of blocks shrinks
+    alike (first the length, to half of it, then the width, to 60 %), so both ends of a pair agree."""
     a, b = SLIDER[0] / 2, SLIDER[1] / 2
-    pts = tuple(_add(_add(c, u, i * a), n, j * b) for i, j in ((1, 1), (-1, 1), (-1, -1), (1, -1)))
-    return Drawn([Poly(pts, pen(style), closed=True, fill=PAPER)])
+    steps = [(a * f, b) for f in (1.0, 0.9, 0.8, 0.7, 0.6, 0.5)] + [(a / 2, b * f) for f in (0.9, 0.8, 0.7, 0.6)]
+    for q, w in ctx.sliders:
+        if math.hypot(q[0] - c[0], q[1] - c[1]) <= 1e-6 or math.hypot(q[0] - c[0], q[1] - c[1]) > 2 * (a + b):
+            continue
+        for i, (sa, sb) in enumerate(steps):
+            mine, theirs = shapely.Polygon(_block(c, u, sa, sb)), shapely.Polygon(_block(q, w, sa, sb))
+            if mine.distance(theirs) >= BLOCK_GAP or i == len(steps) - 1:
+                a, b = min(a, sa), min(b, sb)
+                break
+    return a, b
 
 
 def draw_guide(g: Guide, style: Style, ctx: Context) -> Drawn:
