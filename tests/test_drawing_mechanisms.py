@@ -4,15 +4,17 @@ kinematics problem shows the crank's ω, the quick-return figures mark θ."""
 from __future__ import annotations
 
 import itertools
+import math
 from pathlib import Path
 
 import pytest
 import shapely
 
-from geomcon.geometry.primitives import Point
+from geomcon.geometry.primitives import Point, Segment
 from geomcon.problems import load_problem
 from geomcon.render.shapes import ArcP, Poly
-from geomcon.scene.marks import AngleMark, Rotation, Slider
+from geomcon.render.symbols import HATCH
+from geomcon.scene.marks import AngleMark, Bearing, Ground, Guide, Rotation, Slider
 
 from test_drawing_defects import NAMES, _members, figure, runs
 
@@ -99,3 +101,114 @@ def test_the_rotating_guide_bar_marks_theta(name):
     assert isinstance(m, AngleMark)
     assert abs(m.value - (180.0 - fig.values["phi_quick"])) < 1e-9
     assert [runs(t) for g in fig.groups if g.key == "mark_theta" for t in g.texts] == [f"θ={m.value:.2f}°"]
+
+
+def _pie(arc: ArcP) -> shapely.Polygon:
+    """The sector an angle mark's arc marks: its vertex and the arc."""
+    n = max(4, int(abs(arc.sweep) / math.radians(10.0)) + 1)
+    return shapely.Polygon([arc.c] + [arc.at(i / n) for i in range(n + 1)])
+
+
+NO_GROUND = {("200-19_base_radius_alpha_and_rho", "O_design"), ("200-20_oscillating_base_radius_rho", "O_design")}
+"""O′, the centre the pressure-angle rule alone would give, shown beside the chosen O for comparison: a point
+of the construction, not a pivot of the mechanism drawn."""
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_fixed_pivot_has_a_ground_symbol(name):
+    """D in 001-15 and 001-22, A* in 004-03 and O in 200-18 were plain circles: every fixed pivot of a figure
+    carries a ground symbol."""
+    fig = figure(name)
+    grounds = [fig.values[g.key].at for g in fig.groups if isinstance(fig.values[g.key], Ground)]
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    pivots = [g.key for g in fig.groups if isinstance(fig.values[g.key], Point) and g.shapes
+              and " style-pivot" in g.classes and (name, g.key) not in NO_GROUND]
+    for k in pivots:
+        assert any(abs(fig.values[k] - q) <= 1e-9 * size for q in grounds), (name, k)
+
+
+def test_the_gallery_has_grounds_to_check():
+    assert sum(isinstance(figure(n).values[g.key], Ground) for n in NAMES for g in figure(n).groups) >= 80
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_ground_symbol_lies_in_an_angle_or_across_the_frame_line(name):
+    """300-02 and 001-19 drew A's ground inside the φ_quick (180° − θ) arc, 001-10's hatch crossed the frame
+    line AD: away from its hinge a ground symbol meets no angle mark's sector (vertex to arc) and no frame
+    line (links: :func:`test_drawing_defects.test_no_ground_symbol_crosses_a_link`)."""
+    fig = figure(name)
+    pies = [_pie(sh) for g in fig.groups if any(isinstance(m, AngleMark) for m in _members(fig.values[g.key]))
+            for sh in g.shapes if isinstance(sh, ArcP)]
+    frames = [shapely.LineString(sh.pts) for g in fig.groups if " style-frame" in g.classes      # the frame AD,
+              and isinstance(fig.values[g.key], Segment) for sh in g.shapes      # not a centre line through A
+              if isinstance(sh, Poly) and len(sh.pts) == 2]
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if isinstance(v, Ground):
+            hinge = shapely.Point(fig.view.p(v.at)).buffer(1.7)
+            symbol = shapely.union_all([shapely.LineString(sh.pts) for sh in g.shapes]).difference(hinge)
+            assert not [p for p in pies if symbol.intersects(p)], (name, g.key)
+            assert not [f for f in frames if symbol.intersects(f)], (name, g.key)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_ground_hatch_stands_at_45_degrees_to_its_base(name):
+    """001-31's hatch looked mangled: in every ground symbol the base is the longest stroke and each hatch
+    stroke makes 45° with it."""
+    fig = figure(name)
+    for g in fig.groups:
+        if isinstance(fig.values[g.key], Ground):
+            legs, base, *hatch = g.shapes
+            (a, b) = base.pts
+            bu = ((b[0] - a[0]), (b[1] - a[1]))
+            for h in hatch:
+                (p, q) = h.pts
+                hu = (q[0] - p[0], q[1] - p[1])
+                cos = abs(bu[0] * hu[0] + bu[1] * hu[1]) / math.hypot(*bu) / math.hypot(*hu)
+                assert abs(cos - math.sqrt(0.5)) < 1e-9, (name, g.key)
+
+
+TRANSLATING = [n for n in NAMES if recipe(n) in ("cam.translating", "cam.eccentric")
+               and any(g.key == "stem" for g in figure(n).groups)]        # an oscillating arm has no stem
+
+
+@pytest.mark.parametrize("name", TRANSLATING)
+def test_every_translating_follower_has_one_guide_symbol(name):
+    """001-23a/b, 200-02, 200-17 drew the stem's guide as chevrons (arrow feathers), 001-24, 200-01… as a chevron
+    bearing, 001-25…29 as a wall on one side, 001-30 none: every translating follower's stem carries exactly
+    one guide, the bearing symbol (two hatched walls, their strokes parallel), and no other guide mark."""
+    fig = figure(name)
+    bearings = [fig.values[g.key] for g in fig.groups if isinstance(fig.values[g.key], Bearing)]
+    assert len(bearings) == 1
+    assert not [g.key for g in fig.groups if isinstance(fig.values[g.key], Guide)]
+    (group,) = [g for g in fig.groups if isinstance(fig.values[g.key], Bearing)]
+    strokes = {round(math.degrees(math.atan2(sh.pts[1][1] - sh.pts[0][1], sh.pts[1][0] - sh.pts[0][0])) % 180.0, 6)
+               for sh in group.shapes if sh.pen.width == HATCH}
+    assert len(strokes) == 1                        # parallel on both sides: never mirrored into chevrons
+
+
+LINKAGES = [n for n in NAMES if not recipe(n).startswith("cam.") and recipe(n) != "four_bar.link_ranges"]
+
+
+@pytest.mark.parametrize("name", LINKAGES)
+def test_every_linkage_figure_draws_its_links_solid(name):
+    """001-10c and 004-03 drew only C1, C2, D and the candidates A, 001-03b only dashed triangles: every linkage
+    figure draws its moving links solid in at least one position (three for a four-bar, two for the others)."""
+    fig = figure(name)
+    solid = [sh for g in fig.groups if g.layer == "links" and " style-vector" not in g.classes for sh in g.shapes
+             if isinstance(sh, Poly) and len(sh.pts) == 2 and not sh.pen.dash]
+    four = recipe(name).startswith(("four_bar.", "crank_rocker."))
+    assert len(solid) >= (3 if four else 2), name
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if recipe(n).startswith("rocker_slider.")])
+def test_each_position_block_has_its_link_tone(name):
+    """100-07: the three rods F_iE_i ran over each other's blocks: positions 2 and 3 are lighter, and each block
+    is drawn in the tone of its own rod."""
+    fig = figure(name)
+    tone = {g.key: sh.pen.stroke for g in fig.groups for sh in g.shapes if isinstance(sh, Poly)}
+    n = sum(1 for g in fig.groups if g.key.startswith("slider") and g.key[6:].isdigit())
+    assert n >= 2
+    assert len({tone[f"F{i}E{i}"] for i in range(1, n + 1)}) == n
+    for i in range(1, n + 1):
+        assert tone[f"slider{i}"] == tone[f"F{i}E{i}"]

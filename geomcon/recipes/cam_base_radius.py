@@ -295,7 +295,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                                    f"The highest admissible point at e = {g['e']:g} from the axis: the centre O",
                                    "可行域内离 B0 最近的点即最佳回转中心 O" if g.get("e") is None else
                                    "在偏距 e 处可行域的最高点即回转中心 O"))
-    add_rotation(sc, O, k)
+    add_rotation(sc, O, k, ground=True)
     r0 = sc.add("r0", length, O, B0, role=Role.MEASUREMENT, unit="mm",
                 caption=("r0 = OB0", "基圆半径 r0 = OB0"))
     sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
@@ -490,6 +490,8 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
     tau, eps = float(motion.tau), float(motion.eps)
     sc = Scene("Base circle of an oscillating-follower cam from the arm's velocity images")
     A0 = sc.given("A0", Point(0.0, 0.0), style="pivot", caption=("A0: the arm's pivot", "A0:摆杆转轴"))
+    if sc.drawing:
+        sc.add("A0_ground", marks.ground, A0, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     B0 = sc.given("B0", Point(tau * L, 0.0), style="joint", caption=(
         f"A0B0 = L = {L:g}: the arm at the start of the rise", f"A0B0 = L = {L:g}:推程起始时的摆杆"))
     add_bar(sc, "arm0", A0, B0)
@@ -529,7 +531,7 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
          f"The admissible point of the circle of radius a = {g['a']:g} about A0 nearest B0: the centre O"),
         ("可行域内离 B0 最近的点即最佳凸轮中心 O" if g.get("a") is None else
          f"以 A0 为圆心、a = {g['a']:g} 为半径的圆在可行域内离 B0 最近的点即凸轮中心 O")))
-    add_rotation(sc, O, 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0)
+    add_rotation(sc, O, 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0, ground=True)
     if g.get("a") is not None:
         sc.add("a_arc", arc_through, A0, O, 0.35, style="construction")
     a = sc.add("a", length, O, A0, role=Role.MEASUREMENT, unit="mm", caption=("a = OA0", "中心距 a = OA0"))

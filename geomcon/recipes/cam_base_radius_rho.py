@@ -117,7 +117,7 @@ def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
     inv = inversion_sign(g.get("rotation", "ccw"))
     sc = Scene("Base circle of a flat-faced follower from the curvature limit")
     O = sc.given("O", Point(0.0, 0.0), style="pivot", label="O", caption=("O: the cam's centre", "O:凸轮回转中心"))
-    add_rotation(sc, O, 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0)
+    add_rotation(sc, O, 1.0 if g.get("rotation", "ccw") == "ccw" else -1.0, ground=True)
     size = rho_allow + h
     origin = Point(1.6 * size, 0.0)
     width = 3.0 * size

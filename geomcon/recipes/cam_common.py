@@ -211,10 +211,13 @@ def add_cam_centre(sc: Scene, sense: float) -> Ref:
     return O
 
 
-def add_rotation(sc: Scene, O: Ref, sense: float) -> None:
-    """The arrow ω of the cam's sense of rotation about O, drawn with O (drawing only)."""
+def add_rotation(sc: Scene, O: Ref, sense: float, ground: bool = False) -> None:
+    """The arrow ω of the cam's sense of rotation about O, drawn with O (drawing only); ``ground`` adds O's
+    ground symbol (a centre found by the construction, not given by :func:`~.common.add_pivot`)."""
     if sc.drawing:
         sc.add("omega", marks.rotation, O, 1.0 if sense > 0 else -1.0, role=Role.ANNOTATION, style="angle")
+        if ground:
+            sc.add("O_ground", marks.ground, O, -math.pi / 2, role=Role.ANNOTATION, style="ground")
 
 
 def add_base_circle(sc: Scene, O: Ref, r0: float, what: tuple[str, str] = ("pitch curve", "理论廓线")) -> Ref:

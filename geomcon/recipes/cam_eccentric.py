@@ -371,8 +371,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("roller", circle, B, rr, role=Role.RESULT, style="link", caption=("", ""))
     top = sc.add("top", lambda b, k: b + UP * k, B, 0.6 * R, visible=False)
     sc.add("stem", segment, B, top, role=Role.RESULT, style="link", caption=("", ""))
-    sc.add("guide_mark", lambda b: marks.Guide(b + UP * (0.25 * R), b + UP * (0.55 * R), 1), B,
-           role=Role.ANNOTATION, style="guide")
+    sc.add("guide_mark", lambda b: marks.bearing(b + UP * (0.4 * R), UP), B, role=Role.ANNOTATION, style="guide")
     sc.add("delta", turned_against, O, ref0, D if e else B, sense, role=Role.MEASUREMENT, unit="deg",
            caption=("Cam angle from the lowest position: δ = ∠K0OD against ω" if e else "δ = ∠B0OB against ω",
                     "自最低位置的凸轮转角 δ = ∠K0OD(逆 ω)" if e else "凸轮转角 δ = ∠B0OB(逆 ω)"))
@@ -465,6 +464,7 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
     sc.add("face_seg", lambda k, f: segment(Point(min(k.x, f.x) - 0.3 * R, f.y), Point(max(k.x, f.x) + 0.3 * R, f.y)),
            K, F, role=Role.RESULT, style="link", caption=("", ""))
     sc.add("stem", lambda f: segment(f, f + UP * (0.6 * R)), F, role=Role.RESULT, style="link", caption=("", ""))
+    sc.add("guide_mark", lambda f: marks.bearing(f + UP * (0.4 * R), UP), F, role=Role.ANNOTATION, style="guide")
     rise = sc.add("rise_angle", turned_against, O, B0, B1, sense, role=Role.MEASUREMENT, unit="deg",
                   caption=("Rise angle ∠B0OB1 against ω (the face ⊥ OB0 lowest, ⊥ OB1 highest)",
                            "推程运动角 ∠B0OB1(逆 ω;平底 ⊥ OB0 最低,⊥ OB1 最高)"))

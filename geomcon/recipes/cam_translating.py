@@ -366,10 +366,8 @@ def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr:
     top = Point(e, s0 + h + 0.55 * r0 + rr)
     sc.add("stem", segment, B0 if follower != "roller" else Point(e, s0 + rr), top, style="link", role=Role.RESULT,
            caption=("The follower in its lowest position", "从动件处于最低位置"))
-    half = 0.08 * r0                                # the guide drawn at the cam's scale (no fixed mm)
-    g0, g1 = Point(e, s0 + h + 0.2 * r0 + rr), Point(e, s0 + h + 0.45 * r0 + rr)
-    sc.add("guide_l", marks.guide, g0 - Point(half, 0), g1 - Point(half, 0), -1, role=Role.ANNOTATION, style="guide")
-    sc.add("guide_r", marks.guide, g0 + Point(half, 0), g1 + Point(half, 0), 1, role=Role.ANNOTATION, style="guide")
+    sc.add("guide", marks.bearing, Point(e, s0 + h + 0.35 * r0 + rr), Point(0.0, 1.0), role=Role.ANNOTATION,
+           style="guide")                           # the stem's guide: one symbol for every cam
     if follower == "roller":
         sc.add("roller_start", circle, B0, rr, style="link", role=Role.RESULT)
     if follower == "flat":

@@ -17,10 +17,10 @@ from ..analytic.crank_rocker_best import crank_rocker_best
 from ..errors import NotAMechanism
 from ..numeric import stationary
 from ..geometry import Point, segment
-from ..scene import Role, Scene
+from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import gamma_min_of, half_difference, half_sum, length
-from .crank_rocker_crank_frame import add_frame_rocker
+from .crank_rocker_crank_frame import add_frame_rocker, add_unit_linkage
 from .crank_rocker_design import admissible_arcs
 from .search import maximise
 from .theta_circle import K_MAX_OBTUSE, add_theta_circle, add_theta_step, refuse_tiny_theta
@@ -92,6 +92,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     A = sc.add("A", best_on_arcs, D, C1, C2, *arcs, role=Role.RESULT, style="pivot", label="A*",
                caption=("A* on the admissible arcs where γmin is largest (searched along the arcs)",
                         "在可行弧段上搜索使 γmin 最大的 A*"))
+    if sc.drawing:
+        sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     lam = sc.add("scale", _ratio, AD, A, D, role=Role.MEASUREMENT,
                  caption=(f"Scale the design by AD/A*D so that the frame is AD = {AD:g}", f"按 AD/A*D 缩放,使机架长为 {AD:g}"))
     for name, op, args, words in (("AB", half_difference, (A, C1, C2), ("AB = (A*C_extended − A*C_folded)/2, scaled", "AB,按比例")),
@@ -102,9 +104,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("gamma_min", gamma_min_of, A, D, C1, C2, role=Role.MEASUREMENT, unit="deg",
            caption=("γmin of the design (the shape's own: scaling keeps angles)", "所设计机构的最小传动角 γmin"))
     if sc.drawing:
-        for k, (P, nm) in enumerate(((C1, "C1"), (C2, "C2"), (D, "D"))):
-            sc.add(f"A{nm}", segment, A, P, style="construction" if k < 2 else "frame", caption=(
-                ("Join A* to C1, C2 and D", "连接 A* 与 C1、C2、D") if k == 0 else ("", "")))
+        for k, (P, nm) in enumerate(((C1, "C1"), (C2, "C2"))):
+            sc.add(f"A{nm}", segment, A, P, style="construction", caption=(
+                ("Join A* to C1, C2", "连接 A* 与 C1、C2") if k == 0 else ("", "")))
+    add_unit_linkage(sc, A, D, C1, C2)
     sc.add("AD_unit", length, A, D, visible=False, unit="mm")
     answers = {q.name: q.name for q in ANSWERS}
     return Construction(sc, answers, {"A": "A", "D": "D", "C1": "C1", "C2": "C2"})

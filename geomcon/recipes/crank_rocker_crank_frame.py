@@ -14,7 +14,7 @@ from typing import Any, Mapping
 
 from ..analytic.design_by_k_crank_frame import crank_frame_designs
 from ..geometry import Point, segment
-from ..scene import Role, Scene, marks
+from ..scene import Ref, Role, Scene, marks
 from ..scene.tape import lifted
 from .base import Construction
 from .common import angle_deg, folded_flag, gamma_min_of, half_difference, half_sum, near_flag
@@ -87,6 +87,41 @@ def add_frame_rocker(sc: Scene, AD: Any, psi: Any) -> tuple[Any, Any, Any]:
     return D, C1, C2
 
 
+def crank_end(A: Point, C1: Point, C2: Point, extended: bool) -> Point:
+    """The crank pin B of the unit drawing in an extreme position: on the folded line beyond A (away from the
+    nearer of C1, C2), or on the extended line towards the farther, AB = (AC_far − AC_near)/2 from A."""
+    near, far = (C1, C2) if abs(C1 - A) <= abs(C2 - A) else (C2, C1)
+    ab = (abs(far - A) - abs(near - A)) / 2.0
+    u = ((far - A) if extended else (A - near)).unit()
+    return A + u * ab
+
+
+def add_unit_linkage(sc: Scene, A: Any, D: Any, C1: Any, C2: Any, optional: bool = False,
+                     labels: tuple[str | None, str | None] = ("B1", "B2")) -> None:
+    """The designed linkage drawn solid on the unit drawing in both extreme positions: the crank AB, the
+    coupler BC and the frame AD (the rocker DC1, DC2 is drawn already); a figure that shows only the
+    construction leaves the answer undrawn (drawing only). ``labels`` names the crank pins (None: unlabelled,
+    where the drawing is too small for two more names)."""
+    if not sc.drawing:
+        return
+    opt = dict(optional=True) if optional else {}
+    sc.add("AD_design", segment, A, D, role=Role.RESULT, style="frame", caption=("The frame AD", "机架 AD"), **opt)
+    for i, extended in enumerate((False, True), 1):
+        near = sc.add(f"Cn{i}", _pick_c, A, C1, C2, extended, visible=False, **opt)
+        B = sc.add(f"B{i}", crank_end, A, C1, C2, extended, role=Role.RESULT, style="joint", label=labels[i - 1],
+                   caption=((f"The crank pins B1 (folded) and B2 (extended), AB = (AC_far − AC_near)/2",
+                             "曲柄销 B1(重叠共线)与 B2(拉直共线),AB = (AC远 − AC近)/2") if i == 1 else ("", "")), **opt)
+        style = "link" if i == 1 else "link-alt"
+        sc.add(f"AB{i}_design", segment, A, B, role=Role.RESULT, style=style, **opt)
+        sc.add(f"B{i}C{i}_design", segment, B, near, role=Role.RESULT, style=style, **opt)
+
+
+def _pick_c(A: Point, C1: Point, C2: Point, extended: bool) -> Point:
+    """The nearer of C1, C2 to A (the folded position), or the farther (the extended one)."""
+    near, far = (C1, C2) if abs(C1 - A) <= abs(C2 - A) else (C2, C1)
+    return far if extended else near
+
+
 def construct(g: Mapping[str, Any]) -> Construction:
     """The unit-size θ-circles; A where the crank-to-frame ratio is AB/AD; each design scaled to AD."""
     K, AB, AD, psi = g["K"], g["AB"], g["AD"], g["psi"]
@@ -120,6 +155,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sols.append({"AB": f"AB_{i}", "BC": f"BC_{i}", "AD": f"AD_{i}", "CD": f"CD_{i}", "psi": f"psi_{i}",
                      "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
+    # solution 1 drawn as a linkage; B2 unnamed: on the small unit drawing its name would sit nearer A2
+    add_unit_linkage(sc, Ref("A_1"), D, C1, C2, optional=True, labels=("B1", None))
     return Construction(sc, dict(sols[0]), {"D": "D", "C1": "C1", "C2": "C2"}, solutions=tuple(sols),
                         no_solution=f"no crank-rocker with K = {K:g}, ψ = {psi:g}° has the crank AB = {AB:g} on the frame AD = {AD:g}")
 

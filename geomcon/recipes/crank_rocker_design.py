@@ -410,6 +410,7 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
     drawing = sc.drawing                     # the frame, the rocker's bar and the join only a drawing needs
     if drawing:
         sc.add("AD_frame", segment, A, D, role=Role.GIVEN, style="frame", caption=("The frame AD", "机架 AD"))
+        sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     c = lifted(_frame_c1, AD, CD, phi)
     C1 = sc.given("C1", c, style="joint", caption=(f"The given extreme position DC1 at ∠ADC1 = {phi:g}°",
                                                    f"作已知极限位置 DC1,∠ADC1 = {phi:g}°"))

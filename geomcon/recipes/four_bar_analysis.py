@@ -196,7 +196,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     Pe, je, e, je1 = (P3, j[3], Y, j[2]) if drives_input else (P0, j[0], X, j[1])
     d_full = in_crank if drives_input else out_crank
     gammas = []
-    for i, sign in enumerate((1.0, -1.0), 1):
+    solid = in_crank == out_crank and g.get("phi") is None     # no extreme and no given position: the first
+    for i, sign in enumerate((1.0, -1.0), 1):                  # γ position is the linkage drawn solid
         diag = abs(F - d) if sign > 0 else F + d
         if not abs(Z - e) - REL_TOL * scale <= diag <= Z + e + REL_TOL * scale:
             continue
@@ -209,7 +210,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
                     caption=(f"Circles of radius {Z:g} about {jd1}{mark} and {e:g} about {je} meet at {je1}{mark}",
                              f"以 {jd1}{mark} 为圆心、{Z:g} 为半径与以 {je} 为圆心、{e:g} 为半径的圆交于 {je1}{mark}"))
         for a, b, nm in ((Pd, Bg, "d"), (Bg, Cg, "c"), (Cg, Pe, "e")) if drawing else ():
-            add_bar(sc, f"g{i}_{nm}", a, b, style="ghost", role=Role.CONSTRUCTION)
+            add_bar(sc, f"g{i}_{nm}", a, b, **(dict(style="link", role=Role.RESULT) if solid else
+                                               dict(style="ghost", role=Role.CONSTRUCTION)))
+        solid = False
         gk = sc.add(f"gamma_{i}", transmission_deg, Bg, Cg, Pe, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"Transmission angle γ{i} = ∠{jd1}{mark}{je1}{mark}{je} (acute form)",
                              f"传动角 γ{i} = ∠{jd1}{mark}{je1}{mark}{je}(取锐角)"))

@@ -309,11 +309,11 @@ def _rocker_lines(sc: Scene, D: Ref, psi, r: float) -> list[Ref]:
 
 def _positions(sc: Scene, D: Ref, guide: Ref, F: list, E: list) -> None:
     for i, (Fi, Ei) in enumerate(zip(F, E), 1) if sc.drawing else ():          # a drawing's steps only
-        style = ("link", "link-2", "link-3")[i - 1]
+        style = ("pos1", "pos2", "pos3")[i - 1]                  # positions 2, 3 lighter, blocks in their tone
         sc.add(f"DF{i}", segment, D, Fi, role=Role.RESULT, style=style,
                caption=(f"The designed linkage in position {i}: DF{i}E{i}", f"所设计机构的第 {i} 位置 DF{i}E{i}"))
         sc.add(f"F{i}E{i}", segment, Fi, Ei, role=Role.RESULT, style=style)
-        sc.add(f"slider{i}", slider_block, Ei, guide, role=Role.ANNOTATION, style="slider")
+        sc.add(f"slider{i}", slider_block, Ei, guide, role=Role.ANNOTATION, style=("slider", "slider-2", "slider-3")[i - 1])
 
 
 def _flags(sc: Scene, D: Ref, guide: Ref, F: list, E: list, DF: Ref, EF: Ref, margin: float) -> tuple[str, ...]:

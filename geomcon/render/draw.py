@@ -65,7 +65,8 @@ class Context:
     """What drawing a value may look at besides the value: the view, the points drawn in the figure (a
     construction circle is drawn as compass arcs through them), the centre of the drawing (labels prefer
     to point away from it), the angle marks drawn so far at each vertex (nested marks get larger arcs) and
-    the links of the figure on paper (a ground symbol turns away from them) and its slider blocks."""
+    the links of the figure on paper (a ground symbol turns away from them and from the angle marks' sectors)
+    and its slider blocks."""
 
     view: View
     points: tuple[Point, ...] = ()
@@ -73,6 +74,8 @@ class Context:
     marks_at: dict[tuple[float, float], int] = field(default_factory=dict)
     links: tuple[tuple[XY, XY], ...] = ()
     sliders: tuple[tuple[XY, XY], ...] = ()
+    sectors: tuple[tuple[XY, ...], ...] = ()
+    """The angle marks of the figure on paper, as polygons (the vertex and its arc): a ground symbol keeps out."""
     """The slider blocks of the figure on paper, as (centre, unit direction): blocks close on one guide
     shorten so that they never overlap."""
 

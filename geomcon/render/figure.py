@@ -31,7 +31,7 @@ from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent,
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
-from .symbols import draw, kind_of
+from .symbols import draw, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
@@ -168,7 +168,7 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     view = View(box, mu, origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
     ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
-                  sliders=_sliders(steps, values, view))
+                  sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -187,12 +187,12 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
 
 
 def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
-    """The links of the frame (segments of a style on the links layer) on paper."""
+    """The links of the frame (segments of a style on the links layer) and its frame lines on paper."""
     out = []
     for _, s in steps:
         v = values[s.key]
         segs = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Segment) and x.a != x.b]
-        if segs and resolve_style(s.style, s.role, "curve").layer == "links":
+        if segs and (s.style == "frame" or resolve_style(s.style, s.role, "curve").layer == "links"):
             out += [(view.p(x.a), view.p(x.b)) for x in segs]
     return tuple(out)
 
@@ -206,6 +206,21 @@ def _sliders(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) 
             if isinstance(x, Slider):
                 out.append((view.p(x.at), _paper_dir(x.direction)))
     return tuple(out)
+
+
+def _sectors(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, ...], ...]:
+    """The angle marks of the frame on paper as polygons: the vertex and its arc, at the largest radius the
+    mark may take (:func:`geomcon.render.symbols.sector`)."""
+    marks = [m for _, s in steps for m in _all(values[s.key]) if isinstance(m, AngleMark)]
+    at: dict[tuple[float, float], int] = {}
+    for m in marks:
+        key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
+        at[key] = at.get(key, 0) + 1
+    return tuple(p for m in marks for p in [sector(m, view, at[(round(m.vertex.x, 9), round(m.vertex.y, 9))])] if p)
+
+
+def _all(v: Any) -> list[Any]:
+    return [m for x in v for m in _all(x)] if isinstance(v, (tuple, list)) else [v]
 
 
 def merged_labels(steps: list[tuple[int, Any]], values: dict[str, Any], box: Box) -> dict[str, str | None]:

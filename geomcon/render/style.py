@@ -129,6 +129,9 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("ground", width=0.3, layer="ground"),
     Style("guide", width=0.4, layer="ground"),
     Style("slider", width=0.45, layer="sliders"),
+    Style("slider-2", stroke="#4f6d8f", width=0.4, layer="sliders"),
+    Style("slider-3", stroke="#8fa6bf", width=0.35, layer="sliders"),
+    # the blocks of positions 2 and 3 (pos2, pos3), in their link's tone: which rod ends in which block
     Style("angle", width=0.25, layer="marks"),
     Style("dim", width=0.2, layer="marks"),
     Style("vector", stroke="#1c4e80", width=0.45, layer="links"),
@@ -151,7 +154,7 @@ _ROLE_DEFAULTS: dict[tuple[Role, str], str] = {
 
 MARK_DEFAULTS: dict[str, str] = {
     "AngleMark": "angle", "RightAngleMark": "right-angle", "Dimension": "dim",
-    "Ground": "ground", "Slider": "slider", "Guide": "guide",
+    "Ground": "ground", "Slider": "slider", "Guide": "guide", "Bearing": "guide",
 }
 """Default style of each mark type (by class name)."""
 

@@ -21,7 +21,7 @@ from typing import Any
 import shapely
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
-from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
+from ..scene.marks import AngleMark, Bearing, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
 from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
                    draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
@@ -36,28 +36,64 @@ a value always prints (a leader joins a far text to its arc)."""
 
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
-    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side; turned
-    from its side by the least multiple of 45° that keeps it off every link and point of the figure (a
-    ground drawn across a link reads as a frame the link cannot pass)."""
+    """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side at 45° to
+    it; turned from its side by the least multiple of 45° that keeps it off every link, every angle mark's
+    sector and every point of the figure (a ground drawn across a link reads as a frame the link cannot pass;
+    one inside an angle's arc hides the angle); where no direction is clear, the one that meets least."""
     c = ctx.view.p(g.at)
-    first = None
+    best, least = None, math.inf
     for k in (0, 1, -1, 2, -2, 3, -3, 4):
         out = _ground_at(c, g.angle + k * math.pi / 4, style)
-        first = first or out
-        if not _crosses_links(c, out, ctx):
+        hit = _collision(c, out, ctx)
+        if hit == 0.0:
             return out
-    return first
+        if hit < least:
+            best, least = out, hit
+    return best
 
 
-def _crosses_links(c: XY, drawn: Drawn, ctx: Context) -> bool:
-    """Whether a ground symbol at paper point ``c`` meets a link away from the hinge it holds, or comes
-    within 1.5 mm of another point of the figure."""
+def _collision(c: XY, drawn: Drawn, ctx: Context) -> float:
+    """How much a ground symbol at paper point ``c`` meets, away from the hinge it holds: the length of it
+    inside angle marks' sectors, plus 10 mm for each link it crosses and for each other point of the figure
+    it comes within 1.5 mm of (0 when clear)."""
     hinge = shapely.Point(c).buffer(1.7, 8)
     geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
-    if ctx.links and shapely.intersects(geo, shapely.MultiLineString([list(s) for s in ctx.links])):
-        return True
+    hit = 0.0
+    if ctx.links:
+        hit += 10.0 * sum(bool(shapely.intersects(geo, shapely.LineString(s))) for s in ctx.links)
     near = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
-    return bool(near) and bool(shapely.dwithin(geo, shapely.MultiPoint(near), 1.5))
+    if near:
+        hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(near), 1.5))
+    for p in ctx.sectors:
+        hit += float(shapely.intersection(geo, shapely.Polygon(p)).length)
+    return hit
+
+
+def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
+    """The paper polygon an angle mark covers: its vertex and its arc at the largest radius it may be drawn
+    with (:func:`_radius` with ``nested`` marks at the vertex), 1 mm beyond; () for a mark of no angle.
+
+    >>> from geomcon.render.view import View
+    >>> p = sector(AngleMark(Point(0, 0), Point(1, 0), Point(0, 1), "θ", 90.0), View((-20, -20, 20, 20), 1.0, (0, 0)))
+    >>> p[0], len(p) > 10
+    ((20.0, 20.0), True)
+    """
+    if m.a == m.vertex or m.b == m.vertex:
+        return ()
+    va, vb, _ = angle_rays(m)
+    a0 = math.atan2(va.y, va.x)
+    phi = math.atan2(va.cross(vb), va.dot(vb))
+    if abs(phi) <= math.radians(0.2):
+        return ()
+    if m.radius:
+        r = view.length(m.radius)
+    else:
+        rays = [view.length(abs(v)) for v in (m.a - m.vertex, vb) if view.length(abs(v)) >= 4.0]
+        r = max(3.0, min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS) + 3.5 * (nested - 1)
+    c = view.p(m.vertex)
+    arc = ArcP(c, r + 1.0, -a0, -phi, Pen("#000", 0.1))
+    n = max(4, int(abs(phi) / math.radians(10.0)) + 1)
+    return (c,) + tuple(arc.at(i / n) for i in range(n + 1))
 
 
 def _ground_at(c: XY, angle: float, style: Style) -> Drawn:
@@ -141,6 +177,33 @@ def draw_guide(g: Guide, style: Style, ctx: Context) -> Drawn:
         q = _add(a2, u, k)
         out.shapes.append(Poly((q, _add(q, slant, 1.8)), Pen(style.stroke, HATCH)))
         k += 2.4
+    return out
+
+
+BEARING = (6.0, 1.6)
+"""A bearing block of a follower's guide: its length along the stem and its offset from the stem's axis
+(paper mm)."""
+
+
+def draw_bearing(m: Bearing, style: Style, ctx: Context) -> Drawn:
+    """The guide of a translating follower: two short walls either side of the stem, each hatched on its
+    outer side at 45°, the strokes of both parallel (two bearing blocks; strokes mirrored about the stem
+    read as an arrow's feathers), the same at every scale and in every cam figure."""
+    c = ctx.view.p(m.at)
+    u = _paper_dir(m.direction)
+    out = Drawn()
+    length, off = BEARING
+    for side in (1.0, -1.0):
+        n = (-u[1] * side, u[0] * side)
+        a, b = _add(_add(c, n, off), u, -length / 2), _add(_add(c, n, off), u, length / 2)
+        out.shapes.append(Poly((a, b), pen(style)))
+        slant = _unit(n[0] - side * u[0], n[1] - side * u[1])      # parallel strokes on both sides: no chevrons
+        d = 1.6 * math.sqrt(0.5)                                     # a stroke's run along the wall
+        k, hi = max(0.0, side * d) + 0.3, min(length, length + side * d)   # both ends beside the wall
+        while k <= hi + 1e-9:
+            q = _add(a, u, k)
+            out.shapes.append(Poly((q, _add(q, slant, 1.6)), Pen(style.stroke, HATCH)))
+            k += 1.2
     return out
 
 
@@ -316,7 +379,7 @@ def draw(value: Any, style: Style, ctx: Context, label: str | None = None) -> Dr
 
 _TABLE = {Segment: draw_segment, Polyline: draw_polyline, Line: draw_line, Ray: draw_line, Circle: draw_circle, Arc: draw_arc,
           AngleMark: draw_angle, RightAngleMark: draw_right_angle, Dimension: draw_dimension,
-          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Vector: draw_vector, Rotation: draw_rotation}
+          Ground: draw_ground, Slider: draw_slider, Guide: draw_guide, Bearing: draw_bearing, Vector: draw_vector, Rotation: draw_rotation}
 
 
 def kind_of(value: Any) -> str:
@@ -327,6 +390,6 @@ def kind_of(value: Any) -> str:
         return "curve"
     if isinstance(value, (tuple, list)):
         return kind_of(value[0]) if value else "none"
-    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide, Rotation)):
+    if isinstance(value, (AngleMark, RightAngleMark, Dimension, Ground, Slider, Guide, Bearing, Rotation)):
         return type(value).__name__
     return "none"

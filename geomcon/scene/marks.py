@@ -88,6 +88,24 @@ class Guide:
 
 
 @dataclass(frozen=True, slots=True)
+class Bearing:
+    """The guide of a translating follower's stem: two short hatched bearing blocks either side of the stem,
+    centred at ``at``, the stem running along ``direction`` (the same symbol for every cam)."""
+
+    at: Point
+    direction: Point
+
+
+def bearing(at: Point, direction: Point) -> Bearing:
+    """Build a :class:`Bearing` (an annotation step operation).
+
+    >>> bearing(Point(0, 0), Point(0, 1)).direction
+    Point(x=0.0, y=1.0)
+    """
+    return Bearing(at, direction)
+
+
+@dataclass(frozen=True, slots=True)
 class Rotation:
     """The sense of rotation of a part turning about ``at`` (a cam's ω): an arc with an arrowhead,
     counter-clockwise for ``sense`` > 0, clockwise for ``sense`` < 0, marked ``symbol``."""
