@@ -26,7 +26,7 @@ from ..geometry import (Above, Line, OtherThan, Point, ToLeftOf, circle, circle_
 from ..scene import Ref, Role, Scene, marks
 from .search import crossing, maximise
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, along_line, angle_deg, length, rebuilt_values
+from .common import add_angle_mark, add_bar, along_line, angle_deg, guide_between, length, rebuilt_values
 from .crank_slider import add_pressure_angles
 from .theta_circle import K_MAX_ACUTE, add_theta_step, refuse_tiny_theta, add_seeing_circle, add_theta_circle, arc_from_to
 
@@ -196,6 +196,8 @@ def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: floa
         add_bar(sc, f"AB{i}", A, B, (f"Draw the designed linkage, {how[0]}: AB{i}C{i}", f"画出所设计机构的{how[1]}共线位置 AB{i}C{i}"), style=style)
         add_bar(sc, f"B{i}C{i}", B, C, style=style)
         sc.add(f"slider{i}", marks.slider, C, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+    if drawing:                                  # the blocks run on a hatched guide, as in crank_slider.extremes
+        sc.add("guide_mark", guide_between, C1, C2, gl, 0.2 * H, role=Role.ANNOTATION, style="guide")
     FC1 = sc.add("FC1", length, Fa, C1, visible=False, unit="mm")
     gap = sc.add("gap", slack, FC1, u, Ref("e"), visible=False, unit="mm")
     add_pressure_angles(sc, A, B1, C1, gl, AB, BC, gap)
