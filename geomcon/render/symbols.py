@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import numpy as np
 import shapely
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
@@ -42,9 +43,10 @@ def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     one inside an angle's arc hides the angle); where no direction is clear, the one that meets least."""
     c = ctx.view.p(g.at)
     best, least = None, math.inf
+    near = _near(c, ctx)
     for k in (0, 1, -1, 2, -2, 3, -3, 4):
         out = _ground_at(c, g.angle + k * math.pi / 4, style)
-        hit = _collision(c, out, ctx)
+        hit = _collision(c, out, near)
         if hit == 0.0:
             return out
         if hit < least:
@@ -52,20 +54,39 @@ def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     return best
 
 
-def _collision(c: XY, drawn: Drawn, ctx: Context) -> float:
+GROUND_REACH = 9.0
+"""Paper mm from its hinge beyond which nothing can meet a ground symbol (its base's corners lie 5.9 mm out,
+its hatch strokes 1.7 mm further)."""
+
+
+def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY]]:
+    """What a ground symbol at ``c`` may meet, whichever way it turns: the links and the angle marks' sectors
+    within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
+    spot = shapely.Point(c)
+    links = shapely.linestrings([list(s) for s in ctx.links]) if ctx.links else None
+    pies = np.array([shapely.Polygon(p) for p in ctx.sectors], dtype=object) if ctx.sectors else None
+    if links is not None:
+        links = links[shapely.dwithin(links, spot, GROUND_REACH)]
+    if pies is not None:
+        pies = pies[shapely.dwithin(pies, spot, GROUND_REACH)]
+    pts = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
+    return links, pies, pts
+
+
+def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY]]) -> float:
     """How much a ground symbol at paper point ``c`` meets, away from the hinge it holds: the length of it
     inside angle marks' sectors, plus 10 mm for each link it crosses and for each other point of the figure
-    it comes within 1.5 mm of (0 when clear)."""
+    it comes within 1.5 mm of (0 when clear); ``near`` from :func:`_near`."""
+    links, pies, pts = near
     hinge = shapely.Point(c).buffer(1.7, 8)
     geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
     hit = 0.0
-    if ctx.links:
-        hit += 10.0 * sum(bool(shapely.intersects(geo, shapely.LineString(s))) for s in ctx.links)
-    near = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
-    if near:
-        hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(near), 1.5))
-    for p in ctx.sectors:
-        hit += float(shapely.intersection(geo, shapely.Polygon(p)).length)
+    if links is not None and len(links):
+        hit += 10.0 * int(shapely.intersects(geo, links).sum())
+    if pts:
+        hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(pts), 1.5))
+    if pies is not None and len(pies):
+        hit += float(shapely.length(shapely.intersection(geo, pies)).sum())
     return hit
 
 
