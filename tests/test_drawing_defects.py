@@ -253,4 +253,4 @@ def test_every_label_is_nearer_its_point_than_any_other(name):
             if t.cls == "label":
                 own = box(t).distance(shapely.Point(c))
                 others = [box(t).distance(shapely.Point(q)) for q in pts if q != c]
-                assert not others or min(others) >= own, (g.key, runs(t))
+                assert not others or min(others) >= own - 1e-9, (g.key, runs(t))   # a point drawn on another
