@@ -167,7 +167,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         box = viewbox or grow(content_box(scene, steps, values), FIG_MARGIN * mu)
     view = View(box, mu, origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
-    ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view))
+    ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
+                  frames=_links(steps, values, view, frame=True))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -185,13 +186,16 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     return Figure(view, groups, values, n)
 
 
-def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
-    """The links of the frame (segments of a style on the links layer) on paper."""
+def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View, frame: bool = False
+           ) -> tuple[tuple[Any, Any], ...]:
+    """The links of the frame (segments of a style on the links layer) on paper; with ``frame``, the fixed links
+    drawn dash-dot instead (style ``frame``: AD between the pivots)."""
     out = []
     for _, s in steps:
         v = values[s.key]
         segs = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Segment) and x.a != x.b]
-        if segs and resolve_style(s.style, s.role, "curve").layer == "links":
+        style = resolve_style(s.style, s.role, "curve")
+        if segs and (style.name == "frame" if frame else style.layer == "links"):
             out += [(view.p(x.a), view.p(x.b)) for x in segs]
     return tuple(out)
 
@@ -310,7 +314,8 @@ LED_DISTANCES = (0.0, 1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0)
 
 def _led(t: TextRequest) -> TextRequest:
     """A row's number that found no place by its point (it would cover another text, or sit nearer another
-    point): tried all round at :data:`LED_DISTANCES`, to be joined to its point by a leader."""
+    point), or a point's label that would cover a line there: tried all round at :data:`LED_DISTANCES`, to be
+    joined to its point by a leader (which says whose it is, wherever it lands)."""
     r = t.request
     req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES)
     return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan")
@@ -356,7 +361,12 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
                 alt, alt_score = placer.best(t.fallback.request, g.key)
                 if alt_score > score + 0.3:
-                    t, centre = t.fallback, alt
+                    t, centre, score = t.fallback, alt, alt_score
+            if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
+                led = _led(t)                       # a point's label that covers a line: farther, with a leader
+                alt, alt_score = placer.best(led.request, g.key)
+                if alt_score >= CROWDED and alt_score > score + 0.3:
+                    t, centre = led, alt
             box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
                                or nearer_rival(t.request, [centre])[0]):
@@ -365,7 +375,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 box = t.request.box(*centre)
                 leader = _fan_leader(t, box)
             else:
-                leader = _leader(t, box)
+                leader = _fan_leader(t, box) if t.cls == "label fan" else _leader(t, box)
             texts.append(box)
             placer.commit(box)
             if leader is not None:
