@@ -21,7 +21,7 @@ from geomcon.render.symbols import angle_rays
 from geomcon.render.shapes import ArcP, Poly, Text, obstacle
 from geomcon.render.page import PageSpec
 from geomcon.render.svg import place_figure
-from geomcon.scene.marks import AngleMark, Ground, Guide, Rotation, Slider
+from geomcon.scene.marks import AngleMark, Dimension, Ground, Guide, Rotation, Slider
 from geomcon.solve import solve
 
 PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
@@ -308,3 +308,40 @@ def test_001_11_prints_n_clear_of_the_links():
     links = [obstacle(sh) for g in fig.groups if g.layer == "links" for sh in g.shapes if isinstance(sh, Poly)]
     (label,) = [t for g in fig.groups if g.key == "Echoice" for t in g.texts]
     assert runs(label) == "N" and not any(box(label).intersects(o) for o in links)
+
+
+def _crossed(fig: Figure, key: str, t: Text) -> list[str]:
+    """The steps whose strokes the box of ``t`` (a text of step ``key``) crosses: its own step's too (the normal
+    drawn with a mark), but not the mark's arc, a label's own marker or its own leader."""
+    out = []
+    for g in fig.groups:
+        for sh in g.shapes:
+            if isinstance(sh, Text) or (g.key == key and (isinstance(sh, ArcP) or t.cls != "mark-text")):
+                continue
+            if g.key == key and isinstance(sh, Poly) and len(sh.pts) == 2 and sh.pen.width == 0.15:
+                continue                                        # its leader
+            if obstacle(sh).intersects(box(t)):
+                out.append(g.key)
+    return out
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_mark_value_crosses_the_lines_drawn_with_its_mark(name):
+    """200-20 printed "α=35.00°" across the arm's normal drawn with the mark (the placer ignored its own step)."""
+    fig = figure(name)
+    for g in fig.groups:
+        if isinstance(fig.values[g.key], Dimension):
+            continue                                            # a dimension's value stands on its line
+        for t in g.texts:
+            if t.cls == "mark-text":
+                assert g.key not in _crossed(fig, g.key, t), (g.key, runs(t))
+
+
+def test_200_20_values_and_labels_leave_the_construction_lines():
+    """200-20: "α=35.00°" crossed its normal and six construction lines, K2* five; each now crosses at most one
+    (the thicket of wedge lines leaves no free spot by them)."""
+    fig = figure("200-20_oscillating_base_radius_rho")
+    texts = {runs(t): (g.key, t) for g in fig.groups for t in g.texts}
+    for text in ("α=35.00°", "K2*"):
+        key, t = texts[text]
+        assert len(_crossed(fig, key, t)) <= 1, (text, _crossed(fig, key, t))

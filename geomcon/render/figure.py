@@ -29,7 +29,8 @@ from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, S
 from .draw import Context, Drawn, TextRequest
 from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
 from .rows import SEP, Fan, clusters, fans, row_centre
-from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
+from .crossings import NEAR, Crossings
+from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
@@ -345,6 +346,9 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts])
     fanned = _fanned(placer, groups, pending)
+    strokes = [(geom, g.key, isinstance(sh, ArcP), g.layer in ("links", "points"))
+               for (geom, _, _), (g, sh) in zip(obstacles, ((g, sh) for g in groups for sh in g.shapes))]
+    rows = [f.request.box(*f.request.candidates[0]) for f in fanned.values()]
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
         for t in drawn.texts:
@@ -368,6 +372,10 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 if alt_score >= CROWDED and alt_score > score + 0.3:
                     t, centre = led, alt
             box = t.request.box(*centre)
+            if t.cls in ("mark-text", "label") and not t.optional and not t.request.candidates and (
+                    score < 0.0 or (t.cls == "mark-text" and _on_own_lines(box, g.key, strokes))):
+                centre = _fewest_crossings(t, g.key, centre, strokes, texts + rows, view.paper_box)
+                box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
                                or nearer_rival(t.request, [centre])[0]):
                 t = _led(t)             # a row's number with no room by its point: farther, with a leader
@@ -382,6 +390,26 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 placer.commit(obstacle(leader))
                 g.shapes.append(recolour(leader, colour) if colour else leader)
             g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+
+
+def _on_own_lines(box: Any, key: str, strokes: list[tuple[Any, str, bool, bool]]) -> bool:
+    """Whether a mark's value at ``box`` crosses a line its own step draws besides the arc (the normal drawn
+    with the mark), which the placer does not see."""
+    return any(owner == key and not arc and shapely.intersects(box, geom) for geom, owner, arc, _ in strokes)
+
+
+def _fewest_crossings(t: TextRequest, key: str, centre: tuple[float, float],
+                      strokes: list[tuple[Any, str, bool, bool]], placed: list[Any], frame: Box) -> tuple[float, float]:
+    """A mark's value or a point's label the placer left covering something: the spot that crosses the fewest
+    drawn lines, when that is fewer than where it is (:mod:`.crossings`). A value's own step's lines count as a
+    link does (the normal drawn with it), its arc does not; a label keeps within a label's distances of its
+    point, whose marker does not count."""
+    label = t.cls == "label"
+    req = t.request
+    keep = [(geom, hard or owner == key) for geom, owner, arc, hard in strokes if not (owner == key and (arc or label))]
+    lines = Crossings([geom for geom, _ in keep], [hard for _, hard in keep], frame)
+    x, y, n = lines.fewest(req, placed, req.distances if label else NEAR)
+    return (x, y) if 0 <= n < int(lines.count([req.box(*centre)])[0]) else centre
 
 
 def _leader(t: TextRequest, box: Any) -> Poly | None:
