@@ -346,8 +346,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts])
     fanned = _fanned(placer, groups, pending)
-    strokes = [(geom, g.key, isinstance(sh, ArcP), g.layer in ("links", "points"))
-               for (geom, _, _), (g, sh) in zip(obstacles, ((g, sh) for g in groups for sh in g.shapes))]
+    strokes = _Strokes(obstacles, [(g, sh) for g in groups for sh in g.shapes], view.paper_box)
     rows = [f.request.box(*f.request.candidates[0]) for f in fanned.values()]
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
@@ -373,8 +372,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                     t, centre = led, alt
             box = t.request.box(*centre)
             if t.cls in ("mark-text", "label") and not t.optional and not t.request.candidates and (
-                    score < 0.0 or (t.cls == "mark-text" and _on_own_lines(box, g.key, strokes))):
-                centre = _fewest_crossings(t, g.key, centre, strokes, texts + rows, view.paper_box)
+                    score < 0.0 or (t.cls == "mark-text" and strokes.on_own_lines(box, g.key))):
+                centre = strokes.fewest_crossings(t, g.key, centre, texts + rows)
                 box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
                                or nearer_rival(t.request, [centre])[0]):
@@ -392,24 +391,44 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             g.shapes.append(_text_at(t, centre[0], centre[1], colour))
 
 
-def _on_own_lines(box: Any, key: str, strokes: list[tuple[Any, str, bool, bool]]) -> bool:
-    """Whether a mark's value at ``box`` crosses a line its own step draws besides the arc (the normal drawn
-    with the mark), which the placer does not see."""
-    return any(owner == key and not arc and shapely.intersects(box, geom) for geom, owner, arc, _ in strokes)
+class _Strokes:
+    """The strokes of a frame for :func:`_place_texts`' rescue of a text left across lines (:mod:`.crossings`):
+    each one's step, whether it is an arc (a mark's own arc) and whether it is hard (a link or a point's
+    marker); the counting tree is built the first time it is needed."""
 
+    def __init__(self, obstacles: list[tuple[Any, str, float]], shapes: list[tuple[StepDrawing, Shape]], frame: Box):
+        self.geoms = [geom for geom, _, _ in obstacles]
+        self.owners = [g.key for g, _ in shapes]
+        self.arcs = np.array([isinstance(sh, ArcP) for _, sh in shapes], dtype=bool)
+        self.hard = [g.layer in ("links", "points") for g, _ in shapes]
+        self.frame = frame
+        self._mine: dict[str, list[Any]] | None = None
+        self._lines: Crossings | None = None
 
-def _fewest_crossings(t: TextRequest, key: str, centre: tuple[float, float],
-                      strokes: list[tuple[Any, str, bool, bool]], placed: list[Any], frame: Box) -> tuple[float, float]:
-    """A mark's value or a point's label the placer left covering something: the spot that crosses the fewest
-    drawn lines, when that is fewer than where it is (:mod:`.crossings`). A value's own step's lines count as a
-    link does (the normal drawn with it), its arc does not; a label keeps within a label's distances of its
-    point, whose marker does not count."""
-    label = t.cls == "label"
-    req = t.request
-    keep = [(geom, hard or owner == key) for geom, owner, arc, hard in strokes if not (owner == key and (arc or label))]
-    lines = Crossings([geom for geom, _ in keep], [hard for _, hard in keep], frame)
-    x, y, n = lines.fewest(req, placed, req.distances if label else NEAR)
-    return (x, y) if 0 <= n < int(lines.count([req.box(*centre)])[0]) else centre
+    def on_own_lines(self, box: Any, key: str) -> bool:
+        """Whether a mark's value at ``box`` crosses a line its own step draws besides the arc (the normal drawn
+        with the mark), which the placer does not see."""
+        if self._mine is None:
+            self._mine = {}
+            for geom, owner, arc in zip(self.geoms, self.owners, self.arcs.tolist()):
+                if not arc:
+                    self._mine.setdefault(owner, []).append(geom)
+        mine = self._mine.get(key)
+        return bool(mine) and bool(shapely.intersects(box, mine).any())
+
+    def fewest_crossings(self, t: TextRequest, key: str, centre: tuple[float, float], placed: list[Any]
+                         ) -> tuple[float, float]:
+        """A mark's value or a point's label the placer left covering something: the spot that crosses the
+        fewest drawn lines, when that is fewer than where it is. A value's own step's lines count as a link
+        does (the normal drawn with it), its arc does not; a label keeps within a label's distances of its
+        point, whose marker does not count."""
+        if self._lines is None:
+            self._lines = Crossings(self.geoms, self.hard, self.frame, self.owners)
+        label = t.cls == "label"
+        own = (key, np.where(self.arcs, 0, 0 if label else 2))
+        req = t.request
+        x, y, n = self._lines.fewest(req, placed, req.distances if label else NEAR, own)
+        return (x, y) if 0 <= n < int(self._lines.count([req.box(*centre)], own)[0]) else centre
 
 
 def _leader(t: TextRequest, box: Any) -> Poly | None:
