@@ -38,15 +38,58 @@ a value always prints (a leader joins a far text to its arc)."""
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side; turned
     from its side by the least multiple of 45° that keeps it off every link and point of the figure (a
-    ground drawn across a link reads as a frame the link cannot pass)."""
+    ground drawn across a link reads as a frame the link cannot pass) and :data:`GROUND_ROOM` away from every
+    link and fixed link leaving the hinge (else the turn with the most room): the hatch points away from
+    them, not into the corner between two."""
     c = ctx.view.p(g.at)
-    first = None
+    away = _link_directions(c, ctx)
+    first, best = None, None
     for k in (0, 1, -1, 2, -2, 3, -3, 4):
-        out = _ground_at(c, g.angle + k * math.pi / 4, style)
+        angle = g.angle + k * math.pi / 4
+        out = _ground_at(c, angle, style)
         first = first or out
-        if not _crosses_links(c, out, ctx):
+        if _crosses_links(c, out, ctx):
+            continue
+        room = _angular_room((math.cos(angle), -math.sin(angle)), away)
+        if room >= GROUND_ROOM - 1e-9:
             return out
-    return first
+        if best is None or room > best[0] + 1e-9:
+            best = (room, out)
+    return best[1] if best is not None else first
+
+
+GROUND_ROOM = math.radians(50.0)
+"""Least angle (radians) between a ground symbol's direction and a link or fixed link leaving its hinge: the base's
+corners lie 45° off its direction and the hatch reaches beyond, so a line nearer runs into it (001-16: A's ground
+ran into the corner of AB1 and the frame AD)."""
+
+
+def _link_directions(c: XY, ctx: Context) -> list[XY]:
+    """Unit paper directions of the links and fixed links leaving the hinge at paper point ``c`` (a link through
+    it counts both ways)."""
+    out = []
+    for a, b in ctx.links + ctx.frames:
+        for p, q in ((a, b), (b, a)):
+            d = math.hypot(q[0] - c[0], q[1] - c[1])
+            if math.hypot(p[0] - c[0], p[1] - c[1]) <= 0.5 and d > 0.5:
+                out.append(((q[0] - c[0]) / d, (q[1] - c[1]) / d))
+        seg = (b[0] - a[0], b[1] - a[1])
+        n = math.hypot(*seg)
+        if n > 1.0:
+            t = ((c[0] - a[0]) * seg[0] + (c[1] - a[1]) * seg[1]) / (n * n)
+            off = abs((c[0] - a[0]) * seg[1] - (c[1] - a[1]) * seg[0]) / n
+            if off <= 0.5 and 0.5 / n < t < 1.0 - 0.5 / n:            # through the hinge
+                out += [(seg[0] / n, seg[1] / n), (-seg[0] / n, -seg[1] / n)]
+    return out
+
+
+def _angular_room(u: XY, away: list[XY]) -> float:
+    """The least angle (radians) between paper direction ``u`` and the directions ``away`` (π when none).
+
+    >>> round(math.degrees(_angular_room((0.0, 1.0), [(1.0, 0.0), (0.0, -1.0)])), 6)
+    90.0
+    """
+    return min((math.acos(max(-1.0, min(1.0, u[0] * v[0] + u[1] * v[1]))) for v in away), default=math.pi)
 
 
 def _crosses_links(c: XY, drawn: Drawn, ctx: Context) -> bool:
