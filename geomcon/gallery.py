@@ -120,19 +120,20 @@ def bench_gallery(problems_dir: Path) -> dict[str, str]:
         raise err from None
 
 
-def _cycles(problems_dir: Path) -> tuple[dict[str, str], list[str]]:
+def _kinematics(problems_dir: Path) -> tuple[dict[str, str], list[str], dict[str, str]]:
+    """The cycle gallery (its files and index rows) and the bench figure: one job, as both use the kinematics
+    modules (imported by the worker that runs it, not before the fork: no other job needs them)."""
     from .kinematics.gallery import cycle_gallery
-    return cycle_gallery(problems_dir)
+    files, rows = cycle_gallery(problems_dir)
+    return files, rows, bench_gallery(problems_dir)
 
 
-def _grading() -> dict[str, str]:
+def _classwork(problems_dir: Path) -> tuple[dict[str, str], dict[str, str]]:
+    """The graded example and the sample worksheet: one job, as both use the worksheet and grading modules
+    (imported by the worker that runs it, not before the fork: no other job needs them)."""
     from .grading.example import gallery_files
-    return gallery_files()
-
-
-def _worksheet(problems_dir: Path) -> dict[str, str]:
     spec = Path(problems_dir).resolve().parent / WORKSHEET_SPEC
-    return worksheet_gallery(spec) if spec.is_file() else {}
+    return gallery_files(), (worksheet_gallery(spec) if spec.is_file() else {})
 
 
 def _best_table() -> dict[str, str]:
@@ -140,21 +141,20 @@ def _best_table() -> dict[str, str]:
 
 
 def _preload() -> None:
-    """Import what the jobs use, once, before workers are forked (each worker would import, and without a
-    byte-code cache compile, every module it needs again): the renderer, the other parts, every recipe."""
+    """Import what every worker's jobs use, once, before workers are forked (each worker would import, and
+    without a byte-code cache compile, every module it needs again): the renderer, the cams' diagrams and twin,
+    every recipe. What one job alone uses (the worksheet and grading modules of :func:`_classwork`, the
+    kinematics and bench modules of :func:`_kinematics`) is left to the worker that runs it: imported there, it
+    runs beside the other workers' jobs instead of before every job."""
     from .analytic import cam_motion  # noqa: F401
-    from .bench import cycle_record  # noqa: F401
     from .cam import diagrams  # noqa: F401
-    from .grading import example, feedback, moodle, report  # noqa: F401
-    from .kinematics import gallery  # noqa: F401
     from .recipes import RECIPES
     from .render import player, results, svg, warning_words  # noqa: F401
-    from . import worksheet  # noqa: F401
     for name in RECIPES:
         RECIPES[name]
 
 
-EXPECTED_MS = {"_grading": 1035, "_cycles": 259, "_worksheet": 149, "law_diagrams": 72, "_best_table": 40,
+EXPECTED_MS = {"_classwork": 1184, "_kinematics": 290, "law_diagrams": 72, "_best_table": 40,
                "200-20_oscillating_base_radius_rho": 240, "000-04_slotter_cam_psi0": 176,
                "000-07_slotter_cam_actual_profile": 175, "000-05_slotter_cam_motion_law": 155,
                "000-08_slotter_cam_pressure_angle": 151, "200-19_base_radius_alpha_and_rho": 150,
@@ -162,7 +162,8 @@ EXPECTED_MS = {"_grading": 1035, "_cycles": 259, "_worksheet": 149, "law_diagram
                "200-05_oscillating_roller_cam": 107, "200-03_cam_roller_undercut": 107,
                "200-07_oscillating_flat_face": 103, "200-14_oscillating_arm_speeds": 101}
 """The CPU milliseconds of the gallery's longest jobs (parts by function, problems by file stem), measured
-2026-11-26 in one process; any other job counts as :data:`OTHER_MS`. Jobs are started longest first, so that no
+2026-11-26 in one process (``_classwork`` and ``_kinematics`` as the sums of the jobs they joined, with the
+graded example before its variants were prepared once); any other job counts as :data:`OTHER_MS`. Jobs are started longest first, so that no
 long job starts last while the other cores idle; the results are put together in the fixed order all the same."""
 OTHER_MS = 40
 
@@ -172,7 +173,7 @@ def _longest_first(jobs: list) -> list[int]:
 
     >>> from pathlib import Path
     >>> _longest_first([(_best_table, ()), (problem_gallery, (Path("p/200-20_oscillating_base_radius_rho.toml"), None)),
-    ...                 (_grading, ())])
+    ...                 (_classwork, (Path("p"),))])
     [2, 1, 0]
     """
     def cost(job) -> int:
@@ -195,14 +196,13 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
     paths = problem_files(problems_dir)
     if jobs != 1:
         _preload()
-    parts = [(_grading, ()), (_worksheet, (problems_dir,)), (_cycles, (problems_dir,)), (_best_table, ()),
-             (law_diagrams, ()), (bench_gallery, (problems_dir,))]
+    parts = [(_classwork, (problems_dir,)), (_kinematics, (problems_dir,)), (_best_table, ()), (law_diagrams, ())]
     all_jobs = parts + [(problem_gallery, (p, lang)) for p in paths]
     order = _longest_first(all_jobs)                # started longest first, put back in the fixed order
     done = [None] * len(all_jobs)
     for i, result in zip(order, run_ordered([all_jobs[i] for i in order], jobs)):
         done[i] = result
-    (grading, sheet, (cycle_out, cycle_rows), best, laws, bench), problems = done[:len(parts)], done[len(parts):]
+    ((grading, sheet), (cycle_out, cycle_rows, bench), best, laws), problems = done[:len(parts)], done[len(parts):]
     files: dict[str, str] = {}
     rows = []
     for out, row in problems:

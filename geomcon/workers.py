@@ -4,7 +4,8 @@ Every job is a module-level function and its arguments; the results come back in
 whatever the number of workers and whichever worker ran which job, so output assembled from them is the same
 bytes for ``jobs=1`` and ``jobs=8``. With one worker (or one job) everything runs in this process, in order —
 no pool, no pickling, and an error raises as it is. Workers are forked (where the platform has ``fork``) after the caller has imported what
-the jobs need, so no worker imports or compiles a module again.
+the jobs need, so no worker imports or compiles a module again; the caller's objects are frozen for the
+workers' garbage collector (``gc.freeze``, the documented way before a fork) while they run, and unfrozen after.
 
 A job that raises :class:`~geomcon.errors.GeomconError` is reported as that error's message and its ``file``
 (an error class with its own constructor need not survive pickling): :func:`run_ordered` raises a
@@ -19,6 +20,7 @@ True
 """
 from __future__ import annotations
 
+import gc
 import multiprocessing
 import os
 from dataclasses import dataclass
@@ -72,8 +74,12 @@ def run_ordered(jobs_list: Sequence[Job], jobs: int | None = None) -> list[Any]:
     else:
         methods = multiprocessing.get_all_start_methods()
         ctx = multiprocessing.get_context("fork" if "fork" in methods else None)
-        with ctx.Pool(n) as pool:
-            out = pool.map(_call, jobs_list, chunksize=1)
+        gc.freeze()          # what the caller holds (the modules imported for the jobs): left out of every
+        try:                 # worker's full collections, which would each walk it again
+            with ctx.Pool(n) as pool:
+                out = pool.map(_call, jobs_list, chunksize=1)
+        finally:
+            gc.unfreeze()
     for r in out:
         if isinstance(r, _Refused):
             err = GeomconError(r.message)

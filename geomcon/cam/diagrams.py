@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 import svgwrite
 
-from ..render.serial import svg_string
+from ..render.serial import Element, svg_string
 from .program import Program
 
 W, PANEL, GAP, LEFT, TOP = 170.0, 42.0, 14.0, 28.0, 16.0      # mm on paper
@@ -89,11 +89,14 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
                            text_anchor="middle"))
         prev = None
         for d, m in pieces:
-            pts = [(_f(X(a)), _f(Y(b))) for a, b in zip(d, m[k])]
-            if prev is not None and prev[1] != pts[0][1]:
-                g.add(dwg.line(prev, pts[0], stroke=INK, stroke_width=0.25, stroke_dasharray="0.8,0.6"))
-            g.add(dwg.polyline(pts, fill="none", stroke=INK, stroke_width=0.5))
-            prev = pts[-1]
+            # X and Y of every sample at once: the same operations in the same order, element by element
+            pts = [f"{a:.3f},{b:.3f}" for a, b in zip((LEFT + PLOT_W * d / span).tolist(),
+                                                       (y0 + PANEL * (hi - m[k]) / (hi - lo)).tolist())]
+            first = tuple(pts[0].split(","))
+            if prev is not None and prev[1] != first[1]:
+                g.add(dwg.line(prev, first, stroke=INK, stroke_width=0.25, stroke_dasharray="0.8,0.6"))
+            g.add(Element("polyline", points=" ".join(pts), fill="none", stroke=INK, stroke_width="0.5"))
+            prev = tuple(pts[-1].split(","))
         for imp in impacts:
             x = X(imp.angle if imp.angle > 0 or span < 360 else imp.angle)
             if key == "a" and imp.kind == "rigid":

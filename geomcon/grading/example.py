@@ -15,7 +15,7 @@ from __future__ import annotations
 import csv
 import io
 
-from .diagnosis import prepare
+from .diagnosis import Prepared, prepare
 from .keyfile import Answer, Key
 
 CLASS_SPEC = '''# A worksheet spec for the grading tests and the gallery's graded example: design by K, extremes, a cam.
@@ -89,9 +89,14 @@ def _cell(a: Answer, way: str, alt_value: float | None) -> str:
     return "n/a"
 
 
-def synthetic_answers(key: Key, *, rows: int | None = None, ids: list[str] | None = None) -> str:
+def synthetic_answers(key: Key, *, rows: int | None = None, ids: list[str] | None = None,
+                      cache: dict[tuple[str, int], Prepared] | None = None) -> str:
     """The answers file's text (UTF-8, comma separated): one row per student of the key (or ``rows`` rows
-    cycling through them, or the given ``ids``), every answer column."""
+    cycling through them, or the given ``ids``), every answer column. A variant's mistakes are those of
+    :func:`.diagnosis.prepare`, computed once per variant and exercise (in ``cache`` when one is given, keyed
+    as :func:`geomcon.grading.grade` keys them: grading a worksheet key's answers needs the very same; a
+    problem key's grading prepares only the columns a file has, so share no cache there)."""
+    prepared = cache if cache is not None else {}
     students = list(key.students.values())
     if ids is None:
         n = rows if rows is not None else len(students)
@@ -110,8 +115,9 @@ def synthetic_answers(key: Key, *, rows: int | None = None, ids: list[str] | Non
                 continue
             k = (s.variant or s.id, a.n)
             if k not in first:
-                ex = next(e for e in s.exercises if e.n == a.n)
-                p = prepare(ex)
+                if k not in prepared:
+                    prepared[k] = prepare(next(e for e in s.exercises if e.n == a.n))
+                p = prepared[k]
                 first[k] = {c: next((x.value for x in alts if x.code not in ("scale", "sign", "swapped")), None)
                             for c, alts in p.alts.items()}
             row.append(_cell(a, WAYS[(i + 3 * j) % len(WAYS)], first[k].get(col)))
@@ -135,12 +141,13 @@ def gallery_files(students: int = 8) -> dict[str, str]:
 
     key_text = make_key(parse_spec(CLASS_SPEC), numbered(students))   # the key alone: its pages are not shown
     key = key_from_json(key_text)
-    answers = synthetic_answers(key)
-    book = grade(key, read_answers(answers.encode()))
+    prepared: dict = {}                     # each variant's mistakes, computed once for answers, grades and bank
+    answers = synthetic_answers(key, cache=prepared)
+    book = grade(key, read_answers(answers.encode()), cache=prepared)
     return {"grading_key.json": key_text, "grading_answers.csv": answers, "grading_grades.csv": grades_csv(book),
             "grading_grades.json": grades_json(book), "grading_report.html": report_html(book),
             "grading_feedback_2.txt": feedback_text(book.rows[1], key.title, key.lang),
-            "grading_bank.xml": moodle_xml(key)}
+            "grading_bank.xml": moodle_xml(key, cache=prepared)}
 
 
 __all__ = ["CLASS_SPEC", "WAYS", "gallery_files", "synthetic_answers"]

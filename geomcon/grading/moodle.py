@@ -16,9 +16,10 @@ from typing import Iterable
 from xml.sax.saxutils import escape as xml_escape
 
 from ..scene.step import Role
+from ..solve import Solution
 from ..worksheet.solving import solve_given
 from .credit import PARTIAL
-from .diagnosis import prepare
+from .diagnosis import Prepared, prepare
 from .keyfile import Answer, ExerciseKey, Key
 from .tables import num
 
@@ -31,14 +32,17 @@ def _cdata(html: str) -> str:
     return "<![CDATA[" + html.replace("]]>", "]]]]><![CDATA[>") + "]]>"
 
 
-def givens_svg(ex: ExerciseKey) -> str:
+def givens_svg(ex: ExerciseKey, sol: Solution | None = None) -> str:
     """The variant's givens figure: the construction's leading frames that hold only givens, annotations and
     measurements not asked (up to its first construction line or result), drawn in the full construction's view
-    (room to construct), without the protocol, the results or the warnings: no answer anywhere in the file."""
+    (room to construct), without the protocol, the results or the warnings: no answer anywhere in the file.
+    ``sol`` is the variant's solution when it is at hand (the replayable variant of :func:`.diagnosis.prepare`
+    solved it already: the same givens, so the same figure), else it is solved here."""
     from ..render import render_svg
     from ..render.svg import model_extent
 
-    sol = solve_given(ex.recipe, ex.given)
+    if sol is None:
+        sol = solve_given(ex.recipe, ex.given)
     asked = {sol.construction.answers.get(a.ref.name) for a in ex.answers}
     sc = sol.drawing_scene
     k = 0
@@ -113,14 +117,13 @@ def _cloze_field(a: Answer, p) -> str:
     return "{" + num(a.points) + ":NUMERICAL:" + "~".join(parts) + "}"
 
 
-def _question(key: Key, sid: str, variant: str, ex: ExerciseKey, figure: bool) -> str:
-    p = prepare(ex)
+def _question(key: Key, sid: str, variant: str, ex: ExerciseKey, figure: bool, p: Prepared) -> str:
     name = f"{key.title} — {ex.n} — {variant or sid}"
     fname = f"ex{ex.n}-{(variant or sid).replace('/', '_')}.svg"
     text = f"<p>{escape(ex.statement)}</p>"
     files = ""
     if figure:
-        svg = givens_svg(ex)
+        svg = givens_svg(ex, p.variant.solution if p.variant is not None else None)
         text += f'<p><img src="@@PLUGINFILE@@/{escape(fname)}" alt="givens" /></p>'
         files = f'<file name="{xml_escape(fname)}" path="/" encoding="base64">{base64.b64encode(svg.encode()).decode()}</file>'
     answered = [a for a in ex.answers if not isinstance(a.expected, tuple)]
@@ -144,8 +147,12 @@ def _unit(a: Answer) -> str:
     return {"mm": "mm", "deg": "°"}.get(a.unit, "")
 
 
-def moodle_xml(key: Key, *, figures: bool = True, ids: Iterable[str] | None = None) -> str:
-    """The question bank's text (see the module)."""
+def moodle_xml(key: Key, *, figures: bool = True, ids: Iterable[str] | None = None,
+               cache: dict[tuple[str, int], Prepared] | None = None) -> str:
+    """The question bank's text (see the module). Each variant's alternatives are computed once, keyed by the
+    variant code and exercise as :func:`geomcon.grading.grade` keys them (in ``cache`` when one is given: the
+    grading of the same key may have computed them already)."""
+    prepared = cache if cache is not None else {}
     chosen = list(ids) if ids is not None else list(key.students)
     numbers = sorted({ex.n for s in key.students.values() for ex in s.exercises})
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
@@ -163,7 +170,10 @@ def moodle_xml(key: Key, *, figures: bool = True, ids: Iterable[str] | None = No
                 if code in seen:
                     continue
                 seen.add(code)
-                out.append(_question(key, sid, f"{n}-{code}", ex, figures))
+                k = (s.variant or sid, n)
+                if k not in prepared:
+                    prepared[k] = prepare(ex)
+                out.append(_question(key, sid, f"{n}-{code}", ex, figures, prepared[k]))
     out.append("</quiz>")
     return "\n".join(out) + "\n"
 

@@ -80,12 +80,13 @@ def scene_data(r: CycleResult) -> dict:
     box = [_r(x0 - pad, L), _r(y0 - pad, L), _r(x1 - x0 + 2 * pad, L), _r(y1 - y0 + 2 * pad, L)]
     frames = []
     cols = list(r.problem.columns)
-    colvals = {q: value(st, q) for q in cols}
+    colvals = [(value(st, q), scale_of(q, m)) for q in cols]      # each column's scale once, not per frame
+    points, turns = sorted(allp.items()), sorted(angles.items())
     for i in idx:
         frames.append({"phi": _r(r.cycle.phi_deg[i], 360.0),
-                       "p": {k: [_r(z[i].real, L), _r(z[i].imag, L)] for k, z in sorted(allp.items())},
-                       "a": {k: _r(math.degrees(t[i]), 360.0) for k, t in sorted(angles.items())},
-                       "v": [_r(colvals[q][i], scale_of(q, m)) for q in cols]})
+                       "p": {k: [_r(z[i].real, L), _r(z[i].imag, L)] for k, z in points},
+                       "a": {k: _r(math.degrees(t[i]), 360.0) for k, t in turns},
+                       "v": [_r(v[i], sc) for v, sc in colvals]})
     traces = {t: [[_r(z.real, L), _r(z.imag, L)] for z in pts[t].p if np.isfinite(z)] for t in r.problem.trace}
     fixed = {k: [_r(z.real, L), _r(z.imag, L)] for k, z in sorted(m.fixed.items())
              if k in {s for seg in segs for s in seg}}

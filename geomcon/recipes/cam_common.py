@@ -187,13 +187,15 @@ def lifted_tuple(fn: Callable[..., float], *args: Any) -> tuple[float, ...]:
     return tuple(float(fn(*fixed, x)) for x in xs)
 
 
-def pressure_mark(P: Point, normal: Point, velocity: Point, value: float, size: float) -> marks.AngleMark:
+def pressure_mark(P: Point, normal: Point, velocity: Point, value: float, size: float,
+                  symbol: str = "α") -> marks.AngleMark:
     """The pressure-angle mark at the contact P between the common normal and the follower's velocity
-    (the normal's sense chosen so that the marked angle is the acute α)."""
+    (the normal's sense chosen so that the marked angle is the acute α), printed as ``symbol`` (αmax, α′max:
+    what the answer it shows is called)."""
     n = normal.unit()
     if n.dot(velocity) < 0.0:
         n = -n
-    return marks.AngleMark(P, P + n * size, P + velocity.unit() * size, "α", value, None)
+    return marks.AngleMark(P, P + n * size, P + velocity.unit() * size, symbol, value, None)
 
 
 def normal_segment(P: Point, normal: Point, size: float) -> Segment:

@@ -323,11 +323,6 @@ def face_extents(fam: LineFamily, prog: Program, h: float, r0: float, e: float, 
     return max(0.0, left), max(0.0, right)
 
 
-def largest_extremum(*extrema: Extremum) -> Extremum:
-    """The extremum of largest value."""
-    return max(extrema, key=lambda x: x.value)
-
-
 def pick(pair: tuple[float, float], i: int) -> float:
     """One member of a pair."""
     return pair[i]
@@ -488,19 +483,26 @@ def sc_ref(key: str) -> Ref:
 
 
 def _mark_worst(sc: Scene, O, prog: Program, h: float, e: float, s0: float, inv: float, r0: float, curve) -> None:
-    """The pressure angle marked where it is largest (rise or return)."""
+    """The largest pressure angle of the rise and of the return, each marked where it occurs (B1*, B2*; B* when
+    there is one), with the name of the answer it shows (αmax, α′max): before, only the larger of the two was
+    marked, as α, so that a worksheet asking for the rise's αmax showed the return's beside its box."""
     parts = [p for p in ("rise", "return") if f"worst_{p}" in sc]
-    worst = sc.add("worst", largest_extremum, *[sc_ref(f"worst_{p}") for p in parts], visible=False)
-    P = sc.add("P_alpha", worst_point, O, prog, h, e, s0, inv, worst, style="joint", label="B*",
-               caption=("The largest pressure angle: position B*", "最大压力角位置 B*"))
-    n = sc.add("n_alpha", worst_normal, curve, worst, visible=False)
-    u = sc.add("u_alpha", worst_axis, inv, worst, visible=False)
-    size = 0.35 * r0
-    sc.add("normal_alpha", normal_segment, P, n, size, style="construction",
-           caption=("Common normal n–n at B*", "过 B* 作公法线 n–n"))
-    sc.add("axis_alpha", axis_segment, P, u, 0.2 * r0, size, style="construction")
-    value = sc.add("alpha_worst", extremum_value, worst, visible=False)
-    sc.add("mark_alpha", pressure_mark, P, n, u, value, 0.25 * r0, role=Role.ANNOTATION, style="angle")
+    for part in parts:
+        zh = "推程" if part == "rise" else "回程"
+        name = "B*" if len(parts) == 1 else f"B{1 if part == 'rise' else 2}*"
+        symbol = "αmax" if part == "rise" else "α′max"
+        w = sc_ref(f"worst_{part}")
+        P = sc.add(f"P_alpha_{part}", worst_point, O, prog, h, e, s0, inv, w, style="joint", label=name,
+                   caption=(f"The {part}'s largest pressure angle {symbol}: position {name}",
+                            f"{zh}最大压力角 {symbol} 的位置 {name}"))
+        n = sc.add(f"n_alpha_{part}", worst_normal, curve, w, visible=False)
+        u = sc.add(f"u_alpha_{part}", worst_axis, inv, w, visible=False)
+        size = 0.35 * r0
+        sc.add(f"normal_alpha_{part}", normal_segment, P, n, size, style="construction",
+               caption=(f"Common normal n–n at {name}", f"过 {name} 作公法线 n–n"))
+        sc.add(f"axis_alpha_{part}", axis_segment, P, u, 0.2 * r0, size, style="construction")
+        sc.add(f"mark_alpha_{part}", pressure_mark, P, n, u, sc_ref(f"alpha_max_{part}"), 0.25 * r0, symbol,
+               role=Role.ANNOTATION, style="angle")
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:

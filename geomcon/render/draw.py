@@ -17,7 +17,7 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from .labels import Runs, label_runs, text_width
@@ -65,19 +65,21 @@ class Context:
     """What drawing a value may look at besides the value: the view, the points drawn in the figure (a
     construction circle is drawn as compass arcs through them), the centre of the drawing (labels prefer
     to point away from it), the angle marks drawn so far at each vertex (nested marks get larger arcs) and
-    the links of the figure on paper (a ground symbol turns away from them and from the angle marks' sectors)
-    and its slider blocks."""
+    the links and fixed links of the figure on paper (a ground symbol turns away from them and from the angle
+    marks' sectors) and its slider blocks."""
 
     view: View
     points: tuple[Point, ...] = ()
     centre: XY = (0.0, 0.0)
     marks_at: dict[tuple[float, float], int] = field(default_factory=dict)
     links: tuple[tuple[XY, XY], ...] = ()
+    frames: tuple[tuple[XY, XY], ...] = ()
+    """The fixed links drawn dash-dot (AD): a ground symbol's hatch keeps off them too."""
     sliders: tuple[tuple[XY, XY], ...] = ()
-    sectors: tuple[tuple[XY, ...], ...] = ()
-    """The angle marks of the figure on paper, as polygons (the vertex and its arc): a ground symbol keeps out."""
     """The slider blocks of the figure on paper, as (centre, unit direction): blocks close on one guide
     shorten so that they never overlap."""
+    sectors: tuple[tuple[XY, ...], ...] = ()
+    """The angle marks of the figure on paper, as polygons (the vertex and its arc): a ground symbol keeps out."""
 
 
 def pen(style: Style) -> Pen:
@@ -122,7 +124,11 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
         else:
             away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
             req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
-        out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional))
+        short = None
+        if label.endswith(")") and " (" in label:          # "N (E1)": just "N" where both find no room
+            head = label_runs(label.split(" (", 1)[0])
+            short = TextRequest(head, size, replace(req, width=text_width(head, size) + 0.3), italic=True)
+        out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional, fallback=short))
     return out
 
 

@@ -29,7 +29,8 @@ from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, S
 from .draw import Context, Drawn, TextRequest, _paper_dir
 from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
 from .rows import SEP, Fan, clusters, fans, row_centre
-from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
+from .crossings import NEAR, Crossings
+from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
 from .symbols import draw, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
@@ -168,7 +169,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     view = View(box, mu, origin)
     pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
     ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
-                  sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view))
+                  frames=_links(steps, values, view, frame=True), sliders=_sliders(steps, values, view),
+                  sectors=_sectors(steps, values, view))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -186,13 +188,16 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     return Figure(view, groups, values, n)
 
 
-def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
-    """The links of the frame (segments of a style on the links layer) and its frame lines on paper."""
+def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View, frame: bool = False
+           ) -> tuple[tuple[Any, Any], ...]:
+    """The links of the frame (segments of a style on the links layer) on paper; with ``frame``, the fixed links
+    drawn dash-dot instead (style ``frame``: AD between the pivots)."""
     out = []
     for _, s in steps:
         v = values[s.key]
         segs = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Segment) and x.a != x.b]
-        if segs and (s.style == "frame" or resolve_style(s.style, s.role, "curve").layer == "links"):
+        style = resolve_style(s.style, s.role, "curve")
+        if segs and (style.name == "frame" if frame else style.layer == "links"):
             out += [(view.p(x.a), view.p(x.b)) for x in segs]
     return tuple(out)
 
@@ -337,7 +342,8 @@ LED_DISTANCES = (0.0, 1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0)
 
 def _led(t: TextRequest) -> TextRequest:
     """A row's number that found no place by its point (it would cover another text, or sit nearer another
-    point): tried all round at :data:`LED_DISTANCES`, to be joined to its point by a leader."""
+    point), or a point's label that would cover a line there: tried all round at :data:`LED_DISTANCES`, to be
+    joined to its point by a leader (which says whose it is, wherever it lands)."""
     r = t.request
     req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES)
     return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan")
@@ -367,6 +373,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts])
     fanned = _fanned(placer, groups, pending)
+    strokes = _Strokes(obstacles, [(g, sh) for g in groups for sh in g.shapes], view.paper_box)
+    rows = [f.request.box(*f.request.candidates[0]) for f in fanned.values()]
     for g, (drawn, is_cur) in zip(groups, pending):
         colour = HIGHLIGHT if is_cur else None
         for t in drawn.texts:
@@ -383,8 +391,17 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
                 alt, alt_score = placer.best(t.fallback.request, g.key)
                 if alt_score > score + 0.3:
-                    t, centre = t.fallback, alt
+                    t, centre, score = t.fallback, alt, alt_score
+            if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
+                led = _led(t)                       # a point's label that covers a line: farther, with a leader
+                alt, alt_score = placer.best(led.request, g.key)
+                if alt_score >= CROWDED and alt_score > score + 0.3:
+                    t, centre = led, alt
             box = t.request.box(*centre)
+            if t.cls in ("mark-text", "label") and not t.optional and not t.request.candidates and (
+                    score < 0.0 or (t.cls == "mark-text" and strokes.on_own_lines(box, g.key))):
+                centre = strokes.fewest_crossings(t, g.key, centre, texts + rows)
+                box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
                                or nearer_rival(t.request, [centre])[0]):
                 t = _led(t)             # a row's number with no room by its point: farther, with a leader
@@ -392,13 +409,53 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 box = t.request.box(*centre)
                 leader = _fan_leader(t, box)
             else:
-                leader = _leader(t, box)
+                leader = _fan_leader(t, box) if t.cls == "label fan" else _leader(t, box)
             texts.append(box)
             placer.commit(box)
             if leader is not None:
                 placer.commit(obstacle(leader))
                 g.shapes.append(recolour(leader, colour) if colour else leader)
             g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+
+
+class _Strokes:
+    """The strokes of a frame for :func:`_place_texts`' rescue of a text left across lines (:mod:`.crossings`):
+    each one's step, whether it is an arc (a mark's own arc) and whether it is hard (a link or a point's
+    marker); the counting tree is built the first time it is needed."""
+
+    def __init__(self, obstacles: list[tuple[Any, str, float]], shapes: list[tuple[StepDrawing, Shape]], frame: Box):
+        self.geoms = [geom for geom, _, _ in obstacles]
+        self.owners = [g.key for g, _ in shapes]
+        self.arcs = np.array([isinstance(sh, ArcP) for _, sh in shapes], dtype=bool)
+        self.hard = [g.layer in ("links", "points") for g, _ in shapes]
+        self.frame = frame
+        self._mine: dict[str, list[Any]] | None = None
+        self._lines: Crossings | None = None
+
+    def on_own_lines(self, box: Any, key: str) -> bool:
+        """Whether a mark's value at ``box`` crosses a line its own step draws besides the arc (the normal drawn
+        with the mark), which the placer does not see."""
+        if self._mine is None:
+            self._mine = {}
+            for geom, owner, arc in zip(self.geoms, self.owners, self.arcs.tolist()):
+                if not arc:
+                    self._mine.setdefault(owner, []).append(geom)
+        mine = self._mine.get(key)
+        return bool(mine) and bool(shapely.intersects(box, mine).any())
+
+    def fewest_crossings(self, t: TextRequest, key: str, centre: tuple[float, float], placed: list[Any]
+                         ) -> tuple[float, float]:
+        """A mark's value or a point's label the placer left covering something: the spot that crosses the
+        fewest drawn lines, when that is fewer than where it is. A value's own step's lines count as a link
+        does (the normal drawn with it), its arc does not; a label keeps within a label's distances of its
+        point, whose marker does not count."""
+        if self._lines is None:
+            self._lines = Crossings(self.geoms, self.hard, self.frame, self.owners)
+        label = t.cls == "label"
+        own = (key, np.where(self.arcs, 0, 0 if label else 2))
+        req = t.request
+        x, y, n = self._lines.fewest(req, placed, req.distances if label else NEAR, own)
+        return (x, y) if 0 <= n < int(self._lines.count([req.box(*centre)], own)[0]) else centre
 
 
 def _leader(t: TextRequest, box: Any) -> Poly | None:

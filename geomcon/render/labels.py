@@ -67,10 +67,12 @@ def label_runs(label: str) -> Runs:
     return tuple(out)
 
 
+@functools.lru_cache(maxsize=8192)
 def rich_runs(text: str) -> Runs:
     """Runs of a caption: digits right after a capital or Greek letter (C1, AB2, γ1), min/max after a Greek
     letter (γmin), a lone i (Ci) and an underscored name (α_max, without its underscore) become subscripts;
-    file and recipe names (:data:`_CODE`) are left as they are.
+    file and recipe names (:data:`_CODE`) are left as they are. Remembered (runs are tuples): two of three
+    lines a gallery writes were written before (step numbers, headings, the same caption in another figure).
 
     >>> rich_runs("φ_slow/φ_quick in 000-04_slotter_cam_psi0.toml")
     (('φ', False), ('slow', True), ('/φ', False), ('quick', True), (' in 000-04_slotter_cam_psi0.toml', False))

@@ -25,7 +25,9 @@ import json
 from typing import Sequence
 
 from ..scene import Scene
+from .labels import rich_runs
 from .page import PageSpec, print_css, zh_punct
+from .shapes import stacked_runs
 from .style import FONT_FAMILY, HIGHLIGHT
 from .svg import render_sheets
 
@@ -38,6 +40,9 @@ body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fa
 #caption { min-height: 3em; margin: .2em 0 .6em 0; padding: .4em .7em; background: #fff; border-left: 4px solid %(hl)s; }
 #caption .en { font-weight: bold; }
 #caption .zh { color: #5c6370; }
+#caption sub { font-size: 72%%; line-height: 0; }
+#caption .stack { display: inline-flex; flex-direction: column; vertical-align: 0.4em; font-size: 72%%;
+  line-height: 1; }
 #drawing { background: #fff; border: 1px solid #ddd; overflow: auto; }
 #drawing svg { display: block; width: 100%%; height: auto; }
 #drawing .page + .page { border-top: 1px solid #ddd; }
@@ -70,8 +75,8 @@ _SCRIPT = """
     $("slider").value = k;
     $("count").textContent = "step " + k + " / " + N;
     var c = STEPS[k - 1];
-    $("cap-en").textContent = k + ". " + c[0];
-    $("cap-zh").textContent = c[1];
+    $("cap-en").innerHTML = k + ". " + c[0];
+    $("cap-zh").innerHTML = c[1];
   }
   function stop() {
     if (timer) { clearInterval(timer); timer = null; }
@@ -132,6 +137,30 @@ _PAGE = """<!DOCTYPE html>
 """
 
 
+def caption_html(text: str) -> str:
+    """A caption as the player's caption bar prints it: escaped, subscripts as ``<sub>``, and a component's
+    letter stacked over its subscript as the figure stacks it (:func:`~.shapes.stacked_runs`).
+
+    >>> caption_html("Join AC2")
+    'Join AC<sub>2</sub>'
+    >>> caption_html("aʳB2B3 < 1")
+    'a<span class="stack"><span>r</span><span>B2B3</span></span> &lt; 1'
+    """
+    runs = stacked_runs(rich_runs(text), 1.0)
+    out, i = [], 0
+    while i < len(runs):
+        s, sub, sup, _ = runs[i]
+        nxt = runs[i + 1] if i + 1 < len(runs) else None
+        if nxt is not None and (sup and nxt[1] or sub and nxt[2]):
+            top, low = (s, nxt[0]) if sup else (nxt[0], s)
+            out.append(f'<span class="stack"><span>{html.escape(top)}</span><span>{html.escape(low)}</span></span>')
+            i += 2
+            continue
+        out.append(f"<sub>{html.escape(s)}</sub>" if sub else f"<sup>{html.escape(s)}</sup>" if sup else html.escape(s))
+        i += 1
+    return "".join(out)
+
+
 def step_captions(scene: Scene, lang: str = "both") -> list[tuple[str, str]]:
     """The caption of every numbered step, in protocol order (branch rules included), as the player shows it
     above the drawing: (English, Chinese) for ``both``, (English, "") for ``en``, (Chinese, "") for ``zh``."""
@@ -181,7 +210,7 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
                             problem=problem, recipe=recipe)
     sheets = [svg] if isinstance(svg, str) else list(svg)
     body = "\n".join(f'<div class="page" id="page-{i}">{s[s.index("<svg"):]}</div>' for i, s in enumerate(sheets, 1))
-    steps = json.dumps(step_captions(scene, page.lang), ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
+    steps = json.dumps([[caption_html(s) for s in c] for c in step_captions(scene, page.lang)], ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
                                     for f in FONT_FAMILY.split(",")), "hl": HIGHLIGHT}
     return _PAGE % {"title": html.escape(title or scene.title), "css": css, "print": print_css(page),

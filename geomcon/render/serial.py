@@ -68,7 +68,14 @@ class Element:
     def __init__(self, tag: str, text: str = "", **attribs: str | None) -> None:
         self.elementname = tag
         self.text = text
-        self.attribs = {k.rstrip("_").replace("_", "-"): v for k, v in attribs.items()}
+        names = _NAMES
+        try:
+            self.attribs = {names[k]: v for k, v in attribs.items()}
+        except KeyError:
+            for k in attribs:
+                if k not in names:
+                    names[k] = k.rstrip("_").replace("_", "-")
+            self.attribs = {names[k]: v for k, v in attribs.items()}
         self.elements: list[Any] = []
 
     def add(self, element: Any) -> Any:
@@ -92,6 +99,11 @@ class Element:
         for child in self.elements:
             xml.append(child.get_xml())
         return xml
+
+
+_NAMES: dict[str, str] = {}
+"""Keyword names as attribute names (``class_`` → ``class``, ``stroke_width`` → ``stroke-width``), as
+:class:`Element` met them."""
 
 
 def svg_string(element: Any) -> str:

@@ -172,21 +172,83 @@ def _text(t: Text) -> Element:
 def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float, least: float = 0.0) -> None:
     """Append text runs to a text element: subscripts as smaller tspans (``SUB_SCALE`` of ``size``, at least
     ``least``: a title block squeezed to fit keeps subscripts readable) lowered with ``dy`` (the one shift
-    every SVG renderer agrees on), the following run raised back."""
+    every SVG renderer agrees on), the following run raised back. A component's letter written as a modifier
+    letter next to a subscript (aʳB2B3, aᵏB3B2, aEDⁿ, aB3ᵗ) is stacked over it as the textbook prints it: the
+    letter as a small raised tspan, the subscript shifted back under it with ``dx`` (:func:`stacked_runs`)."""
     shift = 0.0
-    for s, sub in runs:
-        target = SUB_DROP * size if sub else 0.0
+    small = fmt(max(size * SUB_SCALE, least))
+    for s, sub, sup, dx in stacked_runs(runs, size, least):
+        target = SUB_DROP * size if sub else (-SUP_RISE * size if sup else 0.0)
         attrs: dict[str, Any] = {}
+        if dx:
+            attrs["dx"] = fmt(dx)
         if target != shift:
             attrs["dy"] = fmt(target - shift)
             shift = target
-        if sub:
-            attrs["font_size"] = fmt(max(size * SUB_SCALE, least))
+        if sub or sup:
+            attrs["font_size"] = small
         el.add(Element("tspan", s, **attrs))
+
+
+SUPERSCRIPTS = {"ʳ": "r", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t"}
+"""Modifier letters of an acceleration's component (relative, Coriolis, normal, tangential) and the letter each
+stands for when stacked over a subscript."""
+SUP_EM = {"r": 0.4, "k": 0.5, "n": 0.56, "t": 0.36}
+"""The advance of each stacked letter (em, Noto Sans; narrower than :func:`.labels.char_em`'s safe estimate, so
+that the subscript shifted back under it does not run into the letter before)."""
+
+
+def stacked_runs(runs: tuple[tuple[str, bool], ...], size: float, least: float = 0.0
+                 ) -> list[tuple[str, bool, bool, float]]:
+    """The runs as (text, subscript, superscript, dx): a modifier letter of :data:`SUPERSCRIPTS` at the end of a
+    run followed by a subscript, or at the start of a run that follows one, becomes a superscript run stacked
+    over that subscript (the later of the two shifted back by the earlier one's estimated width, and what
+    follows shifted on past the wider).
+
+    >>> [r[:3] for r in stacked_runs((("aʳ", False), ("B2B3", True), (" = 1", False)), 3.5)]
+    [('a', False, False), ('r', False, True), ('B2B3', True, False), (' = 1', False, False)]
+    >>> [r[:3] for r in stacked_runs((("a", False), ("ED", True), ("ⁿ = 2", False)), 3.5)]
+    [('a', False, False), ('ED', True, False), ('n', False, True), (' = 2', False, False)]
+    >>> stacked_runs((("C", False), ("1", True)), 3.5)
+    [('C', False, False, 0.0), ('1', True, False, 0.0)]
+    """
+    from .labels import text_width
+    small = max(size * SUB_SCALE, least) / size            # what text_width's 0.72 is here
+
+    def width(s: str) -> float:
+        return (SUP_EM[s] * size if s in SUP_EM else text_width(s, size)) * small
+    out: list[tuple[str, bool, bool, float]] = []
+    carry = 0.0                                           # shift owed by the run that comes next
+    for i, (s, sub) in enumerate(runs):
+        nxt = runs[i + 1] if i + 1 < len(runs) else None
+        if not sub and s and s[-1] in SUPERSCRIPTS and nxt is not None and nxt[1]:
+            if s[:-1]:
+                out.append((s[:-1], False, False, carry))
+                carry = 0.0
+            out.append((SUPERSCRIPTS[s[-1]], False, True, carry))
+            carry = -width(SUPERSCRIPTS[s[-1]])           # the subscript goes back under it
+            continue
+        if not sub and s and s[0] in SUPERSCRIPTS and out and out[-1][1]:
+            low, sup = out[-1][0], SUPERSCRIPTS[s[0]]
+            out.append((sup, False, True, carry - width(low)))
+            carry = max(0.0, width(low) - width(sup))
+            s = s[1:]
+            if not s:
+                continue
+        elif out and out[-1][2] and sub:                  # the subscript under a superscript
+            sup = out[-1][0]
+            out.append((s, True, False, carry))
+            carry = max(0.0, width(sup) - width(s))
+            continue
+        out.append((s, sub, False, carry))
+        carry = 0.0
+    return out
 
 
 SUB_SCALE = 0.72
 SUB_DROP = 0.22
+SUP_RISE = 0.36
+"""A stacked superscript's rise (of the font size) above the baseline."""
 
 
 # ---------------------------------------------------------------------------------------------- obstacles

@@ -38,20 +38,59 @@ a value always prints (a leader joins a far text to its arc)."""
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side at 45° to
-    it; turned from its side by the least multiple of 45° that keeps it off every link, every angle mark's
-    sector and every point of the figure (a ground drawn across a link reads as a frame the link cannot pass;
-    one inside an angle's arc hides the angle); where no direction is clear, the one that meets least."""
+    it; turned from its side by the least multiple of 45° that keeps it off every link, frame line, angle
+    mark's sector and point of the figure (a ground drawn across a link reads as a frame the link cannot
+    pass; one inside an angle's arc hides the angle) and :data:`GROUND_ROOM` away from every link and fixed
+    link leaving the hinge (the hatch points away from them, not into the corner between two); else the
+    turn that meets least, then the one with the most room."""
     c = ctx.view.p(g.at)
-    best, least = None, math.inf
+    away = _link_directions(c, ctx)
     near = _near(c, ctx)
+    best = None
     for k in (0, 1, -1, 2, -2, 3, -3, 4):
-        out = _ground_at(c, g.angle + k * math.pi / 4, style)
+        angle = g.angle + k * math.pi / 4
+        out = _ground_at(c, angle, style)
         hit = _collision(c, out, near)
-        if hit == 0.0:
+        room = _angular_room((math.cos(angle), -math.sin(angle)), away)
+        if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
             return out
-        if hit < least:
-            best, least = out, hit
-    return best
+        if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
+            best = (hit, room, out)
+    return best[2]
+
+
+GROUND_ROOM = math.radians(50.0)
+"""Least angle (radians) between a ground symbol's direction and a link or fixed link leaving its hinge: the base's
+corners lie 45° off its direction and the hatch reaches beyond, so a line nearer runs into it (001-16: A's ground
+ran into the corner of AB1 and the frame AD)."""
+
+
+def _link_directions(c: XY, ctx: Context) -> list[XY]:
+    """Unit paper directions of the links and fixed links leaving the hinge at paper point ``c`` (a link through
+    it counts both ways)."""
+    out = []
+    for a, b in ctx.links + ctx.frames:
+        for p, q in ((a, b), (b, a)):
+            d = math.hypot(q[0] - c[0], q[1] - c[1])
+            if math.hypot(p[0] - c[0], p[1] - c[1]) <= 0.5 and d > 0.5:
+                out.append(((q[0] - c[0]) / d, (q[1] - c[1]) / d))
+        seg = (b[0] - a[0], b[1] - a[1])
+        n = math.hypot(*seg)
+        if n > 1.0:
+            t = ((c[0] - a[0]) * seg[0] + (c[1] - a[1]) * seg[1]) / (n * n)
+            off = abs((c[0] - a[0]) * seg[1] - (c[1] - a[1]) * seg[0]) / n
+            if off <= 0.5 and 0.5 / n < t < 1.0 - 0.5 / n:            # through the hinge
+                out += [(seg[0] / n, seg[1] / n), (-seg[0] / n, -seg[1] / n)]
+    return out
+
+
+def _angular_room(u: XY, away: list[XY]) -> float:
+    """The least angle (radians) between paper direction ``u`` and the directions ``away`` (π when none).
+
+    >>> round(math.degrees(_angular_room((0.0, 1.0), [(1.0, 0.0), (0.0, -1.0)])), 6)
+    90.0
+    """
+    return min((math.acos(max(-1.0, min(1.0, u[0] * v[0] + u[1] * v[1]))) for v in away), default=math.pi)
 
 
 GROUND_REACH = 9.0
@@ -63,7 +102,8 @@ def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY]]:
     """What a ground symbol at ``c`` may meet, whichever way it turns: the links and the angle marks' sectors
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
     spot = shapely.Point(c)
-    links = shapely.linestrings([list(s) for s in ctx.links]) if ctx.links else None
+    lines = ctx.links + ctx.frames                 # a hatch across the frame AD reads as wrong as one across a link
+    links = shapely.linestrings([list(s) for s in lines]) if lines else None
     pies = np.array([shapely.Polygon(p) for p in ctx.sectors], dtype=object) if ctx.sectors else None
     if links is not None:
         links = links[shapely.dwithin(links, spot, GROUND_REACH)]

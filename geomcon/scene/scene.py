@@ -347,11 +347,18 @@ class Scene:
         """The visible steps grouped by protocol number: a step with an empty caption is drawn with the
         numbered step before it (a link drawn with its position, a ground symbol with its pivot), except an
         annotation that shows a measurement (an angle mark with its value): it is drawn with the last
-        measurement it refers to, so that the mark appears with the step that measures it."""
+        measurement it refers to, so that the mark appears with the step that measures it.
+
+        The grouping is remembered while the scene's records stay the same (a drawing, its protocol, its
+        captions and its results' frames each ask for it); each call returns new lists."""
+        self.complete()                         # a lean scene: its records only then
+        rec = self._rec
+        got = self.__dict__.get("_frames")
+        if got is not None and got[0] is rec and got[1] == len(rec):
+            return [list(g) for g in got[2]]
         out: list[list[Step]] = []
         where: dict[str, int] = {}
-        visible = self.visible_steps()          # completes a lean scene: its records only then
-        rec = self._rec
+        visible = self.visible_steps()
         for s in visible:
             if s.caption[0] or s.branch is not None or not out:
                 out.append([s])
@@ -364,6 +371,7 @@ class Scene:
                     at = max(measured)
             out[at].append(s)
             where[s.key] = at
+        self._frames = (rec, len(rec), tuple(tuple(g) for g in out))
         return out
 
     def available_at(self, keys: Iterable[str]) -> int:
