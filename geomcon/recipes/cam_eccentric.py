@@ -83,6 +83,11 @@ GIVENS = (
     Quantity("L", "mm", "oscillating follower: arm length QB", required=False),
     Quantity("arm", "choice", "oscillating follower: side of the line Q→O the roller lies on", required=False,
              default="left", minimum=None, choices=("left", "right")),
+    Quantity("contact_name", "choice", "translating knife or roller: the contact point's name in the problem's "
+             "own figure (the statement's C or D: 001-25); B by default", required=False, default="B", minimum=None,
+             choices=("B", "C", "D")),
+    Quantity("far_name", "choice", "the farthest point of the line of centres (B1 by default) as the problem "
+             "names it (001-25's C)", required=False, default="B1", minimum=None, choices=("B1", "C")),
 )
 ANSWERS = (
     Quantity("r0", "mm", "base circle radius of the pitch curve (knife, roller); of the profile (flat)"),
@@ -274,9 +279,10 @@ def arm_angle(q: Point, o: Point, b: Point) -> float:
     return angle_deg(q, o, b)
 
 
-def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool) -> tuple[Ref, Ref]:
+def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool, far: str = "B1") -> tuple[Ref, Ref]:
     """The line of centres AO meets the pitch circle at B0 (nearest O: r0 = OB0, the base circle) and B1
-    (farthest); for a roller, the disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
+    (farthest, labelled ``far``: empty when the contact point, labelled itself, lies there); for a roller, the
+    disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
     lineAO = sc.add("lineAO", line_through, A, O, style="construction", caption=("Draw the line of centres AO", "作中心线 AO"))
     # B0, E0 and B1 are laid off from O along the line of centres (|OB0| = Rp − OA …): the same points as the
     # line meeting the circles, but their direction from O is exact even when OB0 ≪ R (OA → R), where an
@@ -299,7 +305,7 @@ def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool) -> tupl
     else:
         sc.add("r0_actual", length, O, B0, role=Role.MEASUREMENT, unit="mm", visible=False)
     B1 = sc.add("B1", point_along, O, A, sc.add("OB1_len", lambda r, d: r + d, Rp, OA, visible=False), style="point",
-                label="B1", caption=("OA extended meets it at B1, its farthest point (OB1 = Rp + OA)",
+                label=far, caption=("OA extended meets it at B1, its farthest point (OB1 = Rp + OA)",
                                      "OA 延长交理论廓线于 B1(离 O 最远,OB1 = Rp + OA)"))
     return B0, B1
 
@@ -332,14 +338,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
     pitch = sc.add("pitch", circle, A, Rp, style="path",
                    caption=(f"Pitch curve: the circle about A with radius R + rr = {Rp:g}",
                             f"理论廓线:以 A 为圆心、R + rr = {Rp:g} 的圆")) if follower == "roller" else Ref("disc")
-    D = sc.given("D", Point(e, 0.0), style="point", label="D" if e else None,
+    contact = g.get("contact_name") or "B"
+    D = sc.given("D", Point(e, 0.0), style="point", label="D" if e and contact != "D" else "",
                  caption=(f"Foot D of the follower's axis, OD = e = {e:g}", f"导路垂足 D,OD = e = {e:g}"))
     axis = sc.add("axis", Line, D, UP, role=Role.GIVEN, style="frame",
                   caption=("The follower's guide through D, perpendicular to OD", "过 D 作导路(垂直于 OD)"))
     if e:
         sc.add("offset_circle", circle, O, abs(e), style="construction",
                caption=(f"Offset circle about O with radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
-    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller")
+    at_far = st == "contact_angle" and (g.get("contact_angle") or 0.0) % 360.0 == 0.0 and not flat and not e
+    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller", "" if at_far else g.get("far_name") or "B1")
     if flat:
         return _finish_flat(sc, g, O, A, D, axis, B0, B1, sense)
     if e:
@@ -366,7 +374,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
     up = sc.add("up", lambda d: d + UP, D, visible=False, label="D + ↑")
     B = sc.add("B", line_circle, axis, pitch, branch=Ahead(D, up), role=Role.RESULT, style="joint",
-               label="B", caption=("The follower meets the pitch curve at B", "导路交理论廓线于 B(从动件位置)"))
+               label=contact, caption=(f"The follower meets the pitch curve at {contact}",
+                                       f"导路交理论廓线于 {contact}(从动件位置)"))
     if follower == "roller":
         sc.add("roller", circle, B, rr, role=Role.RESULT, style="link", caption=("", ""))
     top = sc.add("top", lambda b, k: b + UP * k, B, 0.6 * R, visible=False)

@@ -116,13 +116,13 @@ def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...])
 
 
 def add_pivot(sc: Scene, key: str, at: Point | tuple[Any, Any], caption: tuple[str, str], *,
-              ground_angle: float = -math.pi / 2) -> Ref:
+              ground_angle: float = -math.pi / 2, label: str | None = None) -> Ref:
     """A fixed pivot: the given point (a Point, or coordinates placed by the step: :meth:`Scene.given_at`)
-    plus its hatched ground symbol."""
+    plus its hatched ground symbol; ``label`` replaces the printed name (default: ``key``)."""
     if type(at) is tuple:
-        ref = sc.given_at(key, at[0], at[1], caption=caption, style="pivot")
+        ref = sc.given_at(key, at[0], at[1], caption=caption, style="pivot", label=label)
     else:
-        ref = sc.given(key, at, caption=caption, style="pivot")
+        ref = sc.given(key, at, caption=caption, style="pivot", label=label)
     if sc.drawing:
         sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
     return ref
@@ -139,6 +139,21 @@ def transmission_mark(c: Point, b: Point, d: Point, symbol: str, value: float):
     value is the supplement and the arc spans the acute angle from b–c extended beyond c, which the mark
     draws (:func:`geomcon.render.symbols.angle_rays`), so that the arc never ends on an undrawn line."""
     return marks.AngleMark(c, b, d, symbol, value, None)
+
+
+def velocity_end(joint: Point, pivot: Point, toward: Point, size: float) -> Point:
+    """The end of the velocity line of a ``joint`` turning about ``pivot``, ``size`` mm from the joint: the
+    line stands perpendicular to pivot–joint on the side of ``toward`` (the acute side of the force line
+    joint–toward), so that the pressure angle between them is the angle the mark spans.
+
+    >>> velocity_end(Point(0, 0), Point(-1, 0), Point(1, 1), 2.0)
+    Point(x=0.0, y=2.0)
+    """
+    u = (joint - pivot).unit()
+    n = Point(-u.y, u.x)
+    if n.dot(toward - joint) < 0.0:
+        n = -n
+    return joint + n * size
 
 
 def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str, value: Ref,

@@ -21,11 +21,11 @@ from ..analytic.four_bar_analysis import LINKS, LOOPS, four_bar_analysis, link, 
 from ..errors import NotAMechanism
 from ..geometry import Above, Below, LeftOf, Point, RightOf, circle, circle_circle, point_along, point_on_ray, segment
 from ..geometry import ray_at_angle
-from ..scene import Role, Scene
+from ..scene import Role, Scene, marks
 from ..tolerance import REL_TOL
 from .base import Construction, Quantity, Recipe
 from .common import (add_angle_mark, add_bar, add_pivot, angle_deg, complement_deg, difference, k_ratio, smallest,
-                     total, transmission_deg, transmission_mark)
+                     total, transmission_deg, transmission_mark, velocity_end)
 
 TYPES = ("crank-rocker", "double-crank", "double-rocker", "change-point", "immovable")
 GIVENS = (
@@ -255,10 +255,20 @@ def construct(g: Mapping[str, Any]) -> Construction:
             add_bar(sc, f"phi_{nm}", a, b)
         gp = sc.add("gamma", transmission_deg, Bp, Cp, Pe, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"γ = ∠{jd1}{je1}{je} at φ (acute form)", f"φ 位置的传动角 γ = ∠{jd1}{je1}{je}(取锐角)"))
-        sc.add("alpha", complement_deg, gp, role=Role.MEASUREMENT, unit="deg",
+        al = sc.add("alpha", complement_deg, gp, role=Role.MEASUREMENT, unit="deg",
                caption=("Pressure angle α = 90° − γ", "压力角 α = 90° − γ"))
         if drawing:
             sc.add("mark_gamma", transmission_mark, Cp, Bp, Pe, "γ", gp, role=Role.ANNOTATION, style="angle")
+            # the pressure angle on the driven link: between the force along the coupler and the velocity
+            # of its joint (⊥ to the driven link), drawn at the joint as the question asks for it
+            V = sc.add("v_end", velocity_end, Cp, Pe, Bp, 0.3 * min(Z, e), style="point", label=f"v{je1}",
+                       role=Role.CONSTRUCTION)
+            sc.add("v_line", marks.vector, Cp, V, role=Role.CONSTRUCTION, style="vector",
+                   caption=(f"The velocity v{je1} of {je1} is perpendicular to {link_name(je, je1)}; the force on "
+                            f"{je1} runs along the coupler {link_name(jd1, je1)}: α is the angle between them",
+                            f"{je1} 点速度 v{je1} 垂直于 {link_name(je, je1)},所受力沿连杆 {link_name(jd1, je1)},"
+                            "二者之夹角为压力角 α"))
+            add_angle_mark(sc, "mark_alpha", Cp, Bp, V, "α", al)
         answers |= {"gamma": "gamma", "alpha": "alpha"}
         points |= {jd1: "Bphi", je1: "Cphi"}
     return Construction(sc, answers, points)

@@ -1,0 +1,83 @@
+"""A teacher's second look at issue 11: the figure shows what its problem asks. Every point the title names is
+labelled in the figure (001-25 asked for the contact points C and D and drew B, B1 and a "D" on the cam centre),
+and the quantity a question asks for at the drawn position is marked there (300-01 asked for the pressure angle
+and marked only γ; 400-04 asked for the six instant centres and named two)."""
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_drawing_defects import NAMES, _members, figure, runs  # noqa: E402
+
+from geomcon.problems import load_problem  # noqa: E402
+from geomcon.scene.marks import AngleMark, Dimension  # noqa: E402
+
+PROBLEMS = Path(__file__).parent.parent / "problems"
+QUANTITIES = {"K", "H", "S", "R", "GATE"}
+"""Capitals of a title that are quantities or words, not points (K = 1.4, the stroke H, S = 2·CD, R = 60 mm)."""
+
+
+def title_points(title: str) -> set[str]:
+    """The point names a title writes: single points (C1, P34) and those of a link or chord (CD, OA, B1B2).
+
+    >>> sorted(title_points("contact at C and at D; the ram's stroke S = 2·CD, B1B2 = 2S, K = 1.5"))
+    ['B1', 'B2', 'C', 'D']
+    """
+    out: set[str] = set()
+    for tok in re.findall(r"(?<![\w′])(?:[A-Z]\d*)+(?![\w′])", title.removeprefix("A ")):
+        if tok not in QUANTITIES:
+            out |= set(re.findall(r"[A-Z]\d*", tok))
+    return out
+
+
+def labels(name: str) -> set[str]:
+    """Every point name printed in a figure's labels ("B (P12)" names B and P12)."""
+    fig = figure(name)
+    return {p for g in fig.groups for t in g.texts if t.cls == "label" for p in re.findall(r"[A-Z]\d*", runs(t))}
+
+
+NO_FIGURE_OF_POINTS = {"001-02_four_bar_link_ranges"}
+"""A table of link-length ranges, not a drawing of the linkage: its title's AB, CD are lengths."""
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if n not in NO_FIGURE_OF_POINTS])
+def test_every_point_the_title_names_is_labelled(name):
+    """A bare letter of a link (CD) is a point drawn in any of its positions (C1, C2); a numbered one (C1,
+    P34) is labelled with exactly that name."""
+    title = load_problem(PROBLEMS / f"{name}.toml").title
+    shown = labels(name)
+    missing = {p for p in title_points(title)
+               if p not in shown and (len(p) > 1 or not any(q.startswith(p) for q in shown))}
+    assert not missing, (title, missing)
+
+
+ASKED = {
+    "300-01_four_bar_double_rocker_pressure_angle": {"α", "γ"},
+    "001-24_cam_displacement_at_100": {"s"},
+    "200-16_cam_poly_4567": {"s"},
+}
+"""The quantities a problem asks for at its drawn position, as the figure must mark them (angle or dimension)."""
+
+
+def marked(name: str) -> set[str]:
+    fig = figure(name)
+    return {m.symbol for g in fig.groups for m in _members(fig.values[g.key]) if isinstance(m, (AngleMark, Dimension))}
+
+
+@pytest.mark.parametrize("name", sorted(ASKED))
+def test_the_asked_quantities_are_marked_in_the_figure(name):
+    assert ASKED[name] <= marked(name)
+
+
+def test_the_crank_slider_shows_its_centre_at_infinity_and_every_joint_as_a_centre():
+    """400-05: the six centres of a crank-slider are A, B, C (P14, P12, P23), P13 and P24 by Kennedy and P34 at
+    infinity, named at the tip of an arrow perpendicular to the guide; 400-04 names its four joints likewise."""
+    assert {"P12", "P14", "P23", "P13", "P24", "P34"} <= labels("400-05_crank_slider_instant_centres")
+    assert {"P12", "P14", "P23", "P34", "P13", "P24"} <= labels("400-04_four_bar_instant_centres")
+    fig = figure("400-05_crank_slider_instant_centres")
+    tip, C = fig.values["P34"], fig.values["C"]
+    assert abs(tip.x - C.x) < 1e-9 and tip.y < C.y
