@@ -59,6 +59,12 @@ ASKED = {
     "300-01_four_bar_double_rocker_pressure_angle": {"α", "γ"},
     "001-24_cam_displacement_at_100": {"s"},
     "200-16_cam_poly_4567": {"s"},
+    "001-31_eccentric_oscillating_roller": {"ψ0", "ψ0+ψmax", "α"},
+    "001-31b_eccentric_oscillating_roller_speeds": {"ψ0", "ψ0+ψ", "α"},
+    "200-09_base_radius_cycloidal": {"r0", "e", "s0"},
+    "200-10_base_radius_centred": {"r0", "s0"},
+    "200-11_base_radius_rise_and_return": {"r0", "e", "s0"},
+    "200-19_base_radius_alpha_and_rho": {"r0", "r0,α", "e", "s0"},
 }
 """The quantities a problem asks for at its drawn position, as the figure must mark them (angle or dimension)."""
 
@@ -81,3 +87,16 @@ def test_the_crank_slider_shows_its_centre_at_infinity_and_every_joint_as_a_cent
     fig = figure("400-05_crank_slider_instant_centres")
     tip, C = fig.values["P34"], fig.values["C"]
     assert abs(tip.x - C.x) < 1e-9 and tip.y < C.y
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if n.startswith(("200-09", "200-10", "200-11", "200-19"))])
+def test_the_ds_ddelta_s_diagram_has_named_axes_and_ticks(name):
+    """200-09…11, 19: the diagram the base circle is read from has its two axes named and ticks at h and at
+    the curve's widest ds/dδ; the final r0 of 200-19 (curvature-limited) is dimensioned from O′, r0,α from O."""
+    fig = figure(name)
+    shown = {runs(t) for g in fig.groups for t in g.texts}
+    assert {"ds/dδ", "s", "h"} <= shown
+    assert any(g.key.startswith("tick_ds_") for g in fig.groups)
+    if name.startswith("200-19"):
+        dims = {m.symbol: m for g in fig.groups for m in _members(fig.values[g.key]) if isinstance(m, Dimension)}
+        assert dims["r0"].a == fig.values["O_design"] and dims["r0,α"].a == fig.values["O"]

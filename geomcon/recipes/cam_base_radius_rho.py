@@ -33,7 +33,7 @@ from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
 from ..geometry import Point, Polyline, circle, segment
 from ..numeric import bisect_up, illinois
-from ..scene import Ref, Role, Scene
+from ..scene import Ref, Role, Scene, marks
 from .base import Construction
 from .cam_common import add_profile_steps, add_rotation, extremum_value, inversion_sign
 
@@ -208,6 +208,12 @@ def add_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any], prog
                caption=("The designed centre O′ (on the vertical through O)", "设计所得回转中心 O′(在过 O 的铅垂线上)"))
     sc.add("base_design", circle, O, r0, style="theta-circle", caption=("Its base circle", "其基圆"))
     sc.add("O_B0_design", segment, O, B0, style="construction")
+    sc.add("dim_r0_design", lambda o, b, v: marks.Dimension(o, b, "r0", v, -0.3 * v), O, B0, r0,
+           role=Role.ANNOTATION, style="dim", caption=("The answer r0 = O′B0 (the curvature limit decides)",
+                                                       "所求基圆半径 r0 = O′B0(由曲率半径限制决定)"))
+    F = sc.add("O_design_foot", lambda o: Point(0.0, o.y), O, visible=False)
+    sc.add("dim_s0_design", lambda f, b, v: marks.Dimension(f, b, "s0", v, 0.3 * v), F, B0, s0,
+           role=Role.ANNOTATION, style="dim")
     rho = sc.add("rho_design", pitch_rho_min, prog, h, rot, Ref("e"), s0, role=Role.MEASUREMENT, unit="mm",
                  caption=("ρmin of the designed pitch curve", "所设计理论廓线的 ρmin"))
     sc.add("rr_max_design", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm", visible=False)

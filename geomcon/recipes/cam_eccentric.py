@@ -55,7 +55,7 @@ from .base import Construction, Quantity, Recipe
 from .cam_common import add_rotation
 from .cam_eccentric_speeds import (arm_epsilon2, arm_epsilon2_max, arm_omega2, arm_omega2_max, guide_a_max, guide_accel,
                                    guide_v_max)
-from .common import add_pivot, angle_deg, difference, length
+from .common import add_angle_mark, add_pivot, angle_deg, difference, length, velocity_end
 
 UP = Point(0.0, 1.0)
 STATES = ("delta", "A_angle", "contact_angle")
@@ -518,6 +518,26 @@ def _add_guide_speeds(sc: Scene, A: Ref, D: Ref, Rp: float, flat: bool, R: float
     return {"a": "a", "v_max": "v_max", "a_max": "a_max"}
 
 
+def _mark_arm_angles(sc: Scene, O: Ref, Q: Ref, B: Ref, A: Ref, Qs: list, Bs: tuple, p0: Ref, L: float,
+                     moved: bool) -> None:
+    """The angles 001-31 asks for, marked where they are measured: ψ0 = ∠OQ0B0 at the lowest position,
+    ψ0 + ψmax = ∠OQ1B1 at the highest, ψ0 + ψ = ∠OQB at the drawn one (when ψ ≠ 0, else Q is Q0), and α at B
+    between the normal BA and B's velocity (⊥ QB)."""
+    for k, (Qk, Bk) in enumerate(zip(Qs, Bs)):
+        sc.add(f"Q{k}O", segment, Qk, O, style="ghost", caption=("", ""))
+    add_angle_mark(sc, "mark_psi0", Qs[0], O, Bs[0], "ψ0", p0)
+    sc.add("psi_high", arm_angle, Qs[1], O, Bs[1], visible=False)
+    add_angle_mark(sc, "mark_psi_high", Qs[1], O, Bs[1], "ψ0+ψmax", Ref("psi_high"))
+    if moved:
+        sc.add("QO", segment, Q, O, style="ghost", caption=("", ""))
+        add_angle_mark(sc, "mark_psi_now", Q, O, B, "ψ0+ψ", Ref("psi_now"))
+    sc.add("normal_BA", segment, B, A, style="path",
+           caption=("The normal at the contact runs through the disc's centre A", "接触点公法线过圆盘中心 A"))
+    V = sc.add("v_B_end", velocity_end, B, Q, A, 0.3 * L, visible=False)
+    sc.add("v_B", segment, B, V, style="ghost", caption=("", ""))
+    add_angle_mark(sc, "mark_alpha", B, A, V, "α", Ref("alpha"))
+
+
 def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
     """The oscillating roller (or knife) follower."""
     R, E, a, L = g["R"], g["OA"], g["a"], g["L"]
@@ -572,8 +592,11 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
     pq = sc.add("psi_now", arm_angle, Q, O, B, visible=False)
     sc.add("psi", difference, pq, p0, role=Role.MEASUREMENT, unit="deg",
            caption=("Swing ψ = ∠OQB − ψ0", "摆角 ψ = ∠OQB − ψ0"))
-    sc.add("alpha", arm_pressure, A, B, Q, role=Role.MEASUREMENT, unit="deg",
-           caption=("α between the normal AB and B's velocity (⊥ QB)", "压力角 α:法线 AB 与 B 点速度(⊥ QB)所夹锐角"))
+    al = sc.add("alpha", arm_pressure, A, B, Q, role=Role.MEASUREMENT, unit="deg",
+                caption=("α between the normal AB and B's velocity (⊥ QB)", "压力角 α:法线 AB 与 B 点速度(⊥ QB)所夹锐角"))
+    if sc.drawing:
+        moved = bool(st and g.get(st)) or bool(g.get("turn"))      # not at the lowest position: Q ≠ Q0
+        _mark_arm_angles(sc, O, Q, B, A, Qs, (B0, B1), p0, L, moved)
     for part in ("rise", "return"):
         sc.add(f"alpha_max_{part}", _osc_alpha_max, Qs[0], A, O, B0, L, Rp, left, sense, rise, part,
                role=Role.MEASUREMENT, unit="deg",
