@@ -65,6 +65,7 @@ ASKED = {
     "200-10_base_radius_centred": {"r0", "s0"},
     "200-11_base_radius_rise_and_return": {"r0", "e", "s0"},
     "200-19_base_radius_alpha_and_rho": {"r0", "r0,α", "e", "s0"},
+    "200-18_base_radius_flat_gate2020": {"r0"},
 }
 """The quantities a problem asks for at its drawn position, as the figure must mark them (angle or dimension)."""
 
@@ -100,3 +101,12 @@ def test_the_ds_ddelta_s_diagram_has_named_axes_and_ticks(name):
     if name.startswith("200-19"):
         dims = {m.symbol: m for g in fig.groups for m in _members(fig.values[g.key]) if isinstance(m, Dimension)}
         assert dims["r0"].a == fig.values["O_design"] and dims["r0,α"].a == fig.values["O"]
+
+
+def test_the_flat_face_curvature_diagram_says_what_it_plots():
+    """200-18: the right-hand curve is the (s + s″)–δ diagram: its ordinate and δ axis are named, its lowest
+    point (where ρ = r0 + s + s″ is least) is named, and the follower is drawn on the designed cam."""
+    fig = figure("200-18_base_radius_flat_gate2020")
+    shown = {runs(t) for g in fig.groups for t in g.texts}
+    assert {"s + s″ (mm)", "δ", "min(s + s″)"} <= shown
+    assert {"face", "stem", "guide_mark"} <= {g.key for g in fig.groups}
