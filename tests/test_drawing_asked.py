@@ -66,6 +66,9 @@ ASKED = {
     "200-11_base_radius_rise_and_return": {"r0", "e", "s0"},
     "200-19_base_radius_alpha_and_rho": {"r0", "r0,α", "e", "s0"},
     "200-18_base_radius_flat_gate2020": {"r0"},
+    "001-13_radar_antenna_K1": {"ψ"},
+    "001-14_crank_rocker_K1_frame_angles": {"ψ", "φ1", "φ2"},
+    "001-21_cutter_drive_K1": {"ψ", "φ1", "φ2"},
 }
 """The quantities a problem asks for at its drawn position, as the figure must mark them (angle or dimension)."""
 
