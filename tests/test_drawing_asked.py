@@ -113,3 +113,22 @@ def test_the_flat_face_curvature_diagram_says_what_it_plots():
     shown = {runs(t) for g in fig.groups for t in g.texts}
     assert {"s + s″ (mm)", "δ", "min(s + s″)"} <= shown
     assert {"face", "stem", "guide_mark"} <= {g.key for g in fig.groups}
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_an_angle_of_zero_is_a_note_not_a_bare_number(name):
+    """001-01 printed "γ1=0.00°" with no arc beside C2: an angle mark of 0 says the lines are collinear."""
+    fig = figure(name)
+    for g in fig.groups:
+        for m in _members(fig.values[g.key]):
+            if isinstance(m, AngleMark) and abs(m.value) < 0.005:
+                assert [runs(t) for t in fig.groups[fig.groups.index(g)].texts] == [f"collinear, {m.symbol}=0°"]
+
+
+def test_the_double_rocker_on_frame_cd_marks_its_dead_points_and_names_its_links_right():
+    """001-03c: γmin = 0 at the dead points is marked there; the frame CD is never called a turning link."""
+    fig = figure("001-03c_four_bar_frame_CD")
+    assert sum(1 for g in fig.groups if g.key.startswith("mark_gamma_dead")) == 2
+    from geomcon.render.results import name_of
+    assert name_of("output_crank", "four_bar.analysis").en == "the link at the second pivot is a crank"
+    assert name_of("output_crank", "four_bar.three_positions").en == "CD turns fully"

@@ -235,6 +235,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 add_bar(sc, f"dead{i}_{nm}", a, b, style="link-alt", role=Role.CONSTRUCTION)
             gammas.append(sc.add(f"gamma_dead{i}", transmission_deg, Bd, Cd, Pe, role=Role.MEASUREMENT, unit="deg",
                                  caption=(f"γ = 0 at the dead point {jd1}d{i}", f"死点位置 {jd1}d{i} 处 γ = 0")))
+            if drawing:                    # γmin = 0 is read here: the note says so where the links line up
+                sc.add(f"mark_gamma_dead{i}", transmission_mark, Cd, Bd, Pe, "γ", gammas[-1],
+                       role=Role.ANNOTATION, style="angle")
     sc.add("gamma_min", smallest, *gammas, role=Role.MEASUREMENT, unit="deg",
            caption=("γmin over the driver's motion", "主动件运动范围内的最小传动角 γmin"))
     sc.add("dead_points", _not_or, full[jd], ch, role=Role.MEASUREMENT,

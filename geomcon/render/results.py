@@ -120,7 +120,7 @@ NAMES: dict[str, AnswerName] = {
     "C_full": _b("C turns fully", "C 为周转副"),
     "D_full": _b("D turns fully", "D 为周转副"),
     "input_crank": _b("the link at the first pivot is a crank", "第一固定铰链处的连架杆为曲柄"),
-    "output_crank": _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
+    "output_crank": _b("CD turns fully", "CD 能整周转动"),
     "dead_points": _b("dead points in the motion", "存在死点"),
     "gamma": _n("γ", "transmission angle at φ", "φ 位置的传动角"),
     "crank_rocker": _n("crank-rocker", "lengths for a crank-rocker", "曲柄摇杆机构的杆长范围"),
@@ -135,7 +135,6 @@ NAMES: dict[str, AnswerName] = {
     "B1B2": _n("B1B2", "where B's path crosses ee", "B 点轨迹与导路的交点距离"),
     "D": _n("D", "fixed pivot", "固定铰链"),
     "grashof_margin": _n("(p + q) − (s + l)", "Grashof margin", "杆长条件余量"),
-    "output_crank": _b("CD turns fully", "CD 能整周转动"),
     "gamma_min_work": _n("γmin", "working range, smallest transmission angle", "工作范围最小传动角"),
     "phi": _n("φ1,2,3", "directions of AB", "AB 的方向角"),
     "sens_A": _n("ΔA", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
@@ -189,6 +188,9 @@ NAMES: dict[str, AnswerName] = {
 """Every answer's printed name. An answer missing here prints its name with ``_`` as a space."""
 
 RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
+    # the synthesis recipes' output_crank is CD's; the analysis's is the link at the frame's second pivot
+    # (001-03c, frame CD, printed "CD turns fully" for its frame)
+    ("four_bar.analysis", "output_crank"): _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
     ("cam.translating", "v"): _n("v", "follower velocity at the cam angles asked", "从动件速度"),
     ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
     ("cam.oscillating", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
