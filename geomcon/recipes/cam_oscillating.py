@@ -249,7 +249,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_bar(sc, "arm0", A0, B0)
     psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
                   caption=("Measure ψ0 = ∠OA0B0", "量得初始摆角 ψ0 = ∠OA0B0"))
-    add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
+    add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0, 0.55 * L)   # clear of the inverted arms at A0 (000-04)
     sc.add("kA", circle, O, a, caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
                                         f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
     inv = ArmInversion(sc, cam, O, A0, B0)
