@@ -190,6 +190,8 @@ NAMES: dict[str, AnswerName] = {
 RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     # the synthesis recipes' output_crank is CD's; the analysis's is the link at the frame's second pivot
     # (001-03c, frame CD, printed "CD turns fully" for its frame)
+    # the sign of a designed offset says its side (200-11 printed e = -5.657 mm with no side): the words say how
+    ("cam.base_radius", "e"): _n("e", "offset (> 0: the follower's axis right of O)", "偏距（正值：导路在 O 右侧）"),
     ("four_bar.analysis", "output_crank"): _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
     ("cam.translating", "v"): _n("v", "follower velocity at the cam angles asked", "从动件速度"),
     ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
