@@ -17,6 +17,7 @@ Examples
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
@@ -119,7 +120,9 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
             away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
             req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
         short = None
-        if label.endswith(")") and " (" in label:          # "N (E1)": just "N" where both find no room
+        tail = label[:-1].split(" (", 1)[-1] if label.endswith(")") and " (" in label else ""
+        if tail and not re.fullmatch(r"P\d\d|∞", tail):   # "N (E1)": just "N" where both find no room; an
+            # instant centre's name ("B (P12)", "P34 (∞)") is the answer 400-04/05 ask for and stays
             head = label_runs(label.split(" (", 1)[0])
             short = TextRequest(head, size, replace(req, width=text_width(head, size) + 0.3), italic=True)
         out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional, fallback=short))
