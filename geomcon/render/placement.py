@@ -146,9 +146,9 @@ def nearer_rival(req: Request, centres: Sequence[XY]) -> list[bool]:
 
 def _rivalled(req: Request, boxes: Boxes) -> np.ndarray:
     """:func:`nearer_rival` of ``boxes``."""
-    own = boxes.to_point(*req.anchor)
-    other = np.min([boxes.to_point(x, y) for x, y in req.rivals], axis=0)
-    return other < own
+    px, py = np.array([req.anchor, *req.rivals], dtype=float).T[:, :, None]
+    d = boxes.to_point(px, py)                      # row 0 the anchor, then one row per rival
+    return d[1:].min(axis=0) < d[0]
 
 
 class _Text:
@@ -288,6 +288,7 @@ class Placer:
         outside = t.outside
         if placed is not None and placed.touching.any():       # on a text placed before: as bad as outside
             outside = np.where(t.framed & ~placed.touching, 0.0, 50.0) + np.where(t.rivalled, AMBIGUOUS, 0.0)
+        crossed = set() if placed is None else set(placed.pending[0].tolist())     # boxes covering a placed one
         best, best_score = None, -math.inf
         i = 0
         while i < t.n:
@@ -304,7 +305,7 @@ class Placer:
                 if u <= best_score + 1e-12:
                     continue                                    # it cannot win
                 score = u
-                if i in t.pending or (placed is not None and len(placed.pending_of(i))):
+                if i in t.pending or i in crossed:
                     box = req.box(*t.centres[i])
                     c = min(float(t.known[i]), self._fixed.exact(box, t.pending.get(i, _NONE)),
                             math.inf if placed is None else float(placed.known[i]),
