@@ -244,3 +244,16 @@ def test_box_and_segment_closed_forms_agree_with_geos():
     assert np.max(np.abs(d - want)) < 1e-13
     inside = inside_length(x0, y0, x1, y1, a[:, 0], a[:, 1], b[:, 0], b[:, 1])
     assert np.max(np.abs(inside - shapely.length(shapely.intersection(boxes, segs)))) < 1e-13
+
+
+def test_a_filled_disc_is_the_polygon_geos_buffers_a_point_into():
+    """A marker's obstacle, written out, has GEOS's coordinates in GEOS's order (so the placer measures what
+    it measured when the polygon came from ``buffer``)."""
+    from geomcon.render.shapes import disc_polygon
+
+    rng = np.random.default_rng(11)
+    for x, y, r in zip(rng.uniform(-800, 800, 3000), rng.uniform(-800, 800, 3000),
+                       np.r_[rng.uniform(1e-3, 100, 1000), rng.uniform(0.05, 3, 1999), 0.0]):
+        mine, geos = disc_polygon(float(x), float(y), float(r)), shapely.Point(x, y).buffer(r, 8)
+        assert shapely.get_coordinates(mine).tolist() == shapely.get_coordinates(geos).tolist()
+        assert mine.equals_exact(geos, 0.0) or (mine.is_empty and geos.is_empty)
