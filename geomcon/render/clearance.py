@@ -113,6 +113,10 @@ class Boxes:
         """The boxes ``rows``."""
         return Boxes(*(getattr(self, f)[rows] for f in Boxes.__dataclass_fields__))
 
+    def slice(self, start: int, stop: int) -> Boxes:
+        """The boxes ``start`` to ``stop`` (views, not copies)."""
+        return Boxes(*(getattr(self, f)[start:stop] for f in Boxes.__dataclass_fields__))
+
     @property
     def turned(self) -> np.ndarray:
         """Which boxes are rotated."""
