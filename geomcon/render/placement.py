@@ -7,8 +7,8 @@ label with room to spare takes its preferred direction; small penalties favour n
 positions among equally free ones.
 
 Scoring is vectorised (:mod:`.clearance`): :meth:`Placer.prepare` lays out the candidates of every text of a
-figure at once (:mod:`.candidates`) and measures them against the fixed drawing in one pass, and each text then measures its candidates against the few
-texts and leaders placed before it; only what a candidate covers of an area is left to shapely, computed for
+figure at once (:mod:`.candidates`) and measures them against the fixed drawing in one pass, and each text
+then measures its candidates against the few texts and leaders placed before it; only what a candidate covers of an area is left to shapely, computed for
 the candidates whose choice it decides. The candidates are tried in order, one replacing the best so far
 when its score is higher by more than 1e-12: the choice of scoring every candidate in turn by shapely (the
 closed forms agree with GEOS to rounding).
