@@ -418,6 +418,7 @@ class Placed:
         self._rects: list[tuple[float, ...]] = []
         self._rect_ids: list[int] = []
         self._leaders: list[tuple[float, ...]] = []
+        self._leader_bounds: list[tuple[float, ...]] = []
         self._leader_ids: list[int] = []
         self._general = False
         self._arrays: tuple[np.ndarray, ...] | None = None
@@ -432,7 +433,9 @@ class Placed:
             self._rects.append(rect)
             self._rect_ids.append(len(self.geoms))
         elif shapely.get_type_id(geom) == 1 and shapely.get_num_coordinates(geom) == 2:
-            self._leaders.append(tuple(shapely.get_coordinates(geom).ravel().tolist()))
+            ax, ay, bx, by = shapely.get_coordinates(geom).ravel().tolist()
+            self._leaders.append((ax, ay, bx, by))
+            self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
             self._leader_ids.append(len(self.geoms))
         else:
             self._general = True
@@ -443,12 +446,9 @@ class Placed:
         """The rectangles' and the leaders' bounds side by side (x0, y0, x1, y1; the rectangles first), the
         leaders' ends (ax, ay, bx, by) and the index into :attr:`geoms` of each of them."""
         if self._arrays is None:
-            r = np.array(self._rects, dtype=float).reshape(-1, 4)
-            g = np.array(self._leaders, dtype=float).reshape(-1, 4)
-            lead = np.stack([np.minimum(g[:, 0], g[:, 2]), np.minimum(g[:, 1], g[:, 3]),
-                             np.maximum(g[:, 0], g[:, 2]), np.maximum(g[:, 1], g[:, 3])], axis=1)
-            bounds = np.concatenate([r, lead]).T.copy()
-            self._arrays = (*bounds, *g.T.copy(), np.array(self._rect_ids + self._leader_ids, dtype=np.intp))
+            bounds = np.array(self._rects + self._leader_bounds, dtype=float).reshape(-1, 4).T.copy()
+            ends = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
+            self._arrays = (*bounds, *ends, np.array(self._rect_ids + self._leader_ids, dtype=np.intp))
         return self._arrays
 
     def measure(self, boxes: Boxes) -> Measured:

@@ -27,7 +27,7 @@ from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest
-from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
+from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .shapes import Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
@@ -373,7 +373,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                     t, centre = t.fallback, alt
             box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
-                               or nearer_rival(t.request, [centre])[0]):
+                               or placer.rivalled(t.request, g.key, centre)):
                 t = _led(t)             # a row's number with no room by its point: farther, with a leader
                 centre, _ = placer.best(t.request, g.key)
                 box = t.request.box(*centre)

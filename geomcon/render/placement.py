@@ -316,6 +316,17 @@ class Placer:
                 break
         return (t.centre(best) if best is not None else req.anchor), best_score
 
+    def rivalled(self, req: Request, owner: str, centre: XY) -> bool:
+        """:func:`nearer_rival` of the box of ``req`` at ``centre``, read from the candidates already laid out
+        when ``centre`` is one of them (as :meth:`best` returns it)."""
+        t = self._ready.get((req, owner))
+        if t is not None:
+            c, a, b = t.batch.c, t.offset, t.offset + t.n
+            k = np.flatnonzero((c.cx[a:b] == centre[0]) & (c.cy[a:b] == centre[1]))
+            if len(k):
+                return bool(t.rivalled[k[0]])
+        return nearer_rival(req, [centre])[0]
+
     def commit(self, geom: shapely.Geometry) -> None:
         """Record something placed (a text's box, a leader line): later texts keep clear of it."""
         self._placed.append(geom)
