@@ -349,7 +349,8 @@ def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
     for name, groups in fig.layers():
         layer = Element("g", id=f"layer-{name}")
         for sd in groups:
-            g = Element("g", id=step_id(sd.key), class_=sd.classes)
+            g = Element("g", id=f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key),
+                        class_=sd.classes)
             g.attribs["data-step"] = str(sd.number)
             for shape in sd.shapes:
                 g.add(to_svg(shape))
