@@ -30,7 +30,9 @@ def _solution(pid: str):
 
 @lru_cache(maxsize=None)
 def _sheet(pid: str) -> str:
-    return _solution(pid).sheets(gallery_page())[0]
+    """The sheet holding the Results (sheet 1, or the first text sheet when they do not fit beside the figure)."""
+    sheets = _solution(pid).sheets(gallery_page())
+    return next((s for s in sheets if '<g id="info">' in s), sheets[0])
 
 
 def _gap(angle: float, start: float, sweep: float) -> float:
@@ -61,3 +63,72 @@ def test_no_compass_arc_is_drawn_before_the_point_it_is_swung_for(pid):
             assert through, (pid, g.key)
             assert min(through) <= g.number or (min(through) == first and not g.arc), \
                 (pid, g.key, g.number, sorted(through))
+
+
+_ROW = re.compile(r'<(?:text|g)\b[^>]*\bclass="(info-head|info|warning-head|warning)((?: [a-z-]+)*)"[^>]*>')
+
+
+def _info_rows(svg: str) -> list[tuple[str, int | None, bool]]:
+    """The Results / Warnings block's headings and lines in document order: (kind, data-step, shown)."""
+    if '<g id="info">' not in svg:
+        return []
+    block = svg[svg.index('<g id="info">'):]
+    block = block[:block.index("</g>")]
+    out = []
+    for m in _ROW.finditer(block):
+        step = re.search(r'data-step="(\d+)"', m.group(0))
+        out.append((m.group(1), int(step.group(1)) if step else None, "future" not in m.group(2).split()))
+    return out
+
+
+def _depends_on_frame(sc, key: str, k: int) -> bool:
+    """Whether step ``key`` is, or depends on, a visible step of frame ``k``."""
+    frame = {s.key: i for i, group in enumerate(sc.frames(), 1) for s in group}
+    seen, todo = set(), [key]
+    while todo:
+        x = todo.pop()
+        if x in seen:
+            continue
+        seen.add(x)
+        if frame.get(x) == k:
+            return True
+        todo += list(sc._rec[x][7])
+    return False
+
+
+@pytest.mark.parametrize("pid", PROBLEMS)
+def test_a_result_shows_from_the_step_that_produces_it_and_a_warning_from_the_last(pid):
+    """Each result line is tagged with a frame whose visible step it depends on (an answer no drawn step makes —
+    200-05's δ(α_max), computed from the givens — is tagged with the last frame, never frame 1), and each warning,
+    with its heading, with the last frame: 200-05 showed both at step 1."""
+    sol = _solution(pid)
+    sc = sol.drawing_scene
+    n = len(sc.frames())
+    maps = sol.construction.solutions or (sol.construction.answers,)
+    answers = [q.name for q in sol.recipe.answers if q.name in sol.answers]
+    for name, step in zip(answers, sol.info_steps()):
+        keys = [m[name] for m in maps if name in m]
+        assert step == n or any(_depends_on_frame(sc, k, step) for k in keys), (pid, name, step)
+    rows = _info_rows(_sheet(pid))
+    assert all(step is not None for _, step, _ in rows), pid
+    assert {step for kind, step, _ in rows if kind == "info"} == set(sol.info_steps()), pid
+    assert all(step == n for kind, step, _ in rows if kind.startswith("warning")), pid
+    assert bool(sol.warnings or sol.info_steps()) == bool(rows), pid
+    assert bool(sol.warnings) == any(kind == "warning" for kind, _, _ in rows), pid
+
+
+@pytest.mark.parametrize("pid", PROBLEMS)
+def test_every_frame_shows_the_results_and_warnings_of_its_steps_packed(pid):
+    """At every frame k (``--steps`` frame k, the player's step k), the Results / Warnings lines shown are those
+    of steps ≤ k and they come first, under their heading: no blank row for a result still to come, no heading
+    without a line (001-08 step 14 had blank rows between ∠C2AD and θ)."""
+    sheet = _sheet(pid)
+    n = len(_solution(pid).drawing_scene.frames())
+    for k in range(1, n + 1):
+        rows = _info_rows(frame_of(sheet, k))
+        assert all(shown == (step <= k) for _, step, shown in rows), (pid, k)
+        shown = [s for _, _, s in rows]
+        assert shown == sorted(shown, reverse=True), (pid, k, rows)      # the shown lines are the first ones
+        heads = [i for i, (kind, _, _) in enumerate(rows) if kind.endswith("-head")]
+        for i in heads:
+            assert not rows[i][2] or (i + 1 < len(rows) and rows[i + 1][2]), (pid, k)
