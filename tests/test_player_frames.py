@@ -132,3 +132,16 @@ def test_every_frame_shows_the_results_and_warnings_of_its_steps_packed(pid):
         heads = [i for i, (kind, _, _) in enumerate(rows) if kind.endswith("-head")]
         for i in heads:
             assert not rows[i][2] or (i + 1 < len(rows) and rows[i + 1][2]), (pid, k)
+
+
+@pytest.mark.parametrize("pid", PROBLEMS)
+def test_the_player_prints_the_step_caption_once_on_the_sheet(pid):
+    """The current step's caption is the sheet's (as in ``--steps`` frame k), not printed again in a panel above
+    the drawing (hlook11 item 41): outside the sheets and the script, the page holds no caption."""
+    page = (ROOT / "gallery" / f"{pid}.html").read_text(encoding="utf-8")
+    outside = re.sub(r"<script>.*?</script>", "", page[:page.index('<div id="drawing">')], flags=re.S)
+    sheet = page[page.index('id="page-1"'):]
+    caps = re.findall(r'<text class="stepcap" data-step="1"[^>]*>(.*?)</text>', sheet, re.S)
+    assert caps and 'id="caption"' not in outside, pid
+    words = re.sub(r"<[^>]+>", "", caps[0]).split(". ", 1)[-1]
+    assert words and words not in outside, pid
