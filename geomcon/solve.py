@@ -613,10 +613,12 @@ class Solution:
 
     def info_steps(self) -> list[int]:
         """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
-        several candidate solutions, the last of its candidates' steps: a result never shows early)."""
+        several candidate solutions, the last of its candidates' steps: a result never shows early; an answer
+        no drawn step produces — computed from the givens alone — shows with the last frame)."""
         sc = self.drawing_scene
+        last = len(sc.frames())
         maps = self.construction.solutions or (self.construction.answers,)
-        return [sc.available_at([m[q.name] for m in maps if q.name in m])
+        return [sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
                 for q in self.recipe.answers if q.name in self.answers]
 
     def title(self) -> str:

@@ -26,7 +26,7 @@ import shapely.ops
 from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
-from .draw import Context, Drawn, TextRequest
+from .draw import Context, Drawn, TextRequest, compass_half, compass_steps, draw_compass
 from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .crossings import NEAR, Crossings
@@ -53,6 +53,8 @@ class StepDrawing:
     classes: str
     layer: str
     shapes: list[Shape] = field(default_factory=list)
+    arc: bool = False
+    """A compass circle's arcs drawn by a later step (the one constructing their point): not a step's group."""
 
     @property
     def texts(self) -> list[Text]:
@@ -167,9 +169,10 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     else:
         box = viewbox or grow(content_box(scene, steps, values), FIG_MARGIN * mu)
     view = View(box, mu, origin)
-    pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
+    numbered = [(n, v) for n, s in steps for v in [values[s.key]] if isinstance(v, Point)]
+    pts = tuple(p for _, p in numbered)
     ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
-                  frames=_links(steps, values, view, frame=True))
+                  frames=_links(steps, values, view, frame=True), numbers=tuple(n for n, _ in numbered))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -178,11 +181,21 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         kind = kind_of(value)
         style = resolve_style(s.style, s.role, kind)
         is_cur = number == current
-        drawn = draw(value, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
         layer = "points" if kind == "point" else (style.layer if kind != "none" else "given")
         cls = f"step role-{s.role.value} style-{style.name if kind != 'none' else (s.style or 'none')}"
+        later: list[tuple[int, list[tuple[float, float]]]] = []
+        if style.compass and isinstance(value, Circle):      # an arc through a later point: with that point's step
+            (_, own), *later = compass_steps(value, ctx, number, compass_half(value, ctx))
+            drawn = draw_compass(value, own, highlighted(style) if is_cur else style, ctx)
+        else:
+            drawn = draw(value, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
         pending.append((drawn, is_cur))
+        for m, parts in later:
+            arcs = draw_compass(value, parts, highlighted(style) if m == current else style, ctx)
+            groups.append(StepDrawing(s.key, m, "arc" + cls[4:] + (" current" if m == current else ""), layer,
+                                      list(arcs.shapes), arc=True))
+            pending.append((arcs, m == current))
     _place_texts(view, groups, pending)
     return Figure(view, groups, values, n)
 
