@@ -106,8 +106,9 @@ def crank_rocker_gamma_from_positions(A, D, Cf, Ce) -> float:
     >>> round(crank_rocker_gamma_from_positions(A, D, Cf, Ce), 9) == round(ex["gamma_min"], 9)
     True
     """
-    a = abs(math.dist(A, Ce) - math.dist(A, Cf)) / 2.0
-    b = (math.dist(A, Ce) + math.dist(A, Cf)) / 2.0
+    ace, acf = math.dist(A, Ce), math.dist(A, Cf)           # each distance once
+    a = abs(ace - acf) / 2.0
+    b = (ace + acf) / 2.0
     c, d = math.dist(D, Cf), math.dist(A, D)
     out = []
     for e_b, e_c, e_bd, per in (

@@ -50,7 +50,8 @@ def perpendicular_bisector(a: Point, b: Point) -> Line:
 
 def perpendicular(line: Line, through: Point) -> Line:
     """The perpendicular to ``line`` through ``through``, directed to the line's left."""
-    return Line(through, line.normal)
+    d = line.direction
+    return Line(through, Point(-d.y, d.x))                  # line.normal, without the property
 
 
 def parallel(line: Line, through: Point) -> Line:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 
+from ..analytic.linkages import theta_from_k
 from ..errors import Degenerate
 from ..geometry import (Arc, Circle, Line, Point, circle_through3, line_line, polar_angle, ray_at_angle,
                         thales_circle)
@@ -67,8 +68,12 @@ def ray_line(r) -> Line:
 
 
 def perpendicular_at(a: Point, b: Point) -> Line:
-    """The perpendicular to ``ab`` at ``b``."""
-    return Line(b, (b - a).perp())
+    """The perpendicular to ``ab`` at ``b``.
+
+    >>> perpendicular_at(Point(0, 0), Point(2, 0)).direction
+    Point(x=-0.0, y=1.0)
+    """
+    return Line(b, Point(-(b.y - a.y), b.x - a.x))          # (b − a).perp(), without the two Points
 
 
 def meet_lines(l1, l2) -> Point:
@@ -151,8 +156,8 @@ def arc_point_from_end(arc: Arc, end: Point, s: float) -> Point:
 
 
 def theta_of_k(K: float) -> float:
-    """θ = 180°(K − 1)/(K + 1) (a step operation)."""
-    from ..analytic.linkages import theta_from_k
+    """θ = 180°(K − 1)/(K + 1) (a step operation): the twin's formula, imported once (an import statement in
+    the step cost more than the step)."""
     return theta_from_k(K)
 
 
