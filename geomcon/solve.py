@@ -432,15 +432,23 @@ class Solution:
                     if not row["ok"]:
                         row = self._conditioned(row, j, flat, unit)
                     rows.append(row)
-        if self.recipe.back_check is not None:
+        back_check = self.recipe.back_check
+        if back_check is not None:
+            given = self.problem.given
             for i, built in enumerate(self.solution_values):
-                prefix = f"solutions[{i}]." if i else ""
-                for name, rebuilt, required, unit in planned(self.recipe.name, self.recipe.back_check,
-                                                             self.problem.given, built):
-                    row = check_row(f"{prefix}back_substitution.{name}", rebuilt, required, self.unit_scale(unit),
-                                    unit)
+                prefix = f"solutions[{i}].back_substitution." if i else "back_substitution."
+                for name, b, e, unit in planned(self.recipe.name, back_check, given, built):
+                    if type(b) is float and type(e) is float:
+                        # check_row's row, its arithmetic in place, as for the answers above
+                        err = abs(b - e)
+                        sc = scales.get(unit)
+                        tol = CHECK_REL * max(abs(b), abs(e), self.unit_scale(unit) if sc is None else sc)
+                        row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err,
+                               "tol": tol, "ok": isfinite(err) and err <= tol, "unit": unit}
+                    else:
+                        row = check_row(prefix + name, b, e, self.unit_scale(unit), unit)
                     if not row["ok"]:
-                        row = self._back_conditioned(row, name, i, self.problem.given, built)
+                        row = self._back_conditioned(row, name, i, given, built)
                     rows.append(row)
         if len(self.solution_values) != len(self.analytic):
             units = {q.name: q.unit for q in self.recipe.givens}
