@@ -399,21 +399,24 @@ class Solution:
         when it fails there, at the problem's own condition."""
         rows = []
         scales = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
-        isfinite = math.isfinite
+        inf = math.inf
+        pairs = _answer_pairs(self.recipe)
         for i, j in self.matching:
             built, exact = self.solution_values[i], self.analytic[j]
             prefix = f"solutions[{i}]." if i else ""
-            for name, unit in _answer_pairs(self.recipe):
+            for name, unit in pairs:
                 b, e = built.get(name), exact.get(name)
                 if b is None or e is None:
                     continue
-                if type(b) is float and type(e) is float and not b == e == math.inf:
-                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it)
+                if type(b) is float and type(e) is float and not b == e == inf:
+                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it);
+                    # err < inf and err <= tol is isfinite(err) and err <= tol (a NaN fails both comparisons)
                     err = abs(b - e)
                     tol = CHECK_REL * max(abs(b), abs(e), scales[unit])
+                    ok = err < inf and err <= tol
                     row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err, "tol": tol,
-                           "ok": isfinite(err) and err <= tol, "unit": unit}
-                    rows.append(row if row["ok"] else self._conditioned(row, j, name, unit))
+                           "ok": ok, "unit": unit}
+                    rows.append(row if ok else self._conditioned(row, j, name, unit))
                     continue
                 parts: Any = ([(prefix + name, b, e, name)] if type(b) is float and type(e) is float else
                               [(label, x, y, flat) for (label, x, y), (flat, _, _)
@@ -432,15 +435,23 @@ class Solution:
                     if not row["ok"]:
                         row = self._conditioned(row, j, flat, unit)
                     rows.append(row)
-        if self.recipe.back_check is not None:
+        back_check = self.recipe.back_check
+        if back_check is not None:
+            given = self.problem.given
             for i, built in enumerate(self.solution_values):
-                prefix = f"solutions[{i}]." if i else ""
-                for name, rebuilt, required, unit in planned(self.recipe.name, self.recipe.back_check,
-                                                             self.problem.given, built):
-                    row = check_row(f"{prefix}back_substitution.{name}", rebuilt, required, self.unit_scale(unit),
-                                    unit)
+                prefix = f"solutions[{i}].back_substitution." if i else "back_substitution."
+                for name, b, e, unit in planned(self.recipe.name, back_check, given, built):
+                    if type(b) is float and type(e) is float:
+                        # check_row's row, its arithmetic in place, as for the answers above
+                        err = abs(b - e)
+                        sc = scales.get(unit)
+                        tol = CHECK_REL * max(abs(b), abs(e), self.unit_scale(unit) if sc is None else sc)
+                        row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err,
+                               "tol": tol, "ok": err < inf and err <= tol, "unit": unit}
+                    else:
+                        row = check_row(prefix + name, b, e, self.unit_scale(unit), unit)
                     if not row["ok"]:
-                        row = self._back_conditioned(row, name, i, self.problem.given, built)
+                        row = self._back_conditioned(row, name, i, given, built)
                     rows.append(row)
         if len(self.solution_values) != len(self.analytic):
             units = {q.name: q.unit for q in self.recipe.givens}

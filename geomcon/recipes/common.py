@@ -16,14 +16,22 @@ import math
 
 from typing import Any, Mapping
 
-from ..geometry import Point, angle_at, circle, distance, point_along, segment
+from .. import tolerance as _tolerance                  # REL_TOL read at run time, as the geometry reads it
+from ..analytic.design_by_k import rocker_design_valid
+from ..geometry import Line, Point, angle_at, circle, point_along, segment
+from ..geometry.measure import _signed_angle_xy
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 
 
 def angle_deg(vertex: Point, a: Point, b: Point) -> float:
-    """∠a-vertex-b in degrees, in [0, 180]."""
-    return math.degrees(angle_at(vertex, a, b))
+    """∠a-vertex-b in degrees, in [0, 180].
+
+    >>> angle_deg(Point(0, 0), Point(1, 0), Point(0, 2))
+    90.0
+    """
+    ox, oy = vertex.x, vertex.y                            # angle_at(vertex, a, b), one call fewer
+    return math.degrees(abs(_signed_angle_xy(a.x - ox, a.y - oy, b.x - ox, b.y - oy)))
 
 
 def transmission_deg(b: Point, c: Point, d: Point) -> float:
@@ -50,8 +58,12 @@ def k_ratio(theta: float) -> float:
 
 
 def length(a: Point, b: Point) -> float:
-    """Distance ab (a measurement step operation)."""
-    return distance(a, b)
+    """Distance ab (a measurement step operation).
+
+    >>> length(Point(0, 0), Point(3, 4))
+    5.0
+    """
+    return math.hypot(b.x - a.x, b.y - a.y)                 # distance(a, b), one call fewer
 
 
 def smallest(*values: float) -> float:
@@ -163,7 +175,14 @@ def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str
 
 
 def along_line(line, t: float, sign: float = 1.0) -> Point:
-    """The point at signed distance ``sign·t`` along a line from its reference point."""
+    """The point at signed distance ``sign·t`` along a line from its reference point.
+
+    >>> along_line(Line(Point(1, 1), Point(0, 1)), 2.0, -1.0)
+    Point(x=1.0, y=-1.0)
+    """
+    if type(line) is Line:                                 # line.at(sign·t), without its two Points
+        p, d, s = line.point, line.direction, sign * t
+        return Point(p.x + d.x * s, p.y + d.y * s)
     return line.at(sign * t)
 
 
@@ -315,9 +334,6 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     >>> is_valid(Point(0, 0), Point(20, 60), Point(100, 79.37), Point(90, 0), 80.0, -1)
     True
     """
-    from ..analytic.design_by_k import rocker_design_valid
-    from ..tolerance import REL_TOL
-
     ax, ay = A.x, A.y
     ux, uy = D.x - ax, D.y - ay                            # u = D − A
     AD = math.hypot(ux, uy)
@@ -327,7 +343,7 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     a, b = abs(d2 - d1) / 2.0, (d1 + d2) / 2.0             # half_difference, half_sum
     if arc_side:
         cx, cy = P2.x - P1.x, P2.y - P1.y                  # chord = P2 − P1; chord × (A − P1)
-        if arc_side * (cx * (ay - P1.y) - cy * (ax - P1.x)) <= REL_TOL * math.hypot(cx, cy) * max(b, CD, AD):
+        if arc_side * (cx * (ay - P1.y) - cy * (ax - P1.x)) <= _tolerance.REL_TOL * math.hypot(cx, cy) * max(b, CD, AD):
             return False
     return rocker_design_valid(a, b, CD, AD, (ux * (P1.y - ay) - uy * (P1.x - ax)) / AD,
                                (ux * (P2.y - ay) - uy * (P2.x - ax)) / AD)
