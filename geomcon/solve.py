@@ -500,6 +500,8 @@ class Solution:
     @property
     def warnings(self) -> list[str]:
         """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
+        from .render.results import fixed, percent
+
         out = self._validation + self.advice + self._built
         allow = self.problem.given.get("gamma_allow")
         for i, sol in enumerate(self.solution_values):
@@ -519,9 +521,9 @@ class Solution:
         for r in self.published:
             rel = r["rel_deviation"]
             if r["doubtful"]:
-                how = f"{100 * rel:+.2f} %" if rel is not None else f"{r['deviation']:+g}"
+                how = percent(rel) if rel is not None else f"{r['deviation']:+g}"
                 out.append(f"published {r['quantity']} = {r['published']:g} is doubtful: it deviates from the exact "
-                           f"{r['exact']:.6g} by {how}, beyond drafting accuracy (±{100 * PUBLISHED_WARN_REL:g} %)")
+                           f"{fixed(r['exact'])} by {how}, beyond drafting accuracy (±{100 * PUBLISHED_WARN_REL:g} %)")
         return out
 
     @property
@@ -568,6 +570,8 @@ class Solution:
     # unless a drawing is asked for)
     def info_lines(self) -> list[str]:
         """Result lines printed under the protocol: answer, twin agreement, published deviation."""
+        from .render.results import percent
+
         pub = {r["quantity"]: r for r in self.published}
         lines = []
         for q in self.recipe.answers:
@@ -586,8 +590,8 @@ class Solution:
             printed = [pub[name] for name, _, _ in parts if name in pub]
             if printed:
                 rels = [p["rel_deviation"] for p in printed if p["rel_deviation"] is not None]
-                worst = f", worst {100 * max(rels, key=abs):+.2f} %" if rels and len(parts) > 1 else (
-                    f", {100 * rels[0]:+.2f} %" if rels else "")
+                worst = f", worst {percent(max(rels, key=abs))}" if rels and len(parts) > 1 else (
+                    f", {percent(rels[0])}" if rels else "")
                 values = ", ".join(f"{p['published']:g}" for p in printed)
                 doubt = ", doubtful: beyond drafting accuracy" if any(p["doubtful"] for p in printed) else ""
                 line += f"  (printed {values}{worst}{doubt})"
@@ -598,7 +602,7 @@ class Solution:
         """The result lines of a drawing, as a textbook prints them (:mod:`geomcon.render.results`): one per
         answer, in the order of :meth:`info_lines`, each saying what agreed with what and how the printed
         answer deviates."""
-        from .render.results import result_line
+        from .render.results import percent, result_line, shown_printed
 
         pub = {r["quantity"]: r for r in self.published}
         lines = []
@@ -613,13 +617,14 @@ class Solution:
                 if p is None:
                     continue
                 rel = p["rel_deviation"]
-                how = "" if rel is None else (f"{100 * rel:+.2f} %" if p["deviation"] else ("exact" if lang != "zh" else "精确"))
+                how = "" if rel is None else (percent(rel) if p["deviation"] else ("exact" if lang != "zh" else "精确"))
                 doubt = ("，存疑" if lang == "zh" else ", doubtful") if p["doubtful"] else ""
                 sep = "，" if lang == "zh" else ", "
-                printed.append(f"{p['published']:g}" + (f"{sep}{how}" if how else "") + doubt)
+                printed.append(shown_printed(p["published"], q.unit, lang) + (f"{sep}{how}" if how else "") + doubt)
+            at = self.problem.given.get("at") if "`at`" in q.doc else None
             lines.append(result_line(q.name, self.answers[q.name], q.unit,
                                      twin=None if not rows else all(r["ok"] for r in rows), printed=printed,
-                                     lang=lang, recipe=self.recipe.name))
+                                     lang=lang, recipe=self.recipe.name, at=tuple(at or ())))
         return lines
 
     def info_steps(self) -> list[int]:

@@ -158,7 +158,7 @@ def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
     sc.add("floor_point", floor_point, floor, origin, width, style="joint", label="min(s + s″)",
            caption=("Its lowest point (exact: a root of s′ + s‴ or an end of a piece)", "其最低点(精确:s′ + s‴ 的根或分段端点)"))
     r0 = sc.add("r0", flat_r0, rho_allow, floor, role=Role.MEASUREMENT, unit="mm",
-                caption=(f"r0 = ρallow − min(s + s″) with ρallow = {rho_allow:g}", f"r0 = ρallow − min(s + s″),ρallow = {rho_allow:g}"))
+                caption=(f"r0 = ρ_allow − min(s + s″) with ρ_allow = {rho_allow:g}", f"r0 = ρ_allow − min(s + s″),ρ_allow = {rho_allow:g}"))
     sc.add("r0_rho", float, r0, visible=False)
     sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
     if sc.drawing:

@@ -123,7 +123,7 @@ def _advise(g: Mapping[str, Any]) -> list[str]:
     for part in ("rise", "return") if allow is not None and not flat else ():
         a, where = cam.alpha_max(part)
         if a > allow:
-            out.append(f"α_max of the {part} = {a:.4g}° exceeds alpha_allow = {allow:g}° (at δ = {where:.4g}°)")
+            out.append(f"α_max of the {part} = {a:.3f}° exceeds alpha_allow = {allow:g}° (at δ = {where:.3f}°)")
     return out
 
 

@@ -162,10 +162,13 @@ def theta_of_k(K: float) -> float:
 
 
 def add_theta_step(sc: Scene, K: float, *, note: tuple[str, str] = ("", "")) -> Ref:
-    """The first step of every design by K: θ from K (measured, numbered), and K itself as a hidden answer."""
+    """The first step of every design by K: θ from K (measured, numbered), and K itself as a hidden answer.
+
+    The caption ends with the formula, so that the measured value appended to it reads ``θ = 180°(K − 1)/(K + 1)
+    = 16.364°`` (not ``K = 1.2 = 16.364°``); ``note`` (a sentence) goes before it."""
     th = sc.add("theta", theta_of_k, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}{note[0]}",
-                         f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}{note[1]}"))
+                caption=(f"{note[0]}With K = {K:g}: θ = 180°(K − 1)/(K + 1)",
+                         f"{note[1]}K = {K:g},极位夹角 θ = 180°(K − 1)/(K + 1)"))
     sc.add("K", float, K, role=Role.MEASUREMENT, visible=False)
     return th
 

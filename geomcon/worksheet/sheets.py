@@ -37,7 +37,7 @@ from typing import Any, Sequence
 import svgwrite
 
 from ..geometry.primitives import Point
-from ..render.labels import label_runs, text_width
+from ..render.labels import label_runs, rich_runs, text_width
 from ..render.view import TAU, clip_arc
 from ..render.serial import svg_string
 from ..errors import ProblemError
@@ -175,15 +175,25 @@ def page_drawing(p: Page, units: int) -> svgwrite.Drawing:
 
 
 def svg_text(dwg: svgwrite.Drawing, s: str, x: float, y: float, size: float, *, anchor: str = "start",
-          bold: bool = False) -> Any:
+             bold: bool = False, rich: bool = False) -> Any:
+    """A text: a short label as a point label (C1: C with subscript 1), a statement or an answer box's label
+    (``rich``) with its symbols typeset as the Results block types them (γmin, DC1, r0: :func:`rich_runs`),
+    anything else as it is. A subscript is lowered and the text after it raised back."""
     attrs: dict[str, Any] = {"font_size": u(size), "fill": INK}
     if anchor != "start":
         attrs["text_anchor"] = anchor
     if bold:
         attrs["font_weight"] = "bold"
     el = dwg.text("", insert=(u(x), u(y)), **attrs)
-    for run, sub in label_runs(s) if len(s) <= 8 else ((s, False),):
-        el.add(dwg.tspan(run, font_size=u(size * 0.72), dy=[u(size * 0.25)]) if sub else dwg.tspan(run))
+    runs = rich_runs(s) if rich else label_runs(s) if len(s) <= 8 else ((s, False),)
+    down = False
+    for run, sub in runs:
+        if sub:
+            el.add(dwg.tspan(run, font_size=u(size * 0.72), dy=[u(size * 0.25)]) if not down else
+                   dwg.tspan(run, font_size=u(size * 0.72)))
+        else:
+            el.add(dwg.tspan(run, dy=[u(-size * 0.25)]) if down else dwg.tspan(run))
+        down = sub
     el.attribs["xml:space"] = "preserve"
     return el
 
@@ -243,7 +253,7 @@ def header(dwg: svgwrite.Drawing, p: Page, key: bool = False) -> Any:
     size, y = p.lay.size, p.lay.text_top + p.lay.size * 1.2
     for lines in p.lay.lines:
         for line in lines:
-            g.add(svg_text(dwg, line, x0 + 3, y, size))
+            g.add(svg_text(dwg, line, x0 + 3, y, size, rich=True))
             y += size * LINE
         y += 2.0
     return g
@@ -256,7 +266,7 @@ def answer_boxes(dwg: svgwrite.Drawing, p: Page, values: Sequence[str] | None = 
     for i, (lab, (row, dx)) in enumerate(zip(slot_labels(p.ex, p.variant, p.lang), p.lay.slots)):
         name, _, unit = lab.partition("\t")
         x, y = x0 + dx, p.lay.answers_top + row * ANSWER_H
-        g.add(svg_text(dwg, name, x, y + 6.5, ANSWER_FONT))
+        g.add(svg_text(dwg, name, x, y + 6.5, ANSWER_FONT, rich=True))
         bx = x + text_width(name, ANSWER_FONT) + 1.5
         g.add(dwg.rect((u(bx), u(y + 1)), (u(BOX_W), u(8.5)), fill="none", stroke=INK, stroke_width=u(0.35)))
         g.add(svg_text(dwg, unit, bx + BOX_W + 1.5, y + 6.5, ANSWER_FONT))
