@@ -44,8 +44,10 @@ def problem_files(problems_dir: Path) -> list[Path]:
 
 
 def _deviation(row: dict) -> str:
+    from .render.results import percent
+
     rel = row["rel_deviation"]
-    how = "exact" if not row["deviation"] else (f"{100 * rel:+.2f} %" if rel is not None else f"{row['deviation']:+.3g}")
+    how = "exact" if not row["deviation"] else (percent(rel) if rel is not None else f"{row['deviation']:+.3g}")
     return f"{row['quantity']} {row['published']:g} ({how})"
 
 
@@ -288,12 +290,16 @@ def law_diagrams() -> dict[str, str]:
     from .cam.custom_laws import HANDBOOK_LAWS
     from .cam.laws import LAWS
     from .cam.program import parse_program
+    from .render.zh import zh_punct
 
     out = {}
     for name, lw in {**LAWS, **HANDBOOK_LAWS}.items():
         prog = parse_program([{"kind": "rise", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90},
                               {"kind": "return", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90}])
-        out[f"law_{name}.svg"] = motion_diagrams_svg(prog, 20.0, title=f"{name} ({lw.zh}), impact: {lw.impact}")
+        # the Chinese name in its own words with full-width brackets (正弦加速度（摆线）运动规律), as the headings
+        # print two languages ("Results  结果")
+        out[f"law_{name}.svg"] = motion_diagrams_svg(prog, 20.0,
+                                                     title=f"{name}  {zh_punct(lw.zh)}, impact: {lw.impact}")
     return out
 
 

@@ -399,21 +399,24 @@ class Solution:
         when it fails there, at the problem's own condition."""
         rows = []
         scales = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
-        isfinite = math.isfinite
+        inf = math.inf
+        pairs = _answer_pairs(self.recipe)
         for i, j in self.matching:
             built, exact = self.solution_values[i], self.analytic[j]
             prefix = f"solutions[{i}]." if i else ""
-            for name, unit in _answer_pairs(self.recipe):
+            for name, unit in pairs:
                 b, e = built.get(name), exact.get(name)
                 if b is None or e is None:
                     continue
-                if type(b) is float and type(e) is float and not b == e == math.inf:
-                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it)
+                if type(b) is float and type(e) is float and not b == e == inf:
+                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it);
+                    # err < inf and err <= tol is isfinite(err) and err <= tol (a NaN fails both comparisons)
                     err = abs(b - e)
                     tol = CHECK_REL * max(abs(b), abs(e), scales[unit])
+                    ok = err < inf and err <= tol
                     row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err, "tol": tol,
-                           "ok": isfinite(err) and err <= tol, "unit": unit}
-                    rows.append(row if row["ok"] else self._conditioned(row, j, name, unit))
+                           "ok": ok, "unit": unit}
+                    rows.append(row if ok else self._conditioned(row, j, name, unit))
                     continue
                 parts: Any = ([(prefix + name, b, e, name)] if type(b) is float and type(e) is float else
                               [(label, x, y, flat) for (label, x, y), (flat, _, _)
@@ -432,15 +435,23 @@ class Solution:
                     if not row["ok"]:
                         row = self._conditioned(row, j, flat, unit)
                     rows.append(row)
-        if self.recipe.back_check is not None:
+        back_check = self.recipe.back_check
+        if back_check is not None:
+            given = self.problem.given
             for i, built in enumerate(self.solution_values):
-                prefix = f"solutions[{i}]." if i else ""
-                for name, rebuilt, required, unit in planned(self.recipe.name, self.recipe.back_check,
-                                                             self.problem.given, built):
-                    row = check_row(f"{prefix}back_substitution.{name}", rebuilt, required, self.unit_scale(unit),
-                                    unit)
+                prefix = f"solutions[{i}].back_substitution." if i else "back_substitution."
+                for name, b, e, unit in planned(self.recipe.name, back_check, given, built):
+                    if type(b) is float and type(e) is float:
+                        # check_row's row, its arithmetic in place, as for the answers above
+                        err = abs(b - e)
+                        sc = scales.get(unit)
+                        tol = CHECK_REL * max(abs(b), abs(e), self.unit_scale(unit) if sc is None else sc)
+                        row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err,
+                               "tol": tol, "ok": err < inf and err <= tol, "unit": unit}
+                    else:
+                        row = check_row(prefix + name, b, e, self.unit_scale(unit), unit)
                     if not row["ok"]:
-                        row = self._back_conditioned(row, name, i, self.problem.given, built)
+                        row = self._back_conditioned(row, name, i, given, built)
                     rows.append(row)
         if len(self.solution_values) != len(self.analytic):
             units = {q.name: q.unit for q in self.recipe.givens}
@@ -489,6 +500,8 @@ class Solution:
     @property
     def warnings(self) -> list[str]:
         """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
+        from .render.results import fixed, percent
+
         out = self._validation + self.advice + self._built
         allow = self.problem.given.get("gamma_allow")
         for i, sol in enumerate(self.solution_values):
@@ -508,9 +521,9 @@ class Solution:
         for r in self.published:
             rel = r["rel_deviation"]
             if r["doubtful"]:
-                how = f"{100 * rel:+.2f} %" if rel is not None else f"{r['deviation']:+g}"
+                how = percent(rel) if rel is not None else f"{r['deviation']:+g}"
                 out.append(f"published {r['quantity']} = {r['published']:g} is doubtful: it deviates from the exact "
-                           f"{r['exact']:.6g} by {how}, beyond drafting accuracy (±{100 * PUBLISHED_WARN_REL:g} %)")
+                           f"{fixed(r['exact'])} by {how}, beyond drafting accuracy (±{100 * PUBLISHED_WARN_REL:g} %)")
         return out
 
     @property
@@ -557,6 +570,8 @@ class Solution:
     # unless a drawing is asked for)
     def info_lines(self) -> list[str]:
         """Result lines printed under the protocol: answer, twin agreement, published deviation."""
+        from .render.results import percent
+
         pub = {r["quantity"]: r for r in self.published}
         lines = []
         for q in self.recipe.answers:
@@ -575,8 +590,8 @@ class Solution:
             printed = [pub[name] for name, _, _ in parts if name in pub]
             if printed:
                 rels = [p["rel_deviation"] for p in printed if p["rel_deviation"] is not None]
-                worst = f", worst {100 * max(rels, key=abs):+.2f} %" if rels and len(parts) > 1 else (
-                    f", {100 * rels[0]:+.2f} %" if rels else "")
+                worst = f", worst {percent(max(rels, key=abs))}" if rels and len(parts) > 1 else (
+                    f", {percent(rels[0])}" if rels else "")
                 values = ", ".join(f"{p['published']:g}" for p in printed)
                 doubt = ", doubtful: beyond drafting accuracy" if any(p["doubtful"] for p in printed) else ""
                 line += f"  (printed {values}{worst}{doubt})"
@@ -587,7 +602,7 @@ class Solution:
         """The result lines of a drawing, as a textbook prints them (:mod:`geomcon.render.results`): one per
         answer, in the order of :meth:`info_lines`, each saying what agreed with what and how the printed
         answer deviates."""
-        from .render.results import result_line
+        from .render.results import percent, result_line, shown_printed
 
         pub = {r["quantity"]: r for r in self.published}
         lines = []
@@ -602,21 +617,24 @@ class Solution:
                 if p is None:
                     continue
                 rel = p["rel_deviation"]
-                how = "" if rel is None else (f"{100 * rel:+.2f} %" if p["deviation"] else ("exact" if lang != "zh" else "精确"))
+                how = "" if rel is None else (percent(rel) if p["deviation"] else ("exact" if lang != "zh" else "精确"))
                 doubt = ("，存疑" if lang == "zh" else ", doubtful") if p["doubtful"] else ""
                 sep = "，" if lang == "zh" else ", "
-                printed.append(f"{p['published']:g}" + (f"{sep}{how}" if how else "") + doubt)
+                printed.append(shown_printed(p["published"], q.unit, lang) + (f"{sep}{how}" if how else "") + doubt)
+            at = self.problem.given.get("at") if "`at`" in q.doc else None
             lines.append(result_line(q.name, self.answers[q.name], q.unit,
                                      twin=None if not rows else all(r["ok"] for r in rows), printed=printed,
-                                     lang=lang, recipe=self.recipe.name))
+                                     lang=lang, recipe=self.recipe.name, at=tuple(at or ())))
         return lines
 
     def info_steps(self) -> list[int]:
         """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
-        several candidate solutions, the last of its candidates' steps: a result never shows early)."""
+        several candidate solutions, the last of its candidates' steps: a result never shows early; an answer
+        no drawn step produces — computed from the givens alone — shows with the last frame)."""
         sc = self.drawing_scene
+        last = len(sc.frames())
         maps = self.construction.solutions or (self.construction.answers,)
-        return [sc.available_at([m[q.name] for m in maps if q.name in m])
+        return [sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
                 for q in self.recipe.answers if q.name in self.answers]
 
     def title(self) -> str:

@@ -245,7 +245,7 @@ def test_the_summary_reads_as_the_figure_in_the_language_asked(tmp_path, capsys)
     assert main(["solve", str(p), "--lang", "zh"]) == 0
     zh = capsys.readouterr().out
     assert "  极位夹角 θ = 12.506°（与解析解一致；教材 25，+99.91 %，存疑）" in zh
-    assert "  警告：教材答案 theta = 25 存疑：与精确值 12.5056 相差 +99.91 %，超出作图精度（±3 %）" in zh
+    assert "  警告：教材答案 theta = 25 存疑：与精确值 12.506 相差 +99.91 %，超出作图精度（±3 %）" in zh
     assert "warning:" not in zh
     assert main(["solve", str(p)]) == 0                  # --lang both, the default
     both = capsys.readouterr().out

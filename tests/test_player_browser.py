@@ -3,6 +3,7 @@ opens at N, and what is shown is exactly the steps up to the current one. Skippe
 is installed (``apt-get install chromium``)."""
 from __future__ import annotations
 
+import html
 import re
 import shutil
 import subprocess
@@ -11,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from geomcon.problems import load_problem
+from geomcon.render.svg import frame_of
 from geomcon.solve import solve
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -76,3 +78,66 @@ def test_the_player_s_frame_k_is_the_steps_frame_k(page):
         drawing = dom[dom.index('id="page-1"'):dom.index('id="page-2"')]      # sheet 1: the drawing
         frame = frames[k - 1]
         assert _states(drawing) == _states(frame[frame.index("<svg"):]), k
+
+
+_HARNESS = """<!DOCTYPE html><html><body><pre id="out"></pre>%s
+<script>
+window.addEventListener("load", function () {
+  var out = [];
+  Array.prototype.forEach.call(document.querySelectorAll("iframe"), function (f) {
+    var s = [];
+    f.contentDocument.querySelectorAll("#page-1 [data-step]").forEach(function (e) {
+      s.push(e.getAttribute("data-step") + (e.classList.contains("future") ? "f" : "")
+             + (e.classList.contains("current") ? "c" : ""));
+    });
+    out.push(f.getAttribute("src") + " " + s.join(","));
+  });
+  document.getElementById("out").textContent = out.join("\\n");
+});
+</script></body></html>"""
+
+
+def _player_states(tmp: Path, jobs: list[tuple[str, int]]) -> dict[tuple[str, int], list[str]]:
+    """The (data-step, future?, current?) of every element of sheet 1 in the gallery player ``pid`` at ``#step=k``,
+    for every (pid, k) of ``jobs``, read in one headless Chromium (the players in iframes of a harness page)."""
+    for pid, _ in jobs:
+        if not (tmp / f"{pid}.html").exists():
+            (tmp / f"{pid}.html").write_text((ROOT / "gallery" / f"{pid}.html").read_text(encoding="utf-8"),
+                                             encoding="utf-8")
+    frames = "".join(f'<iframe src="{pid}.html#step={k}"></iframe>' for pid, k in jobs)
+    harness = tmp / "harness.html"
+    harness.write_text(_HARNESS % frames, encoding="utf-8")
+    out = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--allow-file-access-from-files",
+                          "--dump-dom", harness.as_uri()], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr[-500:]
+    text = html.unescape(re.search(r'<pre id="out">(.*?)</pre>', out.stdout, re.S).group(1))
+    states = {}
+    for line in text.splitlines():
+        src, _, items = line.partition(" ")
+        pid, k = src.split(".html#step=")
+        states[(pid, int(k))] = items.split(",") if items else []
+    return states
+
+
+def _frame_states(frame: str) -> list[str]:
+    return [f"{n}{'f' if fut else ''}{'c' if cur else ''}" for n, fut, cur in _states(frame[frame.index("<svg"):])]
+
+
+def test_every_gallery_player_s_frame_k_is_its_steps_frame_k(tmp_path):
+    """Issue 11's "frame k of the player equals --steps frame k", for every gallery player (cams included) at
+    steps 1, the middle one and the last: what the player shows, hides and highlights on sheet 1 (figure,
+    step caption, Results and Warnings lines) is what ``geomcon solve --steps`` frame k shows (``Solution.frames``:
+    :func:`~geomcon.render.svg.frame_of` of sheet 1, the gallery's sheet)."""
+    players = sorted(p.stem for p in (ROOT / "gallery").glob("*.html")
+                     if (ROOT / "gallery" / f"{p.stem}.svg").exists())
+    sheets = {pid: (ROOT / "gallery" / f"{pid}.svg").read_text(encoding="utf-8") for pid in players}
+    jobs = []
+    for pid in players:
+        n = max(int(s) for s in re.findall(r'data-step="(\d+)"', sheets[pid]))
+        jobs += [(pid, k) for k in sorted({1, (n + 1) // 2, n})]
+    assert len(players) >= 90
+    states: dict[tuple[str, int], list[str]] = {}
+    for i in range(0, len(jobs), 60):
+        states.update(_player_states(tmp_path, jobs[i:i + 60]))
+    for pid, k in jobs:
+        assert states[(pid, k)] == _frame_states(frame_of(sheets[pid], k)), (pid, k)

@@ -244,3 +244,50 @@ def test_box_and_segment_closed_forms_agree_with_geos():
     assert np.max(np.abs(d - want)) < 1e-13
     inside = inside_length(x0, y0, x1, y1, a[:, 0], a[:, 1], b[:, 0], b[:, 1])
     assert np.max(np.abs(inside - shapely.length(shapely.intersection(boxes, segs)))) < 1e-13
+
+
+def test_a_filled_disc_is_the_polygon_geos_buffers_a_point_into():
+    """A marker's obstacle, written out, has GEOS's coordinates in GEOS's order (so the placer measures what
+    it measured when the polygon came from ``buffer``)."""
+    from geomcon.render.shapes import disc_polygon
+
+    rng = np.random.default_rng(11)
+    for x, y, r in zip(rng.uniform(-800, 800, 3000), rng.uniform(-800, 800, 3000),
+                       np.r_[rng.uniform(1e-3, 100, 1000), rng.uniform(0.05, 3, 1999), 0.0]):
+        mine, geos = disc_polygon(float(x), float(y), float(r)), shapely.Point(x, y).buffer(r, 8)
+        assert shapely.get_coordinates(mine).tolist() == shapely.get_coordinates(geos).tolist()
+        assert mine.equals_exact(geos, 0.0) or (mine.is_empty and geos.is_empty)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_texts_laid_out_together_are_laid_out_as_one_at_a_time(seed):
+    """The candidates of many texts at once (one set of arrays) are, bit for bit, those of each text alone and
+    the centres and penalties of the straightforward loop; a placer that prepares every text in one pass
+    chooses what one preparing each text as it is placed chooses."""
+    from geomcon.render.candidates import candidates
+
+    rng = random.Random(300 + seed)
+    obstacles, owners = random_figure(rng)
+    frame = (0.0, 0.0, 60.0, 60.0)
+    jobs = [(random_request(rng), rng.choice(owners)) for _ in range(30)]
+    together = candidates([r for r, _ in jobs], list(range(len(jobs))), frame)
+    for i, (req, _) in enumerate(jobs):
+        alone = candidates([req], [i], frame)
+        a, b = together.starts[i], together.starts[i + 1]
+        for f in ("cx", "cy", "cost", "framed", "rivalled"):
+            assert np.array_equal(getattr(together, f)[a:b], getattr(alone, f))
+        for f in ("x0", "y0", "x1", "y1", "hw", "hh", "cos", "sin", "owner"):
+            assert np.array_equal(getattr(together.boxes, f)[a:b], getattr(alone.boxes, f))
+        if not req.candidates:
+            want = [((req.anchor[0] + math.cos(t) * (req.gap + extra + half_extent(math.cos(t), math.sin(t), req.width, req.height)),
+                      req.anchor[1] + math.sin(t) * (req.gap + extra + half_extent(math.cos(t), math.sin(t), req.width, req.height))),
+                     FAR_PENALTY * j + req.spread * rank)
+                    for j, extra in enumerate(req.distances) for rank, t in enumerate(directions(req.prefer))]
+            assert [((x, y), c) for x, y, c in zip(alone.cx.tolist(), alone.cy.tolist(), alone.cost.tolist())] == want
+    batched, single = Placer(obstacles, frame), Placer(obstacles, frame)
+    batched.prepare(jobs)
+    for req, owner in jobs:
+        got, want = batched.best(req, owner), single.best(req, owner)
+        assert got == want
+        batched.commit(req.box(*got[0]))
+        single.commit(req.box(*want[0]))

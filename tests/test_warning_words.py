@@ -98,8 +98,8 @@ def test_a_figure_prints_the_identifiers_a_warning_quotes_as_symbols():
     lines = warning_lines(["α_max of the return = 36.71° exceeds alpha_allow = 30° (at δ = 230.3°)",
                            "published profile_x[0] = -26.825 is doubtful: it deviates from the exact -42.6357 by "
                            "+37.08 %, beyond drafting accuracy (±3 %)"], "both")
-    assert lines[0].startswith("α_max of the return = 36.71° exceeds α_allow = 30°")
+    assert lines[0].startswith("α′_max of the return = 36.71° exceeds α_allow = 30°")
     assert "超过许用压力角 [α] = 30°" in lines[1]
-    assert lines[2].startswith("published x[0] (profile points) = -26.825")
-    assert lines[3].startswith("教材答案 x[0]（实际廓线点） = -26.825")
+    assert lines[2].startswith("published xa[0] (profile points) = -26.825")
+    assert lines[3].startswith("教材答案 xa[0]（实际廓线点） = -26.825")
     assert not any(re.search(r"[a-z]_[a-z]", t) for t in lines[1::2])

@@ -120,6 +120,13 @@ def _length(pts):
     return sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
 
 
+def _radii(svg: str) -> list[float]:
+    """Radii (paper mm) of the circles drawn: ``<circle>`` elements and given circles (paths of arcs)."""
+    return ([float(r) / U for r in re.findall(r'<circle[^>]* r="(\d+)"', svg)]
+            + [float(re.search(r"A(\d+) ", d).group(1)) / U
+               for d in re.findall(r'<path class="given-circle" d="([^"]+)"', svg)])
+
+
 def test_the_givens_are_drawn_to_true_scale(six, key6):
     """Design by K: DC1 and DC2 are CD long at the variant's scale; extremes: the frame AD and the circles AB,
     CD; a cam: the base circle r0 — measured in the SVG, in paper mm (the page is its paper's size in mm)."""
@@ -134,12 +141,12 @@ def test_the_givens_are_drawn_to_true_scale(six, key6):
         assert lengths == pytest.approx([e1["given"]["CD"] * f1] * 2, abs=0.02)
         svg2 = six.files[f"sheets/{s['id']}-2.svg"]
         assert [_length(p) for p in _paths(svg2, "givens")] == pytest.approx([e2["given"]["AD"] * f2], abs=0.02)
-        radii = sorted(float(r) / U for r in re.findall(r'<circle[^>]* r="(\d+)"', svg2) if float(r) / U > 2)
+        radii = sorted(r for r in _radii(svg2) if r > 2)
         assert radii == pytest.approx(sorted([e2["given"]["AB"] * f2, e2["given"]["CD"] * f2]), abs=0.01)
         svg3 = six.files[f"sheets/{s['id']}-3.svg"]
-        radii = [float(r) / U for r in re.findall(r'<circle[^>]* r="(\d+)"', svg3) if float(r) / U > 2]
+        radii = sorted(r for r in _radii(svg3) if r > 2)
         offset = [e3["given"]["e"] * f3] if e3["given"]["e"] * f3 > 2 else []
-        assert radii == pytest.approx([e3["given"]["r0"] * f3] + offset, abs=0.01)
+        assert radii == pytest.approx(sorted([e3["given"]["r0"] * f3] + offset), abs=0.01)
 
 
 def test_nothing_overlaps_on_a_page(spec, six):
@@ -303,3 +310,39 @@ def test_a_page_header_is_in_the_page_s_language(spec, lang):
             assert all(english.search(t) and chinese.search(t) for t in words[1:]), (name, words)
         if name.startswith("key/"):
             assert ("答案" in title) == (lang != "en") and ("KEY" in title) == (lang != "zh")
+
+
+_MOVE = re.compile(r"M(-?\d+) (-?\d+)")
+_ARC_END = re.compile(r"A\d+ \d+ 0 [01] [01] (-?\d+) (-?\d+)")
+
+
+def test_a_given_circle_is_whole_or_ends_on_the_frame_and_every_sheet_clips_to_its_own_area(six):
+    """hlook11 item 42: a given circle ran into the invisible clip rectangle of the figure area and ended in
+    mid-air; and sheets.html, inlining every page, clipped each page with the first page's ``figure-area``. Now
+    every given circle is a path of explicit arcs, whole or ending on the drawing frame (or on the figure area's
+    top, under the answer boxes), never a clipped ``<circle>``; and every clip path id is defined once in
+    sheets.html."""
+    ids = re.findall(r'<clipPath id="([^"]+)"', six.files["sheets.html"])
+    assert ids and len(ids) == len(set(ids))
+    circles = 0
+    for name, svg in six.files.items():
+        if not (name.startswith("sheets/") and name.endswith(".svg")) or 'id="givens"' not in svg:
+            continue
+        givens = svg[svg.index('id="givens"'):]
+        assert not [r for r in re.findall(r'<circle[^>]*\br="(\d+)"', givens) if int(r) >= 100], name   # dots only
+        h, w, x0, y0 = (float(v) / U for v in re.search(r'<rect fill="none" height="(\d+)" stroke="#000" '
+                                                      r'stroke-width="\d+" width="(\d+)" x="(\d+)" y="(\d+)"',
+                                                      svg).groups())
+        top = float(re.search(r'<clipPath id="[^"]+"><rect height="\d+" width="\d+" x="\d+" y="(\d+)"',
+                              svg).group(1)) / U
+        for d in re.findall(r'<path class="given-circle" d="([^"]+)"', svg):
+            circles += 1
+            moves = [tuple(map(int, m)) for m in _MOVE.findall(d)]
+            ends = [tuple(map(int, m)) for m in _ARC_END.findall(d)]
+            if len(moves) == 1 and ends[-1] == moves[0]:
+                continue                                               # drawn whole
+            for x, y in moves + ends:
+                x, y = x / U, y / U
+                on_frame = min(abs(x - x0), abs(x - (x0 + w)), abs(y - (y0 + h))) < 0.02
+                assert on_frame or abs(y - top) < 0.02, (name, x, y)
+    assert circles > 0

@@ -81,10 +81,16 @@ def crank_rocker_extremes(AB: float, BC: float, CD: float, AD: float) -> dict[st
 def _excess(v: tuple[float, float], p: tuple[float, float], q: tuple[float, float]) -> float:
     """|vp| + |vq| − |pq| of the triangle v p q, as 4·|vp|·|vq|·sin²(δ/2)/perimeter with δ = 180° − ∠pvq
     taken by atan2 from the coordinates: no cancellation when v lies nearly on the segment pq."""
-    px, py, qx, qy = p[0] - v[0], p[1] - v[1], q[0] - v[0], q[1] - v[1]
-    x, y, z = math.hypot(px, py), math.hypot(qx, qy), math.hypot(q[0] - p[0], q[1] - p[1])
+    return _excess_of(v, p, q, math.dist(v, p), math.dist(v, q), math.dist(p, q))
+
+
+def _excess_of(v: tuple[float, float], p: tuple[float, float], q: tuple[float, float], x: float, y: float,
+               z: float) -> float:
+    """:func:`_excess` with its sides x = |vp|, y = |vq|, z = |pq| known (a distance is the same float either
+    way round: a − b is −(b − a) exactly)."""
     if x + y + z == 0.0:
         return 0.0
+    px, py, qx, qy = p[0] - v[0], p[1] - v[1], q[0] - v[0], q[1] - v[1]
     delta = math.atan2(abs(px * qy - py * qx), -(px * qx + py * qy))
     return 4.0 * x * y * math.sin(delta / 2.0) ** 2 / (x + y + z)
 
@@ -106,13 +112,16 @@ def crank_rocker_gamma_from_positions(A, D, Cf, Ce) -> float:
     >>> round(crank_rocker_gamma_from_positions(A, D, Cf, Ce), 9) == round(ex["gamma_min"], 9)
     True
     """
-    a = abs(math.dist(A, Ce) - math.dist(A, Cf)) / 2.0
-    b = (math.dist(A, Ce) + math.dist(A, Cf)) / 2.0
-    c, d = math.dist(D, Cf), math.dist(A, D)
+    ace, acf = math.dist(A, Ce), math.dist(A, Cf)           # the five distances once each (the six excesses
+    c, d, dce = math.dist(D, Cf), math.dist(A, D), math.dist(D, Ce)      # share them)
+    a = abs(ace - acf) / 2.0
+    b = (ace + acf) / 2.0
     out = []
     for e_b, e_c, e_bd, per in (
-            (_excess(D, A, Ce), _excess(A, D, Cf), _excess(Ce, A, D), b + c + d - a),    # B towards D
-            (_excess(D, A, Cf), _excess(A, D, Ce), _excess(Cf, A, D), b + c + d + a)):   # B away from D
+            (_excess_of(D, A, Ce, d, dce, ace), _excess_of(A, D, Cf, d, acf, c), _excess_of(Ce, A, D, ace, dce, d),
+             b + c + d - a),                                                             # B towards D
+            (_excess_of(D, A, Cf, d, c, acf), _excess_of(A, D, Ce, d, ace, dce), _excess_of(Cf, A, D, acf, c, d),
+             b + c + d + a)):                                                            # B away from D
         g = math.degrees(2.0 * math.atan2(math.sqrt(max(0.0, e_b * e_c)), math.sqrt(max(0.0, per * e_bd))))
         out.append(min(g, 180.0 - g))
     return min(out)

@@ -20,6 +20,7 @@ import numpy as np
 import svgwrite
 
 from ..render.serial import Element, svg_string
+from ..render.zh import zh_brackets
 from .program import Program
 
 W, PANEL, GAP, LEFT, TOP = 170.0, 42.0, 14.0, 28.0, 16.0      # mm on paper
@@ -54,7 +55,7 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
     dwg.attribs["font-family"] = FONT
     dwg.add(dwg.rect((0, 0), (W, height), fill="#ffffff"))
     if title:
-        dwg.add(dwg.text(title, insert=(LEFT - 18.0, 8.0), font_size=4.2, font_weight="bold", fill=INK))
+        dwg.add(dwg.text(zh_brackets(title), insert=(LEFT - 18.0, 8.0), font_size=4.2, font_weight="bold", fill=INK))
     impacts = program.impacts(h)
     names = (("s", f"s ({unit})"), ("v", f"ds/dδ ({unit}/rad)"), ("a", f"d²s/dδ² ({unit}/rad²)"))
     for k, (key, label) in enumerate(names):
@@ -115,5 +116,5 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
     note = "impacts: " + (", ".join(f"{k} ({'刚性冲击' if k == 'rigid' else '柔性冲击'}) at "
                                     + ", ".join(f"{i.angle:g}°" for i in impacts if i.kind == k) for k in kinds)
                           if kinds else "none (无冲击)")
-    dwg.add(dwg.text(note, insert=(_f(LEFT - 18.0), _f(height - 4.0)), font_size=3.0, fill=INK))
+    dwg.add(dwg.text(zh_brackets(note), insert=(_f(LEFT - 18.0), _f(height - 4.0)), font_size=3.0, fill=INK))
     return svg_string(dwg)

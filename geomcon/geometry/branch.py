@@ -132,7 +132,10 @@ class RightOf(Branch):
 
 
 def _upward_normal(a: Point, b: Point) -> tuple[float, float]:
-    dx, dy = _direction_xy(a, b, "above/below a line")
+    dx, dy = b.x - a.x, b.y - a.y                # _direction_xy(a, b, "above/below a line"), one call fewer
+    if dx == 0.0 and dy == 0.0:
+        raise AmbiguousBranch(f"above/below a line: the dividing line through ({a.x:.6g}, {a.y:.6g}) has zero length")
+    dx, dy = unit_xy(dx, dy)
     nx, ny = -dy, dx                          # the direction turned by +90°
     if abs(ny) <= _tolerance.REL_TOL:          # tol(1.0)
         raise AmbiguousBranch("above/below a vertical line is undefined: use left/right of a directed line")
@@ -212,6 +215,9 @@ class ToRightOf(Branch):
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
         """Choose among ``cands`` given the rule's resolved points."""
+        if len(cands) == 2:                   # the score of _pick's lambda below, in place
+            c0, c1 = cands
+            return _larger(c0, c1, c0.x - p.x, c1.x - p.x, "to the right of a point")
         return _pick(cands, lambda q: q.x - p.x, "to the right of a point")
 
     def describe(self, label=None) -> tuple[str, str]:
@@ -228,6 +234,9 @@ class ToLeftOf(Branch):
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
         """Choose among ``cands`` given the rule's resolved points."""
+        if len(cands) == 2:                   # the score of _pick's lambda below, in place
+            c0, c1 = cands
+            return _larger(c0, c1, p.x - c0.x, p.x - c1.x, "to the left of a point")
         return _pick(cands, lambda q: p.x - q.x, "to the left of a point")
 
     def describe(self, label=None) -> tuple[str, str]:

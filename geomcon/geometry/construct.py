@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from ..errors import Degenerate
-from ..tolerance import tol
+from .. import tolerance as _tolerance
 from .primitives import Circle, Line, Point, Ray, Segment, unit_xy
 
 
@@ -50,7 +50,8 @@ def perpendicular_bisector(a: Point, b: Point) -> Line:
 
 def perpendicular(line: Line, through: Point) -> Line:
     """The perpendicular to ``line`` through ``through``, directed to the line's left."""
-    return Line(through, line.normal)
+    d = line.direction
+    return Line(through, Point(-d.y, d.x))                  # line.normal, without the property
 
 
 def parallel(line: Line, through: Point) -> Line:
@@ -131,7 +132,7 @@ def circle_through3(a: Point, b: Point, c: Point) -> Circle:
     span = max(math.hypot(abx, aby), math.hypot(cbx, cby), math.hypot(cax, cay))
     # Decide collinearity first: two coincident points (a == c) are collinear with any third, and their
     # bisectors would coincide rather than fail to meet.
-    if abs(abx * cay - aby * cax) <= tol(span) * span:
+    if abs(abx * cay - aby * cax) <= _tolerance.REL_TOL * span * span:     # tol(span)·span in place: span ≥ 0
         raise Degenerate(_collinear(a, b, c))
     d1x, d1y = unit_xy(-aby, abx)                       # bisector of ab: through its midpoint, (b − a) turned
     d2x, d2y = unit_xy(-cby, cbx)
@@ -139,7 +140,7 @@ def circle_through3(a: Point, b: Point, c: Point) -> Circle:
     m2x, m2y = (b.x + c.x) / 2.0, (b.y + c.y) / 2.0
     wx, wy = m2x - m1x, m2y - m1y
     sine = d1x * d2y - d1y * d2x
-    if abs(sine) <= tol(1.0):                           # parallel (or coincident) bisectors: collinear points
+    if abs(sine) <= _tolerance.REL_TOL:                 # tol(1.0): parallel (or coincident) bisectors, collinear
         raise Degenerate(_collinear(a, b, c))
     t = (wx * d2y - wy * d2x) / sine
     o = Point(m1x + d1x * t, m1y + d1y * t)

@@ -117,7 +117,9 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     # relative accuracy: a ≈ r1²/2d, not ε·d)
     big, small = (d, r1) if d >= r1 else (r1, d)
     a = ((big - r2) * (big + r2) + small * small) / (2.0 * d)
-    h2 = _sum_less(r1, r2, d) * _sum_less(d, r2, r1) * _sum_less(d, r1, r2) * (d + r1 + r2)
+    # _sum_less(r1, r2, d) · _sum_less(d, r2, r1) · _sum_less(d, r1, r2) · (d + r1 + r2), the three in place
+    h2 = (((r1 - d) + r2 if r1 >= r2 else (r2 - d) + r1) * ((d - r1) + r2 if d >= r2 else (r2 - r1) + d)
+          * ((d - r2) + r1 if d >= r1 else (r1 - r2) + d) * (d + r1 + r2))
     h = math.sqrt(h2) / (2.0 * d)
     fx, fy = ux * a, uy * a                  # the foot, still local: translated once, at the very end
     nx, ny = -uy * h, ux * h                 # u turned by +90°, times h

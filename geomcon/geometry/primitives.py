@@ -125,18 +125,25 @@ _POINT_X = Point.__dict__["x"].__set__
 _POINT_Y = Point.__dict__["y"].__set__
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, init=False)
 class Line:
     """The infinite line through ``point`` with unit ``direction`` (the direction orients it).
 
     "Left of the line" means on the counter-clockwise side of its direction.
+
+    >>> Line(Point(1, 2), Point(0, 3))
+    Line(point=Point(x=1.0, y=2.0), direction=Point(x=0.0, y=1.0))
     """
 
     point: Point
     direction: Point
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "direction", self.direction.unit())
+    def __init__(self, point: Point, direction: Point) -> None:
+        # the fields stored through the slots' descriptors, the direction made unit as Point.unit does (a
+        # dataclass __init__ with a __post_init__ and object.__setattr__ cost twice as much)
+        x, y = unit_xy(direction.x, direction.y)
+        _LINE_POINT(self, point)
+        _LINE_DIRECTION(self, Point(x, y))
 
     @staticmethod
     def through(a: Point, b: Point) -> Line:
@@ -155,15 +162,25 @@ class Line:
         return self.point + self.direction * t
 
 
-@dataclass(frozen=True, slots=True)
+_LINE_POINT = Line.__dict__["point"].__set__
+_LINE_DIRECTION = Line.__dict__["direction"].__set__
+
+
+@dataclass(frozen=True, slots=True, init=False)
 class Ray:
-    """The half-line from ``origin`` in unit ``direction``."""
+    """The half-line from ``origin`` in unit ``direction``.
+
+    >>> Ray(Point(0, 0), Point(3, 4)).direction
+    Point(x=0.6, y=0.8)
+    """
 
     origin: Point
     direction: Point
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "direction", self.direction.unit())
+    def __init__(self, origin: Point, direction: Point) -> None:
+        x, y = unit_xy(direction.x, direction.y)           # as Line: Point.unit's arithmetic, set in place
+        _RAY_ORIGIN(self, origin)
+        _RAY_DIRECTION(self, Point(x, y))
 
     @staticmethod
     def toward(origin: Point, through: Point) -> Ray:
@@ -179,6 +196,10 @@ class Ray:
     def at(self, t: float) -> Point:
         """The point at distance ``t`` from the origin."""
         return self.origin + self.direction * t
+
+
+_RAY_ORIGIN = Ray.__dict__["origin"].__set__
+_RAY_DIRECTION = Ray.__dict__["direction"].__set__
 
 
 @dataclass(frozen=True, slots=True)

@@ -20,6 +20,7 @@ import svgwrite
 from .quantities import position_name, value
 from ..check import rounded
 from ..render.serial import svg_string
+from ..render.zh import zh_brackets
 from .result import CycleResult, scale_of, unit_of
 
 W, PANEL, GAP, LEFT, TOP = 170.0, 34.0, 13.0, 30.0, 16.0      # mm on paper
@@ -57,7 +58,7 @@ def cycle_plots_svg(r: CycleResult) -> str:
                            profile="full", debug=False)
     dwg.attribs["font-family"] = FONT
     dwg.add(dwg.rect((0, 0), (W, height), fill="#ffffff"))
-    title = f"{r.problem.id}: " + (r.problem.title or "whole cycle")
+    title = f"{r.problem.id}: " + zh_brackets(r.problem.title or "whole cycle")     # Slotting machine（插床）
     title = title if len(title) <= 80 else title[:79] + "…"
     dwg.add(dwg.text(title, insert=(8.0, 8.0), font_size=3.6, font_weight="bold", fill=INK))
     x0, x1 = float(phi[0]), float(phi[-1])

@@ -309,13 +309,49 @@ def construct(g: Mapping[str, Any]) -> Construction:
                  caption=("ρmin of the pitch curve (convex parts, exact derivatives)", "理论廓线最小曲率半径 ρmin"))
     sc.add("rr_max", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm",
            caption=("rr ≤ 0.8·ρmin", "滚子半径 rr ≤ 0.8ρmin"))
-    sc.add("dim_r0", lambda o, b, v: marks.Dimension(o, b, "r0", v, 0.08 * scale), O, B0, r0, role=Role.ANNOTATION,
-           style="dim")
+    limited = g.get("rho_allow") is not None        # the pressure angle's r0 is then r0,α, not the answer
+    sc.add("dim_r0", lambda o, b, v: marks.Dimension(o, b, "r0,α" if limited else "r0", v, 0.08 * scale), O, B0, r0,
+           role=Role.ANNOTATION, style="dim")
+    if sc.drawing:
+        _diagram_axes(sc, prog, h, k, B0, O, e, None if limited else s0, scale)
     names = ("r0", "e", "s0", "rho_min_pitch", "rr_max")
     answers = {n: n for n in names}
     if g.get("rho_allow") is not None:
         add_rho_steps(sc, answers, g, prog)
     return Construction(sc, answers, {"O": "O", "B0": "B0"})
+
+
+def foot_on_axis(O: Point) -> Point:
+    """The foot of the perpendicular from O to the follower's axis x = 0."""
+    return Point(0.0, O.y)
+
+
+def _diagram_axes(sc: Scene, prog: Program, h: float, k: float, B0: Ref, O: Ref, e: Ref, s0: Ref | None,
+                  scale: float) -> None:
+    """The ds/dδ–s diagram as a diagram: the s axis (the follower's axis) and the ds/dδ axis through B0 with
+    their names, ticks at s = h and at the curve's widest ds/dδ on either side, and the offset e and the height
+    s0 of B0 above O dimensioned (e's side read from the figure: O left or right of the axis); ``s0`` None
+    leaves s0 to the curvature limit's centre O′ (:func:`~.cam_base_radius_rho.add_rho_steps`)."""
+    xs = [p.x for p in diagram_points(prog, h, k, 0.0, 2 * math.pi, 720).points]
+    lo, hi = min(xs + [0.0]), max(xs + [0.0])
+    pad = 0.08 * scale
+    sc.add("ds_axis", segment, Point(lo - pad, 0.0), Point(hi + pad, 0.0), role=Role.ANNOTATION, style="given",
+           caption=("The ds/dδ axis through B0, across the follower's axis (mm: ds/dδ per radian)",
+                    "过 B0 作 ds/dδ 轴(垂直于导路)"))
+    sc.given("ds_axis_name", Point(hi + pad, 0.0), label="ds/dδ", style="point")
+    sc.given("s_axis_name", Point(0.0, h + 2 * pad), label="s", style="point")
+    sc.given("tick_h", Point(0.0, h), label="h", style="tick")
+    for side, x in (("l", lo), ("r", hi)):
+        if abs(x) > 1e-9 * scale:
+            sc.given(f"tick_ds_{side}", Point(x, 0.0), label=f"{abs(x):.1f}", style="tick")
+    F = sc.add("O_foot", foot_on_axis, O, visible=False)
+    sc.add("dim_e", lambda o, f, v: marks.Dimension(f, o, "e", abs(v), 0.06 * scale) if abs(v) > 1e-9 * scale
+           else None, O, F, e, role=Role.ANNOTATION, style="dim", optional=True,
+           caption=("e: O's distance from the follower's axis (O left of the axis: e > 0)",
+                    "偏距 e:O 到导路的距离(O 在导路左侧为正)"))
+    if s0 is not None:                   # a curvature limit moves the centre: s0 is dimensioned at O′ instead
+        sc.add("dim_s0", lambda f, b, v: marks.Dimension(f, b, "s0", v, 0.1 * scale), F, B0, s0,
+               role=Role.ANNOTATION, style="dim")
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:

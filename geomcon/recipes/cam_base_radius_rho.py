@@ -31,9 +31,9 @@ from ..cam.profile import envelope_rho_min, flat_profile
 from ..cam.program import Program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
-from ..geometry import Point, Polyline, circle, segment
+from ..geometry import Point, Polyline, Segment, circle, segment
 from ..numeric import bisect_up, illinois
-from ..scene import Ref, Role, Scene
+from ..scene import Ref, Role, Scene, marks
 from .base import Construction
 from .cam_common import add_profile_steps, add_rotation, extremum_value, inversion_sign
 
@@ -111,6 +111,33 @@ def faces(prog: Program, h: float, r0: float, inv: float):
     return _face_family(prog, h, r0, inv)
 
 
+def _floor_axes(sc: Scene, prog: Program, h: float, origin: Point, width: float) -> None:
+    """The (s + s″)–δ diagram's ordinate through its origin, named, and the δ axis named and ticked at 180°
+    and 360°: the diagram says what it plots (ρ = r0 + s + s″ of a flat face is least where s + s″ is)."""
+    ys = [p.y - origin.y for p in floor_curve(prog, h, origin, width, 360).points]
+    lo, hi = min(ys + [0.0]), max(ys + [0.0])
+    pad = 0.06 * width
+    top = origin + Point(0.0, hi + pad)
+    sc.add("floor_axis", segment, origin + Point(0.0, lo - pad), top, role=Role.ANNOTATION, style="given",
+           caption=("Its ordinate s + s″ (mm): the flat face's ρ = r0 + s + s″ is least where s + s″ is",
+                    "纵轴 s + s″(mm):平底从动件凸轮廓线 ρ = r0 + s + s″,其最小处即 s + s″ 最小处"))
+    sc.given("floor_axis_name", top, label="s + s″ (mm)", style="point")
+    sc.given("floor_delta_name", origin + Point(width, 0.0), label="δ", style="point")
+    sc.given("floor_tick_180", origin + Point(0.5 * width, 0.0), label="180°", style="tick")
+
+
+def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float) -> None:
+    """The flat-faced follower at δ = 0 on the designed cam: the face at s(0) above the base circle, its stem
+    and guide."""
+    s_start = float(prog.motion1(h, 0.0)[0])
+    K = sc.add("face_contact", lambda r: Point(0.0, r + s_start), r0, visible=False)
+    sc.add("face", lambda k, r: Segment(k + Point(-0.9 * r, 0.0), k + Point(0.9 * r, 0.0)), K, r0,
+           role=Role.RESULT, style="link", caption=("The flat-faced follower at δ = 0", "δ = 0 时的平底从动件"))
+    sc.add("stem", lambda k, r: Segment(k, k + Point(0.0, 0.9 * r)), K, r0, role=Role.RESULT, style="link")
+    sc.add("guide_mark", lambda k, r: marks.Guide(k + Point(0.0, 0.45 * r), k + Point(0.0, 0.8 * r), 1), K, r0,
+           role=Role.ANNOTATION, style="guide")
+
+
 def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
     """The (s + s″)–δ curve, its lowest point, r0 = ρallow − min, the base circle and the designed profile."""
     h, rho_allow = g["h"], g["rho_allow"]
@@ -126,12 +153,18 @@ def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
     sc.add("floor_curve", floor_curve, prog, h, origin, width, style="path",
            caption=("Plot s + d²s/dδ² against δ: a flat face's ρ = r0 + s + s″", "作 s + d²s/dδ²–δ 曲线:平底从动件凸轮廓线 ρ = r0 + s + s″"))
     floor = sc.add("floor", floor_of, prog, h, visible=False)
-    sc.add("floor_point", floor_point, floor, origin, width, style="joint", label="min",
+    if sc.drawing:
+        _floor_axes(sc, prog, h, origin, width)
+    sc.add("floor_point", floor_point, floor, origin, width, style="joint", label="min(s + s″)",
            caption=("Its lowest point (exact: a root of s′ + s‴ or an end of a piece)", "其最低点(精确:s′ + s‴ 的根或分段端点)"))
     r0 = sc.add("r0", flat_r0, rho_allow, floor, role=Role.MEASUREMENT, unit="mm",
-                caption=(f"r0 = ρallow − min(s + s″) with ρallow = {rho_allow:g}", f"r0 = ρallow − min(s + s″),ρallow = {rho_allow:g}"))
+                caption=(f"r0 = ρ_allow − min(s + s″) with ρ_allow = {rho_allow:g}", f"r0 = ρ_allow − min(s + s″),ρ_allow = {rho_allow:g}"))
     sc.add("r0_rho", float, r0, visible=False)
     sc.add("base", circle, O, r0, style="theta-circle", caption=("Draw the base circle", "作基圆"))
+    if sc.drawing:
+        sc.add("dim_r0", lambda o, r: marks.Dimension(o, o + Point(-r, -r) * math.sqrt(0.5), "r0", r, 0.0), O, r0,
+               role=Role.ANNOTATION, style="dim")
+        _flat_follower(sc, r0, prog, h)
     fam = sc.add("faces", faces, prog, h, r0, inv, visible=False)
     add_profile_steps(sc, flat_profile, (fam, 1e-5 * (size + h)),
                       ("The designed profile: the envelope of the faces", "所设计凸轮廓线:平底直线族的包络线"))
@@ -208,6 +241,12 @@ def add_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any], prog
                caption=("The designed centre O′ (on the vertical through O)", "设计所得回转中心 O′(在过 O 的铅垂线上)"))
     sc.add("base_design", circle, O, r0, style="theta-circle", caption=("Its base circle", "其基圆"))
     sc.add("O_B0_design", segment, O, B0, style="construction")
+    sc.add("dim_r0_design", lambda o, b, v: marks.Dimension(o, b, "r0", v, -0.3 * v), O, B0, r0,
+           role=Role.ANNOTATION, style="dim", caption=("The answer r0 = O′B0 (the curvature limit decides)",
+                                                       "所求基圆半径 r0 = O′B0(由曲率半径限制决定)"))
+    F = sc.add("O_design_foot", lambda o: Point(0.0, o.y), O, visible=False)
+    sc.add("dim_s0_design", lambda f, b, v: marks.Dimension(f, b, "s0", v, 0.3 * v), F, B0, s0,
+           role=Role.ANNOTATION, style="dim")
     rho = sc.add("rho_design", pitch_rho_min, prog, h, rot, Ref("e"), s0, role=Role.MEASUREMENT, unit="mm",
                  caption=("ρmin of the designed pitch curve", "所设计理论廓线的 ρmin"))
     sc.add("rr_max_design", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm", visible=False)

@@ -254,8 +254,8 @@ def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, wid
 
     top = h * scale * 1.25
     sc.add("sd_delta_axis", segment, origin, at(372.0, 0.0), style="given", role=Role.ANNOTATION,
-           caption=(f"Displacement diagram {symbol}–δ beside the cam: δ axis, 360° = {width:.4g} mm",
-                    f"在凸轮旁作位移线图 {symbol}–δ:δ 轴,360° 对应 {width:.4g} mm"))
+           caption=(f"Displacement diagram {symbol}–δ: δ axis, 360° = {width:.4g} mm",     # on the cam's sheet or
+                    f"作位移线图 {symbol}–δ:δ 轴,360° 对应 {width:.4g} mm"))            # the next: no "beside"
     sc.add("sd_s_axis", segment, origin, Point(origin.x, origin.y + top), style="given", role=Role.ANNOTATION)
     sc.given("sd_delta_label", at(372.0, 0.0), label="δ", visible=True, style="point")
     sc.given("sd_s_label", Point(origin.x, origin.y + top), label=f"{symbol} ({unit})" if unit else symbol, style="point")

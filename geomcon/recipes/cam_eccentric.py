@@ -55,7 +55,7 @@ from .base import Construction, Quantity, Recipe
 from .cam_common import add_rotation
 from .cam_eccentric_speeds import (arm_epsilon2, arm_epsilon2_max, arm_omega2, arm_omega2_max, guide_a_max, guide_accel,
                                    guide_v_max)
-from .common import add_pivot, angle_deg, difference, length
+from .common import add_angle_mark, add_pivot, angle_deg, difference, length, velocity_end
 
 UP = Point(0.0, 1.0)
 STATES = ("delta", "A_angle", "contact_angle")
@@ -83,6 +83,11 @@ GIVENS = (
     Quantity("L", "mm", "oscillating follower: arm length QB", required=False),
     Quantity("arm", "choice", "oscillating follower: side of the line Q→O the roller lies on", required=False,
              default="left", minimum=None, choices=("left", "right")),
+    Quantity("contact_name", "choice", "translating knife or roller: the contact point's name in the problem's "
+             "own figure (the statement's C or D: 001-25); B by default", required=False, default="B", minimum=None,
+             choices=("B", "C", "D")),
+    Quantity("far_name", "choice", "the farthest point of the line of centres (B1 by default) as the problem "
+             "names it (001-25's C)", required=False, default="B1", minimum=None, choices=("B1", "C")),
 )
 ANSWERS = (
     Quantity("r0", "mm", "base circle radius of the pitch curve (knife, roller); of the profile (flat)"),
@@ -274,9 +279,10 @@ def arm_angle(q: Point, o: Point, b: Point) -> float:
     return angle_deg(q, o, b)
 
 
-def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool) -> tuple[Ref, Ref]:
+def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool, far: str = "B1") -> tuple[Ref, Ref]:
     """The line of centres AO meets the pitch circle at B0 (nearest O: r0 = OB0, the base circle) and B1
-    (farthest); for a roller, the disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
+    (farthest, labelled ``far``: empty when the contact point, labelled itself, lies there); for a roller, the
+    disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
     lineAO = sc.add("lineAO", line_through, A, O, style="construction", caption=("Draw the line of centres AO", "作中心线 AO"))
     # B0, E0 and B1 are laid off from O along the line of centres (|OB0| = Rp − OA …): the same points as the
     # line meeting the circles, but their direction from O is exact even when OB0 ≪ R (OA → R), where an
@@ -299,7 +305,7 @@ def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool) -> tupl
     else:
         sc.add("r0_actual", length, O, B0, role=Role.MEASUREMENT, unit="mm", visible=False)
     B1 = sc.add("B1", point_along, O, A, sc.add("OB1_len", lambda r, d: r + d, Rp, OA, visible=False), style="point",
-                label="B1", caption=("OA extended meets it at B1, its farthest point (OB1 = Rp + OA)",
+                label=far, caption=("OA extended meets it at B1, its farthest point (OB1 = Rp + OA)",
                                      "OA 延长交理论廓线于 B1(离 O 最远,OB1 = Rp + OA)"))
     return B0, B1
 
@@ -332,14 +338,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
     pitch = sc.add("pitch", circle, A, Rp, style="path",
                    caption=(f"Pitch curve: the circle about A with radius R + rr = {Rp:g}",
                             f"理论廓线:以 A 为圆心、R + rr = {Rp:g} 的圆")) if follower == "roller" else Ref("disc")
-    D = sc.given("D", Point(e, 0.0), style="point", label="D" if e else None,
+    contact = g.get("contact_name") or "B"
+    D = sc.given("D", Point(e, 0.0), style="point", label="D" if e and contact != "D" else "",
                  caption=(f"Foot D of the follower's axis, OD = e = {e:g}", f"导路垂足 D,OD = e = {e:g}"))
     axis = sc.add("axis", Line, D, UP, role=Role.GIVEN, style="frame",
                   caption=("The follower's guide through D, perpendicular to OD", "过 D 作导路(垂直于 OD)"))
     if e:
         sc.add("offset_circle", circle, O, abs(e), style="construction",
                caption=(f"Offset circle about O with radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
-    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller")
+    at_far = st == "contact_angle" and (g.get("contact_angle") or 0.0) % 360.0 == 0.0 and not flat and not e
+    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller", "" if at_far else g.get("far_name") or "B1")
     if flat:
         return _finish_flat(sc, g, O, A, D, axis, B0, B1, sense)
     if e:
@@ -366,7 +374,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
     up = sc.add("up", lambda d: d + UP, D, visible=False, label="D + ↑")
     B = sc.add("B", line_circle, axis, pitch, branch=Ahead(D, up), role=Role.RESULT, style="joint",
-               label="B", caption=("The follower meets the pitch curve at B", "导路交理论廓线于 B(从动件位置)"))
+               label=contact, caption=(f"The follower meets the pitch curve at {contact}",
+                                       f"导路交理论廓线于 {contact}(从动件位置)"))
     if follower == "roller":
         sc.add("roller", circle, B, rr, role=Role.RESULT, style="link", caption=("", ""))
     top = sc.add("top", lambda b, k: b + UP * k, B, 0.6 * R, visible=False)
@@ -509,6 +518,26 @@ def _add_guide_speeds(sc: Scene, A: Ref, D: Ref, Rp: float, flat: bool, R: float
     return {"a": "a", "v_max": "v_max", "a_max": "a_max"}
 
 
+def _mark_arm_angles(sc: Scene, O: Ref, Q: Ref, B: Ref, A: Ref, Qs: list, Bs: tuple, p0: Ref, L: float,
+                     moved: bool) -> None:
+    """The angles 001-31 asks for, marked where they are measured: ψ0 = ∠OQ0B0 at the lowest position,
+    ψ0 + ψmax = ∠OQ1B1 at the highest, ψ0 + ψ = ∠OQB at the drawn one (when ψ ≠ 0, else Q is Q0), and α at B
+    between the normal BA and B's velocity (⊥ QB)."""
+    for k, (Qk, Bk) in enumerate(zip(Qs, Bs)):
+        sc.add(f"Q{k}O", segment, Qk, O, style="ghost", caption=("", ""))
+    add_angle_mark(sc, "mark_psi0", Qs[0], O, Bs[0], "ψ0", p0)
+    sc.add("psi_high", arm_angle, Qs[1], O, Bs[1], visible=False)
+    add_angle_mark(sc, "mark_psi_high", Qs[1], O, Bs[1], "ψ0+ψmax", Ref("psi_high"))
+    if moved:
+        sc.add("QO", segment, Q, O, style="ghost", caption=("", ""))
+        add_angle_mark(sc, "mark_psi_now", Q, O, B, "ψ0+ψ", Ref("psi_now"))
+    sc.add("normal_BA", segment, B, A, style="path",
+           caption=("The normal at the contact runs through the disc's centre A", "接触点公法线过圆盘中心 A"))
+    V = sc.add("v_B_end", velocity_end, B, Q, A, 0.3 * L, visible=False)
+    sc.add("v_B", segment, B, V, style="ghost", caption=("", ""))
+    add_angle_mark(sc, "mark_alpha", B, A, V, "α", Ref("alpha"))
+
+
 def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
     """The oscillating roller (or knife) follower."""
     R, E, a, L = g["R"], g["OA"], g["a"], g["L"]
@@ -563,8 +592,11 @@ def _construct_oscillating(g: Mapping[str, Any]) -> Construction:
     pq = sc.add("psi_now", arm_angle, Q, O, B, visible=False)
     sc.add("psi", difference, pq, p0, role=Role.MEASUREMENT, unit="deg",
            caption=("Swing ψ = ∠OQB − ψ0", "摆角 ψ = ∠OQB − ψ0"))
-    sc.add("alpha", arm_pressure, A, B, Q, role=Role.MEASUREMENT, unit="deg",
-           caption=("α between the normal AB and B's velocity (⊥ QB)", "压力角 α:法线 AB 与 B 点速度(⊥ QB)所夹锐角"))
+    al = sc.add("alpha", arm_pressure, A, B, Q, role=Role.MEASUREMENT, unit="deg",
+                caption=("α between the normal AB and B's velocity (⊥ QB)", "压力角 α:法线 AB 与 B 点速度(⊥ QB)所夹锐角"))
+    if sc.drawing:
+        moved = bool(st and g.get(st)) or bool(g.get("turn"))      # not at the lowest position: Q ≠ Q0
+        _mark_arm_angles(sc, O, Q, B, A, Qs, (B0, B1), p0, L, moved)
     for part in ("rise", "return"):
         sc.add(f"alpha_max_{part}", _osc_alpha_max, Qs[0], A, O, B0, L, Rp, left, sense, rise, part,
                role=Role.MEASUREMENT, unit="deg",

@@ -148,7 +148,7 @@ def _advise(g: Mapping[str, Any]) -> list[str]:
     for part in [p for p in ("rise", "return") if allow[p] is not None]:
         alpha, at = _shared(cam, part, lambda: cam.worst_pressure(part))
         if alpha > allow[part]:
-            out.append(f"α_max of the {part} = {alpha:.4g}° exceeds the allowance {allow[part]:g}° (at δ = {at:.4g}°)")
+            out.append(f"α_max of the {part} = {alpha:.3f}° exceeds the allowance {allow[part]:g}° (at δ = {at:.3f}°)")
     if roller:
         low = _shared(cam, "rho", lambda: rho_min(cam.pitch_curve(scalar=True)))
         rho, at = low.value, low.delta_deg
@@ -249,7 +249,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_bar(sc, "arm0", A0, B0)
     psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
                   caption=("Measure ψ0 = ∠OA0B0", "量得初始摆角 ψ0 = ∠OA0B0"))
-    add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
+    add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0, 0.55 * L)   # clear of the inverted arms at A0 (000-04)
     sc.add("kA", circle, O, a, caption=(f"Circle about O with radius a = {a:g}: the path of A0 in the inversion",
                                         f"以 O 为圆心、a = {a:g} 为半径作圆(反转后 A0 的轨迹)"))
     inv = ArmInversion(sc, cam, O, A0, B0)
@@ -317,10 +317,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add(f"normal_{part}", normal_segment, B, n, 0.6 * L, style="path")
             sc.add(f"velocity_{part}", velocity_segment, B, v, 0.45 * L, style="ghost")
         al = sc.add(f"alpha_max_{part}", arm_pressure_deg, A, B, O, k, role=Role.MEASUREMENT, unit="deg",
-                    caption=(f"α between the normal and the velocity of B (⊥ A0′B): the {part}'s α_max",
+                    caption=(f"α between the normal and the velocity of B (⊥ A0′B): the {part}'s "
+                             + ("α_max" if part == "rise" else "α′_max"),
                              f"法线与 B 点速度方向(⊥ A0′B)之夹角:{zh}最大压力角"))
         if drawing:
-            sc.add(f"mark_alpha_{part}", pressure_mark, B, n, v, al, 0.3 * L, role=Role.ANNOTATION, style="angle")
+            sc.add(f"mark_alpha_{part}", pressure_mark, B, n, v, al, 0.3 * L, "αmax" if part == "rise" else "α′max",
+                   role=Role.ANNOTATION, style="angle")
         answers[f"alpha_max_{part}"] = f"alpha_max_{part}"
         answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
     at = tuple(g.get("at") or ())

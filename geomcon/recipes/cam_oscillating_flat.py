@@ -88,7 +88,7 @@ def advise_flat(g: Mapping[str, Any]) -> list[str]:
     for part in [p for p in ("rise", "return") if allow[p] is not None]:
         alpha, where = cam.worst_pressure(part)
         if alpha > allow[part]:
-            out.append(f"α_max of the {part} = {alpha:.4g}° exceeds the allowance {allow[part]:g}° (at δ = {where:.4g}°)")
+            out.append(f"α_max of the {part} = {alpha:.3f}° exceeds the allowance {allow[part]:g}° (at δ = {where:.3f}°)")
     rho, where = cam.rho_min()
     jumps = cam.backward_jumps()
     if rho <= 0.0 or jumps:
@@ -576,7 +576,7 @@ def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O:
             v = sc.add(f"v_{part}", arm_velocity, A, K, cam.tau if part == "rise" else -cam.tau, visible=False)
             sc.add(f"velocity_{part}", velocity_segment, K, v, size, style="ghost")
             sc.add(f"mark_alpha_{part}", pressure_mark, K, nv, v, Ref(f"alpha_max_{part}"), 0.6 * size,
-                   role=Role.ANNOTATION, style="angle")
+                   "αmax" if part == "rise" else "α′max", role=Role.ANNOTATION, style="angle")
 
 
 def analytic_flat(g: Mapping[str, Any]) -> list[dict[str, Any]]:

@@ -123,7 +123,7 @@ def _advise(g: Mapping[str, Any]) -> list[str]:
     for part in ("rise", "return") if allow is not None and not flat else ():
         a, where = cam.alpha_max(part)
         if a > allow:
-            out.append(f"α_max of the {part} = {a:.4g}° exceeds alpha_allow = {allow:g}° (at δ = {where:.4g}°)")
+            out.append(f"α_max of the {part} = {a:.3f}° exceeds alpha_allow = {allow:g}° (at δ = {where:.3f}°)")
     return out
 
 
@@ -473,8 +473,28 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add("alpha", alphas_at, curve, inv, at, visible=False)
     if at:
         answers.update({"s": "s", "alpha": "alpha"})
+        if drawing and len(at) == 1:
+            _mark_asked(sc, O, prog, h, e, s0, inv, at[0], Point(R + 0.45 * R, s0), 3.0 * R / 360.0)
     add_speed_steps(sc, answers, g, prog, h, angular=False)
     return Construction(sc, answers, {"O": "O", "B0": "B0"})
+
+
+def _mark_asked(sc: Scene, O, prog: Program, h: float, e: float, s0: float, inv: float, delta: float,
+                origin: Point, per_deg: float) -> None:
+    """The one position a problem asks about (001-24: s at δ = 100°) marked where a student looks for it: the
+    follower's axis turned by −δ with s dimensioned from the base circle, and the ordinate at δ in the s–δ
+    diagram, ticked with δ."""
+    sv = prog.motion1(h, delta)[0]
+    C = sc.add("ask_C", turned, Point(e, s0), O, inv, delta, visible=False)
+    B = sc.add("ask_B", turned, Point(e, s0 + sv), O, inv, delta, style="joint", label=f"B({delta:g}°)",
+               caption=(f"The asked position δ = {delta:g}°: the axis turned by −δ, s laid off from the base circle",
+                        f"所求位置 δ = {delta:g}°:导路反转 −δ,自基圆量取位移 s"))
+    value = sc.add("ask_s", pick, Ref("s"), 0, visible=False)
+    sc.add("ask_dim", marks.dimension, C, B, "s", value, 0.12 * s0, role=Role.ANNOTATION, style="dim")
+    foot = sc.given("sd_ask_foot", Point(origin.x + delta * per_deg, origin.y), label=f"{delta:g}°", style="tick")
+    top = sc.given("sd_ask_top", Point(origin.x + delta * per_deg, origin.y + sv), visible=False)
+    sc.add("sd_ask_ord", segment, foot, top, style="link-alt", role=Role.ANNOTATION,
+           caption=(f"…and in the s–δ diagram the ordinate at δ = {delta:g}°", f"位移线图中 δ = {delta:g}° 处的纵坐标"))
 
 
 def sc_ref(key: str) -> Ref:

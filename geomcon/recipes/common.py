@@ -16,14 +16,22 @@ import math
 
 from typing import Any, Mapping
 
-from ..geometry import Point, angle_at, circle, distance, point_along, segment
+from .. import tolerance as _tolerance                  # REL_TOL read at run time, as the geometry reads it
+from ..analytic.design_by_k import rocker_design_valid
+from ..geometry import Line, Point, angle_at, circle, point_along, segment
+from ..geometry.measure import _signed_angle_xy
 from ..scene import Ref, Role, Scene
 from ..scene import marks
 
 
 def angle_deg(vertex: Point, a: Point, b: Point) -> float:
-    """∠a-vertex-b in degrees, in [0, 180]."""
-    return math.degrees(angle_at(vertex, a, b))
+    """∠a-vertex-b in degrees, in [0, 180].
+
+    >>> angle_deg(Point(0, 0), Point(1, 0), Point(0, 2))
+    90.0
+    """
+    ox, oy = vertex.x, vertex.y                            # angle_at(vertex, a, b), one call fewer
+    return math.degrees(abs(_signed_angle_xy(a.x - ox, a.y - oy, b.x - ox, b.y - oy)))
 
 
 def transmission_deg(b: Point, c: Point, d: Point) -> float:
@@ -50,8 +58,12 @@ def k_ratio(theta: float) -> float:
 
 
 def length(a: Point, b: Point) -> float:
-    """Distance ab (a measurement step operation)."""
-    return distance(a, b)
+    """Distance ab (a measurement step operation).
+
+    >>> length(Point(0, 0), Point(3, 4))
+    5.0
+    """
+    return math.hypot(b.x - a.x, b.y - a.y)                 # distance(a, b), one call fewer
 
 
 def smallest(*values: float) -> float:
@@ -116,13 +128,13 @@ def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...])
 
 
 def add_pivot(sc: Scene, key: str, at: Point | tuple[Any, Any], caption: tuple[str, str], *,
-              ground_angle: float = -math.pi / 2) -> Ref:
+              ground_angle: float = -math.pi / 2, label: str | None = None) -> Ref:
     """A fixed pivot: the given point (a Point, or coordinates placed by the step: :meth:`Scene.given_at`)
-    plus its hatched ground symbol."""
+    plus its hatched ground symbol; ``label`` replaces the printed name (default: ``key``)."""
     if type(at) is tuple:
-        ref = sc.given_at(key, at[0], at[1], caption=caption, style="pivot")
+        ref = sc.given_at(key, at[0], at[1], caption=caption, style="pivot", label=label)
     else:
-        ref = sc.given(key, at, caption=caption, style="pivot")
+        ref = sc.given(key, at, caption=caption, style="pivot", label=label)
     if sc.drawing:
         sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
     return ref
@@ -141,6 +153,21 @@ def transmission_mark(c: Point, b: Point, d: Point, symbol: str, value: float):
     return marks.AngleMark(c, b, d, symbol, value, None)
 
 
+def velocity_end(joint: Point, pivot: Point, toward: Point, size: float) -> Point:
+    """The end of the velocity line of a ``joint`` turning about ``pivot``, ``size`` mm from the joint: the
+    line stands perpendicular to pivot–joint on the side of ``toward`` (the acute side of the force line
+    joint–toward), so that the pressure angle between them is the angle the mark spans.
+
+    >>> velocity_end(Point(0, 0), Point(-1, 0), Point(1, 1), 2.0)
+    Point(x=0.0, y=2.0)
+    """
+    u = (joint - pivot).unit()
+    n = Point(-u.y, u.x)
+    if n.dot(toward - joint) < 0.0:
+        n = -n
+    return joint + n * size
+
+
 def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str, value: Ref,
                    radius: float | None = None) -> Ref:
     """The arc marking a measured angle, labelled with its value."""
@@ -148,7 +175,14 @@ def add_angle_mark(sc: Scene, key: str, vertex: Ref, a: Ref, b: Ref, symbol: str
 
 
 def along_line(line, t: float, sign: float = 1.0) -> Point:
-    """The point at signed distance ``sign·t`` along a line from its reference point."""
+    """The point at signed distance ``sign·t`` along a line from its reference point.
+
+    >>> along_line(Line(Point(1, 1), Point(0, 1)), 2.0, -1.0)
+    Point(x=1.0, y=-1.0)
+    """
+    if type(line) is Line:                                 # line.at(sign·t), without its two Points
+        p, d, s = line.point, line.direction, sign * t
+        return Point(p.x + d.x * s, p.y + d.y * s)
     return line.at(sign * t)
 
 
@@ -300,9 +334,6 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     >>> is_valid(Point(0, 0), Point(20, 60), Point(100, 79.37), Point(90, 0), 80.0, -1)
     True
     """
-    from ..analytic.design_by_k import rocker_design_valid
-    from ..tolerance import REL_TOL
-
     ax, ay = A.x, A.y
     ux, uy = D.x - ax, D.y - ay                            # u = D − A
     AD = math.hypot(ux, uy)
@@ -312,7 +343,7 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     a, b = abs(d2 - d1) / 2.0, (d1 + d2) / 2.0             # half_difference, half_sum
     if arc_side:
         cx, cy = P2.x - P1.x, P2.y - P1.y                  # chord = P2 − P1; chord × (A − P1)
-        if arc_side * (cx * (ay - P1.y) - cy * (ax - P1.x)) <= REL_TOL * math.hypot(cx, cy) * max(b, CD, AD):
+        if arc_side * (cx * (ay - P1.y) - cy * (ax - P1.x)) <= _tolerance.REL_TOL * math.hypot(cx, cy) * max(b, CD, AD):
             return False
     return rocker_design_valid(a, b, CD, AD, (ux * (P1.y - ay) - uy * (P1.x - ax)) / AD,
                                (ux * (P2.y - ay) - uy * (P2.x - ax)) / AD)

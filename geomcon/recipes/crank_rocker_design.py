@@ -237,6 +237,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
         flat += [Ref(f"valid_{i}"), Ref(f"C1_folded_{i}"), Ref(f"A_near_{i}"), Ref(f"AD_{i}")]
     idx = sc.add("choice", best_index, *flat, visible=False)
     _draw_choice(sc, idx, cands, th)
+    if sc.drawing and family == "positions":
+        _mark_given_angles(sc, g)
     if sc.drawing:                           # the other valid designs, light, with the last step
         sc.add("other_designs", other_designs, idx, D, *(x for i, c in enumerate(cands, 1)
                                                         for x in (Ref(f"valid_{i}"), c[0], c[1], c[2])), style="ghost")
@@ -251,6 +253,36 @@ def construct(g: Mapping[str, Any]) -> Construction:
     points = {"D": "D", "A": "A", "C1": "Cf", "C2": "Ce", "B1": "B1", "B2": "B2"}
     return Construction(sc, answers, points, solutions=tuple(sols),
                         no_solution=_no_solution_message(g, closing))
+
+
+def swing_mark(D: Point, C1: Point | None, C2: Point | None) -> marks.AngleMark | None:
+    """The swing ψ = ∠C1DC2 at D (none when the design has no solution)."""
+    if C1 is None or C2 is None:
+        return None
+    return marks.angle_mark(D, C1, C2, "ψ", angle_deg(D, C1, C2))
+
+
+def direction_mark(D: Point, C: Point | None, symbol: str) -> marks.AngleMark | None:
+    """The direction of DC from the horizontal through D (counter-clockwise, as ``phi1``/``phi2`` give it),
+    marked when it lies in (0°, 180°): the arc spans the smaller angle.
+
+    >>> direction_mark(Point(0, 0), Point(0, 2), "φ1").text
+    'φ1=90.00°'
+    """
+    if C is None:
+        return None
+    a = math.degrees(math.atan2(C.y - D.y, C.x - D.x)) % 360.0
+    return marks.angle_mark(D, D + Point(1.0, 0.0), C, symbol, a) if 1e-9 < a < 180.0 - 1e-9 else None
+
+
+def _mark_given_angles(sc: Scene, g: Mapping[str, Any]) -> None:
+    """001-13, 001-14, 001-21 give the rocker's swing ψ or the directions of DC1, DC2 from the frame line: the
+    figure marks them at D where the design starts (the horizontal through D is drawn when A lies on it)."""
+    D, C1, C2 = Ref("D"), Ref("Cf"), Ref("Ce")
+    sc.add("mark_psi", swing_mark, D, C1, C2, role=Role.ANNOTATION, style="angle", optional=True)
+    if g.get("frame_line") and g.get("phi1") is not None:
+        sc.add("mark_phi1", direction_mark, D, C1, "φ1", role=Role.ANNOTATION, style="angle", optional=True)
+        sc.add("mark_phi2", direction_mark, D, C2, "φ2", role=Role.ANNOTATION, style="angle", optional=True)
 
 
 def other_designs(idx: int | None, D: Point, *flat: Any) -> tuple[Segment, ...]:

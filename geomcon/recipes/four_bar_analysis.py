@@ -21,11 +21,11 @@ from ..analytic.four_bar_analysis import LINKS, LOOPS, four_bar_analysis, link, 
 from ..errors import NotAMechanism
 from ..geometry import Above, Below, LeftOf, Point, RightOf, circle, circle_circle, point_along, point_on_ray, segment
 from ..geometry import ray_at_angle
-from ..scene import Role, Scene
+from ..scene import Role, Scene, marks
 from ..tolerance import REL_TOL
 from .base import Construction, Quantity, Recipe
 from .common import (add_angle_mark, add_bar, add_pivot, angle_deg, complement_deg, difference, k_ratio, smallest,
-                     total, transmission_deg, transmission_mark)
+                     total, transmission_deg, transmission_mark, velocity_end)
 
 TYPES = ("crank-rocker", "double-crank", "double-rocker", "change-point", "immovable")
 GIVENS = (
@@ -238,6 +238,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 add_bar(sc, f"dead{i}_{nm}", a, b, style="link-alt", role=Role.CONSTRUCTION)
             gammas.append(sc.add(f"gamma_dead{i}", transmission_deg, Bd, Cd, Pe, role=Role.MEASUREMENT, unit="deg",
                                  caption=(f"γ = 0 at the dead point {jd1}d{i}", f"死点位置 {jd1}d{i} 处 γ = 0")))
+            if drawing:                    # γmin = 0 is read here: the note says so where the links line up
+                sc.add(f"mark_gamma_dead{i}", transmission_mark, Cd, Bd, Pe, "γ", gammas[-1],
+                       role=Role.ANNOTATION, style="angle")
     sc.add("gamma_min", smallest, *gammas, role=Role.MEASUREMENT, unit="deg",
            caption=("γmin over the driver's motion", "主动件运动范围内的最小传动角 γmin"))
     sc.add("dead_points", _not_or, full[jd], ch, role=Role.MEASUREMENT,
@@ -258,10 +261,20 @@ def construct(g: Mapping[str, Any]) -> Construction:
             add_bar(sc, f"phi_{nm}", a, b)
         gp = sc.add("gamma", transmission_deg, Bp, Cp, Pe, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"γ = ∠{jd1}{je1}{je} at φ (acute form)", f"φ 位置的传动角 γ = ∠{jd1}{je1}{je}(取锐角)"))
-        sc.add("alpha", complement_deg, gp, role=Role.MEASUREMENT, unit="deg",
+        al = sc.add("alpha", complement_deg, gp, role=Role.MEASUREMENT, unit="deg",
                caption=("Pressure angle α = 90° − γ", "压力角 α = 90° − γ"))
         if drawing:
             sc.add("mark_gamma", transmission_mark, Cp, Bp, Pe, "γ", gp, role=Role.ANNOTATION, style="angle")
+            # the pressure angle on the driven link: between the force along the coupler and the velocity
+            # of its joint (⊥ to the driven link), drawn at the joint as the question asks for it
+            V = sc.add("v_end", velocity_end, Cp, Pe, Bp, 0.3 * min(Z, e), style="point", label=f"v{je1}",
+                       role=Role.CONSTRUCTION)
+            sc.add("v_line", marks.vector, Cp, V, role=Role.CONSTRUCTION, style="vector",
+                   caption=(f"The velocity v{je1} of {je1} is perpendicular to {link_name(je, je1)}; the force on "
+                            f"{je1} runs along the coupler {link_name(jd1, je1)}: α is the angle between them",
+                            f"{je1} 点速度 v{je1} 垂直于 {link_name(je, je1)},所受力沿连杆 {link_name(jd1, je1)},"
+                            "二者之夹角为压力角 α"))
+            add_angle_mark(sc, "mark_alpha", Cp, Bp, V, "α", al)
         answers |= {"gamma": "gamma", "alpha": "alpha"}
         points |= {jd1: "Bphi", je1: "Cphi"}
     return Construction(sc, answers, points)

@@ -91,7 +91,7 @@ def _pressure(dev: float, de: float) -> float:
 def _guide_bar_part(sc: Scene, g: Mapping[str, Any]) -> tuple[Ref, Ref, Ref, Ref, Ref]:
     """A, C, B1, B2 and ψ of the guide-bar part; returns (A, C, B1, B2, theta)."""
     K = g["K"]
-    th = add_theta_step(sc, K, note=("; the guide bar swings through ψ = θ", ";导杆摆角 ψ = θ"))
+    th = add_theta_step(sc, K, note=("The guide bar swings through ψ = θ. ", "导杆摆角 ψ = θ;"))
     half = sc.add("half", _scaled, th, 0.5, visible=False, unit="deg")
     A = add_pivot(sc, "A", Point(0.0, 0.0), ("Crank pivot A", "曲柄转动中心 A"))
     centre = sc.add("centre", Line, A, Point(0.0, -1.0), role=Role.GIVEN, style="frame",

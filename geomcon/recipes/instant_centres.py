@@ -23,7 +23,7 @@ from typing import Any, Mapping
 from ..analytic.kinematics import crank_slider, four_bar
 from ..errors import Degenerate
 from ..geometry import Line, Point, line_line, line_through, perpendicular
-from ..scene import Role, Scene
+from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .kinematics_common import PHI, add_four_bar_at, add_slider_at, four_bar_assembles, slider_assembles
 from .synthesis_common import xy
@@ -48,6 +48,17 @@ def ratio_along(P: Point, fixed1: Point, fixed2: Point) -> float:
     a = (P.x - fixed1.x) * ux + (P.y - fixed1.y) * uy
     b = (P.x - fixed2.x) * ux + (P.y - fixed2.y) * uy
     return a / b
+
+
+def towards_infinity(C: Point, guide: Line, size: float) -> Point:
+    """The tip of the arrow from ``C`` that points, ``size`` mm long, to a centre at infinity perpendicular
+    to ``guide``, drawn on the guide's side away from the crank (−y for a guide along +x).
+
+    >>> towards_infinity(Point(2, 0), Line(Point(0, 0), Point(1, 0)), 3.0)
+    Point(x=2.0, y=-3.0)
+    """
+    u = guide.direction.unit()
+    return C + Point(u.y, -u.x) * size
 
 
 def slider_rate(P13: Point, A: Point) -> float:
@@ -149,6 +160,13 @@ def slider_construct(g: Mapping[str, Any]) -> Construction:
     nC = sc.add("nC", perpendicular, gl, C, caption=("Through C ⊥ the guide (P23P34)", "过 C 作导路的垂线(P23P34 连线)"))
     P24 = sc.add("P24", kennedy, lAB, nC, "P24", style="point", label="P24",
                  caption=("Kennedy: P24 where P14P12 meets P23P34", "三心定理:P14P12 与 P23P34 的交点为 P24"))
+    if sc.drawing:
+        # P34 has no point on the paper: an arrow from C along its direction (⊥ the guide), named at its tip
+        tip = sc.add("P34", towards_infinity, C, gl, 0.2 * g["BC"], style="point", label="P34 (∞)",
+                     role=Role.CONSTRUCTION)
+        sc.add("P34_arrow", marks.vector, C, tip, role=Role.CONSTRUCTION, style="vector",
+               caption=("P34 lies at infinity perpendicular to the guide: the arrow points to it",
+                        "P34 位于垂直于导路的无穷远处(箭头所指方向)"))
     sc.add("vC_w1", slider_rate, P13, A, role=Role.MEASUREMENT, unit="mm",
            caption=("vC = ω1·P14P13: the slider moves as the crank's point P13", "vC = ω1·P14P13(滑块与曲柄上 P13 点速度相同)"))
     sc.add("w2_w1", ratio_along, B, A, P24, role=Role.MEASUREMENT,

@@ -322,6 +322,11 @@ def slider_assembles(g: Any) -> None:
                             + (": the rod is perpendicular to the guide (a dead point)" if math.isclose(abs(h), BC) else ""))
 
 
+CENTRE_LABELS = {"A": "A (P14)", "B": "B (P12)", "C": "C (P23)", "D": "D (P34)"}
+"""A joint that is an instant centre is labelled with both names, as the textbook writes "B (P12)": links 1 the
+crank, 2 the coupler, 3 the rocker (slider), 4 the frame."""
+
+
 def add_four_bar_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref, Ref, Ref]:
     """The four-bar at its crank angle: A, D, B on the crank circle, C where the circles about B and D meet on the
     side ``branch`` names, and (drawing) the frame and the links; ``centres`` names the joints as instant centres.
@@ -338,13 +343,14 @@ def add_four_bar_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref,
                  (f"Fixed pivot D on the frame line, AD = {AD:g}", f"在机架线上取 D,使 AD = {AD:g}"),
                  (f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"),
                  ("They meet at C", "两圆交于 C"), ("Draw the linkage ABCD at this position", "画出该位置的机构 ABCD"))
-    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0])
-    D = add_pivot(sc, "D", (AD, 0.0), words[1])
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B", caption=words[2])
+    name = CENTRE_LABELS if centres else {}
+    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0], label=name.get("A"))
+    D = add_pivot(sc, "D", (AD, 0.0), words[1], label=name.get("D"))
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label=name.get("B", "B"), caption=words[2])
     kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
     kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
-    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint", label="C",
-               caption=words[3])
+    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint",
+               label=name.get("C", "C"), caption=words[3])
     if sc.drawing:
         sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
         add_bar(sc, "AB", A, B, words[4])
@@ -367,12 +373,13 @@ def add_slider_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref, R
                  ("The slider's guide through F, parallel to x", "过 F 作滑块导路(水平)"),
                  (f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"),
                  ("It meets the guide at C", "交导路于 C"), ("Draw the linkage ABC at this position", "画出该位置的机构 ABC"))
-    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0])
+    name = CENTRE_LABELS if centres else {}
+    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0], label=name.get("A"))
     F = sc.given_at("F", 0.0, -e, style="point", caption=(f"F with AF = e = {e:g} (below A)", f"取 AF = e = {e:g}(A 下方)"))
     gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given", caption=words[1])
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B", caption=words[2])
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label=name.get("B", "B"), caption=words[2])
     kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
-    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint", label="C", caption=words[3])
+    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint", label=name.get("C", "C"), caption=words[3])
     if sc.drawing:
         add_bar(sc, "AB", A, B, words[4])
         add_bar(sc, "BC", B, C)

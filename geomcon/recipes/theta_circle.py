@@ -15,11 +15,12 @@ from __future__ import annotations
 
 import math
 
+from ..analytic.linkages import theta_from_k
 from ..errors import Degenerate
 from ..geometry import (Arc, Circle, Line, Point, circle_through3, line_line, polar_angle, ray_at_angle,
                         thales_circle)
 from ..geometry.primitives import Ray, unit_xy
-from ..tolerance import tol
+from .. import tolerance as _tolerance
 from ..scene import Ref, Role, Scene
 
 
@@ -67,8 +68,12 @@ def ray_line(r) -> Line:
 
 
 def perpendicular_at(a: Point, b: Point) -> Line:
-    """The perpendicular to ``ab`` at ``b``."""
-    return Line(b, (b - a).perp())
+    """The perpendicular to ``ab`` at ``b``.
+
+    >>> perpendicular_at(Point(0, 0), Point(2, 0)).direction
+    Point(x=-0.0, y=1.0)
+    """
+    return Line(b, Point(-(b.y - a.y), b.x - a.x))          # (b − a).perp(), without the two Points
 
 
 def meet_lines(l1, l2) -> Point:
@@ -82,7 +87,7 @@ def meet_lines(l1, l2) -> Point:
         d1x, d1y = unit_xy(l1.direction.x, l1.direction.y)
         p1, d2 = l1.origin, l2.direction
         s = d1x * d2.y - d1y * d2.x
-        if abs(s) > tol(1.0):
+        if abs(s) > _tolerance.REL_TOL:                   # tol(1.0) in place
             wx, wy = l2.point.x - p1.x, l2.point.y - p1.y
             t = (wx * d2.y - wy * d2.x) / s
             return Point(p1.x + d1x * t, p1.y + d1y * t)
@@ -120,7 +125,7 @@ def seeing_circle(c1: Point, c2: Point, beta_deg: float, side: int) -> Circle:
     d1x, d1y = unit_xy(d1x, d1y)
     d2x, d2y = unit_xy(-vy, vx)                            # the perpendicular at c2: (c2 − c1) turned
     sine = d1x * d2y - d1y * d2x
-    if abs(sine) <= tol(1.0):                              # parallel: as the step operations say
+    if abs(sine) <= _tolerance.REL_TOL:                    # tol(1.0); parallel: as the step operations say
         return circle_through3(c1, c2, meet_lines(ray_from(c1, c2, side * (90.0 - beta_deg)), perpendicular_at(c1, c2)))
     wx, wy = c2.x - c1.x, c2.y - c1.y
     t = (wx * d2y - wy * d2x) / sine
@@ -151,16 +156,19 @@ def arc_point_from_end(arc: Arc, end: Point, s: float) -> Point:
 
 
 def theta_of_k(K: float) -> float:
-    """θ = 180°(K − 1)/(K + 1) (a step operation)."""
-    from ..analytic.linkages import theta_from_k
+    """θ = 180°(K − 1)/(K + 1) (a step operation): the twin's formula, imported once (an import statement in
+    the step cost more than the step)."""
     return theta_from_k(K)
 
 
 def add_theta_step(sc: Scene, K: float, *, note: tuple[str, str] = ("", "")) -> Ref:
-    """The first step of every design by K: θ from K (measured, numbered), and K itself as a hidden answer."""
+    """The first step of every design by K: θ from K (measured, numbered), and K itself as a hidden answer.
+
+    The caption ends with the formula, so that the measured value appended to it reads ``θ = 180°(K − 1)/(K + 1)
+    = 16.364°`` (not ``K = 1.2 = 16.364°``); ``note`` (a sentence) goes before it."""
     th = sc.add("theta", theta_of_k, K, role=Role.MEASUREMENT, unit="deg",
-                caption=(f"θ = 180°(K − 1)/(K + 1) with K = {K:g}{note[0]}",
-                         f"极位夹角 θ = 180°(K − 1)/(K + 1),K = {K:g}{note[1]}"))
+                caption=(f"{note[0]}With K = {K:g}: θ = 180°(K − 1)/(K + 1)",
+                         f"{note[1]}K = {K:g},极位夹角 θ = 180°(K − 1)/(K + 1)"))
     sc.add("K", float, K, role=Role.MEASUREMENT, visible=False)
     return th
 

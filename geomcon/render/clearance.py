@@ -113,6 +113,10 @@ class Boxes:
         """The boxes ``rows``."""
         return Boxes(*(getattr(self, f)[rows] for f in Boxes.__dataclass_fields__))
 
+    def slice(self, start: int, stop: int) -> Boxes:
+        """The boxes ``start`` to ``stop`` (views, not copies)."""
+        return Boxes(*(getattr(self, f)[start:stop] for f in Boxes.__dataclass_fields__))
+
     @property
     def turned(self) -> np.ndarray:
         """Which boxes are rotated."""
@@ -126,8 +130,9 @@ class Boxes:
         x, y = float(self.cx[k]), float(self.cy[k])
         return shapely.Polygon([(x + c * u - s * v, y + s * u + c * v) for u, v in ((w, -h), (w, h), (-w, h), (-w, -h))])
 
-    def to_point(self, px: float, py: float) -> np.ndarray:
-        """Distance from each box to the point (a turned box measured in its own frame)."""
+    def to_point(self, px: float | np.ndarray, py: float | np.ndarray) -> np.ndarray:
+        """Distance from each box to the point (a turned box measured in its own frame); points given as a
+        column (shape (m, 1)) give one row per point."""
         if not self.turned.any():
             return box_point(self.x0, self.y0, self.x1, self.y1, px, py)
         ux, uy = px - self.cx, py - self.cy
@@ -413,6 +418,7 @@ class Placed:
         self._rects: list[tuple[float, ...]] = []
         self._rect_ids: list[int] = []
         self._leaders: list[tuple[float, ...]] = []
+        self._leader_bounds: list[tuple[float, ...]] = []
         self._leader_ids: list[int] = []
         self._general = False
         self._arrays: tuple[np.ndarray, ...] | None = None
@@ -427,7 +433,9 @@ class Placed:
             self._rects.append(rect)
             self._rect_ids.append(len(self.geoms))
         elif shapely.get_type_id(geom) == 1 and shapely.get_num_coordinates(geom) == 2:
-            self._leaders.append(tuple(shapely.get_coordinates(geom).ravel().tolist()))
+            ax, ay, bx, by = shapely.get_coordinates(geom).ravel().tolist()
+            self._leaders.append((ax, ay, bx, by))
+            self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
             self._leader_ids.append(len(self.geoms))
         else:
             self._general = True
@@ -435,48 +443,47 @@ class Placed:
         self._arrays = None
 
     def _dense(self) -> tuple[np.ndarray, ...]:
+        """The rectangles' and the leaders' bounds side by side (x0, y0, x1, y1; the rectangles first), the
+        leaders' ends (ax, ay, bx, by) and the index into :attr:`geoms` of each of them."""
         if self._arrays is None:
-            r = np.array(self._rects, dtype=float).reshape(-1, 4).T.copy()
-            g = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
-            self._arrays = (*r, np.array(self._rect_ids, dtype=np.intp), *g, np.array(self._leader_ids, dtype=np.intp))
+            bounds = np.array(self._rects + self._leader_bounds, dtype=float).reshape(-1, 4).T.copy()
+            ends = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
+            self._arrays = (*bounds, *ends, np.array(self._rect_ids + self._leader_ids, dtype=np.intp))
         return self._arrays
 
     def measure(self, boxes: Boxes) -> Measured:
-        """The clearances of ``boxes`` from everything placed (pending: box, index into :attr:`geoms`)."""
+        """The clearances of ``boxes`` from everything placed (pending: box, index into :attr:`geoms`).
+
+        Rectangle to rectangle by their bounds; a box and a leader by the closed forms, for the pairs whose
+        bounds come within :data:`REACH` (a segment lies within its bounds, so the others cannot lower a
+        clearance, nor meet)."""
         if self._general or boxes.turned.any():                # rare: all of it as segments
             return Layer(self.geoms).measure(boxes)
         n = len(boxes)
         known = np.full(n, ENOUGH)
-        hk, hp = [_NONE], [_NONE]
-        px0, py0, px1, py1, rid, ax, ay, bx, by, lid = self._dense()
-        if len(rid):
-            gx = np.maximum(px0[None, :] - boxes.x1[:, None], boxes.x0[:, None] - px1[None, :])
-            gy = np.maximum(py0[None, :] - boxes.y1[:, None], boxes.y0[:, None] - py1[None, :])
-            touch = (gx <= 0.0) & (gy <= 0.0)
-            np.maximum(gx, 0.0, out=gx)
-            np.maximum(gy, 0.0, out=gy)
-            gx *= gx
-            gy *= gy
-            gx += gy
-            np.minimum(known, np.sqrt(gx.min(axis=1)), out=known)
-            k, j = np.nonzero(touch)
-            hk.append(k)
-            hp.append(rid[j])
-        if len(lid):
-            q = len(lid)
-            k = np.repeat(np.arange(n), q)
-            d, hit = box_segment(boxes.x0[k], boxes.y0[k], boxes.x1[k], boxes.y1[k],
-                                 np.tile(ax, n), np.tile(ay, n), np.tile(bx, n), np.tile(by, n))
-            np.minimum(known, d.reshape(n, q).min(axis=1), out=known)
-            h = np.flatnonzero(hit)
-            hk.append(k[h])
-            hp.append(lid[h % q])
-        k, p = np.concatenate(hk), np.concatenate(hp)
+        px0, py0, px1, py1, ax, ay, bx, by, ids = self._dense()
+        nr = len(self._rects)
+        gx = np.maximum(px0 - boxes.x1[:, None], boxes.x0[:, None] - px1)
+        gy = np.maximum(py0 - boxes.y1[:, None], boxes.y0[:, None] - py1)
+        touch = (gx <= 0.0) & (gy <= 0.0)
+        np.maximum(gx, 0.0, out=gx)
+        np.maximum(gy, 0.0, out=gy)
+        gx *= gx
+        gy *= gy
+        gx += gy
+        if nr:
+            np.minimum(known, np.sqrt(gx[:, :nr].min(axis=1)), out=known)
+        if len(ax):
+            k, j = np.nonzero(gx[:, nr:] <= REACH * REACH)
+            if len(k):
+                d, hit = box_segment(boxes.x0[k], boxes.y0[k], boxes.x1[k], boxes.y1[k], ax[j], ay[j], bx[j], by[j])
+                least(known, k, d)
+                touch[k[~hit], nr + j[~hit]] = False            # their bounds meet, they do not
+        k, j = np.nonzero(touch)
         touching = np.zeros(n, dtype=bool)
         if not len(k):
             return Measured(known, known, known, touching, (_NONE, _NONE))
-        order = np.argsort(k, kind="stable")
-        k, p = k[order], p[order]
+        p = ids[j]
         touching[k] = True
         hi, lo = known.copy(), known.copy()
         least(hi, k, np.zeros(len(k)))

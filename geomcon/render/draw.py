@@ -17,6 +17,7 @@ Examples
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
@@ -75,6 +76,8 @@ class Context:
     links: tuple[tuple[XY, XY], ...] = ()
     frames: tuple[tuple[XY, XY], ...] = ()
     """The fixed links drawn dash-dot (AD): a ground symbol's hatch keeps off them too."""
+    numbers: tuple[int, ...] = ()
+    """The step number of each of ``points`` (empty: every point counts as drawn already)."""
     sliders: tuple[tuple[XY, XY], ...] = ()
     """The slider blocks of the figure on paper, as (centre, unit direction): blocks close on one guide
     shorten so that they never overlap."""
@@ -125,7 +128,9 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
             away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
             req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
         short = None
-        if label.endswith(")") and " (" in label:          # "N (E1)": just "N" where both find no room
+        tail = label[:-1].split(" (", 1)[-1] if label.endswith(")") and " (" in label else ""
+        if tail and not re.fullmatch(r"P\d\d|∞", tail):   # "N (E1)": just "N" where both find no room; an
+            # instant centre's name ("B (P12)", "P34 (∞)") is the answer 400-04/05 ask for and stays
             head = label_runs(label.split(" (", 1)[0])
             short = TextRequest(head, size, replace(req, width=text_width(head, size) + 0.3), italic=True)
         out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional, fallback=short))
@@ -207,12 +212,87 @@ def compass_parts(c: Circle, points: tuple[Point, ...], half: float) -> list[tup
     return [(a, b - a) if b - a < TAU else (0.0, TAU) for a, b in parts]
 
 
+def _spans(parts: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """Intervals (start, sweep) as sorted [a, b] spans within [0, 2π)."""
+    out = []
+    for start, sweep in parts:
+        a = start % TAU
+        b = a + sweep
+        out += [(a, min(b, TAU))] + ([(0.0, b - TAU)] if b > TAU else [])
+    return sorted(out)
+
+
+def arc_difference(parts: list[tuple[float, float]], minus: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """The arcs of ``parts`` not covered by ``minus`` (both as (start, sweep) radians), pieces shorter than
+    1e-9 rad dropped, a piece crossing angle 0 kept whole.
+
+    >>> [(round(a, 6), round(s, 6)) for a, s in arc_difference([(-0.1, 0.5)], [(0.2, 0.1)])]
+    [(-0.1, 0.3), (0.3, 0.1)]
+    >>> arc_difference([(0.0, 1.0)], [(-0.5, 2.0)])
+    []
+    """
+    cut = _spans(minus)
+    left = []
+    for a, b in _spans(parts):
+        for c, d in cut:
+            if d <= a or c >= b:
+                continue
+            if c > a:
+                left.append((a, c))
+            a = max(a, d)
+            if a >= b:
+                break
+        if b - a > 1e-9:
+            left.append((a, b))
+    if len(left) > 1 and left[0][0] == 0.0 and left[-1][1] == TAU:       # one piece across angle 0
+        left = [(left[-1][0] - TAU, left[0][1])] + left[1:-1]
+    return [(a, b - a) for a, b in sorted(left)]
+
+
+def compass_steps(c: Circle, ctx: Context, own: int, half: float) -> list[tuple[int, list[tuple[float, float]]]]:
+    """The compass arcs of ``c`` (drawn at step ``own``) by the step that draws them, in step order: with the
+    circle's own step the arcs through the points on it drawn by then (or, when there are none, through the
+    first point a later step constructs on it: the arc a draftsman swings where the next intersection will
+    be), and every other arc with the step that constructs its point, so no frame shows an arc through a
+    point that does not exist yet. A circle no point lies on is whole, at its own step.
+
+    >>> from geomcon.render.view import View
+    >>> ctx = Context(View((-2.0, -2.0, 2.0, 2.0), 0.01, (0.0, 0.0)), (Point(1, 0), Point(-1, 0)), numbers=(5, 9))
+    >>> [(n, [(round(a, 3), round(s, 3)) for a, s in parts]) for n, parts in compass_steps(Circle(Point(0, 0), 1.0), ctx, 4, 0.1)]
+    [(4, [(-0.1, 0.2)]), (9, [(3.042, 0.2)])]
+    """
+    numbers = ctx.numbers or (own,) * len(ctx.points)
+    tol = 1e-9 * max(c.r, abs(c.center.x), abs(c.center.y))
+    on = [(n, p) for p, n in zip(ctx.points, numbers)
+          if abs(math.hypot(p.x - c.center.x, p.y - c.center.y) - c.r) <= tol]
+    if not on:
+        return [(own, compass_parts(c, (), half))]
+    first = own if any(n <= own for n, _ in on) else min(n for n, _ in on)
+    out, before = [], []
+    for step in sorted({own} | {n for n, _ in on if n > first}):
+        parts = compass_parts(c, tuple(p for n, p in on if n <= max(step, first)), half)
+        new = arc_difference(parts, before) if before else parts
+        if new:
+            out.append((step, new))
+        before = parts
+    return out
+
+
+def compass_half(c: Circle, ctx: Context) -> float:
+    """Half the angle of a compass arc of ``c`` through a point: :data:`COMPASS_HALF` paper mm, 6° at least."""
+    return max(math.radians(6.0), min(math.pi, COMPASS_HALF / max(ctx.view.length(c.r), 1e-12)))
+
+
+def draw_compass(c: Circle, parts: list[tuple[float, float]], style: Style, ctx: Context) -> Drawn:
+    """The arcs ``parts`` (start, sweep) of a compass-style circle, clipped to the view box."""
+    return _arcs(c.center, c.r, parts, style, ctx)
+
+
 def draw_circle(c: Circle, style: Style, ctx: Context) -> Drawn:
     """A circle, clipped to the view box; compass-style circles as short arcs through their points."""
     parts = [(0.0, TAU)]
     if style.compass:
-        half = max(math.radians(6.0), min(math.pi, COMPASS_HALF / max(ctx.view.length(c.r), 1e-12)))
-        parts = compass_parts(c, ctx.points, half)
+        parts = compass_parts(c, ctx.points, compass_half(c, ctx))
     return _arcs(c.center, c.r, parts, style, ctx)
 
 

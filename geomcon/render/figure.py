@@ -26,8 +26,8 @@ import shapely.ops
 from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
-from .draw import Context, Drawn, TextRequest, _paper_dir
-from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent, nearer_rival
+from .draw import Context, Drawn, TextRequest, _paper_dir, compass_half, compass_steps, draw_compass
+from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .crossings import NEAR, Crossings
 from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
@@ -53,6 +53,8 @@ class StepDrawing:
     classes: str
     layer: str
     shapes: list[Shape] = field(default_factory=list)
+    arc: bool = False
+    """A compass circle's arcs drawn by a later step (the one constructing their point): not a step's group."""
 
     @property
     def texts(self) -> list[Text]:
@@ -167,10 +169,11 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     else:
         box = viewbox or grow(content_box(scene, steps, values), FIG_MARGIN * mu)
     view = View(box, mu, origin)
-    pts = tuple(p for _, s in steps for v in [values[s.key]] if isinstance(v, Point) for p in [v])
+    numbered = [(n, v) for n, s in steps for v in [values[s.key]] if isinstance(v, Point)]
+    pts = tuple(p for _, p in numbered)
     ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
-                  frames=_links(steps, values, view, frame=True), sliders=_sliders(steps, values, view),
-                  sectors=_sectors(steps, values, view))
+                  frames=_links(steps, values, view, frame=True), numbers=tuple(n for n, _ in numbered),
+                  sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view))
     current = n if upto is not None else None
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
@@ -179,11 +182,21 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         kind = kind_of(value)
         style = resolve_style(s.style, s.role, kind)
         is_cur = number == current
-        drawn = draw(value, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
         layer = "points" if kind == "point" else (style.layer if kind != "none" else "given")
         cls = f"step role-{s.role.value} style-{style.name if kind != 'none' else (s.style or 'none')}"
+        later: list[tuple[int, list[tuple[float, float]]]] = []
+        if style.compass and isinstance(value, Circle):      # an arc through a later point: with that point's step
+            (_, own), *later = compass_steps(value, ctx, number, compass_half(value, ctx))
+            drawn = draw_compass(value, own, highlighted(style) if is_cur else style, ctx)
+        else:
+            drawn = draw(value, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
         pending.append((drawn, is_cur))
+        for m, parts in later:
+            arcs = draw_compass(value, parts, highlighted(style) if m == current else style, ctx)
+            groups.append(StepDrawing(s.key, m, "arc" + cls[4:] + (" current" if m == current else ""), layer,
+                                      list(arcs.shapes), arc=True))
+            pending.append((arcs, m == current))
     _place_texts(view, groups, pending)
     return Figure(view, groups, values, n)
 
@@ -295,12 +308,15 @@ def _outward(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> No
                                             fallback=t)         # all round, where outside has no room
 
 
-def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]
-            ) -> dict[int, TextRequest]:
-    """The labels of crowded clusters of each numbered row (:mod:`.rows`), each at its place on the cluster's
-    line of labels: the layout whose worst label is clear (the nearest on the side away from the drawing first),
-    else the one whose worst label is the most clear. Keyed by ``id`` of the text replaced."""
-    out: dict[int, TextRequest] = {}
+FanTry = tuple[list[tuple[int, TextRequest]], list[Request], list[tuple[Fan, list[tuple[Request, str]]]]]
+"""One crowded cluster of a numbered row: its (group index, text) members, their requests, and the layouts to
+try, each with its texts' one-candidate jobs for the placer."""
+
+
+def _fan_options(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> list[FanTry]:
+    """The crowded clusters of each numbered row (:mod:`.rows`) and the layouts :func:`_fanned` tries for each
+    (they depend on the drawing alone: the placer measures them all in one pass with the other texts)."""
+    tried = []
     for row in _rows(groups, pending):
         anchors = [t.request.anchor for _, t in row]
         for run in clusters(anchors, [(t.request.width, t.request.height) for _, t in row], SEP):
@@ -311,23 +327,32 @@ def _fanned(placer: Placer, groups: list[StepDrawing], pending: list[tuple[Drawn
             fixed = all(r.candidates for r in reqs)            # an axis's ticks: on their side only
             options = fans([r.anchor for r in reqs], [(r.width, r.height) for r in reqs],
                            max(max(r.gap for r in reqs) - 0.4, 0.0), (ax, ay), (1,) if fixed else (1, -1))
-            best: tuple[float, Fan] | None = None
-            for fan in options:
-                jobs = [(_at(r, c), groups[i].key) for (i, _), r, c in zip(members, reqs, fan.centres)]
-                placer.prepare(jobs)            # the fan's texts against the drawing in one pass, not one each
-                worst = min(placer.best(req, key)[1] for req, key in jobs)
-                if best is None or worst > best[0] + 1e-9:
-                    best = (worst, fan)
-                if worst >= CROWDED:
-                    break
-            assert best is not None
-            for (_, t), r, c in zip(members, reqs, best[1].centres):
-                fan_t = out[id(t)] = TextRequest(t.runs, t.size, _at(r, c), italic=t.italic, cls="label fan")
-                box = r.box(*c)
-                placer.commit(box)
-                leader = _fan_leader(fan_t, box)
-                if leader is not None:
-                    placer.commit(obstacle(leader))
+            tried.append((members, reqs, [(fan, [(_at(r, c), groups[i].key) for (i, _), r, c
+                                                 in zip(members, reqs, fan.centres)]) for fan in options]))
+    return tried
+
+
+def _fanned(placer: Placer, tried: list[FanTry]) -> dict[int, TextRequest]:
+    """The labels of crowded clusters of each numbered row (:func:`_fan_options`), each at its place on the
+    cluster's line of labels: the layout whose worst label is clear (the nearest on the side away from the
+    drawing first), else the one whose worst label is the most clear. Keyed by ``id`` of the text replaced."""
+    out: dict[int, TextRequest] = {}
+    for members, reqs, options in tried:
+        best: tuple[float, Fan] | None = None
+        for fan, jobs in options:
+            worst = min(placer.best(req, key)[1] for req, key in jobs)
+            if best is None or worst > best[0] + 1e-9:
+                best = (worst, fan)
+            if worst >= CROWDED:
+                break
+        assert best is not None
+        for (_, t), r, c in zip(members, reqs, best[1].centres):
+            fan_t = out[id(t)] = TextRequest(t.runs, t.size, _at(r, c), italic=t.italic, cls="label fan")
+            box = r.box(*c)
+            placer.commit(box)
+            leader = _fan_leader(fan_t, box)
+            if leader is not None:
+                placer.commit(obstacle(leader))
     return out
 
 
@@ -371,8 +396,10 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     placer = Placer(obstacles, view.paper_box)
     texts: list[Any] = []
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
-    placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts])
-    fanned = _fanned(placer, groups, pending)
+    tried = _fan_options(groups, pending)
+    placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts]
+                   + [job for _, _, options in tried for _, jobs in options for job in jobs])   # in one pass
+    fanned = _fanned(placer, tried)
     strokes = _Strokes(obstacles, [(g, sh) for g in groups for sh in g.shapes], view.paper_box)
     rows = [f.request.box(*f.request.candidates[0]) for f in fanned.values()]
     for g, (drawn, is_cur) in zip(groups, pending):
@@ -403,7 +430,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 centre = strokes.fewest_crossings(t, g.key, centre, texts + rows)
                 box = t.request.box(*centre)
             if t.optional and ((texts and shapely.intersects(box, texts).any())
-                               or nearer_rival(t.request, [centre])[0]):
+                               or placer.rivalled(t.request, g.key, centre)):
                 t = _led(t)             # a row's number with no room by its point: farther, with a leader
                 centre, _ = placer.best(t.request, g.key)
                 box = t.request.box(*centre)

@@ -11,6 +11,8 @@ Examples
 (('Join AC', False), ('2', True), (', γ', False), ('min', True))
 >>> rich_runs("α′max, ρa,min")
 (('α′', False), ('max', True), (', ρ', False), ('a,min', True))
+>>> rich_runs("vmax, rr,max, r0,ρ, ω2,max, φslow")
+(('v', False), ('max', True), (', r', False), ('r,max', True), (', r', False), ('0,ρ', True), (', ω', False), ('2,max', True), (', φ', False), ('slow', True))
 >>> rich_runs("the rise's α_max, B_iK_i")
 (("the rise's α", False), ('max', True), (', B', False), ('i', True), ('K', False), ('i', True))
 >>> wrap("one two three", 8 * 2.7 * 0.55, 2.7)
@@ -23,13 +25,20 @@ import re
 
 Runs = tuple[tuple[str, bool], ...]
 
-_LABEL = re.compile(r"^([^\d]+?)(\d+)([′″‴'*]*)$")
-_SUB = re.compile(r"(?<=(?<![A-Za-z0-9])[valn])[A-Z][A-Z0-9]*|(?<=(?<![A-Za-z0-9])[va][ⁿᵗʳᵏ])[A-Z][A-Z0-9]*"
+_LABEL = re.compile(r"^([^\d]+?)(\d+(?:,\d+)*)([′″‴'*]*)$")
+_SUB = re.compile(r"(?<=(?<![A-Za-z0-9])[valr])(?:min|max)\b|(?<=(?<![A-Za-z0-9])r)(?:r,max|0,[αρ])(?![A-Za-z])"
+                  r"|(?<=[α-ω])\d+,(?:min|max)\b|(?<=[α-ω])max,turn\b|(?<=φ)(?:slow|quick)\b"
+                  r"|(?<=(?<![A-Za-z0-9])s)E\d+(?![\d.])|(?<=(?<![A-Za-z0-9])F)[fn](?![A-Za-z])"
+                  r"|(?<=(?<![A-Za-z0-9])[xy])[pa](?![A-Za-z])|(?<=(?<![A-Za-z0-9])l)face\b"
+                  r"|(?<=(?<![A-Za-z0-9])[valn])[A-Z][A-Z0-9]*|(?<=(?<![A-Za-z0-9])[va][ⁿᵗʳᵏ])[A-Z][A-Z0-9]*"
                   r"|(?<=μ)[val](?![A-Za-z])|(?<=(?<![A-Za-z_])[a-z])\d+(?![\d.])|(?<=[A-Z])d\d+(?![\d.])"
                   r"|(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
                   r"|(?<=[A-Zα-ω])i(?![a-z])"
                   r"|(?<=[A-Za-zα-ωΑ-Ω′])_([a-z0-9]+)")
-"""What a caption prints as a subscript: digits after a capital or Greek letter (C1, γ1), min/max after a Greek
+"""What a caption prints as a subscript: a follower's or a roller's bound (vmax, amax, lmin, rr,max: the comma
+inside the subscript), a base circle of one limit (r0,α, r0,ρ), an arm's bound (ω2,max), the crank angles of the
+two strokes (φslow, φquick), a pin's place (sE1), friction and normal forces (Ff, Fn), a pitch and an actual
+profile's coordinates (xp, ya), a flat face's length (lface); digits after a capital or Greek letter (C1, γ1), min/max after a Greek
 letter, a prime between or a profile's letter before included (γmin, α′max, ρa,min), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
 underscore dropped, as the textbook prints αmax), the points after a velocity, acceleration, length or
 polygon normal's letter (vC, aCBᵗ, aʳB2B3, lAB, nB: v with subscript C …), a scale's letter (μv, μa, μl), the
@@ -44,6 +53,10 @@ _POINTS = re.compile(r"^([valn](?=[A-Z])|[A-Z](?=d\d))([A-Z][A-Z0-9]*|d\d+)([′
 subscript B) and a dead point (Cd1: C with subscript d1)."""
 
 
+_FORCE = re.compile(r"^F[fn]$")
+"""A force's label: friction Ff, normal force Fn (F with subscript f, n)."""
+
+
 def label_runs(label: str) -> Runs:
     """Runs of a point label: letters, then trailing digits as a subscript, then primes; ``"D (D1)"`` (a
     result drawn on the candidate it was chosen from) as both labels.
@@ -52,6 +65,8 @@ def label_runs(label: str) -> Runs:
     (('K', False), ('2', True), ('*', False))
     >>> label_runs("nB"), label_runs("Cd1")
     ((('n', False), ('B', True)), (('C', False), ('d1', True)))
+    >>> label_runs("C2,3"), label_runs("Ff")
+    ((('C', False), ('2,3', True)), (('F', False), ('f', True)))
     >>> label_runs("D (D1)")
     (('D', False), (' (', False), ('D', False), ('1', True), (')', False))
     """
@@ -60,7 +75,7 @@ def label_runs(label: str) -> Runs:
         return label_runs(head) + ((" (", False),) + label_runs(tail) + ((")", False),)
     m = _POINTS.match(label) or _LABEL.match(label)
     if not m:
-        return ((label, False),)
+        return rich_runs(label) if _FORCE.match(label) else ((label, False),)
     out = [(m.group(1), False), (m.group(2), True)]
     if m.group(3):
         out.append((m.group(3), False))

@@ -244,7 +244,7 @@ def print_css(spec: PageSpec) -> str:
     return (f"@page {{ size: {spec.paper} {spec.orientation}; margin: 0; }}\n"
             "@media print {\n"
             "  body { margin: 0; background: #fff; }\n"
-            "  #bar, #caption { display: none; }\n"
+            "  #bar { display: none; }\n"
             "  #drawing { border: 0; overflow: visible; }\n"
             f"  #drawing svg.sheet {{ width: {fmt(sh.width)}mm; height: {fmt(sh.height)}mm; margin: 0; }}\n"
             f"  .page {{ height: {fmt(sh.height - 1.0)}mm; overflow: hidden; border: 0 !important; "

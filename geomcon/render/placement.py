@@ -6,9 +6,9 @@ markers, texts and the labels placed before wins. Clearances above :data:`ENOUGH
 label with room to spare takes its preferred direction; small penalties favour near and preferred
 positions among equally free ones.
 
-Scoring is vectorised (:mod:`.clearance`): :meth:`Placer.prepare` measures every candidate of every text of a
-figure against the fixed drawing in one pass, and each text then measures its candidates against the few
-texts and leaders placed before it; only what a candidate covers of an area is left to shapely, computed for
+Scoring is vectorised (:mod:`.clearance`): :meth:`Placer.prepare` lays out the candidates of every text of a
+figure at once (:mod:`.candidates`) and measures them against the fixed drawing in one pass, and each text
+then measures its candidates against the few texts and leaders placed before it; only what a candidate covers of an area is left to shapely, computed for
 the candidates whose choice it decides. The candidates are tried in order, one replacing the best so far
 when its score is higher by more than 1e-12: the choice of scoring every candidate in turn by shapely (the
 closed forms agree with GEOS to rounding).
@@ -22,7 +22,6 @@ True
 """
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 from typing import Sequence
@@ -31,7 +30,8 @@ import numpy as np
 import shapely
 from shapely import affinity
 
-from .clearance import ENOUGH, Boxes, Layer, Measured, Placed, _starts, gaps, turn
+from .candidates import FAR_PENALTY, Candidates, candidates, directions, rivalled
+from .clearance import ENOUGH, Boxes, Layer, Measured, Placed, _starts, gaps
 
 XY = tuple[float, float]
 
@@ -49,10 +49,6 @@ gallery by the tests)."""
 AMBIGUOUS = 5.0
 """Score lost by a label's box nearer another point than its own (worse than covering a line, better than
 covering a text or leaving the frame)."""
-
-FAR_PENALTY = 0.25
-"""Score lost per step of :data:`DISTANCES`."""
-
 
 @dataclass(frozen=True, slots=True)
 class Request:
@@ -99,24 +95,6 @@ class Request:
         return affinity.rotate(b, self.rotate, origin=(cx, cy)) if self.rotate else b
 
 
-def directions(prefer: float, n: int = 16) -> list[float]:
-    """``n`` directions around the circle (radians, paper orientation), nearest to ``prefer`` first; of two
-    equally near, the one counter-clockwise as seen (upwards on paper) first.
-
-    Examples
-    --------
-    >>> [round(math.degrees(a)) for a in directions(0.0, 4)]
-    [0, -90, 90, 180]
-    """
-    step = 2 * math.pi / n
-    base = round(prefer / step)
-    ks = [0]
-    for k in range(1, n // 2):
-        ks += [-k, k]
-    ks.append(n // 2)
-    return [math.atan2(math.sin((base + k) * step), math.cos((base + k) * step)) for k in ks]
-
-
 def half_extent(ux: float, uy: float, w: float, h: float) -> float:
     """Distance from the centre of a w × h box to its boundary along the unit direction (ux, uy).
 
@@ -141,43 +119,26 @@ def nearer_rival(req: Request, centres: Sequence[XY]) -> list[bool]:
     if not req.rivals or not len(centres):
         return [False] * len(centres)
     c = np.array(centres, dtype=float).reshape(-1, 2)
-    return _rivalled(req, _boxes(req, c[:, 0], c[:, 1], -1)).tolist()
+    n = len(c)
+    return rivalled([req], np.array([0, n]), np.array([n]), _boxes(req, c[:, 0], c[:, 1], -1)).tolist()
 
 
-def _rivalled(req: Request, boxes: Boxes) -> np.ndarray:
-    """:func:`nearer_rival` of ``boxes``."""
-    own = boxes.to_point(*req.anchor)
-    other = np.min([boxes.to_point(x, y) for x, y in req.rivals], axis=0)
-    return other < own
+class _Batch:
+    """The candidates of the texts prepared together (:class:`.Candidates`) and what is known of them: the
+    static loss (outside the frame, nearer a rival point), their best possible scores, and the clearances from
+    the drawing of those measured so far (NaN for the others; ``pending``: what GEOS is left to compute, by
+    candidate). A text's are a slice of these arrays."""
 
-
-class _Text:
-    """The candidates of one text and what is known of them: centres, penalties, boxes, the static loss
-    (outside the frame, nearer a rival point), their best possible scores, and the clearances from the drawing
-    of those measured so far (NaN for the others).
-
-    The drawing alone already rules candidates out: :meth:`advance` scans them in order with the clearance from
-    the drawing as the score (at least the final one: what is placed only lowers it) and stops at the first not
-    yet measured that could still win; the candidates it passes over need not be measured at all.
-    """
-
-    def __init__(self, req: Request, owner: int, frame: tuple[float, float, float, float]):
-        cx, cy, self.cost = _centres(req)
-        self.n = len(cx)
-        self.centres: list[XY] = list(zip(cx.tolist(), cy.tolist()))
-        self.boxes = b = _boxes(req, cx, cy, owner)
-        f = frame
-        self.framed = (f[0] <= b.x0) & (f[1] <= b.y0) & (b.x1 <= f[2]) & (b.y1 <= f[3])
-        self.rivalled = _rivalled(req, b) if req.rivals else np.zeros(self.n, dtype=bool)
-        outside = np.where(self.framed, 0.0, 50.0) + np.where(self.rivalled, AMBIGUOUS, 0.0)
-        self.outside = outside
-        self.static = (ENOUGH - self.cost) - outside
-        self.known, self.hi = np.full(self.n, np.nan), np.full(self.n, np.nan)
+    def __init__(self, c: Candidates):
+        self.c, self.boxes = c, c.boxes
+        self.outside = np.where(c.framed, 0.0, 50.0) + np.where(c.rivalled, AMBIGUOUS, 0.0)
+        self.static = (ENOUGH - c.cost) - self.outside
+        self.static_list: list[float] = self.static.tolist()
+        self.known, self.hi = np.full(len(c.cost), np.nan), np.full(len(c.cost), np.nan)
         self.pending: dict[int, np.ndarray] = {}
-        self._at, self._best, self._waves = 0, -math.inf, 0
 
     def record(self, rows: np.ndarray, m: Measured) -> None:
-        """Keep the clearances ``m`` of the candidates ``rows``."""
+        """Keep the clearances ``m`` of the candidates ``rows`` (of the batch)."""
         self.known[rows], self.hi[rows] = m.known, m.hi
         pk, pp = m.pending
         if len(pk):
@@ -185,20 +146,54 @@ class _Text:
             for i, j in zip(cut[:-1].tolist(), cut[1:].tolist()):
                 self.pending[int(rows[pk[i]])] = pp[i:j]
 
+    def upper(self) -> list[float]:
+        """The best score each candidate may still get: by its clearance from the drawing when measured (NaN
+        when not)."""
+        return ((self.hi - self.c.cost) - self.outside).tolist()
+
+
+class _Text:
+    """The candidates of one text, a slice of a :class:`_Batch`: penalties, boxes, static loss, best possible
+    scores and clearances from the drawing (views of the batch's arrays, numbered from 0).
+
+    The drawing alone already rules candidates out: :meth:`advance` scans them in order with the clearance from
+    the drawing as the score (at least the final one: what is placed only lowers it) and stops at the first not
+    yet measured that could still win; the candidates it passes over need not be measured at all.
+    """
+
+    def __init__(self, batch: _Batch, i: int):
+        a, b = (int(v) for v in batch.c.starts[i:i + 2])
+        self.batch, self.offset, self.n = batch, a, b - a
+        c = batch.c
+        self.cost, self.framed, self.rivalled = c.cost[a:b], c.framed[a:b], c.rivalled[a:b]
+        self.boxes = batch.boxes.slice(a, b)
+        self.outside, self.static = batch.outside[a:b], batch.static[a:b]
+        self.known, self.hi = batch.known[a:b], batch.hi[a:b]
+        self._at, self._best, self._waves = 0, -math.inf, 0
+
+    def centre(self, i: int) -> XY:
+        """The centre of candidate ``i``."""
+        k = self.offset + i
+        return self.batch.c.cx[k].item(), self.batch.c.cy[k].item()
+
+    def pending(self, i: int) -> np.ndarray | None:
+        """What GEOS is left to compute of candidate ``i`` against the drawing (None: nothing)."""
+        return self.batch.pending.get(self.offset + i)
+
     def unmeasured(self, start: int, best: float, count: int) -> np.ndarray:
         """Up to ``count`` candidates from ``start`` on, not measured yet, that could beat ``best``."""
         rest = np.flatnonzero(np.isnan(self.known[start:]) & (self.static[start:] > best + 1e-12)) + start
         return rest[:count]
 
-    def advance(self) -> np.ndarray:
-        """Scan on with the drawing's clearances; the candidates to measure next (none when the scan is done)."""
-        i, best = self._at, self._best
-        hi = ((self.hi - self.cost) - self.outside).tolist()
-        static = self.static.tolist()
+    def advance(self, upper: list[float]) -> np.ndarray:
+        """Scan on with the drawing's clearances (``upper``: :meth:`_Batch.upper`); the candidates to measure
+        next (none when the scan is done)."""
+        i, best, o = self._at, self._best, self.offset
+        static = self.batch.static_list
         while i < self.n:
-            h = hi[i]
+            h = upper[o + i]
             if h != h:                                      # not measured
-                if static[i] > best + 1e-12:
+                if static[o + i] > best + 1e-12:
                     break
             elif h > best + 1e-12:
                 best = h
@@ -242,22 +237,25 @@ class Placer:
         """Measure the candidates of every (request, owner) of ``jobs`` against the fixed drawing, in a few
         waves each taking, for every text at once, the next candidates the drawing alone cannot rule out."""
         todo = [j for j in dict.fromkeys(jobs) if j not in self._ready]
-        texts = [self._ready.setdefault(j, _Text(j[0], self._fixed.code(j[1]), self._frame)) for j in todo]
+        if not todo:
+            return
+        batch = _Batch(candidates([r for r, _ in todo], [self._fixed.code(o) for _, o in todo], self._frame))
+        texts = [_Text(batch, i) for i in range(len(todo))]
+        self._ready.update(zip(todo, texts))
         while texts:
-            wave = [(t, t.advance()) for t in texts]
+            upper = batch.upper()
+            wave = [(t, t.advance(upper)) for t in texts]
             wave = [(t, rows) for t, rows in wave if len(rows)]
-            self._measure(wave)
+            self._measure(batch, wave)
             texts = [t for t, _ in wave]
 
-    def _measure(self, wave: list[tuple[_Text, np.ndarray]]) -> None:
-        """Measure the candidates ``rows`` of each text of ``wave`` against the drawing, in one pass."""
+    def _measure(self, batch: _Batch, wave: list[tuple[_Text, np.ndarray]]) -> None:
+        """Measure the candidates ``rows`` of each text of ``wave`` (all of ``batch``) against the drawing, in one
+        pass."""
         if not wave:
             return
-        m = self._fixed.measure(Boxes.concat([t.boxes.take(rows) for t, rows in wave]))
-        start = 0
-        for t, rows in wave:
-            t.record(rows, m.part(start, start + len(rows)))
-            start += len(rows)
+        rows = np.concatenate([t.offset + r for t, r in wave])
+        batch.record(rows, self._fixed.measure(batch.boxes.take(rows)))
 
     def clearance(self, box: shapely.Geometry, owner: str) -> float:
         """Distance (capped at :data:`ENOUGH`) from ``box`` to every obstacle not owned by ``owner`` (plus its
@@ -288,6 +286,7 @@ class Placer:
         outside = t.outside
         if placed is not None and placed.touching.any():       # on a text placed before: as bad as outside
             outside = np.where(t.framed & ~placed.touching, 0.0, 50.0) + np.where(t.rivalled, AMBIGUOUS, 0.0)
+        crossed = set() if placed is None else set(placed.pending[0].tolist())     # boxes covering a placed one
         best, best_score = None, -math.inf
         i = 0
         while i < t.n:
@@ -298,15 +297,16 @@ class Placer:
                 u = upper[i]
                 if u != u:                                      # not measured: measure what may still win
                     if static[i] > best_score + 1e-12:
-                        self._measure([(t, t.unmeasured(i, best_score, t.n))])
+                        self._measure(t.batch, [(t, t.unmeasured(i, best_score, t.n))])
                         break
                     continue
                 if u <= best_score + 1e-12:
                     continue                                    # it cannot win
                 score = u
-                if i in t.pending or (placed is not None and len(placed.pending_of(i))):
-                    box = req.box(*t.centres[i])
-                    c = min(float(t.known[i]), self._fixed.exact(box, t.pending.get(i, _NONE)),
+                drawn = t.pending(i)
+                if drawn is not None or i in crossed:
+                    box = req.box(*t.centre(i))
+                    c = min(float(t.known[i]), self._fixed.exact(box, _NONE if drawn is None else drawn),
                             math.inf if placed is None else float(placed.known[i]),
                             math.inf if placed is None else self._placed.exact(box, placed.pending_of(i)))
                     score = (c - float(t.cost[i])) - float(outside[i])
@@ -314,7 +314,18 @@ class Placer:
                     best, best_score = i, score
             else:
                 break
-        return (t.centres[best] if best is not None else req.anchor), best_score
+        return (t.centre(best) if best is not None else req.anchor), best_score
+
+    def rivalled(self, req: Request, owner: str, centre: XY) -> bool:
+        """:func:`nearer_rival` of the box of ``req`` at ``centre``, read from the candidates already laid out
+        when ``centre`` is one of them (as :meth:`best` returns it)."""
+        t = self._ready.get((req, owner))
+        if t is not None:
+            c, a, b = t.batch.c, t.offset, t.offset + t.n
+            k = np.flatnonzero((c.cx[a:b] == centre[0]) & (c.cy[a:b] == centre[1]))
+            if len(k):
+                return bool(t.rivalled[k[0]])
+        return nearer_rival(req, [centre])[0]
 
     def commit(self, geom: shapely.Geometry) -> None:
         """Record something placed (a text's box, a leader line): later texts keep clear of it."""
@@ -330,29 +341,3 @@ class Placer:
 def _boxes(req: Request, cx: np.ndarray, cy: np.ndarray, owner: int) -> Boxes:
     """The boxes of ``req`` centred at (cx, cy), turned as the text will be; all of the step ``owner``."""
     return Boxes.turned_by(cx, cy, req.width, req.height, req.rotate, np.full(len(cx), owner, dtype=np.intp))
-
-
-def _centres(req: Request) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The candidate box centres (x, y) of ``req`` in the order they are tried, and their penalties: the
-    explicit candidates, or the directions of :func:`directions` at each of :data:`DISTANCES` beyond the gap
-    (the box's :func:`half_extent` along the direction added), computed as those functions compute them."""
-    if req.candidates:
-        c = np.array(req.candidates, dtype=float).reshape(-1, 2)
-        return c[:, 0], c[:, 1], req.spread * np.arange(len(c))
-    ux, uy = _units(req.prefer)
-    ax, ay = np.abs(ux), np.abs(uy)
-    with np.errstate(divide="ignore"):
-        tx = np.where(ax > 1e-12, (req.width / 2) / ax, math.inf)
-        ty = np.where(ay > 1e-12, (req.height / 2) / ay, math.inf)
-    reach = (req.gap + np.array(req.distances)[:, None]) + np.minimum(tx, ty)
-    cx, cy = req.anchor[0] + ux * reach, req.anchor[1] + uy * reach
-    rank = np.arange(len(ux))
-    penalty = FAR_PENALTY * np.arange(len(req.distances))[:, None] + req.spread * rank
-    return cx.ravel(), cy.ravel(), penalty.ravel()
-
-
-@functools.lru_cache(maxsize=1024)
-def _units(prefer: float) -> tuple[np.ndarray, np.ndarray]:
-    """The unit vectors of :func:`directions` around ``prefer``, nearest first."""
-    a = directions(prefer)
-    return np.array([math.cos(t) for t in a]), np.array([math.sin(t) for t in a])

@@ -1,7 +1,8 @@
 """A self-contained HTML step player: the full drawing inline, first / previous / play / next / last buttons,
-keyboard arrows, a slider, and the current step's number and caption in English and Chinese. It opens at
-step 1, or at step N when the address ends in ``#step=N`` (the address follows the steps shown, so a step can be
-linked to).
+keyboard arrows, a slider and the current step's number. The current step's caption, in English and Chinese,
+is the one on the sheet (as in ``geomcon solve --steps`` frame k): the page prints it once, not again above
+the drawing (the slider reads it to a screen reader). It opens at step 1, or at step N when the address ends
+in ``#step=N`` (the address follows the steps shown, so a step can be linked to).
 
 The replay is pure CSS: every step group and protocol entry carries ``data-step``; the script only sets
 the classes ``future`` (hidden) and ``current`` (highlighted) by comparing it with the current step. No
@@ -28,7 +29,7 @@ from ..scene import Scene
 from .labels import rich_runs
 from .page import PageSpec, print_css, zh_punct
 from .shapes import stacked_runs
-from .style import FONT_FAMILY, HIGHLIGHT
+from .style import FONT_FAMILY
 from .svg import render_sheets
 
 _CSS = """
@@ -37,12 +38,6 @@ body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fa
 #bar button { font: inherit; padding: .15em .7em; min-width: 2.4em; cursor: pointer; }
 #slider { flex: 1 1 16em; max-width: 40em; }
 #count { font-variant-numeric: tabular-nums; min-width: 6em; }
-#caption { min-height: 3em; margin: .2em 0 .6em 0; padding: .4em .7em; background: #fff; border-left: 4px solid %(hl)s; }
-#caption .en { font-weight: bold; }
-#caption .zh { color: #5c6370; }
-#caption sub { font-size: 72%%; line-height: 0; }
-#caption .stack { display: inline-flex; flex-direction: column; vertical-align: 0.4em; font-size: 72%%;
-  line-height: 1; }
 #drawing { background: #fff; border: 1px solid #ddd; overflow: auto; }
 #drawing svg { display: block; width: 100%%; height: auto; }
 #drawing .page + .page { border-top: 1px solid #ddd; }
@@ -75,8 +70,9 @@ _SCRIPT = """
     $("slider").value = k;
     $("count").textContent = "step " + k + " / " + N;
     var c = STEPS[k - 1];
-    $("cap-en").innerHTML = k + ". " + c[0];
-    $("cap-zh").innerHTML = c[1];
+    var plain = document.createElement("span");
+    plain.innerHTML = k + ". " + c[0] + (c[1] ? " " + c[1] : "");
+    $("slider").setAttribute("aria-valuetext", plain.textContent);
   }
   function stop() {
     if (timer) { clearInterval(timer); timer = null; }
@@ -125,7 +121,6 @@ _PAGE = """<!DOCTYPE html>
 <input id="slider" type="range" min="1" max="%(n)d" value="%(n)d" aria-label="step" />
 <span id="count">step %(n)d / %(n)d</span>
 </div>
-<div id="caption"><div class="en" id="cap-en"></div><div class="zh" id="cap-zh"></div></div>
 <div id="drawing">
 %(svg)s
 </div>
@@ -138,7 +133,7 @@ _PAGE = """<!DOCTYPE html>
 
 
 def caption_html(text: str) -> str:
-    """A caption as the player's caption bar prints it: escaped, subscripts as ``<sub>``, and a component's
+    """A caption as the player's slider reads it out (its caption is the sheet's): escaped, subscripts as ``<sub>``, and a component's
     letter stacked over its subscript as the figure stacks it (:func:`~.shapes.stacked_runs`).
 
     >>> caption_html("Join AC2")
@@ -162,8 +157,8 @@ def caption_html(text: str) -> str:
 
 
 def step_captions(scene: Scene, lang: str = "both") -> list[tuple[str, str]]:
-    """The caption of every numbered step, in protocol order (branch rules included), as the player shows it
-    above the drawing: (English, Chinese) for ``both``, (English, "") for ``en``, (Chinese, "") for ``zh``."""
+    """The caption of every numbered step, in protocol order (branch rules included), as the player's slider
+    reads it out: (English, Chinese) for ``both``, (English, "") for ``en``, (Chinese, "") for ``zh``."""
     out = []
     for group in scene.frames():
         en, zh = scene.caption(group[0].key)
@@ -212,7 +207,7 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     body = "\n".join(f'<div class="page" id="page-{i}">{s[s.index("<svg"):]}</div>' for i, s in enumerate(sheets, 1))
     steps = json.dumps([[caption_html(s) for s in c] for c in step_captions(scene, page.lang)], ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
-                                    for f in FONT_FAMILY.split(",")), "hl": HIGHLIGHT}
+                                    for f in FONT_FAMILY.split(","))}
     return _PAGE % {"title": html.escape(title or scene.title), "css": css, "print": print_css(page),
                     "lang": "zh-Hans" if page.lang == "zh" else "en", "n": len(scene.frames()), "svg": body,
                     "script": _SCRIPT % {"steps": steps}}

@@ -246,25 +246,41 @@ def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ())
 
 def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float,
                 warnings: Sequence[str] = (), steps: Sequence[int] | None = None, upto: int | None = None,
-                lang: str = "both") -> Any:
+                lang: str = "both", last: int | None = None) -> Any:
     """The result lines (answers, checks) under the protocol, then the warnings (a printed answer that is
     doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading.
 
-    ``steps`` (one per result line) is the frame that produces each result: a line carries it as
-    ``data-step`` (the player shows it from that step on) and frame ``upto`` leaves out the results of later
-    steps, keeping their room so that every frame has the same page."""
+    ``steps`` (one per result line) is the frame that produces each result, ``last`` the frame of the warnings
+    (the last one: they concern the whole answer): a line carries its frame as ``data-step`` (the player shows
+    it from that step on), and so does each heading (its block's first frame). The results are set in the
+    order of their frames, so the lines shown at any frame are the first ones, packed under their heading; frame
+    ``upto`` leaves out the lines of later steps, keeping their room so that every frame has the same page.
+
+    Examples
+    --------
+    >>> import svgwrite, re
+    >>> g = render_info(svgwrite.Drawing(), ["a = 1", "b = 2"], 0.0, 0.0, 90.0, ["beware"], steps=[5, 2], last=7)
+    >>> [(m[1], m[2]) for m in re.findall(r'class="(info|warning)[^"]*" data-step="(\\d+)"[^>]*>(?:<tspan>)?([^<]*)', g.tostring())]
+    [('2', 'Results  结果'), ('2', 'b = 2'), ('5', 'a = 1'), ('7', 'Warnings  警告'), ('7', 'beware')]
+    """
     g = dwg.g(id="info")
-    for block, heading, colour, cls in ((info, text("Results", "结果", lang), INK, "info"),
-                                         (warnings, text("Warnings", "警告", lang), HIGHLIGHT, "warning")):
+    rows = list(zip(info, steps)) if steps is not None else [(s, None) for s in info]
+    rows.sort(key=lambda r: r[1] or 0)
+    blocks = ((rows, text("Results", "结果", lang), INK, "info"),
+              ([(s, last) for s in warnings], text("Warnings", "警告", lang), HIGHLIGHT, "warning"))
+    for block, heading, colour, cls in blocks:
         if not block:
             continue
         y += 4.0 + INFO_SIZE
         head = _line(dwg, heading, x, y, HEAD_SIZE, colour, f"{cls}-head")
         head.attribs["font-weight"] = "bold"
-        g.add(head)
+        first = min((step for _, step in block if step is not None), default=None)
+        if first is not None and len([step for _, step in block if step is not None]) == len(block):
+            head.attribs["data-step"] = str(first)
+        if first is None or upto is None or first <= upto:
+            g.add(head)
         y += INFO_SIZE * 1.6
-        for i, s in enumerate(block):
-            step = steps[i] if steps is not None and block is info else None
+        for s, step in block:
             for ln in wrap(s, width, INFO_SIZE):
                 if step is None or upto is None or step <= upto:
                     el = _line(dwg, ln, x, y, INFO_SIZE, colour, cls)

@@ -70,14 +70,14 @@ NAMES: dict[str, AnswerName] = {
     "v": _n("v", "follower velocity", "从动件速度"),
     "rho_min_actual": _n("ρa,min", "actual profile, least radius of curvature", "实际廓线最小曲率半径"),
     "undercut": _b("undercut (motion distorted)", "运动失真（根切）"),
-    "pitch_x": _n("x", "pitch points", "理论廓线点"),
-    "pitch_y": _n("y", "pitch points", "理论廓线点"),
-    "profile_x": _n("x", "profile points", "实际廓线点"),
-    "profile_y": _n("y", "profile points", "实际廓线点"),
+    "pitch_x": _n("xp", "pitch points", "理论廓线点"),
+    "pitch_y": _n("yp", "pitch points", "理论廓线点"),
+    "profile_x": _n("xa", "profile points", "实际廓线点"),
+    "profile_y": _n("ya", "profile points", "实际廓线点"),
     "convex": _b("profile convex", "廓线外凸"),
     "face_min": _n("lmin", "contact along the face, nearest", "接触点最近位置"),
     "face_max": _n("lmax", "contact along the face, farthest", "接触点最远位置"),
-    "face_length": _n("l", "face length swept", "平底工作长度"),
+    "face_length": _n("lface", "face length swept", "平底工作长度"),
     "face_contact": _n("l", "contact along the face", "接触点位置"),
     "face_width_left": _n("lL", "face width left of the axis", "平底左侧宽度"),
     "face_width_right": _n("lR", "face width right of the axis", "平底右侧宽度"),
@@ -102,16 +102,16 @@ NAMES: dict[str, AnswerName] = {
     "AC1": _n("AC1", "A to the folded extreme position", "A 至重叠共线位置"),
     "AC2": _n("AC2", "A to the extended extreme position", "A 至拉直共线位置"),
     "H": _n("H", "stroke C1C2", "行程"),
-    "gamma_min_fast": _n("γmin", "fast stroke, smallest transmission angle", "空回行程最小传动角"),
-    "gamma_min_slow": _n("γmin", "slow stroke, smallest transmission angle", "工作行程最小传动角"),
+    "gamma_min_fast": _n("γq,min", "fast stroke, smallest transmission angle", "空回行程最小传动角"),
+    "gamma_min_slow": _n("γw,min", "slow stroke, smallest transmission angle", "工作行程最小传动角"),
     "C1": _n("C1", "hinge position 1", "铰链位置 1"),
     "beta": _n("β", "angle of DC from DE", "DC 与 DE 的夹角"),
     "grashof": _b("Grashof condition met", "满足杆长条件"),
     "crank": _b("AB is a crank", "AB 为曲柄"),
     "branch_ok": _b("one assembly branch", "在同一装配分支上"),
     "order_ok": _b("positions reached in order", "按顺序到达各位置"),
-    "sens_C1": _n("ΔC1", "per 0.1° of error", "每 0.1° 误差的偏移"),
-    "sens_C1_mm": _n("ΔC1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "sens_C1": _n("ΔC1/0.1°", "per 0.1° of error", "每 0.1° 误差的偏移"),
+    "sens_C1_mm": _n("ΔC1/0.1 mm", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "A": _n("A", "fixed pivot", "固定铰链"),
     # linkage analysis (issue 14)
     "type": _n("type", "type of the chain", "机构类型"),
@@ -120,7 +120,7 @@ NAMES: dict[str, AnswerName] = {
     "C_full": _b("C turns fully", "C 为周转副"),
     "D_full": _b("D turns fully", "D 为周转副"),
     "input_crank": _b("the link at the first pivot is a crank", "第一固定铰链处的连架杆为曲柄"),
-    "output_crank": _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
+    "output_crank": _b("CD turns fully", "CD 能整周转动"),
     "dead_points": _b("dead points in the motion", "存在死点"),
     "gamma": _n("γ", "transmission angle at φ", "φ 位置的传动角"),
     "crank_rocker": _n("crank-rocker", "lengths for a crank-rocker", "曲柄摇杆机构的杆长范围"),
@@ -135,21 +135,20 @@ NAMES: dict[str, AnswerName] = {
     "B1B2": _n("B1B2", "where B's path crosses ee", "B 点轨迹与导路的交点距离"),
     "D": _n("D", "fixed pivot", "固定铰链"),
     "grashof_margin": _n("(p + q) − (s + l)", "Grashof margin", "杆长条件余量"),
-    "output_crank": _b("CD turns fully", "CD 能整周转动"),
-    "gamma_min_work": _n("γmin", "working range, smallest transmission angle", "工作范围最小传动角"),
-    "phi": _n("φ1,2,3", "directions of AB", "AB 的方向角"),
+    "gamma_min_work": _n("γw,min", "working range, smallest transmission angle", "工作范围最小传动角"),
+    "phi": _n("φ", "directions of AB", "AB 的方向角"),
     "sens_A": _n("ΔA", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "sens_D": _n("ΔD", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "sens_C": _n("ΔC1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "F1": _n("F1", "hinge position 1", "铰链位置 1"),
     "DF": _n("DF", "rocker arm", "摇杆"),
     "EF": _n("EF", "connecting rod", "连杆"),
-    "sens_F1": _n("ΔF1", "per 0.1° of error", "每 0.1° 误差的偏移"),
-    "sens_F1_mm": _n("ΔF1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "sens_F1": _n("ΔF1/0.1°", "per 0.1° of error", "每 0.1° 误差的偏移"),
+    "sens_F1_mm": _n("ΔF1/0.1 mm", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "E1": _n("E1", "pin position 1", "销位置 1"),
     "s_E1": _n("sE1", "pin along the guide", "销沿导路的位置"),
-    "sens_E1": _n("ΔE1", "per 0.1° of error", "每 0.1° 误差的偏移"),
-    "sens_E1_mm": _n("ΔE1", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
+    "sens_E1": _n("ΔE1/0.1°", "per 0.1° of error", "每 0.1° 误差的偏移"),
+    "sens_E1_mm": _n("ΔE1/0.1 mm", "per 0.1 mm of error", "每 0.1 mm 误差的偏移"),
     "deviation": _n("f", "largest distance of D from the guide", "D 偏离导路的最大距离"),
     # kinematics (velocity and acceleration polygons)
     "omega2": _n("ω2", "angular velocity of BC", "连杆角速度"),
@@ -184,16 +183,22 @@ NAMES: dict[str, AnswerName] = {
     "epsilon2_max": _n("ε2,max", "largest angular acceleration of the arm", "摆杆最大角加速度"),
     "r0_alpha": _n("r0,α", "base circle of the pressure-angle limit alone", "仅按许用压力角的基圆半径"),
     "r0_rho": _n("r0,ρ", "base circle of the curvature limit", "按曲率半径限制的基圆半径"),
-    "rho_min_profile": _n("ρmin", "smallest radius of curvature of the profile", "实际廓线最小曲率半径"),
+    "rho_min_profile": _n("ρa,min", "smallest radius of curvature of the profile", "实际廓线最小曲率半径"),
 }
 """Every answer's printed name. An answer missing here prints its name with ``_`` as a space."""
 
 RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
+    # the synthesis recipes' output_crank is CD's; the analysis's is the link at the frame's second pivot
+    # (001-03c, frame CD, printed "CD turns fully" for its frame)
+    # the sign of a designed offset says its side (200-11 printed e = -5.657 mm with no side): the words say how
+    ("cam.base_radius", "e"): _n("e", "offset (> 0: the follower's axis right of O)", "偏距（正值：导路在 O 右侧）"),
+    ("four_bar.analysis", "output_crank"): _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
     ("cam.translating", "v"): _n("v", "follower velocity at the cam angles asked", "从动件速度"),
     ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
     ("cam.oscillating", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
     ("cam.oscillating", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
     ("cam.eccentric", "a"): _n("a", "follower acceleration", "从动件加速度"),
+    ("cam.eccentric", "alpha_max"): _n("αmax,turn", "largest pressure angle of the turn", "全周最大压力角"),
     ("cam.eccentric", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
     ("cam.eccentric", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
 }
@@ -224,34 +229,81 @@ def name_of(answer: str, recipe: str = "") -> AnswerName:
     return RECIPE_NAMES.get((recipe, answer)) or NAMES.get(answer) or AnswerName(answer.replace("_", " "), "", "")
 
 
+def fixed(x: float) -> str:
+    """A number with 3 decimals; one that rounds to zero prints ``0.000``, never ``-0.000``.
+
+    >>> fixed(-0.0000001), fixed(-2.5), fixed(float("inf"))
+    ('0.000', '-2.500', '∞')
+    """
+    if x == float("inf"):
+        return "∞"
+    t = f"{x:.3f}"
+    return t[1:] if t == "-0.000" else t
+
+
 def _number(v: float, unit: str) -> str:
-    return f"{v:.3f}{unit_text(unit)}"
+    return f"{fixed(v)}{unit_text(unit)}"
 
 
-def shown_value(v: Any, unit: str, lang: str = "en") -> str:
-    """A value as printed: 3 decimals and its unit, a list in brackets, a yes/no answer as a word.
+def percent(rel: float) -> str:
+    """A relative deviation in per cent, signed, 2 decimals; one that rounds to zero prints ``0.00 %``.
+
+    >>> percent(-1e-6), percent(0.0123)
+    ('0.00 %', '+1.23 %')
+    """
+    t = f"{100 * rel:+.2f}"
+    return ("0.00" if t in ("+0.00", "-0.00") else t) + " %"
+
+
+def shown_printed(v: Any, unit: str, lang: str = "en") -> str:
+    """A textbook's printed value as the remark shows it: a number as printed (``%g``), a yes/no answer (the
+    problem file writes 0 or 1) as the word.
+
+    >>> shown_printed(12.5, "deg"), shown_printed(0, "bool"), shown_printed(1, "bool", "zh")
+    ('12.5', 'no', '是')
+    """
+    if unit == "bool" or isinstance(v, bool):
+        return shown_value(bool(v), "bool", lang)
+    return f"{v:g}"
+
+
+POINTS = frozenset({"A", "D", "C1", "F1", "E1", "P13", "P24"})
+"""Answers that are a point [x, y]: printed as coordinates ``(x, y)``."""
+
+
+def _intervals(v: Sequence[Sequence[float]], unit: str, lang: str) -> str:
+    """A union of intervals as mathematics writes it (an unbounded end open: ``[610.000, ∞)``); none: ``none``.
+
+    >>> _intervals([(0.0, 130.0), (190.0, float("inf"))], "interval[]", "en")
+    '[0.000, 130.000] ∪ [190.000, ∞) mm'
+    >>> _intervals([], "interval[]", "en"), _intervals([], "interval[]", "zh")
+    ('none', '无')
+    """
+    if not v:
+        return "无" if lang == "zh" else "none"
+    return " ∪ ".join(f"[{fixed(lo)}, {fixed(hi)}" + (")" if hi == float("inf") else "]") for lo, hi in v) \
+        + unit_text(unit)
+
+
+def shown_value(v: Any, unit: str, lang: str = "en", answer: str = "") -> str:
+    """A value as printed: 3 decimals and its unit, a point as ``(x, y)``, a list as its numbers, a union of
+    intervals as mathematics writes it, a yes/no answer as a word.
 
     >>> shown_value((1.0, 2.5), "mm[]"), shown_value(True, "bool", "zh"), shown_value(1.0, "")
-    ('[1.000, 2.500] mm', '是', '1.000')
+    ('1.000, 2.500 mm', '是', '1.000')
+    >>> shown_value((64.375, 60.0), "mm[]", answer="A")
+    '(64.375, 60.000) mm'
     """
     if isinstance(v, bool):
         return ("是" if v else "否") if lang == "zh" else ("yes" if v else "no")
     if isinstance(v, str):                                  # a word (a choice): the chain's type …
         return WORDS.get(v, (v, v))[1 if lang == "zh" else 0]
+    if unit == "interval[]":
+        return _intervals(v, unit, lang)
     if isinstance(v, (tuple, list)):
-        return "[" + ", ".join(_element(x) for x in v) + "]" + unit_text(unit)
+        body = ", ".join(fixed(float(x)) for x in v)
+        return (f"({body})" if answer in POINTS and len(v) == 2 else body) + unit_text(unit)
     return _number(float(v), unit)
-
-
-def _element(x: Any) -> str:
-    """A list's element: a number (∞ for an unbounded end) or an interval ``[low, high]``.
-
-    >>> _element((190.0, float("inf"))), _element(2.5)
-    ('[190.000, ∞]', '2.500')
-    """
-    if isinstance(x, (tuple, list)):
-        return "[" + ", ".join(_element(y) for y in x) + "]"
-    return "∞" if x == float("inf") else f"{x:.3f}"
 
 
 WORDS = {"crank-rocker": ("crank-rocker", "曲柄摇杆机构"), "double-crank": ("double-crank", "双曲柄机构"),
@@ -266,35 +318,61 @@ def _remarks(twin: bool | None, printed: Sequence[str], lang: str) -> str:
         parts.append(("与解析解一致" if twin else "与解析解不符") if lang == "zh" else
                      ("= analytic" if twin else "≠ analytic"))
     if printed:
-        parts.append(("教材 " if lang == "zh" else "textbook ") + ("，" if lang == "zh" else ", ").join(printed))
+        parts.append(("教材 " if lang == "zh" else "textbook ") + ("；" if lang == "zh" else "; ").join(printed))
     if not parts:
         return ""
     return f"（{'；'.join(parts)}）" if lang == "zh" else f" ({'; '.join(parts)})"
 
 
+def _head(nm: AnswerName, value: Any, unit: str, lang: str, answer: str, at: Sequence[float]) -> str:
+    """``symbol = value`` of a number; a list at the cam angles ``at`` as the function of δ it is
+    (``s(0°, 30°) = 0.000, 2.000 mm``), a list of one symbol's positions indexed (``φ1 = …°, φ2 = …°``)."""
+    if isinstance(value, (tuple, list)) and unit.endswith("[]") and unit != "interval[]" and answer not in POINTS:
+        u = unit_text(unit)
+        each = u if u == "°" else ""
+        values = [fixed(float(x)) + each for x in value]
+        if at and len(at) == len(value):
+            return f"{nm.symbol}({', '.join(f'{a:g}°' for a in at)}) = {', '.join(values)}{'' if each else u}"
+        if len(nm.symbol) == 1:
+            return ", ".join(f"{nm.symbol}{i} = {x}{'' if each else u}" for i, x in enumerate(values, 1))
+    return f"{nm.symbol} = {shown_value(value, unit, lang, answer)}"
+
+
 def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None, printed: Sequence[str] = (),
-                lang: str = "en", recipe: str = "") -> str:
+                lang: str = "en", recipe: str = "", at: Sequence[float] = ()) -> str:
     """One result line of a drawing: the answer by its symbol (a number) or as a statement (yes/no), its value,
     what agreed with what (``twin``: the construction against the analytic twin) and the textbook's printed
     values with their deviation (``printed``, already worded).
 
-    ``lang`` is ``en``, ``zh`` or ``both`` (the English line, then the Chinese words).
+    ``lang`` is ``en``, ``zh`` or ``both`` (the English line, then the Chinese words); ``at``: the cam angles
+    (deg) a list answer is given at.
+
+    >>> result_line("s", (0.0, 2.0), "mm[]", at=(0.0, 15.0))
+    's(0°, 15°) = 0.000, 2.000 mm'
+    >>> result_line("phi", (-137.015, 163.5), "deg[]")
+    'φ1 = -137.015°, φ2 = 163.500°'
+    >>> result_line("double_crank", [], "interval[]", lang="both")
+    'double-crank: none  双曲柄机构的杆长范围：无'
     """
     nm = name_of(answer, recipe)
     is_bool = isinstance(value, bool) or unit == "bool" or (not nm.symbol and unit == "")
     if is_bool:
         value = bool(value)
+    empty = unit == "interval[]" and not value
     if lang == "both":
-        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en", recipe=recipe)
+        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en", recipe=recipe, at=at)
         if not nm.zh:
             return en
-        return f"{en}  {nm.zh}：{shown_value(value, unit, 'zh')}" if is_bool else f"{en}  {nm.zh}"
-    shown = shown_value(value, unit, lang)
+        return f"{en}  {nm.zh}：{shown_value(value, unit, 'zh', answer)}" if is_bool or empty else f"{en}  {nm.zh}"
+    shown = shown_value(value, unit, lang, answer)
     if lang == "zh":
-        head = f"{nm.zh or nm.en}：{shown}" if is_bool else f"{nm.zh + ' ' if nm.zh else ''}{nm.symbol} = {shown}"
+        head = f"{nm.zh or nm.en}：{shown}" if is_bool or empty else \
+            f"{nm.zh + ' ' if nm.zh else ''}{_head(nm, value, unit, lang, answer, at)}"
     else:
-        head = f"{nm.en or nm.symbol}: {shown}" if is_bool else f"{nm.symbol} = {shown}"
+        head = f"{nm.en or nm.symbol}: {shown}" if is_bool else (
+            f"{nm.symbol}: {shown}" if empty else _head(nm, value, unit, lang, answer, at))
     return head + _remarks(twin, printed, lang)
 
 
-__all__ = ["AnswerName", "NAMES", "RECIPE_NAMES", "name_of", "result_line", "shown_value", "unit_text"]
+__all__ = ["AnswerName", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "result_line", "shown_printed",
+           "shown_value", "unit_text"]

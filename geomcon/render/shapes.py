@@ -274,6 +274,33 @@ def text_polygon(t: Text) -> shapely.Geometry:
     return box
 
 
+def _snapped(angle: float) -> tuple[float, float]:
+    """Cosine and sine of ``angle`` with those below 5e-16 put to 0 (as GEOS's ``Angle::sinCosSnap``)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return (0.0 if abs(c) < 5e-16 else c), (0.0 if abs(s) < 5e-16 else s)
+
+
+_ROUND = np.array([_snapped(-i * (2.0 * math.pi / 32)) for i in (*range(32), 0)])
+"""The unit circle as GEOS buffers a point with 8 segments a quadrant: 32 vertices from angle 0 clockwise (on
+paper, y down: anticlockwise as seen), the ring closed."""
+
+
+def disc_polygon(cx: float, cy: float, r: float) -> shapely.Geometry:
+    """``shapely.Point(cx, cy).buffer(r, 8)`` (a filled disc as an area), its vertices computed as GEOS computes
+    them (``OffsetSegmentGenerator::createCircle``: ``c + r · (cos, sin)`` of the angles ``-i · 2π/32``, each
+    snapped): the same coordinates in the same order, without a buffer operation.
+
+    >>> p = disc_polygon(3.7, -1.2, 0.55)
+    >>> shapely.get_coordinates(p).tolist() == shapely.get_coordinates(shapely.Point(3.7, -1.2).buffer(0.55, 8)).tolist()
+    True
+    """
+    if not r > 0.0:
+        return shapely.Point(cx, cy).buffer(r, 8)
+    ring = _ROUND * r
+    ring += (cx, cy)
+    return shapely.polygons(ring)
+
+
 def obstacle(shape: Shape) -> shapely.Geometry:
     """The shapely geometry a label must keep clear of: strokes as lines, markers and texts as areas."""
     if isinstance(shape, Poly):
@@ -286,6 +313,6 @@ def obstacle(shape: Shape) -> shapely.Geometry:
     if isinstance(shape, Disc):
         if shape.fill == "none":
             return _line(_arc_points(ArcP(shape.c, shape.r, 0.0, 2 * math.pi, Pen("", 0))))
-        return shapely.Point(shape.c).buffer(shape.r + (shape.pen.width / 2 if shape.pen else 0.0), 8)
+        return disc_polygon(*shape.c, shape.r + (shape.pen.width / 2 if shape.pen else 0.0))
     return text_polygon(shape)
 

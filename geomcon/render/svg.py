@@ -219,10 +219,11 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     protocol : bool
         Add the sheets of the numbered construction protocol.
     warnings : sequence of str
-        Warnings printed under the results, under their own heading (every frame shows them: they concern
-        the problem, not a step).
+        Warnings printed under the results, under their own heading, from the last frame on (they concern the
+        whole answer, not a step).
     info_steps : sequence of int or None
-        The frame producing each result line: frame k shows the results of frames 1…k only.
+        The frame producing each result line: frame k shows the results of frames 1…k only, packed (the
+        lines are set in the order of their frames).
     page : PageSpec
         Paper, orientation and language.
     problem, recipe : str
@@ -234,6 +235,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         The SVG documents, one per sheet (UTF-8 text; width and height in mm of paper, 1 user unit = 1 mm).
     """
     sheet, lang = page.sheet, page.lang
+    last = len(scene.frames())             # the warnings show with the last frame
     sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
     apart = None if viewbox is not None else diagram_apart(scene, page, info, warnings, scale)
     if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
@@ -257,7 +259,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     dwg.add(_figure_group(dwg, fig))
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
     if sl.info_here and (info or warnings):
-        dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang))
+        dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
     out = [svg_string(dwg)]
     if apart is not None:
@@ -269,7 +271,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         top = fy0 + INSET
         k = number - 2 - extra
         if moved and k == 0:
-            d.add(render_info(d, info, fx0 + INSET, top - 4.0, sl.info_w, warnings, info_steps, upto, lang))
+            d.add(render_info(d, info, fx0 + INSET, top - 4.0, sl.info_w, warnings, info_steps, upto, lang, last))
             top += skip
         if k < len(pages):
             d.add(render_protocol(d, pages[k], fx0 + INSET, top, values, shown,
@@ -349,7 +351,8 @@ def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
     for name, groups in fig.layers():
         layer = Element("g", id=f"layer-{name}")
         for sd in groups:
-            g = Element("g", id=step_id(sd.key), class_=sd.classes)
+            g = Element("g", id=f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key),
+                        class_=sd.classes)
             g.attribs["data-step"] = str(sd.number)
             for shape in sd.shapes:
                 g.add(to_svg(shape))

@@ -22,7 +22,7 @@ from __future__ import annotations
 import re
 from typing import Callable, Mapping, Sequence
 
-from .zh import zh_punct
+from .zh import zh_brackets, zh_punct
 
 PART = {"rise": "推程", "return": "回程"}
 """A cam's part of the motion."""
@@ -162,18 +162,20 @@ def warning_zh(warning: str) -> str | None:
 _GIVEN_SYMBOLS = {"gamma_allow": ("γ_allow", "[γ]"), "alpha_allow": ("α_allow", "[α]")}
 """A given a warning names by its problem-file key, as a figure prints it (English: γ with the subscript allow;
 Chinese: the textbook's [γ])."""
+_RETURN_ALPHA = (("α_max of the return", "α′_max of the return"), ("回程最大压力角 αmax", "回程最大压力角 α′max"))
+"""The return's largest pressure angle as the Results block prints it: α′max (a primed α, subscript max)."""
 _AUDITED = re.compile(r"(?<=^published )(\w+)(\[\d+\])?|(?<=^教材答案 )(\w+)(\[\d+\])?")
 
 
 def printed_words(line: str, zh: bool = False) -> str:
     """A warning line with the identifiers it quotes written as the figure's Results block prints them: an audited
-    answer by its symbol (``theta`` → ``θ``; ``profile_x[0]`` → ``x[0] (profile points)``) and a given allowance
+    answer by its symbol (``theta`` → ``θ``; ``profile_x[0]`` → ``xa[0] (profile points)``, the return's α_max as α′_max) and a given allowance
     by its symbol (``alpha_allow`` → ``α_allow``, drawn as α with a subscript; ``[α]`` in Chinese).
 
     >>> printed_words("published profile_x[0] = -26.8 is doubtful")
-    'published x[0] (profile points) = -26.8 is doubtful'
+    'published xa[0] (profile points) = -26.8 is doubtful'
     >>> printed_words("回程最大压力角 αmax = 36.71° 超过许用压力角 alpha_allow = 30°", zh=True)
-    '回程最大压力角 αmax = 36.71° 超过许用压力角 [α] = 30°'
+    '回程最大压力角 α′max = 36.71° 超过许用压力角 [α] = 30°'
     """
     from .results import name_of
 
@@ -186,6 +188,8 @@ def printed_words(line: str, zh: bool = False) -> str:
         return name.symbol + (index or "") + (f"（{words}）" if zh else f" ({words})") * bool(index and words)
 
     line = _AUDITED.sub(answer, line)
+    for raw, primed in _RETURN_ALPHA:                        # the return's angle is α′, as the Results print it
+        line = line.replace(raw, primed)
     for key, (en, zh_form) in _GIVEN_SYMBOLS.items():
         line = line.replace(key, zh_form if zh else en)
     return line
@@ -198,7 +202,7 @@ def warning_lines(warnings: Sequence[str], lang: str) -> list[str]:
     out = []
     for w in warnings:
         zh = warning_zh(w)
-        en = printed_words(w)
+        en = zh_brackets(printed_words(w))                   # a Chinese hint in an English warning: （…）
         if lang == "en" or zh is None:
             out.append(en)
         elif lang == "zh":

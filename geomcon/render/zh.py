@@ -8,6 +8,8 @@ Examples
 """
 from __future__ import annotations
 
+import re
+
 
 def _cjk(ch: str) -> bool:
     o = ord(ch)
@@ -53,4 +55,24 @@ def zh_punct(s: str) -> str:
     return text
 
 
-__all__ = ["zh_punct"]
+def zh_brackets(s: str) -> str:
+    """An English text with Chinese glosses: ASCII brackets around Chinese text become full-width （）, nothing
+    else changes (a formula's brackets, English punctuation) but the spaces around them (a full-width bracket
+    carries its own).
+
+    >>> zh_brackets("impacts: soft (柔性冲击) at 0°, 120° (f(x) = 1)")
+    'impacts: soft（柔性冲击）at 0°, 120° (f(x) = 1)'
+    """
+    out = list(s)
+    stack: list[int] = []
+    for i, ch in enumerate(s):
+        if ch == "(":
+            stack.append(i)
+        elif ch == ")" and stack:
+            j = stack.pop()
+            if any(_cjk(c) for c in s[j + 1:i]):
+                out[j], out[i] = "（", "）"
+    return re.sub(r" ?（", "（", re.sub(r"） ?", "）", "".join(out)))
+
+
+__all__ = ["zh_brackets", "zh_punct"]

@@ -374,9 +374,10 @@ class Scene:
         self._frames = (rec, len(rec), tuple(tuple(g) for g in out))
         return out
 
-    def available_at(self, keys: Iterable[str]) -> int:
+    def available_at(self, keys: Iterable[str], default: int = 1) -> int:
         """The first frame (1-based) by which every step of ``keys`` is known: a visible step's own frame, an
-        invisible one's the last frame among what it depends on (1 when it depends on nothing drawn)."""
+        invisible one's the last frame among what it depends on (``default`` when nothing drawn produces it:
+        a result the drawing never constructs, e.g. one computed from the givens alone)."""
         frame = {s.key: i for i, group in enumerate(self.frames(), 1) for s in group}
         rec = self._rec
         memo: dict[str, int] = {}
@@ -384,10 +385,10 @@ class Scene:
         def at(k: str) -> int:
             got = memo.get(k)
             if got is None:
-                got = frame.get(k) or max((at(d) for d in rec[k][7]), default=1)
+                got = frame.get(k) or max((at(d) for d in rec[k][7]), default=0)
                 memo[k] = got
             return got
-        return max((at(k) for k in keys), default=1)
+        return max((at(k) for k in keys), default=0) or default
 
     def number(self, key: str) -> int:
         """1-based protocol number of a visible step (the number of the frame it is drawn in)."""

@@ -29,13 +29,16 @@ from __future__ import annotations
 import functools
 import hashlib
 import html
+import math
 import re
 from dataclasses import dataclass, replace
 from typing import Any, Sequence
 
 import svgwrite
 
-from ..render.labels import label_runs, text_width
+from ..geometry.primitives import Point
+from ..render.labels import label_runs, rich_runs, text_width
+from ..render.view import TAU, clip_arc
 from ..render.serial import svg_string
 from ..errors import ProblemError
 from ..solve import Solution
@@ -43,7 +46,7 @@ from .accept import Accepted
 from .assign import Assignment
 from .givens_figure import DOT, LABEL_SIZE, Item, Placed, given_items, has_diagram, place_labels
 from .key import statement, variant_code
-from .pages import ANSWER_FONT, ANSWER_H, BOX_W, HEADER_H, LINE, Layout, U, layout, u
+from .pages import ANSWER_FONT, ANSWER_H, BOX_W, HEADER_H, LINE, Layout, Rect, U, layout, u
 from .readability import extent
 from .roster import Student
 from .solving import solve_given
@@ -172,15 +175,25 @@ def page_drawing(p: Page, units: int) -> svgwrite.Drawing:
 
 
 def svg_text(dwg: svgwrite.Drawing, s: str, x: float, y: float, size: float, *, anchor: str = "start",
-          bold: bool = False) -> Any:
+             bold: bool = False, rich: bool = False) -> Any:
+    """A text: a short label as a point label (C1: C with subscript 1), a statement or an answer box's label
+    (``rich``) with its symbols typeset as the Results block types them (γmin, DC1, r0: :func:`rich_runs`),
+    anything else as it is. A subscript is lowered and the text after it raised back."""
     attrs: dict[str, Any] = {"font_size": u(size), "fill": INK}
     if anchor != "start":
         attrs["text_anchor"] = anchor
     if bold:
         attrs["font_weight"] = "bold"
     el = dwg.text("", insert=(u(x), u(y)), **attrs)
-    for run, sub in label_runs(s) if len(s) <= 8 else ((s, False),):
-        el.add(dwg.tspan(run, font_size=u(size * 0.72), dy=[u(size * 0.25)]) if sub else dwg.tspan(run))
+    runs = rich_runs(s) if rich else label_runs(s) if len(s) <= 8 else ((s, False),)
+    down = False
+    for run, sub in runs:
+        if sub:
+            el.add(dwg.tspan(run, font_size=u(size * 0.72), dy=[u(size * 0.25)]) if not down else
+                   dwg.tspan(run, font_size=u(size * 0.72)))
+        else:
+            el.add(dwg.tspan(run, dy=[u(-size * 0.25)]) if down else dwg.tspan(run))
+        down = sub
     el.attribs["xml:space"] = "preserve"
     return el
 
@@ -240,7 +253,7 @@ def header(dwg: svgwrite.Drawing, p: Page, key: bool = False) -> Any:
     size, y = p.lay.size, p.lay.text_top + p.lay.size * 1.2
     for lines in p.lay.lines:
         for line in lines:
-            g.add(svg_text(dwg, line, x0 + 3, y, size))
+            g.add(svg_text(dwg, line, x0 + 3, y, size, rich=True))
             y += size * LINE
         y += 2.0
     return g
@@ -253,7 +266,7 @@ def answer_boxes(dwg: svgwrite.Drawing, p: Page, values: Sequence[str] | None = 
     for i, (lab, (row, dx)) in enumerate(zip(slot_labels(p.ex, p.variant, p.lang), p.lay.slots)):
         name, _, unit = lab.partition("\t")
         x, y = x0 + dx, p.lay.answers_top + row * ANSWER_H
-        g.add(svg_text(dwg, name, x, y + 6.5, ANSWER_FONT))
+        g.add(svg_text(dwg, name, x, y + 6.5, ANSWER_FONT, rich=True))
         bx = x + text_width(name, ANSWER_FONT) + 1.5
         g.add(dwg.rect((u(bx), u(y + 1)), (u(BOX_W), u(8.5)), fill="none", stroke=INK, stroke_width=u(0.35)))
         g.add(svg_text(dwg, unit, bx + BOX_W + 1.5, y + 6.5, ANSWER_FONT))
@@ -266,19 +279,63 @@ def _path(points: Sequence[tuple[float, float]]) -> str:
     return "M" + "L".join(f"{u(x)} {u(y)}" for x, y in points)
 
 
+def circle_room(p: Page) -> Rect:
+    """Where a given circle may run (paper mm): the drawing frame below the statement and the answer boxes
+    (the figure area's top), left of (or above) a cam's s–δ strip beside the figure. A circle leaving it through
+    the frame ends on the frame line: it runs on beyond the sheet."""
+    fx0, _, fx1, fy1 = p.lay.frame
+    x0, y0, x1, y1 = fx0, p.lay.fig[1], fx1, fy1
+    d = p.lay.diagram
+    if d is not None and p.part != "sd":
+        if d[0] >= p.lay.fig[2] - 1e-9:
+            x1 = min(x1, d[0])
+        elif d[1] >= p.lay.fig[3] - 1e-9:
+            y1 = min(y1, d[1])
+    return (x0, y0, x1, y1)
+
+
+def circle_path(c: tuple[float, float], r: float, room: Rect) -> str:
+    """SVG path data (in the page's user units, :func:`~.pages.u`) of the circle (paper mm, centre ``c``, radius
+    ``r``) drawn whole when it lies in ``room``, else as the arcs of it inside ``room`` (each one explicit, ending
+    where the circle leaves the room).
+
+    >>> circle_path((0.0, 0.0), 1.0, (-2.0, -2.0, 2.0, 2.0))
+    'M100 0A100 100 0 1 1 -100 0A100 100 0 1 1 100 0'
+    >>> circle_path((0.0, 0.0), 1.0, (0.0, -2.0, 2.0, 2.0))
+    'M0 -100A100 100 0 0 1 0 100'
+    """
+    parts = clip_arc(Point(*c), r, room)
+    out = []
+    for start, sweep in parts:
+        if sweep >= TAU - 1e-12:
+            return (f"M{u(c[0] + r)} {u(c[1])}A{u(r)} {u(r)} 0 1 1 {u(c[0] - r)} {u(c[1])}"
+                    f"A{u(r)} {u(r)} 0 1 1 {u(c[0] + r)} {u(c[1])}")
+        a, b = start, start + sweep          # paper angles (y down): increasing = clockwise as seen
+        out.append(f"M{u(c[0] + r * math.cos(a))} {u(c[1] + r * math.sin(a))}A{u(r)} {u(r)} 0 "
+                   f"{int(sweep > math.pi)} 1 {u(c[0] + r * math.cos(b))} {u(c[1] + r * math.sin(b))}")
+    return "".join(out)
+
+
 def givens_group(dwg: svgwrite.Drawing, p: Page) -> Any:
-    """The givens at true scale, with their labels."""
+    """The givens at true scale, with their labels: segments and curves clipped to the figure area (a clip path
+    of the page's own id, so the pages inlined in one HTML document each clip to their own area), given circles
+    whole or as explicit arcs inside the frame (:func:`circle_path`)."""
     x0, y0, x1, y1 = p.lay.fig
-    clip = dwg.defs.add(dwg.clipPath(id="figure-area"))
+    area = f"figure-area-{p.name.replace('/', '-')}"
+    clip = dwg.defs.add(dwg.clipPath(id=area))
     clip.add(dwg.rect((u(x0), u(y0)), (u(x1 - x0), u(y1 - y0))))
-    g = dwg.g(id="givens", fill="none", stroke=INK, clip_path="url(#figure-area)")
+    g = dwg.g(id="givens", fill="none", stroke=INK)
+    lines = dwg.g(clip_path=f"url(#{area})")
+    g.add(lines)
     tp = p.lay.to_paper
+    room = circle_room(p)
     for it in p.items:
         if it.kind in ("segment", "polyline"):
-            g.add(dwg.path(d=_path([tp(*q) for q in it.pts]), stroke_width=u(0.5), stroke_linecap="round"))
+            lines.add(dwg.path(d=_path([tp(*q) for q in it.pts]), stroke_width=u(0.5), stroke_linecap="round"))
         elif it.kind == "circle":
-            c = tp(*it.pts[0])
-            g.add(dwg.circle((u(c[0]), u(c[1])), u(it.r * p.lay.scale.factor), stroke_width=u(0.25)))
+            d = circle_path(tp(*it.pts[0]), it.r * p.lay.scale.factor, room)
+            if d:
+                g.add(dwg.path(d=d, stroke_width=u(0.25), class_="given-circle"))
     for it in p.items:
         if it.kind == "point":
             c = tp(*it.pts[0])
