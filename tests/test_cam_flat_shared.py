@@ -10,11 +10,10 @@ import math
 import numpy as np
 import pytest
 
-from geomcon.cam.laws import LAW_NAMES
 from geomcon.cam.oscillating_flat import FlatArmCam
 from geomcon.cam.profile import (Extremum, LineFamily, TWO_PI, backward_jumps, envelope, envelope_rho_min, envelope_terms,
                                  maximise, sample_grid, sample_grids)
-from geomcon.cam.program import parse_program
+from random_programs import random_program
 from geomcon.errors import NotAMechanism
 from geomcon.geometry import Point
 from geomcon.recipes import cam_oscillating_flat as osc_flat
@@ -23,16 +22,7 @@ from geomcon.recipes import cam_translating as transl
 SEEDS = range(16)
 
 
-def _program(rng: np.random.Generator):
-    """A random full-turn program (rise, dwell, return, dwell; any laws; now and then a dwell left out)."""
-    a = rng.dirichlet([2, 1, 2, 1]) * 360.0
-    a[-1] = 360.0 - a[:-1].sum()
-    kinds = ["rise", "dwell", "return", "dwell"]
-    if rng.uniform() < 0.25:
-        a[2] += a[1]
-        a, kinds = np.delete(a, 1), kinds[:1] + kinds[2:]
-    return parse_program([{"kind": k, "angle": float(x), **({"law": str(rng.choice(LAW_NAMES))} if k != "dwell" else {})}
-                          for k, x in zip(kinds, a)])
+_program = random_program
 
 
 def _cam(rng: np.random.Generator) -> FlatArmCam:

@@ -12,24 +12,16 @@ import dataclasses
 import numpy as np
 import pytest
 
-from geomcon.cam.laws import LAW_NAMES
 from geomcon.cam.oscillating import OscillatingCam
 from geomcon.cam.profile import rho_min
-from geomcon.cam.program import parse_program
+from random_programs import random_program
 
 SEEDS = range(24)
 
 
 def _cam(rng: np.random.Generator) -> OscillatingCam:
     """A random arm cam (rise, dwell, return, dwell, any laws, now and then a dwell left out) that assembles."""
-    a = rng.dirichlet([2, 1, 2, 1]) * 360.0
-    a[-1] = 360.0 - a[:-1].sum()
-    kinds = ["rise", "dwell", "return", "dwell"]
-    if rng.uniform() < 0.25:
-        a[2] += a[1]
-        a, kinds = np.delete(a, 1), kinds[:1] + kinds[2:]
-    prog = parse_program([{"kind": k, "angle": float(x), **({"law": str(rng.choice(LAW_NAMES))} if k != "dwell" else {})}
-                          for k, x in zip(kinds, a)])
+    prog = random_program(rng)
     dist = float(rng.uniform(80, 160))
     return OscillatingCam(dist, float(rng.uniform(0.75, 1.0)) * dist, float(rng.uniform(0.3, 0.45)) * dist,
                           float(rng.uniform(3, 30)), prog, str(rng.choice(["ccw", "cw"])), str(rng.choice(["left", "right"])))
