@@ -32,6 +32,7 @@ from typing import Callable, Sequence
 
 from ..geometry.primitives import Circle, Point, Polyline, Segment
 from ..render.labels import text_width
+from ..render.style import LABEL_SIZE as STYLE_LABEL_SIZE
 from ..render.view import clip_interval
 from ..scene import Role
 from ..solve import Solution
@@ -45,8 +46,8 @@ GIVEN_CIRCLES: dict[str, tuple[tuple[str, str], ...]] = {
 }
 """Per recipe, circles (centre point step, radius given) drawn as givens."""
 
-LABEL_SIZE = 3.5
-"""Font size of a point's label on the sheet (paper mm)."""
+LABEL_SIZE = STYLE_LABEL_SIZE
+"""Font size of a point's label on the sheet (paper mm): the figures' own, so a key's labels are as high as its sheet's."""
 DOT = 0.8
 """Radius of a point's dot on paper (mm)."""
 LABEL_GAP = 1.0

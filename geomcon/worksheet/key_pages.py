@@ -2,9 +2,11 @@
 with the same layout, so that a key printed on film lays over the sheet.
 
 A key page holds the sheet's header and statement, each asked answer with its tolerance and points in its box,
-the full construction (the scene's figure as geomcon draws it, :func:`geomcon.render.figure.build_figure`,
-nested in an ``<svg>`` whose viewBox maps the sheet's model box onto the sheet's figure area: 1 real mm =
-the scale's paper mm; a cam's s–δ diagram, which lies outside that box, is left out) and the overlay: a red tolerance circle around each point the student constructs
+the full construction of the chosen solution (the scene's figure as geomcon draws it,
+:func:`geomcon.render.figure.build_figure`, at the sheet's scale and through the sheet's own mapping, so its labels
+are as high as the sheet's and its points lie on the sheet's: :func:`key_figure`; its view is the construction's
+content cut to the frame below the answer boxes, :func:`key_room`; another solution's construction and a cam's
+s–δ diagram, which the student does not draw there, are left out) and the overlay: a red tolerance circle around each point the student constructs
 (:mod:`.overlay`), its radius the propagated positional tolerance.
 
 Examples
@@ -15,19 +17,25 @@ Examples
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Callable
 
 import svgwrite
 
-from ..render.figure import build_figure
+from ..geometry.primitives import Circle, Point
+from ..render.draw import COMPASS_HALF, compass_parts
+from ..render.style import CSS, resolve_style
+from ..render.figure import Figure, build_figure, content_box, shown_steps
+from ..render.view import grow
+from ..scene import Role, Step
+from ..solve import Solution
 from ..render.serial import svg_string
 from ..render.shapes import to_svg
-from ..render.style import CSS
 from .accept import FIGURE_MARGIN
 from .overlay import constructed_points, point_keys, position_tolerances
-from .pages import u
+from .pages import ANSWER_H, Rect, u
 from .readability import DIAGRAM_PREFIX
-from .sheets import U, Page, answer_boxes, frame, header, page_drawing, pages_html
+from .sheets import U, Page, answer_boxes, circle_room, frame, header, page_drawing, pages_html
+from .solving import chosen_map
 
 OVERLAY = "#d0021b"
 """Colour of the tolerance circles."""
@@ -50,21 +58,116 @@ def shown(value: float, tol: float) -> str:
     return f"{value:.{d}f} ± {tol:.{d}f}"
 
 
-def _in_figure(step: Any) -> bool:
-    """Whether the key's figure draws a step: every step but a cam's s–δ diagram (``sd_…``), which lies
-    beside the cam, outside the sheet's model box (:func:`~.readability.extent`), where the nested ``<svg>``
-    would clip it away."""
-    return not step.key.startswith(DIAGRAM_PREFIX)
+def other_solutions(sol: Solution) -> frozenset[str]:
+    """The steps only another solution than the textbook's choice needs (its candidate points, θ-circle,
+    lines …), and every construction or annotation step drawn from one of them (their admissible arcs, the
+    ghost of the other designs). The student constructs the chosen solution alone (the sheet's model box,
+    :func:`~.readability.extent`, leaves the others out), so the key draws it alone. A given or result step
+    (the chosen pivot ``A`` picked among the candidates) is never one of them.
+
+    >>> from geomcon.worksheet.solving import solve_given
+    >>> sol = solve_given("crank_rocker.design_by_K", {"K": 1.4, "CD": 100, "psi": 40, "BC": 100})
+    >>> sorted(k for k in other_solutions(sol) if k.startswith(("A", "F", "f")))
+    ['AB_2', 'AD_2', 'A_2', 'A_near_2', 'F_2', 'fP', 'farcs_ok', 'fcompl', 'fhalf', 'fkF', 'fkTheta', 'frP']
+    >>> other_solutions(solve_given("crank_rocker.extremes", {"AB": 50, "BC": 70, "CD": 80, "AD": 90}))
+    frozenset()
+    """
+    c = sol.construction
+    if not c.solutions:
+        return frozenset()
+    sc = sol.drawing_scene
+    chosen = chosen_map(sol)
+    mine = set(sc.closure([k for n, k in chosen.items() if n != "_valid"]))
+    out = {k for m in c.solutions if m is not chosen
+           for k in sc.closure([k for n, k in m.items() if n != "_valid"])} - mine
+    for s in sc.visible_steps():                   # in evaluation order: a step's arguments come first
+        if s.key not in mine and s.role not in (Role.GIVEN, Role.RESULT) and any(k in out for k in s.deps()):
+            out.add(s.key)
+    return frozenset(out)
+
+
+def key_keep(sol: Solution) -> Callable[[Step], bool]:
+    """Which steps the key's figure draws: every step but a cam's s–δ diagram (``sd_…``, drawn beside the cam
+    at a scale of its own, outside the sheet's model box) and another solution's construction
+    (:func:`other_solutions`)."""
+    drop = other_solutions(sol)
+    return lambda step: not step.key.startswith(DIAGRAM_PREFIX) and step.key not in drop
+
+
+def key_room(p: Page) -> Rect:
+    """Where the key's construction may run (paper mm): the drawing frame below the answer boxes, left of (or
+    above) a cam's s–δ strip beside the figure. A circle too large for the sheet (a θ-circle reaching past the
+    frame) ends on the frame line, as the sheet's given circles do (:func:`~.sheets.circle_room`)."""
+    x0, _, x1, y1 = circle_room(p)
+    rows = 1 + max((r for r, _ in p.lay.slots), default=0)
+    return (x0, p.lay.answers_top + rows * ANSWER_H, x1, y1)
+
+
+def key_view(p: Page, keep: Callable[[Step], bool]) -> tuple[float, float, float, float]:
+    """The model box the key draws: the construction's content (:func:`~geomcon.render.figure.content_box`)
+    and its compass arcs (:func:`compass_extent`: an arc through a point at the content's edge reaches beyond
+    it) with :data:`~.accept.FIGURE_MARGIN` paper mm around them, cut to :func:`key_room` (in model mm, through
+    the sheet's own mapping :meth:`~.pages.Layout.to_paper`)."""
+    sc = p.sol.drawing_scene
+    steps, _ = shown_steps(sc, None, keep)
+    values = sc.evaluate([s.key for _, s in steps])
+    f = p.lay.scale.factor
+    cb = content_box(sc, steps, values)
+    arcs = compass_extent(steps, values, 1.0 / f)
+    if arcs is not None:
+        cb = (min(cb[0], arcs[0]), min(cb[1], arcs[1]), max(cb[2], arcs[2]), max(cb[3], arcs[3]))
+    cb = grow(cb, FIGURE_MARGIN / f)
+    rx0, ry0, rx1, ry1 = key_room(p)
+    (mx0, my1), (mx1, my0) = to_model(p, rx0, ry0), to_model(p, rx1, ry1)
+    return (max(cb[0], mx0), max(cb[1], my0), min(cb[2], mx1), min(cb[3], my1))
+
+
+def compass_extent(steps: list[tuple[int, Step]], values: dict[str, Any], mu: float
+                   ) -> tuple[float, float, float, float] | None:
+    """The model box of the compass arcs drawn at scale ``mu`` (model mm per paper mm): the short arcs of each
+    compass-style circle through the drawn points on it (:func:`~geomcon.render.draw.compass_parts`, as
+    :func:`~geomcon.render.draw.draw_circle` draws them), sampled every 1/16 of their sweep; None for none.
+
+    >>> steps = [(1, Step("kC", print)), (2, Step("P", print))]        # a construction circle, a point on it
+    >>> box = compass_extent(steps, {"kC": Circle(Point(0, 0), 100.0), "P": Point(100.0, 0.0)}, 1.0)
+    >>> [round(x, 3) for x in box]
+    [99.396, -10.978, 100.0, 10.978]
+    """
+    pts = tuple(v for v in values.values() if isinstance(v, Point))
+    out: list[Point] = []
+    for _, s in steps:
+        c = values[s.key]
+        if not isinstance(c, Circle) or c.r <= 0 or not resolve_style(s.style, s.role, "curve").compass:
+            continue
+        half = max(math.radians(6.0), min(math.pi, COMPASS_HALF / (c.r / mu)))
+        for start, sweep in compass_parts(c, pts, half):
+            out += [c.center + Point(math.cos(a), math.sin(a)) * c.r
+                    for a in (start + sweep * i / 16 for i in range(17))]
+    if not out:
+        return None
+    return (min(p.x for p in out), min(p.y for p in out), max(p.x for p in out), max(p.y for p in out))
+
+
+def to_model(p: Page, x: float, y: float) -> tuple[float, float]:
+    """Model mm of the paper point (x, y): :meth:`~.pages.Layout.to_paper` inverted."""
+    lay, f = p.lay, p.lay.scale.factor
+    return (lay.box[0] + (x - lay.fig[0] - FIGURE_MARGIN) / f, lay.box[1] + (lay.fig[3] - FIGURE_MARGIN - y) / f)
+
+
+def key_figure(p: Page) -> tuple[Rect, Figure]:
+    """The key's construction drawn at the sheet's scale (1 model mm = the scale's paper mm, so its labels
+    are as high as the sheet's), and where it goes on the page (paper mm)."""
+    keep = key_keep(p.sol)
+    box = key_view(p, keep)
+    fig = build_figure(p.sol.drawing_scene, None, box, (0.0, 0.0), mu=1.0 / p.lay.scale.factor, keep=keep)
+    (x0, y0), (x1, y1) = p.lay.to_paper(box[0], box[3]), p.lay.to_paper(box[2], box[1])
+    return (x0, y0, x1, y1), fig
 
 
 def figure_group(dwg: svgwrite.Drawing, p: Page) -> Any:
-    """The full construction, nested so that the sheet's model box fills the sheet's figure area."""
-    f = p.lay.scale.factor
-    m = FIGURE_MARGIN / f
-    b = p.lay.box
-    box = (b[0] - m, b[1] - m, b[2] + m, b[3] + m)
-    x0, y0, x1, y1 = p.lay.fig
-    fig = build_figure(p.sol.drawing_scene, None, box, (0.0, 0.0), x1 - x0, keep=_in_figure)
+    """The full construction of the chosen solution, nested at the sheet's own mapping, so that it lies over
+    the sheet's givens point for point (see :func:`key_figure`)."""
+    (x0, y0, x1, y1), fig = key_figure(p)
     vw, vh = fig.view.size
     inner = dwg.svg(insert=(u(x0), u(y0)), size=(u(x1 - x0), u(y1 - y0)), id="construction",
                     viewBox=f"0 0 {vw:.6g} {vh:.6g}")
@@ -117,4 +220,5 @@ def key_files(pages: list[Page], title: str, lang: str) -> dict[str, str]:
     return files
 
 
-__all__ = ["OVERLAY", "decimals", "figure_group", "key_files", "key_svg", "overlay_group", "shown"]
+__all__ = ["OVERLAY", "compass_extent", "decimals", "figure_group", "key_figure", "key_files", "key_keep", "key_room", "key_svg", "key_view",
+           "other_solutions", "overlay_group", "shown", "to_model"]
