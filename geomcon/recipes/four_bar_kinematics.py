@@ -90,8 +90,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     mu_v, p, b = add_crank_velocity(sc, A, B, AB, omega, gap, pts)
     lBC = sc.add("lBC", line_through, B, C, visible=False)
     lCD = sc.add("lCD", line_through, C, D, visible=False)
-    tb = sc.add("tb", perpendicular, lBC, b, caption=("Through b, the direction of vCB (⊥ BC)", "过 b 作 vCB 的方向线(⊥ BC)"))
-    tp = sc.add("tp", perpendicular, lCD, p, caption=("Through p, the direction of vC (⊥ CD)", "过 p 作 vC 的方向线(⊥ CD)"))
+    tb = sc.add("tb", perpendicular, lBC, b, style="direction", caption=("Through b, the direction of vCB (⊥ BC)", "过 b 作 vCB 的方向线(⊥ BC)"))
+    tp = sc.add("tp", perpendicular, lCD, p, style="direction", caption=("Through p, the direction of vC (⊥ CD)", "过 p 作 vC 的方向线(⊥ CD)"))
     c = sc.add("c", meet, tb, tp, style="point", label="c", caption=("They meet at c", "两线交于 c"))
     sc.add("vC", scaled_length, p, c, mu_v, role=Role.MEASUREMENT, unit="mm/s",
            caption=("Measure vC = pc·μv", "量得 vC = pc·μv"))
@@ -120,8 +120,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     k3 = sc.add("k_n3", normal_length, w3, mu_a, visible=False)
     n3 = sc.add("n3", turned, p2, C, D, k3, 0.0, style="point", label="n3",
                 caption=("From p′, p′n3 ∥ CD: aCⁿ = ω3²·CD, towards D", "自 p′ 作 p′n3 ∥ CD:aCⁿ = ω3²·lCD,指向 D"))
-    t2 = sc.add("t2", perpendicular, lBC, n2, caption=("Through n2, the direction of aCBᵗ (⊥ BC)", "过 n2 作 aCBᵗ 的方向线(⊥ BC)"))
-    t3 = sc.add("t3", perpendicular, lCD, n3, caption=("Through n3, the direction of aCᵗ (⊥ CD)", "过 n3 作 aCᵗ 的方向线(⊥ CD)"))
+    t2 = sc.add("t2", perpendicular, lBC, n2, style="direction", caption=("Through n2, the direction of aCBᵗ (⊥ BC)", "过 n2 作 aCBᵗ 的方向线(⊥ BC)"))
+    t3 = sc.add("t3", perpendicular, lCD, n3, style="direction", caption=("Through n3, the direction of aCᵗ (⊥ CD)", "过 n3 作 aCᵗ 的方向线(⊥ CD)"))
     c2 = sc.add("c2", meet, t2, t3, style="point", label="c′", caption=("They meet at c′", "两线交于 c′"))
     sc.add("aC", scaled_length, p2, c2, mu_a, role=Role.MEASUREMENT, unit="mm/s²",
            caption=("Measure aC = p′c′·μa", "量得 aC = p′c′·μa"))

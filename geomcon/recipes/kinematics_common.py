@@ -179,8 +179,8 @@ def add_guide_velocity(sc: Scene, A: Ref, B: Ref, C: Ref, lCB: Ref, AB: Any, ome
     B): pb2 ⊥ AB; the line through b2 ∥ CB meets the line through p ⊥ CB at b3; ω3 = pb3·μv/CB and the slip
     b3b2·μv along C→B (steps ``omega3``, ``v_slip``). Returns (μv, p, b2, b3)."""
     mu_v, p, b2 = add_crank_velocity(sc, A, B, AB, omega, gap, beside, label="b2")
-    sl = sc.add("sl", parallel, lCB, b2, caption=("Through b2, the direction of vB3B2 (∥ CB)", "过 b2 作 vB3B2 的方向线(∥ CB)"))
-    tp = sc.add("tp", perpendicular, lCB, p, caption=("Through p, the direction of vB3 (⊥ CB)", "过 p 作 vB3 的方向线(⊥ CB)"))
+    sl = sc.add("sl", parallel, lCB, b2, style="direction", caption=("Through b2, the direction of vB3B2 (∥ CB)", "过 b2 作 vB3B2 的方向线(∥ CB)"))
+    tp = sc.add("tp", perpendicular, lCB, p, style="direction", caption=("Through p, the direction of vB3 (⊥ CB)", "过 p 作 vB3 的方向线(⊥ CB)"))
     b3 = sc.add("b3", meet, sl, tp, style="point", label="b3", caption=("They meet at b3", "两线交于 b3"))
     w3 = sc.add("omega3", rate, p, b3, C, B, mu_v, role=Role.MEASUREMENT, unit="rad/s",
                 caption=("ω3 = vB3/CB = pb3·μv/CB", "ω3 = vB3/lCB = pb3·μv/lCB"))
@@ -201,11 +201,11 @@ def add_guide_acceleration(sc: Scene, A: Ref, B: Ref, C: Ref, lCB: Ref, omega: A
     k_ = sc.add("k", coriolis_end, b2, b3, b2_, w3, mu_v, mu_a, style="point", label="k′",
                 caption=("From b2′, the Coriolis component aᵏB3B2 = 2ω3·vB3B2: vB3B2 turned 90° in the sense of ω3",
                          "自 b2′ 作哥氏加速度 aᵏB3B2 = 2ω3·vB3B2,方向为 vB3B2 沿 ω3 转向转 90°"))
-    rl = sc.add("rl", parallel, lCB, k_, caption=("Through k′, the direction of aʳB3B2 (∥ CB)", "过 k′ 作 aʳB3B2 的方向线(∥ CB)"))
+    rl = sc.add("rl", parallel, lCB, k_, style="direction", caption=("Through k′, the direction of aʳB3B2 (∥ CB)", "过 k′ 作 aʳB3B2 的方向线(∥ CB)"))
     k3 = sc.add("k_n3", normal_length, w3, mu_a, visible=False)
     n3 = sc.add("n3", turned, p2, B, C, k3, 0.0, style="point", label="n3",
                 caption=("From p′, p′n3 ∥ BC: aB3ⁿ = ω3²·CB, towards C", "自 p′ 作 p′n3 ∥ BC:aB3ⁿ = ω3²·lCB,指向 C"))
-    t3 = sc.add("t3", perpendicular, lCB, n3, caption=("Through n3, the direction of aB3ᵗ (⊥ CB)", "过 n3 作 aB3ᵗ 的方向线(⊥ CB)"))
+    t3 = sc.add("t3", perpendicular, lCB, n3, style="direction", caption=("Through n3, the direction of aB3ᵗ (⊥ CB)", "过 n3 作 aB3ᵗ 的方向线(⊥ CB)"))
     b3_ = sc.add("b3a", meet, rl, t3, style="point", label="b3′", caption=("They meet at b3′", "两线交于 b3′"))
     sc.add("epsilon3", rate, n3, b3_, C, B, mu_a, role=Role.MEASUREMENT, unit="rad/s²",
            caption=("ε3 = aB3ᵗ/CB = n3b3′·μa/CB", "ε3 = aB3ᵗ/lCB = n3b3′·μa/lCB"))
@@ -260,9 +260,9 @@ def add_rrp_velocity(sc: Scene, J: Ref, X: Ref, path: Ref, j: Ref, p: Ref, mu_v:
     path at x; vX read signed along the path and ωn = vXJ/JX. Returns (the line JX, x, ωn)."""
     JX, jx, n = f"{d.J}{d.X}", f"{d.j}{d.x}", d.n
     lJX = sc.add(d.line, line_through, J, X, visible=False)
-    tj = sc.add(f"t{d.j}", perpendicular, lJX, j, caption=(f"Through {d.j}, the direction of v{d.X}{d.J} (⊥ {JX})",
+    tj = sc.add(f"t{d.j}", perpendicular, lJX, j, style="direction", caption=(f"Through {d.j}, the direction of v{d.X}{d.J} (⊥ {JX})",
                                                           f"过 {d.j} 作 v{d.X}{d.J} 的方向线(⊥ {JX})"))
-    tp = sc.add(d.poles[0], parallel, path, p, caption=(f"Through p, the direction of v{d.X} (∥ {d.path[0]})",
+    tp = sc.add(d.poles[0], parallel, path, p, style="direction", caption=(f"Through p, the direction of v{d.X} (∥ {d.path[0]})",
                                                         f"过 p 作 v{d.X} 的方向线(∥ {d.path[1]})"))
     x = sc.add(d.x, meet, tj, tp, style="point", label=d.x, caption=(f"They meet at {d.x}", f"两线交于 {d.x}"))
     sc.add(f"v{d.X}", along, p, x, path, mu_v, role=Role.MEASUREMENT, unit="mm/s",
@@ -283,9 +283,9 @@ def add_rrp_acceleration(sc: Scene, J: Ref, X: Ref, path: Ref, lJX: Ref, j_: Ref
     nn = sc.add(f"n{n}", turned, j_, X, J, k, 0.0, style="point", label=f"n{n}",
                 caption=(f"From {j}′, {j}′n{n} ∥ {XJ}: a{XJ}ⁿ = ω{n}²·{JX}, towards {d.J}",
                          f"自 {j}′ 作 {j}′n{n} ∥ {XJ}:a{XJ}ⁿ = ω{n}²·l{JX},指向 {d.J}"))
-    tn = sc.add(f"t{n}", perpendicular, lJX, nn, caption=(f"Through n{n}, the direction of a{XJ}ᵗ (⊥ {JX})",
+    tn = sc.add(f"t{n}", perpendicular, lJX, nn, style="direction", caption=(f"Through n{n}, the direction of a{XJ}ᵗ (⊥ {JX})",
                                                          f"过 n{n} 作 a{XJ}ᵗ 的方向线(⊥ {JX})"))
-    tp = sc.add(d.poles[1], parallel, path, p2, caption=(f"Through p′, the direction of a{d.X} (∥ {d.path[0]})",
+    tp = sc.add(d.poles[1], parallel, path, p2, style="direction", caption=(f"Through p′, the direction of a{d.X} (∥ {d.path[0]})",
                                                          f"过 p′ 作 a{d.X} 的方向线(∥ {d.path[1]})"))
     x_ = sc.add(f"{x}2", meet, tn, tp, style="point", label=f"{x}′", caption=(f"They meet at {x}′", f"两线交于 {x}′"))
     sc.add(f"a{d.X}", along, p2, x_, path, mu_a, role=Role.MEASUREMENT, unit="mm/s²",

@@ -68,7 +68,7 @@ def slider_construct(g: Mapping[str, Any]) -> Construction:
     epsilon = g.get("epsilon", 0.0) or 0.0
     sc = Scene("Crank-slider: velocity and acceleration polygons")
     A, F, gl, B, C = add_slider_at(sc, g)
-    gap = _gap(AB, BC, abs(e))
+    gap = _gap(AB, BC, abs(e)) + 0.6 * AB        # the guide's hatch reaches 0.6·AB beyond C (add_slider_at)
     mu_v, p, b = add_crank_velocity(sc, A, B, AB, omega, gap, (A, F, B, C))
     lBC, c, w2 = add_rrp_velocity(sc, B, C, gl, b, p, mu_v)
     mu_a, p2, b2 = add_crank_acceleration(sc, A, B, omega, epsilon, gap, (p, b, c))
@@ -125,7 +125,7 @@ def guide_construct(g: Mapping[str, Any]) -> Construction:
     C = add_pivot(sc, "C", (0.0, -AC), (f"Guide pivot C below A, AC = {AC:g}", f"在 A 下方取导杆转动中心 C,AC = {AC:g}"))
     B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
                caption=(f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"))
-    lCB = sc.add("lCB", line_through, C, B, caption=("The guide CB through the block B", "过滑块 B 作导杆 CB"))
+    lCB = sc.add("lCB", line_through, C, B, style="direction", caption=("The guide CB through the block B", "过滑块 B 作导杆 CB"))
     drawing = sc.drawing
     if drawing:
         add_bar(sc, "AB", A, B, ("Draw the crank AB and the guide", "画出曲柄 AB 与导杆"))

@@ -119,7 +119,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                   caption=("The ram's path through F, vertical", "过 F 作滑枕导路(铅垂)"))
     B = sc.add("B", crank_pin, A, AB, phi, style="joint", label="B",
                caption=(f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"))
-    lCB = sc.add("lCB", line_through, C, B, caption=("The guide bar CB through the block B", "过滑块 B 作导杆 CB"))
+    lCB = sc.add("lCB", line_through, C, B, style="direction", caption=("The guide bar CB through the block B", "过滑块 B 作导杆 CB"))
     D = sc.add("D", point_along, C, B, -CD, style="joint", label="D",
                caption=(f"The arm's end D beyond C: CD = {CD:g}", f"在导杆上 C 的另一侧取 CD = {CD:g} 得 D"))
     kD = sc.add("kD", circle, D, DE, caption=(f"Circle about D with radius DE = {DE:g}", f"以 D 为圆心、DE = {DE:g} 为半径作圆"))

@@ -23,7 +23,7 @@ import numpy as np
 import shapely
 import shapely.ops
 
-from ..geometry.primitives import Arc, Circle, Point, Polyline, Ray, Segment
+from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .draw import Context, Drawn, TextRequest, _paper_dir, compass_half, compass_steps, draw_compass
@@ -31,7 +31,7 @@ from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .crossings import NEAR, Crossings
 from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
-from .style import HIGHLIGHT, INK, LAYERS, highlighted, resolve_style
+from .style import HIGHLIGHT, INK, LAYERS, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import draw, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
@@ -189,7 +189,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
             (_, own), *later = compass_steps(value, ctx, number, compass_half(value, ctx))
             drawn = draw_compass(value, own, highlighted(style) if is_cur else style, ctx)
         else:
-            drawn = draw(value, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
+            shape = trimmed(scene, s, value, mu) if style.trim and type(value) is Line else value
+            drawn = draw(shape, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
         pending.append((drawn, is_cur))
         for m, parts in later:
@@ -199,6 +200,41 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
             pending.append((arcs, m == current))
     _place_texts(view, groups, pending)
     return Figure(view, groups, values, n)
+
+
+def trimmed(scene: Scene, step: Step, line: Line, mu: float) -> Line | Segment:
+    """A trimmed-style line (:attr:`~.style.Style.trim`: a polygon's direction line) as the segment the
+    construction needs: from the first to the last of its points — those it is drawn through (its arguments)
+    and those found on it (the points of the steps taking it as an argument, evaluated though not yet shown, so
+    that every frame draws it alike) — :data:`~.style.TRIM_OVERSHOOT` paper mm (``mu`` model mm per paper mm)
+    beyond each; the line itself when fewer than two are known.
+
+    >>> from geomcon.scene import Scene
+    >>> from geomcon.geometry import line_line, parallel
+    >>> sc = Scene("t")
+    >>> p = sc.given_at("p", 0.0, 0.0)
+    >>> l1 = sc.add("l1", Line, p, Point(1.0, 0.0), style="direction")
+    >>> l2 = sc.add("l2", Line, Point(30.0, -5.0), Point(0.0, 1.0))
+    >>> x = sc.add("x", lambda a, b: line_line(a, b)[0], l1, l2)
+    >>> trimmed(sc, sc["l1"], sc.value("l1"), 1.0)
+    Segment(a=Point(x=-6.0, y=0.0), b=Point(x=36.0, y=0.0))
+    """
+    deps = set(step.deps())
+    keys = [k for k in deps] + [s.key for s in scene.visible_steps() if step.key in s.deps()]
+    values = scene.evaluate(keys)
+    d = line.direction
+    n = abs(d)
+    ts = []
+    for v in values.values():
+        if isinstance(v, Point):
+            r = v - line.point
+            if abs(r.cross(d)) <= 1e-9 * max(1.0, abs(r)) * n:
+                ts.append(r.dot(d) / n)
+    if len(ts) < 2 or n == 0.0:
+        return line
+    u = d * (1.0 / n)
+    lo, hi = min(ts) - TRIM_OVERSHOOT * mu, max(ts) + TRIM_OVERSHOOT * mu
+    return Segment(line.point + u * lo, line.point + u * hi)
 
 
 def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View, frame: bool = False

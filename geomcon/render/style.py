@@ -41,6 +41,7 @@ PROTO_SIZE = 3.5        # protocol line, first language
 PROTO_ZH_SIZE = 3.5     # Chinese protocol line under the English one
 INFO_SIZE = 3.5
 HALO = 0.9              # width of the white halo drawn behind texts
+TRIM_OVERSHOOT = 6.0    # paper mm a trimmed line runs beyond the last point on it
 
 LAYERS = ("construction", "given", "ground", "links", "marks", "sliders", "points")
 """Drawing layers, bottom to top; every step group lives in exactly one of them."""
@@ -81,6 +82,11 @@ class Style:
     label_optional : bool
         A point of a numbered row (the divisions 1′, 2′, … of a cam): its label is left out where it would
         cover another text (the row is crowded), never printed on top of it.
+    trim : bool
+        Lines of this style are drawn only as long as the construction needs: between the points they are drawn
+        through and those found on them, :data:`TRIM_OVERSHOOT` paper mm beyond
+        (:func:`~geomcon.render.figure.trimmed`; a polygon's direction lines stay in the polygon's panel
+        instead of running across the mechanism).
     """
 
     name: str
@@ -96,6 +102,7 @@ class Style:
     label_dir: float | None = None
     label_size: float | None = None
     label_optional: bool = False
+    trim: bool = False
 
 
 STYLES: dict[str, Style] = {s.name: s for s in (
@@ -113,6 +120,8 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     # curves
     Style("frame", width=0.25, dash=(6.0, 1.2, 1.0, 1.2)),
     Style("construction", stroke="#8f959c", width=0.18, layer="construction", compass=True),
+    Style("direction", stroke="#8f959c", width=0.18, layer="construction", trim=True),
+    # a velocity or acceleration polygon's direction line: from its point to where it meets the other, a little beyond
     Style("theta-circle", stroke="#5f7f9f", width=0.25, layer="construction"),
     Style("link", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
     Style("link-alt", stroke="#1c4e80", width=0.7, marker="hollow", radius=1.25, marker_width=0.55, layer="links"),
