@@ -175,6 +175,7 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
                   frames=_links(steps, values, view, frame=True), numbers=tuple(n for n, _ in numbered),
                   sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view))
     current = n if upto is not None else None
+    frame_lines = _frame_lines(steps, values, view)
     labels = merged_labels(steps, values, box)
     groups, pending = [], []
     for number, s in steps:
@@ -191,6 +192,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
         else:
             shape = trimmed(scene, s, value, mu) if style.trim and type(value) is Line else value
             drawn = draw(shape, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
+            if frame_lines and style.layer == "construction" and kind == "curve":     # not a link on AD
+                drawn.shapes = off_frames(drawn.shapes, frame_lines)
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
         pending.append((drawn, is_cur))
         for m, parts in later:
@@ -200,6 +203,68 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
             pending.append((arcs, m == current))
     _place_texts(view, groups, pending)
     return Figure(view, groups, values, n)
+
+
+def _frame_lines(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
+    """The lines drawn dash-dot (style ``frame``: the fixed link AD, a frame line given whole) on paper, as
+    segments; a line or ray reaching far beyond the view."""
+    out = []
+    far = 1e3 * max(view.box[2] - view.box[0], view.box[3] - view.box[1], 1.0)
+    for _, s in steps:
+        if resolve_style(s.style, s.role, "curve").name != "frame":
+            continue
+        for x in _all(values[s.key]):
+            if isinstance(x, Segment) and x.a != x.b:
+                out.append((view.p(x.a), view.p(x.b)))
+            elif isinstance(x, Line):
+                d = x.direction * (far / max(abs(x.direction), 1e-300))
+                out.append((view.p(x.point - d), view.p(x.point + d)))
+            elif isinstance(x, Ray):
+                d = x.direction * (far / max(abs(x.direction), 1e-300))
+                out.append((view.p(x.origin), view.p(x.origin + d)))
+    return tuple(out)
+
+
+def off_frames(shapes: list[Shape], frames: tuple[tuple[Any, Any], ...], tol: float = 0.05) -> list[Shape]:
+    """``shapes`` with every straight piece (a two-point open :class:`~.shapes.Poly`) cut where it runs along a
+    fixed link drawn dash-dot (``frames``, paper segments): a grey line over the frame line AD would show in the
+    gaps of its dash-dot. Collinear within ``tol`` paper mm; pieces shorter than 0.1 mm are dropped.
+
+    >>> from geomcon.render.shapes import Pen
+    >>> line = Poly(((0.0, 0.0), (10.0, 0.0)), Pen("#000", 0.2))
+    >>> [s.pts for s in off_frames([line], (((2.0, 0.0), (5.0, 0.0)),))]
+    [((0.0, 0.0), (2.0, 0.0)), ((5.0, 0.0), (10.0, 0.0))]
+    >>> [s.pts for s in off_frames([line], (((2.0, 1.0), (5.0, 1.0)),))]       # parallel, 1 mm off: kept
+    [((0.0, 0.0), (10.0, 0.0))]
+    """
+    out: list[Shape] = []
+    for sh in shapes:
+        if not isinstance(sh, Poly) or sh.closed or len(sh.pts) != 2:
+            out.append(sh)
+            continue
+        (x0, y0), (x1, y1) = sh.pts
+        dx, dy = x1 - x0, y1 - y0
+        n2 = dx * dx + dy * dy
+        if n2 == 0.0:
+            out.append(sh)
+            continue
+        n = math.sqrt(n2)
+        cuts = []
+        for (ax, ay), (bx, by) in frames:
+            if (abs(dx * (ay - y0) - dy * (ax - x0)) > tol * n or abs(dx * (by - y0) - dy * (bx - x0)) > tol * n):
+                continue
+            ta, tb = ((ax - x0) * dx + (ay - y0) * dy) / n2, ((bx - x0) * dx + (by - y0) * dy) / n2
+            cuts.append((min(ta, tb), max(ta, tb)))
+        if not cuts:
+            out.append(sh)
+            continue
+        pieces = [(0.0, 1.0)]
+        for c0, c1 in cuts:
+            pieces = [q for a, b in pieces for q in ((a, min(b, c0)), (max(a, c1), b))]
+        for a, b in pieces:
+            if (b - a) * n >= 0.1:
+                out.append(replace(sh, pts=((x0 + dx * a, y0 + dy * a), (x0 + dx * b, y0 + dy * b))))
+    return out
 
 
 def trimmed(scene: Scene, step: Step, line: Line, mu: float) -> Line | Segment:
