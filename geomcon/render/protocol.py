@@ -39,6 +39,8 @@ ZH_LH = PROTO_ZH_SIZE * 1.3
 ENTRY_GAP = 0.9
 HEAD_SIZE = 3.5       # headings (ISO 3098 series)
 HEAD_H = 6.0          # the heading line above the columns
+MIN_FIRST = 6          # fewer protocol entries than this under the results: the protocol starts on a new sheet
+BLOCK_GAP = 7.0       # paper mm added above the protocol's heading under the results: as far below them as Warnings'
 MIN_LIMIT = 185.0     # a protocol may grow this tall beside a smaller figure before taking another column
 VALUE_RESERVE = text_width(" = -000.000 mm", PROTO_SIZE)
 
@@ -136,8 +138,9 @@ def _placed(raw: Sequence[tuple], heights: Sequence[float], starts: Sequence[int
 def paginate(scene: Scene, width: float, height: float, lang: str = "both", first_skip: float = 0.0) -> list[Layout]:
     """The protocol set on sheets of ``width`` × ``height`` paper mm (heading included): in the fewest
     balanced columns that fit one sheet, else column after column, sheet after sheet (an entry is never
-    split). Every sheet holds at least one entry; the first sheet's columns are ``first_skip`` shorter (the
-    results stand above them).
+    split). Every sheet holds at least one entry, but the first: its columns are ``first_skip`` shorter (the
+    results stand above them), and when fewer than :data:`MIN_FIRST` entries would fit under the results, it
+    holds none (an empty layout: the protocol starts on the next sheet, as a textbook starts a section).
 
     Examples
     --------
@@ -148,6 +151,8 @@ def paginate(scene: Scene, width: float, height: float, lang: str = "both", firs
     >>> pages = paginate(sc, 90.0, 40.0)
     >>> len(pages) > 1 and sum(len(p.entries) for p in pages) == len(sc.frames())
     True
+    >>> [len(p.entries) for p in paginate(sc, 90.0, 100.0, first_skip=80.0)][:2]      # < 6 fit under the results
+    [0, 7]
     """
     raw = _raw(scene, lang)
     heights = [entry_height(r[4], r[5]) for r in raw]
@@ -171,6 +176,8 @@ def paginate(scene: Scene, width: float, height: float, lang: str = "both", firs
             acc += heights[j]
             j += 1
         pages.append(_placed(raw[first:j], heights[first:j], [s - first for s in starts]))
+        if len(pages) == 1 and first_skip > 0.0 and j < min(MIN_FIRST, len(raw)):
+            return [Layout([], 0, 0.0, 0.0)] + paginate(scene, width, height, lang)
     return pages
 
 

@@ -36,7 +36,7 @@ from .figure import Figure, build_figure, content_box, shown_steps
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
                    title_block_box)
 from .serial import Element, svg_string
-from .protocol import info_height, paginate, render_info, render_protocol
+from .protocol import BLOCK_GAP, info_height, paginate, render_info, render_protocol
 from .labels import rich_runs
 from .shapes import add_runs, to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
@@ -246,7 +246,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
-    skip = sl.info_h if moved else 0.0
+    skip = sl.info_h + BLOCK_GAP if moved else 0.0          # the protocol's heading as far below as Warnings'
+
     pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip) if protocol else []
     extra = int(apart is not None)
     n = 1 + extra + max(len(pages), int(moved))
@@ -273,7 +274,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         if moved and k == 0:
             d.add(render_info(d, info, fx0 + INSET, top - 4.0, sl.info_w, warnings, info_steps, upto, lang, last))
             top += skip
-        if k < len(pages):
+        if k < len(pages) and pages[k].entries:            # none: the protocol starts on the next sheet
             d.add(render_protocol(d, pages[k], fx0 + INSET, top, values, shown,
                                   shown if upto is not None else None, lang))
         out.append(svg_string(d))
