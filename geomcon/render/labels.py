@@ -180,22 +180,49 @@ def _tokens(s: str) -> list[str]:
         if cjk and ch in _CLOSING:
             word += ch
         elif cjk:
-            if word:
+            if word and word[-1] not in _OPENING:       # an opening mark stays with the character after it
                 out.append(word)
-            word = ch
+                word = ""
+            word += ch
         elif ch == " ":
             out.append(word + " ")
             word = ""
         else:
-            if word and _wide(word[-1]) and word[-1] not in _CLOSING:
+            if word and _wide(word[-1]) and word[-1] not in _CLOSING + _OPENING:
                 out.append(word)
                 word = ""
             word += ch
     if word:
         out.append(word)
+    return _glued(out)
+
+
+_OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
+"""Operators set between spaces: one never starts or ends a line ("δ = 5°", "K + 1" stay together)."""
+
+
+def _glued(tokens: list[str]) -> list[str]:
+    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side.
+
+    >>> _glued(["(at ", "δ ", "= ", "5°)"])
+    ['(at ', 'δ = 5°)']
+    """
+    out: list[str] = []
+    glue = False
+    for t in tokens:
+        if out and t.strip() in _OPERATORS:
+            out[-1] += t
+            glue = True
+        elif glue:
+            out[-1] += t
+            glue = False
+        else:
+            out.append(t)
     return out
 
 
+_OPENING = "（「『《【"
+"""Punctuation that never ends a line: it stays with the character after it."""
 _CLOSING = "，。、；：）」』！？》】,;:)!?"
 """Punctuation that never begins a line: it stays with the character before it (full-width forms, which Chinese
 text uses, and their ASCII twins)."""
@@ -204,15 +231,20 @@ text uses, and their ASCII twins)."""
 def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> list[str]:
     """Split ``text`` into lines no wider than ``width`` (estimated, paper mm at font ``size``).
 
-    Latin text breaks at spaces, CJK text between characters. ``last_reserve`` keeps room at the end of
+    Latin text breaks at spaces, but not beside an operator set between spaces (``=``, ``+``, ``−`` …), CJK text
+    between characters, but not after an opening mark nor before a closing one. ``last_reserve`` keeps room at the end of
     the last line (for a value appended later).
 
     Examples
     --------
-    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)
-    ['以 A 为圆心、BC', '− AB = 20 为半径', '作圆']
+    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)      # a formula is not broken at its operators
+    ['以 A 为圆', '心、BC − AB = 20', '为半径作圆']
     >>> wrap("速度突降，刚性冲击）", 21.6, 2.4)        # a closing mark never starts a line
     ['速度突降，刚性冲', '击）']
+    >>> wrap("With K = 1.2: θ = 180°(K − 1)/(K + 1)", 60.0, 3.5, last_reserve=20.0)    # room for " = 16.364°"
+    ['With K = 1.2:', 'θ = 180°(K − 1)/(K + 1)']
+    >>> wrap("运动失真（根切）：否", 12.0, 2.4)         # an opening mark never ends one
+    ['运动失真', '（根切）：', '否']
     """
     return list(_wrap(text, width, size, last_reserve))
 
@@ -235,9 +267,9 @@ def _wrap(text: str, width: float, size: float, last_reserve: float) -> tuple[st
             full += sum(_advances(tok, size, False))
     lines.append(cur.rstrip())
     if last_reserve and len(lines[-1]) and text_width(rich_runs(lines[-1]), size) + last_reserve > width:
-        words = lines[-1].rsplit(" ", 1)
-        if len(words) == 2 and words[0]:
-            lines[-1:] = words
+        toks = _tokens(lines[-1])                 # its last word (a formula whole) goes to a line of its own
+        if len(toks) >= 2 and "".join(toks[:-1]).strip():
+            lines[-1:] = ["".join(toks[:-1]).rstrip(), toks[-1]]
         else:
             lines.append("")
     return tuple(lines)

@@ -241,12 +241,29 @@ def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, valu
     return root
 
 
+def info_wrap(s: str, width: float, size: float = INFO_SIZE) -> list[str]:
+    """A result line wrapped to ``width``: whole when it fits; else its English part and its Chinese gloss (after
+    two spaces) each wrapped apart, so that a gloss fitting one line is never broken inside a word (the 400-03
+    result "… 构件 3（摇杆或导杆）的角速\n度" reads "…\n构件 3（摇杆或导杆）的角速度").
+
+    >>> info_wrap("ω3 = 1.429 rad/s (= analytic)  构件 3（摇杆或导杆）的角速度", 90.0)
+    ['ω3 = 1.429 rad/s (= analytic)', '构件 3（摇杆或导杆）的角速度']
+    >>> info_wrap("h = 30.000 mm (= analytic)  行程", 90.0)
+    ['h = 30.000 mm (= analytic)  行程']
+    """
+    lines = wrap(s, width, size)
+    head, sep, gloss = s.rpartition("  ")
+    if len(lines) == 1 or not sep or not head.strip() or not any(ord(c) >= 0x2E80 for c in gloss):
+        return lines
+    return wrap(head, width, size) + wrap(gloss, width, size)
+
+
 def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ()) -> float:
     """Height of the result lines (with their heading) and of the warnings (with theirs) under the protocol."""
     h = 0.0
     for block in (info, warnings):
         if block:
-            n = sum(len(wrap(s, width, INFO_SIZE)) for s in block)
+            n = sum(len(info_wrap(s, width)) for s in block)
             h += 4.0 + INFO_SIZE * 1.6 + n * INFO_SIZE * 1.3
     return h
 
@@ -288,7 +305,7 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
             g.add(head)
         y += INFO_SIZE * 1.6
         for s, step in block:
-            for ln in wrap(s, width, INFO_SIZE):
+            for ln in info_wrap(s, width):
                 if step is None or upto is None or step <= upto:
                     el = _line(dwg, ln, x, y, INFO_SIZE, colour, cls)
                     if step is not None:
