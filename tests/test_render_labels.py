@@ -35,9 +35,9 @@ def reference_wrap(text, width, size, last_reserve=0.0):
             cur += tok
     lines.append(cur.rstrip())
     if last_reserve and len(lines[-1]) and text_width(rich_runs(lines[-1]), size) + last_reserve > width:
-        words = lines[-1].rsplit(" ", 1)
-        if len(words) == 2 and words[0]:
-            lines[-1:] = words
+        toks = _tokens(lines[-1])              # the last token (a formula whole) to a line of its own
+        if len(toks) >= 2 and "".join(toks[:-1]).strip():
+            lines[-1:] = ["".join(toks[:-1]).rstrip(), toks[-1]]
         else:
             lines.append("")
     return lines
