@@ -279,9 +279,10 @@ def problem_motion_svg(sol: Solution) -> str:
     from .cam.diagrams import motion_diagrams_svg
     from .cam.program import parse_program
 
-    g = sol.problem.given
-    unit = "°" if sol.recipe.name == "cam.oscillating" else "mm"
-    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=f"{sol.problem.id}: s–δ, v–δ, a–δ", unit=unit)
+    g, p = sol.problem.given, sol.problem
+    unit = "°" if "arm" in g else "mm"        # an oscillating follower (cam.oscillating, an arm's base radius)
+    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=p.title or p.id, unit=unit,
+                               problem=p.id + ".toml" if p.path else p.id, recipe=p.recipe)
 
 
 def law_diagrams() -> dict[str, str]:
@@ -298,8 +299,9 @@ def law_diagrams() -> dict[str, str]:
                               {"kind": "return", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90}])
         # the Chinese name in its own words with full-width brackets (正弦加速度（摆线）运动规律), as the headings
         # print two languages ("Results  结果")
-        out[f"law_{name}.svg"] = motion_diagrams_svg(prog, 20.0,
-                                                     title=f"{name}  {zh_punct(lw.zh)}, impact: {lw.impact}")
+        out[f"law_{name}.svg"] = motion_diagrams_svg(
+            prog, 20.0, title=f"{name.replace('_', ' ')} law  {zh_punct(lw.zh)}, impact: {lw.impact}",
+            problem="h = 20 mm, 90° each", recipe="cam motion law")
     return out
 
 
