@@ -20,6 +20,8 @@ True
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ..render.charts import Texts, box_of, chart_area, chart_sheet, plain, runs_width, text_el
@@ -34,6 +36,36 @@ PLOT_W = AREA[2] - 16.0 - LEFT                                 # δ = 0 … span
 TOP, PANEL, GAP = AREA[1] + 14.0, 50.0, 24.0                   # first panel's top, a panel's height, between
 INK, GREY, RED = "#1a1a1a", "#8f959c", "#c92a2a"
 LABEL, TICK, NOTE = 3.5, 2.5, 3.0                              # text sizes (mm on paper, ISO 3098 ≥ 2.5)
+
+
+@dataclass(frozen=True)
+class DiagramAxes:
+    """How a cam's s–δ (ψ–δ) diagram beside its construction is drawn, in model mm: the axes' crossing
+    (``x0``, ``y0``), ``per_deg`` mm of δ axis per degree of cam angle, ``per_unit`` mm of ordinate per unit of the
+    stroke ``h`` (mm or degrees), its ``symbol`` (s or ψ) and ``unit`` ("mm" or "°"). The diagram's sheet ticks
+    its axes and states their scales from it.
+
+    >>> a = DiagramAxes(0.0, 0.0, 0.5, 1.0, 16.0, "s", "mm")
+    >>> a.length_axis, a.at(90.0, 16.0)
+    (True, (45.0, 16.0))
+    """
+
+    x0: float
+    y0: float
+    per_deg: float
+    per_unit: float
+    h: float
+    symbol: str
+    unit: str
+
+    @property
+    def length_axis(self) -> bool:
+        """The ordinate is a length (a translating follower's s): the drawing's scale holds for it."""
+        return self.unit == "mm"
+
+    def at(self, delta: float, s: float) -> tuple[float, float]:
+        """The model point of cam angle ``delta`` (deg) and ordinate ``s``."""
+        return (self.x0 + delta * self.per_deg, self.y0 + s * self.per_unit)
 
 
 def _f(x: float) -> str:

@@ -138,4 +138,34 @@ def chart_area() -> Box:
 
 
 __all__ = ["SHEET", "SPEC", "Texts", "axis_factor", "box_of", "chart_area", "chart_sheet", "factor_text", "plain",
-           "runs_width", "text_el"]
+           "runs_width", "text_el", "diagram_axes_marks"]
+
+
+def diagram_axes_marks(dwg: svgwrite.Drawing, view: Any, axes: Any, scale: Any, x: float, y: float) -> Any:
+    """The ticks and the scale statement of a cam's s–δ (ψ–δ) diagram drawn by ``view`` (model → paper):
+    the δ axis labelled in degrees (0°, 90°, … 360°) on a row below its division numbers, the stroke ticked on
+    the ordinate axis (h = 16 mm, ψmax = 20°), and at paper ``(x, y)`` what a printed millimetre means on each
+    axis — ``δ: 360° = 180 mm`` and ``s 1:1`` (a length axis at the drawing's ``scale``, as its scale bar) or
+    ``ψ: 10° = 9 mm`` (an axis in degrees: no drawing scale holds, no scale bar).
+
+    ``axes`` is a :class:`geomcon.cam.diagrams.DiagramAxes`."""
+    from .labels import rich_runs
+    g = dwg.g(id="diagram-axes", class_="diagram-axes")
+    ax, ay = view.xy(*axes.at(0.0, 0.0))
+    for d in (0, 90, 180, 270, 360):
+        px, _ = view.xy(*axes.at(float(d), 0.0))
+        g.add(Element("line", x1=fmt(px), y1=fmt(ay + 5.0), x2=fmt(px), y2=fmt(ay + 6.2), stroke="#1a1a1a",
+                      stroke_width="0.2"))
+        g.add(text_el(f"{d}°", px, ay + 8.8, 2.5, "#1a1a1a", anchor="middle", cls="delta-tick"))
+    hx, hy = view.xy(*axes.at(0.0, axes.h))
+    g.add(Element("line", x1=fmt(hx - 1.5), y1=fmt(hy), x2=fmt(hx), y2=fmt(hy), stroke="#1a1a1a", stroke_width="0.3"))
+    words = f"h = {axes.h:g} mm" if axes.length_axis else f"ψmax = {axes.h:g}°"
+    g.add(text_el(rich_runs(words), hx - 2.2, hy + 0.9, 2.5, "#1a1a1a", anchor="end", cls="h-tick"))
+    mu = view.mu
+    along = f"δ: 360° = {plain(360.0 * axes.per_deg / mu)} mm"
+    if axes.length_axis:
+        up = f"{axes.symbol} {scale}"
+    else:
+        up = f"{axes.symbol}: 10° = {plain(10.0 * axes.per_unit / mu, 3)} mm"
+    g.add(text_el(rich_runs(f"{along};  {up}"), x, y, 3.0, "#1a1a1a", cls="diagram-scales"))
+    return g

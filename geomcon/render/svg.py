@@ -316,7 +316,9 @@ def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | 
     box = grow(content, FIG_MARGIN * mu)
     origin = centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area)
     fig = build_figure(scene, upto, box, origin, mu=mu, keep=_diagram)
-    d = _text_sheet(sheet, replace(block, scale=scale))
+    axes = scene.evaluate(["sd_axes"])["sd_axes"] if "sd_axes" in scene else None
+    length = axes is None or axes.length_axis       # ψ in degrees: no drawing scale holds for the diagram
+    d = _text_sheet(sheet, replace(block, scale=scale if length else None))
     fx0, fy0, _, _ = frame_box(sheet)
     from .protocol import _line
     head = _line(d, text("Displacement diagram", "位移线图", page.lang), fx0 + INSET, fy0 + INSET + 4.0, INFO_SIZE,
@@ -324,7 +326,12 @@ def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | 
     head.attribs["font-weight"] = "bold"
     d.add(head)
     d.add(_figure_group(d, fig))
-    d.add(_scale_bar(d, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
+    below = origin[1] + fig.view.size[1] + 6.0
+    if axes is not None:        # δ ticked in degrees, h on the ordinate, what a printed mm is on each axis
+        from .charts import diagram_axes_marks
+        d.add(diagram_axes_marks(d, fig.view, axes, scale, origin[0], below + (12.0 if length else 0.0)))
+    if length:
+        d.add(_scale_bar(d, fig, origin[0], below, scale))
     return svg_string(d)
 
 
