@@ -280,7 +280,8 @@ def problem_motion_svg(sol: Solution) -> str:
     from .cam.program import parse_program
 
     g, p = sol.problem.given, sol.problem
-    unit = "°" if "arm" in g else "mm"        # an oscillating follower (cam.oscillating, an arm's base radius)
+    swings = p.recipe == "cam.oscillating" or g.get("motion") == "oscillating"     # an arm (200-12, 200-20 too)
+    unit = "°" if swings else "mm"
     return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=p.title or p.id, unit=unit,
                                problem=p.id + ".toml" if p.path else p.id, recipe=p.recipe)
 
