@@ -138,24 +138,58 @@ def chart_area() -> Box:
 
 
 __all__ = ["SHEET", "SPEC", "Texts", "axis_factor", "box_of", "chart_area", "chart_sheet", "factor_text", "plain",
-           "runs_width", "text_el", "diagram_axes_marks"]
+           "runs_width", "text_boxes", "text_el", "diagram_axes_marks"]
 
 
-def diagram_axes_marks(dwg: svgwrite.Drawing, view: Any, axes: Any, scale: Any, x: float, y: float) -> Any:
+def text_boxes(svg: str) -> list[Box]:
+    """The paper box of every text element of an SVG document or fragment (each tspan measured at its own size),
+    as :func:`box_of` estimates it.
+
+    >>> text_boxes('<g><text x="10" y="20" font-size="2.5" text-anchor="middle">90°</text></g>')
+    [(7.85, 18.0, 12.15, 20.625)]
+    """
+    import xml.etree.ElementTree as ET
+    out = []
+    for t in ET.fromstring(svg).iter():
+        if not t.tag.endswith("text"):
+            continue
+        size = float(t.get("font-size") or 3.0)
+        parts = [(t.text or "", size)] + [(u.text or "", float(u.get("font-size") or size)) for u in t
+                                          if u.tag.endswith("tspan")]
+        if not "".join(p for p, _ in parts).strip():
+            continue
+        width = sum(text_width(p, z) for p, z in parts)
+        out.append(box_of(float(t.get("x") or 0.0), float(t.get("y") or 0.0), size, width,
+                          t.get("text-anchor") or "start"))
+    return out
+
+
+def diagram_axes_marks(dwg: svgwrite.Drawing, view: Any, axes: Any, scale: Any, x: float, y: float,
+                       step: int | None = None, avoid: Sequence[Box] = ()) -> Any:
     """The ticks and the scale statement of a cam's s–δ (ψ–δ) diagram drawn by ``view`` (model → paper):
     the δ axis labelled in degrees (0°, 90°, … 360°) on a row below its division numbers, the stroke ticked on
     the ordinate axis (h = 16 mm, ψmax = 20°), and at paper ``(x, y)`` what a printed millimetre means on each
     axis — ``δ: 360° = 180 mm`` and ``s 1:1`` (a length axis at the drawing's ``scale``, as its scale bar) or
     ``ψ: 10° = 9 mm`` (an axis in degrees: no drawing scale holds, no scale bar).
 
-    ``axes`` is a :class:`geomcon.cam.diagrams.DiagramAxes`."""
+    ``axes`` is a :class:`geomcon.cam.diagrams.DiagramAxes`; ``step`` the protocol number of the step drawing the
+    δ axis: the marks show from that step on in the player and the frames, never before the axis. ``avoid``: the
+    boxes of the texts already on the sheet (a diagram beside its cam): a degree label that would cover one is
+    left out, and the statement moves down until it covers none."""
+    placed = Texts(list(avoid))
     from .labels import rich_runs
     g = dwg.g(id="diagram-axes", class_="diagram-axes")
+    if step is not None:
+        g.attribs["data-step"] = str(step)
     ax, ay = view.xy(*axes.at(0.0, 0.0))
     for d in (0, 90, 180, 270, 360):
         px, _ = view.xy(*axes.at(float(d), 0.0))
         g.add(Element("line", x1=fmt(px), y1=fmt(ay + 5.0), x2=fmt(px), y2=fmt(ay + 6.2), stroke="#1a1a1a",
                       stroke_width="0.2"))
+        b = box_of(px, ay + 8.8, 2.5, text_width(f"{d}°", 2.5), "middle")
+        if not placed.free(b):
+            continue
+        placed.take(b)
         g.add(text_el(f"{d}°", px, ay + 8.8, 2.5, "#1a1a1a", anchor="middle", cls="delta-tick"))
     hx, hy = view.xy(*axes.at(0.0, axes.h))
     g.add(Element("line", x1=fmt(hx - 1.5), y1=fmt(hy), x2=fmt(hx), y2=fmt(hy), stroke="#1a1a1a", stroke_width="0.3"))
@@ -167,5 +201,7 @@ def diagram_axes_marks(dwg: svgwrite.Drawing, view: Any, axes: Any, scale: Any, 
         up = f"{axes.symbol} {scale}"
     else:
         up = f"{axes.symbol}: 10° = {plain(10.0 * axes.per_unit / mu, 3)} mm"
-    g.add(text_el(rich_runs(f"{along};  {up}"), x, y, 3.0, "#1a1a1a", cls="diagram-scales"))
+    said = rich_runs(f"{along};  {up}")
+    x, y, _ = placed.place(text_width(said, 3.0), 3.0, [(x, y + 4.0 * k, "start") for k in range(12)])
+    g.add(text_el(said, x, y, 3.0, "#1a1a1a", cls="diagram-scales"))
     return g
