@@ -113,9 +113,9 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
     symbol = symbol or ("ψ" if unit == "°" else "s")
     pieces = _pieces(program, h)
     span = program.segments[-1].end
-    dwg = chart_sheet(title or "Motion diagrams", problem or "—", recipe or "—")
+    dwg = chart_sheet(zh_brackets(title or "Motion diagrams"), problem or "—", recipe or "—")   # 等速（…）
     texts = Texts()
-    head = zh_brackets(f"Motion diagrams  运动线图: {symbol}–δ, d{symbol}/dδ–δ, d²{symbol}/dδ²–δ")
+    head = f"Motion diagrams {symbol}–δ, d{symbol}/dδ–δ, d²{symbol}/dδ²–δ  运动线图"
     dwg.add(text_el(head, AREA[0], AREA[1] + 4.0, LABEL, INK, bold=True, cls="chart-head"))
     texts.take(box_of(AREA[0], AREA[1] + 4.0, LABEL, text_width(head, LABEL) * 1.12))
     impacts = program.impacts(h)
