@@ -177,7 +177,8 @@ def cmd_cycle(args: argparse.Namespace) -> int:
     from .fileio import check_targets, write_all
     from .kinematics.animation import animation_html
     from .kinematics.output import json_text, summary, table_csv
-    from .kinematics.plots import cycle_plots_svg
+    from .kinematics.plots import cycle_plot_sheets
+    from .render.page import sheet_names
     from .kinematics.problem import load_cycle
     from .kinematics.result import solve_cycle
 
@@ -189,8 +190,11 @@ def cmd_cycle(args: argparse.Namespace) -> int:
             warnings.simplefilter("ignore")
             r = solve_cycle(load_cycle(path))
             text = json_text(r) if args.json else summary(r)
-            makers = {"--csv": table_csv, "--svg": cycle_plots_svg, "--html": animation_html}
-            files = {Path(v): makers[k](r) for k, v in outputs.items() if v}
+            makers = {"--csv": table_csv, "--html": animation_html}
+            files = {Path(v): makers[k](r) for k, v in outputs.items() if v and k != "--svg"}
+            if args.svg:                # A4 sheets: FILE, FILE-2 … (five panels a sheet)
+                sheets = cycle_plot_sheets(r)
+                files.update({Path(n): t for n, t in zip(sheet_names(args.svg, len(sheets)), sheets)})
         write_all(files)
     except GeomconError as exc:
         return _fail(path, str(exc))

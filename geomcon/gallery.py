@@ -279,9 +279,11 @@ def problem_motion_svg(sol: Solution) -> str:
     from .cam.diagrams import motion_diagrams_svg
     from .cam.program import parse_program
 
-    g = sol.problem.given
-    unit = "°" if sol.recipe.name == "cam.oscillating" else "mm"
-    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=f"{sol.problem.id}: s–δ, v–δ, a–δ", unit=unit)
+    g, p = sol.problem.given, sol.problem
+    swings = p.recipe == "cam.oscillating" or g.get("motion") == "oscillating"     # an arm (200-12, 200-20 too)
+    unit = "°" if swings else "mm"
+    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=p.title or p.id, unit=unit,
+                               problem=p.id + ".toml" if p.path else p.id, recipe=p.recipe)
 
 
 def law_diagrams() -> dict[str, str]:
@@ -298,8 +300,9 @@ def law_diagrams() -> dict[str, str]:
                               {"kind": "return", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90}])
         # the Chinese name in its own words with full-width brackets (正弦加速度（摆线）运动规律), as the headings
         # print two languages ("Results  结果")
-        out[f"law_{name}.svg"] = motion_diagrams_svg(prog, 20.0,
-                                                     title=f"{name}  {zh_punct(lw.zh)}, impact: {lw.impact}")
+        out[f"law_{name}.svg"] = motion_diagrams_svg(
+            prog, 20.0, title=f"{name.replace('_', ' ')} law  {zh_punct(lw.zh)}, impact: {lw.impact}",
+            problem="h = 20 mm, 90° each", recipe="cam motion law")
     return out
 
 

@@ -7,7 +7,8 @@ from pathlib import Path
 from ..errors import GeomconError
 from .animation import animation_html
 from .output import json_text, table_csv
-from .plots import cycle_plots_svg
+from ..render.page import sheet_names
+from .plots import cycle_plot_sheets
 from .problem import load_cycle
 from .result import solve_cycle
 
@@ -30,10 +31,13 @@ def cycle_gallery(problems_dir: Path) -> tuple[dict[str, str], list[str]]:
         pid = r.problem.id
         files[f"{pid}.json"] = json_text(r)
         files[f"{pid}.csv"] = table_csv(r)
-        files[f"{pid}_motion.svg"] = cycle_plots_svg(r)
+        sheets = cycle_plot_sheets(r)           # A4 sheets: {pid}_motion.svg, {pid}_motion-2.svg …
+        files.update(zip(sheet_names(f"{pid}_motion.svg", len(sheets)), sheets))
         files[f"{pid}_cycle.html"] = animation_html(r)
         shown = ", ".join(f"{k} = {v:.6g}" for k, v in r.answers.items() if k.startswith(("stroke", "K(", "min(")))
-        rows.append(f"| {pid} ([table]({pid}.csv), [s–v–a]({pid}_motion.svg), [animation]({pid}_cycle.html), "
+        rows.append(f"| {pid} ([table]({pid}.csv), [s–v–a]({pid}_motion.svg)"
+                    + "".join(f" [{i}]({n})" for i, n in enumerate(sheet_names(f"{pid}_motion.svg", len(sheets))[1:], 2))
+                    + f", [animation]({pid}_cycle.html), "
                     f"[JSON]({pid}.json)) | {len(r.cycle.phi_deg)} | {shown} |")
     if not rows:
         return files, []

@@ -1,42 +1,69 @@
-"""The table's quantities against the crank angle as stacked SVG panels (s–v–a, ω, ε), the exact extremes
-marked. Deterministic: coordinates written to 0.001 mm of paper.
+"""The table's quantities against the crank angle as stacked panels on A4 portrait sheets (the title block of the
+drawings, five panels a sheet), the exact extremes marked. Headings typeset as the Results print symbols (φDC,
+ωBC, xF with subscripts), numbers without e-notation (an axis of large values carries a ×10³ factor with its
+unit), the min/max notes inside the plot clear of its frame, the curve and each other. Deterministic:
+coordinates written to 0.001 mm of paper.
 
 Examples
 --------
 >>> from .problem import demo_problem
 >>> from .result import solve_cycle
 >>> p = demo_problem(step=5, columns=["C.x", "C.vx"], extremes=["C.x"])
->>> svg = cycle_plots_svg(solve_cycle(p))
->>> svg.startswith("<svg") and svg.count("<polyline") == 2 and "max 120" in svg
-True
+>>> sheets = cycle_plot_sheets(solve_cycle(p))
+>>> len(sheets), sheets[0].count("<polyline") == 2 and "max 120" in sheets[0], 'height="297mm"' in sheets[0]
+(1, True, True)
+>>> ''.join(s for s, _ in heading("DC.angle")), heading("F.vx"), heading("gamma(BC,DC)")[0]
+('φDC (°)', (('v', False), ('Fx', True), (' (mm/s)', False)), ('γ', False))
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-import svgwrite
 
-from .quantities import position_name, value
+from .quantities import parse_name, position_name, value
 from ..check import rounded
+from ..render.charts import Texts, axis_factor, box_of, chart_area, chart_sheet, factor_text, plain, runs_width, text_el
+from ..render.labels import text_width
 from ..render.serial import svg_string
 from ..render.zh import zh_brackets
 from .result import CycleResult, scale_of, unit_of
 
-W, PANEL, GAP, LEFT, TOP = 170.0, 34.0, 13.0, 30.0, 16.0      # mm on paper
-PLOT_W = W - LEFT - 8.0
+AREA = chart_area()                             # (24, 14, 196, 255) on A4 portrait
+LEFT = AREA[0] + 14.0
+PLOT_W = AREA[2] - 2.0 - LEFT
+PANEL, GAP, PER_SHEET = 30.0, 15.0, 5          # a panel's height, from one panel to the next, panels a sheet
+HEAD, LABEL, TICK, NOTE = 3.5, 3.5, 2.5, 2.5   # text sizes, mm on paper (ISO 3098: ≥ 2.5)
 INK, GREY, BLUE, RED = "#1a1a1a", "#8f959c", "#1c5fa8", "#c92a2a"
-FONT = "Noto Sans CJK SC, Noto Sans, DejaVu Sans, sans-serif"
+Runs = tuple[tuple[str, bool], ...]
+
+_SYMBOL = {"angle": "φ", "omega": "ω", "epsilon": "ε", "x": "x", "y": "y", "s": "s", "v": "v", "a": "a",
+           "vx": "v", "vy": "v", "ax": "a", "ay": "a"}
 
 
 def _f(x: float) -> str:
     return f"{x:.3f}"
 
 
-def _g(x: float) -> str:
-    """A tick or value label: 4 significant digits, no '-0'."""
-    s = f"{x:.4g}"
-    return "0" if s in ("-0", "0") else s
+def unit_words(q: str, factor: int = 1) -> str:
+    """The unit of ``q`` as a heading prints it (° for degrees), after the axis factor when there is one."""
+    u = unit_of(q)
+    u = "°" if u == "deg" else u
+    f = factor_text(factor)
+    return f"{f} {u}".strip()
+
+
+def heading(q: str, factor: int = 1) -> Runs:
+    """A panel's heading: the quantity's symbol with its subscript (φDC, ωBC, vFx, γ between two links) and
+    its unit, as typeset runs."""
+    obj, fld = parse_name(q)
+    unit = unit_words(q, factor)
+    tail = f" ({unit})" if unit else ""
+    if obj == "gamma":
+        a, b = fld.split(",")
+        return (("γ", False), (f" between {a} and {b}{tail}", False))
+    sub = obj + (fld[1] if fld in ("vx", "vy", "ax", "ay") else "")
+    return ((_SYMBOL.get(fld, fld), False), (sub, True), (tail, False))
 
 
 def _ticks(lo: float, hi: float) -> list[float]:
@@ -48,78 +75,149 @@ def _ticks(lo: float, hi: float) -> list[float]:
     return [round(first + i * step, 12) for i in range(int((hi - first) / step + 1e-9) + 1)]
 
 
-def cycle_plots_svg(r: CycleResult) -> str:
-    """One panel per table column against the crank angle; the stationary points of a position quantity (and
-    of the positions behind a velocity) marked where they were found."""
-    cols = list(r.problem.columns)
+def _wrap(s: str, width: float, size: float) -> list[str]:
+    """``s`` broken at spaces into lines no wider than ``width`` (bold)."""
+    lines, cur = [], ""
+    for w in s.split(" "):
+        t = f"{cur} {w}" if cur else w
+        if cur and text_width(t, size) * 1.12 > width:
+            lines.append(cur)
+            cur = w
+        else:
+            cur = t
+    return lines + [cur]
+
+
+def _free_of_curve(b: tuple[float, float, float, float], xs: np.ndarray, ys: np.ndarray, gap: float = 0.6) -> bool:
+    inside = (xs > b[0] - gap) & (xs < b[2] + gap) & (ys > b[1] - gap) & (ys < b[3] + gap)
+    return not bool(inside.any())
+
+
+def _note_spot(texts: Texts, s: str, px: float, py: float, frame: tuple[float, float, float, float],
+               xs: np.ndarray, ys: np.ndarray) -> tuple[float, float, str]:
+    """Where a min/max note of the point (px, py) goes: near it, inside ``frame`` (inset 1 mm), clear of the
+    curve and of every text placed before; the nearest such place."""
+    w = text_width(s, NOTE)
+    lim = (frame[0] + 1.0, frame[1] + 1.0, frame[2] - 1.0, frame[3] - 1.0)
+    spots = []
+    for dy in (-1.6, 3.6, -4.6, 6.6, -7.6, 9.6, -10.6, 12.6, -13.6, 15.6, -16.6, 18.6, -19.6, 21.6, -22.6, 24.6):
+        for dx in (1.6, 6.0, 12.0, 20.0, 30.0, 45.0):
+            spots += [(px + dx, py + dy, "start"), (px - dx, py + dy, "end")]
+    # the nearest first: the distance from the point to the middle of the text
+    spots.sort(key=lambda p: math.hypot(p[0] + (w / 2 if p[2] == "start" else -w / 2) - px, p[1] - 0.3 * NOTE - py))
+    for x, y, a in spots:
+        b = box_of(x, y, NOTE, w, a)
+        if lim[0] <= b[0] and b[2] <= lim[2] and lim[1] <= b[1] and b[3] <= lim[3] and texts.free(b) \
+                and _free_of_curve(b, xs, ys):
+            texts.take(b)
+            return x, y, a
+    for x, y, a in spots:                       # no room clear of the curve: inside the frame, clear of texts
+        b = box_of(x, y, NOTE, w, a)
+        if lim[0] <= b[0] and b[2] <= lim[2] and lim[1] <= b[1] and b[3] <= lim[3] and texts.free(b):
+            texts.take(b)
+            return x, y, a
+    x, y, a = spots[0]
+    texts.take(box_of(x, y, NOTE, w, a))
+    return x, y, a
+
+
+def _panel(dwg, texts: Texts, r: CycleResult, q: str, y0: float, x0: float, x1: float) -> None:
     phi = r.cycle.phi_deg
-    height = TOP + len(cols) * (PANEL + GAP) + 4.0
-    dwg = svgwrite.Drawing(size=(f"{_f(W)}mm", f"{_f(height)}mm"), viewBox=f"0 0 {_f(W)} {_f(height)}",
-                           profile="full", debug=False)
-    dwg.attribs["font-family"] = FONT
-    dwg.add(dwg.rect((0, 0), (W, height), fill="#ffffff"))
-    title = f"{r.problem.id}: " + zh_brackets(r.problem.title or "whole cycle")     # Slotting machine（插床）
-    title = title if len(title) <= 80 else title[:79] + "…"
-    dwg.add(dwg.text(title, insert=(8.0, 8.0), font_size=3.6, font_weight="bold", fill=INK))
-    x0, x1 = float(phi[0]), float(phi[-1])
+    sc = scale_of(q, r.problem.mechanism)      # numbers as the files hold them: no last-bit SIMD noise
+    vals = np.array([rounded(float(x), sc) if math.isfinite(x) else math.nan for x in value(r.cycle.state, q)])
+    if q.endswith(".angle"):        # drawn continuous: a link through ±180° does not jump
+        th = np.unwrap(np.radians(vals))
+        vals = np.degrees(th - 2 * np.pi * np.round((th[0] - np.radians(vals[0])) / (2 * np.pi)))
+    finite = vals[np.isfinite(vals)]
+    lo, hi = (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
+    if hi - lo < 1e-12 * max(abs(lo), abs(hi), 1e-300):
+        lo, hi = lo - 1.0, hi + 1.0
+    pad = 0.06 * (hi - lo)
+    lo, hi = lo - pad, hi + pad
+    edge = max(abs(t) for t in _ticks(lo, hi) + [lo, hi])       # the widest tick label decides the factor
+    factor = axis_factor(edge)
+    lo, hi = lo / factor, hi / factor
 
     def X(d: float) -> float:
         return LEFT + (d - x0) / (x1 - x0) * PLOT_W
 
-    for k, q in enumerate(cols):
-        y0 = TOP + k * (PANEL + GAP)
-        sc = scale_of(q, r.problem.mechanism)      # numbers as the files hold them: no last-bit SIMD noise
-        vals = np.array([rounded(float(x), sc) if math.isfinite(x) else math.nan for x in value(r.cycle.state, q)])
-        if q.endswith(".angle"):        # drawn continuous: a link through ±180° does not jump
-            th = np.unwrap(np.radians(vals))
-            vals = np.degrees(th - 2 * np.pi * np.round((th[0] - np.radians(vals[0])) / (2 * np.pi)))
-        finite = vals[np.isfinite(vals)]
-        lo, hi = (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
-        if hi - lo < 1e-12 * max(abs(lo), abs(hi), 1e-300):
-            lo, hi = lo - 1.0, hi + 1.0
-        pad = 0.06 * (hi - lo)
-        lo, hi = lo - pad, hi + pad
+    def Y(v: float) -> float:
+        return y0 + PANEL - (v / factor - lo) / (hi - lo) * PANEL
 
-        def Y(v: float, y0=y0, lo=lo, hi=hi) -> float:
-            return y0 + PANEL - (v - lo) / (hi - lo) * PANEL
+    k = r.problem.columns.index(q)
+    g = dwg.add(dwg.g(id=f"panel-{k + 1}"))
+    g.add(dwg.rect((LEFT, y0), (PLOT_W, PANEL), fill="none", stroke=GREY, stroke_width=0.2))
+    for t in _ticks(lo, hi):
+        g.add(dwg.line((LEFT, round(Y(t * factor), 3)), (LEFT + PLOT_W, round(Y(t * factor), 3)), stroke="#e3e6ea",
+                       stroke_width=0.15))
+        s = plain(t)
+        x, y, a = texts.place(text_width(s, TICK), TICK, [(LEFT - 1.5, Y(t * factor) + 0.9, "end")])
+        g.add(text_el(s, x, y, TICK, INK, anchor=a))
+    if lo < 0 < hi:
+        g.add(dwg.line((LEFT, round(Y(0.0), 3)), (LEFT + PLOT_W, round(Y(0.0), 3)), stroke=GREY, stroke_width=0.25))
+    for t in _ticks(x0, x1):
+        g.add(dwg.line((round(X(t), 3), y0 + PANEL), (round(X(t), 3), y0 + PANEL + 1.0), stroke=INK, stroke_width=0.2))
+        s = plain(t)
+        x, y, a = texts.place(text_width(s, TICK), TICK, [(X(t), y0 + PANEL + 4.0, "middle")])
+        g.add(text_el(s, x, y, TICK, INK, anchor=a))
+    runs = heading(q, factor)
+    g.add(text_el(runs, LEFT, y0 - 2.0, LABEL, INK, cls="panel-head"))
+    texts.take(box_of(LEFT, y0 - 2.0, LABEL, runs_width(runs, LABEL)))
+    pts = [(round(X(d), 3), round(Y(v), 3)) for d, v in zip(phi, vals) if math.isfinite(v)]
+    g.add(dwg.polyline(pts, fill="none", stroke=BLUE, stroke_width=0.45))
+    xs, ys = np.array([p[0] for p in pts]), np.array([p[1] for p in pts])
+    base = position_name(q)
+    unit = unit_words(q)
+    for s in r.stationary:
+        if s.quantity != base:
+            continue
+        if base == q:
+            v = rounded(s.value, sc)
+        else:
+            v = 0.0 if q.split(".")[1] in ("vx", "vy", "omega", "v") else None
+            if v is None:
+                continue
+        at = rounded(s.phi_deg, 360.0)
+        if not (x0 <= at <= x1):
+            continue
+        g.add(dwg.circle((round(X(at), 3), round(Y(v), 3)), r=0.8, fill=RED))
+        if base == q:
+            note = f"{s.kind} {plain(v)}{'' if unit == '°' else ' '}{unit} at φ = {at:.3f}°"
+            tx, ty, a = _note_spot(texts, note, X(at), Y(v), (LEFT, y0, LEFT + PLOT_W, y0 + PANEL), xs, ys)
+            g.add(text_el(note, tx, ty, NOTE, RED, anchor=a, cls="extreme"))
 
-        g = dwg.add(dwg.g(id=f"panel-{k + 1}"))
-        g.add(dwg.rect((LEFT, y0), (PLOT_W, PANEL), fill="none", stroke=GREY, stroke_width=0.2))
-        for t in _ticks(lo, hi):
-            g.add(dwg.line((LEFT, Y(t)), (LEFT + PLOT_W, Y(t)), stroke="#e3e6ea", stroke_width=0.15))
-            g.add(dwg.text(_g(t), insert=(LEFT - 1.5, Y(t) + 1.0), font_size=2.6, text_anchor="end", fill=INK))
-        if lo < 0 < hi:
-            g.add(dwg.line((LEFT, Y(0.0)), (LEFT + PLOT_W, Y(0.0)), stroke=GREY, stroke_width=0.25))
-        for t in _ticks(x0, x1):
-            g.add(dwg.line((X(t), y0 + PANEL), (X(t), y0 + PANEL + 1.0), stroke=INK, stroke_width=0.2))
-            g.add(dwg.text(_g(t), insert=(X(t), y0 + PANEL + 4.0), font_size=2.6, text_anchor="middle", fill=INK))
-        unit = unit_of(q)
-        g.add(dwg.text(f"{q} ({unit})" if unit else q, insert=(LEFT, y0 - 1.5), font_size=3.2, fill=INK))
-        pts = [(round(X(d), 3), round(Y(v), 3)) for d, v in zip(phi, vals) if math.isfinite(v)]
-        g.add(dwg.polyline(pts, fill="none", stroke=BLUE, stroke_width=0.45))
-        base = position_name(q)
-        shown = 0
-        for s in r.stationary:
-            if s.quantity != base:
-                continue
-            if base == q:
-                v = rounded(s.value, sc)
-            else:
-                v = 0.0 if q.split(".")[1] in ("vx", "vy", "omega", "v") else None
-                if v is None:
-                    continue
-            at = rounded(s.phi_deg, 360.0)
-            if not (x0 <= at <= x1):
-                continue
-            g.add(dwg.circle((X(at), Y(v)), r=0.8, fill=RED))
-            if base == q:
-                right = X(at) > LEFT + 0.6 * PLOT_W        # labels on the right half read leftwards
-                dy = -1.2 if s.kind == "max" or Y(v) > y0 + 4.0 else 3.4
-                shown += 1
-                dy += 3.2 * ((shown - 1) % 2) * (1 if dy > 0 else -1) if right else 0.0
-                g.add(dwg.text(f"{s.kind} {_g(v)} at {at:.3f}°",
-                               insert=(X(at) + (-1.4 if right else 1.4), Y(v) + dy), font_size=2.6, fill=RED,
-                               text_anchor="end" if right else "start"))
-    dwg.add(dwg.text("crank angle φ (°)", insert=(LEFT + PLOT_W, height - 1.5), font_size=2.8, text_anchor="end",
-                     fill=INK))
-    return svg_string(dwg)
+
+def cycle_plot_sheets(r: CycleResult) -> list[str]:
+    """One panel per table column against the crank angle, :data:`PER_SHEET` panels (at most) on each A4
+    portrait sheet, the stationary points of a position quantity (and of the positions behind a velocity)
+    marked where they were found."""
+    cols = list(r.problem.columns)
+    count = max(1, math.ceil(len(cols) / PER_SHEET))
+    per = math.ceil(len(cols) / count) if cols else 0
+    phi = r.cycle.phi_deg
+    x0, x1 = float(phi[0]), float(phi[-1])
+    title = zh_brackets(r.problem.title or "Whole cycle")     # Slotting machine（插床）
+    problem = r.problem.id + ".toml"
+    out = []
+    for n in range(count):
+        dwg = chart_sheet(title, problem, "cycle", n + 1, count)
+        texts = Texts()
+        y = AREA[1] + 4.0
+        head = title if n == 0 else f"{title} (continued, {n + 1}/{count})"
+        for line in _wrap(head, AREA[2] - AREA[0], HEAD):       # never cut: a long title on a second line
+            dwg.add(text_el(line, AREA[0], y, HEAD, INK, bold=True, cls="chart-head"))
+            texts.take(box_of(AREA[0], y, HEAD, text_width(line, HEAD) * 1.12))
+            y += 5.0
+        y0 = y + 5.0
+        for q in cols[n * per:(n + 1) * per]:
+            _panel(dwg, texts, r, q, y0, x0, x1)
+            y0 += PANEL + GAP
+        label = "crank angle φ (°)  曲柄转角"
+        dwg.add(text_el(label, LEFT + PLOT_W, y0 - GAP + 9.0, NOTE, INK, anchor="end"))
+        out.append(svg_string(dwg))
+    return out
+
+
+def cycle_plots_svg(r: CycleResult) -> str:
+    """Sheet 1 of :func:`cycle_plot_sheets` (the name the gallery's index and older scripts use)."""
+    return cycle_plot_sheets(r)[0]

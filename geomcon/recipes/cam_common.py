@@ -28,6 +28,7 @@ import numpy as np
 from ..cam.oscillating import ArmMotion, levels, segment_motion, segment_motion1
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, Profile, STRICT_TOLERANCE_REL, TOLERANCE_REL, numpy_is_libm,
                            backward_jumps)
+from ..cam.diagrams import DiagramAxes
 from ..cam.program import Program, parse_program
 from ..errors import NotAMechanism, ProblemError
 from ..geometry import Point, Polyline, Segment, circle, rotate, segment
@@ -253,6 +254,7 @@ def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, wid
         return Point(origin.x + d * per_deg, origin.y + s * scale)
 
     top = h * scale * 1.25
+    sc.given("sd_axes", DiagramAxes(origin.x, origin.y, per_deg, scale, h, symbol, unit), visible=False)
     sc.add("sd_delta_axis", segment, origin, at(372.0, 0.0), style="given", role=Role.ANNOTATION,
            caption=(f"Displacement diagram {symbol}–δ: δ axis, 360° = {width:.4g} mm",     # on the cam's sheet or
                     f"作位移线图 {symbol}–δ:δ 轴,360° 对应 {width:.4g} mm"))            # the next: no "beside"

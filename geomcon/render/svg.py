@@ -257,8 +257,14 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     dwg.defs.add(dwg.style(CSS))
     dwg.attribs["class"] = "sheet"
     dwg.add(step_captions_group(dwg, scene, sl.caption, lang, upto))
-    dwg.add(_figure_group(dwg, fig))
+    drawn = dwg.add(_figure_group(dwg, fig))
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
+    if apart is None and "sd_axes" in scene:       # the s–δ diagram beside the cam: its axes ticked alike
+        from .charts import diagram_axes_marks, text_boxes
+        axes = scene.evaluate(["sd_axes"])["sd_axes"]
+        ax, ay = fig.view.xy(*axes.at(0.0, 0.0))
+        dwg.add(diagram_axes_marks(dwg, fig.view, axes, scale, ax, ay + 15.0, _step_number(fig, "sd_delta_axis"),
+                                   text_boxes(svg_string(drawn))))
     if sl.info_here and (info or warnings):
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
@@ -317,16 +323,29 @@ def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | 
     box = grow(content, FIG_MARGIN * mu)
     origin = centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area)
     fig = build_figure(scene, upto, box, origin, mu=mu, keep=_diagram)
-    d = _text_sheet(sheet, replace(block, scale=scale))
+    axes = scene.evaluate(["sd_axes"])["sd_axes"] if "sd_axes" in scene else None
+    length = axes is None or axes.length_axis       # ψ in degrees: no drawing scale holds for the diagram
+    d = _text_sheet(sheet, replace(block, scale=scale if length else None))
     fx0, fy0, _, _ = frame_box(sheet)
     from .protocol import _line
     head = _line(d, text("Displacement diagram", "位移线图", page.lang), fx0 + INSET, fy0 + INSET + 4.0, INFO_SIZE,
                  INK, "diagram-head")
     head.attribs["font-weight"] = "bold"
     d.add(head)
-    d.add(_figure_group(d, fig))
-    d.add(_scale_bar(d, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
+    drawn = d.add(_figure_group(d, fig))
+    below = origin[1] + fig.view.size[1] + 6.0
+    if axes is not None:        # δ ticked in degrees, h on the ordinate, what a printed mm is on each axis
+        from .charts import diagram_axes_marks, text_boxes
+        d.add(diagram_axes_marks(d, fig.view, axes, scale, origin[0], below + (12.0 if length else 0.0),
+                                 _step_number(fig, "sd_delta_axis"), text_boxes(svg_string(drawn))))
+    if length:
+        d.add(_scale_bar(d, fig, origin[0], below, scale))
     return svg_string(d)
+
+
+def _step_number(fig: Figure, key: str) -> int | None:
+    """The protocol number of step ``key`` as drawn in ``fig`` (None when the figure does not draw it)."""
+    return next((sd.number for _, groups in fig.layers() for sd in groups if sd.key == key), None)
 
 
 def _text_sheet(sheet: Sheet, block: TitleBlock) -> svgwrite.Drawing:
