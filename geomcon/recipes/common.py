@@ -471,7 +471,16 @@ def near_flag_k(ax: float, ay: float, c1x: float, c1y: float, c2x: float, c2y: f
     return 1.0 if (ux * (ay - c1y) - uy * (ax - c1x)) * (ux * (dy - c1y) - uy * (dx - c1x)) > 0 else 0.0
 
 
-for _op, _kinds, _out, _k in ((length, "PP", "x", length_k), (angle_deg, "PPP", "x", angle_deg_k),
+def pressure_deg_k(bx: float, by: float, cx: float, cy: float, px: float, py: float, dx: float, dy: float) -> float:
+    """:func:`pressure_deg` on floats (the rod ``b − c`` a Point, its angle with the guide's direction measured
+    from the origin, as :func:`pressure_on_guide_deg` does)."""
+    wx, wy = point_k(bx - cx, by - cy)
+    a = math.degrees(abs(_signed_angle_xy(wx - 0.0, wy - 0.0, dx - 0.0, dy - 0.0)))
+    return min(a, 180.0 - a)
+
+
+for _op, _kinds, _out, _k in ((length, "PP", "x", length_k), (pressure_deg, "PPL", "x", pressure_deg_k),
+                              (pressure_deg, "PPR", "x", pressure_deg_k), (angle_deg, "PPP", "x", angle_deg_k),
                               (transmission_deg, "PPP", "x", transmission_deg_k),
                               (along_line, "Lx", "P", along_line_k), (along_line, "Lxx", "P", along_line_k),
                               (along_line, "Rx", "P", along_ray_k), (along_line, "Rxx", "P", along_ray_k),
