@@ -119,7 +119,7 @@ def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...])
         found = _taped_values(r, given)
         if found is not None:
             tape, memo = found
-            run = tape.program(keys)
+            run = tape.program(keys, values_only=True)
             if run is not None:
                 run(memo)
                 return {k: memo[k] for k in keys}

@@ -63,12 +63,14 @@ def order_of(rec: dict[str, tuple], keys: Iterable[str]) -> list[str]:
     return [k for k in rec if k in need]
 
 
-def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset[str]) -> Callable[[dict], Any] | None:
+def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset[str], *,
+                 pending: bool = True) -> Callable[[dict], Any] | None:
     """A function ``run(memo)`` that computes the steps ``keys`` need and stores ``keys`` in ``memo``, the
     steps named in ``inputs`` being read from ``memo``; None when a needed step is not a plain call.
 
     ``run`` returns None, or ``(fill, values)`` when it computed steps besides ``keys``: ``fill(memo, values)``
-    stores those too (their objects made then, in the plan's order), for a scene that is read further.
+    stores those too (their objects made then, in the plan's order), for a scene that is read further
+    (without ``pending``, for a caller that only reads ``keys``, it always returns None).
 
     A step that fails raises (the caller evaluates step by step again to report it); a branch step whose
     intersection is empty raises :class:`~geomcon.errors.NoIntersection`."""
@@ -105,7 +107,7 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     body = g.body
     if req:
         body.append(f"    memo.update(zip(_REQ, ({', '.join(g.value(k) for k in req)},)))")
-    if rest:
+    if rest and pending:
         names = sorted({v for k in computed for v in g.reads(k)}, key=_natural)
         body.append(f"    return _FILL, ({', '.join(names)},)")
         fill = [f"def fill(memo, vals):", f"    {', '.join(names)}, = vals",
