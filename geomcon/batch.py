@@ -220,8 +220,7 @@ def _solution(rec: Recipe, problem: Problem, warnings: list[str], out: list, tap
               pending: Any) -> Solution:
     """The :class:`~geomcon.solve.Solution` of a replayed variant holding the answers already read, for its
     twin checks (its scene is the replay's, and completes itself when anything else is asked of it)."""
-    sc = Scene.replayed(tape, memo)
-    sc._pending = pending
+    sc = Scene.replayed(tape, memo, pending)
     given = problem.given
     sc.rebuild_with(lambda: rec.construct(given).scene)
     sol = Solution(problem, rec, Construction(sc, tape.answers, tape.points, tape.solutions, (), tape.no_solution),

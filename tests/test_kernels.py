@@ -173,3 +173,26 @@ def test_replay_on_kernels_is_the_scene(recipe, variant) -> None:
         if want is not None:
             assert all(same_value(want[k], replayed[k]) for k in keys)
             assert c.scene.stats["steps_evaluated"] >= len(keys)
+
+
+@pytest.mark.parametrize("recipe,given,key", [
+    ("crank_slider.design_by_K", {"K": 1.5, "H": 50.0, "e": 20.0}, "AB"),
+    ("crank_rocker.design_by_K", {"K": 1.25, "CD": 290.0, "psi": 32.0, "BC": 260.0}, "AB_1"),
+    ("crank_slider.extremes", {"AB": 120.0, "BC": 250.0, "e": 60.0}, "H"),
+])
+def test_objects_made_when_read(recipe, given, key) -> None:
+    """A replay asked for one answer leaves the other steps' objects unmade; when the scene is read further
+    they are stored, in the plan's order, with the values of the step-by-step path on objects."""
+    r = get_recipe(recipe)
+    for _ in range(3):
+        construct_taped(r, given).scene.evaluate((key,))
+    sc = construct_taped(r, given).scene
+    got = sc.evaluate((key,))[key]
+    assert sc._pending is not None and key in sc._memo          # the rest not stored yet
+    assert sc.is_evaluated(key) and sc._pending is None          # a read of the memo settles it
+    from geomcon.plan import planned
+    ref = planned(r.name, r.construct, given).scene
+    assert same_value(ref.evaluate((key,))[key], got)
+    mine = [(k, v) for k, v in sc._memo.items() if k[:1] != "§"]
+    assert [k for k, _ in mine] == list(ref._memo)
+    assert all(same_value(ref._memo[k], v) for k, v in mine)

@@ -184,22 +184,22 @@ class Scene:
                 self._keep = known
 
     @classmethod
-    def replayed(cls, tape: Any, memo: dict[str, Any]) -> Scene:
+    def replayed(cls, tape: Any, memo: dict[str, Any], pending: tuple | None = None) -> Scene:
         """A lean scene following the plan of ``tape`` (:mod:`.tape`) made of its recorded steps, its memo
-        holding the tape's own steps. Its captions, labels and step objects are the recording's: it completes itself
-        (:meth:`rebuild_with`) before any of them is read."""
+        holding the tape's own steps (and, after a compiled plan ran on it, the steps asked for: ``pending`` is
+        what that run returned, :meth:`settle`). Its captions, labels and step objects are the recording's: it
+        completes itself (:meth:`rebuild_with`) before any of them is read."""
         sc = cls.__new__(cls)
         sc.title, sc.lean, sc._rec, sc._step, sc._memo = tape.title, True, tape.rec, {}, memo
         sc._skip, sc._sig, sc._learn, sc._keep, sc._rebuild = tape.skip, tape.sig, None, tape.keep, None
-        sc._stale, sc._tape, sc._pending = True, tape, None
+        sc._stale, sc._tape, sc._pending = True, tape, pending
         return sc
 
-    def settle(self, pending: tuple | None = None) -> None:
+    def settle(self) -> None:
         """Store in the memo the steps a compiled replay computed besides those asked for (their objects made
-        now, in the plan's order): what it returned as ``pending`` (``(fill, values)``), or what it left here.
-        Everything that reads the memo beyond an evaluation's answers settles first."""
-        if pending is not None:
-            self._pending = pending
+        now, in the plan's order; the run left them as ``(fill, values)``, :func:`.compiled.compile_plan`).
+        Everything that reads the memo beyond an evaluation's answers settles first: ``stats`` counts them, a
+        later evaluation reuses them, a drawing completes the scene around them."""
         if self._pending is not None:
             fill, values = self._pending
             self._pending = None
