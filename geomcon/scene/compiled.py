@@ -108,9 +108,9 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     if req:
         body.append(f"    memo.update(zip(_REQ, ({', '.join(g.value(k) for k in req)},)))")
     if rest and pending:
-        names = sorted({v for k in computed for v in g.reads(k)}, key=_natural)
-        body.append(f"    return _FILL, ({', '.join(names)},)")
-        fill = [f"def fill(memo, vals):", f"    {', '.join(names)}, = vals",
+        names = ", ".join(sorted({v for k in computed for v in g.reads(k)}, key=_natural))
+        body.append(f"    return _FILL, ({names}{',' if names else ''})")
+        fill = ["def fill(memo, vals):", f"    {names}, = vals" if names else "    pass",
                 "    req = [memo.pop(k) for k in _REQ]"]
         at = {k: j for j, k in enumerate(req)}
         fill.append(f"    memo.update(zip(_ALL, ({', '.join(f'req[{at[k]}]' if k in at else g.value(k) for k in computed)},)))")
