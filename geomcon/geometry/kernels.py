@@ -7,9 +7,9 @@ and unit direction), a ray ``ox, oy, dx, dy``, a circle ``cx, cy, r``, the candi
 flat tuple ``()``, ``(x, y)`` or ``(x1, y1, x2, y2)``; a number is itself. The objects are made only for what
 is read (an answer that is a point, a later drawing).
 
-A kernel is the operation, not a closed form: the same floating-point operations in the same order (the same
-bits; the object forms that are float code already call the kernel, so that the arithmetic is one code), and
-every check the object form makes — a coordinate that is not finite, a zero-length direction, a tolerance
+A kernel is the operation, not a closed form: the same floating-point operations in the same order, line for
+line (the same bits: ``tests/test_kernels.py`` holds each kernel to its object form over random and
+near-degenerate arguments), and every check the object form makes — a coordinate that is not finite, a zero-length direction, a tolerance
 decision, a branch rule's tie — raises as it does. A case the kernel leaves to the object form (parallel lines,
 coincident circles: rare, and worded by the step) raises :class:`Fallback`; the plan then evaluates step by
 step on objects, which raises or answers as before.
@@ -259,7 +259,8 @@ def distance_k(ax: float, ay: float, bx: float, by: float) -> float:
 # ------------------------------------------------------------------------------------------- circles
 def circle_through3_k(ax: float, ay: float, bx: float, by: float, cx: float, cy: float
                       ) -> tuple[float, float, float]:
-    """``circle_through3(a, b, c)``: two perpendicular bisectors met (the object form calls this)."""
+    """``circle_through3(a, b, c)``: two perpendicular bisectors met; collinear points are left to the object
+    form (it words the refusal)."""
     abx, aby = bx - ax, by - ay
     cbx, cby = cx - bx, cy - by
     cax, cay = cx - ax, cy - ay
@@ -295,7 +296,7 @@ def thales_circle_k(ax: float, ay: float, bx: float, by: float) -> tuple[float, 
 
 
 def line_circle_k(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float) -> tuple:
-    """``line_circle(line, circle)``: the flat candidates (the object form calls this)."""
+    """``line_circle(line, circle)``: the flat candidates."""
     wx, wy = px - cx, py - cy               # w: local frame, the circle's centre at the origin
     t0 = -(wx * ux + wy * uy)                # −w·u: parameter of the foot of the perpendicular from the centre
     p = ux * wy - uy * wx                    # u × w: signed distance of the centre's foot
@@ -316,7 +317,7 @@ def line_circle_k(px: float, py: float, ux: float, uy: float, cx: float, cy: flo
 
 
 def circle_circle_k(ox: float, oy: float, r1: float, qx: float, qy: float, r2: float) -> tuple:
-    """``circle_circle(c1, c2)``: the flat candidates (the object form calls this); coincident circles raise
+    """``circle_circle(c1, c2)``: the flat candidates; coincident circles raise
     :class:`~geomcon.errors.Coincident`."""
     vx, vy = qx - ox, qy - oy                # local frame: the first centre at the origin
     d = _hypot(vx, vy)
