@@ -74,3 +74,10 @@ def test_plan_of_constants_only() -> None:
     fill, values = run(memo)
     fill(memo, values)
     assert memo == {"A": Point(1.0, 2.0), "B": Point(1.0, 2.0)} and list(memo) == ["A", "B"]
+
+
+def test_empty_request_compiles() -> None:
+    """A request of no steps (a recipe whose answers all come from the tape's own arithmetic) is a plan too."""
+    run = compile_plan({}, (), frozenset())
+    memo: dict = {}
+    assert run(memo) is None and memo == {}

@@ -116,7 +116,7 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
         fill.append(f"    memo.update(zip(_ALL, ({', '.join(f'req[{at[k]}]' if k in at else g.value(k) for k in computed)},)))")
         exec(compile("\n".join(fill) + "\n", "<geomcon taped plan: fill>", "exec"), ns)
         ns["_FILL"] = ns["fill"]
-    source = "def run(memo):\n" + "\n".join(body) + "\n"
+    source = "def run(memo):\n" + "\n".join(body or ["    pass"]) + "\n"       # an empty request: nothing
     exec(compile(source, "<geomcon taped plan>", "exec"), ns)
     return ns["run"]
 
