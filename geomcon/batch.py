@@ -187,9 +187,9 @@ def _BUILT(s: Solution) -> list[str]:
     return s.construction_warnings
 
 
-def _replayed(rec: Recipe, given: dict[str, Any]) -> tuple[list, Any, dict] | None:
+def _replayed(rec: Recipe, given: dict[str, Any]) -> tuple[list, Any, dict, Any] | None:
     """The valid candidates ``[(index, answers), …]`` of ``given`` (as :class:`~geomcon.solve.Solution` reads
-    them), the tape and its memo, by the recipe's current tape and the compiled plan of its answer steps; None
+    them), the tape, its memo and what the compiled plan left pending (:meth:`~geomcon.scene.Scene.settle`), by the recipe's current tape and the compiled plan of its answer steps; None
     when the tape does not cover these givens or a value needs the full solve to be judged or refused."""
     try:
         found = taped_values(rec, given)
@@ -203,7 +203,7 @@ def _replayed(rec: Recipe, given: dict[str, Any]) -> tuple[list, Any, dict] | No
     if run is None:
         return None
     try:
-        run(memo)
+        pending = run(memo)        # the other steps' objects are made only if the scene is read further
     except Exception:              # the single solve evaluates step by step and words the failure
         return None
     out = read_candidates(rec, table, memo)
@@ -213,13 +213,14 @@ def _replayed(rec: Recipe, given: dict[str, Any]) -> tuple[list, Any, dict] | No
         for v in sol.values():
             if not (type(v) is float and v - v == 0.0 or type(v) is str):   # finite (the common case) or a word
                 return None
-    return out, tape, memo
+    return out, tape, memo, pending
 
 
-def _solution(rec: Recipe, problem: Problem, warnings: list[str], out: list, tape: Any, memo: dict) -> Solution:
+def _solution(rec: Recipe, problem: Problem, warnings: list[str], out: list, tape: Any, memo: dict,
+              pending: Any) -> Solution:
     """The :class:`~geomcon.solve.Solution` of a replayed variant holding the answers already read, for its
     twin checks (its scene is the replay's, and completes itself when anything else is asked of it)."""
-    sc = Scene.replayed(tape, memo)
+    sc = Scene.replayed(tape, memo, pending)
     given = problem.given
     sc.rebuild_with(lambda: rec.construct(given).scene)
     sol = Solution(problem, rec, Construction(sc, tape.answers, tape.points, tape.solutions, (), tape.no_solution),

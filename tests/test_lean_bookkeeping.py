@@ -61,3 +61,23 @@ def test_folded_only_is_the_filter_after(closing) -> None:
     every = rocker_design(1.25, 290.0, c1, c2, **closing)
     assert any(not s["c1_folded"] for s in every)            # the filter has something to drop
     assert rocker_design(1.25, 290.0, c1, c2, c1_folded_only=True, **closing) == [s for s in every if s["c1_folded"]]
+
+
+def test_plan_of_constants_only() -> None:
+    """A plan whose other steps are constants (nothing computed to pass on) still compiles and fills."""
+    meta = (("", ""), None, "", None, True, "")
+    from geomcon.scene.step import constant
+    rec = {"A": (constant, (Point(1.0, 2.0),), {}, 0, None, (), False, [], meta),
+           "B": (constant, (Ref("A"),), {}, 1, None, (), False, ["A"], meta)}
+    run = compile_plan(rec, ("B",), frozenset())
+    memo: dict = {}
+    fill, values = run(memo)
+    fill(memo, values)
+    assert memo == {"A": Point(1.0, 2.0), "B": Point(1.0, 2.0)} and list(memo) == ["A", "B"]
+
+
+def test_empty_request_compiles() -> None:
+    """A request of no steps (a recipe whose answers all come from the tape's own arithmetic) is a plan too."""
+    run = compile_plan({}, (), frozenset())
+    memo: dict = {}
+    assert run(memo) is None and memo == {}

@@ -110,6 +110,7 @@ class Variant:
         for k, r in rec.items():
             if k not in tainted and any(d in tainted for d in r[7]):
                 tainted.add(k)
+        sc.settle()                  # a compiled replay's other steps in its memo before it is copied
         other = Scene.__new__(Scene)
         other.__dict__.update(sc.__dict__)
         other._rec = {**rec, **changed} if changed else rec

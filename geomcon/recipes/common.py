@@ -19,6 +19,7 @@ from typing import Any, Mapping
 from .. import tolerance as _tolerance                  # REL_TOL read at run time, as the geometry reads it
 from ..analytic.design_by_k import rocker_design_valid
 from ..geometry import Line, Point, angle_at, circle, point_along, segment
+from ..geometry.kernels import point_k, register
 from ..geometry.measure import _signed_angle_xy
 from ..scene import Ref, Role, Scene
 from ..scene import marks
@@ -118,7 +119,7 @@ def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...])
         found = _taped_values(r, given)
         if found is not None:
             tape, memo = found
-            run = tape.program(keys)
+            run = tape.program(keys, values_only=True)
             if run is not None:
                 run(memo)
                 return {k: memo[k] for k in keys}
@@ -418,3 +419,72 @@ def best_index(*flat: Any) -> int | None:
 def pick(i: int | None, *values: Any) -> Any:
     """The ``i``-th value (None when there is no valid candidate)."""
     return None if i is None else values[i]
+
+
+# ----------------------------------------------------------------------------------------- float kernels
+def length_k(ax: float, ay: float, bx: float, by: float) -> float:
+    """:func:`length` on floats (:mod:`geomcon.geometry.kernels`)."""
+    return math.hypot(bx - ax, by - ay)
+
+
+def angle_deg_k(ox: float, oy: float, ax: float, ay: float, bx: float, by: float) -> float:
+    """:func:`angle_deg` on floats."""
+    return math.degrees(abs(_signed_angle_xy(ax - ox, ay - oy, bx - ox, by - oy)))
+
+
+def transmission_deg_k(bx: float, by: float, cx: float, cy: float, dx: float, dy: float) -> float:
+    """:func:`transmission_deg` on floats."""
+    g = math.degrees(abs(_signed_angle_xy(bx - cx, by - cy, dx - cx, dy - cy)))
+    return min(g, 180.0 - g)
+
+
+def along_line_k(px: float, py: float, dx: float, dy: float, t: float, sign: float = 1.0) -> tuple[float, float]:
+    """:func:`along_line` of a Line on floats."""
+    s = sign * t
+    return point_k(px + dx * s, py + dy * s)
+
+
+def along_ray_k(ox: float, oy: float, dx: float, dy: float, t: float, sign: float = 1.0) -> tuple[float, float]:
+    """:func:`along_line` of a Ray on floats (``ray.at(sign·t)``)."""
+    sx, sy = point_k(dx * (sign * t), dy * (sign * t))
+    return point_k(ox + sx, oy + sy)
+
+
+def half_difference_k(ax: float, ay: float, px: float, py: float, qx: float, qy: float) -> float:
+    """:func:`half_difference` on floats."""
+    return abs(math.hypot(qx - ax, qy - ay) - math.hypot(px - ax, py - ay)) / 2.0
+
+
+def half_sum_k(ax: float, ay: float, px: float, py: float, qx: float, qy: float) -> float:
+    """:func:`half_sum` on floats."""
+    return (math.hypot(px - ax, py - ay) + math.hypot(qx - ax, qy - ay)) / 2.0
+
+
+def folded_flag_k(ax: float, ay: float, px: float, py: float, qx: float, qy: float) -> float:
+    """:func:`folded_flag` on floats."""
+    return 1.0 if math.hypot(px - ax, py - ay) < math.hypot(qx - ax, qy - ay) else 0.0
+
+
+def near_flag_k(ax: float, ay: float, c1x: float, c1y: float, c2x: float, c2y: float, dx: float, dy: float) -> float:
+    """:func:`near_flag` on floats."""
+    ux, uy = c2x - c1x, c2y - c1y
+    return 1.0 if (ux * (ay - c1y) - uy * (ax - c1x)) * (ux * (dy - c1y) - uy * (dx - c1x)) > 0 else 0.0
+
+
+def pressure_deg_k(bx: float, by: float, cx: float, cy: float, px: float, py: float, dx: float, dy: float) -> float:
+    """:func:`pressure_deg` on floats (the rod ``b − c`` a Point, its angle with the guide's direction measured
+    from the origin, as :func:`pressure_on_guide_deg` does)."""
+    wx, wy = point_k(bx - cx, by - cy)
+    a = math.degrees(abs(_signed_angle_xy(wx - 0.0, wy - 0.0, dx - 0.0, dy - 0.0)))
+    return min(a, 180.0 - a)
+
+
+for _op, _kinds, _out, _k in ((length, "PP", "x", length_k), (pressure_deg, "PPL", "x", pressure_deg_k),
+                              (pressure_deg, "PPR", "x", pressure_deg_k), (angle_deg, "PPP", "x", angle_deg_k),
+                              (transmission_deg, "PPP", "x", transmission_deg_k),
+                              (along_line, "Lx", "P", along_line_k), (along_line, "Lxx", "P", along_line_k),
+                              (along_line, "Rx", "P", along_ray_k), (along_line, "Rxx", "P", along_ray_k),
+                              (half_difference, "PPP", "x", half_difference_k),
+                              (half_sum, "PPP", "x", half_sum_k), (folded_flag, "PPP", "x", folded_flag_k),
+                              (near_flag, "PPPP", "x", near_flag_k)):
+    register(_op, _kinds, _out, _k)

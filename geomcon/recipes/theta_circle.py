@@ -19,10 +19,14 @@ from ..analytic.linkages import theta_from_k
 from ..errors import Degenerate
 from ..geometry import (Arc, Circle, Line, Point, circle_through3, line_line, polar_angle, ray_at_angle,
                         thales_circle)
-from ..geometry.primitives import Ray, unit_xy
+from ..geometry.kernels import (Fallback, circle_through3_k, point_k, ray_at_angle_k, register,
+                                thales_circle_k)
+from ..geometry.primitives import _SAFE_NORM, Ray, unit_xy
 from .. import tolerance as _tolerance
 from ..scene import Ref, Role, Scene
 
+
+_hypot, _inf = math.hypot, math.inf
 
 THETA_MIN_RAD = 1e-3
 """Smallest θ > 0 (0.057°, K ≈ 1.00064) a θ-circle is built for. Its radius is then about 500 chords; a line
@@ -200,3 +204,77 @@ def add_seeing_circle(sc: Scene, key: str, C1: Ref, C2: Ref, beta: Ref, side: in
 
 __all__ = ["add_seeing_circle", "add_theta_circle", "arc_from_to", "arc_point_from_end", "meet_lines", "perpendicular_at", "ray_from",
            "seeing_circle", "Role"]
+
+
+# ----------------------------------------------------------------------------------------- float kernels
+def ray_from_k(ox: float, oy: float, tx: float, ty: float, angle_deg: float) -> tuple[float, float, float, float]:
+    """:func:`ray_from` on floats (:mod:`geomcon.geometry.kernels`)."""
+    return ray_at_angle_k(ox, oy, tx, ty, math.radians(angle_deg))
+
+
+def perpendicular_at_k(ax: float, ay: float, bx: float, by: float) -> tuple[float, float, float, float]:
+    """:func:`perpendicular_at` on floats."""
+    dx, dy = -(by - ay), bx - ax
+    if dx - dx != 0.0 or dy - dy != 0.0:
+        raise Degenerate(f"point with a non-finite coordinate ({dx}, {dy})")
+    n = _hypot(dx, dy)
+    return (bx, by, dx / n, dy / n) if _SAFE_NORM <= n < _inf else (bx, by, *unit_xy(dx, dy))
+
+
+def meet_ray_line_k(ox: float, oy: float, rx: float, ry: float, px: float, py: float, dx: float, dy: float
+                    ) -> tuple[float, float]:
+    """:func:`meet_lines` of a ray and a line on floats (parallel ones are left to the object form)."""
+    n = _hypot(rx, ry)                                # unit_xy in place where in range: the same bits
+    d1x, d1y = (rx / n, ry / n) if _SAFE_NORM <= n < _inf else unit_xy(rx, ry)
+    s = d1x * dy - d1y * dx
+    if abs(s) > _tolerance.REL_TOL:                   # tol(1.0) in place
+        wx, wy = px - ox, py - oy
+        t = (wx * dy - wy * dx) / s
+        x, y = ox + d1x * t, oy + d1y * t
+        if x - x != 0.0 or y - y != 0.0:
+            raise Degenerate(f"point with a non-finite coordinate ({x}, {y})")
+        return x, y
+    raise Fallback("parallel")
+
+
+def meet_line_line_k(ax: float, ay: float, ux: float, uy: float, bx: float, by: float, vx: float, vy: float
+                     ) -> tuple[float, float]:
+    """:func:`meet_lines` of two lines on floats (line_line's arithmetic; parallel ones are left to the object
+    form)."""
+    wx, wy = point_k(bx - ax, by - ay)
+    s = ux * vy - uy * vx
+    if abs(s) <= _tolerance.REL_TOL:                  # tol(1.0)
+        raise Fallback("parallel")
+    t = (wx * vy - wy * vx) / s
+    sx, sy = point_k(ux * t, uy * t)
+    return point_k(ax + sx, ay + sy)
+
+
+def seeing_circle_k(ax: float, ay: float, bx: float, by: float, beta_deg: float, side: int
+                    ) -> tuple[float, float, float]:
+    """:func:`seeing_circle` on floats."""
+    if abs(beta_deg - 90.0) < 1e-12:
+        return thales_circle_k(ax, ay, bx, by)
+    if ax == bx and ay == by:
+        raise Degenerate("ray toward its own origin")
+    vx, vy = bx - ax, by - ay
+    dx, dy = unit_xy(vx, vy)
+    angle = math.radians(side * (90.0 - beta_deg))
+    c, s = math.cos(angle), math.sin(angle)
+    d1x, d1y = unit_xy(c * dx - s * dy, s * dx + c * dy)
+    d1x, d1y = unit_xy(d1x, d1y)
+    d2x, d2y = unit_xy(-vy, vx)
+    sine = d1x * d2y - d1y * d2x
+    if abs(sine) <= _tolerance.REL_TOL:
+        raise Fallback("parallel")
+    wx, wy = bx - ax, by - ay
+    t = (wx * d2y - wy * d2x) / sine
+    px, py = point_k(ax + d1x * t, ay + d1y * t)
+    return circle_through3_k(ax, ay, bx, by, px, py)
+
+
+register(ray_from, "PPx", "R", ray_from_k)
+register(perpendicular_at, "PP", "L", perpendicular_at_k)
+register(meet_lines, "RL", "P", meet_ray_line_k)
+register(meet_lines, "LL", "P", meet_line_line_k)
+register(seeing_circle, "PPxx", "C", seeing_circle_k)

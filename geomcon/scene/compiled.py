@@ -1,14 +1,22 @@
 """A taped scene's evaluation plan as one Python function: the steps a request needs, in order, each a call on
 local variables, no dictionary lookups or argument resolution per step.
 
-The source is generated from the recorded steps' shapes alone: local names ``v0, v1, …`` and the operations,
-constants and branch rules bound by name in the function's namespace (``f3``, ``c3_1``, ``b3``); no key, label
-or value of a problem ever becomes source text (keys are read and written through a tuple of them). A request
-whose steps are not all plain calls (nested references such as a tuple of points) gets no function and is
-evaluated step by step as before. The branches of one intersection (two steps calling the same operation on
-the same arguments, each with its own rule) share one call: each rule chooses from the same candidates, as
-two separate calls would give them (the operations are pure). An optional step (a candidate that may not exist) is None when a step it
-refers to is None or, for an intersection, when nothing meets, as the scene's own evaluation decides.
+The source is generated from the recorded steps' shapes alone: local names ``v0_0, o3, …`` and the operations,
+constants and branch rules bound by name in the function's namespace (``k3``, ``f3``, ``c3_1``, ``b3``); no key,
+label or value of a problem ever becomes source text (keys are read and written through a tuple of them). A
+request whose steps are not all plain calls (nested references such as a tuple of points) gets no function and
+is evaluated step by step as before.
+
+A step whose operation has a float kernel (:mod:`geomcon.geometry.kernels`) is computed on floats: a point is
+two locals, a line four, a circle three, and a branch rule with a kernel chooses among flat candidates; the
+step's object (a :class:`~geomcon.geometry.Point`, a ``Line`` …) is made only where something reads it: an
+operation without a kernel, an answer asked for, or the scene's memo when it is read further (``run`` returns
+``(fill, values)`` for that; :meth:`~geomcon.scene.Scene.settle`). The kernels are the operations' own
+arithmetic, so every value is the same to the last bit. The branches of one intersection (two steps calling
+the same operation on the same arguments, each with its own rule) share one call: each rule chooses from the
+same candidates, as two separate calls would give them (the operations are pure). An optional step (a
+candidate that may not exist) is None when a step it refers to is None or, for an intersection, when nothing
+meets, as the scene's own evaluation decides.
 
 Examples
 --------
@@ -17,7 +25,10 @@ Examples
 ...        "b": (pow, (Ref("a"), 3.0), {}, 1, None, (), False, ["a"], None)}
 >>> run = compile_plan(rec, ("b",), frozenset())
 >>> memo = {}
->>> run(memo)
+>>> fill, values = run(memo)                 # "a" was computed too: stored when the memo is read further
+>>> memo
+{'b': 8.0}
+>>> fill(memo, values)
 >>> memo
 {'a': 2.0, 'b': 8.0}
 """
@@ -26,7 +37,9 @@ from __future__ import annotations
 from typing import Any, Callable, Iterable
 
 from ..errors import NoIntersection
-from .step import Ref
+from ..geometry.kernels import FIELDS, KERNELS, MAKERS, RULES, SIZES, TYPES, Fallback
+from ..geometry.primitives import Point
+from .step import Ref, constant as _constant
 
 _PLAIN, _TOP = 0, 1
 
@@ -50,9 +63,14 @@ def order_of(rec: dict[str, tuple], keys: Iterable[str]) -> list[str]:
     return [k for k in rec if k in need]
 
 
-def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset[str]) -> Callable[[dict], None] | None:
-    """A function ``run(memo)`` that computes the steps ``keys`` need and stores them in ``memo``, the steps
-    named in ``inputs`` being read from ``memo``; None when a needed step is not a plain call.
+def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset[str], *,
+                 pending: bool = True) -> Callable[[dict], Any] | None:
+    """A function ``run(memo)`` that computes the steps ``keys`` need and stores ``keys`` in ``memo``, the
+    steps named in ``inputs`` being read from ``memo``; None when a needed step is not a plain call.
+
+    ``run`` returns None, or ``(fill, values)`` when it computed steps besides ``keys``: ``fill(memo, values)``
+    stores those too (their objects made then, in the plan's order), for a scene that is read further
+    (without ``pending``, for a caller that only reads ``keys``, it always returns None).
 
     A step that fails raises (the caller evaluates step by step again to report it); a branch step whose
     intersection is empty raises :class:`~geomcon.errors.NoIntersection`."""
@@ -61,67 +79,275 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     except KeyError:
         return None
     order = [k for k in order if k in inputs] + [k for k in order if k not in inputs]
-    ns: dict[str, Any] = {"_NoIntersection": NoIntersection}
-    names: dict[str, str] = {}
-    body: list[str] = []
+    ns: dict[str, Any] = {"_NoIntersection": NoIntersection, "_Fallback": Fallback}
+    g = _Gen(ns)
     loaded: list[str] = []
     computed: list[str] = []
-    shared: dict[tuple, str] = {}            # (operation, argument names) → the variable of its candidates
     for i, k in enumerate(order):
         op, args, kwargs, mode, branch, brefs, optional, _, _ = rec[k]
-        v = names[k] = f"v{i}"
         if k in inputs:
-            body.append(f"    {v} = memo[_IN[{len(loaded)}]]")
+            g.obj[k] = f"o{i}"
+            g.kind[k] = "x"
+            g.opt[k] = False
+            g.body.append(f"    o{i} = memo[_IN[{len(loaded)}]]")
             loaded.append(k)
             continue
         if mode not in (_PLAIN, _TOP):
             return None
+        computed.append(k)
+        if op is _constant and len(args) == 1 and not kwargs and branch is None:
+            g.alias(k, i, args[0])
+            continue
+        if not g.kernel_step(k, i, op, args, kwargs, branch, brefs, optional):
+            g.object_step(k, i, op, args, kwargs, branch, brefs, optional)
+    wanted = set(keys)
+    req = [k for k in computed if k in wanted]
+    rest = [k for k in computed if k not in wanted]
+    ns["_IN"], ns["_REQ"], ns["_ALL"] = tuple(loaded), tuple(req), tuple(computed)
+    body = g.body
+    if req:
+        body.append(f"    memo.update(zip(_REQ, ({', '.join(g.value(k) for k in req)},)))")
+    if rest and pending:
+        names = ", ".join(sorted({v for k in computed for v in g.reads(k)}, key=_natural))
+        body.append(f"    return _FILL, ({names}{',' if names else ''})")
+        fill = ["def fill(memo, vals):", f"    {names}, = vals" if names else "    pass",
+                "    req = [memo.pop(k) for k in _REQ]"]
+        at = {k: j for j, k in enumerate(req)}
+        fill.append(f"    memo.update(zip(_ALL, ({', '.join(f'req[{at[k]}]' if k in at else g.value(k) for k in computed)},)))")
+        exec(compile("\n".join(fill) + "\n", "<geomcon taped plan: fill>", "exec"), ns)
+        ns["_FILL"] = ns["fill"]
+    source = "def run(memo):\n" + "\n".join(body or ["    pass"]) + "\n"       # an empty request: nothing
+    exec(compile(source, "<geomcon taped plan>", "exec"), ns)
+    return ns["run"]
+
+
+def _natural(name: str) -> tuple:
+    return (len(name), name)
+
+
+class _Gen:
+    """The source of one compiled plan as it is generated: each step's value held as the floats of its kind
+    (:data:`~geomcon.geometry.kernels.SIZES`), as an object, or both."""
+
+    def __init__(self, ns: dict[str, Any]) -> None:
+        self.ns = ns
+        self.body: list[str] = []
+        self.kind: dict[str, str] = {}
+        self.flat: dict[str, list[str]] = {}
+        self.obj: dict[str, str] = {}
+        self.opt: dict[str, bool] = {}
+        self.shared: dict[tuple, str] = {}     # (operation, argument names) → the variable of its candidates
+
+    # ---------------------------------------------------------------------------------- values
+    def const(self, name: str, value: Any) -> str:
+        self.ns[name] = value
+        return name
+
+    def alias(self, k: str, i: int, a: Any) -> None:
+        """A step that is its argument (a given's ``_constant``): the same variables."""
+        if type(a) is Ref:
+            src = a[0]
+            self.kind[k], self.opt[k] = self.kind[src], self.opt[src]
+            if src in self.flat:
+                self.flat[k] = self.flat[src]
+            if src in self.obj:
+                self.obj[k] = self.obj[src]
+            return
+        self.opt[k] = False
+        self.obj[k] = self.const(f"c{i}_0", a)
+        if type(a) is Point:
+            self.kind[k] = "P"
+            self.flat[k] = [self.const(f"c{i}_0x", a.x), self.const(f"c{i}_0y", a.y)]
+        else:
+            self.kind[k] = "x"
+
+    def as_flat(self, k: str, want: str) -> list[str] | None:
+        """The floats of step ``k`` as kind ``want`` (read off its object, its type checked, when it has no
+        floats yet); None when it is of another kind."""
+        have = self.kind[k]
+        if have == want:
+            return self.flat[k]
+        if have != "x" or want not in TYPES:
+            return None
+        if k not in self.flat:
+            o = self.obj[k]
+            names = [f"{o}_{j}" for j in range(SIZES[want])]
+            t = self.const(f"_T{want}", TYPES[want])
+            read = ", ".join(f"{o}{f}" for f in FIELDS[want])
+            if self.opt[k]:
+                self.body.append(f"    if {o} is None:")
+                self.body.append(f"        {' = '.join(names)} = None")
+                self.body.append(f"    elif type({o}) is not {t}: raise _Fallback()")
+                self.body.append(f"    else: {', '.join(names)} = {read}")
+            else:
+                self.body.append(f"    if type({o}) is not {t}: raise _Fallback()")
+                self.body.append(f"    {', '.join(names)} = {read}")
+            self.flat[k] = names
+            self.kind[k] = want
+        return self.flat[k]
+
+    def as_obj(self, k: str) -> str:
+        """The variable holding step ``k``'s object (made of its floats here, once)."""
+        o = self.obj.get(k)
+        if o is None:
+            made = self.value(k)
+            o = self.obj[k] = "o_" + self.flat[k][0]
+            self.body.append(f"    {o} = {made}")
+        return o
+
+    def value(self, k: str) -> str:
+        """An expression of step ``k``'s object."""
+        o = self.obj.get(k)
+        if o is not None:
+            return o
+        f = self.flat[k]
+        mk = self.const(f"_MK{self.kind[k]}", MAKERS[self.kind[k]])
+        if self.opt[k]:
+            return f"(None if {f[0]} is None else {mk}({', '.join(f)}))"
+        return f"{mk}({', '.join(f)})"
+
+    def reads(self, k: str) -> list[str]:
+        """The local variables :meth:`value` reads."""
+        o = self.obj.get(k)
+        if o is not None:
+            return [] if o.startswith("c") else [o]
+        return [f for f in self.flat[k] if not f.startswith("c")]
+
+    def _guard(self, refs: list[str]) -> str:
+        """The ``if … is None`` line of an optional step (a candidate of a missing candidate is missing),
+        '' when none of its references may be missing."""
+        used = [a for a in refs if self.opt.get(a)]
+        if not used:
+            return ""
+        return " or ".join(f"{(self.flat[a][0] if a in self.flat else self.obj[a])} is None" for a in used)
+
+    # ---------------------------------------------------------------------------------- steps
+    def kernel_step(self, k: str, i: int, op: Any, args: tuple, kwargs: dict, branch: Any, brefs: tuple,
+                    optional: bool) -> bool:
+        """Emit step ``k`` as a kernel call on floats; False (nothing emitted) when it has none."""
+        if kwargs:
+            return False
+        try:
+            kernels = KERNELS.get(op)
+        except TypeError:                       # an unhashable operation
+            return False
+        if not kernels:
+            return False
+        rule = None
+        if branch is not None:
+            rule = RULES.get(branch.rule)
+            if rule is None or len(rule[0]) != len(brefs):
+                return False
+        kinds = []
+        for a in args:
+            if type(a) is Ref:
+                kinds.append(self.kind[a[0]])
+            else:
+                kinds.append("P" if type(a) is Point else "x")
+        for want, out, fn in kernels:
+            if len(want) != len(args) or (branch is None) == (out == "T"):
+                continue
+            if all(w == h or (h == "x" and w in TYPES) for w, h in zip(want, kinds)):
+                break
+        else:
+            return False
+        if rule is not None and not all(type(r) is Point or (type(r) is Ref and (self.kind[r[0]] == "P" or self.kind[r[0]] == "x"))
+                                        for r in brefs):
+            return False
+        parts: list[str] = []
+        refs: list[str] = []
+        for j, (a, w) in enumerate(zip(args, want)):
+            if type(a) is Ref:
+                refs.append(a[0])
+                if w == "x":
+                    parts.append(self.as_obj(a[0]))
+                else:
+                    parts.extend(self.as_flat(a[0], w))
+            elif w == "x":
+                parts.append(self.const(f"c{i}_{j}", a))
+            else:
+                parts.extend([self.const(f"c{i}_{j}x", a.x), self.const(f"c{i}_{j}y", a.y)])
+        rparts: list[str] = []
+        if rule is not None:
+            for j, r in enumerate(brefs):
+                if type(r) is Ref:
+                    rparts.extend(self.as_flat(r[0], "P"))
+                else:
+                    rparts.extend([self.const(f"r{i}_{j}x", r.x), self.const(f"r{i}_{j}y", r.y)])
+        f = self.const(f"k{i}", fn)
+        guard = self._guard(refs) if optional else ""
+        size = SIZES["P" if rule is not None else out]
+        names = [f"v{i}_{j}" for j in range(size)] if (rule is not None or out != "x") else []
+        target = ", ".join(names) if names else f"o{i}"
+        pad = "    "
+        if guard:
+            self.body.append(f"    if {guard}:")
+            self.body.append(f"        {' = '.join(names or [f'o{i}'])} = None")
+            self.body.append("    else:")
+            pad = "        "
+        call = f"{f}({', '.join(parts)})"
+        if rule is None:
+            self.body.append(f"{pad}{target} = {call}")
+        else:
+            b = self.const(f"b{i}", rule[1])
+            if optional:
+                self.body.append(f"{pad}u{i} = {call}")
+                self.body.append(f"{pad}if u{i}: {target} = {b}({', '.join([f'u{i}'] + rparts)})")
+                self.body.append(f"{pad}else: {' = '.join(names)} = None")
+            else:
+                raw = self.shared.get((op, tuple(parts)))
+                if raw is None:
+                    raw = self.shared[(op, tuple(parts))] = f"u{i}"
+                    self.body.append(f"{pad}{raw} = {call}")
+                    self.body.append(f"{pad}if not {raw}: raise _NoIntersection('')")
+                self.body.append(f"{pad}{target} = {b}({', '.join([raw] + rparts)})")
+        self.opt[k] = optional
+        if names:
+            self.kind[k] = "P" if rule is not None else out
+            self.flat[k] = names
+        else:
+            self.kind[k] = "x"
+            self.obj[k] = f"o{i}"
+        return True
+
+    def object_step(self, k: str, i: int, op: Any, args: tuple, kwargs: dict, branch: Any, brefs: tuple,
+                    optional: bool) -> None:
+        """Emit step ``k`` as a call of its operation on objects (the arguments' objects made once)."""
         parts, used = [], []
         for j, a in enumerate(args):
             if type(a) is Ref:
-                parts.append(names[a[0]])
-                used.append(names[a[0]])
+                parts.append(self.as_obj(a[0]))
+                used.append(a[0])
             else:
-                ns[f"c{i}_{j}"] = a
-                parts.append(f"c{i}_{j}")
+                parts.append(self.const(f"c{i}_{j}", a))
         if kwargs:
-            ns[f"k{i}"] = kwargs
-            parts.append(f"**k{i}")
-        ns[f"f{i}"] = op
+            parts.append(f"**{self.const(f'kw{i}', kwargs)}")
+        refs = []
+        for j, r in enumerate(brefs if branch is not None else ()):
+            refs.append(self.as_obj(r[0]) if type(r) is Ref else self.const(f"r{i}_{j}", r))
+        f = self.const(f"f{i}", op)
+        v = f"o{i}"
         pad = "    "
-        if optional and used:                    # a candidate of a missing candidate is missing
-            body.append(f"    if {' is None or '.join(used)} is None:")
-            body.append(f"        {v} = None")
-            body.append("    else:")
+        guard = self._guard(used) if optional else ""
+        if guard:
+            self.body.append(f"    if {guard}:")
+            self.body.append(f"        {v} = None")
+            self.body.append("    else:")
             pad = "        "
         if branch is None:
-            body.append(f"{pad}{v} = f{i}({', '.join(parts)})")
-            computed.append(k)
-            continue
-        refs = []
-        for j, b in enumerate(brefs):
-            if type(b) is Ref:
-                refs.append(names[b[0]])
-            else:
-                ns[f"r{i}_{j}"] = b
-                refs.append(f"r{i}_{j}")
-        ns[f"b{i}"] = branch.rule
-        if optional:
-            body.append(f"{pad}{v} = f{i}({', '.join(parts)})")
-            body.append(f"{pad}{v} = b{i}({', '.join([v] + refs)}) if {v} else None")
+            self.body.append(f"{pad}{v} = {f}({', '.join(parts)})")
         else:
-            # the two branches of one intersection (B1 left of A, B2 right of A) call it on the same
-            # arguments: it is computed once and each rule chooses from the same candidates
-            raw = shared.get((op, tuple(parts)))
-            if raw is None:
-                raw = shared[(op, tuple(parts))] = f"u{i}"
-                body.append(f"{pad}{raw} = f{i}({', '.join(parts)})")
-                body.append(f"{pad}if not {raw}: raise _NoIntersection('')")
-            body.append(f"{pad}{v} = b{i}({', '.join([raw] + refs)})")
-        computed.append(k)
-    ns["_IN"], ns["_OUT"] = tuple(loaded), tuple(computed)
-    outs = ", ".join(names[k] for k in computed)
-    body.append(f"    memo.update(zip(_OUT, ({outs}{',' if len(computed) == 1 else ''})))")
-    source = "def run(memo):\n" + "\n".join(body) + "\n"
-    exec(compile(source, "<geomcon taped plan>", "exec"), ns)
-    return ns["run"]
+            b = self.const(f"b{i}", branch.rule)
+            if optional:
+                self.body.append(f"{pad}{v} = {f}({', '.join(parts)})")
+                self.body.append(f"{pad}{v} = {b}({', '.join([v] + refs)}) if {v} else None")
+            else:
+                # the two branches of one intersection (B1 left of A, B2 right of A) call it on the same
+                # arguments: it is computed once and each rule chooses from the same candidates
+                raw = self.shared.get((op, tuple(parts)))
+                if raw is None:
+                    raw = self.shared[(op, tuple(parts))] = f"u{i}"
+                    self.body.append(f"{pad}{raw} = {f}({', '.join(parts)})")
+                    self.body.append(f"{pad}if not {raw}: raise _NoIntersection('')")
+                self.body.append(f"{pad}{v} = {b}({', '.join([raw] + refs)})")
+        self.kind[k], self.obj[k], self.opt[k] = "x", v, optional

@@ -32,7 +32,7 @@ from ..errors import GeomconError, NoIntersection, Unbuildable
 from ..geometry.branch import Branch
 from ..geometry.primitives import Circle, Line, Point
 from .compiled import order_of
-from .step import Ref, Role, Step, collect_refs
+from .step import Ref, Role, Step, collect_refs, constant as _constant
 
 
 def _resolve(x: Any, memo: dict[str, Any]) -> Any:
@@ -171,6 +171,7 @@ class Scene:
         self._rebuild: Callable[[], Scene] | None = None
         self._stale = False                     # a replayed tape: captions and labels are the recording's
         self._tape: Any = None
+        self._pending: tuple | None = None      # a compiled replay's other steps, stored when first read
         if mode is not None and mode[0]:
             known = _KEEP.get((mode[0], title))
             if known is None or mode[1]:
@@ -183,15 +184,26 @@ class Scene:
                 self._keep = known
 
     @classmethod
-    def replayed(cls, tape: Any, memo: dict[str, Any]) -> Scene:
+    def replayed(cls, tape: Any, memo: dict[str, Any], pending: tuple | None = None) -> Scene:
         """A lean scene following the plan of ``tape`` (:mod:`.tape`) made of its recorded steps, its memo
-        holding the tape's own steps. Its captions, labels and step objects are the recording's: it completes itself
-        (:meth:`rebuild_with`) before any of them is read."""
+        holding the tape's own steps (and, after a compiled plan ran on it, the steps asked for: ``pending`` is
+        what that run returned, :meth:`settle`). Its captions, labels and step objects are the recording's: it
+        completes itself (:meth:`rebuild_with`) before any of them is read."""
         sc = cls.__new__(cls)
         sc.title, sc.lean, sc._rec, sc._step, sc._memo = tape.title, True, tape.rec, {}, memo
         sc._skip, sc._sig, sc._learn, sc._keep, sc._rebuild = tape.skip, tape.sig, None, tape.keep, None
-        sc._stale, sc._tape = True, tape
+        sc._stale, sc._tape, sc._pending = True, tape, pending
         return sc
+
+    def settle(self) -> None:
+        """Store in the memo the steps a compiled replay computed besides those asked for (their objects made
+        now, in the plan's order; the run left them as ``(fill, values)``, :func:`.compiled.compile_plan`).
+        Everything that reads the memo beyond an evaluation's answers settles first: ``stats`` counts them, a
+        later evaluation reuses them, a drawing completes the scene around them."""
+        if self._pending is not None:
+            fill, values = self._pending
+            self._pending = None
+            fill(self._memo, values)
 
     def unplanned(self) -> bool:
         """True unless this scene follows a plan (it stores every step but, when lean, the annotations)."""
@@ -213,6 +225,8 @@ class Scene:
     def _upgrade(self, key: Any) -> None:
         if self._rebuild is None:
             raise PlanMiss(key)
+        if self._pending is not None:
+            self.settle()
         with _full():
             full = self._rebuild()
         if full.title != self.title or full.lean:
@@ -446,11 +460,13 @@ class Scene:
         keys = tuple(keys)
         memo = self._memo
         tape = self._tape
-        if tape is not None and len(memo) == tape.n_inputs:         # a fresh replay: one compiled call
+        if self._pending is not None:
+            self.settle()
+        elif tape is not None and len(memo) == tape.n_inputs:       # a fresh replay: one compiled call
             run = tape.program(keys)
             if run is not None:
                 try:
-                    run(memo)
+                    self._pending = run(memo)
                     return {k: memo[k] for k in keys}
                 except Exception:            # evaluated step by step below, to report it as a step's failure
                     pass
@@ -516,12 +532,14 @@ class Scene:
         """
         if key not in self._rec:
             raise KeyError(key)
+        self.settle()
         if key in self._memo and self._memo[key] != value:
             raise ValueError(f"step '{key}' was evaluated already")
         self._memo[key] = value
 
     def is_evaluated(self, key: str) -> bool:
         """True when the step's value has been computed already."""
+        self.settle()
         return key in self._memo
 
     @property
@@ -538,14 +556,11 @@ class Scene:
         to count them, keeping its values) and ``steps_evaluated`` (computed so far)."""
         if self.lean and self._rebuild is not None:
             self.complete()
+        self.settle()
         if self._stale:                      # a replayed tape that cannot complete itself
             return {"steps_total": sum(k[:1] != _TAPE for k in self._rec) + len(self._skip),
                     "steps_evaluated": sum(k[:1] != _TAPE for k in self._memo)}
         return {"steps_total": len(self._rec) + len(self._skip), "steps_evaluated": len(self._memo)}
-
-
-def _constant(value: Any) -> Any:
-    return value
 
 
 def _missing(raw_args: tuple, args: Any, raw_kwargs: dict, kwargs: dict) -> bool:

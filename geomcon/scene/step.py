@@ -131,3 +131,8 @@ class Step:
         if self.branch is not None:
             collect_refs(self.branch, out)
         return tuple(dict.fromkeys(out))
+
+
+def constant(value: Any) -> Any:
+    """The operation of a given step (:meth:`~geomcon.scene.Scene.given`): its value."""
+    return value

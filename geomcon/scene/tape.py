@@ -207,7 +207,7 @@ class Tape:
     points: Mapping[str, str]
     solutions: tuple[Mapping[str, str], ...]
     no_solution: str
-    programs: dict[tuple[str, ...], Callable[[dict], None] | None] = field(default_factory=dict, compare=False,
+    programs: dict[tuple[tuple[str, ...], bool], Callable[[dict], Any] | None] = field(default_factory=dict, compare=False,
                                                                           repr=False)
 
     @cached_property
@@ -225,12 +225,14 @@ class Tape:
         """How many steps the tape computes itself (a fresh replay's memo holds exactly these)."""
         return len(self.inputs)
 
-    def program(self, keys: tuple[str, ...]) -> Callable[[dict], None] | None:
-        """The compiled evaluation of ``keys`` on a fresh replay (:func:`.compiled.compile_plan`), made once."""
+    def program(self, keys: tuple[str, ...], *, values_only: bool = False) -> Callable[[dict], Any] | None:
+        """The compiled evaluation of ``keys`` on a fresh replay (:func:`.compiled.compile_plan`), made once;
+        ``values_only`` for a caller that reads ``keys`` and drops the memo (it returns nothing to settle)."""
+        key = (keys, values_only)
         try:
-            return self.programs[keys]
+            return self.programs[key]
         except KeyError:
-            run = self.programs[keys] = compile_plan(self.rec, keys, self.inputs)
+            run = self.programs[key] = compile_plan(self.rec, keys, self.inputs, pending=not values_only)
             return run
 
     def values(self, given: Mapping[str, Any]) -> dict[str, Any] | None:
