@@ -192,18 +192,20 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
 
     The problems and the other parts are independent jobs run on ``jobs`` processes (default: every core this
     process may use; :func:`geomcon.workers.run_ordered`) and put together in one fixed order: the files are the
-    same bytes for any ``jobs``."""
-    from .workers import run_ordered
+    same bytes for any ``jobs``. The cyclic garbage collector is paused meanwhile
+    (:func:`geomcon.workers.collector_paused`: the build is a bounded batch)."""
+    from .workers import collector_paused, run_ordered
 
     paths = problem_files(problems_dir)
-    if jobs != 1:
-        _preload()
     parts = [(_classwork, (problems_dir,)), (_kinematics, (problems_dir,)), (_best_table, ()), (law_diagrams, ())]
     all_jobs = parts + [(problem_gallery, (p, lang)) for p in paths]
     order = _longest_first(all_jobs)                # started longest first, put back in the fixed order
     done = [None] * len(all_jobs)
-    for i, result in zip(order, run_ordered([all_jobs[i] for i in order], jobs)):
-        done[i] = result
+    with collector_paused():
+        if jobs != 1:
+            _preload()
+        for i, result in zip(order, run_ordered([all_jobs[i] for i in order], jobs)):
+            done[i] = result
     ((grading, sheet), (cycle_out, cycle_rows, bench), best, laws), problems = done[:len(parts)], done[len(parts):]
     files: dict[str, str] = {}
     rows = []

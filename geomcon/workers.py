@@ -23,8 +23,9 @@ from __future__ import annotations
 import gc
 import multiprocessing
 import os
+from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import Any, Callable, Sequence
+from typing import Any, Callable, Iterator, Sequence
 
 from .errors import GeomconError
 
@@ -37,6 +38,32 @@ def default_jobs() -> int:
         return max(1, len(os.sched_getaffinity(0)))
     except AttributeError:                   # macOS, Windows
         return max(1, os.cpu_count() or 1)
+
+
+@contextmanager
+def collector_paused() -> Iterator[None]:
+    """No cyclic garbage collection inside the block (``gc.disable``), the collector as it was after it.
+
+    For a bounded batch such as the gallery: its cycles (scenes, figures, parsed documents) are few and die
+    with the process, while the collector's generational passes walk every live object again and again (in
+    the gallery, about 6 % of one process's CPU and a fifth of the imports before the fork). Memory still
+    comes back through reference counting; forked workers inherit the paused collector.
+
+    Examples
+    --------
+    >>> with collector_paused():
+    ...     gc.isenabled()
+    False
+    >>> gc.isenabled()
+    True
+    """
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
 
 
 @dataclass(frozen=True)
@@ -89,4 +116,4 @@ def run_ordered(jobs_list: Sequence[Job], jobs: int | None = None) -> list[Any]:
     return out
 
 
-__all__ = ["default_jobs", "run_ordered"]
+__all__ = ["collector_paused", "default_jobs", "run_ordered"]
