@@ -118,8 +118,15 @@ def _circles_of(v: Any) -> list[Circle]:
 
 
 def _bbox(points: Iterable[Point]) -> Box:
-    pts = list(points)
-    return (min(p.x for p in pts), min(p.y for p in pts), max(p.x for p in pts), max(p.y for p in pts))
+    """The bounds of ``points`` (one pass for each coordinate; a cam's profile brings thousands).
+
+    >>> _bbox([Point(1, 5), Point(-2, 3)])
+    (-2.0, 3.0, 1.0, 5.0)
+    """
+    pts = points if isinstance(points, list) else list(points)
+    xs = [p.x for p in pts]
+    ys = [p.y for p in pts]
+    return (min(xs), min(ys), max(xs), max(ys))
 
 
 def content_box(scene: Scene, steps: list[tuple[int, Step]], values: dict[str, Any]) -> Box:
@@ -133,13 +140,16 @@ def content_box(scene: Scene, steps: list[tuple[int, Step]], values: dict[str, A
     size = max(box[2] - box[0], box[3] - box[1])
     if size == 0.0:
         size = max(abs(box[0]), abs(box[1]), 1.0) * 0.1
-    extra = list(pts)
+    extra = []
     for _, s in steps:
         for c in _circles_of(values[s.key]):
             style = resolve_style(s.style, s.role, "curve")
             if c.r <= SMALL_CIRCLE * size or (not style.compass and c.r <= WHOLE_CIRCLE_REACH * size):
                 extra += [c.center - Point(c.r, c.r), c.center + Point(c.r, c.r)]
-    x0, y0, x1, y1 = _bbox(extra)
+    x0, y0, x1, y1 = box
+    if extra:               # the points' box and the circles' together (min and max are exact: the same floats)
+        c0, d0, c1, d1 = _bbox(extra)
+        x0, y0, x1, y1 = min(x0, c0), min(y0, d0), max(x1, c1), max(y1, d1)
     w, h = x1 - x0, y1 - y0
     size = max(w, h, size)
     dw, dh = max(0.0, 0.2 * size - w) / 2, max(0.0, 0.2 * size - h) / 2     # never a flat box
