@@ -9,6 +9,9 @@ vectorised numpy and taking the extremes of the output by arg-max/arg-min (:mod:
 solve asked for its answers only is compared with one asked for the SVG drawing too: time and steps
 evaluated, which shows the scene's laziness.
 
+(i) The gallery (issue 11): the whole ``geomcon gallery --check`` in wall and CPU seconds, and sheet 1 of the
+costliest figures (:mod:`.gallery`).
+
 (g) Grading a class of 100 000 rows × 6 answers with diagnosis (:mod:`.grading`).
 (h) Whole cycles: four-bar positions per second over a crank turn, geomcon's vectorised chain (the compiled fast
 path and the reference path) beside pylinkage (numba) where installed, each also as a ratio to numpy's cos + sin
@@ -53,6 +56,7 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_recor
     from .cam import cam_table, measure_cam
     from .cycle import cycle_table, measure_cycle
     from .exact import exact_table, measure_exact
+    from .gallery import gallery_table, measure_figures, measure_gallery
     from .grading import grading_table, measure_grading
     from .lean import lean_table, measure_lean
     from .measure import FULL, QUICK, measure_drawing, measure_extremes
@@ -71,6 +75,7 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_recor
     text += "\n\n" + grading_table(measure_grading(rows=10_000 if quick else 100_000))
     cycle = measure_cycle(200_000 if quick else 1_000_000, 1 if quick else 3)
     text += "\n\n" + cycle_table(cycle)
+    text += "\n\n" + gallery_table(measure_gallery(1 if quick else 3), measure_figures(5 if quick else 15))
     files = {out: render_plot(extremes, quick=quick)}
     if cycle_record is not None:
         import time

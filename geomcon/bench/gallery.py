@@ -1,0 +1,155 @@
+"""``geomcon bench``'s gallery rows (issue 11's speed targets): the whole ``geomcon gallery --check`` ≤ 3 s of
+wall time, one figure ≤ 40 ms.
+
+- The gallery: ``python -m geomcon gallery --check`` run as a child process from the checkout (every core, as a
+  user runs it), timed in wall seconds and in the CPU seconds of the process and its workers; the fastest of
+  the runs. The byte-code is cached, as installed (pip byte-compiles a package it installs; a shell with
+  ``PYTHONDONTWRITEBYTECODE`` compiles every module on every start instead, about 0.4 s more before the workers
+  start). Wall time is what the target names, so the machine's load average is printed beside it: a shared
+  machine's other jobs take cores the gallery would use.
+- One figure: sheet 1 of a problem as the gallery draws it (``Solution.svg`` on the gallery's page: the drawing
+  with its labels placed, results, title block, and the protocol's sheets it counts), on a solution whose answers
+  and checks are computed already; CPU seconds of this process, the shortest of ``samples`` fresh solutions each,
+  the problems interleaved sample by sample. :data:`FIGURES` are the gallery's costliest figures (the cams with
+  45 labels) and the textbook's crank-rocker.
+
+Tests check the rows' arithmetic, never a time.
+
+Examples
+--------
+>>> r = FigureRow("001-08", "crank_rocker.extremes", 0.031)
+>>> r.met
+True
+>>> GalleryRow(2.5, 4.6, 1.2, 1).met
+True
+"""
+from __future__ import annotations
+
+import gc
+import os
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from .clock import clock
+from .report import fmt_seconds, format_table
+
+ROOT = Path(__file__).resolve().parents[2]
+"""The checkout (``problems/`` and ``gallery/`` beside ``geomcon/``)."""
+FIGURES = ("001-24", "200-16", "001-08")
+"""The problems whose sheet 1 is timed (ids: the start of the file name)."""
+GALLERY_TARGET = 3.0
+FIGURE_TARGET = 0.040
+
+
+@dataclass(frozen=True)
+class GalleryRow:
+    """The whole gallery: the fastest run's wall and CPU seconds (the process and its workers), the load
+    average when the runs began, and the number of runs."""
+
+    wall: float
+    cpu: float
+    load: float
+    runs: int
+
+    @property
+    def met(self) -> bool:
+        """Within :data:`GALLERY_TARGET` of wall time."""
+        return self.wall <= GALLERY_TARGET
+
+
+@dataclass(frozen=True)
+class FigureRow:
+    """One problem's sheet 1: its id, recipe and the shortest CPU seconds."""
+
+    problem: str
+    recipe: str
+    seconds: float
+
+    @property
+    def met(self) -> bool:
+        """Within :data:`FIGURE_TARGET`."""
+        return self.seconds <= FIGURE_TARGET
+
+
+def _child_run(argv: list[str], env: dict[str, str]) -> tuple[float, float]:
+    """Wall and CPU seconds (user + system of the child and its own children) of one run of ``argv``."""
+    import resource
+
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    subprocess.run(argv, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False, env=env)
+    wall = time.perf_counter() - t0
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def measure_gallery(runs: int = 3) -> GalleryRow | None:
+    """The fastest of ``runs`` runs of ``geomcon gallery --check`` (see the module); None without a checkout."""
+    if not (ROOT / "problems").is_dir() or not (ROOT / "gallery").is_dir():
+        return None
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    argv = [sys.executable, "-m", "geomcon", "gallery", "--check"]
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "geomcon")], env=env,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)    # the byte-code caches
+    load = os.getloadavg()[0]
+    walls, cpus = zip(*(_child_run(argv, env) for _ in range(runs)))
+    return GalleryRow(min(walls), min(cpus), load, runs)
+
+
+def _problem_file(pid: str) -> Path | None:
+    return next(iter(sorted((ROOT / "problems").glob(f"{pid}_*.toml"))), None)
+
+
+def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> list[FigureRow]:
+    """The shortest CPU time of sheet 1 of each of ``figures`` over ``samples`` fresh solutions (see the
+    module); a problem not bundled is left out."""
+    from ..gallery import gallery_page
+    from ..problems import load_problem
+    from ..solve import solve
+
+    problems = [(pid, load_problem(p)) for pid in figures if (p := _problem_file(pid)) is not None]
+    page = gallery_page()
+    best = {pid: float("inf") for pid, _ in problems}
+    recipe = {}
+    was = gc.isenabled()
+    try:
+        for _ in range(samples):
+            for pid, problem in problems:
+                sol = solve(problem)
+                sol.ok                                   # answers and checks: not the figure's work
+                recipe[pid] = sol.recipe.name
+                gc.collect()
+                gc.disable()
+                t0 = clock()
+                sol.svg(page=page)
+                t = clock() - t0
+                gc.enable()
+                best[pid] = min(best[pid], t)
+    finally:
+        if was:
+            gc.enable()
+        else:
+            gc.disable()
+    return [FigureRow(pid, recipe[pid], best[pid]) for pid, _ in problems]
+
+
+def gallery_table(gallery: GalleryRow | None, figures: list[FigureRow]) -> str:
+    """The printed table of the gallery rows."""
+    head = ("gallery (issue 11)", "case", "time", "CPU", "target")
+    rows = []
+    if gallery is not None:
+        rows.append(("geomcon gallery --check", f"every core, load {gallery.load:.1f}, best of {gallery.runs}",
+                     f"{gallery.wall:.2f} s wall", f"{gallery.cpu:.2f} s",
+                     f"≤ {GALLERY_TARGET:g} s ({'met' if gallery.met else 'SHORT'})"))
+    for r in figures:
+        rows.append(("one figure (sheet 1 SVG)", f"{r.problem} {r.recipe}", "", fmt_seconds(r.seconds),
+                     f"≤ {FIGURE_TARGET * 1e3:g} ms ({'met' if r.met else 'SHORT'})"))
+    return format_table(head, rows, "llrrl") + ("\nthe gallery's byte-code cached, as installed; wall time depends on "
+                                                "the machine's load" if gallery is not None else "")
+
+
+__all__ = ["FIGURES", "FIGURE_TARGET", "FigureRow", "GALLERY_TARGET", "GalleryRow", "gallery_table",
+           "measure_figures", "measure_gallery"]
