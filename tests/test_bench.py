@@ -92,7 +92,7 @@ def test_bench_command_writes_the_plot(tmp_path):
     assert r.returncode == 0, r.stderr
     assert out.is_file() and ET.parse(out).getroot().tag.endswith("svg")
     assert "construction" in r.stdout and "steps evaluated" in r.stdout
-    assert "geomcon gallery --check" in r.stdout and "one figure (sheet 1 SVG)" in r.stdout
+    assert "geomcon gallery --check" in r.stdout and "one figure (sheet 1)" in r.stdout
 
 
 def test_design_by_K_agrees_with_sympy_geometry():
