@@ -32,7 +32,7 @@ True
 from __future__ import annotations
 
 import math
-from bisect import bisect_left, bisect_right
+from bisect import bisect_right
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -40,7 +40,7 @@ import numpy as np
 
 from ..geometry import Point
 from .oscillating_flat import END_TIE, FlatArmCam
-from .profile import (_DENSE, FLOOR_REL, SLOPE_NOISE, Extremum, LineFamily, _best_of_pairs, _rest_grids, div1, envelope,
+from .profile import (_DENSE, FLOOR_REL, PRUNE_GAIN, PRUNE_REL, SLOPE_NOISE, Extremum, LineFamily, _best_of_pairs, _rest_grids, div1, envelope,
                       envelope1, envelope_terms, illinois1, maximise, pow1, sample_grid, sample_grids)
 
 
@@ -73,13 +73,20 @@ def flat_family(cam: FlatArmCam) -> FaceFamily:
     psi0, sigma, tau, a, f = cam.psi0, cam.sigma, cam.tau, cam.a, cam.offset
     motion1, h, rad, half_pi = cam.program.motion1, cam.h, math.radians, math.pi / 2
 
+    seen: dict[float, tuple] = {}            # every angle's lines once (the pressure angle and the contact
+                                               # at `at`, a refined place and its value, ask for the same)
+
     def fn1(d):                                # the same on one float (the same bits; ψ′² as a product)
+        out = seen.get(d)
+        if out is not None:
+            return out
         sv, v, acc = motion1(h, d, True)
         psi, d1, d2 = rad(sv), rad(v), rad(acc)
         phi = psi0 + psi
         c, s = math.cos(phi), math.sin(phi)
-        return (half_pi - sigma * d + tau * (phi - half_pi), -sigma + tau * d1, tau * d2, a * s - f, a * c * d1,
-                a * (c * d2 - s * (d1 * d1)))
+        out = seen[d] = (half_pi - sigma * d + tau * (phi - half_pi), -sigma + tau * d1, tau * d2, a * s - f,
+                         a * c * d1, a * (c * d2 - s * (d1 * d1)))
+        return out
 
     return FaceFamily(fn, cam.breaks(), fn1, still=cam.rests())
 
@@ -305,6 +312,14 @@ class FaceSamples:
         changes refined by :func:`~geomcon.cam.profile.illinois1`, compared by the same rule — found on the
         turn's l′, computed once for the four searches (a segment's samples are a run of the turn's).
 
+        One step less: a sign change whose bracket [lo, hi] cannot rise to within
+        :data:`~geomcon.cam.profile.PRUNE_REL` of the best candidate found so far — its ends' values plus
+        :data:`~geomcon.cam.profile.PRUNE_GAIN` times the largest sampled |l′| times hi − lo stay below; the
+        brackets are refined highest reach first — is not refined (as :func:`~geomcon.cam.profile.maximise` prunes the sampled peaks it refines without a
+        slope). Such a candidate is below the tie rule's reach (TIE_REL ≪ PRUNE_REL), so the result is
+        the same; it saves the refinements of roundoff, such as the sign change a sample or two from the
+        start of a law that leaves rest (l′ ∝ δ there; 200-07's farthest contact: 14 scalar slopes).
+
         >>> from geomcon.cam.oscillating_flat import FlatArmCam
         >>> from geomcon.cam.program import parse_program
         >>> prog = parse_program([{"kind": "rise", "angle": 150, "law": "parabolic"}, {"kind": "dwell", "angle": 30},
@@ -323,9 +338,10 @@ class FaceSamples:
             return maximise(lambda d: sign * self.place(d), pcs, slope=lambda d: sign * self.slope(d),
                             slope1=self.slope1(sign), g1=lambda x: sign * self.place1(x), turn=turn,
                             still=self.fam.still)
-        sl, xs = base.slopes, base.samples
+        sl, xs = base.sl, base.grid
         n = sum(len(d) for d in grids)
-        noise = SLOPE_NOISE * max(0.0, base.top(at, at + n))
+        top = max(0.0, base.top(at, at + n))              # the largest |l′| of the samples
+        noise = SLOPE_NOISE * top
         firsts, j = [], at
         for d in grids:
             firsts.append(j)
@@ -335,23 +351,43 @@ class FaceSamples:
         places: list[float] = []
         roots: list[tuple[int, int]] = []
         for k, (f, last) in enumerate(zip(firsts, lasts)):
-            if not sign * sl[f] > noise:
-                places.append(xs[f])
-            if not sign * sl[last] < -noise:
-                places.append(xs[last])
+            if not sign * float(sl[f]) > noise:
+                places.append(float(xs[f]))
+            if not sign * float(sl[last]) < -noise:
+                places.append(float(xs[last]))
             for i, size in changes.get(base.piece_of(f), ()):
                 if f <= i < last:
                     if size <= noise:                  # roundoff (a dwell): the sample stands
-                        places.append(xs[i])
+                        places.append(float(xs[i]))
                     else:
                         roots.append((i, k))
+        place1 = self.place1
+        values = [sign * place1(x) for x in places]
         if roots:
             slope1 = self.slope1(sign)
+            best = max((v for v in values if v == v), default=math.nan)
+            floor = best - PRUNE_REL * abs(best)
+            rise = PRUNE_GAIN * top
+            reach = []                                  # how high each bracket can rise
             for i, k in roots:
+                lo, hi = float(xs[i]), float(xs[i + 1])
+                reach.append(max(sign * place1(lo), sign * place1(hi)) + rise * (hi - lo))
+            found: dict[int, float] = {}
+            for n in sorted(range(len(roots)), key=lambda n: -reach[n] if reach[n] == reach[n] else math.inf):
+                if reach[n] < floor:
+                    continue                        # cannot come near the best candidate: not refined
+                i, k = roots[n]
                 a, b = key[k]
-                places.append(illinois1(slope1, xs[i], xs[i + 1], sign * sl[i], sign * sl[i + 1], FLOOR_REL * (b - a)))
-        place1 = self.place1
-        return _best_of_pairs([sign * place1(x) for x in places], places)
+                x = found[n] = illinois1(slope1, float(xs[i]), float(xs[i + 1]), sign * float(sl[i]),
+                                         sign * float(sl[i + 1]), FLOOR_REL * (b - a))
+                v = sign * place1(x)
+                if v == v and not v <= best:
+                    best = v
+                    floor = best - PRUNE_REL * abs(best)
+            for n in sorted(found):                     # in the order of the sign changes, as maximise lists them
+                places.append(found[n])
+                values.append(sign * place1(found[n]))
+        return _best_of_pairs(values, places)
 
     def _known(self, x: float) -> float | None:
         v = self._places.get(x)
@@ -400,26 +436,25 @@ def _grids(key: tuple[tuple[float, float], ...], still: tuple[tuple[float, float
 
 
 class _TurnSlopes:
-    """l′ on the turn's samples as lists, each piece's first sample, and every place where l′ changes sign
-    between neighbouring samples of a piece, with the larger |l′| of the two: what a search reads."""
+    """l′ on the turn's samples, each piece's first sample, and every place where l′ changes sign between
+    neighbouring samples of a piece (+ → − and − → +), with the larger |l′| of the two: what a search reads
+    (a few numpy passes; the few places read one by one)."""
 
     def __init__(self, grids: tuple[np.ndarray, ...], grid: np.ndarray, sl: np.ndarray) -> None:
-        self.grid = grid
-        self.samples: list[float] = grid.tolist()
-        self.slopes: list[float] = sl.tolist()
-        self.abs = np.abs(sl)
+        self.grid, self.sl = grid, sl
         sizes = [len(d) for d in grids]
         self.firsts = np.cumsum([0] + sizes[:-1]).tolist()
-        pair = np.maximum(self.abs[:-1], self.abs[1:])
-        self.rising = self._by_piece(np.nonzero((sl[:-1] > 0.0) & (sl[1:] <= 0.0))[0], pair)
-        self.falling = self._by_piece(np.nonzero((sl[:-1] < 0.0) & (sl[1:] >= 0.0))[0], pair)
+        self.rising: dict[int, list[tuple[int, float]]] = {}
+        self.falling: dict[int, list[tuple[int, float]]] = {}
+        sign = np.sign(sl)                               # (nan where l′ is: such a pair is neither below)
+        for i in np.flatnonzero(sign[1:] != sign[:-1]).tolist():
+            a, b = float(sl[i]), float(sl[i + 1])
+            if a > 0.0 and b <= 0.0:
+                self.rising.setdefault(self.piece_of(i), []).append((i, max(abs(a), abs(b))))
+            elif a < 0.0 and b >= 0.0:
+                self.falling.setdefault(self.piece_of(i), []).append((i, max(abs(a), abs(b))))
+        self._abs: np.ndarray | None = None
         self._tops: dict[tuple[int, int], float] = {}
-
-    def _by_piece(self, idx: np.ndarray, pair: np.ndarray) -> dict[int, list[tuple[int, float]]]:
-        out: dict[int, list[tuple[int, float]]] = {}
-        for i, size in zip(idx.tolist(), pair[idx].tolist()):
-            out.setdefault(self.piece_of(i), []).append((i, size))
-        return out
 
     def piece_of(self, i: int) -> int:
         """The piece of the turn holding sample ``i``."""
@@ -430,8 +465,8 @@ class _TurnSlopes:
         if grid is self.grid:
             return 0
         n, first = grid.size, float(grid[0])
-        i = bisect_left(self.samples, first)
-        if i in self.firsts and i + n <= len(self.samples) and np.array_equal(self.grid[i:i + n], grid):
+        i = int(self.grid.searchsorted(first))
+        if i in self.firsts and i + n <= self.grid.size and np.array_equal(self.grid[i:i + n], grid):
             return i
         return None
 
@@ -440,7 +475,9 @@ class _TurnSlopes:
         key = (i0, i1)
         v = self._tops.get(key)
         if v is None:
-            v = self._tops[key] = float(np.nanmax(self.abs[i0:i1], initial=0.0))
+            if self._abs is None:
+                self._abs = np.abs(self.sl)
+            v = self._tops[key] = float(np.nanmax(self._abs[i0:i1], initial=0.0))
         return v
 
 

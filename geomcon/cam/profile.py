@@ -1537,10 +1537,19 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
         la = [div1(f6[4], f6[1]) for f6 in ends[:len(cuts)]]
         lb = [div1(f6[4], f6[1]) for f6 in ends[len(cuts):]]
         jumps = [(b, (x1 - x0) * math.copysign(1.0, f6[1])) for b, x0, x1, f6 in zip(cuts, lb, la, ends)]
-        part = [v for v in la + lb + [div1(f6[4], f6[1]) for f6 in map(fam.fn1, _EVERY_90TH)] if v == v]
-        low = max(part) - min(part) if part else math.nan
-        if all(j >= -JUMP_REL * low for _, j in jumps):
-            return ()
+        part = [v for v in la + lb if v == v]
+        more = iter(_EVERY_90TH)                # a part of the range, grown a sample at a time: every part is
+        while True:                             # within the whole range, so once no jump counts against it, none does
+            low = max(part) - min(part) if part else math.nan
+            if all(j >= -JUMP_REL * low for _, j in jumps):
+                return ()
+            x = next(more, None)
+            if x is None:
+                break
+            f6 = fam.fn1(x)
+            v = div1(f6[4], f6[1])
+            if v == v:
+                part.append(v)
         lam = np.array(la + lb)
     else:
         lam = envelope(fam, np.concatenate([after, before]))[2]
@@ -1558,7 +1567,9 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
 
 
 _EVERY_90TH = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)[::90].tolist()
-"""The samples of the turn :func:`backward_jumps` looks at first (every 90th of :data:`_DENSE`)."""
+"""The samples of the turn :func:`backward_jumps` looks at first (every 90th of :data:`_DENSE`; on floats one at
+a time, until the range they span clears every jump: a flat face's breaks all have λ = 0 when the follower
+starts and stops at rest, so their jumps, roundoff such as −1.6e-29 mm, need one sample inside a segment)."""
 
 
 def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> float:
