@@ -174,9 +174,11 @@ def face_place_slope1(fam: LineFamily, A0: Point, inv: float, tau: int, d: float
     return -tau * rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
 
 
-def _segment_pieces(fam: LineFamily, seg: Any) -> list[tuple[float, float]]:
+def _segment_pieces(fam: LineFamily, seg: Any, pieces: list[tuple[float, float]] | None = None
+                    ) -> list[tuple[float, float]]:
+    """The smooth pieces of the turn (``pieces``, default the family's) that make up the segment ``seg``."""
     lo, hi = math.radians(seg.start), math.radians(seg.end)
-    return [(a, b) for a, b in fam.pieces() if a >= lo - 1e-12 and b <= hi + 1e-12]
+    return [(a, b) for a, b in (fam.pieces() if pieces is None else pieces) if a >= lo - 1e-12 and b <= hi + 1e-12]
 
 
 def face_extremes(fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any = None) -> tuple[Extremum, Extremum]:
@@ -259,6 +261,10 @@ class FaceSamples:
         self._places: dict[float, float] = {}
         self._raw1 = face_slope1(fam, A0, inv, tau) if self.scalar else None
         self._turn_slopes: _TurnSlopes | None = None
+        self.pieces = fam.pieces()
+        """The smooth pieces of the turn."""
+        self.turn = sum(b - a for a, b in self.pieces)
+        """Their total length (radians), over which a segment's samples are spread."""
 
     def arrays(self, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(l, l′) at the samples ``d`` (radians)."""
@@ -299,7 +305,7 @@ class FaceSamples:
         """The turn's samples as :func:`~geomcon.cam.profile.maximise` takes them for a search over the whole
         turn (a dwell's piece cut to its ends), l′ there and what the searches read of it, made once."""
         if self._turn_slopes is None:
-            key = tuple((float(a), float(b)) for a, b in self.fam.pieces())
+            key = tuple((float(a), float(b)) for a, b in self.pieces)
             grids, grid = _grids(key, self.fam.still, None)
             self._turn_slopes = _TurnSlopes(grids, grid, self.slope(grid))
         return self._turn_slopes
@@ -488,8 +494,8 @@ class _FaceSearch:
     def __init__(self, fam: LineFamily, A0: Point, inv: float, tau: int, seg: Any) -> None:
         self.fam, self.A0, self.inv, self.tau, self.seg = fam, A0, inv, tau, seg
         self.samples = face_samples(fam, A0, inv, tau)
-        self.pcs = fam.pieces() if seg is None else _segment_pieces(fam, seg)
-        self.turn = None if seg is None else sum(b - a for a, b in fam.pieces())
+        self.pcs = self.samples.pieces if seg is None else _segment_pieces(fam, seg, self.samples.pieces)
+        self.turn = None if seg is None else self.samples.turn
         """A segment is sampled as densely as the turn (its samples are then a run of the turn search's)."""
         self.scalar = fam.fn1 is not None
 

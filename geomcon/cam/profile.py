@@ -1531,7 +1531,6 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
     cuts = [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]
     after = np.array(cuts)
     before = np.nextafter(np.array([b if b > 0.0 else TWO_PI for b in cuts]), 0.0)
-    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
     if fam.fn1 is not None:                     # the first look's few angles on floats (the same bits)
         ends = [fam.fn1(x) for x in cuts + before.tolist()]       # λ = p′/φ′ as envelope1 divides
         la = [div1(f6[4], f6[1]) for f6 in ends[:len(cuts)]]
@@ -1557,10 +1556,11 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
         dphi = fam.eval(after)[1]
         jumps = [(b, (x1 - x0) * math.copysign(1.0, w)) for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(),
                                                                                 dphi.tolist())]
-        part = np.concatenate([lam, envelope(fam, grid[::90])[2]])   # the breaks and every 90th sample:
+        part = np.concatenate([lam, envelope(fam, np.array(_EVERY_90TH))[2]])   # the breaks and every 90th sample:
         low = float(np.nanmax(part) - np.nanmin(part)) if not np.isnan(part).all() else math.nan   # a part of the range
         if all(j >= -JUMP_REL * low for _, j in jumps):
             return ()                               # no jump counts even against a part of the range: done
+    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)      # (made only when the first look fails)
     lam = np.concatenate([lam, envelope(fam, grid)[2]])
     span = float(np.nanmax(lam) - np.nanmin(lam))
     return tuple(Extremum(float(jump), b) for b, jump in jumps if jump < -JUMP_REL * span)
