@@ -133,8 +133,9 @@ def face_place_and_slope(fam: LineFamily, A0: Point, inv: float, tau: int, d) ->
     t = envelope_terms(fam, d)
     c, s, x, y, db = t.c, t.s, t.x, t.y, t.dphi
     ax, ay, vx, vy = _pivot_path(A0, inv, d)
-    place = (x - ax) * tau * s - (y - ay) * tau * c
-    return place, -tau * t.rho * db + tau * db * ((x - ax) * c + (y - ay) * s) - tau * (vx * s - vy * c)
+    dx, dy = x - ax, y - ay                     # (K − A0′, once for both: the same numbers)
+    place = dx * tau * s - dy * tau * c
+    return place, -tau * t.rho * db + tau * db * (dx * c + dy * s) - tau * (vx * s - vy * c)
 
 
 def _pivot_path1(A0: Point, inv: float, d: float) -> tuple[float, float, float, float]:
@@ -266,8 +267,8 @@ class FaceSamples:
         self.turn = sum(b - a for a, b in self.pieces)
         """Their total length (radians), over which a segment's samples are spread."""
 
-    def arrays(self, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(l, l′) at the samples ``d`` (radians)."""
+    def arrays(self, d: np.ndarray, ordered: bool = False) -> tuple[np.ndarray, np.ndarray]:
+        """(l, l′) at the samples ``d`` (radians; ``ordered``: known to increase, a search's samples)."""
         for grid, pl, sl in self._kept:
             if grid is d:
                 return pl, sl
@@ -281,7 +282,7 @@ class FaceSamples:
                     self._kept.append((d, *out))
                     return out
         pl, sl = face_place_and_slope(self.fam, self.A0, self.inv, self.tau, d)
-        if keep and bool(np.all(d[1:] > d[:-1])):
+        if keep and (ordered or bool(np.all(d[1:] > d[:-1]))):
             self._kept.append((d, pl, sl))
         return pl, sl
 
@@ -307,7 +308,7 @@ class FaceSamples:
         if self._turn_slopes is None:
             key = tuple((float(a), float(b)) for a, b in self.pieces)
             grids, grid = _grids(key, self.fam.still, None)
-            self._turn_slopes = _TurnSlopes(grids, grid, self.slope(grid))
+            self._turn_slopes = _TurnSlopes(grids, grid, self.arrays(grid, ordered=True)[1])
         return self._turn_slopes
 
     def extreme(self, pcs: list[tuple[float, float]], sign: float, turn: float | None = None) -> Extremum:
