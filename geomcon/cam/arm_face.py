@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 from bisect import bisect_right
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any, Callable
 
 import numpy as np
@@ -308,7 +309,7 @@ class FaceSamples:
         if self._turn_slopes is None:
             key = tuple((float(a), float(b)) for a, b in self.pieces)
             grids, grid = _grids(key, self.fam.still, None)
-            self._turn_slopes = _TurnSlopes(grids, grid, self.arrays(grid, ordered=True)[1])
+            self._turn_slopes = _TurnSlopes(grids, grid, *self.arrays(grid, ordered=True))
         return self._turn_slopes
 
     def extreme(self, pcs: list[tuple[float, float]], sign: float, turn: float | None = None) -> Extremum:
@@ -345,7 +346,7 @@ class FaceSamples:
             return maximise(lambda d: sign * self.place(d), pcs, slope=lambda d: sign * self.slope(d),
                             slope1=self.slope1(sign), g1=lambda x: sign * self.place1(x), turn=turn,
                             still=self.fam.still)
-        sl, xs = base.sl, base.grid
+        sl, xs, pl = base.sl, base.grid, base.pl
         n = sum(len(d) for d in grids)
         top = max(0.0, base.top(at, at + n))              # the largest |l′| of the samples
         noise = SLOPE_NOISE * top
@@ -355,45 +356,46 @@ class FaceSamples:
             j += len(d)
         lasts = [f + len(d) - 1 for f, d in zip(firsts, grids)]
         changes = base.rising if sign > 0.0 else base.falling        # + → − of sign·l′, with max(|l′|) of the pair
-        places: list[float] = []
+        at_samples: list[int] = []                                    # candidates that are samples (their l kept)
         roots: list[tuple[int, int]] = []
         for k, (f, last) in enumerate(zip(firsts, lasts)):
             if not sign * float(sl[f]) > noise:
-                places.append(float(xs[f]))
+                at_samples.append(f)
             if not sign * float(sl[last]) < -noise:
-                places.append(float(xs[last]))
+                at_samples.append(last)
             for i, size in changes.get(base.piece_of(f), ()):
                 if f <= i < last:
                     if size <= noise:                  # roundoff (a dwell): the sample stands
-                        places.append(float(xs[i]))
+                        at_samples.append(i)
                     else:
                         roots.append((i, k))
-        place1 = self.place1
-        values = [sign * place1(x) for x in places]
+        places = xs[at_samples].tolist()
+        values = [sign * v for v in pl[at_samples].tolist()]
         if roots:
-            slope1 = self.slope1(sign)
+            slope1, place1 = self.slope1(sign), self.place1
             best = max((v for v in values if v == v), default=math.nan)
             floor = best - PRUNE_REL * abs(best)
             rise = PRUNE_GAIN * top
             reach = []                                  # how high each bracket can rise
             for i, k in roots:
                 lo, hi = float(xs[i]), float(xs[i + 1])
-                reach.append(max(sign * place1(lo), sign * place1(hi)) + rise * (hi - lo))
-            found: dict[int, float] = {}
+                reach.append(max(sign * float(pl[i]), sign * float(pl[i + 1])) + rise * (hi - lo))
+            found: dict[int, tuple[float, float]] = {}
             for n in sorted(range(len(roots)), key=lambda n: -reach[n] if reach[n] == reach[n] else math.inf):
                 if reach[n] < floor:
                     continue                        # cannot come near the best candidate: not refined
                 i, k = roots[n]
                 a, b = key[k]
-                x = found[n] = illinois1(slope1, float(xs[i]), float(xs[i + 1]), sign * float(sl[i]),
-                                         sign * float(sl[i + 1]), FLOOR_REL * (b - a))
+                x = illinois1(slope1, float(xs[i]), float(xs[i + 1]), sign * float(sl[i]), sign * float(sl[i + 1]),
+                              FLOOR_REL * (b - a))
                 v = sign * place1(x)
+                found[n] = (x, v)
                 if v == v and not v <= best:
                     best = v
                     floor = best - PRUNE_REL * abs(best)
             for n in sorted(found):                     # in the order of the sign changes, as maximise lists them
-                places.append(found[n])
-                values.append(sign * place1(found[n]))
+                places.append(found[n][0])
+                values.append(found[n][1])
         return _best_of_pairs(values, places)
 
     def _known(self, x: float) -> float | None:
@@ -432,6 +434,7 @@ class FaceSamples:
         return np.array(vals, dtype=float).reshape(d.shape)
 
 
+@lru_cache(maxsize=256)
 def _grids(key: tuple[tuple[float, float], ...], still: tuple[tuple[float, float], ...], turn: float | None
            ) -> tuple[tuple[np.ndarray, ...], np.ndarray]:
     """The samples of each piece and all of them in one array, as :func:`~geomcon.cam.profile.maximise`'s
@@ -442,13 +445,17 @@ def _grids(key: tuple[tuple[float, float], ...], still: tuple[tuple[float, float
     return sample_grids(key, _DENSE, turn), sample_grid(key, _DENSE, turn)
 
 
+_RUNS: dict[tuple[int, int], tuple[np.ndarray, np.ndarray, int | None]] = {}
+"""(the turn's samples, a segment's, where the segment's start in the turn's or None), by their ids."""
+
+
 class _TurnSlopes:
-    """l′ on the turn's samples, each piece's first sample, and every place where l′ changes sign between
+    """l and l′ on the turn's samples, each piece's first sample, and every place where l′ changes sign between
     neighbouring samples of a piece (+ → − and − → +), with the larger |l′| of the two: what a search reads
     (a few numpy passes; the few places read one by one)."""
 
-    def __init__(self, grids: tuple[np.ndarray, ...], grid: np.ndarray, sl: np.ndarray) -> None:
-        self.grid, self.sl = grid, sl
+    def __init__(self, grids: tuple[np.ndarray, ...], grid: np.ndarray, pl: np.ndarray, sl: np.ndarray) -> None:
+        self.grid, self.pl, self.sl = grid, pl, sl
         sizes = [len(d) for d in grids]
         self.firsts = np.cumsum([0] + sizes[:-1]).tolist()
         self.rising: dict[int, list[tuple[int, float]]] = {}
@@ -468,14 +475,21 @@ class _TurnSlopes:
         return bisect_right(self.firsts, i) - 1
 
     def offset(self, grid: np.ndarray) -> int | None:
-        """Where ``grid`` starts as a run of whole pieces of the turn's samples, or None."""
+        """Where ``grid`` starts as a run of whole pieces of the turn's samples, or None (found once for the
+        same two sample arrays, which :func:`_grids` makes once: read-only, their numbers cannot change)."""
         if grid is self.grid:
             return 0
+        known = _RUNS.get((id(self.grid), id(grid)))
+        if known is not None and known[0] is self.grid and known[1] is grid:
+            return known[2]
         n, first = grid.size, float(grid[0])
         i = int(self.grid.searchsorted(first))
-        if i in self.firsts and i + n <= self.grid.size and np.array_equal(self.grid[i:i + n], grid):
-            return i
-        return None
+        at = i if i in self.firsts and i + n <= self.grid.size and np.array_equal(self.grid[i:i + n], grid) else None
+        if not self.grid.flags.writeable and not grid.flags.writeable and self.grid.base is None and grid.base is None:
+            if len(_RUNS) >= 256:
+                _RUNS.clear()
+            _RUNS[(id(self.grid), id(grid))] = (self.grid, grid, at)    # (both kept: their ids are not reused)
+        return at
 
     def top(self, i0: int, i1: int) -> float:
         """The largest |l′| of samples i0 … i1 − 1 (nan ignored; 0 if none)."""
@@ -484,7 +498,7 @@ class _TurnSlopes:
         if v is None:
             if self._abs is None:
                 self._abs = np.abs(self.sl)
-            v = self._tops[key] = float(np.nanmax(self._abs[i0:i1], initial=0.0))
+            v = self._tops[key] = float(np.fmax.reduce(self._abs[i0:i1], initial=0.0))    # (np.nanmax's own)
         return v
 
 
