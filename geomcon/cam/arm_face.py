@@ -41,8 +41,9 @@ import numpy as np
 
 from ..geometry import Point
 from .oscillating_flat import END_TIE, FlatArmCam
-from .profile import (_DENSE, FLOOR_REL, PRUNE_GAIN, PRUNE_REL, SLOPE_NOISE, Extremum, LineFamily, _best_of_pairs, _rest_grids, div1, envelope,
-                      envelope1, envelope_terms, illinois1, maximise, pow1, sample_grid, sample_grids)
+from .profile import (_DENSE, FLOOR_REL, PRUNE_GAIN, PRUNE_REL, SLOPE_NOISE, Extremum, LineFamily, _best_of_pairs,
+                      _rest_grids, div1, envelope, envelope1, envelope_terms, illinois1, maximise, pow1, sample_grid,
+                      sample_grids)
 
 
 @dataclass(frozen=True)
@@ -249,10 +250,13 @@ class FaceSamples:
     >>> turn = sample_grid(tuple(fam.pieces()), 1440)
     >>> rise = sample_grid(tuple(fam.pieces()[:1]), 1440, sum(b - a for a, b in fam.pieces()))
     >>> l, dl = s.arrays(turn)
-    >>> s.arrays(rise)[1].tolist() == dl[:rise.size].tolist() == face_place_and_slope(fam, Point(0.0, 100.0), -1.0, -1, np.array(rise))[1].tolist()
+    >>> alone = face_place_and_slope(fam, Point(0.0, 100.0), -1.0, -1, np.array(rise))[1]
+    >>> s.arrays(rise)[1].tolist() == dl[:rise.size].tolist() == alone.tolist()
     True
-    >>> s.place1(0.4) == face_place1(fam, Point(0.0, 100.0), -1.0, -1, 0.4), s.place1(float(turn[7])) == float(l[7])
-    (True, True)
+    >>> s.place1(0.4) == face_place1(fam, Point(0.0, 100.0), -1.0, -1, 0.4)
+    True
+    >>> s.place1(float(turn[7])) == float(l[7])
+    True
     """
 
     def __init__(self, fam: LineFamily, A0: Point, inv: float, tau: int) -> None:
@@ -323,10 +327,11 @@ class FaceSamples:
         One step less: a sign change whose bracket [lo, hi] cannot rise to within
         :data:`~geomcon.cam.profile.PRUNE_REL` of the best candidate found so far — its ends' values plus
         :data:`~geomcon.cam.profile.PRUNE_GAIN` times the largest sampled |l′| times hi − lo stay below; the
-        brackets are refined highest reach first — is not refined (as :func:`~geomcon.cam.profile.maximise` prunes the sampled peaks it refines without a
-        slope). Such a candidate is below the tie rule's reach (TIE_REL ≪ PRUNE_REL), so the result is
-        the same; it saves the refinements of roundoff, such as the sign change a sample or two from the
-        start of a law that leaves rest (l′ ∝ δ there; 200-07's farthest contact: 14 scalar slopes).
+        brackets are refined highest reach first — is not refined (as :func:`~geomcon.cam.profile.maximise`
+        prunes the sampled peaks it refines without a slope). Such a candidate is below the tie rule's reach
+        (TIE_REL ≪ PRUNE_REL), so the result is the same; it saves the refinements of roundoff, such as the
+        sign change a sample or two from the start of a law that leaves rest (l′ ∝ δ there; 200-07's farthest
+        contact: 14 scalar slopes).
 
         >>> from geomcon.cam.oscillating_flat import FlatArmCam
         >>> from geomcon.cam.program import parse_program
@@ -355,7 +360,7 @@ class FaceSamples:
             firsts.append(j)
             j += len(d)
         lasts = [f + len(d) - 1 for f, d in zip(firsts, grids)]
-        changes = base.rising if sign > 0.0 else base.falling        # + → − of sign·l′, with max(|l′|) of the pair
+        changes = base.rising if sign > 0.0 else base.falling    # + → − of sign·l′, with the pair's larger |l′|
         at_samples: list[int] = []                                    # candidates that are samples (their l kept)
         roots: list[tuple[int, int]] = []
         for k, (f, last) in enumerate(zip(firsts, lasts)):

@@ -336,8 +336,10 @@ def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") 
     and the warnings each ask for it; a program is immutable).
 
     >>> spec = [{"kind": "rise", "angle": 180, "law": "cosine"}, {"kind": "return", "angle": 180, "law": "cycloidal"}]
-    >>> parse_program(spec) is parse_program([dict(t) for t in spec]), parse_program(spec) == _parse_program(spec, "program")
-    (True, True)
+    >>> parse_program(spec) is parse_program([dict(t) for t in spec])
+    True
+    >>> parse_program(spec) == _parse_program(spec, "program")
+    True
     >>> parse_program(spec) is parse_program([{**spec[0], "angle": 180.0}, spec[1]])    # 180.0 is not the int 180
     False
     """
