@@ -235,3 +235,54 @@ def test_the_searchs_slope_on_floats_is_face_place_slope1(seed):
     for sign in (1.0, -1.0):
         fast = search._slope1(sign)
         assert [fast(d) for d in angles] == [sign * osc_flat.face_place_slope1(fam, A0, inv, tau, d) for d in angles]
+
+
+def _searches(cam: FlatArmCam, order: str = "turn first") -> list[Extremum]:
+    fam = osc_flat.flat_family(cam)
+    A0, inv, tau = Point(0.0, cam.a), -float(cam.sigma), cam.tau
+    segs = [osc_flat.face_nearest(fam, A0, inv, tau, seg) for seg in (cam.program.rise, cam.program.ret)] \
+        if order == "segments first" else []
+    out = list(osc_flat.face_extremes(fam, A0, inv, tau))
+    if not segs:
+        segs = [osc_flat.face_nearest(fam, A0, inv, tau, seg) for seg in (cam.program.rise, cam.program.ret)]
+    return out + segs
+
+
+def test_pruned_brackets_change_no_search(monkeypatch):
+    """The brackets the shared searches do not refine (they cannot reach the best candidate) change nothing:
+    over random arms where some are left out, every search equals maximise's with every bracket refined,
+    whichever search runs first."""
+    from geomcon.cam import arm_face
+    refined = []
+    plain = arm_face.illinois1
+    monkeypatch.setattr(arm_face, "illinois1", lambda *a: refined.append(a) or plain(*a))
+    pruned = 0
+    for seed in range(200, 260):
+        cam = _cam(np.random.default_rng(seed))
+        refined.clear()
+        got = _searches(cam)
+        with monkeypatch.context() as m:
+            m.setattr(arm_face, "PRUNE_GAIN", math.inf)      # nothing left out
+            n = len(refined)
+            assert _searches(cam, "segments first") == got
+            pruned += (len(refined) - n) - n           # refinements with nothing left out, less the pruned run's
+        want = [*_unshared_place_search(cam, None), *(_unshared_place_search(cam, seg)[0]
+                                                      for seg in (cam.program.rise, cam.program.ret))]
+        assert got == want
+    assert pruned > 0                                   # the test saw brackets left out
+
+
+def test_200_07_farthest_contact_leaves_the_roundoff_bracket_out(monkeypatch):
+    """200-07's slope of l changes sign a sample from the rise's start by roundoff (l′ ∝ δ there); that
+    bracket cannot reach the farthest contact (128.4 mm against l(0) = 103.9 mm) and is not refined."""
+    from geomcon.cam import arm_face
+    refined = []
+    plain = arm_face.illinois1
+    monkeypatch.setattr(arm_face, "illinois1", lambda *a: refined.append(a[1]) or plain(*a))
+    prog = [{"kind": "rise", "angle": 120, "law": "poly345"}, {"kind": "dwell", "angle": 60},
+            {"kind": "return", "angle": 120, "law": "cycloidal"}, {"kind": "dwell", "angle": 60}]
+    from geomcon.cam.program import parse_program
+    cam = FlatArmCam(120.0, 50.0, 15.0, parse_program(prog), offset=10.0)
+    got = _searches(cam)
+    assert got[0] == _unshared_place_search(cam, None)[0] and got[1] == _unshared_place_search(cam, None)[1]
+    assert round(got[1].value, 6) == 128.399117 and 0.0 not in refined

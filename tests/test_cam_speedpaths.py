@@ -19,7 +19,7 @@ from geomcon.cam.oscillating_flat import FlatArmCam
 from geomcon.cam.profile import (LineFamily, PitchCurve, _bisect_all, backward_jumps, brent_max1, envelope,
                                  envelope1, frame_pressure_angle_slope, frame_pressure_angle_slope1, illinois1,
                                  inverted, inverted1, inverted_relative, inverted_relative1, pow1, rho_min,
-                                 JUMP_REL, TWO_PI, _DENSE, Extremum)
+                                 JUMP_REL, TWO_PI, _DENSE, Extremum, envelope_rho_min)
 from geomcon.cam.program import parse_program
 from geomcon.cam.translating import TranslatingCam, _max_by_root
 from geomcon.problems import load_problem, problem_from_dict
@@ -351,6 +351,9 @@ def test_backward_jumps_shortcut_changes_nothing(seed):
     assert backward_jumps(fam) == _backward_jumps_in_full(fam)
     cam = FlatArmCam(100.0, float(rng.uniform(20, 45)), float(rng.uniform(3, 15)), prog)
     fam = osc_flat.flat_family(cam)
+    assert backward_jumps(fam) == _backward_jumps_in_full(fam)
+    fam = osc_flat.flat_family(cam)
+    envelope_rho_min(fam)                       # the turn's samples kept: the pieces' ends read from them
     assert backward_jumps(fam) == _backward_jumps_in_full(fam)
 
 

@@ -1531,16 +1531,29 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
     cuts = [0.0] + [x for x in sorted(fam.breaks) if 0.0 < x < TWO_PI]
     after = np.array(cuts)
     before = np.nextafter(np.array([b if b > 0.0 else TWO_PI for b in cuts]), 0.0)
-    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)
     if fam.fn1 is not None:                     # the first look's few angles on floats (the same bits)
-        ends = [fam.fn1(x) for x in cuts + before.tolist()]       # λ = p′/φ′ as envelope1 divides
-        la = [div1(f6[4], f6[1]) for f6 in ends[:len(cuts)]]
-        lb = [div1(f6[4], f6[1]) for f6 in ends[len(cuts):]]
-        jumps = [(b, (x1 - x0) * math.copysign(1.0, f6[1])) for b, x0, x1, f6 in zip(cuts, lb, la, ends)]
-        part = [v for v in la + lb + [div1(f6[4], f6[1]) for f6 in map(fam.fn1, _EVERY_90TH)] if v == v]
-        low = max(part) - min(part) if part else math.nan
-        if all(j >= -JUMP_REL * low for _, j in jumps):
-            return ()
+        angles = cuts + before.tolist()
+        kept = _kept_lines(fam, angles)         # (the pieces' ends: samples of a search over the turn)
+        if kept is None:
+            ends = [fam.fn1(x) for x in angles]                    # λ = p′/φ′ as envelope1 divides
+            lams, dphis = [div1(f6[4], f6[1]) for f6 in ends], [f6[1] for f6 in ends]
+        else:
+            lams, dphis = kept
+        la, lb = lams[:len(cuts)], lams[len(cuts):]
+        jumps = [(b, (x1 - x0) * math.copysign(1.0, w)) for b, x0, x1, w in zip(cuts, lb, la, dphis)]
+        part = [v for v in la + lb if v == v]
+        more = iter(_EVERY_90TH)                # a part of the range, grown a sample at a time: every part is
+        while True:                             # within the whole range, so once no jump counts against it, none does
+            low = max(part) - min(part) if part else math.nan
+            if all(j >= -JUMP_REL * low for _, j in jumps):
+                return ()
+            x = next(more, None)
+            if x is None:
+                break
+            f6 = fam.fn1(x)
+            v = div1(f6[4], f6[1])
+            if v == v:
+                part.append(v)
         lam = np.array(la + lb)
     else:
         lam = envelope(fam, np.concatenate([after, before]))[2]
@@ -1548,17 +1561,39 @@ def backward_jumps(fam: LineFamily) -> tuple[Extremum, ...]:
         dphi = fam.eval(after)[1]
         jumps = [(b, (x1 - x0) * math.copysign(1.0, w)) for b, x0, x1, w in zip(cuts, lb.tolist(), la.tolist(),
                                                                                 dphi.tolist())]
-        part = np.concatenate([lam, envelope(fam, grid[::90])[2]])   # the breaks and every 90th sample:
+        part = np.concatenate([lam, envelope(fam, np.array(_EVERY_90TH))[2]])   # the breaks and every 90th sample:
         low = float(np.nanmax(part) - np.nanmin(part)) if not np.isnan(part).all() else math.nan   # a part of the range
         if all(j >= -JUMP_REL * low for _, j in jumps):
             return ()                               # no jump counts even against a part of the range: done
+    grid = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)      # (made only when the first look fails)
     lam = np.concatenate([lam, envelope(fam, grid)[2]])
     span = float(np.nanmax(lam) - np.nanmin(lam))
     return tuple(Extremum(float(jump), b) for b, jump in jumps if jump < -JUMP_REL * span)
 
 
+def _kept_lines(fam: LineFamily, angles: list[float]) -> tuple[list[float], list[float]] | None:
+    """(λ, φ′) at ``angles`` from the envelope terms ``fam`` keeps for a sample array holding every one of
+    them (:func:`envelope_terms`: a search over the turn samples each piece's ends), or None. λ = p′/φ′ there
+    is numpy's division, which :func:`div1` matches: the numbers the scalar path computes.
+
+    >>> fam = LineFamily(lambda d: (d, 1 + 0 * d, 0 * d, 30 + 0 * d, np.sin(d), 0 * d), (1.0,))
+    >>> d = sample_grid(((0.0, 1.0), (1.0, TWO_PI)), 64)
+    >>> _kept_lines(fam, [1.0]) is None, envelope_terms(fam, d) is not None, _kept_lines(fam, [1.0])
+    (True, True, ([0.8414709848078965], [1.0]))
+    """
+    for grid, terms in list(fam.memo.values()):
+        if grid.ndim != 1 or not grid.size:
+            continue
+        idx = np.minimum(np.searchsorted(grid, angles), grid.size - 1)
+        if bool(np.all(grid[idx] == angles)):
+            return terms.lam[idx].tolist(), terms.dphi[idx].tolist()
+    return None
+
+
 _EVERY_90TH = np.linspace(0.0, TWO_PI, _DENSE, endpoint=False)[::90].tolist()
-"""The samples of the turn :func:`backward_jumps` looks at first (every 90th of :data:`_DENSE`)."""
+"""The samples of the turn :func:`backward_jumps` looks at first (every 90th of :data:`_DENSE`; on floats one at
+a time, until the range they span clears every jump: a flat face's breaks all have λ = 0 when the follower
+starts and stops at rest, so their jumps, roundoff such as −1.6e-29 mm, need one sample inside a segment)."""
 
 
 def chord_error(profile_xy: np.ndarray, pitch_dense: np.ndarray, rr: float) -> float:

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_right
+from collections import abc
 from dataclasses import dataclass
 from ..cached import cached_property
 from typing import Any, Mapping, Sequence
@@ -330,7 +331,55 @@ equal)."""
 
 def parse_program(tables: Sequence[Mapping[str, Any]], *, key: str = "program") -> Program:
     """Validate a program given as tables (see the module docstring); a bad entry raises
-    :class:`NotAMechanism` naming ``program[i]`` and the value."""
+    :class:`NotAMechanism` naming ``program[i]`` and the value. The same tables (by content, every value with
+    its type) give the same :class:`Program`, parsed once (a solve's validation and construction, the twin
+    and the warnings each ask for it; a program is immutable).
+
+    >>> spec = [{"kind": "rise", "angle": 180, "law": "cosine"}, {"kind": "return", "angle": 180, "law": "cycloidal"}]
+    >>> parse_program(spec) is parse_program([dict(t) for t in spec])
+    True
+    >>> parse_program(spec) == _parse_program(spec, "program")
+    True
+    >>> parse_program(spec) is parse_program([{**spec[0], "angle": 180.0}, spec[1]])    # 180.0 is not the int 180
+    False
+    """
+    try:
+        memo = (_content(tables), key)
+        hit = _PARSED.get(memo)
+    except TypeError:                               # a value that cannot be a key: parsed every time
+        return _parse_program(tables, key)
+    if hit is None:
+        if len(_PARSED) >= _PARSED_MAX:
+            _PARSED.clear()
+        hit = _PARSED[memo] = _parse_program(tables, key)
+    return hit
+
+
+_PARSED: dict[tuple, Program] = {}
+_PARSED_MAX = 256
+
+
+def _content(v: Any) -> Any:
+    """A hashable image of ``v`` that tells apart every value that could parse differently: a mapping's items
+    and a sequence's members by content, each leaf with its type (1, 1.0 and True are equal and hash alike).
+
+    >>> _content([{"angle": 1}]) != _content([{"angle": 1.0}]) != _content([{"angle": True}])
+    True
+    """
+    t = type(v)
+    if t is list or t is tuple:
+        return ("[", tuple([_content(x) for x in v]))
+    if t is dict or isinstance(v, abc.Mapping):
+        return ("{", tuple([(k, type(x), x) if type(x) in _LEAVES else (k, _content(x)) for k, x in v.items()]))
+    hash(v)
+    return (t, v)
+
+
+_LEAVES = frozenset({str, int, float, bool, type(None)})
+
+
+def _parse_program(tables: Sequence[Mapping[str, Any]], key: str) -> Program:
+    """:func:`parse_program` without the memo."""
     if len(tables) > MAX_SEGMENTS:
         raise NotAMechanism(f"{key} has {len(tables)} segments; at most {MAX_SEGMENTS}")
     segs, start = [], 0.0
