@@ -37,7 +37,7 @@ from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_b
                    title_block_box)
 from .serial import Element, svg_string
 from .protocol import BLOCK_GAP, info_height, paginate, render_info, render_protocol
-from .labels import rich_runs
+from .labels import rich_runs, text_width
 from .shapes import add_runs, to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
 from .view import FIG_MARGIN, Box, View, fmt, grow, nice_values
@@ -77,6 +77,9 @@ class SheetLayout:
     info_h: float
     info_here: bool
     caption: Box
+    warnings_at: tuple[float, float] | None = None
+    """The warnings' corner when they are set apart from the results (in a free box of the drawing's area)."""
+    warnings_w: float = 0.0
 
 
 def _layouts(page: PageSpec, info: Sequence[str], warnings: Sequence[str]) -> list[SheetLayout]:
@@ -169,6 +172,40 @@ def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] 
     return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
 
 
+def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
+                         warnings: Sequence[str], scale: Scale) -> SheetLayout | None:
+    """``sl`` with the results and warnings on sheet 1, in a box of the frame that meets no drawn element of
+    ``fig``, the title block, the scale bar or the step captions (:func:`geomcon.render.free_area.free_box`);
+    None when there is no such box. The drawing keeps its scale: 001-13 is drawn at 1:5 with its results in
+    the free top-left corner, where reserving a column for them would draw it at 1:10."""
+    from .free_area import WIDTHS, free_box
+    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
+    tb = title_block_box(page.sheet)
+    x, y = fig.view.origin[0], fig.view.origin[1] + fig.view.size[1] + 6.0          # as :func:`_scale_bar`
+    bar = (x - 2.0, y - 2.0, x + _bar_length(fig.view.mu) + 12.0
+           + text_width(f"{scale}   μl = {fig.view.mu:g} mm/mm", INFO_SIZE), y + 5.5)
+    keep = [(tb[0] - INSET, tb[1] - INSET, tb[2], tb[3]), bar, sl.caption]
+    shapes = [s for g in fig.groups for s in g.shapes]
+    region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
+    spot = free_box(shapes, region, keep, [(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
+    if spot is not None:
+        x, y, w, h = spot
+        return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True)
+    if not (info and warnings):
+        return None
+    # the results and the warnings each in a free box of its own (000-04: beside the cam, left and right)
+    spot = free_box(shapes, region, keep, [(w, info_height(info, w) - 4.0) for w in WIDTHS])
+    if spot is None:
+        return None
+    x, y, w, h = spot
+    grown = (x - INSET, y - INSET, x + w + INSET, y + h + INSET)
+    other = free_box(shapes, region, keep + [grown], [(w, info_height((), w, warnings) - 4.0) for w in WIDTHS])
+    if other is None:
+        return None
+    return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True,
+                   warnings_at=(other[0], other[1] - 4.0), warnings_w=other[2])
+
+
 def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
     """Every numbered step's caption in ``box``, each line ``<text class="stepcap" data-step="k">``, hidden
     unless it is the current step: frame k and the player's step k show what step k does; the full drawing
@@ -243,6 +280,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     keep = None if apart is None else _not_diagram
     fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
     origin = view.origin
+    if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
+        sl = results_in_free_room(fig, sl, page, info, warnings, scale) or sl
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
@@ -259,7 +298,11 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     dwg.add(step_captions_group(dwg, scene, sl.caption, lang, upto))
     dwg.add(_figure_group(dwg, fig))
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
-    if sl.info_here and (info or warnings):
+    if sl.info_here and sl.warnings_at is not None:
+        dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, (), info_steps, upto, lang, last))
+        dwg.add(render_info(dwg, (), *sl.warnings_at, sl.warnings_w, warnings, None, upto, lang, last,
+                            id_="warnings"))
+    elif sl.info_here and (info or warnings):
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
     out = [svg_string(dwg)]
@@ -360,6 +403,11 @@ def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
             layer.add(g)
         root.add(layer)
     return root
+
+
+def _bar_length(mu: float) -> float:
+    """Paper length of the scale bar at μl = ``mu``: a round model length of about 15–35 mm of paper."""
+    return max(nice_values(15.0 * mu, 35.0 * mu), default=20.0 * mu) / mu
 
 
 def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float, scale: Scale) -> Any:
