@@ -172,6 +172,51 @@ def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] 
     return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
 
 
+def _keepouts(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale) -> list[Box]:
+    """What a box set into the drawing's free room must not meet besides the figure: the title block, the scale
+    bar and the step captions' box."""
+    tb = title_block_box(page.sheet)
+    x, y = fig.view.origin[0], fig.view.origin[1] + fig.view.size[1] + 6.0          # as :func:`_scale_bar`
+    bar = (x - 2.0, y - 2.0, x + _bar_length(fig.view.mu) + 12.0
+           + text_width(f"{scale}   μl = {fig.view.mu:g} mm/mm", INFO_SIZE), y + 5.5)
+    return [(tb[0] - INSET, tb[1] - INSET, tb[2], tb[3]), bar, sl.caption]
+
+
+def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
+                     warnings: Sequence[str], scale: Scale, upto: int | None = None
+                     ) -> tuple[Figure, Scale, Box] | None:
+    """The detail view of the mechanism (:func:`geomcon.render.detail.detail_figure`) in a free box of sheet 1
+    clear of the figure, the results and warnings, the title block, scale bar and captions; None when every
+    link is long enough on paper or no free box holds it."""
+    from .detail import detail_figure
+    from .free_area import free_box
+    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
+    keep = _keepouts(fig, sl, page, scale)
+    if sl.info_here and (info or warnings):
+        x, y = sl.info_at
+        keep.append((x - INSET, y, x + sl.info_w + INSET, y + sl.info_h + INSET))
+        if sl.warnings_at is not None:
+            x, y = sl.warnings_at
+            keep.append((x - INSET, y, x + sl.warnings_w + INSET,
+                         y + info_height((), sl.warnings_w, warnings) + INSET))
+    shapes = [s for g in fig.groups for s in g.shapes]
+    region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
+    return detail_figure(scene, fig, scale, lambda w, h: free_box(shapes, region, keep, [(w, h)]), upto)
+
+
+def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, lang: str) -> Any:
+    """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``)."""
+    from .protocol import _line
+    g = dwg.g(id="detail")
+    g.add(dwg.rect(insert=(fmt(box[0]), fmt(box[1])), size=(fmt(box[2] - box[0]), fmt(box[3] - box[1])),
+                   fill="none", stroke=INK, stroke_width="0.25", id="detail-frame"))
+    head = _line(dwg, f"{text('Detail', '局部放大', lang)}  {scale}   μl = {fig.view.mu:g} mm/mm", box[0] + 1.5,
+                 box[1] + 4.5, INFO_SIZE, INK, "detail-head")
+    g.add(head)
+    g.add(_figure_group(dwg, fig, "detail-"))
+    return g
+
+
 def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
                          warnings: Sequence[str], scale: Scale) -> SheetLayout | None:
     """``sl`` with the results and warnings on sheet 1, in a box of the frame that meets no drawn element of
@@ -180,11 +225,7 @@ def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Seq
     the free top-left corner, where reserving a column for them would draw it at 1:10."""
     from .free_area import WIDTHS, free_box
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
-    tb = title_block_box(page.sheet)
-    x, y = fig.view.origin[0], fig.view.origin[1] + fig.view.size[1] + 6.0          # as :func:`_scale_bar`
-    bar = (x - 2.0, y - 2.0, x + _bar_length(fig.view.mu) + 12.0
-           + text_width(f"{scale}   μl = {fig.view.mu:g} mm/mm", INFO_SIZE), y + 5.5)
-    keep = [(tb[0] - INSET, tb[1] - INSET, tb[2], tb[3]), bar, sl.caption]
+    keep = _keepouts(fig, sl, page, scale)
     shapes = [s for g in fig.groups for s in g.shapes]
     region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
     spot = free_box(shapes, region, keep, [(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
@@ -282,6 +323,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     origin = view.origin
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
         sl = results_in_free_room(fig, sl, page, info, warnings, scale) or sl
+    detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, info, warnings, scale, upto)
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
@@ -298,6 +340,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     dwg.add(step_captions_group(dwg, scene, sl.caption, lang, upto))
     dwg.add(_figure_group(dwg, fig))
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
+    if detail is not None:
+        dwg.add(_detail_group(dwg, *detail, lang))
     if sl.info_here and sl.warnings_at is not None:
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, (), info_steps, upto, lang, last))
         dwg.add(render_info(dwg, (), *sl.warnings_at, sl.warnings_w, warnings, None, upto, lang, last,
@@ -390,12 +434,13 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
                          warnings=warnings, info_steps=info_steps, page=page, problem=problem, recipe=recipe)[0]
 
 
-def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
-    root = dwg.g(id="figure")
+def _figure_group(dwg: svgwrite.Drawing, fig: Figure, prefix: str = "") -> Any:
+    """The figure's layers, each step a group (ids prefixed by ``prefix``: a detail view draws steps again)."""
+    root = dwg.g(id=f"{prefix}figure")
     for name, groups in fig.layers():
-        layer = Element("g", id=f"layer-{name}")
+        layer = Element("g", id=f"{prefix}layer-{name}")
         for sd in groups:
-            g = Element("g", id=f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key),
+            g = Element("g", id=prefix + (f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key)),
                         class_=sd.classes)
             g.attribs["data-step"] = str(sd.number)
             for shape in sd.shapes:
