@@ -5,8 +5,10 @@ without shrinking the drawing to a smaller standard scale (issue 11, review item
 The drawing is centred in its area, so its free room is in the corners: a box is tried at every position of a
 2 mm grid over the frame (less the title block, the scale bar and the step captions' box), each width of
 :data:`WIDTHS` (the lines wrap to it, so the height follows), and the free one nearest a corner of the frame is
-taken (the narrowest width on a tie). A box is free when, grown by :data:`CLEAR`, it meets no stroke, mark,
-symbol or text of the figure (:func:`geomcon.render.shapes.obstacle`).
+taken (the first width of :data:`WIDTHS` on a tie). A box is free when, grown by :data:`CLEAR`, it meets no
+stroke, mark, symbol or text of the figure (:func:`geomcon.render.shapes.obstacle`): the figure is rasterised
+once into 1 mm cells (strokes sampled every 0.5 mm, areas by their bounding boxes) and a box is tested by the
+cells it covers with one cell of slack, so the test is conservative and every grid position costs four look-ups.
 
 Examples
 --------
@@ -45,29 +47,74 @@ def _positions(lo: float, hi: float) -> np.ndarray:
     return xs if xs[-1] == hi else np.append(xs, hi)
 
 
+CELL = 1.0
+"""Cell of the occupancy raster (paper mm): a box is tested against the cells it covers."""
+DENSE = 0.5
+"""Strokes are sampled every this many paper mm when rasterised (a sample within 0.25 mm of every point)."""
+
+
+def occupancy(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
+    """The summed-area table of a raster of ``region`` in :data:`CELL` cells, a cell counting 1 when a stroke
+    sample, a point, or the bounding box of an area (a filled symbol, a text) falls in it: a box's count is
+    then four look-ups (:func:`_counts`). Conservative: areas count by their bounding boxes."""
+    x0, y0, x1, y1 = region
+    nx, ny = int(np.ceil((x1 - x0) / CELL)) + 1, int(np.ceil((y1 - y0) / CELL)) + 1
+    grid = np.zeros((ny, nx), dtype=np.int32)
+    geoms = np.asarray(geoms, dtype=object)
+    if len(geoms):
+        kinds = shapely.get_type_id(geoms)
+        areas = (kinds == 3) | (kinds == 6)                               # polygons: their bounding boxes
+        for bx0, by0, bx1, by1 in shapely.bounds(geoms[areas]):
+            i0, i1 = _cell(by0, y0, ny), _cell(by1, y0, ny)
+            j0, j1 = _cell(bx0, x0, nx), _cell(bx1, x0, nx)
+            grid[i0:i1 + 1, j0:j1 + 1] = 1
+        if (~areas).any():
+            pts = shapely.get_coordinates(shapely.segmentize(geoms[~areas], DENSE))
+            j = np.clip(((pts[:, 0] - x0) // CELL).astype(np.int64), 0, nx - 1)
+            i = np.clip(((pts[:, 1] - y0) // CELL).astype(np.int64), 0, ny - 1)
+            grid[i, j] = 1
+    table = np.zeros((ny + 1, nx + 1), dtype=np.int64)
+    table[1:, 1:] = grid.cumsum(0).cumsum(1)
+    return table
+
+
+def _cell(v: float, lo: float, n: int) -> int:
+    return int(min(max((v - lo) // CELL, 0), n - 1))
+
+
+def _counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx1: np.ndarray, by1: np.ndarray
+            ) -> np.ndarray:
+    """How many occupied cells each box (x0, y0, x1, y1 arrays, paper mm) covers, one cell of slack around."""
+    ny, nx = table.shape[0] - 1, table.shape[1] - 1
+    j0 = np.clip(((bx0 - region[0]) // CELL).astype(np.int64) - 1, 0, nx)
+    i0 = np.clip(((by0 - region[1]) // CELL).astype(np.int64) - 1, 0, ny)
+    j1 = np.clip(((bx1 - region[0]) // CELL).astype(np.int64) + 2, 0, nx)
+    i1 = np.clip(((by1 - region[1]) // CELL).astype(np.int64) + 2, 0, ny)
+    return table[i1, j1] - table[i0, j1] - table[i1, j0] + table[i0, j0]
+
+
 def free_box(shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], sizes: Sequence[tuple[float, float]]
              ) -> tuple[float, float, float, float] | None:
     """The free box ``(x, y, w, h)`` nearest a corner of ``region`` (paper mm) among ``sizes`` (tried in order:
     the first size wins a tie), clear of every shape by :data:`CLEAR` and meeting no ``keepouts`` box; None
-    when no size fits anywhere.
+    when no size fits anywhere. The shapes are rasterised once (:func:`occupancy`), so each size is tested at
+    every grid position by array look-ups.
 
-    >>> free_box([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 27.0, 30.0)], [(20.0, 10.0)])
+    >>> free_box([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)], [(20.0, 10.0)])
     (30.0, 0.0, 20.0, 10.0)
     """
     geoms = [obstacle(s) for s in shapes] + [shapely.box(*k) for k in keepouts]
-    tree = shapely.STRtree(geoms)
     x0, y0, x1, y1 = region
+    table = occupancy(geoms, (x0 - 2 * CLEAR, y0 - 2 * CLEAR, x1 + 2 * CLEAR, y1 + 2 * CLEAR))
+    grown = (x0 - 2 * CLEAR, y0 - 2 * CLEAR)
     best: tuple[float, int, tuple[float, float, float, float]] | None = None
     for rank, (w, h) in enumerate(sizes):
         xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
         if not (len(xs) and len(ys)):
             continue
         gx, gy = (a.ravel() for a in np.meshgrid(xs, ys))
-        boxes = shapely.box(gx - CLEAR, gy - CLEAR, gx + w + CLEAR, gy + h + CLEAR)
-        hit = np.zeros(len(boxes), dtype=bool)
-        if geoms:
-            hit[tree.query(boxes, predicate="intersects")[0]] = True
-        free = np.flatnonzero(~hit)
+        n = _counts(table, grown, gx - CLEAR, gy - CLEAR, gx + w + CLEAR, gy + h + CLEAR)
+        free = np.flatnonzero(n == 0)
         if not len(free):
             continue
         # distance of the box to the nearest corner of the region: the larger of its x and y gaps to that corner
@@ -81,4 +128,4 @@ def free_box(shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], size
     return None if best is None else best[2]
 
 
-__all__ = ["CLEAR", "STEP", "WIDTHS", "free_box"]
+__all__ = ["CELL", "CLEAR", "STEP", "WIDTHS", "free_box", "occupancy"]
