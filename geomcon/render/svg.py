@@ -208,11 +208,14 @@ def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, la
     """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``)."""
     from .protocol import _line
     g = dwg.g(id="detail")
-    g.add(dwg.rect(insert=(fmt(box[0]), fmt(box[1])), size=(fmt(box[2] - box[0]), fmt(box[3] - box[1])),
-                   fill="none", stroke=INK, stroke_width="0.25", id="detail-frame"))
+    first = str(min(sd.number for sd in fig.groups))      # frame and caption show from the detail's first step
+    rect = dwg.rect(insert=(fmt(box[0]), fmt(box[1])), size=(fmt(box[2] - box[0]), fmt(box[3] - box[1])),
+                    fill="none", stroke=INK, stroke_width="0.25", id="detail-frame")
     head = _line(dwg, f"{text('Detail', '局部放大', lang)}  {scale}   μl = {fig.view.mu:g} mm/mm", box[0] + 1.5,
                  box[1] + 4.5, INFO_SIZE, INK, "detail-head")
-    g.add(head)
+    for el in (rect, head):
+        el.attribs["data-step"] = first
+        g.add(el)
     g.add(_figure_group(dwg, fig, "detail-"))
     return g
 
