@@ -29,9 +29,7 @@ NO_ROOM = {
     "000-05_slotter_cam_motion_law": "15 results (ψ at eleven δ) and 8 warnings: the results alone 106 mm at 125 mm",
     "000-06_slotter_cam_pitch_points": "the pitch points' table: 356 mm tall at 125 mm wide",
     "000-07_slotter_cam_actual_profile": "the profile points' table: 338 mm tall at 125 mm wide",
-    "100-04_four_bar_fixed_pivots_coupler_angles": "15 results, 74 mm at 125 mm; the three positions fill the frame",
     "100-07_rocker_slider_three_positions": "60 mm at 95 mm; the inversion's arcs and lines fill the frame",
-    "300-01_four_bar_double_rocker_pressure_angle": "69 mm at 95 mm; the two positions fill the frame",
 }
 """Drawings whose free room holds no box for their results: they keep a sheet of their own (the last resort of
 :func:`geomcon.render.svg._best_layout`, which would draw them a standard scale smaller to reserve a column).
@@ -41,8 +39,10 @@ FREE_ROOM = ["000-04_slotter_cam_psi0", "001-01_crank_rocker_change_point", "001
              "001-14_crank_rocker_K1_frame_angles", "001-15_crank_rocker_frame_and_position",
              "001-17_crank_rocker_theta", "001-24_cam_displacement_at_100", "200-01_cam_roller_offset",
              "200-03_cam_roller_undercut", "200-15_cam_handbook_laws", "200-16_cam_poly_4567",
-             "200-17_cam_table_law", "200-20_oscillating_base_radius_rho", "400-05_crank_slider_instant_centres"]
-"""The drawings that kept their results off sheet 1 before (hlook11 item A1) and now set them in free room."""
+             "200-17_cam_table_law", "200-20_oscillating_base_radius_rho", "400-05_crank_slider_instant_centres",
+             "100-04_four_bar_fixed_pivots_coupler_angles", "300-01_four_bar_double_rocker_pressure_angle"]
+"""The drawings that kept their results off sheet 1 before (hlook11 item A1) and now set them in free room
+(000-04: results and warnings apart; 100-04, 300-01: the results in three numbered boxes)."""
 
 
 def _heads(svg: str, cls: str) -> list[str]:
@@ -100,17 +100,25 @@ def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
     _, free_scale, _ = place_figure(sc, page, (), (), keep=keep)
     assert scale == free_scale
     fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep)
-    placed = results_in_free_room(fig, sl, page, info, warnings, scale)
+    placed = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps())
     assert placed is not None and placed.info_here
     from geomcon.render.protocol import info_height
     x, y = placed.info_at
-    boxes = []
-    if placed.warnings_at is None:
-        boxes.append((x, y + 4.0, x + placed.info_w, y + info_height(info, placed.info_w, warnings)))
+    if not placed.pieces:
+        boxes = [(x, y + 4.0, x + placed.info_w, y + info_height(info, placed.info_w, warnings))]
+        shown = len(info)
     else:
-        boxes.append((x, y + 4.0, x + placed.info_w, y + info_height(info, placed.info_w)))
-        wx, wy = placed.warnings_at
-        boxes.append((wx, wy + 4.0, wx + placed.warnings_w, wy + info_height((), placed.warnings_w, warnings)))
+        boxes = [(pc.x, pc.y + 4.0, pc.x + pc.w,
+                  pc.y + info_height([info[i] for i in pc.rows], pc.w, warnings if pc.warnings else ()))
+                 for pc in placed.pieces]
+        rows = [i for pc in placed.pieces for i in pc.rows]
+        assert sorted(rows) == list(range(len(info)))         # every result once
+        assert sum(pc.warnings for pc in placed.pieces) == bool(warnings)
+        shown = len(rows)
+    assert shown == len(info)
+    for a in range(len(boxes)):                               # the pieces do not overlap
+        for b in range(a):
+            assert not shapely.box(*boxes[a]).intersects(shapely.box(*boxes[b])), pid
     drawn = [obstacle(s) for g in fig.groups for s in g.shapes]
     assert len(drawn) > 10
     for b in boxes:

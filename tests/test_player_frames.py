@@ -71,10 +71,9 @@ _ROW = re.compile(r'<(?:text|g)\b[^>]*\bclass="(info-head|info|warning-head|warn
 def _info_rows(svg: str) -> list[tuple[str, int | None, bool]]:
     """The Results / Warnings block's headings and lines in document order: (kind, data-step, shown)."""
     blocks = []
-    for head in ('<g id="info">', '<g id="warnings">'):         # the warnings may stand apart on sheet 1
-        if head in svg:
-            block = svg[svg.index(head):]
-            blocks.append(block[:block.index("</g>")])
+    for m in re.finditer(r'<g id="(?:info|info-\d+|warnings)">', svg):   # split over free boxes on sheet 1
+        block = svg[m.start():]
+        blocks.append(block[:block.index("</g>")])
     block = "".join(blocks)
     out = []
     for m in _ROW.finditer(block):

@@ -53,10 +53,9 @@ DENSE = 0.5
 """Strokes are sampled every this many paper mm when rasterised (a sample within 0.25 mm of every point)."""
 
 
-def occupancy(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
-    """The summed-area table of a raster of ``region`` in :data:`CELL` cells, a cell counting 1 when a stroke
-    sample, a point, or the bounding box of an area (a filled symbol, a text) falls in it: a box's count is
-    then four look-ups (:func:`_counts`). Conservative: areas count by their bounding boxes."""
+def raster(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
+    """A raster of ``region`` in :data:`CELL` cells, a cell 1 when a stroke sample, a point, or the bounding box
+    of an area (a filled symbol, a text) falls in it. Conservative: areas count by their bounding boxes."""
     x0, y0, x1, y1 = region
     nx, ny = int(np.ceil((x1 - x0) / CELL)) + 1, int(np.ceil((y1 - y0) / CELL)) + 1
     grid = np.zeros((ny, nx), dtype=np.int32)
@@ -65,15 +64,31 @@ def occupancy(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
         kinds = shapely.get_type_id(geoms)
         areas = (kinds == 3) | (kinds == 6)                               # polygons: their bounding boxes
         for bx0, by0, bx1, by1 in shapely.bounds(geoms[areas]):
-            i0, i1 = _cell(by0, y0, ny), _cell(by1, y0, ny)
-            j0, j1 = _cell(bx0, x0, nx), _cell(bx1, x0, nx)
-            grid[i0:i1 + 1, j0:j1 + 1] = 1
+            _paint(grid, region, (bx0, by0, bx1, by1))
         if (~areas).any():
             pts = shapely.get_coordinates(shapely.segmentize(geoms[~areas], DENSE))
             j = np.clip(((pts[:, 0] - x0) // CELL).astype(np.int64), 0, nx - 1)
             i = np.clip(((pts[:, 1] - y0) // CELL).astype(np.int64), 0, ny - 1)
             grid[i, j] = 1
-    table = np.zeros((ny + 1, nx + 1), dtype=np.int64)
+    return grid
+
+
+def _paint(grid: np.ndarray, region: Box, box: Box) -> None:
+    """Mark the cells of ``grid`` (a raster of ``region``) that ``box`` covers."""
+    ny, nx = grid.shape
+    i0, i1 = _cell(box[1], region[1], ny), _cell(box[3], region[1], ny)
+    j0, j1 = _cell(box[0], region[0], nx), _cell(box[2], region[0], nx)
+    grid[i0:i1 + 1, j0:j1 + 1] = 1
+
+
+def occupancy(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
+    """The summed-area table of :func:`raster`: a box's count of occupied cells is four look-ups
+    (:func:`_counts`)."""
+    return _table(raster(geoms, region))
+
+
+def _table(grid: np.ndarray) -> np.ndarray:
+    table = np.zeros((grid.shape[0] + 1, grid.shape[1] + 1), dtype=np.int64)
     table[1:, 1:] = grid.cumsum(0).cumsum(1)
     return table
 
@@ -93,39 +108,68 @@ def _counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx
     return table[i1, j1] - table[i0, j1] - table[i1, j0] + table[i0, j0]
 
 
+class FreeRoom:
+    """The free room of ``region`` (paper mm) around ``shapes`` and ``keepouts``, rasterised once
+    (:func:`raster`): :meth:`find` places boxes in it, :meth:`without` takes a placed box out of it.
+
+    >>> room = FreeRoom([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)])
+    >>> room.find([(20.0, 10.0)])
+    (30.0, 0.0, 20.0, 10.0)
+    >>> room.without((30.0, 0.0, 50.0, 10.0)).find([(20.0, 10.0)])
+    (0.0, 40.0, 20.0, 10.0)
+    """
+
+    def __init__(self, shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], _grid: np.ndarray | None = None):
+        self.region = region
+        x0, y0, x1, y1 = region
+        self.grown = (x0 - 2 * CLEAR, y0 - 2 * CLEAR, x1 + 2 * CLEAR, y1 + 2 * CLEAR)
+        if _grid is None:
+            _grid = raster([obstacle(s) for s in shapes] + [shapely.box(*k) for k in keepouts], self.grown)
+        self.grid = _grid
+        self.table = _table(_grid)
+
+    def without(self, box: Box) -> FreeRoom:
+        """This room with ``box`` (paper mm) taken."""
+        grid = self.grid.copy()
+        _paint(grid, self.grown, box)
+        return FreeRoom((), self.region, (), grid)
+
+    def find(self, sizes: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
+        """The free box ``(x, y, w, h)`` nearest a corner of the region among ``sizes`` (tried in order: the
+        first size wins a tie), clear of every shape by :data:`CLEAR`; None when no size fits anywhere."""
+        x0, y0, x1, y1 = self.region
+        best: tuple[float, int, tuple[float, float, float, float]] | None = None
+        for rank, (w, h) in enumerate(sizes):
+            xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
+            if not (len(xs) and len(ys)):
+                continue
+            gx, gy = (a.ravel() for a in np.meshgrid(xs, ys))
+            n = _counts(self.table, self.grown, gx - CLEAR, gy - CLEAR, gx + w + CLEAR, gy + h + CLEAR)
+            free = np.flatnonzero(n == 0)
+            if not len(free):
+                continue
+            # distance of the box to the nearest corner of the region: the larger of its x and y gaps to it
+            dx = np.minimum(gx[free] - x0, x1 - (gx[free] + w))
+            dy = np.minimum(gy[free] - y0, y1 - (gy[free] + h))
+            d = np.maximum(dx, dy)
+            k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie
+            cand = (float(d[k]), rank, (float(gx[free][k]), float(gy[free][k]), w, h))
+            if best is None or cand[:2] < best[:2]:
+                best = cand
+        return None if best is None else best[2]
+
+
 def free_box(shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], sizes: Sequence[tuple[float, float]]
              ) -> tuple[float, float, float, float] | None:
     """The free box ``(x, y, w, h)`` nearest a corner of ``region`` (paper mm) among ``sizes`` (tried in order:
     the first size wins a tie), clear of every shape by :data:`CLEAR` and meeting no ``keepouts`` box; None
-    when no size fits anywhere. The shapes are rasterised once (:func:`occupancy`), so each size is tested at
-    every grid position by array look-ups.
+    when no size fits anywhere (:class:`FreeRoom`: the shapes are rasterised once, so each size is tested at
+    every grid position by array look-ups).
 
     >>> free_box([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)], [(20.0, 10.0)])
     (30.0, 0.0, 20.0, 10.0)
     """
-    geoms = [obstacle(s) for s in shapes] + [shapely.box(*k) for k in keepouts]
-    x0, y0, x1, y1 = region
-    table = occupancy(geoms, (x0 - 2 * CLEAR, y0 - 2 * CLEAR, x1 + 2 * CLEAR, y1 + 2 * CLEAR))
-    grown = (x0 - 2 * CLEAR, y0 - 2 * CLEAR)
-    best: tuple[float, int, tuple[float, float, float, float]] | None = None
-    for rank, (w, h) in enumerate(sizes):
-        xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
-        if not (len(xs) and len(ys)):
-            continue
-        gx, gy = (a.ravel() for a in np.meshgrid(xs, ys))
-        n = _counts(table, grown, gx - CLEAR, gy - CLEAR, gx + w + CLEAR, gy + h + CLEAR)
-        free = np.flatnonzero(n == 0)
-        if not len(free):
-            continue
-        # distance of the box to the nearest corner of the region: the larger of its x and y gaps to that corner
-        dx = np.minimum(gx[free] - x0, x1 - (gx[free] + w))
-        dy = np.minimum(gy[free] - y0, y1 - (gy[free] + h))
-        d = np.maximum(dx, dy)
-        k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie
-        cand = (float(d[k]), rank, (float(gx[free][k]), float(gy[free][k]), w, h))
-        if best is None or cand[:2] < best[:2]:
-            best = cand
-    return None if best is None else best[2]
+    return FreeRoom(shapes, region, keepouts).find(sizes)
 
 
-__all__ = ["CELL", "CLEAR", "STEP", "WIDTHS", "free_box", "occupancy"]
+__all__ = ["CELL", "CLEAR", "STEP", "WIDTHS", "FreeRoom", "free_box", "occupancy", "raster"]

@@ -77,9 +77,23 @@ class SheetLayout:
     info_h: float
     info_here: bool
     caption: Box
-    warnings_at: tuple[float, float] | None = None
-    """The warnings' corner when they are set apart from the results (in a free box of the drawing's area)."""
-    warnings_w: float = 0.0
+    pieces: tuple[Piece, ...] = ()
+    """The results and warnings in several free boxes of the drawing's area (when no one box holds them)."""
+
+
+@dataclass(frozen=True)
+class Piece:
+    """A part of the results block set in a free box of its own: its corner (as ``render_info`` takes it), width
+    and height, the result rows it holds (indices into the results, in their frames' order), whether it holds
+    the warnings. When the results are split, their headings are numbered (1/3 …): the pieces lie where the
+    room is, not in reading order."""
+
+    x: float
+    y: float
+    w: float
+    h: float
+    rows: tuple[int, ...]
+    warnings: bool
 
 
 def _layouts(page: PageSpec, info: Sequence[str], warnings: Sequence[str]) -> list[SheetLayout]:
@@ -195,10 +209,7 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
     if sl.info_here and (info or warnings):
         x, y = sl.info_at
         keep.append((x - INSET, y, x + sl.info_w + INSET, y + sl.info_h + INSET))
-        if sl.warnings_at is not None:
-            x, y = sl.warnings_at
-            keep.append((x - INSET, y, x + sl.warnings_w + INSET,
-                         y + info_height((), sl.warnings_w, warnings) + INSET))
+        keep += [(pc.x - INSET, pc.y, pc.x + pc.w + INSET, pc.y + pc.h + INSET) for pc in sl.pieces]
     shapes = [s for g in fig.groups for s in g.shapes]
     region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
     return detail_figure(scene, fig, scale, lambda w, h: free_box(shapes, region, keep, [(w, h)]), upto)
@@ -221,33 +232,83 @@ def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, la
 
 
 def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
-                         warnings: Sequence[str], scale: Scale) -> SheetLayout | None:
+                         warnings: Sequence[str], scale: Scale, steps: Sequence[int] | None = None
+                         ) -> SheetLayout | None:
     """``sl`` with the results and warnings on sheet 1, in a box of the frame that meets no drawn element of
-    ``fig``, the title block, the scale bar or the step captions (:func:`geomcon.render.free_area.free_box`);
+    ``fig``, the title block, the scale bar or the step captions (:class:`geomcon.render.free_area.FreeRoom`);
     None when there is no such box. The drawing keeps its scale: 001-13 is drawn at 1:5 with its results in
-    the free top-left corner, where reserving a column for them would draw it at 1:10."""
-    from .free_area import WIDTHS, free_box
+    the free top-left corner, where reserving a column for them would draw it at 1:10. When no one box holds
+    them, they are set in up to :data:`MAX_PIECES` boxes (:func:`_pieces`): the results, then the warnings
+    (000-04), or the results continued in a second box (``steps``: the frame of each result, which orders them)."""
+    from .free_area import WIDTHS, FreeRoom
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
-    keep = _keepouts(fig, sl, page, scale)
-    shapes = [s for g in fig.groups for s in g.shapes]
-    region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
-    spot = free_box(shapes, region, keep, [(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
+    room = FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
+                    _keepouts(fig, sl, page, scale))
+    spot = room.find([(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
     if spot is not None:
         x, y, w, h = spot
         return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True)
-    if not (info and warnings):
+    pieces = _pieces(room, info, warnings, steps)
+    if pieces is None:
         return None
-    # the results and the warnings each in a free box of its own (000-04: beside the cam, left and right)
-    spot = free_box(shapes, region, keep, [(w, info_height(info, w) - 4.0) for w in WIDTHS])
-    if spot is None:
-        return None
-    x, y, w, h = spot
-    grown = (x - INSET, y - INSET, x + w + INSET, y + h + INSET)
-    other = free_box(shapes, region, keep + [grown], [(w, info_height((), w, warnings) - 4.0) for w in WIDTHS])
-    if other is None:
-        return None
-    return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True,
-                   warnings_at=(other[0], other[1] - 4.0), warnings_w=other[2])
+    first = pieces[0]
+    return replace(sl, info_at=(first.x, first.y), info_w=first.w, info_h=first.h, info_here=True,
+                   pieces=tuple(pieces))
+
+
+MAX_PIECES = 3
+"""At most this many boxes share the results and warnings on sheet 1."""
+
+
+def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None
+            ) -> list[Piece] | None:
+    """The results (in their frames' order) and the warnings laid into free boxes of ``room``, greedily: all
+    that is left in one box if one holds it; else the results left in one box, the warnings after; else the
+    longest run of results that one box holds (the widest run over :data:`~geomcon.render.free_area.WIDTHS`),
+    the rest continued. None when :data:`MAX_PIECES` boxes do not hold them."""
+    from .free_area import WIDTHS
+    order = sorted(range(len(info)), key=lambda i: (steps[i] if steps is not None else None) or 0)
+
+    def height(rows: Sequence[int], w: float, warn: bool) -> float:
+        return info_height([info[i] for i in rows], w, warnings if warn else ()) - 4.0
+
+    def piece(spot: tuple[float, float, float, float], rows: Sequence[int], warn: bool) -> Piece:
+        x, y, w, h = spot
+        return Piece(x, y - 4.0, w, h + 4.0, tuple(rows), warn)
+
+    out: list[Piece] = []
+    rest, warn = list(order), bool(warnings)
+    while len(out) < MAX_PIECES:
+        spot = room.find([(w, height(rest, w, warn)) for w in WIDTHS])
+        if spot is not None:
+            return out + [piece(spot, rest, warn)]
+        if not rest:
+            return None
+        best: tuple[int, tuple[float, float, float, float]] | None = None
+        if warn:                                                  # all the results, the warnings after
+            spot = room.find([(w, height(rest, w, False)) for w in WIDTHS])
+            if spot is not None:
+                best = (len(rest), spot)
+        if best is None:
+            for w in WIDTHS:                                      # the longest run one box holds
+                lo, hi, found = 1, len(rest) - 1, None
+                while lo <= hi:
+                    k = (lo + hi) // 2
+                    spot = room.find([(w, height(rest[:k], w, False))])
+                    if spot is not None:
+                        found, lo = (k, spot), k + 1
+                    else:
+                        hi = k - 1
+                if found is not None and (best is None or found[0] > best[0]):
+                    best = found
+        if best is None:
+            return None
+        k, spot = best
+        out.append(piece(spot, rest[:k], False))
+        x, y, w, h = spot
+        room = room.without((x - INSET, y - INSET, x + w + INSET, y + h + INSET))
+        rest = rest[k:]
+    return None
 
 
 def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
@@ -325,7 +386,7 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
     origin = view.origin
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
-        sl = results_in_free_room(fig, sl, page, info, warnings, scale) or sl
+        sl = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps) or sl
     detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, info, warnings, scale, upto)
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
@@ -345,10 +406,15 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
     if detail is not None:
         dwg.add(_detail_group(dwg, *detail, lang))
-    if sl.info_here and sl.warnings_at is not None:
-        dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, (), info_steps, upto, lang, last))
-        dwg.add(render_info(dwg, (), *sl.warnings_at, sl.warnings_w, warnings, None, upto, lang, last,
-                            id_="warnings"))
+    if sl.info_here and sl.pieces:
+        n_info, parts = 0, sum(bool(pc.rows) for pc in sl.pieces)
+        for pc in sl.pieces:
+            rows = [info[i] for i in pc.rows]
+            at = [info_steps[i] for i in pc.rows] if info_steps is not None else None
+            n_info += bool(rows)
+            name = "warnings" if not rows else "info" if n_info == 1 else f"info-{n_info}"
+            dwg.add(render_info(dwg, rows, pc.x, pc.y, pc.w, warnings if pc.warnings else (), at, upto, lang, last,
+                                id_=name, part=(n_info, parts) if rows and parts > 1 else None))
     elif sl.info_here and (info or warnings):
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
