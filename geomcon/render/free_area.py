@@ -66,11 +66,31 @@ def raster(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
         for bx0, by0, bx1, by1 in shapely.bounds(geoms[areas]):
             _paint(grid, region, (bx0, by0, bx1, by1))
         if (~areas).any():
-            pts = shapely.get_coordinates(shapely.segmentize(geoms[~areas], DENSE))
+            pts = _samples(geoms[~areas])
             j = np.clip(((pts[:, 0] - x0) // CELL).astype(np.int64), 0, nx - 1)
             i = np.clip(((pts[:, 1] - y0) // CELL).astype(np.int64), 0, ny - 1)
             grid[i, j] = 1
     return grid
+
+
+def _samples(geoms: np.ndarray) -> np.ndarray:
+    """The vertices of ``geoms`` (strokes, points) and points along every segment, :data:`DENSE` apart at most;
+    non-finite coordinates dropped (a degenerate stroke, e.g. one repeated point, is its vertex).
+
+    >>> _samples(np.array([shapely.LineString([(0, 0), (1, 0)])], dtype=object)).tolist()
+    [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0], [0.5, 0.0]]
+    """
+    coords, owner = shapely.get_coordinates(geoms, return_index=True)
+    same = owner[1:] == owner[:-1]
+    a, b = coords[:-1][same], coords[1:][same]
+    length = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1])
+    length = np.where(np.isfinite(length), length, 0.0)
+    n = np.clip(np.ceil(length / DENSE), 1, 100000).astype(np.int64)
+    rep = np.repeat(np.arange(len(a)), n)
+    k = np.arange(len(rep)) - np.repeat(np.cumsum(n) - n, n)
+    t = (k / np.repeat(n, n))[:, None]
+    pts = np.concatenate([coords, a[rep] + (b[rep] - a[rep]) * t]) if len(rep) else coords
+    return pts[np.isfinite(pts).all(axis=1)]
 
 
 def _paint(grid: np.ndarray, region: Box, box: Box) -> None:
