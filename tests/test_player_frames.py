@@ -32,7 +32,7 @@ def _solution(pid: str):
 def _sheet(pid: str) -> str:
     """The sheet holding the Results (sheet 1, or the first text sheet when they do not fit beside the figure)."""
     sheets = _solution(pid).sheets(gallery_page())
-    return next((s for s in sheets if '<g id="info">' in s), sheets[0])
+    return next((s for s in sheets if '<g id="info">' in s or '<g id="warnings">' in s), sheets[0])
 
 
 def _gap(angle: float, start: float, sweep: float) -> float:
@@ -70,10 +70,11 @@ _ROW = re.compile(r'<(?:text|g)\b[^>]*\bclass="(info-head|info|warning-head|warn
 
 def _info_rows(svg: str) -> list[tuple[str, int | None, bool]]:
     """The Results / Warnings block's headings and lines in document order: (kind, data-step, shown)."""
-    if '<g id="info">' not in svg:
-        return []
-    block = svg[svg.index('<g id="info">'):]
-    block = block[:block.index("</g>")]
+    blocks = []
+    for m in re.finditer(r'<g id="(?:info|info-\d+|warnings)">', svg):   # split over free boxes on sheet 1
+        block = svg[m.start():]
+        blocks.append(block[:block.index("</g>")])
+    block = "".join(blocks)
     out = []
     for m in _ROW.finditer(block):
         step = re.search(r'data-step="(\d+)"', m.group(0))

@@ -270,7 +270,8 @@ def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ())
 
 def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float,
                 warnings: Sequence[str] = (), steps: Sequence[int] | None = None, upto: int | None = None,
-                lang: str = "both", last: int | None = None) -> Any:
+                lang: str = "both", last: int | None = None, id_: str = "info",
+                part: tuple[int, int] | None = None) -> Any:
     """The result lines (answers, checks) under the protocol, then the warnings (a printed answer that is
     doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading.
 
@@ -279,6 +280,9 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
     it from that step on), and so does each heading (its block's first frame). The results are set in the
     order of their frames, so the lines shown at any frame are the first ones, packed under their heading; frame
     ``upto`` leaves out the lines of later steps, keeping their room so that every frame has the same page.
+    ``id_`` names the group (``warnings`` for the warnings set apart from the results on sheet 1, ``info-2`` for
+    results continued in a second box); ``part`` = (k, n) numbers the heading "Results (k/n)" when the results
+    are split over n boxes.
 
     Examples
     --------
@@ -287,10 +291,12 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
     >>> [(m[1], m[2]) for m in re.findall(r'class="(info|warning)[^"]*" data-step="(\\d+)"[^>]*>(?:<tspan>)?([^<]*)', g.tostring())]
     [('2', 'Results  结果'), ('2', 'b = 2'), ('5', 'a = 1'), ('7', 'Warnings  警告'), ('7', 'beware')]
     """
-    g = dwg.g(id="info")
+    g = dwg.g(id=id_)
     rows = list(zip(info, steps)) if steps is not None else [(s, None) for s in info]
     rows.sort(key=lambda r: r[1] or 0)
-    blocks = ((rows, text("Results", "结果", lang), INK, "info"),
+    head = text("Results", "结果", lang) if part is None else text(f"Results ({part[0]}/{part[1]})",
+                                                                     f"结果（{part[0]}/{part[1]}）", lang)
+    blocks = ((rows, head, INK, "info"),
               ([(s, last) for s in warnings], text("Warnings", "警告", lang), HIGHLIGHT, "warning"))
     for block, heading, colour, cls in blocks:
         if not block:

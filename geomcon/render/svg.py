@@ -37,7 +37,7 @@ from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_b
                    title_block_box)
 from .serial import Element, svg_string
 from .protocol import BLOCK_GAP, info_height, paginate, render_info, render_protocol
-from .labels import rich_runs
+from .labels import rich_runs, text_width
 from .shapes import add_runs, to_svg
 from .style import CSS, HIGHLIGHT, INFO_SIZE, INK
 from .view import FIG_MARGIN, Box, View, fmt, grow, nice_values
@@ -77,6 +77,23 @@ class SheetLayout:
     info_h: float
     info_here: bool
     caption: Box
+    pieces: tuple[Piece, ...] = ()
+    """The results and warnings in several free boxes of the drawing's area (when no one box holds them)."""
+
+
+@dataclass(frozen=True)
+class Piece:
+    """A part of the results block set in a free box of its own: its corner (as ``render_info`` takes it), width
+    and height, the result rows it holds (indices into the results, in their frames' order), whether it holds
+    the warnings. When the results are split, their headings are numbered (1/3 …): the pieces lie where the
+    room is, not in reading order."""
+
+    x: float
+    y: float
+    w: float
+    h: float
+    rows: tuple[int, ...]
+    warnings: bool
 
 
 def _layouts(page: PageSpec, info: Sequence[str], warnings: Sequence[str]) -> list[SheetLayout]:
@@ -169,6 +186,131 @@ def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] 
     return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
 
 
+def _keepouts(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale) -> list[Box]:
+    """What a box set into the drawing's free room must not meet besides the figure: the title block, the scale
+    bar and the step captions' box."""
+    tb = title_block_box(page.sheet)
+    x, y = fig.view.origin[0], fig.view.origin[1] + fig.view.size[1] + 6.0          # as :func:`_scale_bar`
+    bar = (x - 2.0, y - 2.0, x + _bar_length(fig.view.mu) + 12.0
+           + text_width(f"{scale}   μl = {fig.view.mu:g} mm/mm", INFO_SIZE), y + 5.5)
+    return [(tb[0] - INSET, tb[1] - INSET, tb[2], tb[3]), bar, sl.caption]
+
+
+def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
+                     warnings: Sequence[str], scale: Scale, upto: int | None = None
+                     ) -> tuple[Figure, Scale, Box] | None:
+    """The detail view of the mechanism (:func:`geomcon.render.detail.detail_figure`) in a free box of sheet 1
+    clear of the figure, the results and warnings, the title block, scale bar and captions; None when every
+    link is long enough on paper or no free box holds it."""
+    from .detail import detail_figure
+    from .free_area import free_box
+    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
+    keep = _keepouts(fig, sl, page, scale)
+    if sl.info_here and (info or warnings):
+        x, y = sl.info_at
+        keep.append((x - INSET, y, x + sl.info_w + INSET, y + sl.info_h + INSET))
+        keep += [(pc.x - INSET, pc.y, pc.x + pc.w + INSET, pc.y + pc.h + INSET) for pc in sl.pieces]
+    shapes = [s for g in fig.groups for s in g.shapes]
+    region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
+    return detail_figure(scene, fig, scale, lambda w, h: free_box(shapes, region, keep, [(w, h)]), upto)
+
+
+def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, lang: str) -> Any:
+    """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``)."""
+    from .protocol import _line
+    g = dwg.g(id="detail")
+    first = str(min(sd.number for sd in fig.groups))      # frame and caption show from the detail's first step
+    rect = dwg.rect(insert=(fmt(box[0]), fmt(box[1])), size=(fmt(box[2] - box[0]), fmt(box[3] - box[1])),
+                    fill="none", stroke=INK, stroke_width="0.25", id="detail-frame")
+    head = _line(dwg, f"{text('Detail', '局部放大', lang)}  {scale}   μl = {fig.view.mu:g} mm/mm", box[0] + 1.5,
+                 box[1] + 4.5, INFO_SIZE, INK, "detail-head")
+    for el in (rect, head):
+        el.attribs["data-step"] = first
+        g.add(el)
+    g.add(_figure_group(dwg, fig, "detail-"))
+    return g
+
+
+def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
+                         warnings: Sequence[str], scale: Scale, steps: Sequence[int] | None = None
+                         ) -> SheetLayout | None:
+    """``sl`` with the results and warnings on sheet 1, in a box of the frame that meets no drawn element of
+    ``fig``, the title block, the scale bar or the step captions (:class:`geomcon.render.free_area.FreeRoom`);
+    None when there is no such box. The drawing keeps its scale: 001-13 is drawn at 1:5 with its results in
+    the free top-left corner, where reserving a column for them would draw it at 1:10. When no one box holds
+    them, they are set in up to :data:`MAX_PIECES` boxes (:func:`_pieces`): the results, then the warnings
+    (000-04), or the results continued in a second box (``steps``: the frame of each result, which orders them)."""
+    from .free_area import WIDTHS, FreeRoom
+    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
+    room = FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
+                    _keepouts(fig, sl, page, scale))
+    spot = room.find([(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
+    if spot is not None:
+        x, y, w, h = spot
+        return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True)
+    pieces = _pieces(room, info, warnings, steps)
+    if pieces is None:
+        return None
+    first = pieces[0]
+    return replace(sl, info_at=(first.x, first.y), info_w=first.w, info_h=first.h, info_here=True,
+                   pieces=tuple(pieces))
+
+
+MAX_PIECES = 3
+"""At most this many boxes share the results and warnings on sheet 1."""
+
+
+def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None
+            ) -> list[Piece] | None:
+    """The results (in their frames' order) and the warnings laid into free boxes of ``room``, greedily: all
+    that is left in one box if one holds it; else the results left in one box, the warnings after; else the
+    longest run of results that one box holds (the widest run over :data:`~geomcon.render.free_area.WIDTHS`),
+    the rest continued. None when :data:`MAX_PIECES` boxes do not hold them."""
+    from .free_area import WIDTHS
+    order = sorted(range(len(info)), key=lambda i: (steps[i] if steps is not None else None) or 0)
+
+    def height(rows: Sequence[int], w: float, warn: bool) -> float:
+        return info_height([info[i] for i in rows], w, warnings if warn else ()) - 4.0
+
+    def piece(spot: tuple[float, float, float, float], rows: Sequence[int], warn: bool) -> Piece:
+        x, y, w, h = spot
+        return Piece(x, y - 4.0, w, h + 4.0, tuple(rows), warn)
+
+    out: list[Piece] = []
+    rest, warn = list(order), bool(warnings)
+    while len(out) < MAX_PIECES:
+        spot = room.find([(w, height(rest, w, warn)) for w in WIDTHS])
+        if spot is not None:
+            return out + [piece(spot, rest, warn)]
+        if not rest:
+            return None
+        best: tuple[int, tuple[float, float, float, float]] | None = None
+        if warn:                                                  # all the results, the warnings after
+            spot = room.find([(w, height(rest, w, False)) for w in WIDTHS])
+            if spot is not None:
+                best = (len(rest), spot)
+        if best is None:
+            for w in WIDTHS:                                      # the longest run one box holds
+                lo, hi, found = 1, len(rest) - 1, None
+                while lo <= hi:
+                    k = (lo + hi) // 2
+                    spot = room.find([(w, height(rest[:k], w, False))])
+                    if spot is not None:
+                        found, lo = (k, spot), k + 1
+                    else:
+                        hi = k - 1
+                if found is not None and (best is None or found[0] > best[0]):
+                    best = found
+        if best is None:
+            return None
+        k, spot = best
+        out.append(piece(spot, rest[:k], False))
+        x, y, w, h = spot
+        room = room.without((x - INSET, y - INSET, x + w + INSET, y + h + INSET))
+        rest = rest[k:]
+    return None
+
+
 def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
     """Every numbered step's caption in ``box``, each line ``<text class="stepcap" data-step="k">``, hidden
     unless it is the current step: frame k and the player's step k show what step k does; the full drawing
@@ -243,6 +385,9 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     keep = None if apart is None else _not_diagram
     fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
     origin = view.origin
+    if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
+        sl = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps) or sl
+    detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, info, warnings, scale, upto)
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
@@ -265,7 +410,18 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         ax, ay = fig.view.xy(*axes.at(0.0, 0.0))
         dwg.add(diagram_axes_marks(dwg, fig.view, axes, scale, ax, ay + 15.0, _step_number(fig, "sd_delta_axis"),
                                    text_boxes(svg_string(drawn))))
-    if sl.info_here and (info or warnings):
+    if detail is not None:
+        dwg.add(_detail_group(dwg, *detail, lang))
+    if sl.info_here and sl.pieces:
+        n_info, parts = 0, sum(bool(pc.rows) for pc in sl.pieces)
+        for pc in sl.pieces:
+            rows = [info[i] for i in pc.rows]
+            at = [info_steps[i] for i in pc.rows] if info_steps is not None else None
+            n_info += bool(rows)
+            name = "warnings" if not rows else "info" if n_info == 1 else f"info-{n_info}"
+            dwg.add(render_info(dwg, rows, pc.x, pc.y, pc.w, warnings if pc.warnings else (), at, upto, lang, last,
+                                id_=name, part=(n_info, parts) if rows and parts > 1 else None))
+    elif sl.info_here and (info or warnings):
         dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
     out = [svg_string(dwg)]
@@ -366,12 +522,13 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
                          warnings=warnings, info_steps=info_steps, page=page, problem=problem, recipe=recipe)[0]
 
 
-def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
-    root = dwg.g(id="figure")
+def _figure_group(dwg: svgwrite.Drawing, fig: Figure, prefix: str = "") -> Any:
+    """The figure's layers, each step a group (ids prefixed by ``prefix``: a detail view draws steps again)."""
+    root = dwg.g(id=f"{prefix}figure")
     for name, groups in fig.layers():
-        layer = Element("g", id=f"layer-{name}")
+        layer = Element("g", id=f"{prefix}layer-{name}")
         for sd in groups:
-            g = Element("g", id=f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key),
+            g = Element("g", id=prefix + (f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key)),
                         class_=sd.classes)
             g.attribs["data-step"] = str(sd.number)
             for shape in sd.shapes:
@@ -379,6 +536,11 @@ def _figure_group(dwg: svgwrite.Drawing, fig: Figure) -> Any:
             layer.add(g)
         root.add(layer)
     return root
+
+
+def _bar_length(mu: float) -> float:
+    """Paper length of the scale bar at μl = ``mu``: a round model length of about 15–35 mm of paper."""
+    return max(nice_values(15.0 * mu, 35.0 * mu), default=20.0 * mu) / mu
 
 
 def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float, scale: Scale) -> Any:

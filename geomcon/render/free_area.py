@@ -1,0 +1,195 @@
+"""Room on sheet 1 for the Results and Warnings blocks inside the drawing's own area: a free box that meets no
+drawn element, found after the figure is drawn, so that the answer the title asks for is read on sheet 1
+without shrinking the drawing to a smaller standard scale (issue 11, review item A1).
+
+The drawing is centred in its area, so its free room is in the corners: a box is tried at every position of a
+2 mm grid over the frame (less the title block, the scale bar and the step captions' box), each width of
+:data:`WIDTHS` (the lines wrap to it, so the height follows), and the free one nearest a corner of the frame is
+taken (the first width of :data:`WIDTHS` on a tie). A box is free when, grown by :data:`CLEAR`, it meets no
+stroke, mark, symbol or text of the figure (:func:`geomcon.render.shapes.obstacle`): the figure is rasterised
+once into 1 mm cells (strokes sampled every 0.5 mm, areas by their bounding boxes) and a box is tested by the
+cells it covers with one cell of slack, so the test is conservative and every grid position costs four look-ups.
+
+Examples
+--------
+>>> from geomcon.render.shapes import Pen, Poly
+>>> line = Poly(((30.0, 30.0), (250.0, 30.0)), Pen("#000", 0.35))
+>>> free_box([line], (24.0, 14.0, 283.0, 160.0), [], [(95.0, 30.0)])
+(24.0, 130.0, 95.0, 30.0)
+>>> free_box([line], (24.0, 14.0, 283.0, 60.0), [], [(95.0, 30.0)]) is None
+True
+"""
+from __future__ import annotations
+
+from typing import Iterable, Sequence
+
+import numpy as np
+import shapely
+
+from .shapes import Shape, obstacle
+from .view import Box
+
+CLEAR = 2.0
+"""Paper mm kept free between the results block and any drawn element."""
+STEP = 2.0
+"""Grid step (paper mm) of the positions tried."""
+WIDTHS = (95.0, 125.0, 80.0, 160.0, 65.0, 55.0)
+"""Widths of the results block tried (paper mm): the right column's, a wider one for many results, the margin
+beside the title block, a wide band, and two narrow columns for a drawing whose free room is a strip."""
+
+
+def _positions(lo: float, hi: float) -> np.ndarray:
+    """Grid positions from ``lo`` to ``hi`` (both ends kept), :data:`STEP` apart."""
+    if hi < lo:
+        return np.empty(0)
+    n = int((hi - lo) // STEP) + 1
+    xs = lo + STEP * np.arange(n)
+    return xs if xs[-1] == hi else np.append(xs, hi)
+
+
+CELL = 1.0
+"""Cell of the occupancy raster (paper mm): a box is tested against the cells it covers."""
+DENSE = 0.5
+"""Strokes are sampled every this many paper mm when rasterised (a sample within 0.25 mm of every point)."""
+
+
+def raster(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
+    """A raster of ``region`` in :data:`CELL` cells, a cell 1 when a stroke sample, a point, or the bounding box
+    of an area (a filled symbol, a text) falls in it. Conservative: areas count by their bounding boxes."""
+    x0, y0, x1, y1 = region
+    nx, ny = int(np.ceil((x1 - x0) / CELL)) + 1, int(np.ceil((y1 - y0) / CELL)) + 1
+    grid = np.zeros((ny, nx), dtype=np.int32)
+    geoms = np.asarray(geoms, dtype=object)
+    if len(geoms):
+        kinds = shapely.get_type_id(geoms)
+        areas = (kinds == 3) | (kinds == 6)                               # polygons: their bounding boxes
+        for bx0, by0, bx1, by1 in shapely.bounds(geoms[areas]):
+            _paint(grid, region, (bx0, by0, bx1, by1))
+        if (~areas).any():
+            pts = _samples(geoms[~areas])
+            j = np.clip(((pts[:, 0] - x0) // CELL).astype(np.int64), 0, nx - 1)
+            i = np.clip(((pts[:, 1] - y0) // CELL).astype(np.int64), 0, ny - 1)
+            grid[i, j] = 1
+    return grid
+
+
+def _samples(geoms: np.ndarray) -> np.ndarray:
+    """The vertices of ``geoms`` (strokes, points) and points along every segment, :data:`DENSE` apart at most;
+    non-finite coordinates dropped (a degenerate stroke, e.g. one repeated point, is its vertex).
+
+    >>> _samples(np.array([shapely.LineString([(0, 0), (1, 0)])], dtype=object)).tolist()
+    [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0], [0.5, 0.0]]
+    """
+    coords, owner = shapely.get_coordinates(geoms, return_index=True)
+    same = owner[1:] == owner[:-1]
+    a, b = coords[:-1][same], coords[1:][same]
+    length = np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1])
+    length = np.where(np.isfinite(length), length, 0.0)
+    n = np.clip(np.ceil(length / DENSE), 1, 100000).astype(np.int64)
+    rep = np.repeat(np.arange(len(a)), n)
+    k = np.arange(len(rep)) - np.repeat(np.cumsum(n) - n, n)
+    t = (k / np.repeat(n, n))[:, None]
+    pts = np.concatenate([coords, a[rep] + (b[rep] - a[rep]) * t]) if len(rep) else coords
+    return pts[np.isfinite(pts).all(axis=1)]
+
+
+def _paint(grid: np.ndarray, region: Box, box: Box) -> None:
+    """Mark the cells of ``grid`` (a raster of ``region``) that ``box`` covers."""
+    ny, nx = grid.shape
+    i0, i1 = _cell(box[1], region[1], ny), _cell(box[3], region[1], ny)
+    j0, j1 = _cell(box[0], region[0], nx), _cell(box[2], region[0], nx)
+    grid[i0:i1 + 1, j0:j1 + 1] = 1
+
+
+def occupancy(geoms: Sequence[shapely.Geometry], region: Box) -> np.ndarray:
+    """The summed-area table of :func:`raster`: a box's count of occupied cells is four look-ups
+    (:func:`_counts`)."""
+    return _table(raster(geoms, region))
+
+
+def _table(grid: np.ndarray) -> np.ndarray:
+    table = np.zeros((grid.shape[0] + 1, grid.shape[1] + 1), dtype=np.int64)
+    table[1:, 1:] = grid.cumsum(0).cumsum(1)
+    return table
+
+
+def _cell(v: float, lo: float, n: int) -> int:
+    return int(min(max((v - lo) // CELL, 0), n - 1))
+
+
+def _counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx1: np.ndarray, by1: np.ndarray
+            ) -> np.ndarray:
+    """How many occupied cells each box (x0, y0, x1, y1 arrays, paper mm) covers, one cell of slack around."""
+    ny, nx = table.shape[0] - 1, table.shape[1] - 1
+    j0 = np.clip(((bx0 - region[0]) // CELL).astype(np.int64) - 1, 0, nx)
+    i0 = np.clip(((by0 - region[1]) // CELL).astype(np.int64) - 1, 0, ny)
+    j1 = np.clip(((bx1 - region[0]) // CELL).astype(np.int64) + 2, 0, nx)
+    i1 = np.clip(((by1 - region[1]) // CELL).astype(np.int64) + 2, 0, ny)
+    return table[i1, j1] - table[i0, j1] - table[i1, j0] + table[i0, j0]
+
+
+class FreeRoom:
+    """The free room of ``region`` (paper mm) around ``shapes`` and ``keepouts``, rasterised once
+    (:func:`raster`): :meth:`find` places boxes in it, :meth:`without` takes a placed box out of it.
+
+    >>> room = FreeRoom([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)])
+    >>> room.find([(20.0, 10.0)])
+    (30.0, 0.0, 20.0, 10.0)
+    >>> room.without((30.0, 0.0, 50.0, 10.0)).find([(20.0, 10.0)])
+    (0.0, 40.0, 20.0, 10.0)
+    """
+
+    def __init__(self, shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], _grid: np.ndarray | None = None):
+        self.region = region
+        x0, y0, x1, y1 = region
+        self.grown = (x0 - 2 * CLEAR, y0 - 2 * CLEAR, x1 + 2 * CLEAR, y1 + 2 * CLEAR)
+        if _grid is None:
+            _grid = raster([obstacle(s) for s in shapes] + [shapely.box(*k) for k in keepouts], self.grown)
+        self.grid = _grid
+        self.table = _table(_grid)
+
+    def without(self, box: Box) -> FreeRoom:
+        """This room with ``box`` (paper mm) taken."""
+        grid = self.grid.copy()
+        _paint(grid, self.grown, box)
+        return FreeRoom((), self.region, (), grid)
+
+    def find(self, sizes: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
+        """The free box ``(x, y, w, h)`` nearest a corner of the region among ``sizes`` (tried in order: the
+        first size wins a tie), clear of every shape by :data:`CLEAR`; None when no size fits anywhere."""
+        x0, y0, x1, y1 = self.region
+        best: tuple[float, int, tuple[float, float, float, float]] | None = None
+        for rank, (w, h) in enumerate(sizes):
+            xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
+            if not (len(xs) and len(ys)):
+                continue
+            gx, gy = (a.ravel() for a in np.meshgrid(xs, ys))
+            n = _counts(self.table, self.grown, gx - CLEAR, gy - CLEAR, gx + w + CLEAR, gy + h + CLEAR)
+            free = np.flatnonzero(n == 0)
+            if not len(free):
+                continue
+            # distance of the box to the nearest corner of the region: the larger of its x and y gaps to it
+            dx = np.minimum(gx[free] - x0, x1 - (gx[free] + w))
+            dy = np.minimum(gy[free] - y0, y1 - (gy[free] + h))
+            d = np.maximum(dx, dy)
+            k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie
+            cand = (float(d[k]), rank, (float(gx[free][k]), float(gy[free][k]), w, h))
+            if best is None or cand[:2] < best[:2]:
+                best = cand
+        return None if best is None else best[2]
+
+
+def free_box(shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], sizes: Sequence[tuple[float, float]]
+             ) -> tuple[float, float, float, float] | None:
+    """The free box ``(x, y, w, h)`` nearest a corner of ``region`` (paper mm) among ``sizes`` (tried in order:
+    the first size wins a tie), clear of every shape by :data:`CLEAR` and meeting no ``keepouts`` box; None
+    when no size fits anywhere (:class:`FreeRoom`: the shapes are rasterised once, so each size is tested at
+    every grid position by array look-ups).
+
+    >>> free_box([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)], [(20.0, 10.0)])
+    (30.0, 0.0, 20.0, 10.0)
+    """
+    return FreeRoom(shapes, region, keepouts).find(sizes)
+
+
+__all__ = ["CELL", "CLEAR", "STEP", "WIDTHS", "FreeRoom", "free_box", "occupancy", "raster"]

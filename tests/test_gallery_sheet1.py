@@ -1,0 +1,130 @@
+"""Sheet 1 of every gallery drawing holds its Results block, and its Warnings block when the problem has
+warnings (issue 11, hlook11 item A1): the answer the title asks for is read beside the drawing, never only on a
+later sheet. The drawing keeps the standard scale it gets with the whole frame to itself: the blocks go into the
+drawing's free room (:func:`geomcon.render.svg.results_in_free_room`), where they meet no drawn element."""
+from __future__ import annotations
+
+import json
+import re
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+import shapely
+
+from geomcon.gallery import gallery_page
+from geomcon.paper import Scale
+from geomcon.problems import load_problem
+from geomcon.render.figure import build_figure
+from geomcon.render.free_area import CLEAR
+from geomcon.render.shapes import obstacle
+from geomcon.render.svg import _not_diagram, diagram_apart, place_figure, results_in_free_room
+from geomcon.render.warning_words import warning_lines
+from geomcon.solve import solve
+
+ROOT = Path(__file__).resolve().parents[1]
+GALLERY = ROOT / "gallery"
+NO_ROOM = {
+    "000-03_slotter_velocity_polygons": "14 results and 12 warnings: 206 mm tall at 125 mm wide",
+    "000-05_slotter_cam_motion_law": "15 results (ψ at eleven δ) and 8 warnings: the results alone 106 mm at 125 mm",
+    "000-06_slotter_cam_pitch_points": "the pitch points' table: 356 mm tall at 125 mm wide",
+    "000-07_slotter_cam_actual_profile": "the profile points' table: 338 mm tall at 125 mm wide",
+    "100-07_rocker_slider_three_positions": "60 mm at 95 mm; the inversion's arcs and lines fill the frame",
+}
+"""Drawings whose free room holds no box for their results: they keep a sheet of their own (the last resort of
+:func:`geomcon.render.svg._best_layout`, which would draw them a standard scale smaller to reserve a column).
+The list may only shrink."""
+FREE_ROOM = ["000-04_slotter_cam_psi0", "001-01_crank_rocker_change_point", "001-04_guide_bar_offset",
+             "001-06_crank_slider", "001-07_crank_slider_strokes", "001-13_radar_antenna_K1",
+             "001-14_crank_rocker_K1_frame_angles", "001-15_crank_rocker_frame_and_position",
+             "001-17_crank_rocker_theta", "001-24_cam_displacement_at_100", "200-01_cam_roller_offset",
+             "200-03_cam_roller_undercut", "200-15_cam_handbook_laws", "200-16_cam_poly_4567",
+             "200-17_cam_table_law", "200-20_oscillating_base_radius_rho", "400-05_crank_slider_instant_centres",
+             "100-04_four_bar_fixed_pivots_coupler_angles", "300-01_four_bar_double_rocker_pressure_angle"]
+"""The drawings that kept their results off sheet 1 before (hlook11 item A1) and now set them in free room
+(000-04: results and warnings apart; 100-04, 300-01: the results in three numbered boxes)."""
+
+
+def _heads(svg: str, cls: str) -> list[str]:
+    """The texts of the block headings of class ``cls`` (``info-head``: Results, ``warning-head``: Warnings)."""
+    return re.findall(rf'<text [^>]*class="{cls}"[^>]*>(?:<tspan>)?([^<]*)<', svg)
+
+
+def _drawings() -> list[tuple[Path, Path]]:
+    return [(j, j.with_suffix(".svg")) for j in sorted(GALLERY.glob("*.json")) if j.with_suffix(".svg").exists()]
+
+
+def test_sheet_one_of_every_drawing_holds_its_results_and_warnings():
+    drawings = _drawings()
+    assert len(drawings) > 80
+    missing = {}
+    for js, svg in drawings:
+        data = json.loads(js.read_text(encoding="utf-8"))
+        text = svg.read_text(encoding="utf-8")
+        if 'class="sheet"' not in text:
+            continue                                       # not a drawing sheet (a chart)
+        lost = []
+        if not any("Results" in h for h in _heads(text, "info-head")):
+            lost.append("Results")
+        if data.get("warnings") and not any("Warnings" in h for h in _heads(text, "warning-head")):
+            lost.append("Warnings")
+        if lost:
+            missing[js.stem] = lost
+    assert set(missing) <= set(NO_ROOM), {k: v for k, v in missing.items() if k not in NO_ROOM}
+
+
+@lru_cache(maxsize=None)
+def _solution(pid: str):
+    return solve(load_problem(ROOT / "problems" / f"{pid}.toml"))
+
+
+def _scale(svg: str) -> Scale:
+    return Scale.parse(re.search(r'class="tb tb-2-0"[^>]*>[^<]*?(\d+(?:\.\d+)?:\d+(?:\.\d+)?)<', svg).group(1))
+
+
+@pytest.mark.parametrize("pid", FREE_ROOM)
+def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
+    """The Results (and Warnings) box, grown by the clearance, meets none of the figure's strokes, marks,
+    symbols or texts; the drawing is at the scale it gets with no room reserved for the results; the SVG sets
+    the block where the box is."""
+    sol = _solution(pid)
+    page = gallery_page()
+    sc = sol.drawing_scene
+    info, warnings = sol.figure_lines(page.lang), warning_lines(sol.warnings, page.lang)
+    sl, scale, view = place_figure(sc, page, info, warnings)
+    apart = diagram_apart(sc, page, info, warnings, scale)
+    if apart is not None:
+        sl, scale, view = apart
+    assert not sl.info_here                    # reserving room on sheet 1 would cost this drawing a scale
+    keep = None if apart is None else _not_diagram            # a cam's s–δ diagram on a sheet of its own
+    _, free_scale, _ = place_figure(sc, page, (), (), keep=keep)
+    assert scale == free_scale
+    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep)
+    placed = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps())
+    assert placed is not None and placed.info_here
+    from geomcon.render.protocol import info_height
+    x, y = placed.info_at
+    if not placed.pieces:
+        boxes = [(x, y + 4.0, x + placed.info_w, y + info_height(info, placed.info_w, warnings))]
+        shown = len(info)
+    else:
+        boxes = [(pc.x, pc.y + 4.0, pc.x + pc.w,
+                  pc.y + info_height([info[i] for i in pc.rows], pc.w, warnings if pc.warnings else ()))
+                 for pc in placed.pieces]
+        rows = [i for pc in placed.pieces for i in pc.rows]
+        assert sorted(rows) == list(range(len(info)))         # every result once
+        assert sum(pc.warnings for pc in placed.pieces) == bool(warnings)
+        shown = len(rows)
+    assert shown == len(info)
+    for a in range(len(boxes)):                               # the pieces do not overlap
+        for b in range(a):
+            assert not shapely.box(*boxes[a]).intersects(shapely.box(*boxes[b])), pid
+    drawn = [obstacle(s) for g in fig.groups for s in g.shapes]
+    assert len(drawn) > 10
+    for b in boxes:
+        grown = shapely.box(b[0] - CLEAR, b[1] - CLEAR, b[2] + CLEAR, b[3] + CLEAR)
+        assert not any(grown.intersects(d) for d in drawn), (pid, b)
+    svg = sol.sheets(page)[0]
+    assert _scale(svg) == scale
+    first = re.search(r'<g id="info">.*?<text class="info-head"[^>]*\bx="([\d.]+)"', svg, re.S)
+    assert first and abs(float(first.group(1)) - x) < 0.01
