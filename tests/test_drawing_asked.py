@@ -117,12 +117,13 @@ def test_the_flat_face_curvature_diagram_says_what_it_plots():
 
 @pytest.mark.parametrize("name", NAMES)
 def test_an_angle_of_zero_is_a_note_not_a_bare_number(name):
-    """001-01 printed "γ1=0.00°" with no arc beside C2: an angle mark of 0 says the lines are collinear."""
+    """001-01 printed "γ1=0.00°" with no arc beside C2: an angle mark of 0 says the lines are collinear, after its
+    value ("γ1=0° (collinear)", as the review asked: the symbol first, as for every angle)."""
     fig = figure(name)
     for g in fig.groups:
         for m in _members(fig.values[g.key]):
             if isinstance(m, AngleMark) and abs(m.value) < 0.005:
-                assert [runs(t) for t in fig.groups[fig.groups.index(g)].texts] == [f"collinear, {m.symbol}=0°"]
+                assert [runs(t) for t in fig.groups[fig.groups.index(g)].texts] == [f"{m.symbol}=0° (collinear)"]
 
 
 def test_the_double_rocker_on_frame_cd_marks_its_dead_points_and_names_its_links_right():

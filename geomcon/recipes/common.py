@@ -129,13 +129,14 @@ def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...])
 
 
 def add_pivot(sc: Scene, key: str, at: Point | tuple[Any, Any], caption: tuple[str, str], *,
-              ground_angle: float = -math.pi / 2, label: str | None = None) -> Ref:
+              ground_angle: float = -math.pi / 2, label: str | None = None, style: str = "pivot") -> Ref:
     """A fixed pivot: the given point (a Point, or coordinates placed by the step: :meth:`Scene.given_at`)
-    plus its hatched ground symbol; ``label`` replaces the printed name (default: ``key``)."""
+    plus its hatched ground symbol; ``label`` replaces the printed name (default: ``key``), ``style`` the
+    pivot's style ("pivot-centre": an instant centre too, its label printed whole)."""
     if type(at) is tuple:
-        ref = sc.given_at(key, at[0], at[1], caption=caption, style="pivot", label=label)
+        ref = sc.given_at(key, at[0], at[1], caption=caption, style=style, label=label)
     else:
-        ref = sc.given(key, at, caption=caption, style="pivot", label=label)
+        ref = sc.given(key, at, caption=caption, style=style, label=label)
     if sc.drawing:
         sc.add(f"{key}_ground", marks.ground, ref, ground_angle, role=Role.ANNOTATION, style="ground")
     return ref

@@ -162,7 +162,7 @@ def slider_construct(g: Mapping[str, Any]) -> Construction:
                  caption=("Kennedy: P24 where P14P12 meets P23P34", "三心定理:P14P12 与 P23P34 的交点为 P24"))
     if sc.drawing:
         # P34 has no point on the paper: an arrow from C along its direction (⊥ the guide), named at its tip
-        tip = sc.add("P34", towards_infinity, C, gl, 0.2 * g["BC"], style="point", label="P34 (∞)",
+        tip = sc.add("P34", towards_infinity, C, gl, 0.2 * g["BC"], style="point-centre", label="P34 (∞)",
                      role=Role.CONSTRUCTION)
         sc.add("P34_arrow", marks.vector, C, tip, role=Role.CONSTRUCTION, style="vector",
                caption=("P34 lies at infinity perpendicular to the guide: the arrow points to it",

@@ -344,12 +344,13 @@ def add_four_bar_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref,
                  (f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"),
                  ("They meet at C", "两圆交于 C"), ("Draw the linkage ABCD at this position", "画出该位置的机构 ABCD"))
     name = CENTRE_LABELS if centres else {}
-    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0], label=name.get("A"))
-    D = add_pivot(sc, "D", (AD, 0.0), words[1], label=name.get("D"))
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label=name.get("B", "B"), caption=words[2])
+    tag = "-centre" if centres else ""             # the label prints whole (geomcon.render.style: label_whole)
+    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0], label=name.get("A"), style="pivot" + tag)
+    D = add_pivot(sc, "D", (AD, 0.0), words[1], label=name.get("D"), style="pivot" + tag)
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint" + tag, label=name.get("B", "B"), caption=words[2])
     kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
     kD = sc.add("kD", circle, D, CD, caption=(f"Circle about D with radius CD = {CD:g}", f"以 D 为圆心、CD = {CD:g} 为半径作圆"))
-    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint",
+    C = sc.add("C", circle_circle, kB, kD, branch=RightOf(B, D) if below else LeftOf(B, D), style="joint" + tag,
                label=name.get("C", "C"), caption=words[3])
     if sc.drawing:
         sc.add("AD", segment, A, D, role=Role.GIVEN, style="frame", caption=("Draw the frame AD", "作机架 AD"))
@@ -374,12 +375,14 @@ def add_slider_at(sc: Scene, g: Any, centres: bool = False) -> tuple[Ref, Ref, R
                  (f"Crank at φ = {phi:g}°: B with AB = {AB:g}", f"曲柄转角 φ = {phi:g}°:取 AB = {AB:g} 得 B"),
                  ("It meets the guide at C", "交导路于 C"), ("Draw the linkage ABC at this position", "画出该位置的机构 ABC"))
     name = CENTRE_LABELS if centres else {}
-    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0], label=name.get("A"))
+    tag = "-centre" if centres else ""             # the label prints whole (geomcon.render.style: label_whole)
+    A = add_pivot(sc, "A", Point(0.0, 0.0), words[0], label=name.get("A"), style="pivot" + tag)
     F = sc.given_at("F", 0.0, -e, style="point", caption=(f"F with AF = e = {e:g} (below A)", f"取 AF = e = {e:g}(A 下方)"))
     gl = sc.add("guide", Line, F, Point(1.0, 0.0), role=Role.GIVEN, style="given", caption=words[1])
-    B = sc.add("B", crank_pin, A, AB, phi, style="joint", label=name.get("B", "B"), caption=words[2])
+    B = sc.add("B", crank_pin, A, AB, phi, style="joint" + tag, label=name.get("B", "B"), caption=words[2])
     kB = sc.add("kB", circle, B, BC, caption=(f"Circle about B with radius BC = {BC:g}", f"以 B 为圆心、BC = {BC:g} 为半径作圆"))
-    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint", label=name.get("C", "C"), caption=words[3])
+    C = sc.add("C", line_circle, gl, kB, branch=ToRightOf(B), style="joint" + tag, label=name.get("C", "C"),
+               caption=words[3])
     if sc.drawing:
         add_bar(sc, "AB", A, B, words[4])
         add_bar(sc, "BC", B, C)

@@ -17,7 +17,6 @@ Examples
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
@@ -30,6 +29,7 @@ from .view import TAU, View, clip_arc, clip_interval
 XY = tuple[float, float]
 SLIDER = (8.0, 5.0)            # slider block, paper mm (along, across the guide)
 ANGLE_RADIUS = 9.0             # default radius of an angle mark's arc, paper mm
+MIN_ANGLE_RADIUS = 5.0         # the smallest radius of an angle mark's arc, paper mm (a smaller one barely shows)
 COMPASS_HALF = 11.0            # half length of a compass arc through a point, paper mm
 
 
@@ -46,6 +46,12 @@ class TextRequest:
     """A shorter text used when this one finds no free place."""
     optional: bool = False
     """Left out where it would cover another text (a label of a crowded numbered row)."""
+    parts: tuple[tuple[str, Runs], ...] = ()
+    """(step key, runs) of each part of a label naming several points (:mod:`.coincident`): each part prints
+    with its point's step; empty: the whole text prints with the step drawing it."""
+    alone: tuple[tuple[str, TextRequest], ...] = ()
+    """(step key, own label) of each point a label naming near (not coincident) points names: printed instead,
+    each by its point, where the joined label finds no clear place and they do."""
 
 
 @dataclass
@@ -129,8 +135,8 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
             req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
         short = None
         tail = label[:-1].split(" (", 1)[-1] if label.endswith(")") and " (" in label else ""
-        if tail and not re.fullmatch(r"P\d\d|∞", tail):   # "N (E1)": just "N" where both find no room; an
-            # instant centre's name ("B (P12)", "P34 (∞)") is the answer 400-04/05 ask for and stays
+        if tail and not style.label_whole:  # "N (E1)": just "N" where both find no room (an instant centre's
+            # "B (P12)" prints whole: the style says so)
             head = label_runs(label.split(" (", 1)[0])
             short = TextRequest(head, size, replace(req, width=text_width(head, size) + 0.3), italic=True)
         out.texts.append(TextRequest(runs, size, req, italic=True, optional=style.label_optional, fallback=short))
@@ -141,13 +147,13 @@ RIVAL_REACH = 15.0
 """Points within this (paper mm) of a point compete for its label's place (:class:`~.placement.Request`)."""
 
 
-def _rivals(c: XY, ctx: Context) -> tuple[XY, ...]:
-    """The other points of the figure near paper point ``c``, on paper."""
+def _rivals(c: XY, ctx: Context, reach: float = RIVAL_REACH) -> tuple[XY, ...]:
+    """The other points of the figure within ``reach`` of paper point ``c``, on paper."""
     out = []
     for p in ctx.points:
         q = ctx.view.p(p)
         d = math.hypot(q[0] - c[0], q[1] - c[1])
-        if 1e-9 < d <= RIVAL_REACH:
+        if 1e-9 < d <= reach:
             out.append(q)
     return tuple(sorted(set(out)))
 

@@ -26,10 +26,15 @@ import shapely.ops
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
-from .draw import Context, Drawn, TextRequest, _paper_dir, compass_half, compass_steps, draw_compass
+from .arms import add_arms
+from .coincident import NEAR as NEAR_NAMES, Together, groups_of
+from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals, compass_half, compass_steps,
+                   draw_compass)
+from .clearance import ENOUGH
 from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .crossings import NEAR, Crossings
+from .labels import text_width
 from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import draw, kind_of, sector
@@ -187,6 +192,9 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     current = n if upto is not None else None
     frame_lines = _frame_lines(steps, values, view)
     labels = merged_labels(steps, values, box)
+    together = {t.keys[0]: t for t in _together(steps, values, labels, view)}
+    quiet = {k for t in together.values() for k in t.keys[1:]}         # named by the first point's label
+    near: dict[str, TextRequest | None] = {k: None for t in together.values() if NEAR_NAMES in t.joins for k in t.keys}
     groups, pending = [], []
     for number, s in steps:
         value = values[s.key]
@@ -201,9 +209,15 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
             drawn = draw_compass(value, own, highlighted(style) if is_cur else style, ctx)
         else:
             shape = trimmed(scene, s, value, mu) if style.trim and type(value) is Line else value
-            drawn = draw(shape, highlighted(style) if is_cur else style, ctx, labels.get(s.key, s.label))
+            own = labels.get(s.key, s.label)
+            label = None if s.key in quiet else together[s.key].text if s.key in together else own
+            drawn = draw(shape, highlighted(style) if is_cur else style, ctx, label)
             if frame_lines and style.layer == "construction" and kind == "curve":     # not a link on AD
                 drawn.shapes = off_frames(drawn.shapes, frame_lines)
+            if s.key in together:
+                drawn.texts[-1] = _joined(drawn.texts[-1], together[s.key], ctx)
+            if s.key in near:                       # its own label, printed if the joined one finds no room
+                near[s.key] = draw(value, highlighted(style) if is_cur else style, ctx, own).texts[-1]
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
         pending.append((drawn, is_cur))
         for m, parts in later:
@@ -211,7 +225,16 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
             groups.append(StepDrawing(s.key, m, "arc" + cls[4:] + (" current" if m == current else ""), layer,
                                       list(arcs.shapes), arc=True))
             pending.append((arcs, m == current))
-    _place_texts(view, groups, pending)
+    for head, group in together.items():
+        if NEAR_NAMES in group.joins:
+            i = next(i for i, g in enumerate(groups) if g.key == head and not g.arc)
+            texts = pending[i][0].texts
+            texts[-1] = replace(texts[-1], alone=tuple((k, near[k]) for k in group.keys if near[k] is not None))
+    rays, moved = add_arms(groups, values)
+    for drawn, _ in pending:                    # a mark's text follows its arc drawn smaller
+        drawn.texts[:] = [replace(t, request=replace(t.request, anchor=moved[t.request.anchor]))
+                          if t.request.anchor in moved else t for t in drawn.texts]
+    _place_texts(view, groups, pending, {id(r) for r in rays})
     return Figure(view, groups, values, n)
 
 
@@ -371,6 +394,30 @@ def merged_labels(steps: list[tuple[int, Any]], values: dict[str, Any], box: Box
     return out
 
 
+def _together(steps: list[tuple[int, Step]], values: dict[str, Any], labels: dict[str, str | None], view: View
+              ) -> list[Together]:
+    """The labelled points of the frame drawn closer than a label's height, grouped (:mod:`.coincident`); the
+    numbered rows and axis ticks keep their own labels."""
+    pts = []
+    for _, s in steps:
+        v, label = values[s.key], labels.get(s.key, s.label)
+        if isinstance(v, Point) and label:
+            style = resolve_style(s.style, s.role, "point")
+            if not style.label_optional and style.label_dir is None:
+                pts.append((s.key, label, v, style.radius))
+    return groups_of(pts, view)
+
+
+def _joined(t: TextRequest, group: Together, ctx: Context) -> TextRequest:
+    """The label of a group of points: about the group, clear of every marker, in parts (one per point's step);
+    its rivals are the other points a box that wide may come near."""
+    anchor, gap = group.anchor()
+    mates = set(group.at)
+    rivals = tuple(q for q in _rivals(anchor, ctx, RIVAL_REACH + t.request.width) if q not in mates)
+    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals)
+    return replace(t, request=req, fallback=None, parts=group.parts())
+
+
 def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:
     if not pts:
         x0, y0, x1, y1 = view.paper_box
@@ -482,7 +529,7 @@ def _led(t: TextRequest) -> TextRequest:
     joined to its point by a leader (which says whose it is, wherever it lands)."""
     r = t.request
     req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES)
-    return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan")
+    return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan", parts=t.parts)
 
 
 def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
@@ -500,10 +547,13 @@ def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
     return Poly(((ax + dx * a, ay + dy * a), (ax + dx * b, ay + dy * b)), Pen(INK, 0.15))
 
 
-def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
+def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]],
+                 apart: set[int] = frozenset()) -> None:          # type: ignore[assignment]
     """Place every label and mark text, in step order, clear of all shapes of the frame; the labels of a crowded
-    numbered row go on a line beside it, with leaders (:func:`_fanned`)."""
-    obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
+    numbered row go on a line beside it, with leaders (:func:`_fanned`). The shapes whose ``id`` is in ``apart``
+    (an angle's rays drawn on to its arc: :mod:`.arms`) are kept clear of by their own step's text too."""
+    obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
+                  SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
     placer = Placer(obstacles, view.paper_box)
     texts: list[Any] = []
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
@@ -512,10 +562,12 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                    + [job for _, _, options in tried for _, jobs in options for job in jobs])   # in one pass
     fanned = _fanned(placer, tried)
     strokes = _Strokes(obstacles, [(g, sh) for g in groups for sh in g.shapes], view.paper_box)
+    steps_of = {g.key: (g, cur) for g, (_, cur) in zip(groups, pending) if not g.arc}     # a label's parts
     rows = [f.request.box(*f.request.candidates[0]) for f in fanned.values()]
-    for g, (drawn, is_cur) in zip(groups, pending):
-        colour = HIGHLIGHT if is_cur else None
-        for t in drawn.texts:
+    for g0, (drawn, is_cur) in zip(groups, pending):
+        queue = [(g0, t, HIGHLIGHT if is_cur else None) for t in drawn.texts]
+        while queue:
+            g, t, colour = queue.pop(0)
             if id(t) in fanned:                 # placed (and recorded by the placer) with its row
                 t = fanned[id(t)]
                 texts.append(t.request.box(*t.request.candidates[0]))
@@ -525,6 +577,9 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
                 continue
             centre, score = placer.best(t.request, g.key)
+            if t.alone and score < 0.0 and _apart(placer, t.alone, score):
+                queue[0:0] = [(steps_of[k][0], a, HIGHLIGHT if steps_of[k][1] else None) for k, a in t.alone]
+                continue                        # near points' own labels instead, each placed as a label is
             outward = t.fallback is not None and t.fallback.runs == t.runs      # a division's number all round
             if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
                 alt, alt_score = placer.best(t.fallback.request, g.key)
@@ -553,7 +608,30 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             if leader is not None:
                 placer.commit(obstacle(leader))
                 g.shapes.append(recolour(leader, colour) if colour else leader)
-            g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+            if t.parts:
+                for key, part in _parts_at(t, centre[0], centre[1]):
+                    owner, cur = steps_of[key]
+                    owner.shapes.append(recolour(part, HIGHLIGHT) if cur else part)
+            else:
+                g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+
+
+def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: float) -> bool:
+    """Whether the own labels of near points (:attr:`TextRequest.alone`) do better than their joined label
+    scoring ``score``: each finds a place scoring more, nearer its own point than any of the others (or anywhere,
+    when the joined label itself lies nearer another point: 004-02 at 1:5, where no place is clear)."""
+    points = [a.request.anchor for _, a in alone]
+    for k, a in alone:
+        (cx, cy), s = placer.best(a.request, k)
+        if s <= score:
+            return False
+        if score < ENOUGH - AMBIGUOUS:
+            continue
+        b = a.request.box(cx, cy)
+        own = b.distance(shapely.Point(a.request.anchor))
+        if any(b.distance(shapely.Point(p)) <= own + 1e-9 for p in points if p != a.request.anchor):
+            return False
+    return True
 
 
 class _Strokes:
@@ -617,6 +695,25 @@ def _text_at(t: TextRequest, cx: float, cy: float, colour: str | None) -> Text:
     text = Text(cx, baseline, t.runs, t.size, INK, (cx - r.width / 2, cy - r.height / 2, cx + r.width / 2,
                                                   cy + r.height / 2), italic=t.italic, rotate=r.rotate, cls=t.cls)
     return recolour(text, colour) if colour else text
+
+
+def _parts_at(t: TextRequest, cx: float, cy: float) -> list[tuple[str, Text]]:
+    """The parts of a label naming several points (:attr:`TextRequest.parts`) centred at (cx, cy) as one text:
+    each starts where the one before ends, on the whole label's baseline, with its step's key. Left of its points
+    the label reads backwards ("K0 = D" for "D = K0"), so that the first name, shown alone until the next point
+    is drawn, is the one beside the points."""
+    whole = _text_at(t, cx, cy, None)
+    x = whole.box[0] + 0.15                        # the box is the text's width + 0.3
+    parts = list(t.parts)
+    if cx < t.request.anchor[0] - t.request.width / 4:          # mostly left of them
+        parts = [parts[0]] + [(key, runs[1:] + runs[:1]) for key, runs in parts[1:]]     # the sign after the name
+        parts.reverse()
+    out = []
+    for key, runs in parts:
+        w = text_width(runs, t.size)
+        out.append((key, replace(whole, x=x, runs=runs, anchor="start", box=(x, whole.box[1], x + w, whole.box[3]))))
+        x += w
+    return out
 
 
 def label_positions(fig: Figure) -> dict[str, list[Text]]:

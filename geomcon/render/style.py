@@ -87,6 +87,9 @@ class Style:
         through and those found on them, :data:`TRIM_OVERSHOOT` paper mm beyond
         (:func:`~geomcon.render.figure.trimmed`; a polygon's direction lines stay in the polygon's panel
         instead of running across the mechanism).
+    label_whole : bool
+        A label naming the point twice ("B (P12)": a joint that is also an instant centre) always prints whole:
+        its bracketed name is an answer, never dropped for room as a candidate's ("N (E1)" → "N") is.
     """
 
     name: str
@@ -103,6 +106,7 @@ class Style:
     label_size: float | None = None
     label_optional: bool = False
     trim: bool = False
+    label_whole: bool = False
 
 
 STYLES: dict[str, Style] = {s.name: s for s in (
@@ -115,6 +119,11 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("tick", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6, label_optional=True),
     Style("division", marker="dot", radius=0.55, label_optional=True),
     Style("row-start", marker="dot", radius=0.45, label_dir=math.pi, label_size=2.6),
+    # the points of an instant-centre problem named as centres too ("B (P12)", "P34 (∞)"): the name in brackets
+    # is the answer asked for, so the label prints whole
+    Style("pivot-centre", marker="hollow", radius=1.5, marker_width=0.4, label_whole=True),
+    Style("joint-centre", marker="hollow", radius=1.25, marker_width=0.55, label_whole=True),
+    Style("point-centre", marker="dot", radius=0.55, label_whole=True),
     # the start of a table's row (001-02's link ranges): its name at its left, right-aligned with the other
     # rows' names and centred on its line, as a textbook's table heads its rows
     # curves

@@ -23,8 +23,8 @@ import shapely
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene.marks import AngleMark, Bearing, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
-from .draw import (SLIDER, ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit, draw_arc,
-                   draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
+from .draw import (SLIDER, ANGLE_RADIUS, MIN_ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit,
+                   draw_arc, draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
 from .placement import Request
 from .shapes import ArcP, Pen, Poly
@@ -147,10 +147,10 @@ def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
     if abs(phi) <= math.radians(0.2):
         return ()
     if m.radius:
-        r = view.length(m.radius)
+        r = max(MIN_ANGLE_RADIUS, view.length(m.radius))
     else:
         rays = [view.length(abs(v)) for v in (m.a - m.vertex, vb) if view.length(abs(v)) >= 4.0]
-        r = max(3.0, min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS) + 3.5 * (nested - 1)
+        r = max(MIN_ANGLE_RADIUS, min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS) + 3.5 * (nested - 1)
     c = view.p(m.vertex)
     arc = ArcP(c, r + 1.0, -a0, -phi, Pen("#000", 0.1))
     n = max(4, int(abs(phi) / math.radians(10.0)) + 1)
@@ -290,15 +290,16 @@ def angle_rays(m: AngleMark) -> tuple[Point, Point, bool]:
 
 def _radius(m: AngleMark, va: Point, vb: Point, ctx: Context) -> float:
     """Arc radius on paper: the mark's own, else :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter
-    than 4 mm of paper only give a direction), enlarged for each earlier mark at the same vertex."""
+    than 4 mm of paper only give a direction), enlarged for each earlier mark at the same vertex; never less
+    than :data:`MIN_ANGLE_RADIUS` (001-23a's α arcs were 4.5 mm, 001-24's and 200-01's 3 mm: they barely showed)."""
     if m.radius:
-        return ctx.view.length(m.radius)
+        return max(MIN_ANGLE_RADIUS, ctx.view.length(m.radius))
     key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
     nested = ctx.marks_at.get(key, 0)
     ctx.marks_at[key] = nested + 1
     rays = [ctx.view.length(abs(v)) for v in (va, vb) if ctx.view.length(abs(v)) >= 4.0]
     r = min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS
-    return max(3.0, r) + 3.5 * nested
+    return max(MIN_ANGLE_RADIUS, r) + 3.5 * nested
 
 
 def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
@@ -384,8 +385,10 @@ def _reading_angle(u: XY) -> float:
 
 def draw_dimension(m: Dimension, style: Style, ctx: Context) -> Drawn:
     """A linear dimension: extension lines, the dimension line with arrowheads, and its text along it
-    (placed later: centred on the side away from the measured points if free, else shifted or beside)."""
-    if m.a == m.b:
+    (placed later: centred on the side away from the measured points if free, else shifted or beside). A
+    dimension of length 0 (its value prints as 0.00: 001-29's s at δ = 0) draws nothing: arrows on one point
+    would sit on the part; the Results say s = 0."""
+    if m.a == m.b or f"{abs(m.value):.2f}" == "0.00":
         return Drawn()
     d = (m.b - m.a).unit()
     shift = d.perp() * m.offset

@@ -33,14 +33,14 @@ class AngleMark:
 
     @property
     def text(self) -> str:
-        """The printed label, e.g. ``θ=12.51°``; an angle of 0 has no arc to label, and says why (001-01's
-        γ1 = 0: coupler and rocker in one line).
+        """The printed label, e.g. ``θ=12.51°``; an angle of 0 has no arc to label, and says why after its value
+        (001-01's γ1 = 0: coupler and rocker in one line), the symbol first as for any angle.
 
         >>> AngleMark(Point(0, 0), Point(1, 0), Point(2, 0), "γ1", -1e-12).text
-        'collinear, γ1=0°'
+        'γ1=0° (collinear)'
         """
         if abs(self.value) < 0.005:
-            return f"collinear, {self.symbol}=0°"
+            return f"{self.symbol}=0° (collinear)"
         return f"{self.symbol}={self.value:.2f}°"
 
 
