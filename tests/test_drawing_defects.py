@@ -401,7 +401,8 @@ MARK_LEADERS_ACROSS = {
     "200-20": "ψ0 between the two binding arms: any place clear of the construction wedge is across an arm",
     "001-29": "α at the contact point inside the roller: the free side is across the disc",
     "001-18": "αmax between B2C2 and the guide: the one clear place is across B2C2",
-    "004-01": "αmax at C1 on the guide: reached across the guide mark",
+    "004-0": "αmax at C on the guide among the positions' links (004-01, 004-02 K 1.5): every place near its arc "
+             "is reached across a link or the guide mark",
     "100-0": "γ between the coupler and the rocker at C2: the clear places are across a link or the pin",
 }
 """Figures (by name prefix) where a mark's leader may cross a link or a pivot symbol, and why: crossing counts

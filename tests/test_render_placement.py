@@ -25,6 +25,7 @@ class ReferencePlacer:
         self._owners = np.array([o[1] for o in obstacles], dtype=object)
         self._allow = np.array([o[2] for o in obstacles], dtype=float)
         self._weight = np.array([o[3] if len(o) > 3 else 0.0 for o in obstacles], dtype=float)
+        self._own = np.array([o[4] if len(o) > 4 else w for o, w in zip(obstacles, self._weight)], dtype=float)
         self._tree = shapely.STRtree(self._geoms) if len(self._geoms) else None
         self._placed = []
         self._frame = frame
@@ -51,7 +52,8 @@ class ReferencePlacer:
                 best = min(best, float(np.min(self._gaps(box, self._geoms[idx]) + self._allow[idx])))
         if self._placed:
             best = min(best, float(np.min(self._gaps(box, np.array(self._placed, dtype=object)))))
-        crossed = [w for g, w in zip(self._geoms, self._weight) if w > 0.0 and box.intersects(g)]
+        crossed = [m if o == owner else w for g, o, w, m in zip(self._geoms, self._owners, self._weight, self._own)
+                   if (m if o == owner else w) > 0.0 and box.intersects(g)]
         return best - CROSS * sum(crossed)     # every line it crosses, its own step's too
 
     def best(self, req, owner):
@@ -114,7 +116,8 @@ def random_figure(rng: random.Random, size: float = 60.0):
         else:
             pts = [(cx + rng.uniform(-5, 5), cy + rng.uniform(-5, 5)) for _ in range(rng.randint(3, 40))]
             g = shapely.LineString(pts)
-        obstacles.append((g, owner, allow, rng.choice([0.0, 1.0, 1.0, 2.0])))
+        w = rng.choice([0.0, 1.0, 1.0, 2.0])
+        obstacles.append((g, owner, allow, w, rng.choice([w, w, 0.0])))
     return obstacles, owners
 
 
@@ -173,7 +176,7 @@ def test_bounds_enclose_the_exact_clearance(seed):
     obstacles, owners = random_figure(rng)
     ref = ReferencePlacer(obstacles, (0.0, 0.0, 60.0, 60.0))
     layer = Layer([o[0] for o in obstacles], [o[1] for o in obstacles], [o[2] for o in obstacles],
-                  index=True, weight=[o[3] for o in obstacles])
+                  index=True, weight=[o[3] for o in obstacles], own=[o[4] for o in obstacles])
     placed = Placed()
     for _ in range(10):
         req, owner = random_request(rng), rng.choice(owners)

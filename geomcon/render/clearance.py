@@ -257,18 +257,22 @@ class Layer:
         Added to each one's distance (0 by default).
     weight : sequence of float, optional
         Each one's crossing weight (:data:`CROSS`; 0 by default: not counted).
+    own : sequence of float, optional
+        Each one's crossing weight for a text of its own step (``weight`` by default; 0 for a point's marker,
+        which its label's box never meets: its pairs are then not measured at all).
     index : bool
         Index the segments in a tree (geometries appended later are not).
     """
 
     def __init__(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
-                 allow: Sequence[float] | None = None, index: bool = False, weight: Sequence[float] | None = None):
+                 allow: Sequence[float] | None = None, index: bool = False, weight: Sequence[float] | None = None,
+                 own: Sequence[float] | None = None):
         self.geoms: list[shapely.Geometry] = []
         self.codes: dict[str, int] = {}
         self._parts: list[tuple[np.ndarray, ...]] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
         self._simple: dict[int, bool] = {}
-        self.extend(geoms, owners, allow, weight)
+        self.extend(geoms, owners, allow, weight, own)
         self.tree = None
         if index and len(self.arrays()[0]):
             self.tree = shapely.STRtree(_diagonals(*self.arrays()[:4]))
@@ -282,7 +286,8 @@ class Layer:
         self.extend([geom])
 
     def extend(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
-               allow: Sequence[float] | None = None, weight: Sequence[float] | None = None) -> None:
+               allow: Sequence[float] | None = None, weight: Sequence[float] | None = None,
+               own: Sequence[float] | None = None) -> None:
         """Add geometries (not to the tree)."""
         n0, n = len(self.geoms), len(geoms)
         if not n:
@@ -293,6 +298,7 @@ class Layer:
         codes = [self.codes.setdefault(o, len(self.codes)) for o in owners] if owners is not None else [-1] * n
         allowed = np.array(allow, dtype=float) if allow is not None else np.zeros(n)
         weighed = np.array(weight, dtype=float) if weight is not None else np.zeros(n)
+        mine = np.array(own, dtype=float) if own is not None else weighed
         parts, whole = shapely.get_parts(g, return_index=True)
         areal = shapely.get_dimensions(parts) == 2
         lines, owner = parts, whole
@@ -312,18 +318,18 @@ class Layer:
         simple[(types > 1) & (types != 3)] = 0
         self._parts.append((a[:, 0].copy(), a[:, 1].copy(), b[:, 0].copy(), b[:, 1].copy(), parent,
                             np.array(codes, dtype=np.intp), allowed, shapely.bounds(g).reshape(-1, 4),
-                            shapely.get_dimensions(g) == 2, simple.astype(np.int8), weighed))
+                            shapely.get_dimensions(g) == 2, simple.astype(np.int8), weighed, mine))
         self._arrays = None
 
     def arrays(self) -> tuple[np.ndarray, ...]:
         """The segments' ends (ax, ay, bx, by) and geometry, and the geometries' owner codes, allowances, bounds,
         whether each is an area, and whether each is a simple line string or point (1), not (0) or not yet
-        known (-1), and their crossing weights."""
+        known (-1), and their crossing weights (for other steps' texts, and for their own step's)."""
         if self._arrays is None:
             if not self._parts:
                 z = np.zeros(0)
                 self._arrays = (z, z, z, z, _NONE, _NONE, z, np.zeros((0, 4)), np.zeros(0, dtype=bool),
-                                np.zeros(0, dtype=np.int8), z)
+                                np.zeros(0, dtype=np.int8), z, z)
             else:
                 self._arrays = tuple(np.concatenate(c) for c in zip(*self._parts))
                 self._parts = [self._arrays]
@@ -344,7 +350,7 @@ class Layer:
         """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
         tree, or all segments of the geometries near all the boxes), not of a box's own step unless counted
         (a crossing weight); and whether each pair is of the box's own step."""
-        ax, ay, bx, by, parent, owner, _, bounds, _, _, weight = self.arrays()
+        ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own = self.arrays()
         if not len(ax) or not len(boxes):
             return _NONE, _NONE, _NO
         if self.tree is not None:
@@ -360,12 +366,12 @@ class Layer:
         p = parent[s]
         o = owner[p]
         mine = (o == boxes.owner[k]) & (o >= 0)
-        keep = ~mine | (weight[p] > 0.0)
+        keep = ~mine | (own[p] > 0.0)
         return k[keep], s[keep], mine[keep]
 
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from this layer's geometries (not those of a box's own step)."""
-        ax, ay, bx, by, parent, _, allow, _, _, _, weight = self.arrays()
+        ax, ay, bx, by, parent, _, allow, _, _, _, weight, own = self.arrays()
         n = len(boxes)
         k, s, mine = self.pairs(boxes)
         d, hit, inside = pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s])
@@ -374,7 +380,7 @@ class Layer:
         cross = np.zeros(n)
         if mine.any():                                          # its own step's: crossings only
             met = np.flatnonzero(hit & mine)
-            _count(cross, k[met], p[met], weight, len(self.geoms))
+            _count(cross, k[met], p[met], own, len(self.geoms))
             other = np.flatnonzero(~mine)
             k, p, d, hit, inside = k[other], p[other], d[other], hit[other], inside[other]
         least(known, k, d + allow[p])
@@ -407,18 +413,19 @@ class Layer:
     def crossing(self, box: shapely.Geometry, owner: str | None) -> float:
         """:data:`CROSS` × the crossing weights of the geometries ``box`` touches, its own step's included (by
         GEOS: the definition :meth:`measure`'s ``cross`` follows)."""
-        weight = self.arrays()[10]
-        idx = np.flatnonzero(weight > 0.0)
+        weight, own, codes = self.arrays()[10], self.arrays()[11], self.arrays()[5]
+        w = np.where((codes == self.code(owner)) & (codes >= 0), own, weight)
+        idx = np.flatnonzero(w > 0.0)
         if not len(idx):
             return 0.0
         geoms = np.empty(len(idx), dtype=object)
         geoms[:] = [self.geoms[i] for i in idx.tolist()]
-        return CROSS * float(weight[idx][shapely.intersects(box, geoms)].sum())
+        return CROSS * float(w[idx][shapely.intersects(box, geoms)].sum())
 
     def _contained(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
         """(box, area) pairs, sorted by box, where the box lies within the area's bounds and meets the area (by
         GEOS): a box wholly inside an area meets none of its rings."""
-        _, _, _, _, _, owner, _, bounds, areal, _, _ = self.arrays()
+        _, _, _, _, _, owner, _, bounds, areal, _, _, _ = self.arrays()
         if not areal.any() or not len(boxes):
             return _NONE, _NONE
         w, h = (boxes.x1 - boxes.x0).min(), (boxes.y1 - boxes.y0).min()

@@ -431,8 +431,8 @@ def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
 def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
     """Place every label and mark text, in step order, clear of all shapes of the frame; the labels of a crowded
     numbered row go on a line beside it, with leaders (:func:`_fanned`)."""
-    obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0, _weight(g, sh))
-                 for g in groups for sh in g.shapes]
+    obstacles = [(obstacle(sh), g.key, SOFT if g.layer == "construction" else 0.0, w, 0.0 if g.layer == "points" else w)
+                 for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
     placer = Placer(obstacles, view.paper_box)
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     _leading(pending)
