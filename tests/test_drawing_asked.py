@@ -35,9 +35,9 @@ def title_points(title: str) -> set[str]:
 
 
 def labels(name: str) -> set[str]:
-    """Every point name printed in a figure's labels ("B (P12)" names B and P12)."""
+    """Every point name printed in a figure's labels ("B (P12)" names B and P12), by its point or with a leader."""
     fig = figure(name)
-    return {p for g in fig.groups for t in g.texts if t.cls == "label" for p in re.findall(r"[A-Z]\d*", runs(t))}
+    return {p for g in fig.groups for t in g.texts if t.cls.startswith("label") for p in re.findall(r"[A-Z]\d*", runs(t))}
 
 
 NO_FIGURE_OF_POINTS = {"001-02_four_bar_link_ranges"}

@@ -92,12 +92,13 @@ def point_labels(fig: Figure) -> list[tuple[str, list[tuple[float, float]], shap
 
 @pytest.mark.parametrize("name", NAMES)
 def test_every_label_lies_near_its_point(name):
-    """A point's label box lies within LABEL_REACH (6 mm of paper, at the figure's scale) of its point (of one of
-    its points, for a label naming points drawn on one spot)."""
+    """A point's label box lies within LABEL_REACH (3 mm of paper, at the figure's scale) of its point (of one of
+    its points, for a label naming points drawn on one spot), or it has a leader (100-05 printed "C2" about 4 mm
+    from its pin: labels were tried up to the marker + 3.4 mm)."""
     fig = figure(name)
     far = [(text, round(min(b.distance(shapely.Point(c)) for c in pts), 2)) for text, pts, b in point_labels(fig)]
-    assert LABEL_REACH == 6.0
-    assert far and not [f for f in far if f[1] > LABEL_REACH]
+    assert LABEL_REACH == 3.0
+    assert far and not [f for f in far if f[1] > LABEL_REACH + 1e-9]
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -358,10 +359,88 @@ def test_no_mark_value_crosses_the_lines_drawn_with_its_mark(name):
 
 
 def test_200_20_values_and_labels_leave_the_construction_lines():
-    """200-20: "α=35.00°" crossed its normal and six construction lines, K2* five; each now crosses at most one
-    (the thicket of wedge lines leaves no free spot by them)."""
+    """200-20: "α=35.00°" crossed its normal and six construction lines, K2* five; α=35.00° now crosses at most
+    one, K2* two (it keeps within 3 mm of its point, where the thicket of wedge lines leaves no freer spot)."""
     fig = figure("200-20_oscillating_base_radius_rho")
     texts = {runs(t): (g.key, t) for g in fig.groups for t in g.texts}
-    for text in ("α=35.00°", "K2*"):
+    for text, most in (("α=35.00°", 1), ("K2*", 2)):
         key, t = texts[text]
-        assert len(_crossed(fig, key, t)) <= 1, (text, _crossed(fig, key, t))
+        assert len(_crossed(fig, key, t)) <= most, (text, _crossed(fig, key, t))
+
+
+def _leaders(g) -> list[Poly]:
+    """A step's leaders: the thin two-point lines joining its far texts to their point or arc."""
+    return [sh for sh in g.shapes if isinstance(sh, Poly) and len(sh.pts) == 2 and sh.pen.width == 0.15]
+
+
+def _off_start(leader: Poly) -> shapely.LineString:
+    """A leader less its first 0.3 mm: one starting at an end of its arc, on a ray of the angle, does not cross
+    that line."""
+    (ax, ay), (bx, by) = leader.pts
+    k = min(0.3 / max(math.hypot(bx - ax, by - ay), 1e-9), 1.0)
+    return shapely.LineString([(ax + (bx - ax) * k, ay + (by - ay) * k), (bx, by)])
+
+
+LONG_LEADERS = {
+    ("200-14_oscillating_arm_speeds", "mark_alpha_return"):
+        "every spot within 15 mm of the α′max arc covers the profile, the arm's divisions or their numbers",
+}
+"""Leaders longer than 15 mm, and why."""
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_leader_is_at_most_15_mm(name):
+    """Review item 11: α=82.12° in 000-04…08 and γmin in 100-04 had leaders of 16–30 mm (51 in the gallery) across
+    links and labels; a leader is now at most 15 mm on paper (LONG_LEADERS: the exceptions, and why)."""
+    fig = figure(name)
+    long = [(g.key, round(math.dist(*sh.pts), 1)) for g in fig.groups for sh in _leaders(g)
+            if math.dist(*sh.pts) > 15.0 + 1e-9 and (name, g.key) not in LONG_LEADERS]
+    assert not long
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_leader_crosses_a_text(name):
+    """100-05: the γmin leader ran through "C2" (27 leaders of the gallery crossed a text): a mark's or a
+    label's leader crosses no other text. (A crowded numbered row's line of labels, :mod:`.rows`, is laid out
+    as a whole; 000-04…08's 11′ leader passes the end of "10′" there.)"""
+    fig = figure(name)
+    texts = [(g.key, box(t), runs(t)) for g in fig.groups for t in g.texts]
+    for g in fig.groups:
+        if any(t.cls == "label fan" for t in g.texts) and g.key.startswith("A_d"):
+            continue                                            # a row's fan (rows.py)
+        for sh in _leaders(g):
+            line = _off_start(sh)
+            assert not [r for k, b, r in texts if k != g.key and b.intersects(line)], g.key
+
+
+MARK_LEADERS_ACROSS = {
+    "000-0": "α′max: its arc lies inside the profile among the follower's divisions: no spot outside within 15 mm "
+             "is reached without crossing the profile",
+    "200-0": "α′max or αmax at the contact point: the value outside the cam is reached across the profile",
+    "200-1": "α′max or αmax at the contact point: the value outside the cam is reached across the profile",
+    "200-20": "ψ0 between the two binding arms: any place clear of the construction wedge is across an arm",
+    "001-29": "α at the contact point inside the roller: the free side is across the disc",
+    "001-18": "αmax between B2C2 and the guide: the one clear place is across B2C2",
+    "004-0": "αmax at C on the guide among the positions' links (004-01, 004-02 K 1.5): every place near its arc "
+             "is reached across a link or the guide mark",
+    "100-0": "γ between the coupler and the rocker at C2: the clear places are across a link or the pin",
+}
+"""Figures (by name prefix) where a mark's leader may cross a link or a pivot symbol, and why: crossing counts
+against a place (Placer: LEADER_CROSSING), so it happens only where every place near the arc is worse."""
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_mark_leader_crosses_a_link_or_pivot(name):
+    """Review item 11: α=19.87° in 200-14 sat above A0 with its leader across A0's ground; 98 leaders of the gallery
+    crossed a link, a pivot or a ground. A mark's leader crosses none, but in MARK_LEADERS_ACROSS's figures."""
+    if any(name.startswith(p) for p in MARK_LEADERS_ACROSS):
+        return
+    fig = figure(name)
+    hard = [(g.key, obstacle(sh)) for g in fig.groups if g.layer in ("links", "ground", "points") for sh in g.shapes
+            if not isinstance(sh, Text) and sh not in _leaders(g)]
+    for g in fig.groups:
+        if not any(t.cls == "mark-text" for t in g.texts):
+            continue
+        for sh in _leaders(g):
+            line = _off_start(sh)
+            assert not [k for k, o in hard if k != g.key and o.intersects(line)], g.key

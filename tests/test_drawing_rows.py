@@ -90,11 +90,11 @@ def test_a_spread_out_number_is_tied_to_its_point_by_a_leader(name):
                 if t.cls == "label fan":
                     assert box.distance(p) <= FAN_REACH, (g.key, _runs(t))
                     leaders = [s for s in g.shapes if isinstance(s, Poly) and len(s.pts) == 2
-                               and shapely.Point(s.pts[0]).distance(p) <= 1.5
+                               and shapely.Point(s.pts[0]).distance(p) <= 1.75     # off a pivot's marker
                                and shapely.Point(s.pts[1]).distance(box) <= 0.5]
                     assert len(leaders) == 1, (g.key, _runs(t))
                 elif t.cls == "label":
-                    assert box.distance(p) <= LABEL_REACH, (g.key, _runs(t))
+                    assert box.distance(p) <= LABEL_REACH + 1e-9, (g.key, _runs(t))
         parts = [(t, fig.view.p(fig.values[g.key])) for g in fig.groups for t in g.texts
                  if t.anchor == "start" and t.cls.startswith("label")]
         for t, _ in parts:                  # the whole label a part belongs to lies near a point it names

@@ -13,6 +13,7 @@ import shapely
 from shapely import affinity
 
 from geomcon.render.symbols import MARK_DISTANCES
+from geomcon.render.clearance import CROSS
 from geomcon.render.placement import AMBIGUOUS, DISTANCES, ENOUGH, LABEL_DISTANCES, FAR_PENALTY, Placer, Request, directions, half_extent
 
 
@@ -20,9 +21,11 @@ class ReferencePlacer:
     """Every candidate scored by its own shapely calls, in order (the placer before vectorisation)."""
 
     def __init__(self, obstacles, frame):
-        self._geoms = np.array([g for g, _, _ in obstacles], dtype=object)
-        self._owners = np.array([o for _, o, _ in obstacles], dtype=object)
-        self._allow = np.array([a for _, _, a in obstacles], dtype=float)
+        self._geoms = np.array([o[0] for o in obstacles], dtype=object)
+        self._owners = np.array([o[1] for o in obstacles], dtype=object)
+        self._allow = np.array([o[2] for o in obstacles], dtype=float)
+        self._weight = np.array([o[3] if len(o) > 3 else 0.0 for o in obstacles], dtype=float)
+        self._own = np.array([o[4] if len(o) > 4 else w for o, w in zip(obstacles, self._weight)], dtype=float)
         self._tree = shapely.STRtree(self._geoms) if len(self._geoms) else None
         self._placed = []
         self._frame = frame
@@ -49,7 +52,9 @@ class ReferencePlacer:
                 best = min(best, float(np.min(self._gaps(box, self._geoms[idx]) + self._allow[idx])))
         if self._placed:
             best = min(best, float(np.min(self._gaps(box, np.array(self._placed, dtype=object)))))
-        return best
+        crossed = [m if o == owner else w for g, o, w, m in zip(self._geoms, self._owners, self._weight, self._own)
+                   if (m if o == owner else w) > 0.0 and box.intersects(g)]
+        return best - CROSS * sum(crossed)     # every line it crosses, its own step's too
 
     def best(self, req, owner):
         if req.candidates:
@@ -111,7 +116,8 @@ def random_figure(rng: random.Random, size: float = 60.0):
         else:
             pts = [(cx + rng.uniform(-5, 5), cy + rng.uniform(-5, 5)) for _ in range(rng.randint(3, 40))]
             g = shapely.LineString(pts)
-        obstacles.append((g, owner, allow))
+        w = rng.choice([0.0, 1.0, 1.0, 2.0])
+        obstacles.append((g, owner, allow, w, rng.choice([w, w, 0.0])))
     return obstacles, owners
 
 
@@ -169,8 +175,8 @@ def test_bounds_enclose_the_exact_clearance(seed):
     rng = random.Random(100 + seed)
     obstacles, owners = random_figure(rng)
     ref = ReferencePlacer(obstacles, (0.0, 0.0, 60.0, 60.0))
-    layer = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles], [a for _, _, a in obstacles],
-                  index=True)
+    layer = Layer([o[0] for o in obstacles], [o[1] for o in obstacles], [o[2] for o in obstacles],
+                  index=True, weight=[o[3] for o in obstacles], own=[o[4] for o in obstacles])
     placed = Placed()
     for _ in range(10):
         req, owner = random_request(rng), rng.choice(owners)
@@ -180,10 +186,12 @@ def test_bounds_enclose_the_exact_clearance(seed):
         for k in range(12):
             box = req.box(cx[k], cy[k])
             want = ref.clearance(box, owner)
-            hi = min(fixed.hi[k], near.hi[k])
-            lo = min(fixed.lo[k], near.lo[k])
+            cross = fixed.cross[k]                    # every line crossed, its own step's too
+            assert cross == layer.crossing(box, owner)
+            hi = min(fixed.hi[k], near.hi[k]) - cross
+            lo = min(fixed.lo[k], near.lo[k]) - cross
             exact = min(fixed.known[k], near.known[k], layer.exact(box, fixed.pending_of(k)),
-                        placed.exact(box, near.pending_of(k)))
+                        placed.exact(box, near.pending_of(k))) - cross
             assert lo - 1e-12 <= want <= hi + 1e-12
             assert exact == pytest.approx(want, rel=0.0, abs=1e-12)
             if not len(fixed.pending_of(k)) and not len(near.pending_of(k)):

@@ -35,6 +35,9 @@ if TYPE_CHECKING:
 FAR_PENALTY = 0.25
 """Score lost per step of a text's distances."""
 
+LEADER_MAX = 15.0
+"""The longest leader (paper mm): a text joined to its anchor by a leader is never farther from it."""
+
 
 def directions(prefer: float, n: int = 16) -> list[float]:
     """``n`` directions around the circle (radians, paper orientation), nearest to ``prefer`` first; of two
@@ -67,7 +70,10 @@ class Candidates:
 
     ``cx, cy`` the box centres, ``cost`` the penalties for distance and direction, ``boxes`` the boxes (turned as
     the text is, owned by the text's step), ``framed`` whether a box lies inside the frame, ``rivalled``
-    whether it lies nearer another point than the text's anchor."""
+    whether it lies nearer another point than the text's anchor; ``led`` the candidates that would be joined to
+    their anchor by a leader (a request's ``lead``), ``leader`` its segment from the anchor to the nearest point of
+    the box (ax, ay, bx, by, one row per led candidate), ``far`` whether that leader would be longer than
+    :data:`LEADER_MAX`."""
 
     cx: np.ndarray
     cy: np.ndarray
@@ -76,6 +82,9 @@ class Candidates:
     framed: np.ndarray
     rivalled: np.ndarray
     starts: np.ndarray
+    led: np.ndarray
+    leader: np.ndarray
+    far: np.ndarray
 
 
 def candidates(reqs: Sequence[Request], owners: Sequence[int], frame: tuple[float, float, float, float]
@@ -96,7 +105,40 @@ def candidates(reqs: Sequence[Request], owners: Sequence[int], frame: tuple[floa
                   np.array(owners, dtype=np.intp).reshape(-1)[per])
     f = frame
     framed = (f[0] <= boxes.x0) & (f[1] <= boxes.y0) & (boxes.x1 <= f[2]) & (boxes.y1 <= f[3])
-    return Candidates(cx, cy, cost, boxes, framed, rivalled(reqs, starts, counts, boxes), starts)
+    led, leader, far = leaders(reqs, starts, counts, boxes)
+    return Candidates(cx, cy, cost, boxes, framed, rivalled(reqs, starts, counts, boxes), starts, led, leader, far)
+
+
+def leaders(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, boxes: Boxes
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The candidates of requests with a finite ``lead`` lying farther than it from the nearest of their
+    ``starts`` (the anchor when none; they get a leader), each one's leader (from that start to the nearest
+    point of the box, as the figure draws it) and whether that is longer than :data:`LEADER_MAX`. A turned box
+    is measured by its bounds."""
+    far = np.zeros(len(boxes), dtype=bool)
+    which = [i for i, r in enumerate(reqs) if r.lead < math.inf]
+    if not which:
+        return _NO_ROWS, np.zeros((0, 4)), far
+    rows = np.concatenate([np.arange(starts[i], starts[i + 1]) for i in which])
+    lead = np.repeat([reqs[i].lead for i in which], counts[which])
+    ns = max(len(reqs[i].starts) or 1 for i in which)          # each request's starts, its last repeated
+    pts = np.array([[(r.starts or (r.anchor,))[min(j, len(r.starts or (r.anchor,)) - 1)] for j in range(ns)]
+                    for r in (reqs[i] for i in which)], dtype=float).reshape(len(which), ns, 2)
+    sx = np.repeat(pts[:, :, 0], counts[which], axis=0)                     # led candidate × start
+    sy = np.repeat(pts[:, :, 1], counts[which], axis=0)
+    x0, y0, x1, y1 = (v[rows][:, None] for v in (boxes.x0, boxes.y0, boxes.x1, boxes.y1))
+    dist = box_point(x0, y0, x1, y1, sx, sy)
+    pick = np.argmin(dist, axis=1)                                          # the start nearest the box
+    at = np.arange(len(rows))
+    ax, ay, d = sx[at, pick], sy[at, pick], dist[at, pick]
+    bx = np.clip(ax, boxes.x0[rows], boxes.x1[rows])
+    by = np.clip(ay, boxes.y0[rows], boxes.y1[rows])
+    on = d > lead
+    far[rows[on & (d > LEADER_MAX)]] = True
+    return rows[on], np.stack([ax[on], ay[on], bx[on], by[on]], axis=1), far
+
+
+_NO_ROWS = np.zeros(0, dtype=np.intp)
 
 
 def _shape(r: Request) -> tuple[float, float, float, float, float, float]:
@@ -180,4 +222,4 @@ def rivalled(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, bo
     return out
 
 
-__all__ = ["FAR_PENALTY", "Candidates", "candidates", "directions", "rivalled"]
+__all__ = ["FAR_PENALTY", "LEADER_MAX", "Candidates", "candidates", "directions", "leaders", "rivalled"]

@@ -38,6 +38,12 @@ ENOUGH = 1.6
 REACH = ENOUGH + 1e-6
 """Pairs are measured when their bounds come this near: anything farther cannot lower a clearance."""
 
+CROSS = 1.0
+"""Score lost per unit of crossing weight of each drawn geometry a box touches (a link or a point's marker weighs
+2, a thin line 1, a text 0): a box across six thin lines scores worse than one across a single line, where the
+clearance alone (the worst thing covered) would tie them. A text's own step's strokes count too (a mark's own arc
+and the normal drawn with it), though their distance does not."""
+
 
 def covering(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
     """Minus the measure of how much ``box`` covers each of ``geoms`` (all touching it): 0.3 × the length
@@ -175,13 +181,16 @@ class Measured:
     """The clearances of some boxes from one layer: ``known`` what the closed forms give (the least of the
     distances plus allowances, of what a box covers of simple line strings, and :data:`ENOUGH`); ``hi`` and
     ``lo`` bounds that also hold what it covers of the geometries left to GEOS (``pending``: box, geometry
-    pairs, by box); ``touching`` whether a box meets anything of the layer."""
+    pairs, by box); ``touching`` whether a box meets anything of the layer; ``cross`` :data:`CROSS` × the
+    crossing weights of the geometries each box touches, its own step's included (the score loses it on top of
+    the clearance)."""
 
     known: np.ndarray
     hi: np.ndarray
     lo: np.ndarray
     touching: np.ndarray
     pending: tuple[np.ndarray, np.ndarray]
+    cross: np.ndarray | None = None
 
     def pending_of(self, k: int) -> np.ndarray:
         """The geometries (indices) box ``k`` touches whose covering GEOS computes."""
@@ -194,7 +203,7 @@ class Measured:
         rows, parents = self.pending
         lo, hi = np.searchsorted(rows, [start, stop])
         return Measured(self.known[start:stop], self.hi[start:stop], self.lo[start:stop], self.touching[start:stop],
-                        (rows[lo:hi] - start, parents[lo:hi]))
+                        (rows[lo:hi] - start, parents[lo:hi]), None if self.cross is None else self.cross[start:stop])
 
 
 def _diagonals(x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
@@ -221,6 +230,15 @@ def least(out: np.ndarray, rows: np.ndarray, values: np.ndarray) -> None:
 
 
 _NONE = np.zeros(0, dtype=np.intp)
+_NO = np.zeros(0, dtype=bool)
+
+
+def _count(cross: np.ndarray, k: np.ndarray, p: np.ndarray, weight: np.ndarray, ng: int) -> None:
+    """Add :data:`CROSS` × the weight of each distinct (box ``k``, geometry ``p``) pair to ``cross[k]``."""
+    if not len(k):
+        return
+    pair = np.unique(k * ng + p)
+    cross += CROSS * np.bincount(pair // ng, weights=weight[pair % ng], minlength=len(cross))
 
 
 class Layer:
@@ -237,18 +255,24 @@ class Layer:
         The step that drew each.
     allow : sequence of float, optional
         Added to each one's distance (0 by default).
+    weight : sequence of float, optional
+        Each one's crossing weight (:data:`CROSS`; 0 by default: not counted).
+    own : sequence of float, optional
+        Each one's crossing weight for a text of its own step (``weight`` by default; 0 for a point's marker,
+        which its label's box never meets: its pairs are then not measured at all).
     index : bool
         Index the segments in a tree (geometries appended later are not).
     """
 
     def __init__(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
-                 allow: Sequence[float] | None = None, index: bool = False):
+                 allow: Sequence[float] | None = None, index: bool = False, weight: Sequence[float] | None = None,
+                 own: Sequence[float] | None = None):
         self.geoms: list[shapely.Geometry] = []
         self.codes: dict[str, int] = {}
         self._parts: list[tuple[np.ndarray, ...]] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
         self._simple: dict[int, bool] = {}
-        self.extend(geoms, owners, allow)
+        self.extend(geoms, owners, allow, weight, own)
         self.tree = None
         if index and len(self.arrays()[0]):
             self.tree = shapely.STRtree(_diagonals(*self.arrays()[:4]))
@@ -262,7 +286,8 @@ class Layer:
         self.extend([geom])
 
     def extend(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
-               allow: Sequence[float] | None = None) -> None:
+               allow: Sequence[float] | None = None, weight: Sequence[float] | None = None,
+               own: Sequence[float] | None = None) -> None:
         """Add geometries (not to the tree)."""
         n0, n = len(self.geoms), len(geoms)
         if not n:
@@ -272,6 +297,8 @@ class Layer:
         self.geoms += g.tolist()
         codes = [self.codes.setdefault(o, len(self.codes)) for o in owners] if owners is not None else [-1] * n
         allowed = np.array(allow, dtype=float) if allow is not None else np.zeros(n)
+        weighed = np.array(weight, dtype=float) if weight is not None else np.zeros(n)
+        mine = np.array(own, dtype=float) if own is not None else weighed
         parts, whole = shapely.get_parts(g, return_index=True)
         areal = shapely.get_dimensions(parts) == 2
         lines, owner = parts, whole
@@ -291,18 +318,18 @@ class Layer:
         simple[(types > 1) & (types != 3)] = 0
         self._parts.append((a[:, 0].copy(), a[:, 1].copy(), b[:, 0].copy(), b[:, 1].copy(), parent,
                             np.array(codes, dtype=np.intp), allowed, shapely.bounds(g).reshape(-1, 4),
-                            shapely.get_dimensions(g) == 2, simple.astype(np.int8)))
+                            shapely.get_dimensions(g) == 2, simple.astype(np.int8), weighed, mine))
         self._arrays = None
 
     def arrays(self) -> tuple[np.ndarray, ...]:
         """The segments' ends (ax, ay, bx, by) and geometry, and the geometries' owner codes, allowances, bounds,
         whether each is an area, and whether each is a simple line string or point (1), not (0) or not yet
-        known (-1)."""
+        known (-1), and their crossing weights (for other steps' texts, and for their own step's)."""
         if self._arrays is None:
             if not self._parts:
                 z = np.zeros(0)
                 self._arrays = (z, z, z, z, _NONE, _NONE, z, np.zeros((0, 4)), np.zeros(0, dtype=bool),
-                                np.zeros(0, dtype=np.int8))
+                                np.zeros(0, dtype=np.int8), z, z)
             else:
                 self._arrays = tuple(np.concatenate(c) for c in zip(*self._parts))
                 self._parts = [self._arrays]
@@ -319,12 +346,13 @@ class Layer:
             simple[unknown] = shapely.is_simple(geoms)
         return simple[parents] == 1
 
-    def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
+    def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
-        tree, or all segments of the geometries near all the boxes), not of a box's own step."""
-        ax, ay, bx, by, parent, owner, _, bounds, _, _ = self.arrays()
+        tree, or all segments of the geometries near all the boxes), not of a box's own step unless counted
+        (a crossing weight); and whether each pair is of the box's own step."""
+        ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own = self.arrays()
         if not len(ax) or not len(boxes):
-            return _NONE, _NONE
+            return _NONE, _NONE, _NO
         if self.tree is not None:
             k, s = self.tree.query(_diagonals(boxes.x0 - REACH, boxes.y0 - REACH, boxes.x1 + REACH, boxes.y1 + REACH))
         else:
@@ -333,20 +361,28 @@ class Layer:
             near = (bounds[:, 0] <= x1) & (x0 <= bounds[:, 2]) & (bounds[:, 1] <= y1) & (y0 <= bounds[:, 3])
             s1 = np.flatnonzero(near[parent])
             if not len(s1):
-                return _NONE, _NONE
+                return _NONE, _NONE, _NO
             k, s = np.repeat(np.arange(len(boxes)), len(s1)), np.tile(s1, len(boxes))
-        o = owner[parent[s]]
-        keep = (o != boxes.owner[k]) | (o < 0)
-        return k[keep], s[keep]
+        p = parent[s]
+        o = owner[p]
+        mine = (o == boxes.owner[k]) & (o >= 0)
+        keep = ~mine | (own[p] > 0.0)
+        return k[keep], s[keep], mine[keep]
 
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from this layer's geometries (not those of a box's own step)."""
-        ax, ay, bx, by, parent, _, allow, _, _, _ = self.arrays()
+        ax, ay, bx, by, parent, _, allow, _, _, _, weight, own = self.arrays()
         n = len(boxes)
-        k, s = self.pairs(boxes)
+        k, s, mine = self.pairs(boxes)
         d, hit, inside = pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s])
         p = parent[s]
         known = np.full(n, ENOUGH)
+        cross = np.zeros(n)
+        if mine.any():                                          # its own step's: crossings only
+            met = np.flatnonzero(hit & mine)
+            _count(cross, k[met], p[met], own, len(self.geoms))
+            other = np.flatnonzero(~mine)
+            k, p, d, hit, inside = k[other], p[other], d[other], hit[other], inside[other]
         least(known, k, d + allow[p])
         touching = np.zeros(n, dtype=bool)
         h = np.flatnonzero(hit)
@@ -357,26 +393,39 @@ class Layer:
             touching[ck] = True
             hk, hp, hin = np.concatenate([hk, ck]), np.concatenate([hp, cp]), np.concatenate([hin, np.zeros(len(ck))])
         if not len(hk):
-            return Measured(known, known, known, touching, (_NONE, _NONE))
+            return Measured(known, known, known, touching, (_NONE, _NONE), cross)
         order = np.argsort(hk * len(self.geoms) + hp, kind="stable")
         hk, hp, hin = hk[order], hp[order], hin[order]
         first = np.flatnonzero(_starts((hk[1:] != hk[:-1]) | (hp[1:] != hp[:-1])))
         gk, gp = hk[first], hp[first]
+        cross += CROSS * np.bincount(gk, weights=weight[gp], minlength=n)
         covered = np.add.reduceat(hin, first)
         simple = self._simple_of(gp)
         least(known, gk[simple], allow[gp[simple]] - np.minimum(2.0, 0.3 * covered[simple]))
         pend_k, pend_p = gk[~simple], gp[~simple]
         if not len(pend_k):
-            return Measured(known, known, known, touching, (_NONE, _NONE))
+            return Measured(known, known, known, touching, (_NONE, _NONE), cross)
         hi, lo = known.copy(), known.copy()
         least(hi, pend_k, allow[pend_p])
         least(lo, pend_k, allow[pend_p] - 2.0)
-        return Measured(known, hi, lo, touching, (pend_k, pend_p))
+        return Measured(known, hi, lo, touching, (pend_k, pend_p), cross)
+
+    def crossing(self, box: shapely.Geometry, owner: str | None) -> float:
+        """:data:`CROSS` × the crossing weights of the geometries ``box`` touches, its own step's included (by
+        GEOS: the definition :meth:`measure`'s ``cross`` follows)."""
+        weight, own, codes = self.arrays()[10], self.arrays()[11], self.arrays()[5]
+        w = np.where((codes == self.code(owner)) & (codes >= 0), own, weight)
+        idx = np.flatnonzero(w > 0.0)
+        if not len(idx):
+            return 0.0
+        geoms = np.empty(len(idx), dtype=object)
+        geoms[:] = [self.geoms[i] for i in idx.tolist()]
+        return CROSS * float(w[idx][shapely.intersects(box, geoms)].sum())
 
     def _contained(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
         """(box, area) pairs, sorted by box, where the box lies within the area's bounds and meets the area (by
         GEOS): a box wholly inside an area meets none of its rings."""
-        _, _, _, _, _, owner, _, bounds, areal, _ = self.arrays()
+        _, _, _, _, _, owner, _, bounds, areal, _, _, _ = self.arrays()
         if not areal.any() or not len(boxes):
             return _NONE, _NONE
         w, h = (boxes.x1 - boxes.x0).min(), (boxes.y1 - boxes.y0).min()
@@ -489,6 +538,31 @@ class Placed:
         least(hi, k, np.zeros(len(k)))
         least(lo, k, np.full(len(k), -2.0))
         return Measured(known, hi, lo, touching, (k, p))
+
+    def across(self, segments: np.ndarray) -> np.ndarray:
+        """Whether each segment (rows of ax, ay, bx, by) meets a placed text box (an axis-parallel rectangle, as
+        :func:`.boxgeom.box_segment` decides; a placed geometry of any other kind by GEOS)."""
+        out = np.zeros(len(segments), dtype=bool)
+        if not len(segments):
+            return out
+        if self._rects:
+            px0, py0, px1, py1 = self._dense()[:4]
+            nr = len(self._rects)
+            ax, ay, bx, by = (segments[:, i][:, None] for i in range(4))
+            near = ((np.minimum(ax, bx) <= px1[None, :nr]) & (px0[None, :nr] <= np.maximum(ax, bx))
+                    & (np.minimum(ay, by) <= py1[None, :nr]) & (py0[None, :nr] <= np.maximum(ay, by)))
+            k, j = np.nonzero(near)
+            if len(k):
+                _, hit = box_segment(px0[j], py0[j], px1[j], py1[j], segments[k, 0], segments[k, 1],
+                                     segments[k, 2], segments[k, 3])
+                out[k[hit]] = True
+        if self._general:
+            rest = [g for i, g in enumerate(self.geoms) if i not in set(self._rect_ids) and i not in set(self._leader_ids)]
+            if rest:
+                tree = shapely.STRtree(rest)
+                k, _ = tree.query(shapely.linestrings(segments.reshape(-1, 2, 2)), predicate="intersects")
+                out[k] = True
+        return out
 
     def exact(self, box: shapely.Geometry, parents: np.ndarray) -> float:
         """The least of :func:`covering` over the placed geometries ``parents`` (all touching ``box``)."""

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from .labels import Runs, label_runs, text_width
-from .placement import LABEL_DISTANCES, Request, half_extent
+from .placement import Request, half_extent, label_distances
 from .shapes import Disc, ArcP, Pen, Poly, Shape
 from .style import LABEL_SIZE, PAPER, Style
 from .view import TAU, View, clip_arc, clip_interval
@@ -132,7 +132,7 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
             req = Request(c, w, h, gap, style.label_dir, candidates=spots)
         else:
             away = math.atan2(c[1] - ctx.centre[1], c[0] - ctx.centre[0]) if c != ctx.centre else -math.pi / 4
-            req = Request(c, w, h, gap, away, distances=LABEL_DISTANCES, rivals=_rivals(c, ctx))
+            req = Request(c, w, h, gap, away, distances=label_distances(gap), rivals=_rivals(c, ctx))
         short = None
         tail = label[:-1].split(" (", 1)[-1] if label.endswith(")") and " (" in label else ""
         if tail and not style.label_whole:  # "N (E1)": just "N" where both find no room (an instant centre's

@@ -27,13 +27,13 @@ from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segme
 from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .arms import add_arms
+from .boxgeom import box_point
 from .coincident import NEAR as NEAR_NAMES, Together, groups_of
 from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals, compass_half, compass_steps,
                    draw_compass)
 from .clearance import ENOUGH
-from .placement import AMBIGUOUS, LABEL_DISTANCES, Placer, Request, half_extent
+from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
 from .rows import SEP, Fan, clusters, fans, row_centre
-from .crossings import NEAR, Crossings
 from .labels import text_width
 from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, TRIM_OVERSHOOT, highlighted, resolve_style
@@ -414,7 +414,7 @@ def _joined(t: TextRequest, group: Together, ctx: Context) -> TextRequest:
     anchor, gap = group.anchor()
     mates = set(group.at)
     rivals = tuple(q for q in _rivals(anchor, ctx, RIVAL_REACH + t.request.width) if q not in mates)
-    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals)
+    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals, distances=label_distances(gap))   # within reach
     return replace(t, request=req, fallback=None, parts=group.parts())
 
 
@@ -458,12 +458,32 @@ def _outward(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> No
             away = math.atan2(ay - centre[1], ax - centre[0])
             spots = []
             for turn in OUTWARD_TURNS:                # on the ray, at the ray's end if need be, first
-                for d in LABEL_DISTANCES:
+                for d in label_distances(r.gap):
                     ux, uy = math.cos(away + turn), math.sin(away + turn)
                     k = r.gap + half_extent(ux, uy, r.width, r.height) + d
                     spots.append((ax + ux * k, ay + uy * k))
             texts[texts.index(t)] = replace(t, request=replace(r, prefer=away, candidates=tuple(spots)),
                                             fallback=t)         # all round, where outside has no room
+
+
+def _leading(pending: list[tuple[Drawn, bool]]) -> None:
+    """A mark's value placed all round its arc gets a leader beyond :data:`LEADER_FROM` from its arc
+    (:func:`_leader`): its request says so, and where the leader may start, so that the placer keeps the leader
+    short and off the links, pivots and texts."""
+    for drawn, _ in pending:
+        for i, t in enumerate(drawn.texts):
+            if t.cls == "mark-text" and not t.request.candidates:
+                arcs = [sh for sh in drawn.shapes if isinstance(sh, ArcP) and sh.at(0.5) == t.request.anchor]
+                starts = tuple(arcs[0].at(k / ARC_STARTS) for k in range(ARC_STARTS + 1)) if arcs else ()
+                fb = t.fallback
+                if fb is not None and fb.cls == "mark-text" and not fb.request.candidates:
+                    fb = replace(fb, request=replace(fb.request, lead=LEADER_FROM, starts=starts))
+                drawn.texts[i] = replace(t, request=replace(t.request, lead=LEADER_FROM, starts=starts), fallback=fb)
+
+
+ARC_STARTS = 8
+"""A mark's leader starts at the nearest of 9 points along its arc (ends and eighths): a value beside either end
+of its arc needs none, and one farther off reaches its arc the shortest way."""
 
 
 FanTry = tuple[list[tuple[int, TextRequest]], list[Request], list[tuple[Fan, list[tuple[Request, str]]]]]
@@ -519,6 +539,10 @@ def _at(r: Request, c: tuple[float, float]) -> Request:
     return Request(r.anchor, r.width, r.height, r.gap, r.prefer, candidates=(c,))
 
 
+LED_GAIN = 1.5
+"""How much better (score) a point's label must be farther off, with a leader, to leave its point when it is not
+clear there either: more than one thin line fewer crossed."""
+
 LED_DISTANCES = (0.0, 1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0)
 """Distances beyond its gap at which a row's number with no room by its point is tried (it gets a leader)."""
 
@@ -528,8 +552,23 @@ def _led(t: TextRequest) -> TextRequest:
     point), or a point's label that would cover a line there: tried all round at :data:`LED_DISTANCES`, to be
     joined to its point by a leader (which says whose it is, wherever it lands)."""
     r = t.request
-    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES)
+    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES, rivals=r.rivals, lead=r.gap)
     return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan", parts=t.parts)
+
+
+def _led_outward(t: TextRequest) -> TextRequest:
+    """A division's number with no room by its point outside the profile (:func:`_outward`): tried along its ray
+    and up to 50° either side at :data:`LED_DISTANCES`, joined to its point by a leader."""
+    r = t.request
+    (ax, ay), away = r.anchor, r.prefer
+    spots = []
+    for turn in OUTWARD_TURNS:
+        for d in LED_DISTANCES:
+            ux, uy = math.cos(away + turn), math.sin(away + turn)
+            k = r.gap + half_extent(ux, uy, r.width, r.height) + d
+            spots.append((ax + ux * k, ay + uy * k))
+    req = Request(r.anchor, r.width, r.height, r.gap, away, candidates=tuple(spots), rivals=r.rivals, lead=r.gap)
+    return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan")
 
 
 def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
@@ -553,67 +592,79 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     numbered row go on a line beside it, with leaders (:func:`_fanned`). The shapes whose ``id`` is in ``apart``
     (an angle's rays drawn on to its arc: :mod:`.arms`) are kept clear of by their own step's text too."""
     obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
-                  SOFT if g.layer == "construction" else 0.0) for g in groups for sh in g.shapes]
+                  SOFT if g.layer == "construction" else 0.0, w, 0.0 if g.layer == "points" else w)
+                 for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
     placer = Placer(obstacles, view.paper_box)
-    texts: list[Any] = []
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
+    _leading(pending)
     tried = _fan_options(groups, pending)
     placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts]
                    + [job for _, _, options in tried for _, jobs in options for job in jobs])   # in one pass
-    fanned = _fanned(placer, tried)
-    strokes = _Strokes(obstacles, [(g, sh) for g in groups for sh in g.shapes], view.paper_box)
+    fanned: dict[int, TextRequest] = {}
+    texts: list[Any] = []
     steps_of = {g.key: (g, cur) for g, (_, cur) in zip(groups, pending) if not g.arc}     # a label's parts
-    rows = [f.request.box(*f.request.candidates[0]) for f in fanned.values()]
-    for g0, (drawn, is_cur) in zip(groups, pending):
-        queue = [(g0, t, HIGHLIGHT if is_cur else None) for t in drawn.texts]
-        while queue:
-            g, t, colour = queue.pop(0)
-            if id(t) in fanned:                 # placed (and recorded by the placer) with its row
-                t = fanned[id(t)]
-                texts.append(t.request.box(*t.request.candidates[0]))
-                leader = _fan_leader(t, texts[-1])
-                if leader is not None:
-                    g.shapes.append(recolour(leader, colour) if colour else leader)
-                g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
-                continue
-            centre, score = placer.best(t.request, g.key)
-            if t.alone and score < 0.0 and _apart(placer, t.alone, score):
-                queue[0:0] = [(steps_of[k][0], a, HIGHLIGHT if steps_of[k][1] else None) for k, a in t.alone]
-                continue                        # near points' own labels instead, each placed as a label is
-            outward = t.fallback is not None and t.fallback.runs == t.runs      # a division's number all round
-            if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
-                alt, alt_score = placer.best(t.fallback.request, g.key)
-                if alt_score > score + 0.3:
-                    t, centre, score = t.fallback, alt, alt_score
-            if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
-                led = _led(t)                       # a point's label that covers a line: farther, with a leader
-                alt, alt_score = placer.best(led.request, g.key)
-                if alt_score >= CROWDED and alt_score > score + 0.3:
-                    t, centre = led, alt
-            box = t.request.box(*centre)
-            if t.cls in ("mark-text", "label") and not t.optional and not t.request.candidates and (
-                    score < 0.0 or (t.cls == "mark-text" and strokes.on_own_lines(box, g.key))):
-                centre = strokes.fewest_crossings(t, g.key, centre, texts + rows)
-                box = t.request.box(*centre)
-            if t.optional and ((texts and shapely.intersects(box, texts).any())
-                               or placer.rivalled(t.request, g.key, centre)):
-                t = _led(t)             # a row's number with no room by its point: farther, with a leader
-                centre, _ = placer.best(t.request, g.key)
-                box = t.request.box(*centre)
-                leader = _fan_leader(t, box)
-            else:
-                leader = _fan_leader(t, box) if t.cls == "label fan" else _leader(t, box)
-            texts.append(box)
-            placer.commit(box)
+
+    def put(g: StepDrawing, is_cur: bool, t: TextRequest) -> None:
+        colour = HIGHLIGHT if is_cur else None
+        if id(t) in fanned:                     # placed (and recorded by the placer) with its row
+            t = fanned[id(t)]
+            texts.append(t.request.box(*t.request.candidates[0]))
+            leader = _fan_leader(t, texts[-1])
             if leader is not None:
-                placer.commit(obstacle(leader))
                 g.shapes.append(recolour(leader, colour) if colour else leader)
-            if t.parts:
-                for key, part in _parts_at(t, centre[0], centre[1]):
-                    owner, cur = steps_of[key]
-                    owner.shapes.append(recolour(part, HIGHLIGHT) if cur else part)
-            else:
-                g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+            g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
+            return
+        centre, score = placer.best(t.request, g.key)
+        if t.alone and score < 0.0 and _apart(placer, t.alone, score):
+            for k, a in t.alone:                # near points' own labels instead, each placed as a label is
+                put(steps_of[k][0], steps_of[k][1], a)
+            return
+        outward = t.fallback is not None and t.fallback.runs == t.runs      # a division's number all round
+        if outward and score < -AMBIGUOUS:      # no room by its point outside: farther out, with a leader
+            led = _led_outward(t)
+            alt, alt_score = placer.best(led.request, g.key)
+            if alt_score >= CROWDED:
+                t, centre, score = led, alt, alt_score
+        if t.fallback is not None and score < (-AMBIGUOUS if outward else CROWDED):
+            alt, alt_score = placer.best(t.fallback.request, g.key)
+            if alt_score > score + 0.3:
+                t, centre, score = t.fallback, alt, alt_score
+        if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
+            led = _led(t)                       # a point's label that covers a line: farther, with a leader
+            alt, alt_score = placer.best(led.request, g.key)
+            if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN):
+                t, centre = led, alt
+        box = t.request.box(*centre)
+        if t.optional and ((texts and shapely.intersects(box, texts).any())
+                           or placer.rivalled(t.request, g.key, centre)):
+            t = _led(t)                 # a row's number with no room by its point: farther, with a leader
+            centre, _ = placer.best(t.request, g.key)
+            box = t.request.box(*centre)
+            leader = _fan_leader(t, box)
+        else:
+            leader = _fan_leader(t, box) if t.cls == "label fan" else _leader(t, box)
+        if leader is None and t.cls == "label fan":
+            t = replace(t, cls="label")         # it found room by its point after all
+        texts.append(box)
+        placer.commit(box)
+        if leader is not None:
+            placer.commit(obstacle(leader))
+            g.shapes.append(recolour(leader, colour) if colour else leader)
+        if t.parts:
+            for key, part in _parts_at(t, centre[0], centre[1]):
+                owner, cur = steps_of[key]
+                owner.shapes.append(recolour(part, HIGHLIGHT) if cur else part)
+        else:
+            g.shapes.append(_text_at(t, centre[0], centre[1], colour))
+
+    every = [(g, is_cur, t) for g, (drawn, is_cur) in zip(groups, pending) for t in drawn.texts]
+    fixed = [x for x in every if x[2].cls == "mark-text" and x[2].request.candidates]
+    for x in fixed:                             # a dimension's value first: it has only its few places on its line
+        put(*x)
+    fanned.update(_fanned(placer, tried))
+    for x in every:
+        if not (x[2].cls == "mark-text" and x[2].request.candidates):
+            put(*x)
 
 
 def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: float) -> bool:
@@ -634,55 +685,32 @@ def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: fl
     return True
 
 
-class _Strokes:
-    """The strokes of a frame for :func:`_place_texts`' rescue of a text left across lines (:mod:`.crossings`):
-    each one's step, whether it is an arc (a mark's own arc) and whether it is hard (a link or a point's
-    marker); the counting tree is built the first time it is needed."""
+def _weight(g: StepDrawing, sh: Shape) -> float:
+    """The crossing weight of a shape (:class:`.Placer`): a link, a point's marker, a ground symbol, and a mark's
+    straight strokes (the normal drawn with an angle, a dimension's line and arrows) 2, any other stroke 1 (a
+    text's own step's strokes count too: a mark's value across its own arc or normal), a text 0."""
+    if isinstance(sh, Text):
+        return 0.0
+    return 2.0 if g.layer in HARD or (g.layer == "marks" and not isinstance(sh, ArcP)) else 1.0
 
-    def __init__(self, obstacles: list[tuple[Any, str, float]], shapes: list[tuple[StepDrawing, Shape]], frame: Box):
-        self.geoms = [geom for geom, _, _ in obstacles]
-        self.owners = [g.key for g, _ in shapes]
-        self.arcs = np.array([isinstance(sh, ArcP) for _, sh in shapes], dtype=bool)
-        self.hard = [g.layer in ("links", "points") for g, _ in shapes]
-        self.frame = frame
-        self._mine: dict[str, list[Any]] | None = None
-        self._lines: Crossings | None = None
 
-    def on_own_lines(self, box: Any, key: str) -> bool:
-        """Whether a mark's value at ``box`` crosses a line its own step draws besides the arc (the normal drawn
-        with the mark), which the placer does not see."""
-        if self._mine is None:
-            self._mine = {}
-            for geom, owner, arc in zip(self.geoms, self.owners, self.arcs.tolist()):
-                if not arc:
-                    self._mine.setdefault(owner, []).append(geom)
-        mine = self._mine.get(key)
-        return bool(mine) and bool(shapely.intersects(box, mine).any())
-
-    def fewest_crossings(self, t: TextRequest, key: str, centre: tuple[float, float], placed: list[Any]
-                         ) -> tuple[float, float]:
-        """A mark's value or a point's label the placer left covering something: the spot that crosses the
-        fewest drawn lines, when that is fewer than where it is. A value's own step's lines count as a link
-        does (the normal drawn with it), its arc does not; a label keeps within a label's distances of its
-        point, whose marker does not count."""
-        if self._lines is None:
-            self._lines = Crossings(self.geoms, self.hard, self.frame, self.owners)
-        label = t.cls == "label"
-        own = (key, np.where(self.arcs, 0, 0 if label else 2))
-        req = t.request
-        x, y, n = self._lines.fewest(req, placed, req.distances if label else NEAR, own)
-        return (x, y) if 0 <= n < int(self._lines.count([req.box(*centre)], own)[0]) else centre
+HARD = ("links", "points", "ground")
+"""The layers whose strokes a text crossing them costs twice as much: the mechanism's links, pivots and grounds."""
 
 
 def _leader(t: TextRequest, box: Any) -> Poly | None:
     """A thin leader from a mark's anchor to its text when the text sits far from it (not for labels)."""
     if t.cls == "label" or t.request.candidates:
         return None
-    anchor = shapely.Point(t.request.anchor)
+    x0, y0, x1, y1 = box.bounds                 # the start nearest the box, as the placer chose it
+    starts = t.request.starts or (t.request.anchor,)
+    ds = box_point(x0, y0, x1, y1, np.array([p[0] for p in starts]), np.array([p[1] for p in starts]))
+    start = starts[int(np.argmin(ds))]
+    anchor = shapely.Point(start)
     if box.distance(anchor) <= LEADER_FROM:
         return None
     _, near = shapely.ops.nearest_points(anchor, box.exterior)
-    ax, ay = t.request.anchor
+    ax, ay = start
     d = math.hypot(near.x - ax, near.y - ay)
     k = (d - 0.4) / d
     return Poly(((ax, ay), (ax + (near.x - ax) * k, ay + (near.y - ay) * k)), Pen(INK, 0.15))
@@ -708,6 +736,7 @@ def _parts_at(t: TextRequest, cx: float, cy: float) -> list[tuple[str, Text]]:
     if cx < t.request.anchor[0] - t.request.width / 4:          # mostly left of them
         parts = [parts[0]] + [(key, runs[1:] + runs[:1]) for key, runs in parts[1:]]     # the sign after the name
         parts.reverse()
+        x = whole.box[2] - 0.15 - sum(text_width(runs, t.size) for _, runs in parts)     # ending by the points
     out = []
     for key, runs in parts:
         w = text_width(runs, t.size)

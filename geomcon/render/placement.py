@@ -42,11 +42,38 @@ LABEL_DISTANCES = (0.0, 1.0, 2.0, 3.0)
 """The distances tried for a point's label: its box then lies within gap + 3 mm of the point (gap = the
 marker's radius + 0.4 mm), so that a reader never takes it for another point's label."""
 
-LABEL_REACH = 6.0
-"""The most (paper mm) a point's label box lies from its point, whatever the marker (checked over the
-gallery by the tests)."""
+LABEL_REACH = 3.0
+"""The most (paper mm) a point's label box lies from its point (its centre), whatever the marker (checked over
+the gallery by the tests): a label farther off gets a leader."""
 
-AMBIGUOUS = 5.0
+
+def label_distances(gap: float) -> tuple[float, ...]:
+    """The distances beyond ``gap`` at which a point's label is tried: those of :data:`LABEL_DISTANCES` that keep
+    its box within :data:`LABEL_REACH` of the point, the farthest at that reach (none beyond the gap when the
+    marker leaves no room).
+
+    Examples
+    --------
+    >>> label_distances(0.95), label_distances(1.9), label_distances(3.2)
+    ((0.0, 1.0, 2.05), (0.0, 1.1), (0.0,))
+    """
+    room = round(LABEL_REACH - gap, 9)
+    if room <= 0.0:
+        return (0.0,)
+    return tuple(d for d in LABEL_DISTANCES if d < room - 0.25) + (room,)
+
+LEADER_CROSSING = 3.0
+"""Score lost by a box whose leader would cross a link or a pivot symbol: another place is taken where there is
+one (worse than an ambiguous label, better than a box outside the frame)."""
+
+TOO_LONG = 12.0
+"""Score lost by a box whose leader would be longer than :data:`.candidates.LEADER_MAX`: worse than a leader
+across a link, better than a box outside the frame or on a text placed before (which cannot be read)."""
+
+HARD = 2.0
+"""The crossing weight of a link or a pivot symbol (a point's marker, a ground): what a leader must not cross."""
+
+AMBIGUOUS = 15.0
 """Score lost by a label's box nearer another point than its own (worse than covering a line, better than
 covering a text or leaving the frame)."""
 
@@ -76,6 +103,14 @@ class Request:
     rivals : tuple of (float, float)
         Other points near the anchor (a point's label): a box nearer one of them than the anchor would be
         read as its label, and loses :data:`AMBIGUOUS`.
+    lead : float
+        Distance (paper mm) from the anchor beyond which the text is joined to it by a leader (inf: never). A
+        box whose leader would be longer than :data:`.candidates.LEADER_MAX` loses :data:`TOO_LONG`; one whose leader would cross a link or a pivot symbol (an obstacle of crossing weight 2, not of
+        the text's own step) loses :data:`LEADER_CROSSING`, and one whose leader would cross a text placed
+        before is as bad as one outside the frame.
+    starts : tuple of (float, float)
+        Where a leader may start (points along a mark's arc; the anchor when empty): the one nearest the box;
+        ``lead`` is the distance from it.
     """
 
     anchor: XY
@@ -88,6 +123,8 @@ class Request:
     rotate: float = 0.0
     distances: tuple[float, ...] = DISTANCES
     rivals: tuple[XY, ...] = ()
+    lead: float = math.inf
+    starts: tuple[XY, ...] = ()
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
@@ -123,23 +160,41 @@ def nearer_rival(req: Request, centres: Sequence[XY]) -> list[bool]:
     return rivalled([req], np.array([0, n]), np.array([n]), _boxes(req, c[:, 0], c[:, 1], -1)).tolist()
 
 
+def nudged(leaders: np.ndarray, by: float = 0.3) -> np.ndarray:
+    """Leaders (rows of ax, ay, bx, by) without their first ``by`` mm: a leader starting at an end of its arc,
+    on a ray of the angle, does not cross that line.
+
+    >>> nudged(np.array([[0.0, 0.0, 2.0, 0.0]])).tolist()
+    [[0.3, 0.0, 2.0, 0.0]]
+    """
+    d = leaders[:, 2:] - leaders[:, :2]
+    n = np.hypot(d[:, 0], d[:, 1])[:, None]
+    k = np.minimum(by / np.where(n > 0.0, n, 1.0), 1.0)
+    return np.concatenate([leaders[:, :2] + d * k, leaders[:, 2:]], axis=1)
+
+
 class _Batch:
     """The candidates of the texts prepared together (:class:`.Candidates`) and what is known of them: the
     static loss (outside the frame, nearer a rival point), their best possible scores, and the clearances from
     the drawing of those measured so far (NaN for the others; ``pending``: what GEOS is left to compute, by
     candidate). A text's are a slice of these arrays."""
 
-    def __init__(self, c: Candidates):
+    def __init__(self, c: Candidates, barred: np.ndarray):
         self.c, self.boxes = c, c.boxes
-        self.outside = np.where(c.framed, 0.0, 50.0) + np.where(c.rivalled, AMBIGUOUS, 0.0)
+        self.leading = np.where(c.far, TOO_LONG, 0.0)
+        self.leading[c.led[barred]] += LEADER_CROSSING
+        self.outside = np.where(c.framed, 0.0, 50.0) + np.where(c.rivalled, AMBIGUOUS, 0.0) + self.leading
         self.static = (ENOUGH - c.cost) - self.outside
         self.static_list: list[float] = self.static.tolist()
         self.known, self.hi = np.full(len(c.cost), np.nan), np.full(len(c.cost), np.nan)
+        self.cross = np.zeros(len(c.cost))
         self.pending: dict[int, np.ndarray] = {}
 
     def record(self, rows: np.ndarray, m: Measured) -> None:
         """Keep the clearances ``m`` of the candidates ``rows`` (of the batch)."""
         self.known[rows], self.hi[rows] = m.known, m.hi
+        if m.cross is not None:
+            self.cross[rows] = m.cross
         pk, pp = m.pending
         if len(pk):
             cut = np.flatnonzero(np.concatenate((_starts(pk[1:] != pk[:-1]), [True])))
@@ -149,7 +204,7 @@ class _Batch:
     def upper(self) -> list[float]:
         """The best score each candidate may still get: by its clearance from the drawing when measured (NaN
         when not)."""
-        return ((self.hi - self.c.cost) - self.outside).tolist()
+        return (((self.hi - self.cross) - self.c.cost) - self.outside).tolist()
 
 
 class _Text:
@@ -166,9 +221,12 @@ class _Text:
         self.batch, self.offset, self.n = batch, a, b - a
         c = batch.c
         self.cost, self.framed, self.rivalled = c.cost[a:b], c.framed[a:b], c.rivalled[a:b]
+        self.leading = batch.leading[a:b]
+        lo, hi = np.searchsorted(c.led, [a, b])
+        self.led, self.leader = c.led[lo:hi] - a, c.leader[lo:hi]
         self.boxes = batch.boxes.slice(a, b)
         self.outside, self.static = batch.outside[a:b], batch.static[a:b]
-        self.known, self.hi = batch.known[a:b], batch.hi[a:b]
+        self.known, self.hi, self.cross = batch.known[a:b], batch.hi[a:b], batch.cross[a:b]
         self._at, self._best, self._waves = 0, -math.inf, 0
 
     def centre(self, i: int) -> XY:
@@ -217,21 +275,26 @@ class Placer:
 
     Parameters
     ----------
-    obstacles : sequence of (geometry, owner, allowance)
-        Drawn strokes, markers and texts. ``owner`` tags the step that drew it (a label ignores its own
-        point's marker); ``allowance`` is added to the distance, so that crossing a thin, light
-        construction line (allowance > 0) costs less than touching a link.
+    obstacles : sequence of (geometry, owner, allowance[, weight[, own weight]])
+        Drawn strokes, markers and texts. ``owner`` tags the step that drew it (a text keeps no distance from its
+        own step's strokes); ``allowance`` is added to the distance, so that crossing a thin, light
+        construction line (allowance > 0) costs less than touching a link; ``weight`` (0 when left out) is its
+        crossing weight: a box touching it loses :data:`.clearance.CROSS` × the weight, its own step's too (a
+        mark's value across its own arc), so that the box crossing fewest lines wins; ``own weight`` (``weight``
+        when left out) is the weight for a text of its own step (0 for a point's marker, never met by its label).
     frame : (x0, y0, x1, y1)
         Texts must stay inside this paper box.
     """
 
     def __init__(self, obstacles: Sequence[tuple[shapely.Geometry, str, float]],
                  frame: tuple[float, float, float, float]):
-        self._fixed = Layer([g for g, _, _ in obstacles], [o for _, o, _ in obstacles], [a for _, _, a in obstacles],
-                            index=True)
+        self._fixed = Layer([o[0] for o in obstacles], [o[1] for o in obstacles], [o[2] for o in obstacles],
+                            index=True, weight=[o[3] if len(o) > 3 else 0.0 for o in obstacles],
+                            own=[o[4] if len(o) > 4 else (o[3] if len(o) > 3 else 0.0) for o in obstacles])
         self._placed = Placed()
         self._frame = frame
         self._ready: dict[tuple[Request, str], _Text] = {}
+        self._bars: tuple[shapely.STRtree, np.ndarray] | None = None
 
     def prepare(self, jobs: Sequence[tuple[Request, str]]) -> None:
         """Measure the candidates of every (request, owner) of ``jobs`` against the fixed drawing, in a few
@@ -239,7 +302,8 @@ class Placer:
         todo = [j for j in dict.fromkeys(jobs) if j not in self._ready]
         if not todo:
             return
-        batch = _Batch(candidates([r for r, _ in todo], [self._fixed.code(o) for _, o in todo], self._frame))
+        c = candidates([r for r, _ in todo], [self._fixed.code(o) for _, o in todo], self._frame)
+        batch = _Batch(c, self._barred(c))
         texts = [_Text(batch, i) for i in range(len(todo))]
         self._ready.update(zip(todo, texts))
         while texts:
@@ -248,6 +312,25 @@ class Placer:
             wave = [(t, rows) for t, rows in wave if len(rows)]
             self._measure(batch, wave)
             texts = [t for t, _ in wave]
+
+    def _barred(self, c: Candidates) -> np.ndarray:
+        """Whether the leader of each led candidate of ``c`` crosses a link or a pivot symbol (an obstacle of
+        weight :data:`HARD`) not of its text's own step: one query of a tree of them for all."""
+        out = np.zeros(len(c.led), dtype=bool)
+        if not len(c.led):
+            return out
+        if self._bars is None:
+            weight, codes = self._fixed.arrays()[10], self._fixed.arrays()[5]
+            idx = np.flatnonzero(weight >= HARD)
+            geoms = np.empty(len(idx), dtype=object)
+            geoms[:] = [self._fixed.geoms[i] for i in idx.tolist()]
+            self._bars = (shapely.STRtree(geoms), codes[idx])
+        tree, codes = self._bars
+        lines = shapely.linestrings(nudged(c.leader).reshape(-1, 2, 2))
+        k, j = tree.query(lines, predicate="intersects")
+        mine = codes[j] == c.boxes.owner[c.led[k]]
+        out[k[~mine]] = True
+        return out
 
     def _measure(self, batch: _Batch, wave: list[tuple[_Text, np.ndarray]]) -> None:
         """Measure the candidates ``rows`` of each text of ``wave`` (all of ``batch``) against the drawing, in one
@@ -260,7 +343,8 @@ class Placer:
     def clearance(self, box: shapely.Geometry, owner: str) -> float:
         """Distance (capped at :data:`ENOUGH`) from ``box`` to every obstacle not owned by ``owner`` (plus its
         allowance) and to everything placed so far; negative when the box covers something, the more the
-        more it covers (so that among crowded places the least covered wins). By shapely: the definition
+        more it covers (so that among crowded places the least covered wins); less :data:`.clearance.CROSS` ×
+        the crossing weight of every obstacle it touches, its own step's included. By shapely: the definition
         the placer's closed forms follow."""
         best = ENOUGH
         codes, allow = self._fixed.arrays()[5:7]
@@ -270,7 +354,7 @@ class Placer:
                 g = np.empty(len(geoms), dtype=object)
                 g[:] = geoms
                 best = min(best, float(np.min(gaps(box, g) + plus)))
-        return best
+        return best - self._fixed.crossing(box, owner)
 
     def best(self, req: Request, owner: str) -> tuple[XY, float]:
         """The centre of the best box for ``req`` and its score: its clearance less the penalties for
@@ -284,14 +368,21 @@ class Placer:
         t = self._ready[req, owner]
         placed = self._placed.measure(t.boxes) if len(self._placed) else None
         outside = t.outside
-        if placed is not None and placed.touching.any():       # on a text placed before: as bad as outside
-            outside = np.where(t.framed & ~placed.touching, 0.0, 50.0) + np.where(t.rivalled, AMBIGUOUS, 0.0)
+        blocked = None if placed is None else placed.touching
+        if len(t.led) and len(self._placed):                   # a leader across a text placed before
+            across = self._placed.across(nudged(t.leader))
+            if across.any():
+                blocked = blocked.copy()
+                blocked[t.led[across]] = True
+        if blocked is not None and blocked.any():               # on a text placed before: as bad as outside
+            outside = (np.where(t.framed & ~blocked, 0.0, 50.0) + np.where(t.rivalled, AMBIGUOUS, 0.0)
+                       + t.leading)
         crossed = set() if placed is None else set(placed.pending[0].tolist())     # boxes covering a placed one
         best, best_score = None, -math.inf
         i = 0
         while i < t.n:
             hi = t.hi if placed is None else np.minimum(t.hi, placed.hi)
-            upper = ((hi - t.cost) - outside).tolist()
+            upper = (((hi - t.cross) - t.cost) - outside).tolist()
             static = ((ENOUGH - t.cost) - outside).tolist()
             for i in range(i, t.n):
                 u = upper[i]
@@ -309,7 +400,7 @@ class Placer:
                     c = min(float(t.known[i]), self._fixed.exact(box, _NONE if drawn is None else drawn),
                             math.inf if placed is None else float(placed.known[i]),
                             math.inf if placed is None else self._placed.exact(box, placed.pending_of(i)))
-                    score = (c - float(t.cost[i])) - float(outside[i])
+                    score = ((c - float(t.cross[i])) - float(t.cost[i])) - float(outside[i])
                 if score > best_score + 1e-12:
                     best, best_score = i, score
             else:
