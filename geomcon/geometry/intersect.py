@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import math
 
-from ..errors import Coincident
+from ..errors import Coincident, Degenerate
 from .. import tolerance as _tolerance
 from ..tolerance import tol
 from .primitives import Circle, Line, Point
@@ -68,22 +68,30 @@ def line_line(l1: Line, l2: Line) -> tuple[Point, ...]:
 
 def line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
     """Intersect a line and a circle: 0, 1 (tangent) or 2 points, ordered along the line's direction."""
-    # plain float arithmetic, in the order of the vector formulas in the comments (same bits)
-    ux, uy = line.direction.x, line.direction.y
-    px, py = line.point.x, line.point.y
-    wx, wy = px - circle.center.x, py - circle.center.y     # w: local frame, the circle's centre at the origin
+    d, p = line.direction, line.point
+    return _points(line_circle_xy(p.x, p.y, d.x, d.y, circle.center.x, circle.center.y, circle.r))
+
+
+def line_circle_xy(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float) -> tuple:
+    """The float core of :func:`line_circle` (shared with :mod:`.kernels`): the candidates as flat floats
+    ``(x1, y1[, x2, y2])``, ordered along the unit direction (ux, uy)."""
+    wx, wy = px - cx, py - cy               # w: local frame, the circle's centre at the origin
     t0 = -(wx * ux + wy * uy)                # −w·u: parameter of the foot of the perpendicular from the centre
     p = ux * wy - uy * wx                    # u × w: signed distance of the centre's foot
-    r = circle.r
     ap = abs(p)
     gap = ap - r
     if abs(gap) <= _tolerance.REL_TOL * max(r, ap):     # tol(r, ap) in place: r > 0, ap ≥ 0
-        return (Point(px + ux * t0, py + uy * t0),)
+        return _finite(px + ux * t0, py + uy * t0)
     if gap > 0:
         return ()
     h = math.sqrt((r - ap) * (r + ap))
     t1, t2 = t0 - h, t0 + h
-    return (Point(px + ux * t1, py + uy * t1), Point(px + ux * t2, py + uy * t2))
+    x1, y1, x2, y2 = px + ux * t1, py + uy * t1, px + ux * t2, py + uy * t2
+    if x1 - x1 != 0.0 or y1 - y1 != 0.0:
+        raise _bad(x1, y1)
+    if x2 - x2 != 0.0 or y2 - y2 != 0.0:
+        raise _bad(x2, y2)
+    return x1, y1, x2, y2
 
 
 def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
@@ -94,9 +102,14 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     Coincident
         When the circles coincide (same centre and radius within tolerance).
     """
-    r1, r2 = c1.r, c2.r
-    ox, oy = c1.center.x, c1.center.y
-    vx, vy = c2.center.x - ox, c2.center.y - oy   # local frame: the first centre at the origin
+    o, q = c1.center, c2.center
+    return _points(circle_circle_xy(o.x, o.y, c1.r, q.x, q.y, c2.r))
+
+
+def circle_circle_xy(ox: float, oy: float, r1: float, qx: float, qy: float, r2: float) -> tuple:
+    """The float core of :func:`circle_circle` (shared with :mod:`.kernels`): the candidates as flat floats
+    ``(x1, y1[, x2, y2])``; coincident circles raise :class:`~geomcon.errors.Coincident`."""
+    vx, vy = qx - ox, qy - oy                # local frame: the first centre at the origin
     d = math.hypot(vx, vy)
     scale = max(d, r1, r2)
     eps = _tolerance.REL_TOL * scale         # tol(scale) in place: d ≥ 0 and the radii > 0
@@ -109,7 +122,7 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     ux, uy = vx / d, vy / d
     if abs(outer) <= eps or abs(inner) <= eps:
         a = r1 if abs(outer) <= eps else (r1 if r1 > r2 else -r1)
-        return (Point(ox + ux * a, oy + uy * a),)
+        return _finite(ox + ux * a, oy + uy * a)
     if outer > 0 or inner > 0:
         return ()
     # a = (d² + r1² − r2²)/(2d): the cancellation is between r2² and the larger of d², r1², so that
@@ -123,4 +136,26 @@ def circle_circle(c1: Circle, c2: Circle) -> tuple[Point, ...]:
     h = math.sqrt(h2) / (2.0 * d)
     fx, fy = ux * a, uy * a                  # the foot, still local: translated once, at the very end
     nx, ny = -uy * h, ux * h                 # u turned by +90°, times h
-    return (Point(ox + (fx + nx), oy + (fy + ny)), Point(ox + (fx - nx), oy + (fy - ny)))
+    x1, y1, x2, y2 = ox + (fx + nx), oy + (fy + ny), ox + (fx - nx), oy + (fy - ny)
+    if x1 - x1 != 0.0 or y1 - y1 != 0.0:
+        raise _bad(x1, y1)
+    if x2 - x2 != 0.0 or y2 - y2 != 0.0:
+        raise _bad(x2, y2)
+    return x1, y1, x2, y2
+
+
+def _points(c: tuple) -> tuple[Point, ...]:
+    """The Points of flat candidates ``(x1, y1, x2, y2, …)``."""
+    return tuple(Point(c[i], c[i + 1]) for i in range(0, len(c), 2))
+
+
+def _finite(x: float, y: float) -> tuple[float, float]:
+    """``(x, y)`` as floats, refused when not finite (as :class:`~.primitives.Point` refuses them)."""
+    x, y = float(x), float(y)
+    if x - x != 0.0 or y - y != 0.0:
+        raise _bad(x, y)
+    return x, y
+
+
+def _bad(x: float, y: float) -> Degenerate:
+    return Degenerate(f"point with a non-finite coordinate ({x}, {y})")

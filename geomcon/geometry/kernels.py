@@ -40,7 +40,7 @@ from .branch import (Above, Below, FarthestFrom, LeftOf, Leftmost, NearestTo, Ot
                      ToLeftOf, ToRightOf)
 from .construct import (circle, circle_through3, foot, line_through, midpoint, parallel, perpendicular,
                         perpendicular_bisector, point_along, point_on_ray, ray_at_angle, thales_circle)
-from .intersect import circle_circle, line_circle
+from .intersect import circle_circle, circle_circle_xy as circle_circle_k, line_circle, line_circle_xy as line_circle_k
 from .measure import distance
 from .primitives import _SAFE_NORM, Circle, Line, Point, Ray, unit_xy
 
@@ -293,65 +293,6 @@ def thales_circle_k(ax: float, ay: float, bx: float, by: float) -> tuple[float, 
     """``thales_circle(a, b)``."""
     mx, my = midpoint_k(ax, ay, bx, by)
     return circle_k(mx, my, math.hypot(bx - ax, by - ay) / 2.0)
-
-
-def line_circle_k(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float) -> tuple:
-    """``line_circle(line, circle)``: the flat candidates."""
-    wx, wy = px - cx, py - cy               # w: local frame, the circle's centre at the origin
-    t0 = -(wx * ux + wy * uy)                # −w·u: parameter of the foot of the perpendicular from the centre
-    p = ux * wy - uy * wx                    # u × w: signed distance of the centre's foot
-    ap = abs(p)
-    gap = ap - r
-    if abs(gap) <= _tolerance.REL_TOL * max(r, ap):     # tol(r, ap) in place: r > 0, ap ≥ 0
-        return point_k(px + ux * t0, py + uy * t0)
-    if gap > 0:
-        return ()
-    h = math.sqrt((r - ap) * (r + ap))
-    t1, t2 = t0 - h, t0 + h
-    x1, y1, x2, y2 = px + ux * t1, py + uy * t1, px + ux * t2, py + uy * t2
-    if x1 - x1 != 0.0 or y1 - y1 != 0.0:
-        raise _bad(x1, y1)
-    if x2 - x2 != 0.0 or y2 - y2 != 0.0:
-        raise _bad(x2, y2)
-    return x1, y1, x2, y2
-
-
-def circle_circle_k(ox: float, oy: float, r1: float, qx: float, qy: float, r2: float) -> tuple:
-    """``circle_circle(c1, c2)``: the flat candidates; coincident circles raise
-    :class:`~geomcon.errors.Coincident`."""
-    vx, vy = qx - ox, qy - oy                # local frame: the first centre at the origin
-    d = _hypot(vx, vy)
-    scale = max(d, r1, r2)
-    eps = _tolerance.REL_TOL * scale         # tol(scale) in place: d ≥ 0 and the radii > 0
-    if d <= eps:
-        if abs(r1 - r2) <= eps:
-            raise Coincident(f"the two circles coincide (radius {r1:.6g})")
-        return ()
-    outer = d - (r1 + r2)                    # > 0: apart
-    inner = abs(r1 - r2) - d                 # > 0: one inside the other
-    ux, uy = vx / d, vy / d
-    if abs(outer) <= eps or abs(inner) <= eps:
-        a = r1 if abs(outer) <= eps else (r1 if r1 > r2 else -r1)
-        return point_k(ox + ux * a, oy + uy * a)
-    if outer > 0 or inner > 0:
-        return ()
-    # a = (d² + r1² − r2²)/(2d): the cancellation is between r2² and the larger of d², r1², so that
-    # difference is formed as a product of a near-exact difference (a tiny circle on a large one keeps its
-    # relative accuracy: a ≈ r1²/2d, not ε·d)
-    big, small = (d, r1) if d >= r1 else (r1, d)
-    a = ((big - r2) * (big + r2) + small * small) / (2.0 * d)
-    # _sum_less(r1, r2, d) · _sum_less(d, r2, r1) · _sum_less(d, r1, r2) · (d + r1 + r2), the three in place
-    h2 = (((r1 - d) + r2 if r1 >= r2 else (r2 - d) + r1) * ((d - r1) + r2 if d >= r2 else (r2 - r1) + d)
-          * ((d - r2) + r1 if d >= r1 else (r1 - r2) + d) * (d + r1 + r2))
-    h = math.sqrt(h2) / (2.0 * d)
-    fx, fy = ux * a, uy * a                  # the foot, still local: translated once, at the very end
-    nx, ny = -uy * h, ux * h                 # u turned by +90°, times h
-    x1, y1, x2, y2 = ox + (fx + nx), oy + (fy + ny), ox + (fx - nx), oy + (fy - ny)
-    if x1 - x1 != 0.0 or y1 - y1 != 0.0:
-        raise _bad(x1, y1)
-    if x2 - x2 != 0.0 or y2 - y2 != 0.0:
-        raise _bad(x2, y2)
-    return x1, y1, x2, y2
 
 
 # ------------------------------------------------------------------------------------------- branch rules
