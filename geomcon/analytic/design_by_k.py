@@ -22,7 +22,7 @@ import math
 
 from ..errors import NotAMechanism
 from ..tolerance import REL_TOL
-from .linkages import _tri_angle, crank_rocker_gamma_from_positions, theta_from_k
+from .linkages import _tri_angle, gamma_from_positions_xy, theta_from_k
 
 
 def _sides_from_e(L: float, th: float, e: float) -> tuple[float, float]:
@@ -265,24 +265,47 @@ def rocker_design(K: float, CD: float, c1: tuple[float, float], c2: tuple[float,
     line (the Grashof boundary). ``c1_folded_only`` keeps only the designs in which c1 is the folded extreme
     (with ψ given the two extremes are symmetric, and the others are their mirror images).
     """
-    sols = []
+    theta = theta_from_k(K)
+    return [{"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": folded, "theta": theta, "K": K,
+             "psi": psi, "gamma_min": gamma}
+            for a, b, ad, ax, ay, folded, psi, gamma in rocker_design_rows(K, CD, c1, c2, c1_folded_only, closing)]
+
+
+def rocker_design_rows(K: float, CD: float, c1: tuple[float, float], c2: tuple[float, float], c1_folded_only: bool,
+                       closing: dict) -> list[tuple[float, float, float, float, float, float, float, float]]:
+    """:func:`rocker_design`'s solutions as plain floats, ``(AB, BC, AD, Ax, Ay, c1_folded, psi, gamma_min)``
+    each: what the twin of ``crank_rocker.design_by_K`` reads, with no dictionary per candidate.
+
+    >>> c1, c2 = (-79.93483318692972, 278.7658918221125), (79.93483318692975, 278.7658918221125)   # 001-10
+    >>> [[round(x, 3) for x in row] for row in rocker_design_rows(1.25, 290.0, c1, c2, True, {"BC": 260.0})]
+    [[66.981, 260.0, 467.64, -217.866, 413.789, 1.0, 32.0, 27.204], [66.981, 260.0, 261.013, -217.866, 143.743, 1.0, 32.0, 40.86]]
+    """
+    c1x, c1y = c1
+    c2x, c2y = c2
+    psi = None
+    out = []
     for ax, ay in rocker_design_candidates(K, CD, c1, c2, **closing):
-        d1, d2 = math.dist((ax, ay), c1), math.dist((ax, ay), c2)
+        d1, d2 = _hypot(ax - c1x, ay - c1y), _hypot(ax - c2x, ay - c2y)      # math.dist((ax, ay), c1): the same
         if c1_folded_only and not d1 < d2:
             continue
         a, b = abs(d2 - d1) / 2, (d1 + d2) / 2
-        ad = math.hypot(ax, ay)
+        ad = _hypot(ax, ay)
         if ad == 0:
             continue
-        h1 = (ax * c1[1] - ay * c1[0]) / ad  # signed distances from the line A→D (D at the origin)
-        h2 = (ax * c2[1] - ay * c2[0]) / ad
+        h1 = (ax * c1y - ay * c1x) / ad  # signed distances from the line A→D (D at the origin)
+        h2 = (ax * c2y - ay * c2x) / ad
         if not rocker_design_valid(a, b, CD, ad, h1, h2):
             continue
-        psi = angle_deg_at((0.0, 0.0), c1, c2)
-        sols.append({"AB": a, "BC": b, "CD": CD, "AD": ad, "Ax": ax, "Ay": ay, "c1_folded": float(d1 < d2),
-                     "theta": theta_from_k(K), "K": K, "psi": psi,
-                     "gamma_min": crank_rocker_gamma_from_positions((ax, ay), (0.0, 0.0), *((c1, c2) if d1 < d2 else (c2, c1)))})
-    return sols
+        if psi is None:                  # ∠c1Dc2: one value for every candidate
+            psi = angle_deg_at((0.0, 0.0), c1, c2)
+        if d1 < d2:
+            out.append((a, b, ad, ax, ay, 1.0, psi, gamma_from_positions_xy(ax, ay, 0.0, 0.0, c1x, c1y, c2x, c2y)))
+        else:
+            out.append((a, b, ad, ax, ay, 0.0, psi, gamma_from_positions_xy(ax, ay, 0.0, 0.0, c2x, c2y, c1x, c1y)))
+    return out
+
+
+_hypot = math.hypot
 
 
 # ---------------------------------------------------------------------------------------------- guide bars

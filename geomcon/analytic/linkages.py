@@ -78,31 +78,15 @@ def crank_rocker_extremes(AB: float, BC: float, CD: float, AD: float) -> dict[st
     }
 
 
-def _excess(v: tuple[float, float], p: tuple[float, float], q: tuple[float, float]) -> float:
-    """|vp| + |vq| − |pq| of the triangle v p q, as 4·|vp|·|vq|·sin²(δ/2)/perimeter with δ = 180° − ∠pvq
-    taken by atan2 from the coordinates: no cancellation when v lies nearly on the segment pq."""
-    return _excess_of(v, p, q, math.dist(v, p), math.dist(v, q), math.dist(p, q))
-
-
-def _excess_of(v: tuple[float, float], p: tuple[float, float], q: tuple[float, float], x: float, y: float,
-               z: float) -> float:
-    """:func:`_excess` with its sides x = |vp|, y = |vq|, z = |pq| known (a distance is the same float either
-    way round: a − b is −(b − a) exactly)."""
-    if x + y + z == 0.0:
-        return 0.0
-    px, py, qx, qy = p[0] - v[0], p[1] - v[1], q[0] - v[0], q[1] - v[1]
-    delta = math.atan2(abs(px * qy - py * qx), -(px * qx + py * qy))
-    return 4.0 * x * y * math.sin(delta / 2.0) ** 2 / (x + y + z)
-
-
 def crank_rocker_gamma_from_positions(A, D, Cf, Ce) -> float:
     """γmin (deg) of the crank-rocker with pivots A, D, folded extreme position Cf and extended Ce (points).
 
     With the crank along the frame (BD = AD ∓ AB) the triangle B C D has sides BC, CD, BD, and
     tan²(γ/2) = E_BC·E_CD / (P·E_BD) (E_x: the other two sides minus x, P the perimeter). Each E is an
     excess of the triangle A D Cf or A D Ce (e.g. BC + (AD − AB) − CD = ACf + AD − DCf), taken from the
-    positions by :func:`_excess`: near the Grashof boundary an extreme position lies within rounding of the
+    positions by :func:`_excess_xy`: near the Grashof boundary an extreme position lies within rounding of the
     frame line and the excess, O(h²), is lost in the lengths but not in the points (γ stays ∝ h).
+    Computed on plain floats by :func:`gamma_from_positions_xy`.
 
     >>> import math
     >>> A, D = (0.0, 0.0), (90.0, 0.0)
@@ -112,19 +96,54 @@ def crank_rocker_gamma_from_positions(A, D, Cf, Ce) -> float:
     >>> round(crank_rocker_gamma_from_positions(A, D, Cf, Ce), 9) == round(ex["gamma_min"], 9)
     True
     """
-    ace, acf = math.dist(A, Ce), math.dist(A, Cf)           # the five distances once each (the six excesses
-    c, d, dce = math.dist(D, Cf), math.dist(A, D), math.dist(D, Ce)      # share them)
+    return gamma_from_positions_xy(A[0], A[1], D[0], D[1], Cf[0], Cf[1], Ce[0], Ce[1])
+
+
+def _excess_xy(vx: float, vy: float, px: float, py: float, qx: float, qy: float, x: float, y: float,
+               z: float) -> float:
+    """|vp| + |vq| − |pq| of the triangle v p q whose sides x = |vp|, y = |vq|, z = |pq| are known, as
+    4·x·y·sin²(δ/2)/(x + y + z) with δ = 180° − ∠pvq taken by atan2 from the coordinates: no cancellation when
+    v lies nearly on the segment pq.
+
+    >>> round(_excess_xy(0.0, 0.0, 3.0, 0.0, 0.0, 4.0, 3.0, 4.0, 5.0), 12)    # 3 + 4 − 5
+    2.0
+    """
+    s = x + y + z
+    if s == 0.0:
+        return 0.0
+    px, py, qx, qy = px - vx, py - vy, qx - vx, qy - vy
+    return 4.0 * x * y * _sin(_atan2(abs(px * qy - py * qx), -(px * qx + py * qy)) / 2.0) ** 2 / s
+
+
+def gamma_from_positions_xy(ax: float, ay: float, dx: float, dy: float, fx: float, fy: float, ex: float,
+                            ey: float) -> float:
+    """:func:`crank_rocker_gamma_from_positions` of A = (ax, ay), D, Cf = (fx, fy) and Ce = (ex, ey) on plain
+    floats: the five distances once each (``math.dist(p, q)`` is ``hypot`` of the differences, the same
+    float; a − b is −(b − a) exactly) and the six excesses of :func:`_excess_xy`.
+
+    >>> gamma_from_positions_xy(0.0, 0.0, 90.0, 0.0, 20.0, 0.0, 120.0, 0.0) == 0.0     # a dead point: γ = 0
+    True
+    """
+    ace, acf = _hypot(ax - ex, ay - ey), _hypot(ax - fx, ay - fy)
+    c, d, dce = _hypot(dx - fx, dy - fy), _hypot(ax - dx, ay - dy), _hypot(dx - ex, dy - ey)
     a = abs(ace - acf) / 2.0
     b = (ace + acf) / 2.0
-    out = []
-    for e_b, e_c, e_bd, per in (
-            (_excess_of(D, A, Ce, d, dce, ace), _excess_of(A, D, Cf, d, acf, c), _excess_of(Ce, A, D, ace, dce, d),
-             b + c + d - a),                                                             # B towards D
-            (_excess_of(D, A, Cf, d, c, acf), _excess_of(A, D, Ce, d, ace, dce), _excess_of(Cf, A, D, acf, c, d),
-             b + c + d + a)):                                                            # B away from D
-        g = math.degrees(2.0 * math.atan2(math.sqrt(max(0.0, e_b * e_c)), math.sqrt(max(0.0, per * e_bd))))
-        out.append(min(g, 180.0 - g))
-    return min(out)
+    # B towards D: E_BC at D of A, Ce; E_CD at A of D, Cf; E_BD at Ce of A, D; perimeter b + c + d − a
+    g = _excess_xy(dx, dy, ax, ay, ex, ey, d, dce, ace) * _excess_xy(ax, ay, dx, dy, fx, fy, d, acf, c)
+    p = (b + c + d - a) * _excess_xy(ex, ey, ax, ay, dx, dy, ace, dce, d)
+    g1 = _degrees(2.0 * _atan2(_sqrt(g if g > 0.0 else 0.0), _sqrt(p if p > 0.0 else 0.0)))   # max(0.0, …)
+    # B away from D: at D of A, Cf; at A of D, Ce; at Cf of A, D; perimeter b + c + d + a
+    g = _excess_xy(dx, dy, ax, ay, fx, fy, d, c, acf) * _excess_xy(ax, ay, dx, dy, ex, ey, d, ace, dce)
+    p = (b + c + d + a) * _excess_xy(fx, fy, ax, ay, dx, dy, acf, c, d)
+    g2 = _degrees(2.0 * _atan2(_sqrt(g if g > 0.0 else 0.0), _sqrt(p if p > 0.0 else 0.0)))
+    t = 180.0 - g1
+    t1 = t if t < g1 else g1                                   # min(g, 180° − g), each
+    t = 180.0 - g2
+    t2 = t if t < g2 else g2
+    return t2 if t2 < t1 else t1
+
+
+_hypot, _atan2, _sin, _sqrt, _degrees = math.hypot, math.atan2, math.sin, math.sqrt, math.degrees
 
 
 def crank_slider_extremes(AB: float, BC: float, e: float) -> dict[str, float]:

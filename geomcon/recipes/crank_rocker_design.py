@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping
 
-from ..analytic.design_by_k import rocker_design, rocker_design_valid
+from ..analytic.design_by_k import rocker_design_rows, rocker_design_valid
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
 from ..geometry import (FarthestFrom, LeftOf, Leftmost, Line, NearestTo, OtherThan, Point, RightOf, Rightmost, Segment,
@@ -530,25 +530,40 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         from . import crank_rocker_crank_frame
         return sorted(crank_rocker_crank_frame.analytic(g), key=preference)
     K, CD = g["K"], g["CD"]
-    if family == "positions":
-        c1, c2 = (p.tuple() for p in extreme_positions(g))
-        # ψ given (and the closing condition symmetric): the mirror images are the same designs
-        sols = rocker_design(K, CD, c1, c2, c1_folded_only=g.get("psi") is not None and closing != "AC1",
-                             **{closing: g[closing]})
-        def side(x: float, y: float) -> float:             # which side of the line c1→c2
-            return (c2[0] - c1[0]) * (y - c1[1]) - (c2[1] - c1[1]) * (x - c1[0])
-
-        for s in sols:                                      # K = 1: A on the line C1C2 counts as near
-            s["C1_folded"] = s["c1_folded"]
-            s["A_near"] = float(K == 1.0 or side(s["Ax"], s["Ay"]) * side(0.0, 0.0) > 0)
+    if family != "positions":
+        keep = ("AB", "BC", "AD", "CD", "psi", "gamma_min", "theta", "K", "C1_folded", "A_near")
+        out = sorted(({k: float(s[k]) for k in keep} for s in _frame_family_twin(g)), key=preference)
     else:
-        sols = _frame_family_twin(g)
-    keep = ("AB", "BC", "AD", "CD", "psi", "gamma_min", "theta", "K", "C1_folded", "A_near")
-    out = sorted(({k: float(s[k]) for k in keep} for s in sols), key=preference)
+        c1, c2 = _extreme_xy(g)
+        # ψ given (and the closing condition symmetric): the mirror images are the same designs
+        rows = rocker_design_rows(K, CD, c1, c2, g.get("psi") is not None and closing != "AC1", {closing: g[closing]})
+        (c1x, c1y), (c2x, c2y) = c1, c2
+        ux, uy = c2x - c1x, c2y - c1y
+        d_side = ux * (0.0 - c1y) - uy * (0.0 - c1x)       # which side of the line c1→c2 D (the origin) lies
+        th, cd, k = float(theta_from_k(K)), float(CD), float(K)
+        out = sorted(({"AB": a, "BC": b, "AD": ad, "CD": cd, "psi": psi, "gamma_min": gamma, "theta": th, "K": k,
+                       "C1_folded": folded,            # K = 1: A on the line C1C2 counts as near
+                       "A_near": float(K == 1.0 or (ux * (ay - c1y) - uy * (ax - c1x)) * d_side > 0)}
+                      for a, b, ad, ax, ay, folded, psi, gamma in rows), key=preference)
     if g.get("H_out") is not None:
         for s in out:
             s["DE"] = g["H_out"] / (2.0 * math.sin(math.radians(s["psi"]) / 2.0))
     return out
+
+
+def _extreme_xy(g: Mapping[str, Any]) -> tuple[tuple[float, float], tuple[float, float]]:
+    """:func:`extreme_positions` as two tuples of floats (the same arithmetic, no Point; a coordinate that is
+    not finite is refused by the Points, as there)."""
+    CD = g["CD"]
+    if g.get("psi") is not None:
+        a1, a2 = 90.0 + g["psi"] / 2, 90.0 - g["psi"] / 2
+    else:
+        a1, a2 = g["phi1"], g["phi2"]
+    r1, r2 = math.radians(a1), math.radians(a2)
+    x1, y1, x2, y2 = CD * math.cos(r1), CD * math.sin(r1), CD * math.cos(r2), CD * math.sin(r2)
+    if x1 - x1 != 0.0 or y1 - y1 != 0.0 or x2 - x2 != 0.0 or y2 - y2 != 0.0:
+        return tuple(p.tuple() for p in extreme_positions(g))      # type: ignore[return-value]
+    return (float(x1), float(y1)), (float(x2), float(y2))
 
 
 def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
