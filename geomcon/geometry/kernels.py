@@ -297,10 +297,20 @@ def thales_circle_k(ax: float, ay: float, bx: float, by: float) -> tuple[float, 
 
 # ------------------------------------------------------------------------------------------- branch rules
 def _larger_k(c: tuple, s0: float, s1: float, what: str) -> tuple[float, float]:
-    scale = max(_hypot(c[0] - c[2], c[1] - c[3]), 1e-300)
-    if abs(s0 - s1) <= _tolerance.REL_TOL * max(scale, abs(s0), abs(s1)):
+    # max(hypot(…), 1e-300) and max(scale, |s0|, |s1|) written as comparisons, as max() makes them (the first
+    # of equal values kept, a NaN never taken after the first): the same floats without its call
+    x0, y0, x1, y1 = c
+    h = _hypot(x0 - x1, y0 - y1)
+    m = 1e-300 if 1e-300 > h else h
+    a = abs(s0)
+    if a > m:
+        m = a
+    a = abs(s1)
+    if a > m:
+        m = a
+    if abs(s0 - s1) <= _tolerance.REL_TOL * m:
         raise AmbiguousBranch(f"{what}: both intersections qualify equally (scores {s0:.6g}, {s1:.6g})")
-    return (c[0], c[1]) if s0 > s1 else (c[2], c[3])
+    return (x0, y0) if s0 > s1 else (x1, y1)
 
 
 def _one(c: tuple, what: str) -> tuple[float, float]:
@@ -378,11 +388,11 @@ def _upward_normal_k(ax: float, ay: float, bx: float, by: float) -> tuple[float,
     dx, dy = bx - ax, by - ay
     if dx == 0.0 and dy == 0.0:
         raise AmbiguousBranch(f"above/below a line: the dividing line through ({ax:.6g}, {ay:.6g}) has zero length")
-    dx, dy = unit_xy(dx, dy)
-    nx, ny = -dy, dx
-    if abs(ny) <= _tolerance.REL_TOL:
+    n = _hypot(dx, dy)                            # unit_xy in place where the length is in range: the same bits
+    dx, dy = (dx / n, dy / n) if _SAFE_NORM <= n < _inf else unit_xy(dx, dy)
+    if abs(dx) <= _tolerance.REL_TOL:             # the normal (−dy, dx) is horizontal
         raise AmbiguousBranch("above/below a vertical line is undefined: use left/right of a directed line")
-    return (nx, ny) if ny > 0 else (-nx, -ny)
+    return (-dy, dx) if dx > 0 else (dy, -dx)
 
 
 def above_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float, float]:
@@ -390,7 +400,8 @@ def above_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float
     nx, ny = _upward_normal_k(ax, ay, bx, by)
     if len(c) != 4:
         return _one(c, "above a line")
-    return _larger_k(c, nx * (c[0] - ax) + ny * (c[1] - ay), nx * (c[2] - ax) + ny * (c[3] - ay), "above a line")
+    x0, y0, x1, y1 = c
+    return _larger_k(c, nx * (x0 - ax) + ny * (y0 - ay), nx * (x1 - ax) + ny * (y1 - ay), "above a line")
 
 
 def below_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float, float]:
@@ -398,8 +409,8 @@ def below_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float
     nx, ny = _upward_normal_k(ax, ay, bx, by)
     if len(c) != 4:
         return _one(c, "below a line")
-    return _larger_k(c, -(nx * (c[0] - ax) + ny * (c[1] - ay)), -(nx * (c[2] - ax) + ny * (c[3] - ay)),
-                     "below a line")
+    x0, y0, x1, y1 = c
+    return _larger_k(c, -(nx * (x0 - ax) + ny * (y0 - ay)), -(nx * (x1 - ax) + ny * (y1 - ay)), "below a line")
 
 
 def leftmost_k(c: tuple) -> tuple[float, float]:

@@ -18,6 +18,7 @@ from typing import Any, Mapping
 
 from .. import tolerance as _tolerance                  # REL_TOL read at run time, as the geometry reads it
 from ..analytic.design_by_k import rocker_design_valid
+from ..errors import Degenerate
 from ..geometry import Line, Point, angle_at, circle, point_along, segment
 from ..geometry.kernels import point_k, register
 from ..geometry.measure import _signed_angle_xy
@@ -429,14 +430,25 @@ def length_k(ax: float, ay: float, bx: float, by: float) -> float:
 
 
 def angle_deg_k(ox: float, oy: float, ax: float, ay: float, bx: float, by: float) -> float:
-    """:func:`angle_deg` on floats."""
-    return math.degrees(abs(_signed_angle_xy(ax - ox, ay - oy, bx - ox, by - oy)))
+    """:func:`angle_deg` on floats: :func:`~geomcon.geometry.measure._signed_angle_xy` in place (its −π made
+    π does not change the absolute value)."""
+    ux, uy, vx, vy = ax - ox, ay - oy, bx - ox, by - oy
+    if _hypot(ux, uy) == 0.0 or _hypot(vx, vy) == 0.0:
+        raise Degenerate("angle of a zero-length vector")
+    return _degrees(abs(_atan2(ux * vy - uy * vx, ux * vx + uy * vy)))
 
 
 def transmission_deg_k(bx: float, by: float, cx: float, cy: float, dx: float, dy: float) -> float:
-    """:func:`transmission_deg` on floats."""
-    g = math.degrees(abs(_signed_angle_xy(bx - cx, by - cy, dx - cx, dy - cy)))
-    return min(g, 180.0 - g)
+    """:func:`transmission_deg` on floats (``min(g, 180° − g)`` as a comparison: the same float)."""
+    ux, uy, vx, vy = bx - cx, by - cy, dx - cx, dy - cy
+    if _hypot(ux, uy) == 0.0 or _hypot(vx, vy) == 0.0:
+        raise Degenerate("angle of a zero-length vector")
+    g = _degrees(abs(_atan2(ux * vy - uy * vx, ux * vx + uy * vy)))
+    t = 180.0 - g
+    return t if t < g else g
+
+
+_hypot, _atan2, _degrees = math.hypot, math.atan2, math.degrees
 
 
 def along_line_k(px: float, py: float, dx: float, dy: float, t: float, sign: float = 1.0) -> tuple[float, float]:
