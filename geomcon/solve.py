@@ -193,6 +193,42 @@ def _pairs(name: str, a: Any, b: Any) -> list[tuple[str, Any, Any]]:
     return [(name, a, b)]
 
 
+def _cost(b: dict, e: dict, scales: dict[str, float], sol: Solution, bound: float = math.inf) -> float:
+    """The worst relative difference of the answers ``b`` and ``e``, each at its unit's scale (``scales`` by
+    answer name; a named step beyond the declared answers at ``sol.unit_scale("")``); any value above ``bound``
+    once it exceeds it (:attr:`Solution.matching`). ``max`` is written as comparisons, as it makes them (the
+    first of equal values kept, a NaN never taken after the first): the same floats without its calls.
+
+    >>> _cost({"a": 1.0, "b": 2.0}, {"a": 1.5, "b": 2.0}, {"a": 1.0, "b": 1.0}, None)
+    0.3333333333333333
+    """
+    worst = 0.0
+    for k, x in b.items():
+        y = e.get(k)
+        if y is None:
+            continue
+        scale = scales.get(k)
+        if scale is None:                                  # a named step beyond the declared answers
+            scale = sol.unit_scale("")
+        if type(x) is float and type(y) is float:          # the common case, at once
+            m = abs(x)
+            t = abs(y)
+            if t > m:
+                m = t
+            if scale > m:
+                m = scale
+            t = abs(x - y) / m
+            if t > worst:
+                worst = t
+        else:
+            for _, p, q in _pairs(k, x, y):
+                p, q = float(p), float(q)
+                worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
+        if worst > bound:
+            return worst
+    return worst
+
+
 class Solution:
     """The solved problem; every property computes only what it needs, once."""
 
@@ -305,39 +341,18 @@ class Solution:
         built, exact = self.solution_values, self.analytic
         if len(built) <= 1 or len(exact) <= 1:
             return [(i, i) for i in range(min(len(built), len(exact)))]
-        units = _answer_units(self.recipe)
         by_unit = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
-        scales = {k: by_unit[u] for k, u in units.items()}
-
-        def cost(b: dict, e: dict, bound: float = math.inf) -> float:
-            """The worst relative difference of ``b`` and ``e``; any value above ``bound`` once it exceeds it."""
-            worst = 0.0
-            for k, x in b.items():
-                y = e.get(k)
-                if y is None:
-                    continue
-                scale = scales.get(k)
-                if scale is None:                                  # a named step beyond the declared answers
-                    scale = self.unit_scale("")
-                if type(x) is float and type(y) is float:          # the common case, at once
-                    worst = max(worst, abs(x - y) / max(abs(x), abs(y), scale))
-                else:
-                    for _, p, q in _pairs(k, x, y):
-                        p, q = float(p), float(q)
-                        worst = max(worst, abs(p - q) / max(abs(p), abs(q), scale))
-                if worst > bound:
-                    return worst
-            return worst
-
+        scales = {k: by_unit[u] for k, u in _answer_units(self.recipe).items()}
         n = len(built)
         if n == len(exact):
             # the usual case: both lists in the recipe's order, each solution nearest its twin. When every other
             # pairing is worse than the worst of these, the greedy choice below takes exactly these n pairs
             # first, so the others need only be shown worse (a cost cut off once it passes that bound)
-            diagonal = max(cost(built[i], exact[i]) for i in range(n))
-            if all(cost(built[i], exact[j], diagonal) > diagonal for i in range(n) for j in range(n) if i != j):
+            diagonal = max(_cost(built[i], exact[i], scales, self) for i in range(n))
+            if all(_cost(built[i], exact[j], scales, self, diagonal) > diagonal
+                   for i in range(n) for j in range(n) if i != j):
                 return [(i, i) for i in range(n)]
-        ranked = sorted((cost(b, e), i, j) for i, b in enumerate(built) for j, e in enumerate(exact))
+        ranked = sorted((_cost(b, e, scales, self), i, j) for i, b in enumerate(built) for j, e in enumerate(exact))
         used_i: set[int] = set()
         used_j: set[int] = set()
         out = []
@@ -409,10 +424,18 @@ class Solution:
                 if b is None or e is None:
                     continue
                 if type(b) is float and type(e) is float and not b == e == inf:
-                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it);
-                    # err < inf and err <= tol is isfinite(err) and err <= tol (a NaN fails both comparisons)
+                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it;
+                    # max(|b|, |e|, scale) as the comparisons max makes); err < inf and err <= tol is
+                    # isfinite(err) and err <= tol (a NaN fails both comparisons)
                     err = abs(b - e)
-                    tol = CHECK_REL * max(abs(b), abs(e), scales[unit])
+                    m = abs(b)
+                    t = abs(e)
+                    if t > m:
+                        m = t
+                    t = scales[unit]
+                    if t > m:
+                        m = t
+                    tol = CHECK_REL * m
                     ok = err < inf and err <= tol
                     row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err, "tol": tol,
                            "ok": ok, "unit": unit}
@@ -444,8 +467,16 @@ class Solution:
                     if type(b) is float and type(e) is float:
                         # check_row's row, its arithmetic in place, as for the answers above
                         err = abs(b - e)
-                        sc = scales.get(unit)
-                        tol = CHECK_REL * max(abs(b), abs(e), self.unit_scale(unit) if sc is None else sc)
+                        m = abs(b)
+                        t = abs(e)
+                        if t > m:
+                            m = t
+                        t = scales.get(unit)
+                        if t is None:
+                            t = self.unit_scale(unit)
+                        if t > m:
+                            m = t
+                        tol = CHECK_REL * m
                         row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err,
                                "tol": tol, "ok": err < inf and err <= tol, "unit": unit}
                     else:
