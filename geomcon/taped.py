@@ -114,6 +114,35 @@ def taped_values(recipe: Recipe, given: Mapping[str, Any]) -> tuple[Tape, dict[s
     return None
 
 
+def taped_rebuild(recipe: Recipe, given: Mapping[str, Any], keys: tuple[str, ...]) -> tuple | None:
+    """The values of the steps ``keys`` of ``recipe`` on ``given``, in their order, from the current tape
+    whose guards hold on it (:func:`taped_values`'s choice), by its compiled rebuild
+    (:meth:`~geomcon.scene.tape.Tape.rebuilder`: no scene, no memo); None when there is no such tape or its
+    plan of ``keys`` is not compiled (the caller then builds the scene). A step that fails raises.
+
+    >>> from geomcon.recipes import get_recipe
+    >>> r, g = get_recipe("guide_bar.extremes"), {"AB": 145.0, "AC": 290.0}
+    >>> for _ in range(3):
+    ...     _ = construct_taped(r, g).scene.value("theta")
+    >>> [round(x, 9) for x in taped_rebuild(r, {"AB": 100.0, "AC": 200.0}, ("theta",))]
+    [60.0]
+    """
+    key = shape_of(recipe.name, given)
+    entries = _TAPES.get(key) if key is not None else None
+    if entries:
+        for tape, _, _ in entries:
+            if tape is not None and _current(entries[0], recipe.name, tape.title):
+                run = tape.rebuilder(keys)
+                if run is None:                       # as taped_values then the program: this tape if it holds
+                    if tape.values(given) is None:
+                        continue
+                    return None
+                values = run(given)
+                if values is not None:
+                    return values
+    return None
+
+
 def construct_taped(recipe: Recipe, given: Mapping[str, Any]) -> Construction:
     """``recipe.construct(given)`` in a lean scene: replayed from a tape when a current one exists, else
     planned (and, when that solve followed a plan, taped for the next solves of this shape)."""

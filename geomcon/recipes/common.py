@@ -95,18 +95,18 @@ _RECIPES: dict[str, Any] = {}
 """The analysis recipes a back-substitution rebuilds through, by name (looked up once)."""
 
 
-def _taped_values(recipe: Any, given: Mapping[str, Any]) -> Any:
-    global _taped_values
-    from ..taped import taped_values                # imported when first used: the taped module imports recipes
-    _taped_values = taped_values
-    return taped_values(recipe, given)
+def _taped_rebuild(recipe: Any, given: Mapping[str, Any], keys: tuple[str, ...]) -> Any:
+    global _taped_rebuild
+    from ..taped import taped_rebuild                # imported when first used: the taped module imports recipes
+    _taped_rebuild = taped_rebuild
+    return taped_rebuild(recipe, given, keys)
 
 
 def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...]) -> dict[str, Any]:
     """``rebuilt(recipe, given).evaluate(keys)``, the values only: once the recipe is taped, its tape's
-    arithmetic and the compiled plan of ``keys`` run on a memo of their own, with no scene (a back-substitution
-    reads three numbers of each designed linkage); any other case, or a step that fails (worded by the scene),
-    takes the scene.
+    compiled rebuild of ``keys`` runs on the givens (:func:`geomcon.taped.taped_rebuild`: the tape's arithmetic
+    and the plan on floats, no scene, no memo; a back-substitution reads three numbers of each designed
+    linkage); any other case, or a step that fails (worded by the scene), takes the scene.
 
     >>> v = rebuilt_values("guide_bar.extremes", {"AB": 145.0, "AC": 290.0}, ("theta",))
     >>> round(v["theta"], 9)
@@ -117,13 +117,9 @@ def rebuilt_values(recipe: str, given: Mapping[str, Any], keys: tuple[str, ...])
         from . import get_recipe
         r = _RECIPES[recipe] = get_recipe(recipe)
     try:
-        found = _taped_values(r, given)
-        if found is not None:
-            tape, memo = found
-            run = tape.program(keys, values_only=True)
-            if run is not None:
-                run(memo)
-                return {k: memo[k] for k in keys}
+        values = _taped_rebuild(r, given, keys)
+        if values is not None:
+            return dict(zip(keys, values))
     except Exception:                  # the scene evaluates step by step and says which step failed
         pass
     return rebuilt(recipe, given).evaluate(keys)

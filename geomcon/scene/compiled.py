@@ -64,13 +64,19 @@ def order_of(rec: dict[str, tuple], keys: Iterable[str]) -> list[str]:
 
 
 def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset[str], *,
-                 pending: bool = True) -> Callable[[dict], Any] | None:
+                 pending: bool = True, source: Source | None = None) -> Callable[[Any], Any] | None:
     """A function ``run(memo)`` that computes the steps ``keys`` need and stores ``keys`` in ``memo``, the
     steps named in ``inputs`` being read from ``memo``; None when a needed step is not a plain call.
 
     ``run`` returns None, or ``(fill, values)`` when it computed steps besides ``keys``: ``fill(memo, values)``
     stores those too (their objects made then, in the plan's order), for a scene that is read further
     (without ``pending``, for a caller that only reads ``keys``, it always returns None).
+
+    With ``source`` — a tape's givens, its own steps and its guards (:class:`~geomcon.scene.tape.Tape`) — the
+    function is ``run(given)`` instead: it computes the tape's steps from the givens itself, as
+    :meth:`~geomcon.scene.tape.Tape.values` does (None when their arithmetic fails or a guard does not hold),
+    then the plan, and returns the values of ``keys`` as a tuple, in their order: a rebuild that only reads
+    numbers, with no memo.
 
     A step that fails raises (the caller evaluates step by step again to report it); a branch step whose
     intersection is empty raises :class:`~geomcon.errors.NoIntersection`."""
@@ -83,12 +89,16 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     g = _Gen(ns)
     loaded: list[str] = []
     computed: list[str] = []
+    tape_vars = _source_lines(g, source) if source is not None else {}
     for i, k in enumerate(order):
         op, args, kwargs, mode, branch, brefs, optional, _, _ = rec[k]
         if k in inputs:
-            g.obj[k] = f"o{i}"
             g.kind[k] = "x"
             g.opt[k] = False
+            if source is not None:                   # the tape's own step, computed above
+                g.obj[k] = tape_vars[k]
+                continue
+            g.obj[k] = f"o{i}"
             g.body.append(f"    o{i} = memo[_IN[{len(loaded)}]]")
             loaded.append(k)
             continue
@@ -100,6 +110,11 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
             continue
         if not g.kernel_step(k, i, op, args, kwargs, branch, brefs, optional):
             g.object_step(k, i, op, args, kwargs, branch, brefs, optional)
+    if source is not None:                      # the values of keys, in their order: nothing stored
+        values = ", ".join(g.value(k) for k in keys)
+        g.body.append(f"    return ({values}{',' if len(keys) == 1 else ''})")
+        exec(compile("def run(given):\n" + "\n".join(g.body) + "\n", "<geomcon taped rebuild>", "exec"), ns)
+        return ns["run"]
     wanted = set(keys)
     req = [k for k in computed if k in wanted]
     rest = [k for k in computed if k not in wanted]
@@ -119,6 +134,38 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     source = "def run(memo):\n" + "\n".join(body or ["    pass"]) + "\n"       # an empty request: nothing
     exec(compile(source, "<geomcon taped plan>", "exec"), ns)
     return ns["run"]
+
+
+Source = tuple[tuple[tuple[str, str], ...], tuple[tuple[str, Callable[..., Any], tuple], ...],
+               tuple[tuple[Callable[..., Any], tuple, bool], ...]]
+"""A tape's ``(memo key, given name)`` of each given it reads, its own steps ``(key, operation, arguments)``
+and its guards ``(operation, arguments, outcome)`` (:class:`~geomcon.scene.tape.Tape`)."""
+
+
+def _source_lines(g: _Gen, source: Source) -> dict[str, str]:
+    """The lines that compute a tape's own steps from ``given`` (as :meth:`~geomcon.scene.tape.Tape.values`:
+    every given read first, then the steps and the guards, None returned when their arithmetic fails or a guard
+    does not hold); the local variable of each step's key."""
+    leaves, nodes, guards = source
+    names: dict[str, str] = {}
+    for j, (key, name) in enumerate(leaves):
+        names[key] = f"t{j}"
+        g.body.append(f"    t{j} = given[{g.const(f'_L{j}', name)}]")
+
+    def arg(a: Any, where: str) -> str:
+        return names[a[0]] if type(a) is Ref else g.const(where, a)
+
+    lines = []
+    for j, (key, op, args) in enumerate(nodes):
+        var = names[key] = f"t{len(leaves) + j}"
+        parts = ", ".join(arg(a, f"_N{j}_{m}") for m, a in enumerate(args))
+        lines.append(f"        {var} = {g.const(f'_N{j}', op)}({parts})")
+    for j, (op, args, out) in enumerate(guards):
+        parts = ", ".join(arg(a, f"_G{j}_{m}") for m, a in enumerate(args))
+        lines.append(f"        if {g.const(f'_G{j}', op)}({parts}) is not {g.const(f'_GO{j}', out)}: return None")
+    if lines:
+        g.body += ["    try:"] + lines + ["    except ArithmeticError:", "        return None"]
+    return names
 
 
 def _natural(name: str) -> tuple:

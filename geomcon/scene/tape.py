@@ -207,7 +207,7 @@ class Tape:
     points: Mapping[str, str]
     solutions: tuple[Mapping[str, str], ...]
     no_solution: str
-    programs: dict[tuple[tuple[str, ...], bool], Callable[[dict], Any] | None] = field(default_factory=dict, compare=False,
+    programs: dict[tuple[tuple[str, ...], Any], Callable[[Any], Any] | None] = field(default_factory=dict, compare=False,
                                                                           repr=False)
 
     @cached_property
@@ -233,6 +233,29 @@ class Tape:
             return self.programs[key]
         except KeyError:
             run = self.programs[key] = compile_plan(self.rec, keys, self.inputs, pending=not values_only)
+            return run
+
+    def rebuilder(self, keys: tuple[str, ...]) -> Callable[[Mapping[str, Any]], tuple | None] | None:
+        """The compiled rebuild of ``keys`` from the givens (:func:`.compiled.compile_plan` with the tape as its
+        ``source``), made once: ``run(given)`` computes the tape's steps, then the plan of ``keys`` on floats,
+        and returns their values as a tuple (None where :meth:`values` gives None); no memo, no object but
+        those the plan reads. None when a needed step is not a plain call.
+
+        >>> from geomcon.recipes import get_recipe
+        >>> from geomcon.taped import construct_taped, taped_values
+        >>> r, g = get_recipe("guide_bar.extremes"), {"AB": 145.0, "AC": 290.0}
+        >>> for _ in range(3):
+        ...     _ = construct_taped(r, g).scene.value("theta")
+        >>> tape, _ = taped_values(r, g)
+        >>> [round(x, 9) for x in tape.rebuilder(("theta",))({"AB": 100.0, "AC": 200.0})]
+        [60.0]
+        """
+        key = (keys, "given")
+        try:
+            return self.programs[key]
+        except KeyError:
+            run = self.programs[key] = compile_plan(self.rec, keys, self.inputs,
+                                                    source=(self.leaf_keys, self.nodes, self.guards))
             return run
 
     def values(self, given: Mapping[str, Any]) -> dict[str, Any] | None:
