@@ -229,6 +229,59 @@ def _cost(b: dict, e: dict, scales: dict[str, float], sol: Solution, bound: floa
     return worst
 
 
+FloatRows = tuple[list[dict[str, Any]], list[str], float, int]
+
+
+def _float_rows(built: dict, exact: dict, pairs: tuple[tuple[str, str], ...], scales: dict[str, float],
+                prefix: str) -> FloatRows | None:
+    """The check rows of one solution against one twin solution when every answer both give is a number
+    (:func:`~geomcon.check.check_row`'s rows, their arithmetic in place, not yet judged at the problem's
+    condition), the answer name of each, the worst relative difference :func:`_cost` finds over the same
+    answers (``err / max(|b|, |e|, scale)``: the quantities a row computes) and how many of ``built``'s answers
+    are declared ones; None when an answer is not a float or both ends are infinite (the general rows handle
+    those). ``scales`` by unit. The worst equals ``_cost(built, exact, …)`` when ``built`` holds only declared
+    answers (the count is ``len(built)``: :meth:`Solution.matching` checks it): both skip a NaN and keep the
+    largest of the rest, whatever the order.
+
+    >>> rows, names, worst, declared = _float_rows({"a": 1.0}, {"a": 1.5}, (("a", "mm"), ("b", "mm")), {"mm": 1.0}, "")
+    >>> rows[0]["ok"], names, worst, declared
+    (False, ['a'], 0.3333333333333333, 1)
+    """
+    rows = []
+    names = []
+    worst = 0.0
+    declared = 0
+    inf = math.inf
+    for name, unit in pairs:
+        b = built.get(name)
+        if b is None:
+            continue
+        declared += 1
+        e = exact.get(name)
+        if e is None:
+            continue
+        if type(b) is not float or type(e) is not float or b == e == inf:
+            return None
+        # max(|b|, |e|, scale) as the comparisons max makes; err < inf and err <= tol is isfinite(err) and
+        # err <= tol (a NaN fails both comparisons)
+        err = abs(b - e)
+        m = abs(b)
+        t = abs(e)
+        if t > m:
+            m = t
+        t = scales[unit]
+        if t > m:
+            m = t
+        t = err / m
+        if t > worst:
+            worst = t
+        tol = CHECK_REL * m
+        rows.append({"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err, "tol": tol,
+                     "ok": err < inf and err <= tol, "unit": unit})
+        names.append(name)
+    return rows, names, worst, declared
+
+
 class Solution:
     """The solved problem; every property computes only what it needs, once."""
 
@@ -335,22 +388,38 @@ class Solution:
         return {}
 
     @cached_property
+    def _unit_scales(self) -> dict[str, float]:
+        """``{unit: scale}`` of the recipe's answer units (:meth:`unit_scale`)."""
+        return {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
+
+    @cached_property
     def matching(self) -> list[tuple[int, int]]:
         """Pairs ``(construction solution, twin solution)``: several solutions are compared as sets, each
         construction solution with the nearest twin solution (greedy on the worst relative difference)."""
         built, exact = self.solution_values, self.analytic
         if len(built) <= 1 or len(exact) <= 1:
             return [(i, i) for i in range(min(len(built), len(exact)))]
-        by_unit = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
-        scales = {k: by_unit[u] for k, u in _answer_units(self.recipe).items()}
+        by_unit = self._unit_scales
+        units = _answer_units(self.recipe)
+        scales = {k: by_unit[u] for k, u in units.items()}
         n = len(built)
         if n == len(exact):
             # the usual case: both lists in the recipe's order, each solution nearest its twin. When every other
             # pairing is worse than the worst of these, the greedy choice below takes exactly these n pairs
-            # first, so the others need only be shown worse (a cost cut off once it passes that bound)
-            diagonal = max(_cost(built[i], exact[i], scales, self) for i in range(n))
+            # first, so the others need only be shown worse (a cost cut off once it passes that bound). The
+            # diagonal's costs come with its check rows when every answer is a number (_float_rows: the same
+            # differences and scales), and the rows are kept for :attr:`checks`
+            pairs = _answer_pairs(self.recipe)
+            shared = [_float_rows(built[i], exact[i], pairs, by_unit, f"solutions[{i}]." if i else "")
+                      for i in range(n)]
+            if all(r is not None and r[3] == len(built[i]) for i, r in enumerate(shared)):
+                diagonal = max(r[2] for r in shared)                     # type: ignore[index]
+            else:
+                shared = []
+                diagonal = max(_cost(built[i], exact[i], scales, self) for i in range(n))
             if all(_cost(built[i], exact[j], scales, self, diagonal) > diagonal
                    for i in range(n) for j in range(n) if i != j):
+                self._diagonal_rows = shared
                 return [(i, i) for i in range(n)]
         ranked = sorted((_cost(b, e, scales, self), i, j) for i, b in enumerate(built) for j, e in enumerate(exact))
         used_i: set[int] = set()
@@ -413,33 +482,23 @@ class Solution:
         """Construction vs analytic twin for every answer of every solution, each row judged at CHECK_REL and,
         when it fails there, at the problem's own condition."""
         rows = []
-        scales = {u: self.unit_scale(u) for u in _answer_unit_set(self.recipe)}
+        scales = self._unit_scales
         inf = math.inf
         pairs = _answer_pairs(self.recipe)
-        for i, j in self.matching:
+        matching = self.matching
+        shared = self.__dict__.get("_diagonal_rows")
+        for i, j in matching:
             built, exact = self.solution_values[i], self.analytic[j]
             prefix = f"solutions[{i}]." if i else ""
+            # every answer a number (the usual case): the rows at once, the matching's when it made them
+            numbers = shared[i] if shared else _float_rows(built, exact, pairs, scales, prefix)
+            if numbers is not None:
+                for row, name in zip(numbers[0], numbers[1]):
+                    rows.append(row if row["ok"] else self._conditioned(row, j, name, row["unit"]))
+                continue
             for name, unit in pairs:
                 b, e = built.get(name), exact.get(name)
                 if b is None or e is None:
-                    continue
-                if type(b) is float and type(e) is float and not b == e == inf:
-                    # a number, at once: check_row's row, its arithmetic in place (a call per row is a third of it;
-                    # max(|b|, |e|, scale) as the comparisons max makes); err < inf and err <= tol is
-                    # isfinite(err) and err <= tol (a NaN fails both comparisons)
-                    err = abs(b - e)
-                    m = abs(b)
-                    t = abs(e)
-                    if t > m:
-                        m = t
-                    t = scales[unit]
-                    if t > m:
-                        m = t
-                    tol = CHECK_REL * m
-                    ok = err < inf and err <= tol
-                    row = {"quantity": prefix + name, "construction": b, "analytic": e, "abs_error": err, "tol": tol,
-                           "ok": ok, "unit": unit}
-                    rows.append(row if ok else self._conditioned(row, j, name, unit))
                     continue
                 parts: Any = ([(prefix + name, b, e, name)] if type(b) is float and type(e) is float else
                               [(label, x, y, flat) for (label, x, y), (flat, _, _)
