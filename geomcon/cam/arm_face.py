@@ -313,7 +313,7 @@ class FaceSamples:
         if self._turn_slopes is None:
             key = tuple((float(a), float(b)) for a, b in self.pieces)
             grids, grid = _grids(key, self.fam.still, None)
-            self._turn_slopes = _TurnSlopes(grids, grid, *self.arrays(grid, ordered=True))
+            self._turn_slopes = _TurnSlopes(key, grids, grid, *self.arrays(grid, ordered=True))
         return self._turn_slopes
 
     def extreme(self, pcs: list[tuple[float, float]], sign: float, turn: float | None = None) -> Extremum:
@@ -346,7 +346,7 @@ class FaceSamples:
         key = tuple((float(a), float(b)) for a, b in pcs)
         base = self._turn()
         grids, grid = _grids(key, self.fam.still, turn)
-        at = base.offset(grid)
+        at = _run_at(base.key, key, self.fam.still, turn)
         if at is None:                                  # not a run of the turn's samples: the general search
             return maximise(lambda d: sign * self.place(d), pcs, slope=lambda d: sign * self.slope(d),
                             slope1=self.slope1(sign), g1=lambda x: sign * self.place1(x), turn=turn,
@@ -450,8 +450,26 @@ def _grids(key: tuple[tuple[float, float], ...], still: tuple[tuple[float, float
     return sample_grids(key, _DENSE, turn), sample_grid(key, _DENSE, turn)
 
 
-_RUNS: dict[tuple[int, int], tuple[np.ndarray, np.ndarray, int | None]] = {}
-"""(the turn's samples, a segment's, where the segment's start in the turn's or None), by their ids."""
+@lru_cache(maxsize=256)
+def _run_at(turn_key: tuple[tuple[float, float], ...], key: tuple[tuple[float, float], ...],
+            still: tuple[tuple[float, float], ...], turn: float | None) -> int | None:
+    """Where the samples of the pieces ``key`` (spread as densely as ``turn``) start as a run of whole pieces
+    of the samples of the turn's pieces ``turn_key``, or None: a function of the pieces alone (both sample
+    arrays are :func:`_grids`', made from them), found once per pair (a search over a segment reads its l′
+    off the turn's).
+
+    >>> pcs = ((0.0, 1.0), (1.0, 3.0), (3.0, 6.0))
+    >>> _run_at(pcs, pcs, (), None), _run_at(pcs, pcs[1:2], (), 6.0), _run_at(pcs, ((0.5, 1.0),), (), 6.0)
+    (0, 257, None)
+    """
+    grids, grid = _grids(turn_key, still, None)
+    seg = _grids(key, still, turn)[1]
+    if seg is grid:
+        return 0
+    firsts = np.cumsum([0] + [len(d) for d in grids][:-1]).tolist()
+    n, first = seg.size, float(seg[0])
+    i = int(grid.searchsorted(first))
+    return i if i in firsts and i + n <= grid.size and np.array_equal(grid[i:i + n], seg) else None
 
 
 class _TurnSlopes:
@@ -459,8 +477,10 @@ class _TurnSlopes:
     neighbouring samples of a piece (+ → − and − → +), with the larger |l′| of the two: what a search reads
     (a few numpy passes; the few places read one by one)."""
 
-    def __init__(self, grids: tuple[np.ndarray, ...], grid: np.ndarray, pl: np.ndarray, sl: np.ndarray) -> None:
-        self.grid, self.pl, self.sl = grid, pl, sl
+    def __init__(self, key: tuple[tuple[float, float], ...], grids: tuple[np.ndarray, ...], grid: np.ndarray,
+                 pl: np.ndarray, sl: np.ndarray) -> None:
+        self.key, self.grid, self.pl, self.sl = key, grid, pl, sl
+        """The turn's pieces (the key of its samples, :func:`_grids`), its samples, l and l′ there."""
         sizes = [len(d) for d in grids]
         self.firsts = np.cumsum([0] + sizes[:-1]).tolist()
         self.rising: dict[int, list[tuple[int, float]]] = {}
@@ -478,23 +498,6 @@ class _TurnSlopes:
     def piece_of(self, i: int) -> int:
         """The piece of the turn holding sample ``i``."""
         return bisect_right(self.firsts, i) - 1
-
-    def offset(self, grid: np.ndarray) -> int | None:
-        """Where ``grid`` starts as a run of whole pieces of the turn's samples, or None (found once for the
-        same two sample arrays, which :func:`_grids` makes once: read-only, their numbers cannot change)."""
-        if grid is self.grid:
-            return 0
-        known = _RUNS.get((id(self.grid), id(grid)))
-        if known is not None and known[0] is self.grid and known[1] is grid:
-            return known[2]
-        n, first = grid.size, float(grid[0])
-        i = int(self.grid.searchsorted(first))
-        at = i if i in self.firsts and i + n <= self.grid.size and np.array_equal(self.grid[i:i + n], grid) else None
-        if not self.grid.flags.writeable and not grid.flags.writeable and self.grid.base is None and grid.base is None:
-            if len(_RUNS) >= 256:
-                _RUNS.clear()
-            _RUNS[(id(self.grid), id(grid))] = (self.grid, grid, at)    # (both kept: their ids are not reused)
-        return at
 
     def top(self, i0: int, i1: int) -> float:
         """The largest |l′| of samples i0 … i1 − 1 (nan ignored; 0 if none)."""
