@@ -26,7 +26,6 @@ Point(x=4.0, y=-3.0)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..errors import AmbiguousBranch
@@ -71,7 +70,47 @@ def _direction_xy(a: Point, b: Point, what: str) -> tuple[float, float]:
 
 
 class Branch:
-    """Base of the rules; subclasses are frozen dataclasses whose fields are points (or references)."""
+    """Base of the rules: a small frozen value whose fields (``__match_args__``, none, ``p``, or ``a`` and ``b``)
+    are points or references; equal, hashed and shown as a frozen dataclass of those fields would be.
+
+    The rules are written out rather than made by :func:`dataclasses.dataclass`, which compiles each class's
+    methods when the module is imported (about 1 ms a class, a tenth of a whole ``geomcon solve``).
+
+    Examples
+    --------
+    >>> r = Above("A", "D")
+    >>> r, r == Above("A", "D"), r == Below("A", "D"), hash(r) == hash(("A", "D"))
+    (Above(a='A', b='D'), True, False, True)
+    >>> r.a = "B"
+    Traceback (most recent call last):
+    ...
+    dataclasses.FrozenInstanceError: cannot assign to field 'a'
+    """
+
+    __match_args__: tuple[str, ...] = ()
+
+    def __init__(self) -> None:
+        pass
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is self.__class__:
+            return self.refs() == other.refs()  # type: ignore[attr-defined]
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self.refs())
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__match_args__)
+        return f"{type(self).__qualname__}({shown})"
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        from dataclasses import FrozenInstanceError        # the error a frozen dataclass raises (here: seldom)
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        from dataclasses import FrozenInstanceError
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
 
     def choose(self, cands: tuple[Point, ...]) -> Point:
         """The candidate this rule names, its fields being points."""
@@ -88,19 +127,40 @@ class Branch:
 
     def refs(self) -> tuple[Any, ...]:
         """The rule's points (or references), in field order."""
-        return tuple([getattr(self, name) for name in self.__match_args__])  # type: ignore[attr-defined]
+        return tuple([getattr(self, name) for name in self.__match_args__])
 
     def with_points(self, points: tuple[Point, ...]) -> Branch:
         """The same rule with its fields replaced by resolved points."""
         return type(self)(*points)  # type: ignore[call-arg]
 
 
-@dataclass(frozen=True)
-class LeftOf(Branch):
-    """The intersection on the left of the directed line ``a → b``."""
+class _LineRule(Branch):
+    """A rule over the line (or direction) through two points ``a`` and ``b``."""
 
+    __match_args__ = ("a", "b")
     a: Any
     b: Any
+
+    def __init__(self, a: Any, b: Any) -> None:
+        _set(self, "a", a)
+        _set(self, "b", b)
+
+
+class _PointRule(Branch):
+    """A rule relative to one point ``p``."""
+
+    __match_args__ = ("p",)
+    p: Any
+
+    def __init__(self, p: Any) -> None:
+        _set(self, "p", p)
+
+
+_set = object.__setattr__
+
+
+class LeftOf(_LineRule):
+    """The intersection on the left of the directed line ``a → b``."""
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -113,12 +173,8 @@ class LeftOf(Branch):
         return (f"left of the directed line {a}→{b}", f"位于有向线 {a}→{b} 左侧的交点")
 
 
-@dataclass(frozen=True)
-class RightOf(Branch):
+class RightOf(_LineRule):
     """The intersection on the right of the directed line ``a → b``."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -142,12 +198,8 @@ def _upward_normal(a: Point, b: Point) -> tuple[float, float]:
     return (nx, ny) if ny > 0 else (-nx, -ny)
 
 
-@dataclass(frozen=True)
-class Above(Branch):
+class Above(_LineRule):
     """The intersection above the line ``ab`` (on the side of +y)."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -165,12 +217,8 @@ class Above(Branch):
         return (f"above the line {a}{b}", f"位于直线 {a}{b} 上方的交点")
 
 
-@dataclass(frozen=True)
-class Below(Branch):
+class Below(_LineRule):
     """The intersection below the line ``ab`` (on the side of −y)."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -188,12 +236,8 @@ class Below(Branch):
         return (f"below the line {a}{b}", f"位于直线 {a}{b} 下方的交点")
 
 
-@dataclass(frozen=True)
-class Ahead(Branch):
+class Ahead(_LineRule):
     """The intersection farther along the direction ``a → b`` (e.g. "on the slider's side of A")."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -206,11 +250,8 @@ class Ahead(Branch):
         return (f"the intersection farther along {a}→{b}", f"沿 {a}→{b} 方向较远的交点")
 
 
-@dataclass(frozen=True)
-class ToRightOf(Branch):
+class ToRightOf(_PointRule):
     """The intersection to the right of point ``p`` in the drawing (larger x), as a figure is read."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -225,11 +266,8 @@ class ToRightOf(Branch):
         return (f"the intersection to the right of {p}", f"位于 {p} 右侧的交点")
 
 
-@dataclass(frozen=True)
-class ToLeftOf(Branch):
+class ToLeftOf(_PointRule):
     """The intersection to the left of point ``p`` in the drawing (smaller x)."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -244,7 +282,6 @@ class ToLeftOf(Branch):
         return (f"the intersection to the left of {p}", f"位于 {p} 左侧的交点")
 
 
-@dataclass(frozen=True)
 class Leftmost(Branch):
     """The left one of the two intersections in the drawing (smaller x)."""
 
@@ -257,7 +294,6 @@ class Leftmost(Branch):
         return ("the left intersection", "左侧的交点")
 
 
-@dataclass(frozen=True)
 class Rightmost(Branch):
     """The right one of the two intersections in the drawing (larger x)."""
 
@@ -270,11 +306,8 @@ class Rightmost(Branch):
         return ("the right intersection", "右侧的交点")
 
 
-@dataclass(frozen=True)
-class NearestTo(Branch):
+class NearestTo(_PointRule):
     """The intersection nearest to point ``p``."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -286,11 +319,8 @@ class NearestTo(Branch):
         return (f"the intersection nearer to {p}", f"离 {p} 较近的交点")
 
 
-@dataclass(frozen=True)
-class FarthestFrom(Branch):
+class FarthestFrom(_PointRule):
     """The intersection farthest from point ``p``."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -302,11 +332,8 @@ class FarthestFrom(Branch):
         return (f"the intersection farther from {p}", f"离 {p} 较远的交点")
 
 
-@dataclass(frozen=True)
-class OtherThan(Branch):
+class OtherThan(_PointRule):
     """The intersection other than the known point ``p`` (the one farther from it)."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
