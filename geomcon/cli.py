@@ -9,6 +9,7 @@ import argparse
 import os
 import sys
 import warnings
+from functools import partial
 from pathlib import Path
 from typing import Callable, Sequence
 
@@ -531,6 +532,27 @@ def _moodle_arguments(m: argparse.ArgumentParser) -> None:
     m.add_argument("--no-figures", action="store_true", help="leave out the givens figures")
 
 
+def help_width() -> int:
+    """The width argparse's help formatter gives itself, ``shutil.get_terminal_size().columns - 2`` ($COLUMNS
+    when a positive whole number, else the terminal's width, else 80), found without importing :mod:`shutil`:
+    argparse imports it in every formatter it makes (one per argument), and it loads bz2, lzma and zlib, ~3 %
+    of a whole ``geomcon solve``. ``tests/test_startup.py`` holds it equal to shutil's.
+
+    >>> import shutil; help_width() == shutil.get_terminal_size().columns - 2
+    True
+    """
+    try:
+        columns = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        columns = 0
+    if columns <= 0:
+        try:
+            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns or 80
+        except (AttributeError, ValueError, OSError):
+            columns = 80
+    return columns - 2
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The argument parser of the ``geomcon`` command.
 
@@ -548,10 +570,12 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """
     asked = argv[0] if argv else None
     only = asked if any(asked == name for name, *_ in COMMANDS) else None
-    p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
+    fmt = partial(argparse.HelpFormatter, width=help_width())
+    p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.",
+                                formatter_class=fmt)
     sub = p.add_subparsers(dest="command", required=True)
     for name, help_text, arguments, func in COMMANDS:
-        s = sub.add_parser(name, help=help_text)
+        s = sub.add_parser(name, help=help_text, formatter_class=fmt)
         if only is None or only == name:
             arguments(s)
         s.set_defaults(func=func)
