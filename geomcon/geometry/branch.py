@@ -31,6 +31,7 @@ from typing import Any, Callable
 from ..errors import AmbiguousBranch
 from .. import tolerance as _tolerance
 from ..tolerance import tol
+from ..values import Frozen, store
 from .primitives import Point, unit_xy
 
 
@@ -69,12 +70,13 @@ def _direction_xy(a: Point, b: Point, what: str) -> tuple[float, float]:
     return unit_xy(dx, dy)
 
 
-class Branch:
+class Branch(Frozen):
     """Base of the rules: a small frozen value whose fields (``__match_args__``, none, ``p``, or ``a`` and ``b``)
     are points or references; equal, hashed and shown as a frozen dataclass of those fields would be.
 
-    The rules are written out rather than made by :func:`dataclasses.dataclass`, which compiles each class's
-    methods when the module is imported (about 1 ms a class, a tenth of a whole ``geomcon solve``).
+    The rules are written out (:class:`geomcon.values.Frozen`) rather than made by
+    :func:`dataclasses.dataclass`, which compiles each class's methods when the module is imported (about
+    1 ms a class: the twelve rules were a tenth of a whole ``geomcon solve``).
 
     Examples
     --------
@@ -92,26 +94,6 @@ class Branch:
     def __init__(self) -> None:
         pass
 
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is self.__class__:
-            return self.refs() == other.refs()  # type: ignore[attr-defined]
-        return NotImplemented
-
-    def __hash__(self) -> int:
-        return hash(self.refs())
-
-    def __repr__(self) -> str:
-        shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__match_args__)
-        return f"{type(self).__qualname__}({shown})"
-
-    def __setattr__(self, name: str, value: Any) -> None:
-        from dataclasses import FrozenInstanceError        # the error a frozen dataclass raises (here: seldom)
-        raise FrozenInstanceError(f"cannot assign to field {name!r}")
-
-    def __delattr__(self, name: str) -> None:
-        from dataclasses import FrozenInstanceError
-        raise FrozenInstanceError(f"cannot delete field {name!r}")
-
     def choose(self, cands: tuple[Point, ...]) -> Point:
         """The candidate this rule names, its fields being points."""
         return self.rule(cands, *self.refs())
@@ -127,7 +109,7 @@ class Branch:
 
     def refs(self) -> tuple[Any, ...]:
         """The rule's points (or references), in field order."""
-        return tuple([getattr(self, name) for name in self.__match_args__])
+        return self._values()
 
     def with_points(self, points: tuple[Point, ...]) -> Branch:
         """The same rule with its fields replaced by resolved points."""
@@ -137,26 +119,24 @@ class Branch:
 class _LineRule(Branch):
     """A rule over the line (or direction) through two points ``a`` and ``b``."""
 
-    __match_args__ = ("a", "b")
+    __match_args__ = _FIELDS = ("a", "b")
     a: Any
     b: Any
 
     def __init__(self, a: Any, b: Any) -> None:
-        _set(self, "a", a)
-        _set(self, "b", b)
+        store(self, "a", a)
+        store(self, "b", b)
 
 
 class _PointRule(Branch):
     """A rule relative to one point ``p``."""
 
-    __match_args__ = ("p",)
+    __match_args__ = _FIELDS = ("p",)
     p: Any
 
     def __init__(self, p: Any) -> None:
-        _set(self, "p", p)
+        store(self, "p", p)
 
-
-_set = object.__setattr__
 
 
 class LeftOf(_LineRule):

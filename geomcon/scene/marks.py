@@ -12,66 +12,17 @@ Examples
 from __future__ import annotations
 
 import math
-from typing import Any
 
 from ..geometry.primitives import Point, Segment
+from ..values import Frozen, store
 
-_set = object.__setattr__
-
-
-class _Mark:
-    """Base of the marks: a small frozen value with slots, equal, hashed, shown and pickled as a frozen
-    dataclass of its fields (``__slots__``, in order) would be.
-
-    The marks are written out rather than made by :func:`dataclasses.dataclass`, which compiles each class's
-    methods when the module is imported (about 1 ms a class): a text ``geomcon solve`` builds its full scene to
-    count the steps, and so imports this module, though it draws no mark.
-
-    >>> g = Ground(Point(0, 0))
-    >>> g, g == Ground(Point(0, 0), -math.pi / 2), hash(g) == hash((Point(0, 0), -math.pi / 2))
-    (Ground(at=Point(x=0.0, y=0.0), angle=-1.5707963267948966), True, True)
-    >>> g.angle = 0.0
-    Traceback (most recent call last):
-    ...
-    dataclasses.FrozenInstanceError: cannot assign to field 'angle'
-    """
-
-    __slots__: tuple[str, ...] = ()
-
-    def _fields(self) -> tuple[Any, ...]:
-        return tuple([getattr(self, name) for name in self.__slots__])
-
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is self.__class__:
-            return self._fields() == other._fields()  # type: ignore[attr-defined]
-        return NotImplemented
-
-    def __hash__(self) -> int:
-        return hash(self._fields())
-
-    def __repr__(self) -> str:
-        shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__slots__)
-        return f"{type(self).__qualname__}({shown})"
-
-    def __setattr__(self, name: str, value: Any) -> None:
-        from dataclasses import FrozenInstanceError        # the error a frozen dataclass raises (here: seldom)
-        raise FrozenInstanceError(f"cannot assign to field {name!r}")
-
-    def __delattr__(self, name: str) -> None:
-        from dataclasses import FrozenInstanceError
-        raise FrozenInstanceError(f"cannot delete field {name!r}")
-
-    def __reduce__(self) -> tuple[Any, tuple[Any, ...]]:
-        return (type(self), self._fields())
-
-
-class AngleMark(_Mark):
+class AngleMark(Frozen):
     """The arc marking the angle at ``vertex`` from ray vertex→a to ray vertex→b (the smaller angle).
 
     ``radius`` is in model mm; None lets the renderer choose it.
     """
 
-    __slots__ = ("vertex", "a", "b", "symbol", "value", "radius")
+    __slots__ = _FIELDS = ("vertex", "a", "b", "symbol", "value", "radius")
     vertex: Point
     a: Point
     b: Point
@@ -80,12 +31,12 @@ class AngleMark(_Mark):
     radius: float | None
 
     def __init__(self, vertex: Point, a: Point, b: Point, symbol: str, value: float, radius: float | None = None) -> None:
-        _set(self, "vertex", vertex)
-        _set(self, "a", a)
-        _set(self, "b", b)
-        _set(self, "symbol", symbol)
-        _set(self, "value", value)
-        _set(self, "radius", radius)
+        store(self, "vertex", vertex)
+        store(self, "a", a)
+        store(self, "b", b)
+        store(self, "symbol", symbol)
+        store(self, "value", value)
+        store(self, "radius", radius)
 
     @property
     def text(self) -> str:
@@ -100,24 +51,24 @@ class AngleMark(_Mark):
         return f"{self.symbol}={self.value:.2f}°"
 
 
-class RightAngleMark(_Mark):
+class RightAngleMark(Frozen):
     """The small square marking a right angle at ``vertex`` between rays vertex→a and vertex→b."""
 
-    __slots__ = ("vertex", "a", "b")
+    __slots__ = _FIELDS = ("vertex", "a", "b")
     vertex: Point
     a: Point
     b: Point
 
     def __init__(self, vertex: Point, a: Point, b: Point) -> None:
-        _set(self, "vertex", vertex)
-        _set(self, "a", a)
-        _set(self, "b", b)
+        store(self, "vertex", vertex)
+        store(self, "a", a)
+        store(self, "b", b)
 
 
-class Dimension(_Mark):
+class Dimension(Frozen):
     """A linear dimension of ``a``–``b`` drawn parallel to it, ``offset`` mm to the left of a→b."""
 
-    __slots__ = ("a", "b", "symbol", "value", "offset")
+    __slots__ = _FIELDS = ("a", "b", "symbol", "value", "offset")
     a: Point
     b: Point
     symbol: str
@@ -125,11 +76,11 @@ class Dimension(_Mark):
     offset: float
 
     def __init__(self, a: Point, b: Point, symbol: str, value: float, offset: float) -> None:
-        _set(self, "a", a)
-        _set(self, "b", b)
-        _set(self, "symbol", symbol)
-        _set(self, "value", value)
-        _set(self, "offset", offset)
+        store(self, "a", a)
+        store(self, "b", b)
+        store(self, "symbol", symbol)
+        store(self, "value", value)
+        store(self, "offset", offset)
 
     @property
     def text(self) -> str:
@@ -137,55 +88,55 @@ class Dimension(_Mark):
         return f"{self.symbol}={self.value:.2f}"
 
 
-class Ground(_Mark):
+class Ground(Frozen):
     """The hatched ground symbol of a fixed pivot at ``at``, the ground lying towards ``angle`` (rad)."""
 
-    __slots__ = ("at", "angle")
+    __slots__ = _FIELDS = ("at", "angle")
     at: Point
     angle: float
 
     def __init__(self, at: Point, angle: float = -math.pi / 2) -> None:
-        _set(self, "at", at)
-        _set(self, "angle", angle)
+        store(self, "at", at)
+        store(self, "angle", angle)
 
 
-class Slider(_Mark):
+class Slider(Frozen):
     """A slider block centred at ``at`` moving along unit-free ``direction``."""
 
-    __slots__ = ("at", "direction")
+    __slots__ = _FIELDS = ("at", "direction")
     at: Point
     direction: Point
 
     def __init__(self, at: Point, direction: Point) -> None:
-        _set(self, "at", at)
-        _set(self, "direction", direction)
+        store(self, "at", at)
+        store(self, "direction", direction)
 
 
-class Guide(_Mark):
+class Guide(Frozen):
     """A straight guide from ``a`` to ``b`` hatched on its left (``side`` = +1) or right (−1)."""
 
-    __slots__ = ("a", "b", "side")
+    __slots__ = _FIELDS = ("a", "b", "side")
     a: Point
     b: Point
     side: int
 
     def __init__(self, a: Point, b: Point, side: int = -1) -> None:
-        _set(self, "a", a)
-        _set(self, "b", b)
-        _set(self, "side", side)
+        store(self, "a", a)
+        store(self, "b", b)
+        store(self, "side", side)
 
 
-class Bearing(_Mark):
+class Bearing(Frozen):
     """The guide of a translating follower's stem: two short hatched bearing blocks either side of the stem,
     centred at ``at``, the stem running along ``direction`` (the same symbol for every cam)."""
 
-    __slots__ = ("at", "direction")
+    __slots__ = _FIELDS = ("at", "direction")
     at: Point
     direction: Point
 
     def __init__(self, at: Point, direction: Point) -> None:
-        _set(self, "at", at)
-        _set(self, "direction", direction)
+        store(self, "at", at)
+        store(self, "direction", direction)
 
 
 def bearing(at: Point, direction: Point) -> Bearing:
@@ -197,19 +148,19 @@ def bearing(at: Point, direction: Point) -> Bearing:
     return Bearing(at, direction)
 
 
-class Rotation(_Mark):
+class Rotation(Frozen):
     """The sense of rotation of a part turning about ``at`` (a cam's ω): an arc with an arrowhead,
     counter-clockwise for ``sense`` > 0, clockwise for ``sense`` < 0, marked ``symbol``."""
 
-    __slots__ = ("at", "sense", "symbol")
+    __slots__ = _FIELDS = ("at", "sense", "symbol")
     at: Point
     sense: float
     symbol: str
 
     def __init__(self, at: Point, sense: float, symbol: str = "ω") -> None:
-        _set(self, "at", at)
-        _set(self, "sense", sense)
-        _set(self, "symbol", symbol)
+        store(self, "at", at)
+        store(self, "sense", sense)
+        store(self, "symbol", symbol)
 
 
 def rotation(at: Point, sense: float, symbol: str = "ω") -> Rotation:
@@ -255,7 +206,7 @@ class Vector(Segment):
     """A vector of a velocity or acceleration polygon: the segment ``a → b`` drawn with an arrowhead at ``b``
     (a :class:`Segment` in all but its name, as a frozen dataclass without fields of its own would be)."""
 
-    __slots__ = ()
+    __slots__ = _FIELDS = ()
 
 
 def vector(a: Point, b: Point) -> Vector:
