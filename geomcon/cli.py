@@ -6,12 +6,12 @@ and no output file is written (everything is rendered before anything is written
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 import warnings
+from functools import partial
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 from .errors import GeomconError, ProblemError
 
@@ -52,7 +52,6 @@ def _summary(sol, lang: str = "en") -> str:
     textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings (``警告：`` and the Chinese
     sentence for zh, both for ``both``) and the steps evaluated."""
     from .render.results import result_line
-    from .render.warning_words import warning_zh
 
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
     lines += [f"  {line}" for line in sol.figure_lines(lang)]
@@ -73,6 +72,8 @@ def _summary(sol, lang: str = "en") -> str:
             shown = ("，" if zh else ", ").join(result_line(k, v, units.get(k, ""), lang="zh" if zh else "en",
                                                             recipe=sol.recipe.name) for k, v in other.items())
             lines.append(f"    {'解' if zh else 'solution'} {i}{'：' if zh else ': '}{shown}")
+    if sol.warnings and lang != "en":          # its rules are compiled when imported: only for a warning to say
+        from .render.warning_words import warning_zh
     for w in sol.warnings:
         words = warning_zh(w) if lang != "en" else None
         if lang != "zh" or words is None:
@@ -97,12 +98,9 @@ def _solution_number(text: str) -> int:
 
 
 def cmd_solve(args: argparse.Namespace) -> int:
-    from .fileio import write_all
-    from .gallery import to_json_text
+    from .fileio import check_targets, write_all
     from .problems import load_problem
     from .solve import solve
-
-    from .fileio import check_targets
 
     path = args.file
     outputs = {"--svg": args.svg, "--html": args.html, "--profile-csv": getattr(args, "profile_csv", None)}
@@ -114,7 +112,11 @@ def cmd_solve(args: argparse.Namespace) -> int:
             sol = solve(load_problem(path))
             if getattr(args, "solution", None) is not None:
                 sol = sol.as_solution(_solution_number(args.solution))
-            text = to_json_text(sol) if args.json else _summary(sol, args.lang) + "\n"
+            if args.json:
+                from .gallery import to_json_text
+                text = to_json_text(sol)
+            else:
+                text = _summary(sol, args.lang) + "\n"
             files: dict[Path, str] = {}
             if args.svg or args.html or args.steps:
                 from .render.page import PageSpec, sheet_names
@@ -208,6 +210,7 @@ def cmd_recipes(args: argparse.Namespace) -> int:
     from .recipes import RECIPES
 
     if args.json:
+        import json
         data = {name: {"title": r.title,
                        "given": {q.name: {"unit": q.unit, "doc": q.doc, "required": q.required,
                                           **({"default": q.default} if q.default is not None else {}),
@@ -286,6 +289,7 @@ def cmd_fuzz(args: argparse.Namespace) -> int:
         gens = {k: g for k, g in all_generators().items() if not args.only or args.only in k}
         report.merge(run_valid(gens, args.valid, args.seed))
     if args.json:
+        import json
         print(json.dumps(report.to_json(), ensure_ascii=False, indent=2))
     else:
         for name, n in report.cases.items():
@@ -438,11 +442,8 @@ def _page_arguments(s: argparse.ArgumentParser) -> None:
                    "(default)")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of the ``geomcon`` command."""
-    p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.")
-    sub = p.add_subparsers(dest="command", required=True)
-    s = sub.add_parser("solve", help="solve one problem file")
+def _solve_arguments(s: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon solve``."""
     s.add_argument("file")
     s.add_argument("--json", action="store_true", help="print the result as one JSON object")
     s.add_argument("--svg", metavar="OUT", help="write the drawing sheet (OUT: drawing at a standard scale, results, "
@@ -455,19 +456,24 @@ def build_parser() -> argparse.ArgumentParser:
                    "as DIR/<problem>_motion.svg")
     s.add_argument("--solution", metavar="N", help="a problem with several valid solutions: report and draw solution N "
                    "(1 = the textbook's choice; the text output lists them all)")
-    s.set_defaults(func=cmd_solve)
-    c = sub.add_parser("cycle", help="a linkage (crank + Assur dyads) over its crank turn: table, extremes, "
-                       "stroke and K, s–v–a plots, animation")
+
+
+def _cycle_arguments(c: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon cycle``."""
     c.add_argument("file", help="a cycle problem (problems/cycles/*.toml)")
     c.add_argument("--json", action="store_true", help="print the result as one JSON object")
     c.add_argument("--csv", metavar="OUT", help="write the table: phi_deg and the problem's columns")
     c.add_argument("--svg", metavar="OUT", help="write the columns against the crank angle (s–v–a, ω, ε)")
     c.add_argument("--html", metavar="OUT", help="write a self-contained animation of the linkage")
-    c.set_defaults(func=cmd_cycle)
-    r = sub.add_parser("recipes", help="list recipes with their given and answer names")
+
+
+def _recipes_arguments(r: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon recipes``."""
     r.add_argument("--json", action="store_true")
-    r.set_defaults(func=cmd_recipes)
-    g = sub.add_parser("gallery", help="solve every bundled problem and write the gallery")
+
+
+def _gallery_arguments(g: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon gallery``."""
     g.add_argument("--check", action="store_true", help="exit 1 when the committed gallery is stale")
     g.add_argument("--problems", default="problems", metavar="DIR")
     g.add_argument("--out", default="gallery", metavar="DIR")
@@ -476,16 +482,19 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--jobs", type=_jobs, default=None, metavar="N",
                    help="worker processes (default: every core; 1 = this process alone); the files are the same "
                         "bytes for any N")
-    g.set_defaults(func=cmd_gallery)
-    b = sub.add_parser("bench", help="speed targets as ratios to references timed in the same run (the lean core); "
-                       "time against error: construction vs crank sweep, vs sympy; answers vs drawing")
+
+
+def _bench_arguments(b: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon bench``."""
     b.add_argument("--quick", action="store_true", help="fewer repetitions and sweep sizes (about 15 s instead of 45 s)")
     b.add_argument("--out", default="bench.svg", metavar="SVG", help="where to write the plot")
     b.add_argument("--cycle-record", default=None, metavar="JSON",
                    help="also write the whole-cycle rows as the record the gallery draws "
                         "(problems/cycles/bench_record.json)")
-    b.set_defaults(func=cmd_bench)
-    f = sub.add_parser("fuzz", help="seeded fuzz: hostile problem files and random valid problems; exit 1 on any failure")
+
+
+def _fuzz_arguments(f: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon fuzz``."""
     f.add_argument("--hostile", type=int, default=200, metavar="N", help="mutated problem files in all")
     f.add_argument("--valid", type=int, default=50, metavar="N", help="random valid problems per generator")
     f.add_argument("--seed", type=int, default=9)
@@ -493,9 +502,10 @@ def build_parser() -> argparse.ArgumentParser:
     f.add_argument("--problems", default="problems", metavar="DIR")
     f.add_argument("--memory-gib", type=float, default=4.0, help="address-space cap of the fuzzing process")
     f.add_argument("--json", action="store_true")
-    f.set_defaults(func=cmd_fuzz)
-    w = sub.add_parser("worksheet", help="a class set of randomized exercises from one spec: the students' "
-                       "sheets, the key pages and key.json")
+
+
+def _worksheet_arguments(w: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon worksheet``."""
     w.add_argument("file", metavar="SPEC.toml")
     w.add_argument("--out", required=True, metavar="DIR", help="where to write the sheets, the key pages, key.json and variants.csv")
     who = w.add_mutually_exclusive_group(required=True)
@@ -505,25 +515,98 @@ def build_parser() -> argparse.ArgumentParser:
     w.add_argument("--seed", type=int, default=None, help="overrides the spec's seed")
     w.add_argument("--lang", choices=("zh", "en", "both"), default="both", help="language of the statements")
     w.add_argument("--paper", choices=("A4", "A3"), default="A4")
-    w.set_defaults(func=cmd_worksheet)
-    c = sub.add_parser("check", help="grade a class's answers against a worksheet key or a problem file: grades.csv, "
-                       "grades.json, report.html, feedback/<id>.txt")
+
+
+def _check_arguments(c: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon check``."""
     c.add_argument("file", metavar="KEY.json|PROBLEM.toml")
     c.add_argument("answers", metavar="ANSWERS.csv", help="id (and name), then one column per answer ('1.AB'); "
                    "UTF-8 (± BOM), UTF-16, GBK/GB18030")
     c.add_argument("--out", required=True, metavar="DIR")
-    c.set_defaults(func=cmd_check)
-    m = sub.add_parser("moodle", help="a Moodle XML question bank from a worksheet key")
+
+
+def _moodle_arguments(m: argparse.ArgumentParser) -> None:
+    """The arguments of ``geomcon moodle``."""
     m.add_argument("file", metavar="KEY.json")
     m.add_argument("--out", required=True, metavar="bank.xml")
     m.add_argument("--no-figures", action="store_true", help="leave out the givens figures")
-    m.set_defaults(func=cmd_moodle)
+
+
+def help_width() -> int:
+    """The width argparse's help formatter gives itself, ``shutil.get_terminal_size().columns - 2`` ($COLUMNS
+    when a positive whole number, else the terminal's width, else 80), found without importing :mod:`shutil`:
+    argparse imports it in every formatter it makes (one per argument), and it loads bz2, lzma and zlib, ~3 %
+    of a whole ``geomcon solve``. ``tests/test_startup.py`` holds it equal to shutil's.
+
+    >>> import shutil; help_width() == shutil.get_terminal_size().columns - 2
+    True
+    """
+    try:
+        columns = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        columns = 0
+    if columns <= 0:
+        try:
+            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns or 80
+        except (AttributeError, ValueError, OSError):
+            columns = 80
+    return columns - 2
+
+
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The argument parser of the ``geomcon`` command.
+
+    Every command is listed (``geomcon --help``, a misspelt command's choices), but when the first word of
+    ``argv`` names a command only that command gets its arguments: their help formatters are most of the
+    parser's set-up (about 10 ms, as long as the rest of ``geomcon solve``). Without ``argv``, or when its first
+    word is no command, every command gets them.
+
+    Examples
+    --------
+    >>> build_parser(["solve", "x.toml"]).parse_args(["solve", "x.toml"]).lang
+    'both'
+    >>> build_parser().parse_args(["recipes", "--json"]).json
+    True
+    """
+    asked = argv[0] if argv else None
+    only = asked if any(asked == name for name, *_ in COMMANDS) else None
+    fmt = partial(argparse.HelpFormatter, width=help_width())
+    p = argparse.ArgumentParser(prog="geomcon", description="Replay textbook mechanism constructions exactly.",
+                                formatter_class=fmt)
+    sub = p.add_subparsers(dest="command", required=True)
+    for name, help_text, arguments, func in COMMANDS:
+        s = sub.add_parser(name, help=help_text, formatter_class=fmt)
+        if only is None or only == name:
+            arguments(s)
+        s.set_defaults(func=func)
     return p
+
+
+COMMANDS: tuple[tuple[str, str, Callable[[argparse.ArgumentParser], None], Callable[[argparse.Namespace], int]], ...] = (
+    ("solve", "solve one problem file", _solve_arguments, cmd_solve),
+    ("cycle", "a linkage (crank + Assur dyads) over its crank turn: table, extremes, stroke and K, s–v–a plots, "
+     "animation", _cycle_arguments, cmd_cycle),
+    ("recipes", "list recipes with their given and answer names", _recipes_arguments, cmd_recipes),
+    ("gallery", "solve every bundled problem and write the gallery", _gallery_arguments, cmd_gallery),
+    ("bench", "speed targets as ratios to references timed in the same run (the lean core); time against error: "
+     "construction vs crank sweep, vs sympy; answers vs drawing", _bench_arguments, cmd_bench),
+    ("fuzz", "seeded fuzz: hostile problem files and random valid problems; exit 1 on any failure", _fuzz_arguments,
+     cmd_fuzz),
+    ("worksheet", "a class set of randomized exercises from one spec: the students' sheets, the key pages and "
+     "key.json", _worksheet_arguments, cmd_worksheet),
+    ("check", "grade a class's answers against a worksheet key or a problem file: grades.csv, grades.json, "
+     "report.html, feedback/<id>.txt", _check_arguments, cmd_check),
+    ("moodle", "a Moodle XML question bank from a worksheet key", _moodle_arguments, cmd_moodle),
+)
+"""The commands in the order ``geomcon --help`` lists them: name, help, the function adding its arguments to
+its sub-parser, the function running it."""
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``geomcon`` console script."""
-    args = build_parser().parse_args(argv)
+    if argv is None:
+        argv = sys.argv[1:]
+    args = build_parser(argv).parse_args(argv)
     try:
         return args.func(args)
     except BrokenPipeError:     # `geomcon recipes | head`: the reader has gone; nothing is wrong

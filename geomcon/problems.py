@@ -35,11 +35,11 @@ import re
 import stat
 import tomllib
 import unicodedata
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
 
 from .errors import ProblemError
+from .values import Frozen, store
 from .recipes import Quantity, Recipe, get_recipe
 
 TOP_KEYS = ("recipe", "title", "source", "seed", "statement", "notes", "given", "published")
@@ -67,20 +67,34 @@ LENGTH_SPAN = 1e10
 """No nonzero given length may be more than this many times smaller than the largest given length."""
 
 
-@dataclass(frozen=True)
-class Problem:
-    """A validated problem: recipe name, normalised givens, published answers and provenance."""
+_NEW: Any = object()
+"""The default of :attr:`Problem.published`: a new dict for each problem."""
 
+
+class Problem(Frozen):
+    """A validated problem: recipe name, normalised givens, published answers (a new empty dict when not
+    given) and provenance."""
+
+    _FIELDS = ("id", "recipe", "given", "published", "title", "source", "seed", "statement", "notes", "path")
     id: str
     recipe: str
     given: Mapping[str, Any]
-    published: Mapping[str, Any] = field(default_factory=dict)
-    title: str = ""
-    source: str = ""
-    seed: str = ""
-    statement: str = ""
-    notes: str = ""
-    path: str | None = None
+    published: Mapping[str, Any]
+    title: str
+    source: str
+    seed: str
+    statement: str
+    notes: str
+    path: str | None
+
+    def __init__(self, id: str, recipe: str, given: Mapping[str, Any], published: Mapping[str, Any] = _NEW,
+                 title: str = "", source: str = "", seed: str = "", statement: str = "", notes: str = "",
+                 path: str | None = None) -> None:
+        if published is _NEW:
+            published = {}
+        for name, value in zip(self._FIELDS, (id, recipe, given, published, title, source, seed, statement, notes,
+                                              path)):
+            store(self, name, value)
 
 
 def _g(x: float) -> str:

@@ -26,12 +26,12 @@ Point(x=4.0, y=-3.0)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..errors import AmbiguousBranch
 from .. import tolerance as _tolerance
 from ..tolerance import tol
+from ..values import Frozen, store
 from .primitives import Point, unit_xy
 
 
@@ -70,8 +70,29 @@ def _direction_xy(a: Point, b: Point, what: str) -> tuple[float, float]:
     return unit_xy(dx, dy)
 
 
-class Branch:
-    """Base of the rules; subclasses are frozen dataclasses whose fields are points (or references)."""
+class Branch(Frozen):
+    """Base of the rules: a small frozen value whose fields (``__match_args__``, none, ``p``, or ``a`` and ``b``)
+    are points or references; equal, hashed and shown as a frozen dataclass of those fields would be.
+
+    The rules are written out (:class:`geomcon.values.Frozen`) rather than made by
+    :func:`dataclasses.dataclass`, which compiles each class's methods when the module is imported (about
+    1 ms a class: the twelve rules were a tenth of a whole ``geomcon solve``).
+
+    Examples
+    --------
+    >>> r = Above("A", "D")
+    >>> r, r == Above("A", "D"), r == Below("A", "D"), hash(r) == hash(("A", "D"))
+    (Above(a='A', b='D'), True, False, True)
+    >>> r.a = "B"
+    Traceback (most recent call last):
+    ...
+    dataclasses.FrozenInstanceError: cannot assign to field 'a'
+    """
+
+    __match_args__: tuple[str, ...] = ()
+
+    def __init__(self) -> None:
+        pass
 
     def choose(self, cands: tuple[Point, ...]) -> Point:
         """The candidate this rule names, its fields being points."""
@@ -88,19 +109,38 @@ class Branch:
 
     def refs(self) -> tuple[Any, ...]:
         """The rule's points (or references), in field order."""
-        return tuple([getattr(self, name) for name in self.__match_args__])  # type: ignore[attr-defined]
+        return self._values()
 
     def with_points(self, points: tuple[Point, ...]) -> Branch:
         """The same rule with its fields replaced by resolved points."""
         return type(self)(*points)  # type: ignore[call-arg]
 
 
-@dataclass(frozen=True)
-class LeftOf(Branch):
-    """The intersection on the left of the directed line ``a → b``."""
+class _LineRule(Branch):
+    """A rule over the line (or direction) through two points ``a`` and ``b``."""
 
+    __match_args__ = _FIELDS = ("a", "b")
     a: Any
     b: Any
+
+    def __init__(self, a: Any, b: Any) -> None:
+        store(self, "a", a)
+        store(self, "b", b)
+
+
+class _PointRule(Branch):
+    """A rule relative to one point ``p``."""
+
+    __match_args__ = _FIELDS = ("p",)
+    p: Any
+
+    def __init__(self, p: Any) -> None:
+        store(self, "p", p)
+
+
+
+class LeftOf(_LineRule):
+    """The intersection on the left of the directed line ``a → b``."""
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -113,12 +153,8 @@ class LeftOf(Branch):
         return (f"left of the directed line {a}→{b}", f"位于有向线 {a}→{b} 左侧的交点")
 
 
-@dataclass(frozen=True)
-class RightOf(Branch):
+class RightOf(_LineRule):
     """The intersection on the right of the directed line ``a → b``."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -142,12 +178,8 @@ def _upward_normal(a: Point, b: Point) -> tuple[float, float]:
     return (nx, ny) if ny > 0 else (-nx, -ny)
 
 
-@dataclass(frozen=True)
-class Above(Branch):
+class Above(_LineRule):
     """The intersection above the line ``ab`` (on the side of +y)."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -165,12 +197,8 @@ class Above(Branch):
         return (f"above the line {a}{b}", f"位于直线 {a}{b} 上方的交点")
 
 
-@dataclass(frozen=True)
-class Below(Branch):
+class Below(_LineRule):
     """The intersection below the line ``ab`` (on the side of −y)."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -188,12 +216,8 @@ class Below(Branch):
         return (f"below the line {a}{b}", f"位于直线 {a}{b} 下方的交点")
 
 
-@dataclass(frozen=True)
-class Ahead(Branch):
+class Ahead(_LineRule):
     """The intersection farther along the direction ``a → b`` (e.g. "on the slider's side of A")."""
-
-    a: Any
-    b: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], a: Point, b: Point) -> Point:
@@ -206,11 +230,8 @@ class Ahead(Branch):
         return (f"the intersection farther along {a}→{b}", f"沿 {a}→{b} 方向较远的交点")
 
 
-@dataclass(frozen=True)
-class ToRightOf(Branch):
+class ToRightOf(_PointRule):
     """The intersection to the right of point ``p`` in the drawing (larger x), as a figure is read."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -225,11 +246,8 @@ class ToRightOf(Branch):
         return (f"the intersection to the right of {p}", f"位于 {p} 右侧的交点")
 
 
-@dataclass(frozen=True)
-class ToLeftOf(Branch):
+class ToLeftOf(_PointRule):
     """The intersection to the left of point ``p`` in the drawing (smaller x)."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -244,7 +262,6 @@ class ToLeftOf(Branch):
         return (f"the intersection to the left of {p}", f"位于 {p} 左侧的交点")
 
 
-@dataclass(frozen=True)
 class Leftmost(Branch):
     """The left one of the two intersections in the drawing (smaller x)."""
 
@@ -257,7 +274,6 @@ class Leftmost(Branch):
         return ("the left intersection", "左侧的交点")
 
 
-@dataclass(frozen=True)
 class Rightmost(Branch):
     """The right one of the two intersections in the drawing (larger x)."""
 
@@ -270,11 +286,8 @@ class Rightmost(Branch):
         return ("the right intersection", "右侧的交点")
 
 
-@dataclass(frozen=True)
-class NearestTo(Branch):
+class NearestTo(_PointRule):
     """The intersection nearest to point ``p``."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -286,11 +299,8 @@ class NearestTo(Branch):
         return (f"the intersection nearer to {p}", f"离 {p} 较近的交点")
 
 
-@dataclass(frozen=True)
-class FarthestFrom(Branch):
+class FarthestFrom(_PointRule):
     """The intersection farthest from point ``p``."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:
@@ -302,11 +312,8 @@ class FarthestFrom(Branch):
         return (f"the intersection farther from {p}", f"离 {p} 较远的交点")
 
 
-@dataclass(frozen=True)
-class OtherThan(Branch):
+class OtherThan(_PointRule):
     """The intersection other than the known point ``p`` (the one farther from it)."""
-
-    p: Any
 
     @staticmethod
     def rule(cands: tuple[Point, ...], p: Point) -> Point:

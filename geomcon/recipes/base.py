@@ -8,14 +8,13 @@ Examples
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
 from ..scene import Scene
+from ..values import Frozen, store
 
 
-@dataclass(frozen=True)
-class Quantity:
+class Quantity(Frozen):
     """A named given or answer.
 
     Parameters
@@ -44,19 +43,26 @@ class Quantity:
         Givens of unit "choice": the admissible words.
     """
 
+    _FIELDS = ("name", "unit", "doc", "required", "default", "minimum", "inclusive", "maximum", "choices")
     name: str
     unit: str
     doc: str
-    required: bool = True
-    default: Any = None
-    minimum: float | None = 0.0
-    inclusive: bool = False
-    maximum: float | None = None
-    choices: tuple[str, ...] = ()
+    required: bool
+    default: Any
+    minimum: float | None
+    inclusive: bool
+    maximum: float | None
+    choices: tuple[str, ...]
+
+    def __init__(self, name: str, unit: str, doc: str, required: bool = True, default: Any = None,
+                 minimum: float | None = 0.0, inclusive: bool = False, maximum: float | None = None,
+                 choices: tuple[str, ...] = ()) -> None:
+        for field, value in zip(self._FIELDS, (name, unit, doc, required, default, minimum, inclusive, maximum,
+                                               choices)):
+            store(self, field, value)
 
 
-@dataclass(frozen=True)
-class Construction:
+class Construction(Frozen):
     """A built scene plus the map from public names to its step keys.
 
     ``solutions`` lists, for problems with several solutions, the answer→step-key map of each candidate in
@@ -64,16 +70,22 @@ class Construction:
     candidate is the textbook's choice. ``no_solution`` is the refusal when no candidate is valid.
     """
 
+    _FIELDS = ("scene", "answers", "points", "solutions", "warnings", "no_solution")
     scene: Scene
     answers: Mapping[str, str]
     points: Mapping[str, str]
-    solutions: tuple[Mapping[str, str], ...] = ()
-    warnings: tuple[str, ...] = ()
-    no_solution: str = ""
+    solutions: tuple[Mapping[str, str], ...]
+    warnings: tuple[str, ...]
+    no_solution: str
+
+    def __init__(self, scene: Scene, answers: Mapping[str, str], points: Mapping[str, str],
+                 solutions: tuple[Mapping[str, str], ...] = (), warnings: tuple[str, ...] = (),
+                 no_solution: str = "") -> None:
+        for field, value in zip(self._FIELDS, (scene, answers, points, solutions, warnings, no_solution)):
+            store(self, field, value)
 
 
-@dataclass(frozen=True)
-class Recipe:
+class Recipe(Frozen):
     """One textbook construction.
 
     Parameters
@@ -107,6 +119,8 @@ class Recipe:
         answers alone; they are listed right after ``validate``'s.
     """
 
+    _FIELDS = ("name", "title", "givens", "answers", "points", "construct", "analytic", "validate", "back_check",
+               "order", "advise")
     name: str
     title: str
     givens: tuple[Quantity, ...]
@@ -114,10 +128,22 @@ class Recipe:
     points: tuple[str, ...]
     construct: Callable[[Mapping[str, Any]], Construction]
     analytic: Callable[[Mapping[str, Any]], list[dict[str, float]]]
-    validate: Callable[[Mapping[str, Any]], list[str]] | None = None
-    back_check: Callable[[Mapping[str, Any], Mapping[str, float]], list[tuple[str, float, float, str]]] | None = None
-    order: Callable[[Mapping[str, float]], Any] | None = None
-    advise: Callable[[Mapping[str, Any]], list[str]] | None = None
+    validate: Callable[[Mapping[str, Any]], list[str]] | None
+    back_check: Callable[[Mapping[str, Any], Mapping[str, float]], list[tuple[str, float, float, str]]] | None
+    order: Callable[[Mapping[str, float]], Any] | None
+    advise: Callable[[Mapping[str, Any]], list[str]] | None
+
+    def __init__(self, name: str, title: str, givens: tuple[Quantity, ...], answers: tuple[Quantity, ...],
+                 points: tuple[str, ...], construct: Callable[[Mapping[str, Any]], Construction],
+                 analytic: Callable[[Mapping[str, Any]], list[dict[str, float]]],
+                 validate: Callable[[Mapping[str, Any]], list[str]] | None = None,
+                 back_check: Callable[[Mapping[str, Any], Mapping[str, float]],
+                                      list[tuple[str, float, float, str]]] | None = None,
+                 order: Callable[[Mapping[str, float]], Any] | None = None,
+                 advise: Callable[[Mapping[str, Any]], list[str]] | None = None) -> None:
+        for field, value in zip(self._FIELDS, (name, title, givens, answers, points, construct, analytic, validate,
+                                               back_check, order, advise)):
+            store(self, field, value)
 
     def given_names(self) -> tuple[str, ...]:
         """Names of all givens, required first."""

@@ -12,24 +12,31 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from ..geometry.primitives import Point, Segment
+from ..values import Frozen, store
 
-
-@dataclass(frozen=True, slots=True)
-class AngleMark:
+class AngleMark(Frozen):
     """The arc marking the angle at ``vertex`` from ray vertex→a to ray vertex→b (the smaller angle).
 
     ``radius`` is in model mm; None lets the renderer choose it.
     """
 
+    __slots__ = _FIELDS = ("vertex", "a", "b", "symbol", "value", "radius")
     vertex: Point
     a: Point
     b: Point
     symbol: str
     value: float
-    radius: float | None = None
+    radius: float | None
+
+    def __init__(self, vertex: Point, a: Point, b: Point, symbol: str, value: float, radius: float | None = None) -> None:
+        store(self, "vertex", vertex)
+        store(self, "a", a)
+        store(self, "b", b)
+        store(self, "symbol", symbol)
+        store(self, "value", value)
+        store(self, "radius", radius)
 
     @property
     def text(self) -> str:
@@ -44,24 +51,36 @@ class AngleMark:
         return f"{self.symbol}={self.value:.2f}°"
 
 
-@dataclass(frozen=True, slots=True)
-class RightAngleMark:
+class RightAngleMark(Frozen):
     """The small square marking a right angle at ``vertex`` between rays vertex→a and vertex→b."""
 
+    __slots__ = _FIELDS = ("vertex", "a", "b")
     vertex: Point
     a: Point
     b: Point
 
+    def __init__(self, vertex: Point, a: Point, b: Point) -> None:
+        store(self, "vertex", vertex)
+        store(self, "a", a)
+        store(self, "b", b)
 
-@dataclass(frozen=True, slots=True)
-class Dimension:
+
+class Dimension(Frozen):
     """A linear dimension of ``a``–``b`` drawn parallel to it, ``offset`` mm to the left of a→b."""
 
+    __slots__ = _FIELDS = ("a", "b", "symbol", "value", "offset")
     a: Point
     b: Point
     symbol: str
     value: float
     offset: float
+
+    def __init__(self, a: Point, b: Point, symbol: str, value: float, offset: float) -> None:
+        store(self, "a", a)
+        store(self, "b", b)
+        store(self, "symbol", symbol)
+        store(self, "value", value)
+        store(self, "offset", offset)
 
     @property
     def text(self) -> str:
@@ -69,38 +88,55 @@ class Dimension:
         return f"{self.symbol}={self.value:.2f}"
 
 
-@dataclass(frozen=True, slots=True)
-class Ground:
+class Ground(Frozen):
     """The hatched ground symbol of a fixed pivot at ``at``, the ground lying towards ``angle`` (rad)."""
 
+    __slots__ = _FIELDS = ("at", "angle")
     at: Point
-    angle: float = -math.pi / 2
+    angle: float
+
+    def __init__(self, at: Point, angle: float = -math.pi / 2) -> None:
+        store(self, "at", at)
+        store(self, "angle", angle)
 
 
-@dataclass(frozen=True, slots=True)
-class Slider:
+class Slider(Frozen):
     """A slider block centred at ``at`` moving along unit-free ``direction``."""
 
+    __slots__ = _FIELDS = ("at", "direction")
     at: Point
     direction: Point
 
+    def __init__(self, at: Point, direction: Point) -> None:
+        store(self, "at", at)
+        store(self, "direction", direction)
 
-@dataclass(frozen=True, slots=True)
-class Guide:
+
+class Guide(Frozen):
     """A straight guide from ``a`` to ``b`` hatched on its left (``side`` = +1) or right (−1)."""
 
+    __slots__ = _FIELDS = ("a", "b", "side")
     a: Point
     b: Point
-    side: int = -1
+    side: int
+
+    def __init__(self, a: Point, b: Point, side: int = -1) -> None:
+        store(self, "a", a)
+        store(self, "b", b)
+        store(self, "side", side)
 
 
-@dataclass(frozen=True, slots=True)
-class Bearing:
+class Bearing(Frozen):
     """The guide of a translating follower's stem: two short hatched bearing blocks either side of the stem,
     centred at ``at``, the stem running along ``direction`` (the same symbol for every cam)."""
 
+    __slots__ = _FIELDS = ("at", "direction")
     at: Point
     direction: Point
+
+    def __init__(self, at: Point, direction: Point) -> None:
+        store(self, "at", at)
+        store(self, "direction", direction)
 
 
 def bearing(at: Point, direction: Point) -> Bearing:
@@ -112,14 +148,19 @@ def bearing(at: Point, direction: Point) -> Bearing:
     return Bearing(at, direction)
 
 
-@dataclass(frozen=True, slots=True)
-class Rotation:
+class Rotation(Frozen):
     """The sense of rotation of a part turning about ``at`` (a cam's ω): an arc with an arrowhead,
     counter-clockwise for ``sense`` > 0, clockwise for ``sense`` < 0, marked ``symbol``."""
 
+    __slots__ = _FIELDS = ("at", "sense", "symbol")
     at: Point
     sense: float
-    symbol: str = "ω"
+    symbol: str
+
+    def __init__(self, at: Point, sense: float, symbol: str = "ω") -> None:
+        store(self, "at", at)
+        store(self, "sense", sense)
+        store(self, "symbol", symbol)
 
 
 def rotation(at: Point, sense: float, symbol: str = "ω") -> Rotation:
@@ -161,9 +202,11 @@ def right_angle(vertex: Point, a: Point, b: Point) -> RightAngleMark:
     return RightAngleMark(vertex, a, b)
 
 
-@dataclass(frozen=True, slots=True)
 class Vector(Segment):
-    """A vector of a velocity or acceleration polygon: the segment ``a → b`` drawn with an arrowhead at ``b``."""
+    """A vector of a velocity or acceleration polygon: the segment ``a → b`` drawn with an arrowhead at ``b``
+    (a :class:`Segment` in all but its name, as a frozen dataclass without fields of its own would be)."""
+
+    __slots__ = _FIELDS = ()
 
 
 def vector(a: Point, b: Point) -> Vector:
