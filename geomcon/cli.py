@@ -147,7 +147,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
 
-UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
+UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "count": "whole number", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
               "deg[]": "list, °", "[]": "list", "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s",
               "rad/s": "rad/s", "mm/s²": "mm/s²", "rad/s²": "rad/s²", "mm/s[]": "list, mm/s", "mm/s²[]": "list, mm/s²",
               "rad/s[]": "list, rad/s", "rad/s²[]": "list, rad/s²"}
