@@ -49,10 +49,12 @@ def _fail_write(where: str, exc: OSError) -> int:
 
 def _summary(sol, lang: str = "en") -> str:
     """The text a solve prints: the header, the results as the figure prints them (``θ = 12.506° (= analytic;
-    textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings (``警告：`` and the Chinese
-    sentence for zh, both for ``both``) and the steps evaluated."""
+    textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings as the figure words them
+    (``published θ = 25``, not the file's ``theta``; ``警告：`` and the Chinese sentence for zh, both for ``both``) and the steps evaluated."""
     from .render.results import result_line
-    from .render.warning_words import warning_zh
+    from .render.labels import plain_text
+    from .render.warning_words import printed_words, warning_zh
+    from .render.zh import zh_brackets
 
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
     lines += [f"  {line}" for line in sol.figure_lines(lang)]
@@ -76,9 +78,9 @@ def _summary(sol, lang: str = "en") -> str:
     for w in sol.warnings:
         words = warning_zh(w) if lang != "en" else None
         if lang != "zh" or words is None:
-            lines.append(f"  warning: {w}")
+            lines.append(f"  warning: {plain_text(zh_brackets(printed_words(w)))}")
         if words is not None:
-            lines.append(f"  警告：{words}")
+            lines.append(f"  警告：{plain_text(printed_words(words, zh=True))}")
     st = sol.stats
     lines.append(f"  steps evaluated {st['steps_evaluated']} of {st['steps_total']}")
     return "\n".join(lines)
