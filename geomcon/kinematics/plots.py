@@ -18,6 +18,8 @@ Examples
 from __future__ import annotations
 
 import math
+import re
+from typing import Sequence
 
 import numpy as np
 
@@ -204,10 +206,34 @@ def warning_block(r: CycleResult) -> list[str]:
     """
     if not r.warnings:
         return []
+    names = {q for w in r.warnings for q in re.findall(r"'([^']+)'", w)}
+    flat = {q: "".join(t for t, _ in _symbol(q)) for q in names}
     out = ["Warnings  警告"]
     for w in warning_lines(r.warnings, "both"):
+        for q in sorted(names, key=len, reverse=True):        # 'F.x' → xF, as the panel's heading names it
+            w = w.replace(f"'{q}'", flat[q]).replace(q, flat[q])
         out += wrap(w, AREA[2] - AREA[0], NOTE)
     return out
+
+
+def _symbol(q: str) -> Runs:
+    """The symbol of a quantity as its panel's heading prints it, without the unit (xF, φDC, γ between BC and DC)."""
+    obj, fld = parse_name(q)
+    if obj == "gamma":
+        return heading(q)[:1] + ((" between {} and {}".format(*fld.split(",")), False),)
+    return heading(q)[:2]
+
+
+def _typeset(line: str, names: Sequence[str]) -> Runs:
+    """A warning line as runs: the quantities' symbols (:func:`_symbol`) typeset, the rest as :func:`rich_runs`."""
+    flat = {"".join(t for t, _ in _symbol(q)): _symbol(q) for q in names}
+    out: list[tuple[str, bool]] = []
+    pos = 0
+    for m in (re.finditer("|".join(re.escape(f) for f in sorted(flat, key=len, reverse=True)), line) if flat else ()):
+        out += rich_runs(line[pos:m.start()]) if m.start() > pos else ()
+        out += flat[m.group(0)]
+        pos = m.end()
+    return tuple(out) + (rich_runs(line[pos:]) if pos < len(line) else ())
 
 
 def _heads(title: str, n: int, count: int) -> list[str]:
@@ -260,8 +286,9 @@ def cycle_plot_sheets(r: CycleResult) -> list[str]:
             y = y0 - GAP + 9.0 + 8.0
             g.add(text_el(block[0], AREA[0], y, LABEL, RED, bold=True, cls="warning-head"))
             y += 5.0
+            names = sorted({q for w in r.warnings for q in re.findall(r"'([^']+)'", w)})
             for line in block[1:]:
-                g.add(text_el(rich_runs(line), AREA[0], y, NOTE, RED, cls="warning"))
+                g.add(text_el(_typeset(line, names), AREA[0], y, NOTE, RED, cls="warning"))
                 y += WARN_LINE
             dwg.add(g)
         out.append(svg_string(dwg))
