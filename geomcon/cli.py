@@ -49,8 +49,8 @@ def _fail_write(where: str, exc: OSError) -> int:
 
 def _summary(sol, lang: str = "en") -> str:
     """The text a solve prints: the header, the results as the figure prints them (``θ = 12.506° (= analytic;
-    textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings (``警告：`` and the Chinese
-    sentence for zh, both for ``both``) and the steps evaluated."""
+    textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings as the figure words them
+    (``published θ = 25``, not the file's ``theta``; ``警告：`` and the Chinese sentence for zh, both for ``both``) and the steps evaluated."""
     from .render.results import result_line
 
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
@@ -72,14 +72,16 @@ def _summary(sol, lang: str = "en") -> str:
             shown = ("，" if zh else ", ").join(result_line(k, v, units.get(k, ""), lang="zh" if zh else "en",
                                                             recipe=sol.recipe.name) for k, v in other.items())
             lines.append(f"    {'解' if zh else 'solution'} {i}{'：' if zh else ': '}{shown}")
-    if sol.warnings and lang != "en":          # its rules are compiled when imported: only for a warning to say
-        from .render.warning_words import warning_zh
+    if sol.warnings:                           # their rules are compiled when imported: only for a warning to say
+        from .render.labels import plain_text
+        from .render.warning_words import printed_words, warning_zh
+        from .render.zh import zh_brackets
     for w in sol.warnings:
         words = warning_zh(w) if lang != "en" else None
         if lang != "zh" or words is None:
-            lines.append(f"  warning: {w}")
+            lines.append(f"  warning: {plain_text(zh_brackets(printed_words(w)))}")
         if words is not None:
-            lines.append(f"  警告：{words}")
+            lines.append(f"  警告：{plain_text(printed_words(words, zh=True))}")
     st = sol.stats
     lines.append(f"  steps evaluated {st['steps_evaluated']} of {st['steps_total']}")
     return "\n".join(lines)
@@ -149,7 +151,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
 
-UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
+UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "count": "whole number", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
               "deg[]": "list, °", "[]": "list", "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s",
               "rad/s": "rad/s", "mm/s²": "mm/s²", "rad/s²": "rad/s²", "mm/s[]": "list, mm/s", "mm/s²[]": "list, mm/s²",
               "rad/s[]": "list, rad/s", "rad/s²[]": "list, rad/s²"}

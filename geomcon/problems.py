@@ -58,6 +58,7 @@ RANGES = {
     "": (0.0, 1e6),              # ratios, angular speeds (rad/s), counts
     "mm/s": (0.0, 1e14),         # a follower's speed (printed answers only)
     "rad/s": (0.0, 1e6),         # an angular speed
+    "count": (0.0, 1e6),         # a whole number of parts (the recipe checks it is whole)
     "rad/s²": (0.0, 1e12),       # an angular acceleration
     "mm/s²": (0.0, 1e20),        # a follower's acceleration (printed answers only)
 }
@@ -208,7 +209,7 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
     return out
 
 
-_SCALAR_UNITS = ("mm", "deg", "", "mm/s", "rad/s", "rad/s²")
+_SCALAR_UNITS = ("mm", "deg", "", "count", "mm/s", "rad/s", "rad/s²")
 
 
 def _plain(q: Quantity, value: Any) -> float | None:

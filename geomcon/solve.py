@@ -618,8 +618,10 @@ class Solution:
 
     @property
     def stats(self) -> dict[str, int]:
-        """Steps in the scene and steps computed so far."""
-        return self.scene.stats
+        """Steps in the scene and steps computed so far — by the solve that found the answers: the drawing of
+        another valid solution (:meth:`as_solution`) reports the steps that evaluated every candidate, its own
+        among them (its scene, built again to draw it, has computed only the choice when the text is printed)."""
+        return self.__dict__.get("_answered_by", self).scene.stats
 
     def to_json(self) -> dict[str, Any]:
         """The public JSON object (angles in degrees, lengths in mm)."""
@@ -759,6 +761,7 @@ class Solution:
         cands = self._valid_candidates
         other.__dict__["_valid_candidates"] = [cands[n - 1]] + cands[:n - 1] + cands[n:]
         other._title_note = f" — solution {n} of {count}"
+        other.__dict__["_answered_by"] = self
         other.solution_numbers = [n] + [i for i in range(1, count + 1) if i != n]
         return other
 

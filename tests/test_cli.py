@@ -214,7 +214,7 @@ def test_a_printed_answer_beyond_drafting_accuracy_is_doubtful_in_text_json_and_
     assert main(["solve", str(p)]) == 0                   # a printed answer never fails the solve
     out = capsys.readouterr().out
     assert "θ = 12.506° (= analytic; textbook 25, +99.91 %, doubtful)" in out
-    assert "published theta = 25 is doubtful" in out
+    assert "published θ = 25 is doubtful" in out
     assert main(["solve", str(p), "--json", "--svg", str(tmp_path / "f.svg")]) == 0
     (pub,) = json.loads(capsys.readouterr().out)["published"]
     assert pub["doubtful"] is True and pub["rel_deviation"] == 0.9991
@@ -241,15 +241,15 @@ def test_the_summary_reads_as_the_figure_in_the_language_asked(tmp_path, capsys)
     assert main(["solve", str(p), "--lang", "en"]) == 0
     en = capsys.readouterr().out
     assert "  θ = 12.506° (= analytic; textbook 25, +99.91 %, doubtful)\n" in en and "✓ twin" not in en
-    assert "\n  theta =" not in en and "警告" not in en and "  warning: published theta = 25 is doubtful" in en
+    assert "\n  theta =" not in en and "警告" not in en and "  warning: published θ = 25 is doubtful" in en
     assert main(["solve", str(p), "--lang", "zh"]) == 0
     zh = capsys.readouterr().out
     assert "  极位夹角 θ = 12.506°（与解析解一致；教材 25，+99.91 %，存疑）" in zh
-    assert "  警告：教材答案 theta = 25 存疑：与精确值 12.506 相差 +99.91 %，超出作图精度（±3 %）" in zh
+    assert "  警告：教材答案 θ = 25 存疑：与精确值 12.506 相差 +99.91 %，超出作图精度（±3 %）" in zh
     assert "warning:" not in zh
     assert main(["solve", str(p)]) == 0                  # --lang both, the default
     both = capsys.readouterr().out
-    assert "warning: published theta = 25" in both and "警告：教材答案 theta = 25" in both
+    assert "warning: published θ = 25" in both and "警告：教材答案 θ = 25" in both
     assert main(["solve", str(p), "--json"]) == 0        # JSON keeps its keys and English warnings: a contract
     data = json.loads(capsys.readouterr().out)
     assert data["warnings"][0].startswith("published theta = 25 is doubtful") and "theta" in data["answers"]

@@ -23,6 +23,8 @@ from .dyads import PRP, RPR, RRP, RRR, OnLink
 from .quantities import value
 from .result import CycleResult, scale_of, unit_of
 from ..check import rounded
+from ..render.labels import plain_text
+from ..render.warning_words import warning_lines
 
 MAX_FRAMES = 360
 """Frames of the animation at most (the table's positions, thinned evenly)."""
@@ -194,6 +196,15 @@ svg { width: 100%; max-width: 900px; height: 70vh; border: 1px solid #d0d4d9; ba
 """
 
 
+def _warnings_html(r: CycleResult) -> list[str]:
+    """The Warnings block under the heading, as the plots' sheets print it (English, then Chinese); none
+    without warnings."""
+    if not r.warnings:
+        return []
+    items = "".join(f"<li>{html.escape(plain_text(w))}</li>" for w in warning_lines(r.warnings, "both"))
+    return [f'<div id="warnings" style="color: #c92a2a"><strong>Warnings  警告</strong><ul>{items}</ul></div>']
+
+
 def animation_html(r: CycleResult) -> str:
     """The page (deterministic: the data is rounded as every number geomcon writes)."""
     data = json.dumps(scene_data(r), ensure_ascii=False, separators=(",", ":"), sort_keys=True)
@@ -201,7 +212,7 @@ def animation_html(r: CycleResult) -> str:
     title = html.escape(f"{r.problem.id}: {r.problem.title or 'whole cycle'}")
     return "\n".join([
         "<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">', f"<title>{title}</title>",
-        f"<style>{STYLE}</style>", "</head>", "<body>", f"<h1>{title}</h1>",
+        f"<style>{STYLE}</style>", "</head>", "<body>", f"<h1>{title}</h1>", *_warnings_html(r),
         '<div><button id="play" type="button">pause</button> '
         '<input id="phi" type="range" min="0" value="0" step="1" aria-label="crank position"></div>',
         '<div id="readout"></div>', '<svg id="mech" xmlns="http://www.w3.org/2000/svg"></svg>',

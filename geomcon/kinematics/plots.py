@@ -18,13 +18,16 @@ Examples
 from __future__ import annotations
 
 import math
+import re
+from typing import Sequence
 
 import numpy as np
 
 from .quantities import parse_name, position_name, value
 from ..check import rounded
 from ..render.charts import Texts, axis_factor, box_of, chart_area, chart_sheet, factor_text, plain, runs_width, text_el
-from ..render.labels import text_width
+from ..render.labels import rich_runs, text_width, wrap
+from ..render.warning_words import warning_lines
 from ..render.serial import svg_string
 from ..render.zh import zh_brackets
 from .result import CycleResult, scale_of, unit_of
@@ -187,24 +190,88 @@ def _panel(dwg, texts: Texts, r: CycleResult, q: str, y0: float, x0: float, x1: 
             g.add(text_el(note, tx, ty, NOTE, RED, anchor=a, cls="extreme"))
 
 
+WARN_LINE = 1.4 * NOTE
+"""From one warning line to the next (mm on paper)."""
+
+
+def warning_block(r: CycleResult) -> list[str]:
+    """The lines of the Warnings block under the last panel: the heading, then each warning in English and
+    Chinese (a warning no rule translates stays English), wrapped to the chart area, as a drawing's sheet
+    prints them (:func:`~geomcon.render.warning_words.warning_lines`); none without warnings.
+
+    >>> from .problem import demo_problem
+    >>> from .result import solve_cycle
+    >>> warning_block(solve_cycle(demo_problem(step=5, columns=["C.x"])))
+    []
+    """
+    if not r.warnings:
+        return []
+    names = {q for w in r.warnings for q in re.findall(r"'([^']+)'", w)}
+    flat = {q: "".join(t for t, _ in _symbol(q)) for q in names}
+    out = ["Warnings  警告"]
+    for w in warning_lines(r.warnings, "both"):
+        for q in sorted(names, key=len, reverse=True):        # 'F.x' → xF, as the panel's heading names it
+            w = w.replace(f"'{q}'", flat[q]).replace(q, flat[q])
+        out += wrap(w, AREA[2] - AREA[0], NOTE)
+    return out
+
+
+def _symbol(q: str) -> Runs:
+    """The symbol of a quantity as its panel's heading prints it, without the unit (xF, φDC, γ between BC and DC)."""
+    obj, fld = parse_name(q)
+    if obj == "gamma":
+        return heading(q)[:1] + ((" between {} and {}".format(*fld.split(",")), False),)
+    return heading(q)[:2]
+
+
+def _typeset(line: str, names: Sequence[str]) -> Runs:
+    """A warning line as runs: the quantities' symbols (:func:`_symbol`) typeset, the rest as :func:`rich_runs`."""
+    flat = {"".join(t for t, _ in _symbol(q)): _symbol(q) for q in names}
+    out: list[tuple[str, bool]] = []
+    pos = 0
+    for m in (re.finditer("|".join(re.escape(f) for f in sorted(flat, key=len, reverse=True)), line) if flat else ()):
+        out += rich_runs(line[pos:m.start()]) if m.start() > pos else ()
+        out += flat[m.group(0)]
+        pos = m.end()
+    return tuple(out) + (rich_runs(line[pos:]) if pos < len(line) else ())
+
+
+def _heads(title: str, n: int, count: int) -> list[str]:
+    head = title if n == 0 else f"{title} (continued, {n + 1}/{count})"
+    return _wrap(head, AREA[2] - AREA[0], HEAD)                # never cut: a long title on a second line
+
+
+def _layout(r: CycleResult, title: str, block: list[str]) -> tuple[int, int]:
+    """(sheets, panels a sheet): :data:`PER_SHEET` panels at most on a sheet, and one sheet more when the
+    Warnings ``block`` does not fit under the last sheet's panels."""
+    cols = len(r.problem.columns)
+    count = max(1, math.ceil(cols / PER_SHEET))
+    while True:
+        per = math.ceil(cols / count) if cols else 0
+        last = max(0, cols - per * (count - 1))
+        bottom = AREA[1] + 4.0 + 5.0 * len(_heads(title, count - 1, count)) + 5.0 + last * (PANEL + GAP) - GAP + 9.0
+        if not block or bottom + 8.0 + 5.0 + WARN_LINE * (len(block) - 2) <= AREA[3]:
+            return count, per
+        count += 1
+
+
 def cycle_plot_sheets(r: CycleResult) -> list[str]:
     """One panel per table column against the crank angle, :data:`PER_SHEET` panels (at most) on each A4
     portrait sheet, the stationary points of a position quantity (and of the positions behind a velocity)
-    marked where they were found."""
+    marked where they were found; the warnings under the last panel (:func:`warning_block`)."""
     cols = list(r.problem.columns)
-    count = max(1, math.ceil(len(cols) / PER_SHEET))
-    per = math.ceil(len(cols) / count) if cols else 0
     phi = r.cycle.phi_deg
     x0, x1 = float(phi[0]), float(phi[-1])
     title = zh_brackets(r.problem.title or "Whole cycle")     # Slotting machine（插床）
     problem = r.problem.id + ".toml"
+    block = warning_block(r)
+    count, per = _layout(r, title, block)
     out = []
     for n in range(count):
         dwg = chart_sheet(title, problem, "cycle", n + 1, count)
         texts = Texts()
         y = AREA[1] + 4.0
-        head = title if n == 0 else f"{title} (continued, {n + 1}/{count})"
-        for line in _wrap(head, AREA[2] - AREA[0], HEAD):       # never cut: a long title on a second line
+        for line in _heads(title, n, count):
             dwg.add(text_el(line, AREA[0], y, HEAD, INK, bold=True, cls="chart-head"))
             texts.take(box_of(AREA[0], y, HEAD, text_width(line, HEAD) * 1.12))
             y += 5.0
@@ -214,6 +281,16 @@ def cycle_plot_sheets(r: CycleResult) -> list[str]:
             y0 += PANEL + GAP
         label = "crank angle φ (°)  曲柄转角"
         dwg.add(text_el(label, LEFT + PLOT_W, y0 - GAP + 9.0, NOTE, INK, anchor="end"))
+        if n == count - 1 and block:
+            g = dwg.g(id="warnings", class_="warnings")
+            y = y0 - GAP + 9.0 + 8.0
+            g.add(text_el(block[0], AREA[0], y, LABEL, RED, bold=True, cls="warning-head"))
+            y += 5.0
+            names = sorted({q for w in r.warnings for q in re.findall(r"'([^']+)'", w)})
+            for line in block[1:]:
+                g.add(text_el(_typeset(line, names), AREA[0], y, NOTE, RED, cls="warning"))
+                y += WARN_LINE
+            dwg.add(g)
         out.append(svg_string(dwg))
     return out
 

@@ -22,7 +22,8 @@ class Quantity(Frozen):
     name : str
         The public name (part of the contract: problem files and JSON use it).
     unit : str
-        ``"mm"``, ``"deg"``, ``""`` (a ratio), ``"choice"`` (one of ``choices``), ``"bool"``,
+        ``"mm"``, ``"deg"``, ``""`` (a ratio), ``"count"`` (a whole number), ``"rad/s"`` … (see
+        :data:`geomcon.problems.RANGES`), ``"choice"`` (one of ``choices``), ``"bool"``,
         ``"point"`` (``[x, y]`` in mm), ``"mm[]"`` / ``"deg[]"`` / ``"[]"`` (a list of numbers; answers of
         these units are tuples, checked element by element) or ``"table[]"`` (givens only: a list of
         tables, e.g. a cam's motion program, whose contents the recipe validates).

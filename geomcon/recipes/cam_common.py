@@ -54,7 +54,7 @@ TOL = Quantity("tolerance", "mm", "largest chord error of the sampled profile (d
 STRICT = Quantity("strict", "bool", f"strict profile tolerance ({STRICT_TOLERANCE_REL:g} of the cam's size: "
                   "1e-5 mm on a 100 mm cam)", required=False, default=False, minimum=None)
 
-OMEGA = Quantity("omega", "", "angular speed of the cam, rad/s (gives the follower's velocity and acceleration); "
+OMEGA = Quantity("omega", "rad/s", "angular speed of the cam, rad/s (gives the follower's velocity and acceleration); "
                  "0 < ω ≤ 1e4 rad/s (95 000 rpm)", required=False, maximum=1e4)
 SPEED_ANSWERS = (
     Quantity("v", "mm/s[]", "with omega: follower velocity ω·ds/dδ at the cam angles of `at` (> 0 moving away from O)"),

@@ -70,7 +70,7 @@ GIVENS = (
              required=False, default=0.0, minimum=None),
     Quantity("rotation", "choice", "sense of rotation of the cam", required=False, default="ccw", minimum=None,
              choices=("ccw", "cw")),
-    Quantity("omega", "", "angular speed of the cam, rad/s (gives the follower's velocity v); 0 < ω ≤ 1e4 rad/s "
+    Quantity("omega", "rad/s", "angular speed of the cam, rad/s (gives the follower's velocity v); 0 < ω ≤ 1e4 rad/s "
              "(95 000 rpm)", required=False, maximum=1e4),
     Quantity("delta", "deg", "state: cam angle turned from the lowest position", required=False, minimum=None),
     Quantity("A_angle", "deg", "state: polar angle of O→A in the figure (0: A right of O, OA ⊥ the guide)",

@@ -55,7 +55,7 @@ GIVENS = (
              required=False, maximum=90.0),
     Quantity("alpha_allow_return", "deg", "allowed pressure angle on the return (default alpha_allow), 0 < α ≤ 90°",
              required=False, maximum=90.0),
-    Quantity("divisions", "", "equal divisions of the rise and of the return in the drawing, a whole number from 1 "
+    Quantity("divisions", "count", "equal divisions of the rise and of the return in the drawing, a whole number from 1 "
              "to 24 (default: parts of at most 15°)", required=False, maximum=24.0),
     TOL,
     STRICT,

@@ -107,6 +107,16 @@ def rich_runs(text: str) -> Runs:
     return tuple(out)
 
 
+def plain_text(text: str) -> str:
+    """A caption as plain text (a terminal's): its runs joined, subscripts inline as the Results lines print
+    them (``γmin``).
+
+    >>> plain_text("α′_max of the return = 36.71° exceeds α_allow = 30°")
+    'α′max of the return = 36.71° exceeds αallow = 30°'
+    """
+    return "".join(s for s, _ in rich_runs(text))
+
+
 def char_em(ch: str) -> float:
     """Estimated advance of one character in em (Noto Sans CJK / DejaVu Sans metrics, rounded up)."""
     o = ord(ch)

@@ -6,7 +6,8 @@ in ``#step=N`` (the address follows the steps shown, so a step can be linked to)
 
 The replay is pure CSS: every step group and protocol entry carries ``data-step``; the script only sets
 the classes ``future`` (hidden) and ``current`` (highlighted) by comparing it with the current step. No
-network: no external script, style sheet or font. The page is polyglot markup: it parses as HTML and as XML
+network: no external script, style sheet or font. Printed, the page is the sheets as they are (every step, none
+highlighted), whatever step is shown (:data:`_PRINT_CSS`). The page is polyglot markup: it parses as HTML and as XML
 (void elements closed, the script in a CDATA section), so any XML tool can read it.
 
 Examples
@@ -43,6 +44,19 @@ body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fa
 #drawing .page + .page { border-top: 1px solid #ddd; }
 .future { display: none; }
 """
+
+_PRINT_CSS = """
+@media print {
+  #drawing .future { display: revert-layer; }
+  #drawing .current .ink { stroke: revert-layer; }
+  #drawing .current .dot, #drawing .current text { fill: revert-layer; }
+  #drawing text.stepcap { display: none; }
+}
+"""
+"""Printing the player prints the sheets as they are (``geomcon solve`` writes them), whatever step is shown:
+every step drawn, nothing highlighted, no step caption — a teacher who prints the player opened at step 1
+gets the whole construction, not point A. ``revert-layer`` undoes the replay rules of :data:`~.style.CSS`
+(the step's classes stay; the drawing's own presentation attributes come back)."""
 
 _SCRIPT = """
 (function () {
@@ -109,7 +123,7 @@ _PAGE = """<!DOCTYPE html>
 <meta charset="utf-8" />
 <meta name="viewport" content="width=device-width, initial-scale=1" />
 <title>%(title)s</title>
-<style>%(css)s%(print)s</style>
+<style>%(css)s%(print)s%(replay_print)s</style>
 </head>
 <body>
 <div id="bar">
@@ -208,6 +222,6 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     steps = json.dumps([[caption_html(s) for s in c] for c in step_captions(scene, page.lang)], ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
                                     for f in FONT_FAMILY.split(","))}
-    return _PAGE % {"title": html.escape(title or scene.title), "css": css, "print": print_css(page),
+    return _PAGE % {"title": html.escape(title or scene.title), "css": css, "print": print_css(page), "replay_print": _PRINT_CSS,
                     "lang": "zh-Hans" if page.lang == "zh" else "en", "n": len(scene.frames()), "svg": body,
                     "script": _SCRIPT % {"steps": steps}}

@@ -70,7 +70,7 @@ MAX_TOL_REL = 0.05
 """A variant whose drafting tolerance of an asked answer exceeds this fraction of the answer is rejected
 (issue 12: a careful drawing cannot determine it); ``max_tol_rel`` in an exercise narrows or widens it."""
 
-_SCALAR = ("mm", "deg", "", "mm/s", "mm/s²", "rad/s", "rad/s²")
+_SCALAR = ("mm", "deg", "", "count", "mm/s", "mm/s²", "rad/s", "rad/s²")
 """Units of a number a variant gives or a student answers (the rest: points, lists, choices, programs)."""
 _ANSWER_REF = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d{1,4})\])?$")
 _PLACEHOLDER = re.compile(r"\{([^{}]*)\}")
