@@ -147,13 +147,22 @@ def _preload() -> None:
     without a byte-code cache compile, every module it needs again): the renderer, the cams' diagrams and twin,
     every recipe. What one job alone uses (the worksheet and grading modules of :func:`_classwork`, the
     kinematics and bench modules of :func:`_kinematics`) is left to the worker that runs it: imported there, it
-    runs beside the other workers' jobs instead of before every job."""
+    runs beside the other workers' jobs instead of before every job. What every worker decided once on its first
+    use is decided here too: the installed version the title blocks print (``importlib.metadata``, ~12 ms a
+    process) and whether numpy's power and inverse trigonometry are libm's (``numpy.random``, ~10 ms); and
+    ``numpy.ma``, which ``np.unique`` imports on its first call (the placer's clearance counts)."""
+    import numpy.ma  # noqa: F401
     from .analytic import cam_motion  # noqa: F401
-    from .cam import diagrams  # noqa: F401
+    from .cam import arm_alpha, diagrams  # noqa: F401
+    from .cam.profile import numpy_is_libm
     from .recipes import RECIPES
-    from .render import player, results, svg, warning_words  # noqa: F401
+    from .render import detail, free_area, player, results, svg, warning_words  # noqa: F401
+    from .render.page import version
     for name in RECIPES:
         RECIPES[name]
+    version()
+    for name in ("power", "arctan2", "arccos", "arcsin"):
+        numpy_is_libm(name)
 
 
 EXPECTED_MS = {"_classwork": 1332, "_kinematics": 334, "law_diagrams": 46, "_best_table": 17,
