@@ -38,13 +38,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Mapping
+from typing import TYPE_CHECKING, Any, Mapping
 
 from ..errors import GeomconError
 from .expr import parse
 from .keyfile import Answer, ExerciseKey
 from .mistakes import mistakes_of
 from .replay import Variant
+
+if TYPE_CHECKING:
+    from ..solve import Solution
 
 SCALES = (2.0, 2.5, 5.0, 10.0)
 SHARED = ("other_branch", "swapped", "degrees_radians", "scale", "sign", "rounding")
@@ -142,12 +145,13 @@ def _shared(ex: ExerciseKey, a: Answer) -> list[Alt]:
     return out
 
 
-def prepare(ex: ExerciseKey) -> Prepared:
+def prepare(ex: ExerciseKey, solved: Solution | None = None) -> Prepared:
     """The alternatives of every answer of one exercise of one variant (see the module). A variant the recipe
-    no longer solves is graded without diagnoses (``problem`` says why)."""
+    no longer solves is graded without diagnoses (``problem`` says why). ``solved``: the variant's solution
+    when it is at hand (the worksheet judged it: :meth:`.replay.Variant.of` uses it instead of solving again)."""
     found: dict[str, list[Alt]] = {a.column: [] for a in ex.answers}
     try:
-        var = Variant.of(ex.recipe, ex.given)
+        var = Variant.of(ex.recipe, ex.given, solved)
     except GeomconError as exc:
         shared = {a.column: tuple(_keep(a, _shared(ex, a))) for a in ex.answers}
         return Prepared(ex, shared, {}, None, {}, f"variant not solved again: {exc}")

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import csv
 import io
+from typing import Any
 
 from .diagnosis import Prepared, prepare
 from .keyfile import Answer, Key
@@ -125,6 +126,21 @@ def synthetic_answers(key: Key, *, rows: int | None = None, ids: list[str] | Non
     return buf.getvalue()
 
 
+def judged(key: Key, assignment: Any) -> dict[tuple[str, int], Prepared]:
+    """Every variant of ``key`` prepared for grading (:func:`.diagnosis.prepare`) from the solution that judging
+    it for the worksheet built (``assignment``: the :class:`~geomcon.worksheet.assign.Assignment` the key was
+    written from), keyed as :func:`geomcon.grading.grade` keys them: each variant is solved once, for the key,
+    the answers, the grades and the Moodle bank's givens figures."""
+    out: dict[tuple[str, int], Prepared] = {}
+    for student, row in zip(assignment.students, assignment.variants):
+        s = key.students[student.id]
+        for ex, acc in zip(s.exercises, row):
+            k = (s.variant or s.id, ex.n)
+            if k not in out:
+                out[k] = prepare(ex, acc.solved.sol if acc.solved is not None else None)
+    return out
+
+
 def gallery_files(students: int = 8) -> dict[str, str]:
     """The gallery's graded example: the key of :data:`CLASS_SPEC` for ``students`` students, a synthetic
     class's answers, the grades (CSV and JSON), the class report, one student's feedback and the Moodle bank."""
@@ -135,13 +151,14 @@ def gallery_files(students: int = 8) -> dict[str, str]:
     from .moodle import moodle_xml
     from .report import report_html
     from .tables import grades_csv, grades_json
-    from ..worksheet import make_key
+    from ..worksheet import key_and_assignment
     from ..worksheet.roster import numbered
     from ..worksheet.spec import parse_spec
 
-    key_text = make_key(parse_spec(CLASS_SPEC), numbered(students))   # the key alone: its pages are not shown
+    key_text, assignment = key_and_assignment(parse_spec(CLASS_SPEC), numbered(students))   # its pages not shown
     key = key_from_json(key_text)
-    prepared: dict = {}                     # each variant's mistakes, computed once for answers, grades and bank
+    # each variant's mistakes, computed once for answers, grades and bank, from the solution judging it built
+    prepared = judged(key, assignment)
     answers = synthetic_answers(key, cache=prepared)
     book = grade(key, read_answers(answers.encode()), cache=prepared)
     return {"grading_key.json": key_text, "grading_answers.csv": answers, "grading_grades.csv": grades_csv(book),
@@ -150,4 +167,4 @@ def gallery_files(students: int = 8) -> dict[str, str]:
             "grading_bank.xml": moodle_xml(key, cache=prepared)}
 
 
-__all__ = ["CLASS_SPEC", "WAYS", "gallery_files", "synthetic_answers"]
+__all__ = ["CLASS_SPEC", "WAYS", "gallery_files", "judged", "synthetic_answers"]

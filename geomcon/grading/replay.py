@@ -23,7 +23,7 @@ from typing import Any, Callable, Iterable, Mapping
 from ..scene.scene import Scene
 from ..scene.step import Ref
 from ..solve import Solution
-from ..worksheet.solving import chosen_map, solve_given
+from ..worksheet.solving import chosen_map, same_given, solve_given
 
 
 class _Other:
@@ -54,9 +54,11 @@ class Variant:
     candidates: tuple[Mapping[str, str], ...]
 
     @classmethod
-    def of(cls, recipe: str, given: Mapping[str, Any]) -> Variant:
-        """Solve ``given`` (validated as a problem file's givens) and complete its scene."""
-        sol = solve_given(recipe, given)
+    def of(cls, recipe: str, given: Mapping[str, Any], solved: Solution | None = None) -> Variant:
+        """Solve ``given`` (validated as a problem file's givens) and complete its scene. ``solved``: a solution
+        of the same recipe already at hand (the worksheet's judged variant); it is used, not solved again, when
+        its givens are ``given`` validated (:func:`~geomcon.worksheet.solving.same_given`)."""
+        sol = solved if solved is not None and same_given(solved, recipe, given) else solve_given(recipe, given)
         chosen = dict(chosen_map(sol))
         sc = sol.construction.scene.complete()
         return cls(sol, sc, chosen, tuple(sol.construction.solutions))

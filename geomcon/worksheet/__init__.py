@@ -94,7 +94,15 @@ def make_key(spec: Spec, students: Sequence[Student], *, paper: str = "A4", lang
     >>> make_key(spec, numbered(2)) == make_worksheet(spec, numbered(2)).files["key.json"]
     True
     """
-    return key_json(spec, _assigned(spec, students, paper, lang, seed), paper=paper, lang=lang, seed=seed)
+    return key_and_assignment(spec, students, paper=paper, lang=lang, seed=seed)[0]
+
+
+def key_and_assignment(spec: Spec, students: Sequence[Student], *, paper: str = "A4", lang: str = "both",
+                       seed: int | str | None = None) -> tuple[str, Assignment]:
+    """:func:`make_key`'s text and the assignment it was written from (each accepted variant holds the solution
+    its judging built: grading the key's variants can use them instead of solving each again)."""
+    a = _assigned(spec, students, paper, lang, seed)
+    return key_json(spec, a, paper=paper, lang=lang, seed=seed), a
 
 
 def _assigned(spec: Spec, students: Sequence[Student], paper: str, lang: str,
@@ -107,4 +115,4 @@ def _assigned(spec: Spec, students: Sequence[Student], paper: str, lang: str,
     return assign(spec, students, PAPERS[paper], seed)
 
 
-__all__ = ["LANGS", "Worksheet", "make_key", "make_worksheet"]
+__all__ = ["LANGS", "Worksheet", "key_and_assignment", "make_key", "make_worksheet"]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping, Sequence
 
-from ..errors import NotAMechanism
+from ..errors import GeomconError, NotAMechanism
 from ..problems import Problem, validate_given
 from ..recipes import get_recipe
 from ..solve import Solution, solve
@@ -30,6 +30,24 @@ def solve_given(recipe: str, given: Mapping[str, Any]) -> Solution:
     rec = get_recipe(recipe)
     raw = {k: _raw(v) for k, v in given.items() if v is not None}      # a problem's normalised givens, as a file's
     return solve(Problem(id=recipe, recipe=rec.name, given=validate_given(rec, raw)))
+
+
+def same_given(sol: Solution, recipe: str, given: Mapping[str, Any]) -> bool:
+    """Whether ``sol`` is the solution :func:`solve_given` builds for ``recipe`` and ``given``: the same recipe
+    and the same givens once validated (a key's givens come back from JSON as lists and ints; validated, they
+    are the judged variant's).
+
+    >>> sol = solve_given("guide_bar.extremes", {"AB": 145.0, "AC": 290})
+    >>> same_given(sol, "guide_bar.extremes", {"AB": 145, "AC": 290.0}), same_given(sol, "guide_bar.extremes", {"AB": 140, "AC": 290})
+    (True, False)
+    """
+    rec = get_recipe(recipe)
+    if sol.recipe.name != rec.name:
+        return False
+    try:
+        return dict(sol.problem.given) == validate_given(rec, {k: _raw(v) for k, v in given.items() if v is not None})
+    except GeomconError:
+        return False
 
 
 def _raw(value: Any) -> Any:
@@ -87,4 +105,4 @@ def chosen_map(sol: Solution) -> Mapping[str, str]:
     return maps[0] if maps else c.answers
 
 
-__all__ = ["chosen_map", "read", "solve_given"]
+__all__ = ["chosen_map", "read", "same_given", "solve_given"]
