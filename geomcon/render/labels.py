@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import functools
 import re
+from itertools import chain
 
 Runs = tuple[tuple[str, bool], ...]
 
@@ -134,15 +135,16 @@ def text_width(text: str | Runs, size: float) -> float:
     >>> text_width("C1", 3.0) == 0.66 * 3.0 * 1.0 + 0.56 * 3.0 * 1.0
     True
     """
-    runs = ((text, False),) if isinstance(text, str) else text
-    terms: list[float] = []
-    for s, sub in runs:
-        terms += _advances(s, size, sub)
-    return sum(terms)
+    if isinstance(text, str):
+        return sum(_advances(text, size, False))
+    if len(text) == 1:
+        return sum(_advances(text[0][0], size, text[0][1]))
+    return sum(chain.from_iterable(_advances(s, size, sub) for s, sub in text))
 
 
 def _advances(s: str, size: float, sub: bool) -> list[float]:
-    """Each character's term of :func:`text_width`, from a table by (size, subscript)."""
+    """Each character's term of :func:`text_width`, from a table by (size, subscript): each glyph's advance is
+    computed once (:func:`char_em`), then looked up."""
     table = _ADVANCES.get((size, sub))
     if table is None:
         table = _ADVANCES[size, sub] = {}
@@ -249,22 +251,24 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
     return list(_wrap(text, width, size, last_reserve))
 
 
-@functools.lru_cache(maxsize=4096)
+@functools.lru_cache(maxsize=16384)
 def _wrap(text: str, width: float, size: float, last_reserve: float) -> tuple[str, ...]:
-    """:func:`wrap`, remembered: every frame of a replay wraps the same captions."""
+    """:func:`wrap`, remembered: every frame of a replay wraps the same captions, and a sheet's layout measures
+    the same result lines at each width it tries (a gallery wraps about 8000 distinct texts and widths, each
+    once). A line takes tokens while their full-size widths (:func:`_measured`) fit; only a token that may
+    overflow is measured exactly, with the line's subscripts."""
     lines: list[str] = []
     cur = ""
     full = 0.0          # the width of cur with every character full size: at least its width
-    for tok in _tokens(text):
-        body = tok.rstrip()
-        if (cur.strip() and full + sum(_advances(body, size, False)) > width - 1e-6
+    for tok, body, w_tok, w_body, head, w_head in _measured(text, size):
+        if (cur.strip() and full + w_body > width - 1e-6
                 and text_width(rich_runs(cur + body), size) > width):
             lines.append(cur.rstrip())
-            cur = tok.lstrip()
-            full = sum(_advances(cur, size, False))
+            cur = head
+            full = w_head
         else:
             cur += tok
-            full += sum(_advances(tok, size, False))
+            full += w_tok
     lines.append(cur.rstrip())
     if last_reserve and len(lines[-1]) and text_width(rich_runs(lines[-1]), size) + last_reserve > width:
         toks = _tokens(lines[-1])                 # its last word (a formula whole) goes to a line of its own
@@ -273,3 +277,20 @@ def _wrap(text: str, width: float, size: float, last_reserve: float) -> tuple[st
         else:
             lines.append("")
     return tuple(lines)
+
+
+@functools.lru_cache(maxsize=8192)
+def _measured(text: str, size: float) -> tuple[tuple[str, str, float, float, str, float], ...]:
+    """The tokens of ``text`` (:func:`_tokens`), each with what :func:`_wrap` needs of it, measured once for all
+    widths: (token, token without trailing space, their full-size widths, token without leading space, its
+    width). A width is the sum of :func:`_advances`, as :func:`_wrap` always added them.
+
+    >>> [m[:2] for m in _measured("one two", 2.7)]
+    [('one ', 'one'), ('two', 'two')]
+    """
+    out = []
+    for tok in _tokens(text):
+        body, head = tok.rstrip(), tok.lstrip()
+        out.append((tok, body, sum(_advances(tok, size, False)), sum(_advances(body, size, False)),
+                    head, sum(_advances(head, size, False))))
+    return tuple(out)
