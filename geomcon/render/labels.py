@@ -24,6 +24,8 @@ import functools
 import re
 from itertools import chain
 
+from .zh_words import words
+
 Runs = tuple[tuple[str, bool], ...]
 
 _LABEL = re.compile(r"^([^\d]+?)(\d+(?:,\d+)*)([′″‴'*]*)$")
@@ -173,30 +175,55 @@ _WIDE: dict[str, bool] = {}
 
 
 def _tokens(s: str) -> list[str]:
-    """Breakable pieces: Latin words with their trailing space, single CJK characters (closing punctuation
-    stays with the character before it)."""
+    """Breakable pieces: Latin words with their trailing space, Chinese words (:func:`.zh_words.words`: a line
+    breaks between words, never inside one), single other CJK characters; closing punctuation stays with the
+    piece before it, opening punctuation with the piece after it.
+
+    >>> _tokens("以 A 为圆心作曲柄圆（半径 AB），交于 C1")
+    ['以 ', 'A ', '为', '圆心', '作', '曲柄', '圆', '（半径 ', 'AB），', '交', '于 ', 'C1']
+    """
     out: list[str] = []
     word = ""
-    for ch in s:
-        cjk = _wide(ch)
-        if cjk and ch in _CLOSING:
-            word += ch
+    for unit in _units(s):
+        cjk = _wide(unit[0])
+        if cjk and unit in _CLOSING:
+            word += unit
         elif cjk:
             if word and word[-1] not in _OPENING:       # an opening mark stays with the character after it
                 out.append(word)
                 word = ""
-            word += ch
-        elif ch == " ":
+            word += unit
+        elif unit == " ":
             out.append(word + " ")
             word = ""
         else:
-            if word and _wide(word[-1]) and word[-1] not in _CLOSING + _OPENING:
+            if word and _wide(word[-1]) and word[-1] not in _CLOSING + _OPENING and unit not in _CLOSING:
                 out.append(word)
                 word = ""
-            word += ch
+            word += unit
     if word:
         out.append(word)
     return _glued(out)
+
+
+_HAN = re.compile("[\u3400-\u9fff\uf900-\ufaff]+|.", re.S)
+"""A run of Chinese ideographs, or any other single character."""
+
+
+def _units(s: str) -> list[str]:
+    """The characters of ``s``, but each run of Chinese ideographs cut into its words (:func:`.zh_words.words`).
+
+    >>> _units("取曲柄长 AB")
+    ['取', '曲柄', '长', ' ', 'A', 'B']
+    """
+    out: list[str] = []
+    for m in _HAN.finditer(s):
+        u = m.group()
+        if len(u) > 1:
+            out += words(u)
+        else:
+            out.append(u)
+    return out
 
 
 _OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
@@ -204,10 +231,14 @@ _OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
 
 
 def _glued(tokens: list[str]) -> list[str]:
-    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side.
+    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side, and
+    every token that begins with a mark no line may begin with (closing punctuation, an ellipsis, a per cent
+    sign: :data:`_NO_START`) joined to the token before it, even across a space.
 
     >>> _glued(["(at ", "δ ", "= ", "5°)"])
     ['(at ', 'δ = 5°)']
+    >>> _glued(["1, ", "2, ", "…", "（即"]), _glued(["0.00 ", "%）"])
+    (['1, ', '2, …', '（即'], ['0.00 %）'])
     """
     out: list[str] = []
     glue = False
@@ -215,7 +246,7 @@ def _glued(tokens: list[str]) -> list[str]:
         if out and t.strip() in _OPERATORS:
             out[-1] += t
             glue = True
-        elif glue:
+        elif glue or (out and t[:1] in _NO_START):
             out[-1] += t
             glue = False
         else:
@@ -223,30 +254,34 @@ def _glued(tokens: list[str]) -> list[str]:
     return out
 
 
-_OPENING = "（「『《【"
+_OPENING = "（「『《【“‘"
 """Punctuation that never ends a line: it stays with the character after it."""
-_CLOSING = "，。、；：）」』！？》】,;:)!?"
+_CLOSING = "，。、；：）」』！？》】”’…,;:)!?"
 """Punctuation that never begins a line: it stays with the character before it (full-width forms, which Chinese
-text uses, and their ASCII twins)."""
+text uses, the ellipsis, and their ASCII twins)."""
+_NO_START = _CLOSING + "%‰"
+"""What never begins a line, even after a space: closing punctuation and the per cent signs ("0.00 %）")."""
 
 
 def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> list[str]:
     """Split ``text`` into lines no wider than ``width`` (estimated, paper mm at font ``size``).
 
-    Latin text breaks at spaces, but not beside an operator set between spaces (``=``, ``+``, ``−`` …), CJK text
-    between characters, but not after an opening mark nor before a closing one. ``last_reserve`` keeps room at the end of
-    the last line (for a value appended later).
+    Latin text breaks at spaces, but not beside an operator set between spaces (``=``, ``+``, ``−`` …), Chinese text
+    between words (:mod:`.zh_words`), other CJK text between characters, but not after an opening mark nor before a
+    closing one. ``last_reserve`` keeps room at the end of the last line (for a value appended later).
 
     Examples
     --------
-    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)      # a formula is not broken at its operators
-    ['以 A 为圆', '心、BC − AB = 20', '为半径作圆']
+    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)      # a formula is not broken at its operators, nor 圆心
+    ['以 A 为', '圆心、BC − AB = 20', '为半径作圆']
     >>> wrap("速度突降，刚性冲击）", 21.6, 2.4)        # a closing mark never starts a line
-    ['速度突降，刚性冲', '击）']
+    ['速度突降，刚性', '冲击）']
     >>> wrap("With K = 1.2: θ = 180°(K − 1)/(K + 1)", 60.0, 3.5, last_reserve=20.0)    # room for " = 16.364°"
     ['With K = 1.2:', 'θ = 180°(K − 1)/(K + 1)']
     >>> wrap("运动失真（根切）：否", 12.0, 2.4)         # an opening mark never ends one
     ['运动失真', '（根切）：', '否']
+    >>> wrap("以 A 为圆心、曲柄长为半径作圆", 16.0, 2.4)      # nor a word: 曲柄 stays whole
+    ['以 A 为圆心、', '曲柄长为半径', '作圆']
     """
     return list(_wrap(text, width, size, last_reserve))
 
