@@ -182,7 +182,13 @@ def _tokens(s: str) -> list[str]:
     >>> _tokens("以 A 为圆心作曲柄圆（半径 AB），交于 C1")
     ['以 ', 'A ', '为', '圆心', '作', '曲柄', '圆', '（半径 ', 'AB），', '交', '于 ', 'C1']
     """
-    out: list[str] = []
+    if _ANY_WIDE.search(s) is None:                 # Latin only: words with their trailing space
+        parts = s.split(" ")
+        out = [p + " " for p in parts[:-1]]
+        if parts[-1]:
+            out.append(parts[-1])
+        return _glued(out)
+    out = []
     word = ""
     for unit in _units(s):
         cjk = _wide(unit[0])
@@ -206,8 +212,10 @@ def _tokens(s: str) -> list[str]:
     return _glued(out)
 
 
-_HAN = re.compile("[\u3400-\u9fff\uf900-\ufaff]+|.", re.S)
-"""A run of Chinese ideographs, or any other single character."""
+_HAN = re.compile("([\u3400-\u9fff\uf900-\ufaff]+)|[^\u3400-\u9fff\uf900-\ufaff]+")
+"""A run of Chinese ideographs (group 1), or a run of other characters."""
+_ANY_WIDE = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef]")
+"""A CJK character (:func:`_wide`: 1 em wide)."""
 
 
 def _units(s: str) -> list[str]:
@@ -218,11 +226,7 @@ def _units(s: str) -> list[str]:
     """
     out: list[str] = []
     for m in _HAN.finditer(s):
-        u = m.group()
-        if len(u) > 1:
-            out += words(u)
-        else:
-            out.append(u)
+        out += words(m.group()) if m.group(1) else m.group()
     return out
 
 
@@ -323,9 +327,11 @@ def _measured(text: str, size: float) -> tuple[tuple[str, str, float, float, str
     >>> [m[:2] for m in _measured("one two", 2.7)]
     [('one ', 'one'), ('two', 'two')]
     """
-    out = []
+    adv = _advances(text, size, False)                 # "".join(_tokens(text)) == text
+    out, at = [], 0
     for tok in _tokens(text):
-        body, head = tok.rstrip(), tok.lstrip()
-        out.append((tok, body, sum(_advances(tok, size, False)), sum(_advances(body, size, False)),
-                    head, sum(_advances(head, size, False))))
+        n, body, head = len(tok), tok.rstrip(), tok.lstrip()
+        out.append((tok, body, sum(adv[at:at + n]), sum(adv[at:at + len(body)]),
+                    head, sum(adv[at + n - len(head):at + n])))
+        at += n
     return tuple(out)
