@@ -14,6 +14,7 @@ import pytest
 from geomcon.gallery import _classwork, gallery_page, problem_files
 from geomcon.problems import load_problem
 from geomcon.render import labels
+from geomcon.render.protocol import _info_lines
 from geomcon.render.zh_words import SINGLE, WORDS, is_ideograph, words
 from geomcon.solve import solve
 
@@ -36,6 +37,7 @@ def wrapped() -> dict[str, set[tuple[str, ...]]]:
         return out
 
     labels._wrap = record
+    _info_lines.cache_clear()               # result lines wrapped by earlier tests come back through wrap()
     try:
         for path in problem_files(PROBLEMS):
             sol = solve(load_problem(path))
