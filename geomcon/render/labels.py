@@ -22,6 +22,9 @@ from __future__ import annotations
 
 import functools
 import re
+from itertools import chain
+
+from .zh_words import words
 
 Runs = tuple[tuple[str, bool], ...]
 
@@ -144,15 +147,16 @@ def text_width(text: str | Runs, size: float) -> float:
     >>> text_width("C1", 3.0) == 0.66 * 3.0 * 1.0 + 0.56 * 3.0 * 1.0
     True
     """
-    runs = ((text, False),) if isinstance(text, str) else text
-    terms: list[float] = []
-    for s, sub in runs:
-        terms += _advances(s, size, sub)
-    return sum(terms)
+    if isinstance(text, str):
+        return sum(_advances(text, size, False))
+    if len(text) == 1:
+        return sum(_advances(text[0][0], size, text[0][1]))
+    return sum(chain.from_iterable(_advances(s, size, sub) for s, sub in text))
 
 
 def _advances(s: str, size: float, sub: bool) -> list[float]:
-    """Each character's term of :func:`text_width`, from a table by (size, subscript)."""
+    """Each character's term of :func:`text_width`, from a table by (size, subscript): each glyph's advance is
+    computed once (:func:`char_em`), then looked up."""
     table = _ADVANCES.get((size, sub))
     if table is None:
         table = _ADVANCES[size, sub] = {}
@@ -181,30 +185,59 @@ _WIDE: dict[str, bool] = {}
 
 
 def _tokens(s: str) -> list[str]:
-    """Breakable pieces: Latin words with their trailing space, single CJK characters (closing punctuation
-    stays with the character before it)."""
-    out: list[str] = []
+    """Breakable pieces: Latin words with their trailing space, Chinese words (:func:`.zh_words.words`: a line
+    breaks between words, never inside one), single other CJK characters; closing punctuation stays with the
+    piece before it, opening punctuation with the piece after it.
+
+    >>> _tokens("以 A 为圆心作曲柄圆（半径 AB），交于 C1")
+    ['以 ', 'A ', '为', '圆心', '作', '曲柄', '圆', '（半径 ', 'AB），', '交', '于 ', 'C1']
+    """
+    if _ANY_WIDE.search(s) is None:                 # Latin only: words with their trailing space
+        parts = s.split(" ")
+        out = [p + " " for p in parts[:-1]]
+        if parts[-1]:
+            out.append(parts[-1])
+        return _glued(out)
+    out = []
     word = ""
-    for ch in s:
-        cjk = _wide(ch)
-        if cjk and ch in _CLOSING:
-            word += ch
+    for unit in _units(s):
+        cjk = _wide(unit[0])
+        if cjk and unit in _CLOSING:
+            word += unit
         elif cjk:
             if word and word[-1] not in _OPENING:       # an opening mark stays with the character after it
                 out.append(word)
                 word = ""
-            word += ch
-        elif ch == " ":
+            word += unit
+        elif unit == " ":
             out.append(word + " ")
             word = ""
         else:
-            if word and _wide(word[-1]) and word[-1] not in _CLOSING + _OPENING:
+            if word and _wide(word[-1]) and word[-1] not in _CLOSING + _OPENING and unit not in _CLOSING:
                 out.append(word)
                 word = ""
-            word += ch
+            word += unit
     if word:
         out.append(word)
     return _glued(out)
+
+
+_HAN = re.compile("([\u3400-\u9fff\uf900-\ufaff]+)|[^\u3400-\u9fff\uf900-\ufaff]+")
+"""A run of Chinese ideographs (group 1), or a run of other characters."""
+_ANY_WIDE = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef]")
+"""A CJK character (:func:`_wide`: 1 em wide)."""
+
+
+def _units(s: str) -> list[str]:
+    """The characters of ``s``, but each run of Chinese ideographs cut into its words (:func:`.zh_words.words`).
+
+    >>> _units("取曲柄长 AB")
+    ['取', '曲柄', '长', ' ', 'A', 'B']
+    """
+    out: list[str] = []
+    for m in _HAN.finditer(s):
+        out += words(m.group()) if m.group(1) else m.group()
+    return out
 
 
 _OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
@@ -212,10 +245,14 @@ _OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
 
 
 def _glued(tokens: list[str]) -> list[str]:
-    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side.
+    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side, and
+    every token that begins with a mark no line may begin with (closing punctuation, an ellipsis, a per cent
+    sign: :data:`_NO_START`) joined to the token before it, even across a space.
 
     >>> _glued(["(at ", "δ ", "= ", "5°)"])
     ['(at ', 'δ = 5°)']
+    >>> _glued(["1, ", "2, ", "…", "（即"]), _glued(["0.00 ", "%）"])
+    (['1, ', '2, …', '（即'], ['0.00 %）'])
     """
     out: list[str] = []
     glue = False
@@ -223,7 +260,7 @@ def _glued(tokens: list[str]) -> list[str]:
         if out and t.strip() in _OPERATORS:
             out[-1] += t
             glue = True
-        elif glue:
+        elif glue or (out and t[:1] in _NO_START):
             out[-1] += t
             glue = False
         else:
@@ -231,50 +268,56 @@ def _glued(tokens: list[str]) -> list[str]:
     return out
 
 
-_OPENING = "（「『《【"
+_OPENING = "（「『《【“‘"
 """Punctuation that never ends a line: it stays with the character after it."""
-_CLOSING = "，。、；：）」』！？》】,;:)!?"
+_CLOSING = "，。、；：）」』！？》】”’…,;:)!?"
 """Punctuation that never begins a line: it stays with the character before it (full-width forms, which Chinese
-text uses, and their ASCII twins)."""
+text uses, the ellipsis, and their ASCII twins)."""
+_NO_START = _CLOSING + "%‰"
+"""What never begins a line, even after a space: closing punctuation and the per cent signs ("0.00 %）")."""
 
 
 def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> list[str]:
     """Split ``text`` into lines no wider than ``width`` (estimated, paper mm at font ``size``).
 
-    Latin text breaks at spaces, but not beside an operator set between spaces (``=``, ``+``, ``−`` …), CJK text
-    between characters, but not after an opening mark nor before a closing one. ``last_reserve`` keeps room at the end of
-    the last line (for a value appended later).
+    Latin text breaks at spaces, but not beside an operator set between spaces (``=``, ``+``, ``−`` …), Chinese text
+    between words (:mod:`.zh_words`), other CJK text between characters, but not after an opening mark nor before a
+    closing one. ``last_reserve`` keeps room at the end of the last line (for a value appended later).
 
     Examples
     --------
-    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)      # a formula is not broken at its operators
-    ['以 A 为圆', '心、BC − AB = 20', '为半径作圆']
+    >>> wrap("以 A 为圆心、BC − AB = 20 为半径作圆", 20.0, 2.4)      # a formula is not broken at its operators, nor 圆心
+    ['以 A 为', '圆心、BC − AB = 20', '为半径作圆']
     >>> wrap("速度突降，刚性冲击）", 21.6, 2.4)        # a closing mark never starts a line
-    ['速度突降，刚性冲', '击）']
+    ['速度突降，刚性', '冲击）']
     >>> wrap("With K = 1.2: θ = 180°(K − 1)/(K + 1)", 60.0, 3.5, last_reserve=20.0)    # room for " = 16.364°"
     ['With K = 1.2:', 'θ = 180°(K − 1)/(K + 1)']
     >>> wrap("运动失真（根切）：否", 12.0, 2.4)         # an opening mark never ends one
     ['运动失真', '（根切）：', '否']
+    >>> wrap("以 A 为圆心、曲柄长为半径作圆", 16.0, 2.4)      # nor a word: 曲柄 stays whole
+    ['以 A 为圆心、', '曲柄长为半径', '作圆']
     """
     return list(_wrap(text, width, size, last_reserve))
 
 
-@functools.lru_cache(maxsize=4096)
+@functools.lru_cache(maxsize=16384)
 def _wrap(text: str, width: float, size: float, last_reserve: float) -> tuple[str, ...]:
-    """:func:`wrap`, remembered: every frame of a replay wraps the same captions."""
+    """:func:`wrap`, remembered: every frame of a replay wraps the same captions, and a sheet's layout measures
+    the same result lines at each width it tries (a gallery wraps about 8000 distinct texts and widths, each
+    once). A line takes tokens while their full-size widths (:func:`_measured`) fit; only a token that may
+    overflow is measured exactly, with the line's subscripts."""
     lines: list[str] = []
     cur = ""
     full = 0.0          # the width of cur with every character full size: at least its width
-    for tok in _tokens(text):
-        body = tok.rstrip()
-        if (cur.strip() and full + sum(_advances(body, size, False)) > width - 1e-6
+    for tok, body, w_tok, w_body, head, w_head in _measured(text, size):
+        if (cur.strip() and full + w_body > width - 1e-6
                 and text_width(rich_runs(cur + body), size) > width):
             lines.append(cur.rstrip())
-            cur = tok.lstrip()
-            full = sum(_advances(cur, size, False))
+            cur = head
+            full = w_head
         else:
             cur += tok
-            full += sum(_advances(tok, size, False))
+            full += w_tok
     lines.append(cur.rstrip())
     if last_reserve and len(lines[-1]) and text_width(rich_runs(lines[-1]), size) + last_reserve > width:
         toks = _tokens(lines[-1])                 # its last word (a formula whole) goes to a line of its own
@@ -283,3 +326,22 @@ def _wrap(text: str, width: float, size: float, last_reserve: float) -> tuple[st
         else:
             lines.append("")
     return tuple(lines)
+
+
+@functools.lru_cache(maxsize=8192)
+def _measured(text: str, size: float) -> tuple[tuple[str, str, float, float, str, float], ...]:
+    """The tokens of ``text`` (:func:`_tokens`), each with what :func:`_wrap` needs of it, measured once for all
+    widths: (token, token without trailing space, their full-size widths, token without leading space, its
+    width). A width is the sum of :func:`_advances`, as :func:`_wrap` always added them.
+
+    >>> [m[:2] for m in _measured("one two", 2.7)]
+    [('one ', 'one'), ('two', 'two')]
+    """
+    adv = _advances(text, size, False)                 # "".join(_tokens(text)) == text
+    out, at = [], 0
+    for tok in _tokens(text):
+        n, body, head = len(tok), tok.rstrip(), tok.lstrip()
+        out.append((tok, body, sum(adv[at:at + n]), sum(adv[at:at + len(body)]),
+                    head, sum(adv[at + n - len(head):at + n])))
+        at += n
+    return tuple(out)

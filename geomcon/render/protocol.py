@@ -18,6 +18,7 @@ Examples
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
@@ -251,11 +252,18 @@ def info_wrap(s: str, width: float, size: float = INFO_SIZE) -> list[str]:
     >>> info_wrap("h = 30.000 mm (= analytic)  行程", 90.0)
     ['h = 30.000 mm (= analytic)  行程']
     """
+    return list(_info_lines(s, width, size))
+
+
+@functools.lru_cache(maxsize=8192)
+def _info_lines(s: str, width: float, size: float) -> tuple[str, ...]:
+    """:func:`info_wrap`, remembered: a sheet's layout measures the same result lines at every width and in
+    every box it tries (:func:`info_height`), then sets them."""
     lines = wrap(s, width, size)
     head, sep, gloss = s.rpartition("  ")
     if len(lines) == 1 or not sep or not head.strip() or not any(ord(c) >= 0x2E80 for c in gloss):
-        return lines
-    return wrap(head, width, size) + wrap(gloss, width, size)
+        return tuple(lines)
+    return tuple(wrap(head, width, size) + wrap(gloss, width, size))
 
 
 def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ()) -> float:
@@ -263,7 +271,7 @@ def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ())
     h = 0.0
     for block in (info, warnings):
         if block:
-            n = sum(len(info_wrap(s, width)) for s in block)
+            n = sum(len(_info_lines(s, width, INFO_SIZE)) for s in block)
             h += 4.0 + INFO_SIZE * 1.6 + n * INFO_SIZE * 1.3
     return h
 
