@@ -393,7 +393,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
     skip = sl.info_h + BLOCK_GAP if moved else 0.0          # the protocol's heading as far below as Warnings'
 
-    pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip) if protocol else []
+    notes = diagram_notes(scene, 2) if apart is not None else None
+    pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip, notes) if protocol else []
     extra = int(apart is not None)
     n = 1 + extra + max(len(pages), int(moved))
     block = TitleBlock(title or scene.title, problem or "—", recipe or "—", scale, str(sheet), 1, n, lang)
@@ -445,6 +446,28 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
 
 DIAGRAM = "sd_"
 """Key prefix of the steps of a cam's s–δ (ψ–δ) diagram (:func:`geomcon.recipes.cam_common.add_motion_diagram`)."""
+
+
+def diagram_notes(scene: Scene, sheet: int) -> dict[str, tuple[str, str]]:
+    """Where the protocol says a cam's s–δ diagram is, when it has a sheet of its own (number ``sheet``): each step
+    whose caption names the diagram — the one that starts it (200-05 step 8, "Displacement diagram ψ–δ: δ axis …")
+    and those of the cam's sheet that read it (step 13, "lay off the arm angles … of the ψ–δ diagram") — names the
+    sheet (the steps after step 8 continue the diagram on that sheet: the protocol stays as short as it can).
+
+    >>> from geomcon.problems import load_problem
+    >>> from geomcon.solve import solve
+    >>> sc = solve(load_problem("problems/200-05_oscillating_roller_cam.toml")).drawing_scene
+    >>> notes = diagram_notes(sc, 2)
+    >>> notes["sd_delta_axis"], notes["B_d1"]
+    ((' (on sheet 2)', '（画在第 2 张）'), (' (diagram on sheet 2)', '（线图见第 2 张）'))
+    """
+    out = {}
+    for group in scene.frames():
+        key = group[0].key
+        if "diagram" in scene.caption(key)[0]:
+            out[key] = ((f" (on sheet {sheet})", f"（画在第 {sheet} 张）") if key.startswith(DIAGRAM) else
+                        (f" (diagram on sheet {sheet})", f"（线图见第 {sheet} 张）"))
+    return out
 
 
 def _not_diagram(step: Any) -> bool:
