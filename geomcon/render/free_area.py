@@ -175,6 +175,21 @@ class FreeRoom:
         _paint(grid, self.grown, box)
         return FreeRoom((), self.region, (), grid)
 
+    def fits(self, x: float, y: float, w: float, h: float) -> bool:
+        """Whether the box ``(x, y, w, h)`` lies in the region, clear of every shape by :data:`CLEAR` (the test
+        :meth:`find` makes at each position).
+
+        >>> room = FreeRoom([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)])
+        >>> room.fits(30.0, 0.0, 20.0, 10.0), room.fits(20.0, 0.0, 20.0, 10.0), room.fits(30.0, 45.0, 20.0, 10.0)
+        (True, False, False)
+        """
+        x0, y0, x1, y1 = self.region
+        if x < x0 or y < y0 or x + w > x1 or y + h > y1:
+            return False
+        a = np.array
+        return int(_counts(self.table, self.grown, a([x - CLEAR]), a([y - CLEAR]), a([x + w + CLEAR]),
+                           a([y + h + CLEAR]))[0]) == 0
+
     def find(self, sizes: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
         """The free box ``(x, y, w, h)`` nearest a corner of the region among ``sizes`` (tried in order: the
         first size wins a tie), clear of every shape by :data:`CLEAR`; None when no size fits anywhere."""

@@ -276,12 +276,14 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
         x, y, w, h = spot
         return Piece(x, y - 4.0, w, h + 4.0, tuple(rows), warn)
 
+    whole = room
     out: list[Piece] = []
     rest, warn = list(order), bool(warnings)
     while len(out) < MAX_PIECES:
         spot = room.find([(w, height(rest, w, warn)) for w in WIDTHS])
         if spot is not None:
-            return out + [piece(spot, rest, warn)]
+            out.append(piece(spot, rest, warn))
+            return _reading_order(whole, out, order, height) or out
         if not rest:
             return None
         best: tuple[int, tuple[float, float, float, float]] | None = None
@@ -309,6 +311,52 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
         room = room.without((x - INSET, y - INSET, x + w + INSET, y + h + INSET))
         rest = rest[k:]
     return None
+
+
+def reads_before(a: Piece, b: Piece) -> bool:
+    """Whether ``a`` is read before ``b``: top to bottom (``a`` wholly above ``b``), then, side by side, left to
+    right.
+
+    >>> reads_before(Piece(200.0, 10.0, 60.0, 30.0, (), False), Piece(20.0, 50.0, 60.0, 30.0, (), False))
+    True
+    >>> reads_before(Piece(200.0, 10.0, 60.0, 30.0, (), False), Piece(20.0, 20.0, 60.0, 30.0, (), False))
+    False
+    """
+    if a.y + a.h <= b.y or b.y + b.h <= a.y:
+        return a.y < b.y
+    return a.x < b.x
+
+
+def _reading_order(room: Any, pieces: Sequence[Piece], order: Sequence[int],
+                   height: Callable[[Sequence[int], float, bool], float]) -> list[Piece] | None:
+    """``pieces`` (found greedily: the largest run first, wherever it fits) that hold results put in reading order
+    (:func:`reads_before`; a box of the warnings alone stays after them) and the results (``order``: their frames' order) refilled into them in that order, so
+    that "Results (1/3)" is read first and holds the first results: each box keeps its corner and width and takes
+    as many results as fit below its corner in ``room`` (clear of the other boxes), the last one the rest. None
+    when the rest does not fit the last box, or a box would hold no result."""
+    from functools import cmp_to_key
+    ranked = sorted((pc for pc in pieces if pc.rows), key=cmp_to_key(lambda a, b: -1 if reads_before(a, b) else 1))
+    ranked += [pc for pc in pieces if not pc.rows]            # the warnings set apart: after the results
+    holders = [i for i, pc in enumerate(ranked) if pc.rows]
+    out, rest = list(ranked), list(order)
+
+    def box(pc: Piece) -> tuple[float, float, float, float]:
+        return (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET, pc.y + pc.h + INSET)
+
+    for n, i in enumerate(holders):
+        free = room
+        for j, pc in enumerate(out):
+            if j != i:
+                free = free.without(box(pc))
+        pc = out[i]
+        left = len(holders) - n - 1                    # boxes after this one: a result for each at least
+        fits = [k for k in range(len(rest) - left, 0, -1) if free.fits(pc.x, pc.y + 4.0, pc.w, height(rest[:k], pc.w, pc.warnings))]
+        if not fits or (left == 0 and fits[0] != len(rest)):
+            return None
+        k = fits[0]
+        out[i] = Piece(pc.x, pc.y, pc.w, height(rest[:k], pc.w, pc.warnings) + 4.0, tuple(rest[:k]), pc.warnings)
+        rest = rest[k:]
+    return out
 
 
 def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
