@@ -332,30 +332,59 @@ def _reading_order(room: Any, pieces: Sequence[Piece], order: Sequence[int],
     """``pieces`` (found greedily: the largest run first, wherever it fits) that hold results put in reading order
     (:func:`reads_before`; a box of the warnings alone stays after them) and the results (``order``: their frames' order) refilled into them in that order, so
     that "Results (1/3)" is read first and holds the first results: each box keeps its corner and width and takes
-    as many results as fit below its corner in ``room`` (clear of the other boxes), the last one the rest. None
-    when the rest does not fit the last box, or a box would hold no result."""
+    a run of the results that fits below its corner in ``room`` (clear of the others), at least one each, the
+    earlier boxes as full as the later ones allow (every split tried, the earliest boxes' longest runs first).
+    None when no split fits."""
     from functools import cmp_to_key
     ranked = sorted((pc for pc in pieces if pc.rows), key=cmp_to_key(lambda a, b: -1 if reads_before(a, b) else 1))
     ranked += [pc for pc in pieces if not pc.rows]            # the warnings set apart: after the results
     holders = [i for i, pc in enumerate(ranked) if pc.rows]
-    out, rest = list(ranked), list(order)
 
     def box(pc: Piece) -> tuple[float, float, float, float]:
         return (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET, pc.y + pc.h + INSET)
 
-    for n, i in enumerate(holders):
+    rooms = {}                           # each holder's room: clear of the warnings box and the other holders'
+    for i in holders:                    # corners (a box grows down from its corner, never into another's)
         free = room
-        for j, pc in enumerate(out):
+        for j, pc in enumerate(ranked):
             if j != i:
-                free = free.without(box(pc))
-        pc = out[i]
-        left = len(holders) - n - 1                    # boxes after this one: a result for each at least
-        fits = [k for k in range(len(rest) - left, 0, -1) if free.fits(pc.x, pc.y + 4.0, pc.w, height(rest[:k], pc.w, pc.warnings))]
-        if not fits or (left == 0 and fits[0] != len(rest)):
+                free = free.without(box(pc) if not pc.rows else (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET,
+                                                                 pc.y + 4.0 + INSET))
+        rooms[i] = free
+
+    def grown(i: int, lo: int, hi: int) -> tuple[float, float, float, float] | None:
+        """Holder ``i``'s box with the results ``lo:hi`` (INSET around), None when it does not fit its room."""
+        pc = ranked[i]
+        h = height(order[lo:hi], pc.w, pc.warnings)
+        if not rooms[i].fits(pc.x, pc.y + 4.0, pc.w, h):
             return None
-        k = fits[0]
-        out[i] = Piece(pc.x, pc.y, pc.w, height(rest[:k], pc.w, pc.warnings) + 4.0, tuple(rest[:k]), pc.warnings)
-        rest = rest[k:]
+        return (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET, pc.y + 4.0 + h + INSET)
+
+    def meets(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+        return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+    def split(n: int, lo: int, placed: list[tuple[float, ...]]) -> list[int] | None:
+        """Ends of the runs of holders n… from result ``lo`` on: each box as full as the rest allows, none
+        meeting a box placed before it."""
+        last = n == len(holders) - 1
+        for hi in ([len(order)] if last else range(len(order) - (len(holders) - n - 1), lo, -1)):
+            b = grown(holders[n], lo, hi)
+            if b is None or any(meets(b, p) for p in placed):
+                continue
+            rest = [] if last else split(n + 1, hi, placed + [b])
+            if rest is not None:
+                return [hi] + rest
+        return None
+
+    ends = split(0, 0, [box(pc) for pc in ranked if not pc.rows])
+    if ends is None:
+        return None
+    out, lo = list(ranked), 0
+    for i, hi in zip(holders, ends):
+        pc = ranked[i]
+        out[i] = Piece(pc.x, pc.y, pc.w, height(order[lo:hi], pc.w, pc.warnings) + 4.0, tuple(order[lo:hi]),
+                       pc.warnings)
+        lo = hi
     return out
 
 
