@@ -128,3 +128,32 @@ def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
     assert _scale(svg) == scale
     first = re.search(r'<g id="info">.*?<text class="info-head"[^>]*\bx="([\d.]+)"', svg, re.S)
     assert first and abs(float(first.group(1)) - x) < 0.01
+
+
+def _parts(svg: str) -> dict[int, tuple[float, float, float]]:
+    """The numbered parts of a split Results block: k -> (x, top, bottom) of its lines (paper mm)."""
+    out = {}
+    for m in re.finditer(r'<g id="info(?:-\d+)?">(.*?)</g>', svg, re.S):
+        head = re.search(r'class="info-head"[^>]*\bx="([\d.]+)"[^>]*\by="([\d.]+)"[^>]*>(?:<tspan>)?Results \((\d+)/\d+\)',
+                         m.group(1))
+        if head:
+            ys = [float(y) for y in re.findall(r'<text [^>]*\by="([\d.]+)"', m.group(1))]
+            out[int(head.group(3))] = (float(head.group(1)), min(ys) - 3.5, max(ys))
+    return out
+
+
+def test_the_parts_of_a_split_results_block_read_in_order():
+    """Results (1/3), (2/3), (3/3) read in that order: top to bottom, then, side by side, left to right (100-04 and
+    300-01 had (2/3) above (1/3))."""
+    split = 0
+    for _, svg in _drawings():
+        parts = _parts(svg.read_text(encoding="utf-8"))
+        if not parts:
+            continue
+        split += 1
+        assert sorted(parts) == list(range(1, len(parts) + 1)), svg.stem
+        for k in range(1, len(parts)):
+            (xa, ta, ba), (xb, tb, bb) = parts[k], parts[k + 1]
+            above = ba <= tb or bb <= ta
+            assert (ta < tb) if above else (xa < xb), (svg.stem, k, parts)
+    assert split >= 2

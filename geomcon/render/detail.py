@@ -24,7 +24,7 @@ from typing import Any, Callable, Sequence
 
 from ..geometry.primitives import Point, Segment
 from ..paper import STANDARD, Scale
-from ..scene import Scene, Step
+from ..scene import Role, Scene, Step
 from ..scene.marks import Ground, Guide, Slider
 from .figure import Figure, build_figure, content_box, shown_steps
 from .style import resolve_style
@@ -42,8 +42,12 @@ def _items(v: Any) -> list[Any]:
 
 
 def _is_link(step: Step) -> bool:
+    """Whether ``step`` draws links of the mechanism: a segment in a link's style (the links layer, the dash-dot
+    frame) that is part of the construction, not an annotation drawn like one — a velocity or acceleration
+    polygon's vector (400-01 ``a_nb``: a length in mm/s of the polygon's scale, not of the mechanism) or the
+    ordinate of an s–δ diagram at the asked angle (001-24 ``sd_ask_ord``: a follower's displacement)."""
     style = resolve_style(step.style, step.role, "curve")
-    return style.layer == "links" or style.name == "frame"
+    return (style.layer == "links" or style.name == "frame") and step.role != Role.ANNOTATION
 
 
 def mechanism_steps(steps: Sequence[tuple[int, Step]], values: dict[str, Any]

@@ -8,7 +8,8 @@ The drawing is centred in its area, so its free room is in the corners: a box is
 taken (the first width of :data:`WIDTHS` on a tie). A box is free when, grown by :data:`CLEAR`, it meets no
 stroke, mark, symbol or text of the figure (:func:`geomcon.render.shapes.obstacle`): the figure is rasterised
 once into 1 mm cells (strokes sampled every 0.5 mm, areas by their bounding boxes) and a box is tested by the
-cells it covers with one cell of slack, so the test is conservative and every grid position costs four look-ups.
+cells it covers with one cell of slack, so the test is conservative and every grid position costs four look-ups
+(the cell indices found once per column and per row of the grid: :func:`_grid_counts`).
 
 Examples
 --------
@@ -128,6 +129,26 @@ def _counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx
     return table[i1, j1] - table[i0, j1] - table[i1, j0] + table[i0, j0]
 
 
+def _grid_counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx1: np.ndarray, by1: np.ndarray
+                 ) -> np.ndarray:
+    """:func:`_counts` of every box of a grid: the boxes ``(bx0[j], by0[i], bx1[j], by1[i])`` (paper mm), their
+    counts as one array of ``len(by0) × len(bx0)`` raveled row by row. The cell indices are found per column and
+    per row (the same arithmetic as :func:`_counts`, so the same cells) and the table read by outer indexing.
+
+    >>> t = occupancy([], (0.0, 0.0, 10.0, 10.0))
+    >>> _grid_counts(t, (0.0, 0.0, 10.0, 10.0), np.array([0.0, 2.0]), np.array([0.0]), np.array([4.0, 6.0]),
+    ...              np.array([4.0])).tolist()
+    [0, 0]
+    """
+    ny, nx = table.shape[0] - 1, table.shape[1] - 1
+    j0 = np.clip((((bx0 - region[0]) // CELL).astype(np.int64) - 1), 0, nx)
+    i0 = np.clip((((by0 - region[1]) // CELL).astype(np.int64) - 1), 0, ny)
+    j1 = np.clip((((bx1 - region[0]) // CELL).astype(np.int64) + 2), 0, nx)
+    i1 = np.clip((((by1 - region[1]) // CELL).astype(np.int64) + 2), 0, ny)
+    a, b = table[i1], table[i0]
+    return (a[:, j1] - b[:, j1] - a[:, j0] + b[:, j0]).ravel()
+
+
 class FreeRoom:
     """The free room of ``region`` (paper mm) around ``shapes`` and ``keepouts``, rasterised once
     (:func:`raster`): :meth:`find` places boxes in it, :meth:`without` takes a placed box out of it.
@@ -154,6 +175,21 @@ class FreeRoom:
         _paint(grid, self.grown, box)
         return FreeRoom((), self.region, (), grid)
 
+    def fits(self, x: float, y: float, w: float, h: float) -> bool:
+        """Whether the box ``(x, y, w, h)`` lies in the region, clear of every shape by :data:`CLEAR` (the test
+        :meth:`find` makes at each position).
+
+        >>> room = FreeRoom([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)])
+        >>> room.fits(30.0, 0.0, 20.0, 10.0), room.fits(20.0, 0.0, 20.0, 10.0), room.fits(30.0, 45.0, 20.0, 10.0)
+        (True, False, False)
+        """
+        x0, y0, x1, y1 = self.region
+        if x < x0 or y < y0 or x + w > x1 or y + h > y1:
+            return False
+        a = np.array
+        return int(_counts(self.table, self.grown, a([x - CLEAR]), a([y - CLEAR]), a([x + w + CLEAR]),
+                           a([y + h + CLEAR]))[0]) == 0
+
     def find(self, sizes: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
         """The free box ``(x, y, w, h)`` nearest a corner of the region among ``sizes`` (tried in order: the
         first size wins a tie), clear of every shape by :data:`CLEAR`; None when no size fits anywhere."""
@@ -163,17 +199,15 @@ class FreeRoom:
             xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
             if not (len(xs) and len(ys)):
                 continue
-            gx, gy = (a.ravel() for a in np.meshgrid(xs, ys))
-            n = _counts(self.table, self.grown, gx - CLEAR, gy - CLEAR, gx + w + CLEAR, gy + h + CLEAR)
+            n = _grid_counts(self.table, self.grown, xs - CLEAR, ys - CLEAR, xs + w + CLEAR, ys + h + CLEAR)
             free = np.flatnonzero(n == 0)
             if not len(free):
                 continue
+            gx, gy = xs[free % len(xs)], ys[free // len(xs)]       # row by row: top-left first
             # distance of the box to the nearest corner of the region: the larger of its x and y gaps to it
-            dx = np.minimum(gx[free] - x0, x1 - (gx[free] + w))
-            dy = np.minimum(gy[free] - y0, y1 - (gy[free] + h))
-            d = np.maximum(dx, dy)
+            d = np.maximum(np.minimum(gx - x0, x1 - (gx + w)), np.minimum(gy - y0, y1 - (gy + h)))
             k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie
-            cand = (float(d[k]), rank, (float(gx[free][k]), float(gy[free][k]), w, h))
+            cand = (float(d[k]), rank, (float(gx[k]), float(gy[k]), w, h))
             if best is None or cand[:2] < best[:2]:
                 best = cand
         return None if best is None else best[2]

@@ -92,14 +92,18 @@ class Layout:
     height: float
 
 
-def _raw(scene: Scene, lang: str) -> list[tuple[int, str, str, bool, list[str], list[str]]]:
+def _raw(scene: Scene, lang: str, notes: Mapping[str, tuple[str, str]] | None = None
+         ) -> list[tuple[int, str, str, bool, list[str], list[str]]]:
     """Every numbered step's wrapped lines: (number, key, unit, measured, first lines, second lines). The
     first lines are English (``en``, ``both``) or Chinese (``zh``; English where a step has no Chinese), the
-    second Chinese under English (``both``) or none."""
+    second Chinese under English (``both``) or none. ``notes`` (a step's key: English and Chinese words) are
+    appended to a caption: where the sheets put what it draws (a cam's s–δ diagram on sheet 2)."""
     raw = []
     for i, group in enumerate(scene.frames(), 1):
         s = group[0]
         en, zh = scene.caption(s.key)
+        if notes and s.key in notes:
+            en, zh = en + notes[s.key][0], (zh + notes[s.key][1]) if zh else zh
         zh = zh_punct(zh) if zh else zh
         measured = s.role == Role.MEASUREMENT or s.unit in ("mm", "deg")
         first = (zh or en or s.key) if lang == "zh" else (en or s.key)
@@ -136,7 +140,8 @@ def _placed(raw: Sequence[tuple], heights: Sequence[float], starts: Sequence[int
     return Layout(entries, ncols, ncols * COL_W + (ncols - 1) * COL_GAP, HEAD_H + max(col_h, default=0.0))
 
 
-def paginate(scene: Scene, width: float, height: float, lang: str = "both", first_skip: float = 0.0) -> list[Layout]:
+def paginate(scene: Scene, width: float, height: float, lang: str = "both", first_skip: float = 0.0,
+             notes: Mapping[str, tuple[str, str]] | None = None) -> list[Layout]:
     """The protocol set on sheets of ``width`` × ``height`` paper mm (heading included): in the fewest
     balanced columns that fit one sheet, else column after column, sheet after sheet (an entry is never
     split). Every sheet holds at least one entry, but the first: its columns are ``first_skip`` shorter (the
@@ -155,7 +160,7 @@ def paginate(scene: Scene, width: float, height: float, lang: str = "both", firs
     >>> [len(p.entries) for p in paginate(sc, 90.0, 100.0, first_skip=80.0)][:2]      # < 6 fit under the results
     [0, 7]
     """
-    raw = _raw(scene, lang)
+    raw = _raw(scene, lang, notes)
     heights = [entry_height(r[4], r[5]) for r in raw]
     max_cols = max(1, int((width + COL_GAP) // (COL_W + COL_GAP)))
     limit = height - HEAD_H
@@ -178,7 +183,7 @@ def paginate(scene: Scene, width: float, height: float, lang: str = "both", firs
             j += 1
         pages.append(_placed(raw[first:j], heights[first:j], [s - first for s in starts]))
         if len(pages) == 1 and first_skip > 0.0 and j < min(MIN_FIRST, len(raw)):
-            return [Layout([], 0, 0.0, 0.0)] + paginate(scene, width, height, lang)
+            return [Layout([], 0, 0.0, 0.0)] + paginate(scene, width, height, lang, notes=notes)
     return pages
 
 

@@ -276,12 +276,14 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
         x, y, w, h = spot
         return Piece(x, y - 4.0, w, h + 4.0, tuple(rows), warn)
 
+    whole = room
     out: list[Piece] = []
     rest, warn = list(order), bool(warnings)
     while len(out) < MAX_PIECES:
         spot = room.find([(w, height(rest, w, warn)) for w in WIDTHS])
         if spot is not None:
-            return out + [piece(spot, rest, warn)]
+            out.append(piece(spot, rest, warn))
+            return _reading_order(whole, out, order, height) or out
         if not rest:
             return None
         best: tuple[int, tuple[float, float, float, float]] | None = None
@@ -309,6 +311,81 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
         room = room.without((x - INSET, y - INSET, x + w + INSET, y + h + INSET))
         rest = rest[k:]
     return None
+
+
+def reads_before(a: Piece, b: Piece) -> bool:
+    """Whether ``a`` is read before ``b``: top to bottom (``a`` wholly above ``b``), then, side by side, left to
+    right.
+
+    >>> reads_before(Piece(200.0, 10.0, 60.0, 30.0, (), False), Piece(20.0, 50.0, 60.0, 30.0, (), False))
+    True
+    >>> reads_before(Piece(200.0, 10.0, 60.0, 30.0, (), False), Piece(20.0, 20.0, 60.0, 30.0, (), False))
+    False
+    """
+    if a.y + a.h <= b.y or b.y + b.h <= a.y:
+        return a.y < b.y
+    return a.x < b.x
+
+
+def _reading_order(room: Any, pieces: Sequence[Piece], order: Sequence[int],
+                   height: Callable[[Sequence[int], float, bool], float]) -> list[Piece] | None:
+    """``pieces`` (found greedily: the largest run first, wherever it fits) that hold results put in reading order
+    (:func:`reads_before`; a box of the warnings alone stays after them) and the results (``order``: their frames' order) refilled into them in that order, so
+    that "Results (1/3)" is read first and holds the first results: each box keeps its corner and width and takes
+    a run of the results that fits below its corner in ``room`` (clear of the others), at least one each, the
+    earlier boxes as full as the later ones allow (every split tried, the earliest boxes' longest runs first).
+    None when no split fits."""
+    from functools import cmp_to_key
+    ranked = sorted((pc for pc in pieces if pc.rows), key=cmp_to_key(lambda a, b: -1 if reads_before(a, b) else 1))
+    ranked += [pc for pc in pieces if not pc.rows]            # the warnings set apart: after the results
+    holders = [i for i, pc in enumerate(ranked) if pc.rows]
+
+    def box(pc: Piece) -> tuple[float, float, float, float]:
+        return (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET, pc.y + pc.h + INSET)
+
+    rooms = {}                           # each holder's room: clear of the warnings box and the other holders'
+    for i in holders:                    # corners (a box grows down from its corner, never into another's)
+        free = room
+        for j, pc in enumerate(ranked):
+            if j != i:
+                free = free.without(box(pc) if not pc.rows else (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET,
+                                                                 pc.y + 4.0 + INSET))
+        rooms[i] = free
+
+    def grown(i: int, lo: int, hi: int) -> tuple[float, float, float, float] | None:
+        """Holder ``i``'s box with the results ``lo:hi`` (INSET around), None when it does not fit its room."""
+        pc = ranked[i]
+        h = height(order[lo:hi], pc.w, pc.warnings)
+        if not rooms[i].fits(pc.x, pc.y + 4.0, pc.w, h):
+            return None
+        return (pc.x - INSET, pc.y + 4.0 - INSET, pc.x + pc.w + INSET, pc.y + 4.0 + h + INSET)
+
+    def meets(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+        return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+    def split(n: int, lo: int, placed: list[tuple[float, ...]]) -> list[int] | None:
+        """Ends of the runs of holders n… from result ``lo`` on: each box as full as the rest allows, none
+        meeting a box placed before it."""
+        last = n == len(holders) - 1
+        for hi in ([len(order)] if last else range(len(order) - (len(holders) - n - 1), lo, -1)):
+            b = grown(holders[n], lo, hi)
+            if b is None or any(meets(b, p) for p in placed):
+                continue
+            rest = [] if last else split(n + 1, hi, placed + [b])
+            if rest is not None:
+                return [hi] + rest
+        return None
+
+    ends = split(0, 0, [box(pc) for pc in ranked if not pc.rows])
+    if ends is None:
+        return None
+    out, lo = list(ranked), 0
+    for i, hi in zip(holders, ends):
+        pc = ranked[i]
+        out[i] = Piece(pc.x, pc.y, pc.w, height(order[lo:hi], pc.w, pc.warnings) + 4.0, tuple(order[lo:hi]),
+                       pc.warnings)
+        lo = hi
+    return out
 
 
 def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str, upto: int | None = None) -> Any:
@@ -393,7 +470,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
     skip = sl.info_h + BLOCK_GAP if moved else 0.0          # the protocol's heading as far below as Warnings'
 
-    pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip) if protocol else []
+    notes = diagram_notes(scene, 2) if apart is not None else None
+    pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip, notes) if protocol else []
     extra = int(apart is not None)
     n = 1 + extra + max(len(pages), int(moved))
     block = TitleBlock(title or scene.title, problem or "—", recipe or "—", scale, str(sheet), 1, n, lang)
@@ -445,6 +523,28 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
 
 DIAGRAM = "sd_"
 """Key prefix of the steps of a cam's s–δ (ψ–δ) diagram (:func:`geomcon.recipes.cam_common.add_motion_diagram`)."""
+
+
+def diagram_notes(scene: Scene, sheet: int) -> dict[str, tuple[str, str]]:
+    """Where the protocol says a cam's s–δ diagram is, when it has a sheet of its own (number ``sheet``): each step
+    whose caption names the diagram — the one that starts it (200-05 step 8, "Displacement diagram ψ–δ: δ axis …")
+    and those of the cam's sheet that read it (step 13, "lay off the arm angles … of the ψ–δ diagram") — names the
+    sheet (the steps after step 8 continue the diagram on that sheet: the protocol stays as short as it can).
+
+    >>> from geomcon.problems import load_problem
+    >>> from geomcon.solve import solve
+    >>> sc = solve(load_problem("problems/200-05_oscillating_roller_cam.toml")).drawing_scene
+    >>> notes = diagram_notes(sc, 2)
+    >>> notes["sd_delta_axis"], notes["B_d1"]
+    ((' (on sheet 2)', '（画在第 2 张）'), (' (diagram on sheet 2)', '（线图见第 2 张）'))
+    """
+    out = {}
+    for group in scene.frames():
+        key = group[0].key
+        if "diagram" in scene.caption(key)[0]:
+            out[key] = ((f" (on sheet {sheet})", f"（画在第 {sheet} 张）") if key.startswith(DIAGRAM) else
+                        (f" (diagram on sheet {sheet})", f"（线图见第 {sheet} 张）"))
+    return out
 
 
 def _not_diagram(step: Any) -> bool:
