@@ -348,7 +348,8 @@ class Layer:
 
     def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
-        tree, or all segments of the geometries near all the boxes), not of a box's own step unless counted
+        tree, or each box's bounds against those of the segments of the geometries near all the boxes: a pair
+        farther apart cannot lower a clearance below :data:`ENOUGH`, nor meet), not of a box's own step unless counted
         (a crossing weight); and whether each pair is of the box's own step."""
         ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own = self.arrays()
         if not len(ax) or not len(boxes):
@@ -362,7 +363,12 @@ class Layer:
             s1 = np.flatnonzero(near[parent])
             if not len(s1):
                 return _NONE, _NONE, _NO
-            k, s = np.repeat(np.arange(len(boxes)), len(s1)), np.tile(s1, len(boxes))
+            sx0, sx1 = np.minimum(ax[s1], bx[s1]), np.maximum(ax[s1], bx[s1])      # each box, the segments near it
+            sy0, sy1 = np.minimum(ay[s1], by[s1]), np.maximum(ay[s1], by[s1])
+            close = ((sx0 <= (boxes.x1 + REACH)[:, None]) & ((boxes.x0 - REACH)[:, None] <= sx1)
+                     & (sy0 <= (boxes.y1 + REACH)[:, None]) & ((boxes.y0 - REACH)[:, None] <= sy1))
+            k, j = np.nonzero(close)
+            s = s1[j]
         p = parent[s]
         o = owner[p]
         mine = (o == boxes.owner[k]) & (o >= 0)
@@ -471,6 +477,7 @@ class Placed:
         self._leader_ids: list[int] = []
         self._general = False
         self._arrays: tuple[np.ndarray, ...] | None = None
+        self._layer = Layer([])                 # all of it as segments, grown as it is needed (:meth:`_segments`)
 
     def __len__(self) -> int:
         return len(self.geoms)
@@ -500,6 +507,14 @@ class Placed:
             self._arrays = (*bounds, *ends, np.array(self._rect_ids + self._leader_ids, dtype=np.intp))
         return self._arrays
 
+    def _segments(self) -> Layer:
+        """Everything placed as the segments of a :class:`Layer` (the geometries placed since the last call
+        added in one batch: the same layer as one built of them all at once, measuring the same numbers)."""
+        done = len(self._layer.geoms)
+        if done < len(self.geoms):
+            self._layer.extend(self.geoms[done:])
+        return self._layer
+
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from everything placed (pending: box, index into :attr:`geoms`).
 
@@ -507,7 +522,7 @@ class Placed:
         bounds come within :data:`REACH` (a segment lies within its bounds, so the others cannot lower a
         clearance, nor meet)."""
         if self._general or boxes.turned.any():                # rare: all of it as segments
-            return Layer(self.geoms).measure(boxes)
+            return self._segments().measure(boxes)
         n = len(boxes)
         known = np.full(n, ENOUGH)
         px0, py0, px1, py1, ax, ay, bx, by, ids = self._dense()
