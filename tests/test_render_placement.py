@@ -299,3 +299,28 @@ def test_texts_laid_out_together_are_laid_out_as_one_at_a_time(seed):
         assert got == want
         batched.commit(req.box(*got[0]))
         single.commit(req.box(*want[0]))
+
+
+def test_turned_text_boxes_are_measured_by_their_sides_and_the_rest_by_segments():
+    """A turned box placed is a convex polygon, measured densely (its sides, and a candidate's centre inside it);
+    a bow-tie or a polygon with a hole is not convex and leaves everything to the segments of a layer."""
+    from geomcon.render.clearance import Boxes, Placed, _convex_of
+
+    bowtie = shapely.Polygon([(0, 0), (2, 1), (2, 0), (0, 1)])
+    holed = shapely.box(0, 0, 9, 9).difference(shapely.box(3, 3, 6, 6))
+    turned = affinity.rotate(shapely.box(0, 0, 8, 3), 30.0)
+    assert _convex_of(turned) is not None and _convex_of(affinity.rotate(turned, 180.0)) is not None
+    assert _convex_of(bowtie) is None and _convex_of(holed) is None and _convex_of(shapely.Point(1, 1)) is None
+    placed = Placed()
+    placed.append(turned)
+    assert not placed._general
+    c = turned.centroid
+    boxes = Boxes.aligned(np.array([c.x, c.x + 20.0, c.x]), np.array([c.y, c.y, c.y + 1.8]), 1.0, 0.5,
+                          np.zeros(3, dtype=np.intp))
+    m = placed.measure(boxes)
+    assert m.touching.tolist() == [True, False, True]    # inside it (no side met), clear of it, across a side
+    for k in range(3):
+        box = boxes.geom(k)
+        want = shapely.distance(box, turned)
+        assert min(m.known[k], placed.exact(box, m.pending_of(k))) == pytest.approx(
+            min(want, ENOUGH) if want > 0.0 else -min(2.0, 0.6 * math.sqrt(shapely.area(box & turned))), abs=1e-12)

@@ -348,7 +348,8 @@ class Layer:
 
     def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
-        tree, or all segments of the geometries near all the boxes), not of a box's own step unless counted
+        tree, or each box's bounds against those of the segments of the geometries near all the boxes: a pair
+        farther apart cannot lower a clearance below :data:`ENOUGH`, nor meet), not of a box's own step unless counted
         (a crossing weight); and whether each pair is of the box's own step."""
         ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own = self.arrays()
         if not len(ax) or not len(boxes):
@@ -362,7 +363,12 @@ class Layer:
             s1 = np.flatnonzero(near[parent])
             if not len(s1):
                 return _NONE, _NONE, _NO
-            k, s = np.repeat(np.arange(len(boxes)), len(s1)), np.tile(s1, len(boxes))
+            sx0, sx1 = np.minimum(ax[s1], bx[s1]), np.maximum(ax[s1], bx[s1])      # each box, the segments near it
+            sy0, sy1 = np.minimum(ay[s1], by[s1]), np.maximum(ay[s1], by[s1])
+            close = ((sx0 <= (boxes.x1 + REACH)[:, None]) & ((boxes.x0 - REACH)[:, None] <= sx1)
+                     & (sy0 <= (boxes.y1 + REACH)[:, None]) & ((boxes.y0 - REACH)[:, None] <= sy1))
+            k, j = np.nonzero(close)
+            s = s1[j]
         p = parent[s]
         o = owner[p]
         mine = (o == boxes.owner[k]) & (o >= 0)
@@ -457,10 +463,11 @@ class Layer:
 
 
 class Placed:
-    """What was placed, one text after another: axis-parallel text boxes and leaders (two-point line strings),
-    measured against axis-parallel candidates densely (rectangle to rectangle, box to segment), and anything
-    else (a turned box: then everything, as segments of a :class:`Layer`). What a box covers of a placed
-    geometry is left to GEOS (such a box is as bad as one outside the frame)."""
+    """What was placed, one text after another: axis-parallel text boxes, leaders (two-point line strings) and
+    turned text boxes (convex polygons), measured against axis-parallel candidates densely (rectangle to
+    rectangle, box to segment: a leader or a side of a turned box, and whether a box's centre lies in a turned
+    box), and anything else (then everything, as segments of a :class:`Layer`; so too for turned candidates).
+    What a box covers of a placed geometry is left to GEOS (such a box is as bad as one outside the frame)."""
 
     def __init__(self) -> None:
         self.geoms: list[shapely.Geometry] = []
@@ -469,8 +476,12 @@ class Placed:
         self._leaders: list[tuple[float, ...]] = []
         self._leader_bounds: list[tuple[float, ...]] = []
         self._leader_ids: list[int] = []
+        self._hulls: list[tuple[np.ndarray, int]] = []     # turned boxes: their corners and index
         self._general = False
+        self._others: list[shapely.Geometry] = []            # neither a rectangle nor a leader
+        self._others_tree: shapely.STRtree | None = None
         self._arrays: tuple[np.ndarray, ...] | None = None
+        self._layer = Layer([])                 # all of it as segments, grown as it is needed (:meth:`_segments`)
 
     def __len__(self) -> int:
         return len(self.geoms)
@@ -487,27 +498,48 @@ class Placed:
             self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
             self._leader_ids.append(len(self.geoms))
         else:
-            self._general = True
+            corners = _convex_of(geom)
+            if corners is None:
+                self._general = True
+            else:                                           # a turned box: its sides as segments
+                self._hulls.append((corners, len(self.geoms)))
+                for (ax, ay), (bx, by) in zip(corners.tolist(), np.roll(corners, -1, axis=0).tolist()):
+                    self._leaders.append((ax, ay, bx, by))
+                    self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
+                    self._leader_ids.append(len(self.geoms))
+            self._others.append(geom)
+            self._others_tree = None
         self.geoms.append(geom)
         self._arrays = None
 
     def _dense(self) -> tuple[np.ndarray, ...]:
-        """The rectangles' and the leaders' bounds side by side (x0, y0, x1, y1; the rectangles first), the
-        leaders' ends (ax, ay, bx, by) and the index into :attr:`geoms` of each of them."""
+        """The rectangles' and the segments' (leaders, sides of turned boxes) bounds side by side (x0, y0, x1,
+        y1; the rectangles first), the segments' ends (ax, ay, bx, by) and the index into :attr:`geoms` of each
+        of them."""
         if self._arrays is None:
             bounds = np.array(self._rects + self._leader_bounds, dtype=float).reshape(-1, 4).T.copy()
             ends = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
             self._arrays = (*bounds, *ends, np.array(self._rect_ids + self._leader_ids, dtype=np.intp))
         return self._arrays
 
+    def _segments(self) -> Layer:
+        """Everything placed as the segments of a :class:`Layer` (the geometries placed since the last call
+        added in one batch: the same layer as one built of them all at once, measuring the same numbers)."""
+        done = len(self._layer.geoms)
+        if done < len(self.geoms):
+            self._layer.extend(self.geoms[done:])
+        return self._layer
+
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from everything placed (pending: box, index into :attr:`geoms`).
 
-        Rectangle to rectangle by their bounds; a box and a leader by the closed forms, for the pairs whose
-        bounds come within :data:`REACH` (a segment lies within its bounds, so the others cannot lower a
-        clearance, nor meet)."""
-        if self._general or boxes.turned.any():                # rare: all of it as segments
-            return Layer(self.geoms).measure(boxes)
+        Rectangle to rectangle by their bounds; a box and a leader or a side of a turned box by the closed
+        forms, for the pairs whose bounds come within :data:`REACH` (a segment lies within its bounds, so the
+        others cannot lower a clearance, nor meet); a box meeting no side of a turned box touches it when its
+        centre lies inside (the box then lies wholly inside: the distance to the sides is kept, as a
+        :class:`Layer` keeps it for a box inside an area)."""
+        if self._general or boxes.turned.any():                # rare: all of it as segments (a turned candidate)
+            return self._segments().measure(boxes)
         n = len(boxes)
         known = np.full(n, ENOUGH)
         px0, py0, px1, py1, ax, ay, bx, by, ids = self._dense()
@@ -529,10 +561,16 @@ class Placed:
                 least(known, k, d)
                 touch[k[~hit], nr + j[~hit]] = False            # their bounds meet, they do not
         k, j = np.nonzero(touch)
+        p = ids[j]
+        if self._hulls:                                     # boxes inside a turned box; a pair once
+            inside = [(np.flatnonzero(_within(corners, boxes.cx, boxes.cy)), i) for corners, i in self._hulls]
+            k = np.concatenate([k] + [w for w, _ in inside])
+            p = np.concatenate([p] + [np.full(len(w), i, dtype=np.intp) for w, i in inside])
+            pair = np.unique(k * len(self.geoms) + p)
+            k, p = pair // len(self.geoms), pair % len(self.geoms)
         touching = np.zeros(n, dtype=bool)
         if not len(k):
             return Measured(known, known, known, touching, (_NONE, _NONE))
-        p = ids[j]
         touching[k] = True
         hi, lo = known.copy(), known.copy()
         least(hi, k, np.zeros(len(k)))
@@ -556,12 +594,11 @@ class Placed:
                 _, hit = box_segment(px0[j], py0[j], px1[j], py1[j], segments[k, 0], segments[k, 1],
                                      segments[k, 2], segments[k, 3])
                 out[k[hit]] = True
-        if self._general:
-            rest = [g for i, g in enumerate(self.geoms) if i not in set(self._rect_ids) and i not in set(self._leader_ids)]
-            if rest:
-                tree = shapely.STRtree(rest)
-                k, _ = tree.query(shapely.linestrings(segments.reshape(-1, 2, 2)), predicate="intersects")
-                out[k] = True
+        if self._others:
+            if self._others_tree is None:
+                self._others_tree = shapely.STRtree(self._others)
+            k, _ = self._others_tree.query(shapely.linestrings(segments.reshape(-1, 2, 2)), predicate="intersects")
+            out[k] = True
         return out
 
     def exact(self, box: shapely.Geometry, parents: np.ndarray) -> float:
@@ -571,6 +608,37 @@ class Placed:
         geoms = np.empty(len(parents), dtype=object)
         geoms[:] = [self.geoms[i] for i in parents.tolist()]
         return float(np.min(covering(box, geoms)))
+
+
+def _convex_of(geom: shapely.Geometry) -> np.ndarray | None:
+    """The corners (rows of x, y, in ring order, the closing one left out) of a convex polygon without holes, all
+    its turns one way (a turned text box); None for anything else.
+
+    >>> _convex_of(shapely.Polygon([(0, 0), (2, 1), (1, 3), (-1, 2)])).tolist()
+    [[0.0, 0.0], [2.0, 1.0], [1.0, 3.0], [-1.0, 2.0]]
+    >>> _convex_of(shapely.Polygon([(0, 0), (2, 0), (1, 1), (2, 2), (0, 2)])) is None
+    True
+    """
+    if shapely.get_type_id(geom) != 3 or shapely.get_num_interior_rings(geom):
+        return None
+    xy = shapely.get_coordinates(geom)[:-1]
+    if len(xy) < 3:
+        return None
+    e = np.roll(xy, -1, axis=0) - xy
+    turns = e[:, 0] * np.roll(e[:, 1], -1) - e[:, 1] * np.roll(e[:, 0], -1)
+    return xy if (turns > 0.0).all() or (turns < 0.0).all() else None
+
+
+def _within(corners: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
+    """Whether each point lies in the convex polygon of ``corners`` (:func:`_convex_of`), its boundary included.
+
+    >>> _within(np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]), np.array([1.0, 3.0]), np.array([0.5, 0.5])).tolist()
+    [True, False]
+    """
+    a, b = corners, np.roll(corners, -1, axis=0)
+    side = ((b[:, 0] - a[:, 0])[:, None] * (py[None, :] - a[:, 1][:, None])
+            - (b[:, 1] - a[:, 1])[:, None] * (px[None, :] - a[:, 0][:, None]))
+    return (side >= 0.0).all(axis=0) | (side <= 0.0).all(axis=0)
 
 
 def _rect_of(geom: shapely.Geometry) -> tuple[float, float, float, float] | None:
