@@ -23,7 +23,7 @@ import shapely
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene.marks import AngleMark, Bearing, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
-from .draw import (SLIDER, ANGLE_RADIUS, MIN_ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit,
+from .draw import (SLIDER, ANGLE_RADIUS, MIN_ANGLE_RADIUS, least_arc_radius, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit,
                    draw_arc, draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
 from .placement import Request
@@ -146,11 +146,7 @@ def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
     phi = math.atan2(va.cross(vb), va.dot(vb))
     if abs(phi) <= math.radians(0.2):
         return ()
-    if m.radius:
-        r = max(MIN_ANGLE_RADIUS, view.length(m.radius))
-    else:
-        rays = [view.length(abs(v)) for v in (m.a - m.vertex, vb) if view.length(abs(v)) >= 4.0]
-        r = max(MIN_ANGLE_RADIUS, min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS) + 3.5 * (nested - 1)
+    r = arc_radius(m, vb, phi, view, nested - 1)
     c = view.p(m.vertex)
     arc = ArcP(c, r + 1.0, -a0, -phi, Pen("#000", 0.1))
     n = max(4, int(abs(phi) / math.radians(10.0)) + 1)
@@ -288,18 +284,60 @@ def angle_rays(m: AngleMark) -> tuple[Point, Point, bool]:
     return (-va if flip else va), vb, flip
 
 
-def _radius(m: AngleMark, va: Point, vb: Point, ctx: Context) -> float:
-    """Arc radius on paper: the mark's own, else :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter
-    than 4 mm of paper only give a direction), enlarged for each earlier mark at the same vertex; never less
-    than :data:`MIN_ANGLE_RADIUS` (001-23a's α arcs were 4.5 mm, 001-24's and 200-01's 3 mm: they barely showed)."""
+def arc_radius(m: AngleMark, vb: Point, phi: float, view: Any, nested: int = 0) -> float:
+    """Arc radius on paper of mark ``m`` spanning ``phi`` radians towards ray ``vb``: the mark's own, else
+    :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter than 4 mm of paper only give a direction), enlarged
+    by 3.5 mm for each of ``nested`` earlier marks at the same vertex; never less than
+    :func:`~geomcon.render.draw.least_arc_radius` — :data:`MIN_ANGLE_RADIUS` (001-23a's α arcs were 4.5 mm,
+    001-24's and 200-01's 3 mm: they barely showed), more for a small angle, whose arc must be long enough to read
+    as an arc (001-08's θ = 12.5° at 9 mm was a 2 mm tick).
+
+    >>> from geomcon.render.view import View
+    >>> v = View((-50, -50, 50, 50), 1.0, (0, 0))
+    >>> m = AngleMark(Point(0, 0), Point(40, 0), Point(40, 10), "θ", 14.04)
+    >>> round(arc_radius(m, m.b - m.vertex, math.radians(14.04), v), 3)     # 9 mm would draw 2.2 mm of arc
+    14.283
+    >>> arc_radius(m, m.b - m.vertex, math.radians(60.0), v)
+    9.0
+    >>> k = AngleMark(Point(0, 0), Point(5, 0), Point(0, 5), "α", 90.0)     # rays of 5 mm: the arc keeps off their ends
+    >>> arc_radius(k, k.b - k.vertex, math.radians(90.0), v)
+    6.0
+    """
     if m.radius:
-        return max(MIN_ANGLE_RADIUS, ctx.view.length(m.radius))
-    key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
-    nested = ctx.marks_at.get(key, 0)
-    ctx.marks_at[key] = nested + 1
-    rays = [ctx.view.length(abs(v)) for v in (va, vb) if ctx.view.length(abs(v)) >= 4.0]
+        return max(MIN_ANGLE_RADIUS, view.length(m.radius))
+    lengths = [view.length(abs(v)) for v in (m.a - m.vertex, vb)]
+    rays = [x for x in lengths if x >= 4.0]
     r = min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS
-    return max(MIN_ANGLE_RADIUS, r) + 3.5 * nested
+    r = max(r, MIN_ANGLE_RADIUS)
+    grown = min(least_arc_radius(phi), SMALL_ANGLE_REACH * min(rays, default=0.0))
+    if (grown - r) * abs(phi) >= ARC_GAIN:                 # a growth the eye cannot see moves the figure for nothing
+        r = grown
+    for x in lengths:
+        if abs(r - x) < OFF_RAY_END:
+            r = x + OFF_RAY_END
+    return r + 3.5 * nested
+
+
+SMALL_ANGLE_REACH = 0.8
+ARC_GAIN = 0.5
+"""Paper mm of arc length a small angle's arc must gain to be grown at all (004-02's θ would gain 0.06 mm)."""
+"""A small angle's arc grows (:func:`~geomcon.render.draw.least_arc_radius`) within this part of its shorter ray, so
+that it still ends on both lines: 001-08's θ to 16 mm on AC1 = 20 mm; a pressure angle's short rays (a knife's 5 mm)
+keep its arc where it was."""
+
+OFF_RAY_END = 1.0
+"""Paper mm an arc keeps off the end of one of its rays: there lies a point drawn with a circle (200-01's roller, 5 mm
+both at 1:2, hid its αmax arc at B0)."""
+
+
+def _radius(m: AngleMark, vb: Point, phi: float, ctx: Context) -> float:
+    """:func:`arc_radius` of ``m``, counting it among the marks drawn at its vertex."""
+    key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
+    nested = 0
+    if not m.radius:
+        nested = ctx.marks_at.get(key, 0)
+        ctx.marks_at[key] = nested + 1
+    return arc_radius(m, vb, phi, ctx.view, nested)
 
 
 def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
@@ -310,7 +348,7 @@ def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
     va, vb, flip = angle_rays(m)
     a0 = math.atan2(va.y, va.x)
     phi = math.atan2(va.cross(vb), va.dot(vb))           # model, counter-clockwise positive
-    r = _radius(m, m.a - m.vertex, vb, ctx)
+    r = _radius(m, vb, phi, ctx)
     c = ctx.view.p(m.vertex)
     out = Drawn()
     arc = ArcP(c, r, -a0, -phi, pen(style))
