@@ -8,8 +8,9 @@ import math
 
 import pytest
 
-from geomcon.render.draw import ARC_LENGTH, MIN_ANGLE_RADIUS, SMALL_ANGLE_RADIUS
-from geomcon.render.symbols import ARC_GAIN, SMALL_ANGLE_REACH
+from geomcon.render.draw import ARC_LENGTH, MIN_ANGLE_RADIUS, SMALL_ANGLE_RADIUS, least_arc_radius
+from geomcon.geometry.primitives import Point
+from geomcon.render.symbols import ARC_GAIN, POINT_CLEAR, SMALL_ANGLE_REACH
 from geomcon.render.shapes import ArcP, Disc
 
 from test_drawing_defects import NAMES, angle_marks, figure
@@ -63,3 +64,33 @@ def test_the_review_s_arcs_read_as_arcs():
     assert abs(theta.sweep) * theta.r >= 3.0            # was 1.96 mm at 9 mm
     alpha = dict(_mark_arcs(figure("200-01_cam_roller_offset")))["mark_alpha_rise"]
     assert alpha.r >= 5.0 + ON_CIRCLE
+
+
+def _points(fig) -> list[tuple[str, tuple[float, float]]]:
+    """The points a figure draws (a hinge or a dot), on paper."""
+    return [(g.key, s.c) for g in fig.groups if isinstance(fig.values.get(g.key), Point)
+            for s in g.shapes if isinstance(s, Disc) and s.r <= 2.0]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_angle_arc_runs_through_a_point_inside_its_angle(name):
+    """001-19's 180° − θ arc about A ran through the pin of C (10 mm below A at 1:5): an arc keeps POINT_CLEAR from
+    every point drawn inside its angle, unless that would take it below least_arc_radius (5 mm, more for a small
+    angle)."""
+    fig = figure(name)
+    pts = _points(fig)
+    for key, arc in _mark_arcs(fig):
+        for k, c in pts:
+            d = math.dist(c, arc.c)
+            if d < 1e-6 or d - POINT_CLEAR < least_arc_radius(arc.sweep) or abs(d - arc.r) >= POINT_CLEAR - 1e-6:
+                continue
+            t = (math.atan2(c[1] - arc.c[1], c[0] - arc.c[0]) - arc.start) * (1.0 if arc.sweep >= 0 else -1.0)
+            assert t % math.tau > abs(arc.sweep) + 1e-9, (key, k, round(d, 2), round(arc.r, 2))
+
+
+def test_the_slotter_s_arm_cd_prime_is_drawn_as_the_link_d_prime_e_prime_hangs_from():
+    """001-19 drew D′E′ solid from a bare dot D′, its arm CD′ only as a grey dashed line through A: the coupler
+    hung from nothing. The arm is a link and D′ a hinge."""
+    fig = figure("001-19_slotter_rotating_guide_bar")
+    styles = {g.key: g.classes for g in fig.groups}
+    assert "style-link" in styles["CDt"].split() and "style-joint" in styles["Dt"].split()

@@ -38,26 +38,35 @@ a value always prints (a leader joins a far text to its arc)."""
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side at 45° to
-    it; turned from its side by the least multiple of 45° that keeps it off every link, frame line, angle
+    it; turned from its side by the least multiple of 45° (then of 15°, :data:`GROUND_TURNS`) that keeps it off
+    every link, frame line, angle
     mark's sector and point of the figure (a ground drawn across a link reads as a frame the link cannot
     pass; one inside an angle's arc hides the angle) and :data:`GROUND_ROOM` away from every link and fixed
     link leaving the hinge (the hatch points away from them, not into the corner between two); else the
-    turn that meets least, then the one with the most room."""
+    multiple of 45° that meets least, then the one with the most room."""
     c = ctx.view.p(g.at)
     away = _link_directions(c, ctx)
     near = _near(c, ctx)
     best = None
-    for k in (0, 1, -1, 2, -2, 3, -3, 4):
-        angle = g.angle + k * math.pi / 4
+    for i, turn in enumerate(GROUND_TURNS):
+        angle = g.angle + turn
         out = _ground_at(c, angle, style)
         hit = _collision(c, out, near)
         room = _angular_room((math.cos(angle), -math.sin(angle)), away)
         if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
             return out
+        if i >= 8:                                   # a 15° turn is taken only when clear
+            continue
         if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
             best = (hit, room, out)
     return best[2]
 
+
+GROUND_TURNS = tuple(math.radians(d) for d in (0, 45, -45, 90, -90, 135, -135, 180)) + tuple(
+    math.radians(d) for d in sorted((d for d in range(-165, 181, 15) if d % 45), key=lambda d: (abs(d), -d)))
+"""The turns a ground symbol tries, in order: the 8 multiples of 45°, then the 15° steps between them, nearest
+first (001-19b's A has its guide bar straight up and its cranks 30° below the horizontal: the clear direction,
+up-left at 150°, is no multiple of 45°)."""
 
 GROUND_ROOM = math.radians(50.0)
 """Least angle (radians) between a ground symbol's direction and a link or fixed link leaving its hinge: the base's
@@ -330,14 +339,43 @@ OFF_RAY_END = 1.0
 both at 1:2, hid its αmax arc at B0)."""
 
 
-def _radius(m: AngleMark, vb: Point, phi: float, ctx: Context) -> float:
-    """:func:`arc_radius` of ``m``, counting it among the marks drawn at its vertex."""
+def _radius(m: AngleMark, va: Point, vb: Point, phi: float, ctx: Context) -> float:
+    """:func:`arc_radius` of ``m`` (its arc from ray ``va`` over ``phi`` radians to ``vb``), counting it among the
+    marks drawn at its vertex; drawn smaller where it would run through a point of the figure
+    (:func:`_off_points`)."""
     key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
     nested = 0
     if not m.radius:
         nested = ctx.marks_at.get(key, 0)
         ctx.marks_at[key] = nested + 1
-    return arc_radius(m, vb, phi, ctx.view, nested)
+    r = arc_radius(m, vb, phi, ctx.view, nested)
+    return r if m.radius else _off_points(r, m.vertex, va, phi, ctx)
+
+
+POINT_CLEAR = 2.0
+"""Paper mm an angle's arc keeps from a point of the figure inside its angle (a hinge's circle is 1.5 mm)."""
+
+
+def _off_points(r: float, vertex: Point, va: Point, phi: float, ctx: Context) -> float:
+    """The radius ``r`` of an arc about ``vertex`` from ray ``va`` over ``phi`` radians, made smaller (not below
+    :func:`~geomcon.render.draw.least_arc_radius`) until it runs :data:`POINT_CLEAR` clear of every point of the figure inside the angle:
+    001-19's 180° − θ arc about A ran through the pin of C, 10 mm below A at 1:5."""
+    a0 = math.atan2(va.y, va.x)
+    inside = []
+    for p in ctx.points:
+        d = ctx.view.length(abs(p - vertex))
+        if d <= 1e-9:
+            continue
+        t = (math.atan2(p.y - vertex.y, p.x - vertex.x) - a0) * (1.0 if phi >= 0 else -1.0)
+        if t % math.tau <= abs(phi):
+            inside.append(d)
+    floor = least_arc_radius(phi)
+    for _ in range(len(inside)):
+        hit = [d for d in inside if abs(d - r) < POINT_CLEAR]
+        if not hit or min(hit) - POINT_CLEAR < floor:
+            return r
+        r = min(hit) - POINT_CLEAR
+    return r
 
 
 def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
@@ -348,7 +386,7 @@ def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
     va, vb, flip = angle_rays(m)
     a0 = math.atan2(va.y, va.x)
     phi = math.atan2(va.cross(vb), va.dot(vb))           # model, counter-clockwise positive
-    r = _radius(m, vb, phi, ctx)
+    r = _radius(m, va, vb, phi, ctx)
     c = ctx.view.p(m.vertex)
     out = Drawn()
     arc = ArcP(c, r, -a0, -phi, pen(style))
