@@ -334,7 +334,7 @@ ARC_GAIN = 0.5
 that it still ends on both lines: 001-08's θ to 16 mm on AC1 = 20 mm; a pressure angle's short rays (a knife's 5 mm)
 keep its arc where it was."""
 
-OFF_RAY_END = 1.0
+OFF_RAY_END = 0.7
 """Paper mm an arc keeps off the end of one of its rays: there lies a point drawn with a circle (200-01's roller, 5 mm
 both at 1:2, hid its αmax arc at B0)."""
 
