@@ -134,8 +134,8 @@ def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float) -> None:
     sc.add("face", lambda k, r: Segment(k + Point(-0.9 * r, 0.0), k + Point(0.9 * r, 0.0)), K, r0,
            role=Role.RESULT, style="link", caption=("The flat-faced follower at δ = 0", "δ = 0 时的平底从动件"))
     sc.add("stem", lambda k, r: Segment(k, k + Point(0.0, 0.9 * r)), K, r0, role=Role.RESULT, style="link")
-    sc.add("guide_mark", lambda k, r: marks.Guide(k + Point(0.0, 0.45 * r), k + Point(0.0, 0.8 * r), 1), K, r0,
-           role=Role.ANNOTATION, style="guide")
+    sc.add("guide_mark", lambda k, r: marks.bearing(k + Point(0.0, 0.65 * r), Point(0.0, 1.0)), K, r0,
+           role=Role.ANNOTATION, style="guide")      # the two bearing walls of every translating follower (a wall on one side was a slider's guide)
 
 
 def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:

@@ -157,6 +157,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
     # solution 1 drawn as a linkage; B2 unnamed: on the small unit drawing its name would sit nearer A2
     add_unit_linkage(sc, Ref("A_1"), D, C1, C2, optional=True, labels=("B1", None))
+    if sc.drawing:                          # the designed linkage's crank pivot is a fixed pivot, not only a candidate
+        sc.add("A_ground", marks.ground, Ref("A_1"), -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
     return Construction(sc, dict(sols[0]), {"D": "D", "C1": "C1", "C2": "C2"}, solutions=tuple(sols),
                         no_solution=f"no crank-rocker with K = {K:g}, ψ = {psi:g}° has the crank AB = {AB:g} on the frame AD = {AD:g}")
 

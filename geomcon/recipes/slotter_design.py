@@ -99,7 +99,7 @@ def _finish(sc: Scene, g: Mapping[str, Any], C: Ref, ee: Ref, names: list[str]) 
     if g.get("alpha_allow") is not None:
         a = g["alpha_allow"]
         if drawing:
-            Dt = sc.add("Dt", point_along, C, sc.given("up", Point(0.0, 1.0), visible=False), S / 2, style="point",
+            Dt = sc.add("Dt", point_along, C, sc.given("up", Point(0.0, 1.0), visible=False), S / 2, style="joint",
                         label="D′", caption=("CD ⊥ ee: the largest pressure angle at E", "CD ⊥ ee 时滑块压力角最大"))
         DE = sc.add("DE", _shortest, Ref("CD"), a, role=Role.MEASUREMENT, unit="mm",
                     caption=(f"Shortest coupler DE = CD / sin αallow, αallow = {a:g}°", f"最短连杆 DE = CD / sin[α],[α] = {a:g}°"))
@@ -108,7 +108,7 @@ def _finish(sc: Scene, g: Mapping[str, Any], C: Ref, ee: Ref, names: list[str]) 
             E = sc.add("E", line_circle, ee, kE, branch=ToRightOf(Dt), role=Role.RESULT, style="joint", label="E′",
                        caption=("E′ on ee at DE from D′", "以 D′ 为圆心、DE 为半径交 ee 于 E′"))
             add_bar(sc, "DtE", Dt, E, style="link")
-            add_bar(sc, "CDt", C, Dt, style="ghost", role=Role.CONSTRUCTION)
+            add_bar(sc, "CDt", C, Dt, style="link")       # the arm D′E′ hangs from: drawn as the link it is
             sc.add("slider_E", marks.slider, E, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
         names.append("DE")
     return names

@@ -19,7 +19,7 @@ from dataclasses import replace
 from typing import Any, Iterable
 
 from ..scene.marks import AngleMark
-from .draw import MIN_ANGLE_RADIUS
+from .draw import MIN_ANGLE_RADIUS, least_arc_radius
 from .shapes import ArcP, Pen, Poly
 
 ARM_BEYOND = 1.5
@@ -69,7 +69,7 @@ def fitted(arc: ArcP, strokes: Iterable[Poly]) -> tuple[ArcP, list[Poly]]:
     if not bare:
         return arc, []
     r = min(_reach(segs, arc.c, u, arc.r) for u in ends) - ARM_BEYOND
-    if r >= MIN_ANGLE_RADIUS and all(any(_covers(s, arc.c, u, r) for s in segs) for u in ends):
+    if r >= max(MIN_ANGLE_RADIUS, min(least_arc_radius(arc.sweep), arc.r)) and all(any(_covers(s, arc.c, u, r) for s in segs) for u in ends):
         return replace(arc, r=r), []
     k = arc.r + ARM_BEYOND
     return arc, [Poly((arc.c, (arc.c[0] + u[0] * k, arc.c[1] + u[1] * k)), Pen(arc.pen.stroke, 0.18, (1.2, 0.8)))

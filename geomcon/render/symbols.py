@@ -23,7 +23,7 @@ import shapely
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene.marks import AngleMark, Bearing, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
-from .draw import (SLIDER, ANGLE_RADIUS, MIN_ANGLE_RADIUS, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit,
+from .draw import (SLIDER, ANGLE_RADIUS, MIN_ANGLE_RADIUS, least_arc_radius, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit,
                    draw_arc, draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
 from .labels import rich_runs, text_width
 from .placement import Request
@@ -38,26 +38,35 @@ a value always prints (a leader joins a far text to its arc)."""
 
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side at 45° to
-    it; turned from its side by the least multiple of 45° that keeps it off every link, frame line, angle
+    it; turned from its side by the least multiple of 45° (then of 15°, :data:`GROUND_TURNS`) that keeps it off
+    every link, frame line, angle
     mark's sector and point of the figure (a ground drawn across a link reads as a frame the link cannot
     pass; one inside an angle's arc hides the angle) and :data:`GROUND_ROOM` away from every link and fixed
     link leaving the hinge (the hatch points away from them, not into the corner between two); else the
-    turn that meets least, then the one with the most room."""
+    multiple of 45° that meets least, then the one with the most room."""
     c = ctx.view.p(g.at)
     away = _link_directions(c, ctx)
     near = _near(c, ctx)
     best = None
-    for k in (0, 1, -1, 2, -2, 3, -3, 4):
-        angle = g.angle + k * math.pi / 4
+    for i, turn in enumerate(GROUND_TURNS):
+        angle = g.angle + turn
         out = _ground_at(c, angle, style)
         hit = _collision(c, out, near)
         room = _angular_room((math.cos(angle), -math.sin(angle)), away)
         if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
             return out
+        if i >= 8:                                   # a 15° turn is taken only when clear
+            continue
         if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
             best = (hit, room, out)
     return best[2]
 
+
+GROUND_TURNS = tuple(math.radians(d) for d in (0, 45, -45, 90, -90, 135, -135, 180)) + tuple(
+    math.radians(d) for d in sorted((d for d in range(-165, 181, 15) if d % 45), key=lambda d: (abs(d), -d)))
+"""The turns a ground symbol tries, in order: the 8 multiples of 45°, then the 15° steps between them, nearest
+first (001-19b's A has its guide bar straight up and its cranks 30° below the horizontal: the clear direction,
+up-left at 150°, is no multiple of 45°)."""
 
 GROUND_ROOM = math.radians(50.0)
 """Least angle (radians) between a ground symbol's direction and a link or fixed link leaving its hinge: the base's
@@ -146,11 +155,7 @@ def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
     phi = math.atan2(va.cross(vb), va.dot(vb))
     if abs(phi) <= math.radians(0.2):
         return ()
-    if m.radius:
-        r = max(MIN_ANGLE_RADIUS, view.length(m.radius))
-    else:
-        rays = [view.length(abs(v)) for v in (m.a - m.vertex, vb) if view.length(abs(v)) >= 4.0]
-        r = max(MIN_ANGLE_RADIUS, min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS) + 3.5 * (nested - 1)
+    r = arc_radius(m, vb, phi, view, nested - 1)
     c = view.p(m.vertex)
     arc = ArcP(c, r + 1.0, -a0, -phi, Pen("#000", 0.1))
     n = max(4, int(abs(phi) / math.radians(10.0)) + 1)
@@ -288,18 +293,89 @@ def angle_rays(m: AngleMark) -> tuple[Point, Point, bool]:
     return (-va if flip else va), vb, flip
 
 
-def _radius(m: AngleMark, va: Point, vb: Point, ctx: Context) -> float:
-    """Arc radius on paper: the mark's own, else :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter
-    than 4 mm of paper only give a direction), enlarged for each earlier mark at the same vertex; never less
-    than :data:`MIN_ANGLE_RADIUS` (001-23a's α arcs were 4.5 mm, 001-24's and 200-01's 3 mm: they barely showed)."""
+def arc_radius(m: AngleMark, vb: Point, phi: float, view: Any, nested: int = 0) -> float:
+    """Arc radius on paper of mark ``m`` spanning ``phi`` radians towards ray ``vb``: the mark's own, else
+    :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter than 4 mm of paper only give a direction), enlarged
+    by 3.5 mm for each of ``nested`` earlier marks at the same vertex; never less than
+    :func:`~geomcon.render.draw.least_arc_radius` — :data:`MIN_ANGLE_RADIUS` (001-23a's α arcs were 4.5 mm,
+    001-24's and 200-01's 3 mm: they barely showed), more for a small angle, whose arc must be long enough to read
+    as an arc (001-08's θ = 12.5° at 9 mm was a 2 mm tick).
+
+    >>> from geomcon.render.view import View
+    >>> v = View((-50, -50, 50, 50), 1.0, (0, 0))
+    >>> m = AngleMark(Point(0, 0), Point(40, 0), Point(40, 10), "θ", 14.04)
+    >>> round(arc_radius(m, m.b - m.vertex, math.radians(14.04), v), 3)     # 9 mm would draw 2.2 mm of arc
+    14.283
+    >>> arc_radius(m, m.b - m.vertex, math.radians(60.0), v)
+    9.0
+    >>> k = AngleMark(Point(0, 0), Point(5, 0), Point(0, 5), "α", 90.0)     # rays of 5 mm: the arc keeps off their ends
+    >>> arc_radius(k, k.b - k.vertex, math.radians(90.0), v)
+    6.0
+    """
     if m.radius:
-        return max(MIN_ANGLE_RADIUS, ctx.view.length(m.radius))
-    key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
-    nested = ctx.marks_at.get(key, 0)
-    ctx.marks_at[key] = nested + 1
-    rays = [ctx.view.length(abs(v)) for v in (va, vb) if ctx.view.length(abs(v)) >= 4.0]
+        return max(MIN_ANGLE_RADIUS, view.length(m.radius))
+    lengths = [view.length(abs(v)) for v in (m.a - m.vertex, vb)]
+    rays = [x for x in lengths if x >= 4.0]
     r = min(ANGLE_RADIUS, 0.6 * min(rays)) if rays else ANGLE_RADIUS
-    return max(MIN_ANGLE_RADIUS, r) + 3.5 * nested
+    r = max(r, MIN_ANGLE_RADIUS)
+    grown = min(least_arc_radius(phi), SMALL_ANGLE_REACH * min(rays, default=0.0))
+    if (grown - r) * abs(phi) >= ARC_GAIN:                 # a growth the eye cannot see moves the figure for nothing
+        r = grown
+    for x in lengths:
+        if abs(r - x) < OFF_RAY_END:
+            r = x + OFF_RAY_END
+    return r + 3.5 * nested
+
+
+SMALL_ANGLE_REACH = 0.8
+ARC_GAIN = 0.5
+"""Paper mm of arc length a small angle's arc must gain to be grown at all (004-02's θ would gain 0.06 mm)."""
+"""A small angle's arc grows (:func:`~geomcon.render.draw.least_arc_radius`) within this part of its shorter ray, so
+that it still ends on both lines: 001-08's θ to 16 mm on AC1 = 20 mm; a pressure angle's short rays (a knife's 5 mm)
+keep its arc where it was."""
+
+OFF_RAY_END = 0.7
+"""Paper mm an arc keeps off the end of one of its rays: there lies a point drawn with a circle (200-01's roller, 5 mm
+both at 1:2, hid its αmax arc at B0)."""
+
+
+def _radius(m: AngleMark, va: Point, vb: Point, phi: float, ctx: Context) -> float:
+    """:func:`arc_radius` of ``m`` (its arc from ray ``va`` over ``phi`` radians to ``vb``), counting it among the
+    marks drawn at its vertex; drawn smaller where it would run through a point of the figure
+    (:func:`_off_points`)."""
+    key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
+    nested = 0
+    if not m.radius:
+        nested = ctx.marks_at.get(key, 0)
+        ctx.marks_at[key] = nested + 1
+    r = arc_radius(m, vb, phi, ctx.view, nested)
+    return r if m.radius else _off_points(r, m.vertex, va, phi, ctx)
+
+
+POINT_CLEAR = 2.0
+"""Paper mm an angle's arc keeps from a point of the figure inside its angle (a hinge's circle is 1.5 mm)."""
+
+
+def _off_points(r: float, vertex: Point, va: Point, phi: float, ctx: Context) -> float:
+    """The radius ``r`` of an arc about ``vertex`` from ray ``va`` over ``phi`` radians, made smaller (not below
+    :func:`~geomcon.render.draw.least_arc_radius`) until it runs :data:`POINT_CLEAR` clear of every point of the figure inside the angle:
+    001-19's 180° − θ arc about A ran through the pin of C, 10 mm below A at 1:5."""
+    a0 = math.atan2(va.y, va.x)
+    inside = []
+    for p in ctx.points:
+        d = ctx.view.length(abs(p - vertex))
+        if d <= 1e-9:
+            continue
+        t = (math.atan2(p.y - vertex.y, p.x - vertex.x) - a0) * (1.0 if phi >= 0 else -1.0)
+        if t % math.tau <= abs(phi):
+            inside.append(d)
+    floor = least_arc_radius(phi)
+    for _ in range(len(inside)):
+        hit = [d for d in inside if abs(d - r) < POINT_CLEAR]
+        if not hit or min(hit) - POINT_CLEAR < floor:
+            return r
+        r = min(hit) - POINT_CLEAR
+    return r
 
 
 def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
@@ -310,7 +386,7 @@ def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
     va, vb, flip = angle_rays(m)
     a0 = math.atan2(va.y, va.x)
     phi = math.atan2(va.cross(vb), va.dot(vb))           # model, counter-clockwise positive
-    r = _radius(m, m.a - m.vertex, vb, ctx)
+    r = _radius(m, va, vb, phi, ctx)
     c = ctx.view.p(m.vertex)
     out = Drawn()
     arc = ArcP(c, r, -a0, -phi, pen(style))
