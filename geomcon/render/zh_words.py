@@ -48,7 +48,7 @@ WORDS = frozenset("""
 SINGLE = frozenset("""
 的 之 其 该 每 各 者 所 为 是 与 及 或 且 若 即 于 在 以 由 按 沿 绕 自 至 到 向 过 对 离 经 将 把 被 随 使 须 能 可 不
 仍 仅 只 再 均 任 另 同 一 两 双 六 第 上 中 内 后 旁 边 侧 处 时 近 远 较 高 短 小 慢 正 逆 顺 非 否 无 有 用 夹
-作 取 交 画 求 得 量 成 转 找 切 张 靠 带 点 线 圆 弧 弦 角 杆 长 距 轴 销 族 值 解 根
+作 取 交 画 求 得 量 成 转 找 见 切 张 靠 带 点 线 圆 弧 弦 角 杆 长 距 轴 销 族 值 解 根
 """.split())
 """Characters that are words by themselves (particles, prepositions, measure and function words, single-syllable
 verbs and nouns of a construction: 以 A 为圆心, 作圆, 交于, 取点): a character of a text that is neither one nor part
