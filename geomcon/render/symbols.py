@@ -310,7 +310,7 @@ def arc_radius(m: AngleMark, vb: Point, phi: float, view: Any, nested: int = 0) 
     9.0
     >>> k = AngleMark(Point(0, 0), Point(5, 0), Point(0, 5), "α", 90.0)     # rays of 5 mm: the arc keeps off their ends
     >>> arc_radius(k, k.b - k.vertex, math.radians(90.0), v)
-    6.0
+    5.7
     """
     if m.radius:
         return max(MIN_ANGLE_RADIUS, view.length(m.radius))
@@ -327,9 +327,10 @@ def arc_radius(m: AngleMark, vb: Point, phi: float, view: Any, nested: int = 0) 
     return r + 3.5 * nested
 
 
-SMALL_ANGLE_REACH = 0.8
 ARC_GAIN = 0.5
 """Paper mm of arc length a small angle's arc must gain to be grown at all (004-02's θ would gain 0.06 mm)."""
+
+SMALL_ANGLE_REACH = 0.8
 """A small angle's arc grows (:func:`~geomcon.render.draw.least_arc_radius`) within this part of its shorter ray, so
 that it still ends on both lines: 001-08's θ to 16 mm on AC1 = 20 mm; a pressure angle's short rays (a knife's 5 mm)
 keep its arc where it was."""
