@@ -20,7 +20,7 @@ Examples
 """
 from __future__ import annotations
 
-from typing import Any, Mapping
+from typing import Any, Iterator, Mapping
 
 from .plan import planned
 from .recipes import Construction, Recipe
@@ -103,15 +103,20 @@ def taped_values(recipe: Recipe, given: Mapping[str, Any]) -> tuple[Tape, dict[s
     """The current tape of ``recipe`` for the shape of ``given`` whose guards hold on it, and the memo a replay
     starts from (the tape's own steps computed: :meth:`~geomcon.scene.tape.Tape.values`); None when there is
     none (not yet recorded, not tapeable, another path through the recipe's decisions)."""
+    for tape in _current_tapes(recipe, given):
+        memo = tape.values(given)
+        if memo is not None:
+            return tape, memo
+    return None
+
+
+def _current_tapes(recipe: Recipe, given: Mapping[str, Any]) -> Iterator[Tape]:
+    """The tapes recorded for the shape of ``given`` that are still current for ``recipe``, in their order."""
     key = shape_of(recipe.name, given)
     entries = _TAPES.get(key) if key is not None else None
-    if entries:
-        for tape, _, _ in entries:
-            if tape is not None and _current(entries[0], recipe.name, tape.title):
-                memo = tape.values(given)
-                if memo is not None:
-                    return tape, memo
-    return None
+    for tape, _, _ in entries or ():
+        if tape is not None and _current(entries[0], recipe.name, tape.title):
+            yield tape
 
 
 def taped_rebuild(recipe: Recipe, given: Mapping[str, Any], keys: tuple[str, ...]) -> tuple | None:
@@ -127,19 +132,15 @@ def taped_rebuild(recipe: Recipe, given: Mapping[str, Any], keys: tuple[str, ...
     >>> [round(x, 9) for x in taped_rebuild(r, {"AB": 100.0, "AC": 200.0}, ("theta",))]
     [60.0]
     """
-    key = shape_of(recipe.name, given)
-    entries = _TAPES.get(key) if key is not None else None
-    if entries:
-        for tape, _, _ in entries:
-            if tape is not None and _current(entries[0], recipe.name, tape.title):
-                run = tape.rebuilder(keys)
-                if run is None:                       # as taped_values then the program: this tape if it holds
-                    if tape.values(given) is None:
-                        continue
-                    return None
-                values = run(given)
-                if values is not None:
-                    return values
+    for tape in _current_tapes(recipe, given):
+        run = tape.rebuilder(keys)
+        if run is None:                               # as taped_values then the program: this tape if it holds
+            if tape.values(given) is None:
+                continue
+            return None
+        values = run(given)
+        if values is not None:
+            return values
     return None
 
 

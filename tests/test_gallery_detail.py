@@ -26,9 +26,10 @@ from geomcon.solve import solve
 ROOT = Path(__file__).resolve().parents[1]
 GALLERY = ROOT / "gallery"
 PROBLEMS = [p.stem for p in problem_files(ROOT / "problems")]
-@lru_cache(maxsize=None)
-def _shortest(pid: str) -> tuple[float, Scale] | None:
-    """The shortest link of sheet 1's figure on paper (mm) and the sheet's scale; None without links."""
+def _sheet1(pid: str):
+    """Sheet 1 of ``pid`` as the gallery lays it out: the solution, page, drawing scene, results and warnings
+    lines, the sheet layout, scale and view, and the figure's keep filter (None, or the diagram's when the s–δ
+    diagram stands apart)."""
     sol = solve(load_problem(ROOT / "problems" / f"{pid}.toml"))
     page = gallery_page()
     sc = sol.drawing_scene
@@ -39,6 +40,13 @@ def _shortest(pid: str) -> tuple[float, Scale] | None:
     if apart is not None:
         sl, scale, view = apart
         keep = _not_diagram
+    return sol, page, sc, info, warnings, sl, scale, view, keep
+
+
+@lru_cache(maxsize=None)
+def _shortest(pid: str) -> tuple[float, Scale] | None:
+    """The shortest link of sheet 1's figure on paper (mm) and the sheet's scale; None without links."""
+    sol, page, sc, info, warnings, sl, scale, view, keep = _sheet1(pid)
     steps, _ = shown_steps(sc, None, keep)
     values = sc.evaluate([s.key for _, s in steps])
     _, _, lengths = mechanism_steps(steps, values)
@@ -80,16 +88,7 @@ def _detail_sizes_without_room(pid: str) -> list[tuple[float, float]]:
     from geomcon.render.free_area import FreeRoom
     from geomcon.render.page import INSET, frame_box
     from geomcon.render.svg import _keepouts, results_in_free_room
-    sol = solve(load_problem(ROOT / "problems" / f"{pid}.toml"))
-    page = gallery_page()
-    sc = sol.drawing_scene
-    info, warnings = sol.figure_lines(page.lang), warning_lines(sol.warnings, page.lang)
-    sl, scale, view = place_figure(sc, page, info, warnings)
-    apart = diagram_apart(sc, page, info, warnings, scale)
-    keep = None
-    if apart is not None:
-        sl, scale, view = apart
-        keep = _not_diagram
+    sol, page, sc, info, warnings, sl, scale, view, keep = _sheet1(pid)
     fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep)
     if not sl.info_here:
         sl = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps()) or sl
