@@ -201,6 +201,14 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     ("cam.eccentric", "alpha_max"): _n("αmax,turn", "largest pressure angle of the turn", "全周最大压力角"),
     ("cam.eccentric", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
     ("cam.eccentric", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
+    # a guide bar is no rocker, and the link from it to the ram no output arm (001-19 printed "CD … 摇杆" for the
+    # arm of a fully rotating guide bar and "DE … 输出摆杆" for the coupler to the slide)
+    ("slotter.design_by_K", "CD"): _n("CD", "arm of the rotating guide bar", "转动导杆的臂长"),
+    ("slotter.design_by_K", "DE"): _n("DE", "coupler to the slide", "连杆"),
+    ("shaper.design_by_K", "CD"): _n("CD", "guide bar, C to D", "导杆"),
+    ("shaper.design_by_K", "DE"): _n("DE", "coupler to the ram", "连杆"),
+    ("guide_bar.design_by_K", "CD"): _n("CD", "guide bar, C to D", "导杆"),
+    ("guide_bar.design_by_K", "DE"): _n("DE", "coupler to the ram", "连杆"),
 }
 """Printed names that differ by recipe (an arm's ω2 is not a coupler's; a cam follower's a is not a centre
 distance): looked up before :data:`NAMES`."""
