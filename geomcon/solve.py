@@ -690,13 +690,16 @@ class Solution:
             lines.append(line)
         return lines
 
-    def figure_lines(self, lang: str = "en") -> list[str]:
+    def figure_lines(self, lang: str = "en", brief: bool = False) -> list[str]:
         """The result lines of a drawing, as a textbook prints them (:mod:`geomcon.render.results`): one per
         answer, in the order of :meth:`info_lines`, each saying what agreed with what and how the printed
-        answer deviates."""
-        from .render.results import percent, result_line, shown_printed
+        answer deviates. ``brief``: the lines sheet 1 prints when the full ones find no room there — no Chinese
+        gloss after an English line (the symbols say it), a list's printed values counted, not listed
+        (:func:`~geomcon.render.results.brief_printed`); the full lines stand on the results sheet."""
+        from .render.results import brief_printed, percent, result_line, shown_printed
 
         pub = {r["quantity"]: r for r in self.published}
+        zh = lang == "zh"
         lines = []
         for q in self.recipe.answers:
             if q.name not in self.answers:
@@ -709,14 +712,19 @@ class Solution:
                 if p is None:
                     continue
                 rel = p["rel_deviation"]
-                how = "" if rel is None else (percent(rel) if p["deviation"] else ("exact" if lang != "zh" else "精确"))
-                doubt = ("，存疑" if lang == "zh" else ", doubtful") if p["doubtful"] else ""
-                sep = "，" if lang == "zh" else ", "
-                printed.append(shown_printed(p["published"], q.unit, lang) + (f"{sep}{how}" if how else "") + doubt)
+                how = "" if rel is None else (percent(rel) if p["deviation"] else ("精确" if zh else "exact"))
+                printed.append((shown_printed(p["published"], q.unit, lang), how, bool(p["doubtful"])))
+            if brief:
+                words = brief_printed(printed, lang) if printed else []
+            else:
+                sep = "，" if zh else ", "
+                words = [pr + (f"{sep}{how}" if how else "") + ((sep + ("存疑" if zh else "doubtful")) if d else "")
+                         for pr, how, d in printed]
             at = self.problem.given.get("at") if "`at`" in q.doc else None
             lines.append(result_line(q.name, self.answers[q.name], q.unit,
-                                     twin=None if not rows else all(r["ok"] for r in rows), printed=printed,
-                                     lang=lang, recipe=self.recipe.name, at=tuple(at or ())))
+                                     twin=None if not rows else all(r["ok"] for r in rows), printed=words,
+                                     lang=("zh" if zh else "en") if brief else lang, recipe=self.recipe.name,
+                                     at=tuple(at or ())))
         return lines
 
     def info_steps(self) -> list[int]:
@@ -788,11 +796,13 @@ class Solution:
         :class:`~geomcon.render.page.PageSpec` (default A4 landscape, both languages)."""
         from .render.page import PageSpec
         from .render.svg import render_sheets
+        from .render.results import brief_warnings
         from .render.warning_words import warning_lines
         page = page or PageSpec()
+        brief = (self.figure_lines(page.lang, brief=True), brief_warnings(self.warnings, page.lang, "{sheet}"))
         return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(),
                              info=self.figure_lines(page.lang), warnings=warning_lines(self.warnings, page.lang),
-                             info_steps=self.info_steps(),
+                             info_steps=self.info_steps(), brief=brief,
                              page=page, problem=self.problem.id + ".toml" if self.problem.path else self.problem.id,
                              recipe=self.recipe.name)
 

@@ -24,16 +24,11 @@ from geomcon.solve import solve
 
 ROOT = Path(__file__).resolve().parents[1]
 GALLERY = ROOT / "gallery"
-NO_ROOM = {
-    "000-03_slotter_velocity_polygons": "14 results and 12 warnings: 206 mm tall at 125 mm wide",
-    "000-05_slotter_cam_motion_law": "15 results (ψ at eleven δ) and 8 warnings: the results alone 106 mm at 125 mm",
-    "000-06_slotter_cam_pitch_points": "the pitch points' table: 356 mm tall at 125 mm wide",
-    "000-07_slotter_cam_actual_profile": "the profile points' table: 338 mm tall at 125 mm wide",
-    "100-07_rocker_slider_three_positions": "60 mm at 95 mm; the inversion's arcs and lines fill the frame",
-}
-"""Drawings whose free room holds no box for their results: they keep a sheet of their own (the last resort of
-:func:`geomcon.render.svg._best_layout`, which would draw them a standard scale smaller to reserve a column).
-The list may only shrink."""
+NO_ROOM: dict[str, str] = {}
+"""Drawings whose free room holds no box for their results, not even for their brief lines (one per result, the
+doubtful printed answers in one warning: :func:`geomcon.render.results.brief_warnings`): they would keep a sheet of
+their own. Empty since 000-03, 000-05, 000-06, 000-07 and 100-07 print their results in brief on sheet 1 (their
+full lines 206, 106 + 8 warnings, 356, 338 and 60 mm tall found no box there); the list may only stay empty."""
 FREE_ROOM = ["000-04_slotter_cam_psi0", "001-01_crank_rocker_change_point", "001-04_guide_bar_offset",
              "001-06_crank_slider", "001-07_crank_slider_strokes", "001-13_radar_antenna_K1",
              "001-14_crank_rocker_K1_frame_angles", "001-15_crank_rocker_frame_and_position",

@@ -211,16 +211,19 @@ def fit_size(s: str, width: float, size: float) -> float:
     return max(MIN_TEXT, round(size * width / need, 2))
 
 
-def fitted(s: str, width: float, size: float, weight: float = 1.0) -> str:
-    """``s``, cut short with … when even at :data:`MIN_TEXT` it is wider than ``width`` (``weight``: how much
-    wider the font is than the regular estimate, e.g. bold).
+def fitted(s: str, width: float, size: float, weight: float = 1.0, least: float = MIN_TEXT) -> str:
+    """``s``, cut short with … when even at ``least`` (the smallest size it may be set at: :data:`MIN_TEXT` for
+    a text that :func:`fit_size` shrinks, its own ``size`` for one set at that size) it is wider than ``width``
+    (``weight``: how much wider the font is than the regular estimate, e.g. bold).
 
     >>> fitted("abc", 100.0, 5.0), fitted("x" * 200, 50.0, 5.0).endswith("…")
     ('abc', True)
+    >>> fitted("x" * 30, 50.0, 3.5), fitted("x" * 30, 50.0, 3.5, least=3.5).endswith("…")
+    ('xxxxxxxxxxxxxxxxxxxxxxxxxxxxxx', True)
     """
-    if text_width(s, MIN_TEXT) * weight <= width:
+    if text_width(s, least) * weight <= width:
         return s
-    while s and text_width(s + "…", MIN_TEXT) * weight > width:
+    while s and text_width(s + "…", least) * weight > width:
         s = s[:-1]
     return s.rstrip() + "…"
 

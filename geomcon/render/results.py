@@ -20,6 +20,7 @@ Examples
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any, Sequence
 
@@ -382,5 +383,66 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     return head + _remarks(twin, printed, lang)
 
 
-__all__ = ["AnswerName", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "result_line", "shown_printed",
+_DOUBTFUL = re.compile(r"published (?P<q>\w+)(?P<i>\[\d+\])? = \S+ is doubtful: it deviates from the exact "
+                                     r"\S+ by .+?, beyond drafting accuracy \(±(?P<acc>.+?)\)")
+
+
+def brief_warnings(warnings: Sequence[str], lang: str, sheet: int | str) -> list[str]:
+    """The warnings as sheet 1 prints them when the full block finds no room there: every doubtful printed answer
+    in one line (its symbol; a list's entries as ``xp[0…4]``: the Results lines carry each deviation), the others
+    as :func:`geomcon.render.warning_words.warning_lines` words them; the full sentences stand on sheet ``sheet``
+    (``"{sheet}"``: filled in when the sheets are counted).
+
+    >>> brief_warnings(["published vD = 330 is doubtful: it deviates from the exact 385.405 by -14.38 %, beyond "
+    ...                 "drafting accuracy (±3 %)", "published pitch_x[0] = 1 is doubtful: it deviates from the exact 2 "
+    ...                 "by -50 %, beyond drafting accuracy (±3 %)", "published pitch_x[1] = 1 is doubtful: it "
+    ...                 "deviates from the exact 2 by -50 %, beyond drafting accuracy (±3 %)"], "en", 2)
+    ['printed vD, xp[0…1] doubtful: beyond drafting accuracy (±3 %); see sheet 2']
+    >>> brief_warnings(["published vD = 330 is doubtful: it deviates from the exact 385.405 by -14.38 %, beyond "
+    ...                 "drafting accuracy (±3 %)"], "zh", 3)
+    ['教材答案 vD 存疑：超出作图精度（±3 %），详见第 3 张']
+    """
+    from .warning_words import warning_lines
+    doubtful: dict[str, list[int]] = {}
+    acc, rest = "", []
+    for w in warnings:
+        m = _DOUBTFUL.fullmatch(w)
+        if m is None:
+            rest.append(w)
+            continue
+        acc = m["acc"]
+        doubtful.setdefault(m["q"], []).extend([int(m["i"][1:-1])] if m["i"] else [])
+    out = []
+    if doubtful:
+        names = []
+        for q, idx in doubtful.items():
+            sym = name_of(q).symbol
+            names.append(sym if not idx else f"{sym}[{idx[0]}]" if len(idx) == 1 else f"{sym}[{min(idx)}…{max(idx)}]")
+        en = f"printed {', '.join(names)} doubtful: beyond drafting accuracy (±{acc}); see sheet {sheet}"
+        zh = f"教材答案 {'、'.join(names)} 存疑：超出作图精度（±{acc}），详见第 {sheet} 张"
+        out += [en] if lang == "en" else [zh] if lang == "zh" else [en, zh]
+    return out + warning_lines(rest, lang)
+
+
+def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[str]:
+    """The printed answers of one result as its brief line remarks on them: one printed value as the full line
+    does; several (a list's entries) by how many are doubtful, their values and deviations on the results sheet.
+
+    >>> brief_printed([("-33.78", "+26.03 %", True), ("-43.21", "+20.72 %", True)], "en")
+    ['2 of 2 doubtful']
+    >>> brief_printed([("220", "-29.97 %", True)], "zh"), brief_printed([("1", "0.1 %", False)] * 3, "en")
+    (['220，-29.97 %，存疑'], ['3 within drafting accuracy'])
+    """
+    zh = lang == "zh"
+    if len(printed) == 1:
+        p, how, doubt = printed[0]
+        sep = "，" if zh else ", "
+        return [p + (f"{sep}{how}" if how else "") + ((sep + ("存疑" if zh else "doubtful")) if doubt else "")]
+    n = sum(d for _, _, d in printed)
+    if not n:
+        return [f"{len(printed)} 个均在作图精度内" if zh else f"{len(printed)} within drafting accuracy"]
+    return [f"{len(printed)} 个中 {n} 个存疑" if zh else f"{n} of {len(printed)} doubtful"]
+
+
+__all__ = ["AnswerName", "brief_printed", "brief_warnings", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "result_line", "shown_printed",
            "shown_value", "unit_text"]

@@ -406,7 +406,7 @@ def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str
         first = f"{k}. {(zh or en) if lang == 'zh' else en}"
         lines = wrap(first, width, INFO_SIZE) + (wrap(zh, width, INFO_SIZE) if lang == "both" and zh else [])
         if len(lines) > most:
-            lines = lines[:most - 1] + [fitted(" ".join(lines[most - 1:]), width, INFO_SIZE)]
+            lines = lines[:most - 1] + [fitted(" ".join(lines[most - 1:]), width, INFO_SIZE, least=INFO_SIZE)]
         for i, ln in enumerate(lines):
             el = _line(dwg, ln, box[0], box[1] + INFO_SIZE + i * lh, INFO_SIZE, HIGHLIGHT,
                        "stepcap current" if k == upto else "stepcap")
@@ -418,7 +418,7 @@ def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str
 def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
                   info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
                   info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
-                  recipe: str = "") -> list[str]:
+                  recipe: str = "", brief: tuple[Sequence[str], Sequence[str]] | None = None) -> list[str]:
     """The printed sheets of the scene (or of its frame ``upto``): sheet 1 the drawing at a standard scale
     with its scale bar, results, warnings and title block; a cam's s–δ diagram on sheet 2 at its own scale when
     that draws the cam larger (:func:`diagram_apart`); then the construction protocol's sheets.
@@ -447,6 +447,10 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         Paper, orientation and language.
     problem, recipe : str
         The problem file and recipe named in the title block.
+    brief : (result lines, warnings) or None
+        The short results and warnings sheet 1 prints when ``info`` and ``warnings`` find no room there (one
+        line per result, as ``info``; ``{sheet}`` in them becomes the number of the results sheet, which holds
+        the full lines, :func:`info_pages`).
 
     Returns
     -------
@@ -464,16 +468,26 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     origin = view.origin
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
         sl = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps) or sl
-    detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, info, warnings, scale, upto)
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
+    extra = int(apart is not None)
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
-    skip = sl.info_h + BLOCK_GAP if moved else 0.0          # the protocol's heading as far below as Warnings'
+    shown_info, shown_warnings = info, warnings             # what sheet 1 prints
+    if moved and brief is not None:                         # in brief on sheet 1, in full on the results sheet
+        here = [[ln.replace("{sheet}", str(2 + extra)) for ln in lines] for lines in brief]
+        placed = results_in_free_room(fig, sl, page, here[0], here[1], scale, info_steps)
+        if placed is not None:
+            sl, shown_info, shown_warnings = placed, here[0], here[1]
+    detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, shown_info, shown_warnings,
+                                                                scale, upto)
+    text_w, text_h = fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET
+    chunks = info_pages(info, warnings, info_steps, text_w, text_h) if moved else []
+    skip = chunks[-1][2] + BLOCK_GAP if chunks else 0.0      # the protocol's heading as far below as Warnings'
 
     notes = diagram_notes(scene, 2) if apart is not None else None
-    pages = paginate(scene, fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET, lang, skip, notes) if protocol else []
-    extra = int(apart is not None)
-    n = 1 + extra + max(len(pages), int(moved))
+    pages = paginate(scene, text_w, text_h, lang, skip, notes) if protocol else []
+    lead = max(len(chunks) - 1, 0)                          # sheets of results alone before the protocol's first
+    n = 1 + extra + lead + max(len(pages), int(moved))
     block = TitleBlock(title or scene.title, problem or "—", recipe or "—", scale, str(sheet), 1, n, lang)
 
     dwg = document(sheet)
@@ -493,14 +507,14 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     if sl.info_here and sl.pieces:
         n_info, parts = 0, sum(bool(pc.rows) for pc in sl.pieces)
         for pc in sl.pieces:
-            rows = [info[i] for i in pc.rows]
+            rows = [shown_info[i] for i in pc.rows]
             at = [info_steps[i] for i in pc.rows] if info_steps is not None else None
             n_info += bool(rows)
             name = "warnings" if not rows else "info" if n_info == 1 else f"info-{n_info}"
-            dwg.add(render_info(dwg, rows, pc.x, pc.y, pc.w, warnings if pc.warnings else (), at, upto, lang, last,
+            dwg.add(render_info(dwg, rows, pc.x, pc.y, pc.w, shown_warnings if pc.warnings else (), at, upto, lang, last,
                                 id_=name, part=(n_info, parts) if rows and parts > 1 else None))
     elif sl.info_here and (info or warnings):
-        dwg.add(render_info(dwg, info, *sl.info_at, sl.info_w, warnings, info_steps, upto, lang, last))
+        dwg.add(render_info(dwg, shown_info, *sl.info_at, sl.info_w, shown_warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
     out = [svg_string(dwg)]
     if apart is not None:
@@ -510,14 +524,50 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     for number in range(2 + extra, n + 1):
         d = _text_sheet(sheet, replace(block, sheet=number, scale=None))
         top = fy0 + INSET
-        k = number - 2 - extra
-        if moved and k == 0:
-            d.add(render_info(d, info, fx0 + INSET, top - 4.0, sl.info_w, warnings, info_steps, upto, lang, last))
+        j = number - 2 - extra
+        if j < len(chunks):
+            rows, warned, h = chunks[j]
+            d.add(render_info(d, [info[i] for i in rows], fx0 + INSET, top - 4.0, text_w, [warnings[i] for i in warned],
+                              [info_steps[i] for i in rows] if info_steps is not None else None, upto, lang, last,
+                              id_="info" if j == 0 else f"info-{j + 1}"))
             top += skip
-        if k < len(pages) and pages[k].entries:            # none: the protocol starts on the next sheet
+        k = j - lead
+        if 0 <= k < len(pages) and pages[k].entries:      # none: the protocol starts on the next sheet
             d.add(render_protocol(d, pages[k], fx0 + INSET, top, values, shown,
                                   shown if upto is not None else None, lang))
         out.append(svg_string(d))
+    return out
+
+
+def info_pages(info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None, width: float,
+               height: float) -> list[tuple[list[int], list[int], float]]:
+    """The results (in their frames' order) and the warnings set on text sheets ``width`` × ``height`` paper mm:
+    per sheet the indices of its result lines and of its warnings and the height the block takes
+    (:func:`~geomcon.render.protocol.info_height`), as many lines on a
+    sheet as fit (a block's heading repeated on the sheet that continues it; a line never split). 000-06's
+    results and warnings are 350 mm tall: they ran over the title block of their one sheet.
+
+    >>> [(len(r), len(w), round(h, 2)) for r, w, h in info_pages(["a"] * 20, ["w"] * 30, None, 259.0, 150.0)]
+    [(20, 9, 151.15), (0, 21, 105.15)]
+    """
+    order = sorted(range(len(info)), key=lambda i: (steps[i] if steps is not None else None) or 0)
+    items = [(0, i) for i in order] + [(1, i) for i in range(len(warnings))]
+    out: list[tuple[list[int], list[int], float]] = []
+    rows: list[int] = []
+    warned: list[int] = []
+
+    def tall(r: Sequence[int], w: Sequence[int]) -> float:
+        return info_height([info[i] for i in r], width, [warnings[i] for i in w]) - 4.0
+
+    for kind, i in items:
+        r, w = (rows + [i], warned) if kind == 0 else (rows, warned + [i])
+        if (rows or warned) and tall(r, w) > height:
+            out.append((rows, warned, tall(rows, warned) + 4.0))
+            rows, warned = ([i], []) if kind == 0 else ([], [i])
+        else:
+            rows, warned = list(r), list(w)
+    if rows or warned:
+        out.append((rows, warned, tall(rows, warned) + 4.0))
     return out
 
 
