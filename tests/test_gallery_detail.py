@@ -104,6 +104,11 @@ def _detail_sizes_without_room(pid: str) -> list[tuple[float, float]]:
     assert detail_figure(sc, fig, scale, lambda w, h: asked.append((w, h)), None) is None
     for w, h in asked:
         assert room.find([(w, h)]) is None, (pid, w, h)
+    from geomcon.render.results import brief_warnings
+    from geomcon.render.svg import _detail_first
+    if sl.info_here and (info or warnings):          # nor does the detail view placed before the results
+        brief = (sol.figure_lines(page.lang, brief=True), brief_warnings(sol.warnings, page.lang, 2))
+        assert _detail_first(sc, fig, sl, page, [(info, warnings), brief], scale, sol.info_steps(), None) is None
     return asked
 
 

@@ -3,8 +3,9 @@ issue 11 review item 3): every link of the drawing is at least :data:`~geomcon.r
 or sheet 1 shows a detail view that draws it so, or the sheet's free room (clear of the figure, the results, title
 block, scale bar and captions) holds no box of the detail's size. A sheet of another solution is laid out by the
 same path as the textbook's (:meth:`geomcon.solve.Solution.sheets`), so only the room differs: 001-16's solutions
-2 and 4 ask 76.6 × 135.4 and 77.9 × 100.6 mm at 1:5, where the room right of the drawing, under the results, is
-about 118 × 94 mm."""
+2 and 4 asked 76.6 × 135.4 and 77.9 × 100.6 mm at 1:5, where the room right of the drawing, under the results, is
+about 118 × 94 mm, and showed none; now the detail view is placed first when it finds no room after the results
+(:func:`geomcon.render.svg._detail_first`), and a sheet without one must show that neither order fits."""
 from __future__ import annotations
 
 import re
@@ -20,7 +21,8 @@ from geomcon.render.detail import MIN_LINK, detail_figure, mechanism_steps
 from geomcon.render.figure import build_figure, shown_steps
 from geomcon.render.free_area import FreeRoom
 from geomcon.render.page import INSET, frame_box
-from geomcon.render.svg import _keepouts, place_figure, results_in_free_room
+from geomcon.render.results import brief_warnings
+from geomcon.render.svg import _detail_first, _keepouts, place_figure, results_in_free_room
 from geomcon.render.warning_words import warning_lines
 from geomcon.solve import solve
 
@@ -85,3 +87,13 @@ def test_a_solution_sheet_shows_short_links_in_a_detail_view_where_room_allows(p
     assert asked, (pid, n, round(shortest, 2))                  # a detail was asked for ...
     for w, h in asked:
         assert room.find([(w, h)]) is None, (pid, n, w, h)     # ... and no free box holds it
+    brief = (sol.figure_lines(page.lang, brief=True), brief_warnings(sol.warnings, page.lang, 2))
+    assert _detail_first(sc, fig, sl, page, [(info, warnings), brief], scale, sol.info_steps(), None) is None
+
+
+def test_every_solution_of_001_16_shows_its_detail_view():
+    """001-16's four solutions draw AB about 5.5 and 8.6 mm long at 1:10; each sheet enlarges it in a detail view
+    (solutions 2 and 4 had none)."""
+    base = _base("001-16_jaw_crusher_AC1")
+    shown = [_detail_scale(base.as_solution(n).sheets(gallery_page())[0]) is not None for n in (1, 2, 3, 4)]
+    assert shown == [True] * 4

@@ -215,6 +215,27 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
     return detail_figure(scene, fig, scale, lambda w, h: free_box(shapes, region, keep, [(w, h)]), upto)
 
 
+def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
+                  blocks: Sequence[tuple[Sequence[str], Sequence[str]]], scale: Scale,
+                  steps: Sequence[int] | None, upto: int | None
+                  ) -> tuple[SheetLayout, tuple[Figure, Scale, Box], Sequence[str], Sequence[str]] | None:
+    """The detail view placed before the results, when placed after them it finds no room: its box, then the
+    results and warnings (the first of ``blocks``, full or brief, that fits) in the drawing's free room left
+    (001-16's solution 4: a 77.9 × 100.6 mm detail view at 1:5 did not fit under the results' column). None when
+    either finds no room: the detail, the layout, the results' lines."""
+    bare = replace(sl, info_here=False, pieces=())
+    det = mechanism_detail(scene, fig, bare, page, (), (), scale, upto)
+    if det is None:
+        return None
+    x0, y0, x1, y1 = det[2]
+    taken = [(x0 - INSET, y0 - INSET, x1 + INSET, y1 + INSET)]
+    for info, warnings in blocks:
+        placed = results_in_free_room(fig, bare, page, info, warnings, scale, steps, taken)
+        if placed is not None:
+            return placed, det, info, warnings
+    return None
+
+
 def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, lang: str) -> Any:
     """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``)."""
     from .protocol import _line
@@ -232,18 +253,19 @@ def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, la
 
 
 def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
-                         warnings: Sequence[str], scale: Scale, steps: Sequence[int] | None = None
-                         ) -> SheetLayout | None:
+                         warnings: Sequence[str], scale: Scale, steps: Sequence[int] | None = None,
+                         avoid: Sequence[Box] = ()) -> SheetLayout | None:
     """``sl`` with the results and warnings on sheet 1, in a box of the frame that meets no drawn element of
     ``fig``, the title block, the scale bar or the step captions (:class:`geomcon.render.free_area.FreeRoom`);
     None when there is no such box. The drawing keeps its scale: 001-13 is drawn at 1:5 with its results in
     the free top-left corner, where reserving a column for them would draw it at 1:10. When no one box holds
     them, they are set in up to :data:`MAX_PIECES` boxes (:func:`_pieces`): the results, then the warnings
-    (000-04), or the results continued in a second box (``steps``: the frame of each result, which orders them)."""
+    (000-04), or the results continued in a second box (``steps``: the frame of each result, which orders them).
+    ``avoid``: boxes placed before them (a detail view)."""
     from .free_area import WIDTHS, FreeRoom
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
     room = FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
-                    _keepouts(fig, sl, page, scale))
+                    _keepouts(fig, sl, page, scale) + list(avoid))
     spot = room.find([(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
     if spot is not None:
         x, y, w, h = spot
@@ -473,13 +495,19 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     extra = int(apart is not None)
     moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
     shown_info, shown_warnings = info, warnings             # what sheet 1 prints
-    if moved and brief is not None:                         # in brief on sheet 1, in full on the results sheet
-        here = [[ln.replace("{sheet}", str(2 + extra)) for ln in lines] for lines in brief]
+    here = None if brief is None else tuple([ln.replace("{sheet}", str(2 + extra)) for ln in lines] for lines in brief)
+    if moved and here is not None:                          # in brief on sheet 1, in full on the results sheet
         placed = results_in_free_room(fig, sl, page, here[0], here[1], scale, info_steps)
         if placed is not None:
             sl, shown_info, shown_warnings = placed, here[0], here[1]
     detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, shown_info, shown_warnings,
                                                                 scale, upto)
+    if detail is None and viewbox is None and sl.info_here and (info or warnings):
+        first = _detail_first(scene, fig, sl, page, [(info, warnings)] + ([here] if here is not None else []),
+                              scale, info_steps, upto)
+        if first is not None:                                # the detail view first, the results in the room left
+            sl, detail, shown_info, shown_warnings = first
+            moved = moved or shown_info is not info
     text_w, text_h = fx1 - fx0 - 2 * INSET, tb[1] - fy0 - 2 * INSET
     chunks = info_pages(info, warnings, info_steps, text_w, text_h) if moved else []
     skip = chunks[-1][2] + BLOCK_GAP if chunks else 0.0      # the protocol's heading as far below as Warnings'
