@@ -197,11 +197,12 @@ def _keepouts(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale) -> lis
 
 
 def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
-                     warnings: Sequence[str], scale: Scale, upto: int | None = None
-                     ) -> tuple[Figure, Scale, Box] | None:
+                     warnings: Sequence[str], scale: Scale, upto: int | None = None,
+                     asked: list[tuple[float, float]] | None = None) -> tuple[Figure, Scale, Box] | None:
     """The detail view of the mechanism (:func:`geomcon.render.detail.detail_figure`) in a free box of sheet 1
     clear of the figure, the results and warnings, the title block, scale bar and captions; None when every
-    link is long enough on paper or no free box holds it."""
+    link is long enough on paper or no free box holds it (``asked`` collects the sizes of the boxes looked for:
+    none when every link is long enough)."""
     from .detail import detail_figure
     from .free_area import free_box
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
@@ -212,7 +213,12 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
         keep += [(pc.x - INSET, pc.y, pc.x + pc.w + INSET, pc.y + pc.h + INSET) for pc in sl.pieces]
     shapes = [s for g in fig.groups for s in g.shapes]
     region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
-    return detail_figure(scene, fig, scale, lambda w, h: free_box(shapes, region, keep, [(w, h)]), upto)
+    def free(w: float, h: float) -> tuple[float, float, float, float] | None:
+        if asked is not None:
+            asked.append((w, h))
+        return free_box(shapes, region, keep, [(w, h)])
+
+    return detail_figure(scene, fig, scale, free, upto)
 
 
 def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
@@ -500,9 +506,10 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         placed = results_in_free_room(fig, sl, page, here[0], here[1], scale, info_steps)
         if placed is not None:
             sl, shown_info, shown_warnings = placed, here[0], here[1]
+    asked: list[tuple[float, float]] = []
     detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, shown_info, shown_warnings,
-                                                                scale, upto)
-    if detail is None and viewbox is None and sl.info_here and (info or warnings):
+                                                                scale, upto, asked)
+    if detail is None and asked and sl.info_here and (info or warnings):
         first = _detail_first(scene, fig, sl, page, [(info, warnings)] + ([here] if here is not None else []),
                               scale, info_steps, upto)
         if first is not None:                                # the detail view first, the results in the room left
