@@ -55,7 +55,6 @@ def test_the_rule_sees_a_line_over_the_title_block():
     svg = next(p for p in _sheets() if p.name.endswith("-2.svg")).read_text(encoding="utf-8")
     tb = title_block_box(_page(svg).sheet)
     bad = svg.replace("</svg>", f'<text x="{tb[0] + 5}" y="{tb[1] + 5}" font-size="3.5">over it</text></svg>')
-    assert offenders(svg) == [] or True
     assert any(s.startswith("over it") for s, _ in offenders(bad))
 
 
