@@ -206,10 +206,8 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
     process may use; :func:`geomcon.workers.run_ordered`) and put together in one fixed order: the files are the
     same bytes for any ``jobs``. The cyclic garbage collector is paused meanwhile
     (:func:`geomcon.workers.collector_paused`: the build is a bounded batch)."""
-    from .render.lean_svgwrite import import_svgwrite
     from .workers import collector_paused, run_ordered
 
-    import_svgwrite()                               # before any module imports it: without what it never runs
     paths = problem_files(problems_dir)
     parts = [(_classwork, (problems_dir,)), (_kinematics, (problems_dir,)), (_best_table, ()), (law_diagrams, ())]
     all_jobs = parts + [(problem_gallery, (p, lang)) for p in paths]
