@@ -232,12 +232,6 @@ def cmd_recipes(args: argparse.Namespace) -> int:
 
 
 def cmd_gallery(args: argparse.Namespace) -> int:
-    from .bytecode import bytecode_cached
-    with bytecode_cached():         # nearly every module is imported: without PYTHONDONTWRITEBYTECODE's compiling
-        return _gallery(args)
-
-
-def _gallery(args: argparse.Namespace) -> int:
     from .fileio import write_all
     from .gallery import build_gallery, problem_files, stale_files
 
