@@ -44,7 +44,14 @@ def shape_of(recipe: str, given: Mapping[str, Any]) -> tuple | None:
 
     >>> shape_of("r", {"AB": 1.0, "branch": "above"})
     ('r', 'AB', ('branch', 'above'))
+    >>> shape_of("r", {"AB": 1.0, "BC": 2.0})
+    ('r', 'AB', 'BC')
     """
+    for v in given.values():
+        if type(v) is not float:
+            break
+    else:                                        # every given a float (the common case): the names
+        return (recipe, *given)
     parts: list[Any] = [recipe]
     for n, v in given.items():
         if type(v) is float:
@@ -102,11 +109,17 @@ def is_taped(scene: Scene) -> bool:
 def taped_values(recipe: Recipe, given: Mapping[str, Any]) -> tuple[Tape, dict[str, Any]] | None:
     """The current tape of ``recipe`` for the shape of ``given`` whose guards hold on it, and the memo a replay
     starts from (the tape's own steps computed: :meth:`~geomcon.scene.tape.Tape.values`); None when there is
-    none (not yet recorded, not tapeable, another path through the recipe's decisions)."""
-    for tape in _current_tapes(recipe, given):
-        memo = tape.values(given)
-        if memo is not None:
-            return tape, memo
+    none (not yet recorded, not tapeable, another path through the recipe's decisions). :func:`_current_tapes`
+    written out (a generator costs a replay more than its loop)."""
+    key = shape_of(recipe.name, given)
+    entries = _TAPES.get(key) if key is not None else None
+    if entries:
+        first = entries[0]
+        for tape, _, _ in entries:
+            if tape is not None and _current(first, recipe.name, tape.title):
+                memo = tape._values(given)
+                if memo is not None:
+                    return tape, memo
     return None
 
 

@@ -37,6 +37,8 @@ from .. import tolerance as _tolerance
 from ..tolerance import tol
 from .primitives import Circle, Line, Point
 
+_hypot = math.hypot
+
 
 def _sum_less(x: float, y: float, z: float) -> float:
     """x + y − z for x, y, z ≥ 0, z subtracted from the larger of x, y first: exact (Sterbenz) when z is
@@ -80,7 +82,7 @@ def line_circle_xy(px: float, py: float, ux: float, uy: float, cx: float, cy: fl
     p = ux * wy - uy * wx                    # u × w: signed distance of the centre's foot
     ap = abs(p)
     gap = ap - r
-    if abs(gap) <= _tolerance.REL_TOL * max(r, ap):     # tol(r, ap) in place: r > 0, ap ≥ 0
+    if abs(gap) <= _tolerance.REL_TOL * (ap if ap > r else r):     # tol(r, ap) in place: r > 0, ap ≥ 0; max()
         return _finite(px + ux * t0, py + uy * t0)
     if gap > 0:
         return ()
@@ -110,8 +112,12 @@ def circle_circle_xy(ox: float, oy: float, r1: float, qx: float, qy: float, r2: 
     """The float core of :func:`circle_circle` (shared with :mod:`.kernels`): the candidates as flat floats
     ``(x1, y1[, x2, y2])``; coincident circles raise :class:`~geomcon.errors.Coincident`."""
     vx, vy = qx - ox, qy - oy                # local frame: the first centre at the origin
-    d = math.hypot(vx, vy)
-    scale = max(d, r1, r2)
+    d = _hypot(vx, vy)
+    scale = d                                # max(d, r1, r2) as its comparisons: the first of equal values
+    if r1 > scale:                           # kept, a NaN never taken after the first (the same float)
+        scale = r1
+    if r2 > scale:
+        scale = r2
     eps = _tolerance.REL_TOL * scale         # tol(scale) in place: d ≥ 0 and the radii > 0
     if d <= eps:
         if abs(r1 - r2) <= eps:

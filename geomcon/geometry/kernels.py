@@ -59,14 +59,24 @@ class Fallback(Exception):
     """A case a kernel leaves to the object form of its operation (which decides and words it)."""
 
 
-def register(op: Callable[..., Any], kinds: str, result: str, kernel: Callable[..., Any]) -> None:
-    """Give ``op`` the kernel ``kernel`` for arguments of ``kinds`` and a result of kind ``result``.
+PURE: set[Callable[..., Any]] = set()
+"""Kernels whose result depends on their arguments alone: no tolerance decision (``REL_TOL`` may be changed
+at run time) and no other state. A compiled plan computes such a step once, when it is compiled, if every
+argument is a constant of the tape (:func:`geomcon.scene.compiled.compile_plan`)."""
+
+
+def register(op: Callable[..., Any], kinds: str, result: str, kernel: Callable[..., Any], *,
+             pure: bool = False) -> None:
+    """Give ``op`` the kernel ``kernel`` for arguments of ``kinds`` and a result of kind ``result``; ``pure``
+    when it reads no tolerance and no state (:data:`PURE`).
 
     >>> register(abs, "x", "x", abs); KERNELS[abs]
     [('x', 'x', <built-in function abs>)]
     >>> del KERNELS[abs]
     """
     KERNELS.setdefault(op, []).append((kinds, result, kernel))
+    if pure:
+        PURE.add(kernel)
 
 
 def _bad(x: float, y: float) -> Degenerate:
@@ -264,7 +274,13 @@ def circle_through3_k(ax: float, ay: float, bx: float, by: float, cx: float, cy:
     abx, aby = bx - ax, by - ay
     cbx, cby = cx - bx, cy - by
     cax, cay = cx - ax, cy - ay
-    span = max(math.hypot(abx, aby), math.hypot(cbx, cby), math.hypot(cax, cay))
+    span = _hypot(abx, aby)                            # max() of the three written as its comparisons: the
+    h = _hypot(cbx, cby)                               # first of equal values kept, a NaN never taken after
+    if h > span:                                       # the first (the same float, without the call)
+        span = h
+    h = _hypot(cax, cay)
+    if h > span:
+        span = h
     # Decide collinearity first: two coincident points (a == c) are collinear with any third, and their
     # bisectors would coincide rather than fail to meet.
     if abs(abx * cay - aby * cax) <= _tolerance.REL_TOL * span * span:     # tol(span)·span in place: span ≥ 0
@@ -436,7 +452,8 @@ for _op, _kinds, _out, _k in (
         (ray_at_angle, "PPx", "R", ray_at_angle_k), (distance, "PP", "x", distance_k),
         (circle_through3, "PPP", "C", circle_through3_k), (thales_circle, "PP", "C", thales_circle_k),
         (line_circle, "LC", "T", line_circle_k), (circle_circle, "CC", "T", circle_circle_k)):
-    register(_op, _kinds, _out, _k)
+    # the circumcircle and the two intersections decide by the tolerance: not pure
+    register(_op, _kinds, _out, _k, pure=_k not in (circle_through3_k, line_circle_k, circle_circle_k))
 
 for _rule, _kinds, _k in ((ToLeftOf.rule, "P", to_left_of_k), (ToRightOf.rule, "P", to_right_of_k),
                           (FarthestFrom.rule, "P", farthest_from_k), (OtherThan.rule, "P", other_than_k),

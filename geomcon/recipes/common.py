@@ -496,4 +496,4 @@ for _op, _kinds, _out, _k in ((length, "PP", "x", length_k), (pressure_deg, "PPL
                               (half_difference, "PPP", "x", half_difference_k),
                               (half_sum, "PPP", "x", half_sum_k), (folded_flag, "PPP", "x", folded_flag_k),
                               (near_flag, "PPPP", "x", near_flag_k)):
-    register(_op, _kinds, _out, _k)
+    register(_op, _kinds, _out, _k, pure=True)                  # none decides by the tolerance

@@ -273,8 +273,8 @@ def seeing_circle_k(ax: float, ay: float, bx: float, by: float, beta_deg: float,
     return circle_through3_k(ax, ay, bx, by, px, py)
 
 
-register(ray_from, "PPx", "R", ray_from_k)
-register(perpendicular_at, "PP", "L", perpendicular_at_k)
+register(ray_from, "PPx", "R", ray_from_k, pure=True)
+register(perpendicular_at, "PP", "L", perpendicular_at_k, pure=True)
 register(meet_lines, "RL", "P", meet_ray_line_k)
 register(meet_lines, "LL", "P", meet_line_line_k)
 register(seeing_circle, "PPxx", "C", seeing_circle_k)

@@ -37,7 +37,7 @@ from __future__ import annotations
 from typing import Any, Callable, Iterable
 
 from ..errors import NoIntersection
-from ..geometry.kernels import FIELDS, KERNELS, MAKERS, RULES, SIZES, TYPES, Fallback
+from ..geometry.kernels import FIELDS, KERNELS, MAKERS, PURE, RULES, SIZES, TYPES, Fallback
 from ..geometry.primitives import Point
 from .step import Ref, constant as _constant
 
@@ -166,6 +166,28 @@ def _source_lines(g: _Gen, source: Source) -> dict[str, str]:
     if lines:
         g.body += ["    try:"] + lines + ["    except ArithmeticError:", "        return None"]
     return names
+
+
+def compile_values(source: Source) -> Callable[[Any], dict[str, Any] | None]:
+    """``values(given)``: a tape's own steps computed from ``given`` as one function — the memo a replay
+    starts from, exactly as :meth:`~geomcon.scene.tape.Tape.values` made it step by step (every given read
+    first, a missing one raising ``KeyError``; then the steps and the guards, None when their arithmetic fails
+    or a guard does not hold; the keys in the same order).
+
+    >>> import operator
+    >>> from geomcon.scene.step import Ref
+    >>> values = compile_values(((("§a", "a"),), (("§0", operator.sub, (Ref("§a"), 1.0)),),
+    ...                          ((operator.gt, (Ref("§0"), 0.0), True),)))
+    >>> values({"a": 3.0}), values({"a": 0.5})
+    ({'§a': 3.0, '§0': 2.0}, None)
+    """
+    ns: dict[str, Any] = {}
+    g = _Gen(ns)
+    names = _source_lines(g, source)
+    items = ", ".join(f"{g.const(f'_K{j}', key)}: {var}" for j, (key, var) in enumerate(names.items()))
+    g.body.append(f"    return {{{items}}}")
+    exec(compile("def values(given):\n" + "\n".join(g.body) + "\n", "<geomcon tape values>", "exec"), ns)
+    return ns["values"]
 
 
 def _natural(name: str) -> tuple:
@@ -321,6 +343,9 @@ class _Gen:
                     rparts.extend(self.as_flat(r[0], "P"))
                 else:
                     rparts.extend([self.const(f"r{i}_{j}x", r.x), self.const(f"r{i}_{j}y", r.y)])
+        if rule is None and not optional and fn in PURE and all(p in self.ns for p in parts) \
+                and self.fold(k, i, fn, out, parts):
+            return True
         f = self.const(f"k{i}", fn)
         guard = self._guard(refs) if optional else ""
         size = SIZES["P" if rule is not None else out]
@@ -355,6 +380,24 @@ class _Gen:
         else:
             self.kind[k] = "x"
             self.obj[k] = f"o{i}"
+        return True
+
+    def fold(self, k: str, i: int, fn: Any, out: str, parts: list[str]) -> bool:
+        """Step ``k``, a pure kernel (:data:`~geomcon.geometry.kernels.PURE`) of constants only (a fixed pivot,
+        the horizontal guide through it, its normal), computed now, once: its floats become constants of the
+        plan (the same call on the same floats gives the same bits at every replay). False (nothing done)
+        when the call raises: each replay then raises as it would."""
+        try:
+            got = fn(*[self.ns[p] for p in parts])
+        except Exception:
+            return False
+        if out == "x":
+            self.kind[k], self.obj[k], self.opt[k] = "x", self.const(f"c{i}_v", got), False
+            return True
+        if type(got) is not tuple or len(got) != SIZES[out]:
+            return False
+        self.kind[k], self.opt[k] = out, False
+        self.flat[k] = [self.const(f"c{i}_v{j}", v) for j, v in enumerate(got)]
         return True
 
     def object_step(self, k: str, i: int, op: Any, args: tuple, kwargs: dict, branch: Any, brefs: tuple,

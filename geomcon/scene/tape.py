@@ -45,7 +45,7 @@ from ..cached import cached_property
 from typing import Any, Callable, Iterator, Mapping
 
 from ..geometry.branch import Branch
-from .compiled import compile_plan
+from .compiled import compile_plan, compile_values
 from .step import Ref
 
 PREFIX = "§"
@@ -260,7 +260,17 @@ class Tape:
 
     def values(self, given: Mapping[str, Any]) -> dict[str, Any] | None:
         """The tape's own steps on ``given``: the memo a replayed scene starts from (None when the arithmetic
-        fails: the planned path then raises what the recipe raises)."""
+        fails: the planned path then raises what the recipe raises). One compiled function of the givens
+        (:func:`.compiled.compile_values`), made on the first call: the givens read into the memo, each step
+        computed from the ones before, each guard checked, as :meth:`values_stepwise` does step by step."""
+        return self._values(given)
+
+    @cached_property
+    def _values(self) -> Callable[[Mapping[str, Any]], dict[str, Any] | None]:
+        return compile_values((self.leaf_keys, self.nodes, self.guards))
+
+    def values_stepwise(self, given: Mapping[str, Any]) -> dict[str, Any] | None:
+        """:meth:`values` evaluated step by step (what the compiled function is held to in the tests)."""
         memo = {key: given[n] for key, n in self.leaf_keys}
         try:
             for key, op, args in self.nodes:
