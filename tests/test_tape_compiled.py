@@ -143,3 +143,26 @@ def test_fold_keeps_a_failing_constant_step() -> None:
     run = compile_plan(rec, ("a",), frozenset())
     with pytest.raises(Exception, match="coincident"):
         run({})
+
+
+@pytest.mark.parametrize("recipe,given,key", [
+    ("crank_slider.design_by_K", {"K": 1.5, "H": 50.0, "e": 20.0}, "AB"),
+    ("crank_rocker.extremes", {"AB": 50.0, "BC": 70.0, "CD": 80.0, "AD": 90.0}, "theta"),
+])
+def test_settle_computes_under_the_runs_tolerance(recipe, given, key, monkeypatch) -> None:
+    """A replay's other steps are computed again when its memo is read further, under the tolerance of the run
+    that computed the answers: a tolerance changed in between does not reach them (and is set back after)."""
+    from geomcon.recipes import get_recipe
+    from geomcon.taped import construct_taped
+    r = get_recipe(recipe)
+    for _ in range(3):
+        construct_taped(r, given).scene.evaluate((key,))
+    calm, moved = construct_taped(r, given).scene, construct_taped(r, given).scene
+    calm.evaluate((key,))
+    moved.evaluate((key,))
+    assert calm._pending is not None and moved._pending is not None
+    calm.settle()
+    monkeypatch.setattr(tolerance, "REL_TOL", 0.5)
+    moved.settle()
+    assert tolerance.REL_TOL == 0.5
+    assert [(k, repr(v)) for k, v in moved._memo.items()] == [(k, repr(v)) for k, v in calm._memo.items()]

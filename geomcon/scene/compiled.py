@@ -11,7 +11,8 @@ A step whose operation has a float kernel (:mod:`geomcon.geometry.kernels`) is c
 two locals, a line four, a circle three, and a branch rule with a kernel chooses among flat candidates; the
 step's object (a :class:`~geomcon.geometry.Point`, a ``Line`` …) is made only where something reads it: an
 operation without a kernel, an answer asked for, or the scene's memo when it is read further (``run`` returns
-``(fill, values)`` for that; :meth:`~geomcon.scene.Scene.settle`). The kernels are the operations' own
+``(fill, tol)`` for that, ``fill`` computing them again from the same inputs under the tolerance ``tol``
+of the run; :meth:`~geomcon.scene.Scene.settle`). The kernels are the operations' own
 arithmetic, so every value is the same to the last bit. The branches of one intersection (two steps calling
 the same operation on the same arguments, each with its own rule) share one call: each rule chooses from the
 same candidates, as two separate calls would give them (the operations are pure). An optional step (a
@@ -25,10 +26,10 @@ Examples
 ...        "b": (pow, (Ref("a"), 3.0), {}, 1, None, (), False, ["a"], None)}
 >>> run = compile_plan(rec, ("b",), frozenset())
 >>> memo = {}
->>> fill, values = run(memo)                 # "a" was computed too: stored when the memo is read further
+>>> fill, tol = run(memo)                    # "a" was computed too: stored when the memo is read further
 >>> memo
 {'b': 8.0}
->>> fill(memo, values)
+>>> fill(memo, tol)
 >>> memo
 {'a': 2.0, 'b': 8.0}
 """
@@ -36,6 +37,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, Iterable
 
+from .. import tolerance as _tolerance
 from ..errors import NoIntersection
 from ..geometry.kernels import FIELDS, KERNELS, MAKERS, PURE, RULES, SIZES, TYPES, Fallback
 from ..geometry.primitives import Point
@@ -68,8 +70,9 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     """A function ``run(memo)`` that computes the steps ``keys`` need and stores ``keys`` in ``memo``, the
     steps named in ``inputs`` being read from ``memo``; None when a needed step is not a plain call.
 
-    ``run`` returns None, or ``(fill, values)`` when it computed steps besides ``keys``: ``fill(memo, values)``
-    stores those too (their objects made then, in the plan's order), for a scene that is read further
+    ``run`` returns None, or ``(fill, tol)`` when it computed steps besides ``keys``: ``fill(memo, tol)``
+    stores those too (computed again from the same inputs under the run's tolerance ``tol``: the same values;
+    their objects made then, in the plan's order), for a scene that is read further
     (without ``pending``, for a caller that only reads ``keys``, it always returns None).
 
     With ``source`` — a tape's givens, its own steps and its guards (:class:`~geomcon.scene.tape.Tape`) — the
@@ -120,20 +123,36 @@ def compile_plan(rec: dict[str, tuple], keys: tuple[str, ...], inputs: frozenset
     rest = [k for k in computed if k not in wanted]
     ns["_IN"], ns["_REQ"], ns["_ALL"] = tuple(loaded), tuple(req), tuple(computed)
     body = g.body
+    calc = list(body)
     if req:
         body.append(f"    memo.update(zip(_REQ, ({', '.join(g.value(k) for k in req)},)))")
     if rest and pending:
-        names = ", ".join(sorted({v for k in computed for v in g.reads(k)}, key=_natural))
-        body.append(f"    return _FILL, ({names}{',' if names else ''})")
-        fill = ["def fill(memo, vals):", f"    {names}, = vals" if names else "    pass",
-                "    req = [memo.pop(k) for k in _REQ]"]
+        # the other steps are computed again when the memo is read further (seldom: a drawing, stats, a later
+        # evaluation), from the same inputs with the same kernels and the tolerance of this run (pure float
+        # code: the same bits), rather than every run handing over all its locals for it
         at = {k: j for j, k in enumerate(req)}
-        fill.append(f"    memo.update(zip(_ALL, ({', '.join(f'req[{at[k]}]' if k in at else g.value(k) for k in computed)},)))")
+        fill = (["def fill(memo, tol):", "    if tol is not _tol.REL_TOL and tol != _tol.REL_TOL:",
+                 "        return _pinned(fill, memo, tol)"] + calc
+                + ["    req = [memo.pop(k) for k in _REQ]",
+                   f"    memo.update(zip(_ALL, ({', '.join(f'req[{at[k]}]' if k in at else g.value(k) for k in computed)},)))"])
+        ns["_tol"], ns["_pinned"] = _tolerance, _pinned
         exec(compile("\n".join(fill) + "\n", "<geomcon taped plan: fill>", "exec"), ns)
         ns["_FILL"] = ns["fill"]
+        body.append("    return _FILL, _tol.REL_TOL")
     source = "def run(memo):\n" + "\n".join(body or ["    pass"]) + "\n"       # an empty request: nothing
     exec(compile(source, "<geomcon taped plan>", "exec"), ns)
     return ns["run"]
+
+
+def _pinned(fill: Callable[[dict, float], None], memo: dict, tol: float) -> None:
+    """``fill(memo, tol)`` with ``geomcon.tolerance.REL_TOL`` set back to ``tol``, the tolerance of the run whose
+    steps it computes again, while it runs (it was changed at run time in between)."""
+    now = _tolerance.REL_TOL
+    _tolerance.REL_TOL = tol
+    try:
+        fill(memo, tol)
+    finally:
+        _tolerance.REL_TOL = now
 
 
 Source = tuple[tuple[tuple[str, str], ...], tuple[tuple[str, Callable[..., Any], tuple], ...],

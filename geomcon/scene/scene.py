@@ -196,14 +196,15 @@ class Scene:
         return sc
 
     def settle(self) -> None:
-        """Store in the memo the steps a compiled replay computed besides those asked for (their objects made
-        now, in the plan's order; the run left them as ``(fill, values)``, :func:`.compiled.compile_plan`).
+        """Store in the memo the steps a compiled replay computed besides those asked for (computed again from
+        the same inputs under the run's tolerance, their objects made now, in the plan's order; the run left
+        ``(fill, tol)`` for it, :func:`.compiled.compile_plan`).
         Everything that reads the memo beyond an evaluation's answers settles first: ``stats`` counts them, a
         later evaluation reuses them, a drawing completes the scene around them."""
         if self._pending is not None:
-            fill, values = self._pending
+            fill, tol = self._pending
             self._pending = None
-            fill(self._memo, values)
+            fill(self._memo, tol)
 
     def unplanned(self) -> bool:
         """True unless this scene follows a plan (it stores every step but, when lean, the annotations)."""
