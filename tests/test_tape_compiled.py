@@ -166,3 +166,29 @@ def test_settle_computes_under_the_runs_tolerance(recipe, given, key, monkeypatc
     moved.settle()
     assert tolerance.REL_TOL == 0.5
     assert [(k, repr(v)) for k, v in moved._memo.items()] == [(k, repr(v)) for k, v in calm._memo.items()]
+
+
+def test_split_rules_are_their_kernels() -> None:
+    """A rule split in two for a compiled plan (its set-up made once for several steps, SPLIT) chooses what its
+    kernel chooses, and refuses where it refuses (a vertical or zero-length line, a tie), over random
+    candidates and lines."""
+    from geomcon.geometry.kernels import RULES, SPLIT
+    n = 0
+    for rule, (prep, choose, keep) in SPLIT.items():
+        kernel = RULES[rule][1]
+        for _ in range(3000):
+            pts = [rnd.uniform(-100, 100) for _ in range(4)]
+            u = rnd.random()
+            if u < 0.1:
+                pts[2] = pts[0]                                   # a vertical line
+            elif u < 0.15:
+                pts[2:] = pts[:2]                                 # a line of zero length
+            x, y = rnd.uniform(-100, 100), rnd.uniform(-100, 100)
+            c = rnd.choice([(x, y), (x, y, rnd.uniform(-100, 100), rnd.uniform(-100, 100)), (x, y, x, y),
+                            (x, y, x + 1e-13, y)])
+
+            def split(c=c, pts=pts):
+                return choose(c, *pts[:keep], *prep(*pts))
+            assert _outcome(split) == _outcome(kernel, c, *pts)
+            n += 1
+    assert n == 3000 * len(SPLIT)

@@ -414,6 +414,11 @@ def _upward_normal_k(ax: float, ay: float, bx: float, by: float) -> tuple[float,
 def above_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float, float]:
     """``Above(a, b)``."""
     nx, ny = _upward_normal_k(ax, ay, bx, by)
+    return above_n_k(c, ax, ay, nx, ny)
+
+
+def above_n_k(c: tuple, ax: float, ay: float, nx: float, ny: float) -> tuple[float, float]:
+    """``Above(a, b)`` given the line's upward normal ``_upward_normal_k(a, b)``."""
     if len(c) != 4:
         return _one(c, "above a line")
     x0, y0, x1, y1 = c
@@ -423,6 +428,11 @@ def above_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float
 def below_k(c: tuple, ax: float, ay: float, bx: float, by: float) -> tuple[float, float]:
     """``Below(a, b)``."""
     nx, ny = _upward_normal_k(ax, ay, bx, by)
+    return below_n_k(c, ax, ay, nx, ny)
+
+
+def below_n_k(c: tuple, ax: float, ay: float, nx: float, ny: float) -> tuple[float, float]:
+    """``Below(a, b)`` given the line's upward normal ``_upward_normal_k(a, b)``."""
     if len(c) != 4:
         return _one(c, "below a line")
     x0, y0, x1, y1 = c
@@ -462,3 +472,9 @@ for _rule, _kinds, _k in ((ToLeftOf.rule, "P", to_left_of_k), (ToRightOf.rule, "
                           (Below.rule, "PP", below_k), (Leftmost.rule, "", leftmost_k),
                           (Rightmost.rule, "", rightmost_k)):
     RULES[_rule] = (_kinds, _k)
+
+SPLIT: dict[Callable[..., Any], tuple[Callable[..., Any], Callable[..., Any], int]] = {
+    Above.rule: (_upward_normal_k, above_n_k, 2), Below.rule: (_upward_normal_k, below_n_k, 2)}
+"""a branch rule's ``rule`` → its kernel in two parts: ``(prep, choose, n)`` with ``kernel(c, *pts) ==
+choose(c, *pts[:n], *prep(*pts))``; a compiled plan makes ``prep`` once for the steps that choose by the same
+points (the four branches of a crank-rocker's extremes each above or below the frame line)."""

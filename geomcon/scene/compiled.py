@@ -39,7 +39,7 @@ from typing import Any, Callable, Iterable
 
 from .. import tolerance as _tolerance
 from ..errors import NoIntersection
-from ..geometry.kernels import FIELDS, KERNELS, MAKERS, PURE, RULES, SIZES, TYPES, Fallback
+from ..geometry.kernels import FIELDS, KERNELS, MAKERS, PURE, RULES, SIZES, SPLIT, TYPES, Fallback
 from ..geometry.primitives import Point
 from .step import Ref, constant as _constant
 
@@ -391,7 +391,19 @@ class _Gen:
                     raw = self.shared[(op, tuple(parts))] = f"u{i}"
                     self.body.append(f"{pad}{raw} = {call}")
                     self.body.append(f"{pad}if not {raw}: raise _NoIntersection('')")
-                self.body.append(f"{pad}{target} = {b}({', '.join([raw] + rparts)})")
+                split = SPLIT.get(branch.rule)
+                if split is None:
+                    self.body.append(f"{pad}{target} = {b}({', '.join([raw] + rparts)})")
+                else:
+                    # the rule's set-up on its points (above/below a line: the line's upward normal) made once
+                    # for every step that chooses by the same rule and points, where the first one reads it
+                    prep, choose, keep = split
+                    made = self.shared.get((prep, tuple(rparts)))
+                    if made is None:
+                        made = self.shared[(prep, tuple(rparts))] = [f"n{i}_0", f"n{i}_1"]
+                        self.body.append(f"{pad}{', '.join(made)} = {self.const(f'p{i}', prep)}({', '.join(rparts)})")
+                    c = self.const(f"b{i}", choose)
+                    self.body.append(f"{pad}{target} = {c}({', '.join([raw] + rparts[:keep] + made)})")
         self.opt[k] = optional
         if names:
             self.kind[k] = "P" if rule is not None else out
