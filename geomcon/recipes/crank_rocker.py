@@ -14,7 +14,7 @@ from ..analytic.linkages import crank_rocker_extremes
 from ..errors import NotAMechanism
 from ..geometry import Above, Below, Point, circle, circle_circle, point_along, segment
 from ..scene import Role, Scene
-from ..tolerance import is_zero
+from .. import tolerance as _tolerance
 from .base import Construction, Quantity, Recipe
 from .common import (add_angle_mark, add_bar, add_collinear_extremes, add_pivot, add_theta_and_K, angle_deg, smallest,
                      transmission_deg, transmission_mark)
@@ -53,34 +53,51 @@ def grashof(AB: float, BC: float, CD: float, AD: float) -> list[str]:
     ...
     geomcon.errors.NotAMechanism: AB is not a crank (Grashof): CD + AD > AB + BC (30 + 90 > 50 + 50, 120 > 100): no link turns fully
     """
-    lengths = {"AB": AB, "BC": BC, "CD": CD, "AD": AD}
-    longest = max(lengths, key=lambda k: lengths[k])
-    rest = sum(lengths.values()) - lengths[longest]
-    if lengths[longest] >= rest:
-        raise NotAMechanism(f"the links cannot be assembled: {longest} = {lengths[longest]:g} ≥ sum of the "
+    # every solve validates its givens: the dictionary, the key functions and the comprehensions this check
+    # was written with cost ~4 µs of a ~45 µs solve, so it is written on the four numbers by position (the same
+    # comparisons in the same order: max()'s first largest, sorted()'s stable order, min(); the same sum())
+    vals = (AB, BC, CD, AD)
+    li, big = 0, AB                                            # max(lengths, key=…): the first of the largest
+    if BC > big:
+        li, big = 1, BC
+    if CD > big:
+        li, big = 2, CD
+    if AD > big:
+        li, big = 3, AD
+    rest = sum(vals) - big
+    if big >= rest:
+        raise NotAMechanism(f"the links cannot be assembled: {_LINKS[li]} = {big:g} ≥ sum of the "
                             f"other three = {rest:g}")
-    names = sorted(lengths, key=lambda k: lengths[k])          # s, p, q, l (ties in the loop's order)
-    sn, pn, qn, ln = names
-    s, p, q, l_ = (lengths[n] for n in names)
-    if s + l_ > p + q and not is_zero(s + l_ - (p + q), p + q):
+    order = sorted(range(4), key=vals.__getitem__)            # s, p, q, l (ties in the links' order)
+    s, p, q, l_ = [vals[i] for i in order]
+    if s + l_ > p + q and not abs(s + l_ - (p + q)) <= _tolerance.REL_TOL * abs(p + q):      # is_zero in place
+        sn, pn, qn, ln = [_LINKS[i] for i in order]
         raise NotAMechanism(
             f"AB is not a crank (Grashof): {sn} + {ln} > {pn} + {qn} ({s:g} + {l_:g} > "
             f"{p:g} + {q:g}, {s + l_:g} > {p + q:g}): no link turns fully")
-    if AB > min(BC, CD, AD) or AB == AD:
+    least = BC                                                 # min(BC, CD, AD)
+    if CD < least:
+        least = CD
+    if AD < least:
+        least = AD
+    if AB > least or AB == AD:
         raise NotAMechanism(
             f"AB = {AB:g} is not the strictly shortest link adjacent to the frame (BC = {BC:g}, CD = {CD:g}, "
             f"AD = {AD:g}): no crank-rocker with crank AB")
-    if longest == "AB":
-        longest = "BC"
-    others = [k for k in ("BC", "CD", "AD") if k != longest]
-    s_l = AB + lengths[longest]
-    p_q = lengths[others[0]] + lengths[others[1]]
+    if li == 0:
+        li = 1
+    o1, o2 = [i for i in (1, 2, 3) if i != li]
+    s_l = AB + vals[li]
+    p_q = vals[o1] + vals[o2]
     if AB == BC:
         raise NotAMechanism(f"BC = AB = {AB:g}: the folded position puts C1 on A, θ is undefined")
-    if is_zero(s_l - p_q, p_q):
-        return [f"Grashof equality AB + {longest} = {others[0]} + {others[1]} = {p_q:g}: a change-point "
+    if abs(s_l - p_q) <= _tolerance.REL_TOL * abs(p_q):                             # is_zero(s_l − p_q, p_q)
+        return [f"Grashof equality AB + {_LINKS[li]} = {_LINKS[o1]} + {_LINKS[o2]} = {p_q:g}: a change-point "
                 "linkage (links can all be collinear, γmin = 0)"]
     return []
+
+
+_LINKS = ("AB", "BC", "CD", "AD")
 
 
 def _validate(g: Mapping[str, Any]) -> list[str]:
