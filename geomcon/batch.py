@@ -26,15 +26,17 @@ Examples
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
 from .errors import GeomconError
 from .plan import planned
-from .problems import Problem, validate_given
+from .problems import Problem, plain_validator, validate_given
 from .recipes import Recipe, get_recipe
 from .scene.scene import Scene
-from .solve import Solution, read_candidates, solve, taped_table
+from .tolerance import CHECK_REL
+from .solve import Solution, _answer_pairs, read_candidates, solve, taped_table
 from .taped import replayed_construction, taped_values
 
 BATCH_MAX = 100_000
@@ -130,9 +132,12 @@ def solve_batch(recipe: str, givens: Sequence[Mapping[str, Any]] | Mapping[str, 
     # replay cost a sixth more per variant on the development machine)
     valid: list[tuple[int, dict[str, Any], list[str]]] = []
     validate = rec.validate
+    plain = plain_validator(rec)            # the recipe's quantities read once for every row
     for i, row in enumerate(rows):
         try:
-            given = validate_given(rec, row)
+            given = plain(row)
+            if given is None:               # not all plain numbers, or one to refuse: validated in full
+                given = validate_given(rec, row)
             valid.append((i, given, planned(rec.name, validate, given) if validate is not None else []))
         except GeomconError as exc:
             errors[i] = str(exc)
@@ -147,8 +152,9 @@ def solve_batch(recipe: str, givens: Sequence[Mapping[str, Any]] | Mapping[str, 
             sols.append((i, solve(problem) if replayed is None else _solution(rec, problem, warnings, *replayed)))
         except GeomconError as exc:
             errors[i] = str(exc)
-    # the checks in phases too: the answers, the twins, the rows, the words (each kept as it is made)
-    for out, step in ((answers, _ANSWERS), (None, _TWIN), (ok, _OK), (warns, _WORDS)) if checks else \
+    # the checks in phases too: the answers, the twins, the verdicts (each kept as it is made)
+    verdicts: list[Any] = [None] * n
+    for out, step in ((answers, _ANSWERS), (None, _TWIN), (verdicts, _VERDICT)) if checks else \
             ((answers, _ANSWERS), (warns, _BUILT)):
         alive = []
         for i, sol in sols:
@@ -164,6 +170,9 @@ def solve_batch(recipe: str, givens: Sequence[Mapping[str, Any]] | Mapping[str, 
     if not checks:
         for i, _ in sols:
             ok[i] = True
+    else:
+        for i, _ in sols:
+            ok[i], warns[i] = verdicts[i]
     return Batch(rec.name, answers, errors, ok, warns)
 
 
@@ -193,12 +202,68 @@ def _TWIN(s: Solution) -> Any:
     return s.analytic
 
 
-def _OK(s: Solution) -> bool:
-    return s.ok
+def _VERDICT(s: Solution) -> tuple[bool, list[str]]:
+    """``(s.ok, s.warnings)``; when every check passes (:func:`_all_pass`) without the table of check rows,
+    which the batch does not return: passing rows add no warning."""
+    if _all_pass(s):
+        return True, s.warnings_with(())
+    return s.ok, s.warnings
 
 
-def _WORDS(s: Solution) -> list[str]:
-    return s.warnings
+def _all_pass(s: Solution) -> bool:
+    """True when every check of :attr:`Solution.checks` passes at ``CHECK_REL`` as a plain comparison of
+    floats: each answer of each matched pair of solutions and each back-substitution, their errors and
+    tolerances computed as the rows compute them (``err < inf and err <= CHECK_REL·max(|b|, |e|, scale)``), as
+    many solutions as the twin has. False when one does not pass, or is not a pair of floats, or the counts
+    differ: the caller then makes the rows (a failing row is judged again at the problem's condition, and
+    words its warning)."""
+    built_all, exact_all = s.solution_values, s.analytic
+    if len(built_all) != len(exact_all):
+        return False
+    scales = s._unit_scales
+    inf = math.inf
+    pairs = _answer_pairs(s.recipe)
+    for i, j in s.matching:
+        built, exact = built_all[i], exact_all[j]
+        for name, unit in pairs:
+            b = built.get(name)
+            if b is None:
+                continue
+            e = exact.get(name)
+            if e is None:
+                continue
+            if type(b) is not float or type(e) is not float:
+                return False
+            err = abs(b - e)
+            m = abs(b)
+            t = abs(e)
+            if t > m:
+                m = t
+            t = scales[unit]
+            if t > m:
+                m = t
+            if not (err < inf and err <= CHECK_REL * m):
+                return False
+    back_check = s.recipe.back_check
+    if back_check is not None:
+        given = s.problem.given
+        for built in built_all:
+            for _, b, e, unit in planned(s.recipe.name, back_check, given, built):
+                if type(b) is not float or type(e) is not float:
+                    return False
+                err = abs(b - e)
+                m = abs(b)
+                t = abs(e)
+                if t > m:
+                    m = t
+                t = scales.get(unit)
+                if t is None:
+                    t = s.unit_scale(unit)
+                if t > m:
+                    m = t
+                if not (err < inf and err <= CHECK_REL * m):
+                    return False
+    return True
 
 
 def _BUILT(s: Solution) -> list[str]:

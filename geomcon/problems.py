@@ -36,7 +36,7 @@ import stat
 import tomllib
 import unicodedata
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 from .errors import ProblemError
 from .values import Frozen, store
@@ -210,6 +210,55 @@ def validate_given(recipe: Recipe, given: Mapping[str, Any]) -> dict[str, Any]:
 
 
 _SCALAR_UNITS = ("mm", "deg", "", "count", "mm/s", "rad/s", "rad/s²")
+
+
+def plain_validator(recipe: Recipe) -> Callable[[Any], dict[str, Any] | None]:
+    """For many rows of one recipe (a batch): ``run(given)`` gives :func:`validate_given`'s result when
+    ``given`` is a dict of known names whose values are all plain numbers passing :func:`_plain`'s checks (the
+    recipe's quantities read once, here, not per row); None when anything else is met (an unknown or missing
+    name, a word, a list, a number to refuse), and the caller then calls :func:`validate_given`, which answers
+    or refuses in its words. The units' ranges (:data:`RANGES`) are read at each call, as :func:`_plain` does.
+
+    >>> from geomcon.recipes import get_recipe
+    >>> run = plain_validator(get_recipe("guide_bar.extremes"))
+    >>> run({"AB": 145, "AC": 290.0}), run({"AB": -1.0, "AC": 290.0}), run({"AB": 1.0, "X": 2.0})
+    ({'AB': 145.0, 'AC': 290.0, 'e': None, 'L': None}, None, None)
+    """
+    names = frozenset(recipe.given_names())
+    specs = tuple((q.name, q.unit, q.unit in _SCALAR_UNITS, q.minimum, q.inclusive, q.maximum, q.required,
+                   q.default) for q in recipe.givens)
+
+    def run(given: Any) -> dict[str, Any] | None:
+        if type(given) is not dict:
+            return None
+        for k in given:
+            if k not in names:
+                return None
+        out: dict[str, Any] = {}
+        for name, unit, scalar, minimum, inclusive, maximum, required, default in specs:
+            if name not in given:
+                if required:
+                    return None
+                out[name] = default
+                continue
+            value = given[name]
+            t = type(value)
+            if (t is not float and t is not int) or not scalar:
+                return None
+            if t is int and not -1e300 <= value <= 1e300:
+                return None
+            x = float(value)
+            lo, hi = RANGES[unit]
+            if not (x - x == 0.0 and abs(x) <= hi and (x == 0.0 or abs(x) >= lo)):
+                return None
+            if minimum is not None and (x < minimum if inclusive else x <= minimum):
+                return None
+            if maximum is not None and x > maximum:
+                return None
+            out[name] = x
+        _length_span(recipe, out)
+        return out
+    return run
 
 
 def _plain(q: Quantity, value: Any) -> float | None:

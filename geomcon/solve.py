@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from .cached import cached_property
-from typing import Any
+from typing import Any, Sequence
 
 from .check import PUBLISHED_WARN_REL, audit_row, check_row, error_text, rounded, scale_for
 from .condition import KAPPA_REFUSE, STEP, derivative, sensitivities, solution_count_stable
@@ -590,6 +590,11 @@ class Solution:
     @property
     def warnings(self) -> list[str]:
         """Borderline geometry, failed checks and published answers that deviate beyond drawing accuracy."""
+        return self.warnings_with(self.checks)
+
+    def warnings_with(self, checks: Sequence[dict[str, Any]]) -> list[str]:
+        """:attr:`warnings` with the check rows ``checks`` (a batch that found every check passing without
+        making the rows passes none: such rows add no warning)."""
         from .render.results import fixed, percent
 
         out = self._validation + self.advice + self._built
@@ -598,7 +603,7 @@ class Solution:
             if allow is not None and "gamma_min" in sol and sol["gamma_min"] < allow:
                 which = f"solution {i + 1}: " if len(self.solution_values) > 1 else ""
                 out.append(f"{which}γmin = {sol['gamma_min']:.4g}° is below gamma_allow = {allow:g}°")
-        for r in self.checks:
+        for r in checks:
             if not r["ok"]:
                 out.append(f"check failed: {r['quantity']} construction {r['construction']!r} vs analytic {r['analytic']!r}")
             elif r.get("condition") == "undecidable":
