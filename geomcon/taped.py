@@ -44,25 +44,28 @@ def shape_of(recipe: str, given: Mapping[str, Any]) -> tuple | None:
 
     >>> shape_of("r", {"AB": 1.0, "branch": "above"})
     ('r', 'AB', ('branch', 'above'))
-    >>> shape_of("r", {"AB": 1.0, "BC": 2.0})
-    ('r', 'AB', 'BC')
+    >>> shape_of("r", {"AB": 1.0, "BC": None, "L": [1.0, 2.0]})
+    ('r', 'AB', ('BC', None), ('L', (1.0, 2.0)))
+    >>> shape_of("r", {"AB": 1.0, "table": [{"a": 1.0}]}) is None
+    True
     """
-    for v in given.values():
-        if type(v) is not float:
-            break
-    else:                                        # every given a float (the common case): the names
-        return (recipe, *given)
     parts: list[Any] = [recipe]
+    other = False                                # a value that may not hash (a list is made a tuple)
     for n, v in given.items():
-        if type(v) is float:
+        t = type(v)
+        if t is float:
             parts.append(n)
+        elif v is None or t is str or t is bool:  # the usual others (a default left out, a branch): hashable
+            parts.append((n, v))
         else:
             parts.append((n, tuple(v) if isinstance(v, list) else v))
+            other = True
     key = tuple(parts)
-    try:
-        hash(key)
-    except TypeError:
-        return None
+    if other:
+        try:
+            hash(key)
+        except TypeError:
+            return None
     return key
 
 
