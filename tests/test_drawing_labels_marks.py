@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+from pathlib import Path
 
 import pytest
 import shapely
@@ -212,3 +213,34 @@ line from P). Their place is the 1:5 detail view, which keeps links and pivots o
 
 def test_the_crank_rocker_designs_are_many():
     assert len(DESIGNS) >= 12
+
+
+def _axis_values(fig, c) -> list[str]:
+    """The numeric tick labels standing on the vertical through paper point ``c`` (an ordinate's values)."""
+    return [runs(t) for h in fig.groups if isinstance(fig.values[h.key], Point) and any(r in h.classes for r in ROWS)
+            for t in h.texts if re.search(r"\d", runs(t)) and abs(fig.view.p(fig.values[h.key])[0] - c[0]) < 1e-6]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_chart_ordinate_drawn_in_a_figure_states_its_values(name):
+    """200-18's s + s″ chart, drawn in the figure itself, named its ordinate "s + s″ (mm)" but printed no value on
+    it and ticked the δ axis at 180° alone: an ordinate named with a unit carries a value (h = 20 mm; 200-18: its
+    curve's highest and lowest), and its δ axis
+    (the ticks ending in °) is ticked at least at 90°, 180°, 270°."""
+    fig = figure(name)
+    for g in fig.groups:
+        if isinstance(fig.values[g.key], Point) and any(runs(t).endswith(" (mm)") for t in g.texts):
+            if g.key.startswith("sd_"):       # an s–δ chart: the sheet prints h and δ's ticks (charts.py)
+                sheet = (Path(__file__).parent.parent / "gallery" / f"{name}.svg").read_text(encoding="utf-8")
+                assert 'class="h-tick"' in sheet and sheet.count('class="delta-tick"') >= 3
+                continue
+            c = fig.view.p(fig.values[g.key])
+            assert _axis_values(fig, c), g.key
+            ticks = {runs(t) for h in fig.groups if " style-tick" in h.classes for t in h.texts if runs(t).endswith("°")}
+            assert {"90°", "180°", "270°"} <= ticks, sorted(ticks)
+
+
+def test_a_figure_draws_a_chart_with_a_named_ordinate():
+    """The rule above looks at something: 200-18 draws its (s + s″)–δ chart in the figure."""
+    fig = figure("200-18_base_radius_flat_gate2020")
+    assert [g.key for g in fig.groups for t in g.texts if runs(t) == "s + s″ (mm)"] == ["floor_axis_name"]
