@@ -244,3 +244,20 @@ def test_a_figure_draws_a_chart_with_a_named_ordinate():
     """The rule above looks at something: 200-18 draws its (s + s″)–δ chart in the figure."""
     fig = figure("200-18_base_radius_flat_gate2020")
     assert [g.key for g in fig.groups for t in g.texts if runs(t) == "s + s″ (mm)"] == ["floor_axis_name"]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_two_dimensions_span_one_segment(name):
+    """200-10 (a centred follower, e = 0) dimensioned OB0 twice, as r0 and as s0, their arrows on one another: a
+    segment of the figure is dimensioned once."""
+    fig = figure(name)
+    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
+    spans = []
+    for g in fig.groups:
+        v = fig.values[g.key]
+        for d in (v if isinstance(v, (tuple, list)) else (v,)):
+            if isinstance(d, Dimension) and g.shapes:
+                spans.append((g.key, d.a, d.b))
+    for (k1, a1, b1), (k2, a2, b2) in itertools.combinations(spans, 2):
+        same = (abs(a1 - a2) + abs(b1 - b2) <= 1e-9 * size) or (abs(a1 - b2) + abs(b1 - a2) <= 1e-9 * size)
+        assert not same, (k1, k2)
