@@ -261,3 +261,21 @@ def test_no_two_dimensions_span_one_segment(name):
     for (k1, a1, b1), (k2, a2, b2) in itertools.combinations(spans, 2):
         same = (abs(a1 - a2) + abs(b1 - b2) <= 1e-9 * size) or (abs(a1 - b2) + abs(b1 - a2) <= 1e-9 * size)
         assert not same, (k1, k2)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_highlighted_range_is_drawn(name):
+    """001-02 drew its five rows of coupler lengths as identical dash-dot lines: the green bars of the ranges
+    (crank-rocker 190…290, …) lay along the rows, drawn dash-dot as fixed links, and were cut away as construction
+    over a frame line. Every highlighted (style "admissible") range or arc that has a value draws something."""
+    fig = figure(name)
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if " style-admissible" in g.classes and v not in ((), None):
+            assert g.shapes, g.key
+
+
+def test_001_02_draws_a_bar_for_every_range():
+    fig = figure("001-02_four_bar_link_ranges")
+    bars = [g.key for g in fig.groups if " style-admissible" in g.classes and g.shapes]
+    assert len(bars) == 6      # crank-rocker 1, double-rocker 2, immovable 1, Grashof 2; double-crank: none
