@@ -247,23 +247,6 @@ def test_a_figure_draws_a_chart_with_a_named_ordinate():
 
 
 @pytest.mark.parametrize("name", NAMES)
-def test_no_two_dimensions_span_one_segment(name):
-    """200-10 (a centred follower, e = 0) dimensioned OB0 twice, as r0 and as s0, their arrows on one another: a
-    segment of the figure is dimensioned once."""
-    fig = figure(name)
-    size = max(fig.view.box[2] - fig.view.box[0], fig.view.box[3] - fig.view.box[1])
-    spans = []
-    for g in fig.groups:
-        v = fig.values[g.key]
-        for d in (v if isinstance(v, (tuple, list)) else (v,)):
-            if isinstance(d, Dimension) and g.shapes:
-                spans.append((g.key, d.a, d.b))
-    for (k1, a1, b1), (k2, a2, b2) in itertools.combinations(spans, 2):
-        same = (abs(a1 - a2) + abs(b1 - b2) <= 1e-9 * size) or (abs(a1 - b2) + abs(b1 - a2) <= 1e-9 * size)
-        assert not same, (k1, k2)
-
-
-@pytest.mark.parametrize("name", NAMES)
 def test_every_highlighted_range_is_drawn(name):
     """001-02 drew its five rows of coupler lengths as identical dash-dot lines: the green bars of the ranges
     (crank-rocker 190…290, …) lay along the rows, drawn dash-dot as fixed links, and were cut away as construction

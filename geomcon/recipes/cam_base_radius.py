@@ -350,9 +350,8 @@ def _diagram_axes(sc: Scene, prog: Program, h: float, k: float, B0: Ref, O: Ref,
            caption=("e: O's distance from the follower's axis (O left of the axis: e > 0)",
                     "偏距 e:O 到导路的距离(O 在导路左侧为正)"))
     if s0 is not None:                   # a curvature limit moves the centre: s0 is dimensioned at O′ instead
-        sc.add("dim_s0", lambda f, b, v, o: marks.Dimension(f, b, "s0", v, 0.1 * scale) if f != o else None,
-               F, B0, s0, O, role=Role.ANNOTATION, style="dim", optional=True)   # e = 0: s0 = r0, F = O, and the
-        # r0 dimension spans the same OB0 (200-10 drew both, their arrows on one another)
+        sc.add("dim_s0", lambda f, b, v: marks.Dimension(f, b, "s0", v, 0.1 * scale), F, B0, s0,
+               role=Role.ANNOTATION, style="dim")
 
 
 def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
