@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+from pathlib import Path
 
 import pytest
 import shapely
@@ -174,3 +175,90 @@ def test_an_angle_of_0_reads_as_the_review_asked():
     assert AngleMark(Point(0, 0), Point(1, 0), Point(2, 0), "γ1", 0.0).text == "γ1=0° (collinear)"
     texts = {runs(t) for g in figure("001-01_crank_rocker_change_point").groups for t in g.texts}
     assert "γ1=0° (collinear)" in texts
+
+
+def _recipe(name: str) -> str:
+    from pathlib import Path
+
+    from geomcon.problems import load_problem
+    return load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml").recipe
+
+
+DESIGNS = [n for n in NAMES if _recipe(n) in ("crank_rocker.design_by_K", "crank_rocker.best_by_K")]
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_every_crank_rocker_design_marks_theta_and_psi(name):
+    """004-03 marked no angle at all, 001-15 and 001-22 left ψ unmarked: a crank-rocker designed by K marks the θ
+    it is built on (unless K = 1: θ = 0, nothing to mark) and the rocker's swing ψ, each with its value (but in
+    MARKS_IN_THE_DETAIL)."""
+    from geomcon.solve import solve
+    from geomcon.problems import load_problem
+    from pathlib import Path
+    sol = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml"))
+    fig = figure(name)
+    texts = {m.text for g in fig.groups for m in angle_marks(fig.values[g.key])}
+    theta = [t for t in texts if t.startswith("θ=")]
+    if name in MARKS_IN_THE_DETAIL:
+        return
+    assert [t for t in texts if t.startswith("ψ=")], (name, sorted(texts))
+    assert theta or sol.answers["theta"] < 1e-9, (name, sorted(texts))
+
+
+MARKS_IN_THE_DETAIL = {"001-10c_crank_rocker_design_crank_and_frame"}
+"""At 1:20 its A and D lie in a knot of pivots 4 mm wide: the θ and ψ marks' leaders crossed the pivots C1, C2
+whichever way they were placed (tried; an arc at P, where the θ-circle sees C1C2 under θ, runs along no drawn
+line from P). Their place is the 1:5 detail view, which keeps links and pivots only (render/detail.py, hsheet)."""
+
+
+def test_the_crank_rocker_designs_are_many():
+    assert len(DESIGNS) >= 12
+
+
+def _axis_values(fig, c) -> list[str]:
+    """The numeric tick labels standing on the vertical through paper point ``c`` (an ordinate's values)."""
+    return [runs(t) for h in fig.groups if isinstance(fig.values[h.key], Point) and any(r in h.classes for r in ROWS)
+            for t in h.texts if re.search(r"\d", runs(t)) and abs(fig.view.p(fig.values[h.key])[0] - c[0]) < 1e-6]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_chart_ordinate_drawn_in_a_figure_states_its_values(name):
+    """200-18's s + s″ chart, drawn in the figure itself, named its ordinate "s + s″ (mm)" but printed no value on
+    it and ticked the δ axis at 180° alone: an ordinate named with a unit carries a value (h = 20 mm; 200-18: its
+    curve's highest and lowest), and its δ axis
+    (the ticks ending in °) is ticked at least at 90°, 180°, 270°."""
+    fig = figure(name)
+    for g in fig.groups:
+        if isinstance(fig.values[g.key], Point) and any(runs(t).endswith(" (mm)") for t in g.texts):
+            if g.key.startswith("sd_"):       # an s–δ chart: the sheet prints h and δ's ticks (charts.py)
+                sheet = (Path(__file__).parent.parent / "gallery" / f"{name}.svg").read_text(encoding="utf-8")
+                assert 'class="h-tick"' in sheet and sheet.count('class="delta-tick"') >= 3
+                continue
+            c = fig.view.p(fig.values[g.key])
+            assert _axis_values(fig, c), g.key
+            ticks = {runs(t) for h in fig.groups if " style-tick" in h.classes for t in h.texts if runs(t).endswith("°")}
+            assert {"90°", "180°", "270°"} <= ticks, sorted(ticks)
+
+
+def test_a_figure_draws_a_chart_with_a_named_ordinate():
+    """The rule above looks at something: 200-18 draws its (s + s″)–δ chart in the figure."""
+    fig = figure("200-18_base_radius_flat_gate2020")
+    assert [g.key for g in fig.groups for t in g.texts if runs(t) == "s + s″ (mm)"] == ["floor_axis_name"]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_highlighted_range_is_drawn(name):
+    """001-02 drew its five rows of coupler lengths as identical dash-dot lines: the green bars of the ranges
+    (crank-rocker 190…290, …) lay along the rows, drawn dash-dot as fixed links, and were cut away as construction
+    over a frame line. Every highlighted (style "admissible") range or arc that has a value draws something."""
+    fig = figure(name)
+    for g in fig.groups:
+        v = fig.values[g.key]
+        if " style-admissible" in g.classes and v not in ((), None):
+            assert g.shapes, g.key
+
+
+def test_001_02_draws_a_bar_for_every_range():
+    fig = figure("001-02_four_bar_link_ranges")
+    bars = [g.key for g in fig.groups if " style-admissible" in g.classes and g.shapes]
+    assert len(bars) == 6      # crank-rocker 1, double-rocker 2, immovable 1, Grashof 2; double-crank: none

@@ -80,7 +80,8 @@ def test_link_range_rows_are_headed_by_their_names_like_a_table():
     # heads each row with its name: right-aligned at the row's start, on its line
     from geomcon.render.labels import text_width
     svg = (GALLERY / "001-02_four_bar_link_ranges.svg").read_text(encoding="utf-8")
-    rows = [(float(x0), float(y)) for x0, y in re.findall(r'd="M([\d.]+) ([\d.]+)L[\d.]+ \2"[^>]*stroke-dasharray', svg)]
+    rows = [(float(x0), float(y)) for x0, y in re.findall(r'id="step-row\d+"><path class="ink" d="M([\d.]+) ([\d.]+)L[\d.]+ \2"', svg)]
+    assert len(rows) == 5                  # the rows are number lines (style given), no longer dash-dot frames
     names = ("crank-rocker", "double-crank", "double-rocker", "not a mechanism", "Grashof")
     rights = []
     for name in names:

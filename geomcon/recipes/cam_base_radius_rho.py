@@ -112,8 +112,9 @@ def faces(prog: Program, h: float, r0: float, inv: float):
 
 
 def _floor_axes(sc: Scene, prog: Program, h: float, origin: Point, width: float) -> None:
-    """The (s + s″)–δ diagram's ordinate through its origin, named, and the δ axis named and ticked at 180°
-    and 360°: the diagram says what it plots (ρ = r0 + s + s″ of a flat face is least where s + s″ is)."""
+    """The (s + s″)–δ diagram's ordinate through its origin, named and ticked at the curve's highest and lowest
+    values, and the δ axis named and ticked at 90°, 180°, 270°: the diagram says what it plots (ρ = r0 + s + s″ of
+    a flat face is least where s + s″ is) and at what size."""
     ys = [p.y - origin.y for p in floor_curve(prog, h, origin, width, 360).points]
     lo, hi = min(ys + [0.0]), max(ys + [0.0])
     pad = 0.06 * width
@@ -123,7 +124,20 @@ def _floor_axes(sc: Scene, prog: Program, h: float, origin: Point, width: float)
                     "纵轴 s + s″(mm):平底从动件凸轮廓线 ρ = r0 + s + s″,其最小处即 s + s″ 最小处"))
     sc.given("floor_axis_name", top, label="s + s″ (mm)", style="point")
     sc.given("floor_delta_name", origin + Point(width, 0.0), label="δ", style="point")
-    sc.given("floor_tick_180", origin + Point(0.5 * width, 0.0), label="180°", style="tick")
+    for deg in (90, 180, 270):      # 200-18 ticked 180° alone: the δ axis reads in quarters, as the s–δ charts do
+        sc.given(f"floor_tick_{deg}", origin + Point(deg / 360.0 * width, 0.0), label=f"{deg}°", style="tick")
+    for name, y in (("hi", hi), ("lo", lo)):   # and its ordinate had no value: the curve's highest and lowest
+        if abs(y) > 1e-9 * (hi - lo):          # ordinates ticked with their values (mm), left of the axis
+            sc.given(f"floor_value_{name}", origin + Point(0.0, y), label=_mm(y), style="row-start")
+
+
+def _mm(y: float) -> str:
+    """An ordinate's value as the chart prints it, one decimal, a true minus sign.
+
+    >>> _mm(39.4784), _mm(-8.0)
+    ('39.5', '−8.0')
+    """
+    return f"{y:.1f}".replace("-", "−")
 
 
 def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float) -> None:

@@ -21,7 +21,7 @@ from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
 from .common import gamma_min_of, half_difference, half_sum, length
 from .crank_rocker_crank_frame import add_frame_rocker, add_unit_linkage
-from .crank_rocker_design import admissible_arcs
+from .crank_rocker_design import admissible_arcs, swing_mark, theta_mark
 from .search import maximise
 from .theta_circle import K_MAX_OBTUSE, add_theta_circle, add_theta_step, refuse_tiny_theta
 
@@ -108,6 +108,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add(f"A{nm}", segment, A, P, style="construction", caption=(
                 ("Join A* to C1, C2", "连接 A* 与 C1、C2") if k == 0 else ("", "")))
     add_unit_linkage(sc, A, D, C1, C2)
+    if sc.drawing:                           # θ at A*, ψ at D, as every design-by-K figure marks them (004-03 had none)
+        sc.add("mark_theta", theta_mark, A, C1, C2, th, role=Role.ANNOTATION, style="angle")
+        sc.add("mark_psi", swing_mark, D, C1, C2, role=Role.ANNOTATION, style="angle")
     sc.add("AD_unit", length, A, D, visible=False, unit="mm")
     answers = {q.name: q.name for q in ANSWERS}
     return Construction(sc, answers, {"A": "A", "D": "D", "C1": "C1", "C2": "C2"})

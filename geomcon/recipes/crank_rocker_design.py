@@ -239,6 +239,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     _draw_choice(sc, idx, cands, th)
     if sc.drawing and family == "positions":
         _mark_given_angles(sc, g)
+    elif sc.drawing:                         # the frame given (001-15, 001-22): ψ is an answer, marked at D too
+        sc.add("mark_psi", swing_mark, D, Ref("Cf"), Ref("Ce"), role=Role.ANNOTATION, style="angle", optional=True)
     if sc.drawing:                           # the other valid designs, light, with the last step
         sc.add("other_designs", other_designs, idx, D, *(x for i, c in enumerate(cands, 1)
                                                         for x in (Ref(f"valid_{i}"), c[0], c[1], c[2])), style="ghost")

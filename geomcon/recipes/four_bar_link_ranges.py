@@ -165,7 +165,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
         if sc.drawing:
             sc.add(f"row{i}", segment, sc.add(f"row{i}_0", Point, 0.0, y, label=en, style="row-start",
                                               role=Role.ANNOTATION), sc.add(f"row{i}_1", Point, top, y, visible=False),
-                   style="frame", role=Role.ANNOTATION)
+                   style="given", role=Role.ANNOTATION)     # a number line, not a fixed link: drawn dash-dot
+            # ("frame"), the green range bars along it were cut away as construction over a frame line
             for k, (lo_, hi_) in enumerate(runs[name]):
                 hi_d = top if hi_ == math.inf else hi_
                 p = sc.add(f"{name}_{k}_lo", Point, lo_, y, style="tick", role=Role.RESULT, label=f"{lo_:g}")

@@ -108,6 +108,9 @@ class Context:
     shorten so that they never overlap."""
     sectors: tuple[tuple[XY, ...], ...] = ()
     """The angle marks of the figure on paper, as polygons (the vertex and its arc): a ground symbol keeps out."""
+    curves: tuple[tuple[XY, ...], ...] = ()
+    """The curves drawn as links (a cam's profile) on paper, as point chains: a ground symbol's hatch keeps off
+    them (200-03's O hatched across its small cam's profile)."""
 
 
 def pen(style: Style) -> Pen:

@@ -188,7 +188,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     pts = tuple(p for _, p in numbered)
     ctx = Context(view, pts, _centre(view, pts), links=_links(steps, values, view),
                   frames=_links(steps, values, view, frame=True), numbers=tuple(n for n, _ in numbered),
-                  sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view))
+                  sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view),
+                  curves=_curves(steps, values, view))
     current = n if upto is not None else None
     frame_lines = _frame_lines(steps, values, view)
     labels = merged_labels(steps, values, box)
@@ -346,6 +347,17 @@ def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View, fr
         style = resolve_style(s.style, s.role, "curve")
         if segs and (style.name == "frame" if frame else style.layer == "links"):
             out += [(view.p(x.a), view.p(x.b)) for x in segs]
+    return tuple(out)
+
+
+def _curves(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, ...], ...]:
+    """The curves drawn as links (a cam's profile: polylines of a style on the links layer) on paper."""
+    out = []
+    for _, s in steps:
+        v = values[s.key]
+        lines = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Polyline)]
+        if lines and resolve_style(s.style, s.role, "curve").layer == "links":
+            out += [tuple(view.p(q) for q in x.points + (x.points[:1] if x.closed else ())) for x in lines]
     return tuple(out)
 
 

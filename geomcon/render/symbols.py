@@ -59,7 +59,57 @@ def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
             continue
         if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
             best = (hit, room, out)
-    return best[2]
+    compact = _compact_ground(g, c, style, away, near)
+    return compact if compact is not None else best[2]
+
+
+COMPACT_SIZES = (0.8, 0.7, 0.6)
+"""The sizes (fractions of the full symbol) a ground symbol shrinks to, largest first, where no turn of the full
+one is clear: 001-19's A has D′ 5.4 mm above it, its links leave 108° free and the full symbol's base touched D′'s
+pin; 200-03's cam profile runs 5 mm from O, so O's ground hatched across the profile."""
+
+COMPACT_TURNS = tuple(math.radians(d) for d in sorted(range(-175, 181, 5), key=lambda d: (abs(d), -d)))
+"""The turns a shrunk ground symbol tries, in 5° steps nearest first (001-19's A is clear only near 144°)."""
+
+COMPACT_HALF = 3.0
+"""Half the base of a shrunk ground symbol, in full-size paper mm (the full one's is 4.2, its legs' 2.6): its
+corners lie 35.5° off its direction, not 45°, so it fits between links 80° apart."""
+
+COMPACT_ROOM = math.radians(40.0)
+"""Least angle between a shrunk ground symbol's direction and a link leaving its hinge (corners at 35.5°)."""
+
+COMPACT_GAP = (0.8, 2.0)
+"""Least paper mm between a shrunk ground symbol and the centre line of a link not at its hinge (half a link's
+width, 0.35 mm, half a stroke and a 0.3 mm gap) and a point of the figure (a pin's 1.5 mm radius, its outline and
+a gap): shrunk, it stands in a tight place and must read as apart from what is near."""
+
+
+def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: tuple[Any, Any, list[XY]]) -> Drawn | None:
+    """The largest shrunk ground symbol (:data:`COMPACT_SIZES`) at paper point ``c`` whose turn
+    (:data:`COMPACT_TURNS`) keeps it :data:`COMPACT_GAP` clear of every link and point, out of every angle
+    mark's sector and :data:`COMPACT_ROOM` off the links at its hinge; None when none is.
+
+    A pin 5.4 mm below the hinge: the full symbol (base 4.2 mm out, 8.4 mm long) would touch it; shrunk to 0.8,
+    its base 2 × 3.0 × 0.8 = 4.8 mm long,
+    and turned 55° (its base's middle 35° below the paper's x axis) it stands clear:
+
+    >>> from geomcon.render.style import STYLES
+    >>> from geomcon.render.view import View
+    >>> ctx = Context(View((-10.0, -10.0, 10.0, 10.0), 1.0, (0.0, 0.0)), points=(Point(0, 0), Point(0, -5.4)))
+    >>> out = _compact_ground(Ground(Point(0, 0)), (10.0, 10.0), STYLES["ground"], [], _near((10.0, 10.0), ctx))
+    >>> (a, b) = out.shapes[1].pts
+    >>> round(math.dist(a, b), 2), round(math.degrees(math.atan2((a[1] + b[1]) / 2 - 10, (a[0] + b[0]) / 2 - 10)))
+    (4.8, 35)
+    """
+    for size in COMPACT_SIZES:
+        for turn in COMPACT_TURNS:
+            angle = g.angle + turn
+            if _angular_room((math.cos(angle), -math.sin(angle)), away) < COMPACT_ROOM - 1e-9:
+                continue
+            out = _ground_at(c, angle, style, size, COMPACT_HALF)
+            if _collision(c, out, near, COMPACT_GAP) == 0.0:
+                return out
+    return None
 
 
 GROUND_TURNS = tuple(math.radians(d) for d in (0, 45, -45, 90, -90, 135, -135, 180)) + tuple(
@@ -102,17 +152,22 @@ def _angular_room(u: XY, away: list[XY]) -> float:
     return min((math.acos(max(-1.0, min(1.0, u[0] * v[0] + u[1] * v[1]))) for v in away), default=math.pi)
 
 
+POINT_GAP = 2.0
+"""Least paper mm between a ground symbol and the centre of another point of the figure: a pin's 1.5 mm radius,
+its outline and a visible gap (at 1.5 mm, 001-12's A ground touched B1's pin)."""
+
 GROUND_REACH = 9.0
 """Paper mm from its hinge beyond which nothing can meet a ground symbol (its base's corners lie 5.9 mm out,
 its hatch strokes 1.7 mm further)."""
 
 
 def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY]]:
-    """What a ground symbol at ``c`` may meet, whichever way it turns: the links and the angle marks' sectors
+    """What a ground symbol at ``c`` may meet, whichever way it turns: the links, fixed links and curves drawn
+    as links (a cam's profile) and the angle marks' sectors
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
     spot = shapely.Point(c)
-    lines = ctx.links + ctx.frames                 # a hatch across the frame AD reads as wrong as one across a link
-    links = shapely.linestrings([list(s) for s in lines]) if lines else None
+    lines = ctx.links + ctx.frames + ctx.curves    # a hatch across the frame AD or a cam's profile reads as wrong
+    links = np.array([shapely.LineString(q) for q in lines], dtype=object) if lines else None    # as across a link
     pies = np.array([shapely.Polygon(p) for p in ctx.sectors], dtype=object) if ctx.sectors else None
     if links is not None:
         links = links[shapely.dwithin(links, spot, GROUND_REACH)]
@@ -122,18 +177,23 @@ def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY]]:
     return links, pies, pts
 
 
-def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY]]) -> float:
+def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY]], gaps: tuple[float, float] | None = None) -> float:
     """How much a ground symbol at paper point ``c`` meets, away from the hinge it holds: the length of it
-    inside angle marks' sectors, plus 10 mm for each link it crosses and for each other point of the figure
-    it comes within 1.5 mm of (0 when clear); ``near`` from :func:`_near`."""
+    inside angle marks' sectors, plus 10 mm for each link it crosses (or comes within ``gaps[0]`` of, for a link not
+    at its hinge) and for each
+    other point of the figure it comes within :data:`POINT_GAP` (``gaps[1]``) of (0 when clear); ``near`` from
+    :func:`_near`."""
     links, pies, pts = near
     hinge = shapely.Point(c).buffer(1.7, 8)
     geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
     hit = 0.0
     if links is not None and len(links):
-        hit += 10.0 * int(shapely.intersects(geo, links).sum())
+        touch = shapely.intersects(geo, links)
+        if gaps is not None:                       # kept apart from links not at its hinge
+            touch |= shapely.dwithin(geo, links, gaps[0]) & ~shapely.dwithin(links, shapely.Point(c), 0.5)
+        hit += 10.0 * int(touch.sum())
     if pts:
-        hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(pts), 1.5))
+        hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(pts), POINT_GAP if gaps is None else gaps[1]))
     if pies is not None and len(pies):
         hit += float(shapely.length(shapely.intersection(geo, pies)).sum())
     return hit
@@ -162,20 +222,21 @@ def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
     return (c,) + tuple(arc.at(i / n) for i in range(n + 1))
 
 
-def _ground_at(c: XY, angle: float, style: Style) -> Drawn:
-    """The ground symbol at paper point ``c``, the ground towards model angle ``angle``."""
+def _ground_at(c: XY, angle: float, style: Style, size: float = 1.0, half: float = 4.2) -> Drawn:
+    """The ground symbol at paper point ``c``, the ground towards model angle ``angle``, ``size`` times its
+    full size, its base ``half`` × ``size`` long each side (a compact one's base barely overhangs its legs)."""
     u = (math.cos(angle), -math.sin(angle))        # towards the ground, on paper
     n = (-u[1], u[0])
-    base = _add(c, u, 4.2)
+    base = _add(c, u, 4.2 * size)
     p = pen(style)
-    legs = Poly((_add(base, n, 2.6), c, _add(base, n, -2.6)), p)
-    line = Poly((_add(base, n, -4.2), _add(base, n, 4.2)), p)
+    legs = Poly((_add(base, n, 2.6 * size), c, _add(base, n, -2.6 * size)), p)
+    line = Poly((_add(base, n, -half * size), _add(base, n, half * size)), p)
     out = Drawn([legs, line])
     slant = _unit(u[0] - n[0], u[1] - n[1])
     for k in range(5):
-        s = -3.4 + k * 1.7
-        q = _add(base, n, s + 0.8)
-        out.shapes.append(Poly((q, _add(q, slant, 1.7)), Pen(style.stroke, HATCH)))
+        s = (-half + 1.6 + k * (2.0 * half - 1.6) / 4.0) * size
+        q = _add(base, n, s)
+        out.shapes.append(Poly((q, _add(q, slant, 1.7 * size)), Pen(style.stroke, HATCH)))
     return out
 
 
