@@ -24,3 +24,15 @@ def test_table_names_every_row():
     assert "its sheets (SVG)" in text and "90.5 ms" in text
     assert "load 1.5, best of 3" in text
     assert "geomcon gallery" not in gallery_table(None, [])
+
+
+def test_every_figure_row_times_each_problems_sheet_one():
+    from geomcon.bench.gallery import SpreadRow, measure_all_figures
+
+    row = measure_all_figures(1, ("001-08", "001-24", "no-such-problem"))
+    assert row.count == 2 and row.slowest.startswith(("001-08", "001-24")) and row.worst >= row.median > 0.0
+    assert measure_all_figures(1, ("no-such-problem",)) is None
+    text = gallery_table(None, [], SpreadRow(93, 6, "001-24_cam", 0.0662, 0.0212))
+    assert "93 problems: median; slowest 001-24_cam" in text and "21.2 ms; 66.2 ms" in text
+    assert "6 over 40 ms (SHORT)" in text
+    assert SpreadRow.of({"a": 0.01, "b": 0.03}).median == 0.02 and SpreadRow.of({"a": 0.04}).met

@@ -56,7 +56,7 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_recor
     from .cam import cam_table, measure_cam
     from .cycle import cycle_table, measure_cycle
     from .exact import exact_table, measure_exact
-    from .gallery import gallery_table, measure_figures, measure_gallery
+    from .gallery import gallery_table, measure_all_figures, measure_figures, measure_gallery
     from .grading import grading_table, measure_grading
     from .lean import lean_table, measure_lean
     from .measure import FULL, QUICK, measure_drawing, measure_extremes
@@ -75,7 +75,8 @@ def run_bench(*, quick: bool = False, out: Path = Path("bench.svg"), cycle_recor
     text += "\n\n" + grading_table(measure_grading(rows=10_000 if quick else 100_000))
     cycle = measure_cycle(200_000 if quick else 1_000_000, 1 if quick else 3)
     text += "\n\n" + cycle_table(cycle)
-    text += "\n\n" + gallery_table(measure_gallery(1 if quick else 3), measure_figures(5 if quick else 15))
+    text += "\n\n" + gallery_table(measure_gallery(1 if quick else 3), measure_figures(5 if quick else 15),
+                                   measure_all_figures(1 if quick else 2))
     files = {out: render_plot(extremes, quick=quick)}
     if cycle_record is not None:
         import time

@@ -15,6 +15,11 @@ wall time, one figure ≤ 40 ms.
   :data:`FIGURES` are the gallery's costliest figures (the cams with 45 labels) and the textbook's
   crank-rocker.
 
+- Every figure: sheet 1's :func:`~geomcon.render.figure.build_figure` of every bundled problem, drawn again
+  from the arguments the gallery's sheets gave it (each problem solved and its sheets drawn once, then the
+  figures alone, interleaved, the shortest of ``samples``): how many exceed :data:`FIGURE_TARGET`, the slowest
+  and the median (:class:`SpreadRow`).
+
 Tests check the rows' arithmetic, never a time.
 
 Examples
@@ -24,6 +29,9 @@ Examples
 True
 >>> GalleryRow(2.5, 4.6, 1.2, 1).met
 True
+>>> r = SpreadRow.of({"001-08": 0.012, "001-24": 0.052, "200-16": 0.047})
+>>> r.over, r.slowest, r.median, r.met
+(2, '001-24', 0.047, False)
 """
 from __future__ import annotations
 
@@ -75,6 +83,32 @@ class FigureRow:
     def met(self) -> bool:
         """Sheet 1's figure within :data:`FIGURE_TARGET`."""
         return self.figure <= FIGURE_TARGET
+
+
+@dataclass(frozen=True)
+class SpreadRow:
+    """Sheet 1's figure of every problem: how many were timed, how many exceed :data:`FIGURE_TARGET`, the
+    slowest one's id and CPU seconds, and the median."""
+
+    count: int
+    over: int
+    slowest: str
+    worst: float
+    median: float
+
+    @staticmethod
+    def of(seconds: dict[str, float]) -> SpreadRow:
+        """The row of ``seconds`` (problem id → CPU seconds of its figure; at least one)."""
+        ranked = sorted(seconds.values())
+        n = len(ranked)
+        median = ranked[n // 2] if n % 2 else (ranked[n // 2 - 1] + ranked[n // 2]) / 2
+        slowest = max(seconds, key=seconds.__getitem__)
+        return SpreadRow(n, sum(t > FIGURE_TARGET for t in ranked), slowest, seconds[slowest], median)
+
+    @property
+    def met(self) -> bool:
+        """Every figure within :data:`FIGURE_TARGET`."""
+        return self.over == 0
 
 
 def _child_run(argv: list[str], env: dict[str, str]) -> tuple[float, float]:
@@ -155,7 +189,57 @@ def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> li
     return [FigureRow(pid, recipe[pid], best[pid], first[pid]) for pid, _ in problems]
 
 
-def gallery_table(gallery: GalleryRow | None, figures: list[FigureRow]) -> str:
+def measure_all_figures(samples: int = 1, only: tuple[str, ...] | None = None) -> SpreadRow | None:
+    """Sheet 1's figure of every bundled problem (of ``only``'s ids when given), the shortest CPU time of
+    ``samples`` (see the module); None without problems."""
+    from ..gallery import gallery_page, problem_files
+    from ..problems import load_problem
+    from ..render import svg as render_svg
+    from ..solve import solve
+
+    page = gallery_page()
+    build = render_svg.build_figure
+    calls: list[tuple[tuple, dict]] = []
+
+    def first_call(*args, **kwargs):                # sheet 1's figure: the first one drawn
+        calls.append((args, kwargs))
+        return build(*args, **kwargs)
+
+    figures: dict[str, tuple[tuple, dict]] = {}
+    render_svg.build_figure = first_call
+    try:
+        for path in problem_files(ROOT / "problems"):
+            pid = path.stem.split("_")[0]
+            if only is not None and pid not in only:
+                continue
+            calls.clear()
+            solve(load_problem(path)).sheets(page)
+            if calls:
+                figures[path.stem] = calls[0]
+    finally:
+        render_svg.build_figure = build
+    if not figures:
+        return None
+    best = {name: float("inf") for name in figures}
+    was = gc.isenabled()
+    try:
+        for _ in range(samples):
+            for name, (args, kwargs) in figures.items():
+                gc.collect()
+                gc.disable()
+                t0 = clock()
+                build(*args, **kwargs)
+                best[name] = min(best[name], clock() - t0)
+                gc.enable()
+    finally:
+        if was:
+            gc.enable()
+        else:
+            gc.disable()
+    return SpreadRow.of(best)
+
+
+def gallery_table(gallery: GalleryRow | None, figures: list[FigureRow], spread: SpreadRow | None = None) -> str:
     """The printed table of the gallery rows."""
     head = ("gallery (issue 11)", "case", "time", "CPU", "target")
     rows = []
@@ -167,9 +251,13 @@ def gallery_table(gallery: GalleryRow | None, figures: list[FigureRow]) -> str:
         rows.append(("one figure (sheet 1)", f"{r.problem} {r.recipe}", "", fmt_seconds(r.figure),
                      f"≤ {FIGURE_TARGET * 1e3:g} ms ({'met' if r.met else 'SHORT'})"))
         rows.append(("  its sheets (SVG)", f"{r.problem}", "", fmt_seconds(r.seconds), ""))
+    if spread is not None:
+        rows.append(("every figure (sheet 1)", f"{spread.count} problems: median; slowest {spread.slowest}",
+                     "", f"{fmt_seconds(spread.median)}; {fmt_seconds(spread.worst)}",
+                     f"{spread.over} over {FIGURE_TARGET * 1e3:g} ms ({'met' if spread.met else 'SHORT'})"))
     return format_table(head, rows, "llrrl") + ("\nthe gallery's byte-code cached, as installed; wall time depends on "
                                                 "the machine's load" if gallery is not None else "")
 
 
-__all__ = ["FIGURES", "FIGURE_TARGET", "FigureRow", "GALLERY_TARGET", "GalleryRow", "gallery_table",
-           "measure_figures", "measure_gallery"]
+__all__ = ["FIGURES", "FIGURE_TARGET", "FigureRow", "GALLERY_TARGET", "GalleryRow", "SpreadRow", "gallery_table",
+           "measure_all_figures", "measure_figures", "measure_gallery"]

@@ -35,7 +35,7 @@ from .clearance import ENOUGH
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
 from .rows import SEP, Fan, clusters, fans, row_centre
 from .labels import text_width
-from .shapes import ArcP, Pen, Poly, Shape, Text, obstacle, recolour
+from .shapes import ArcP, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import draw, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
@@ -606,7 +606,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
                   SOFT if g.layer == "construction" else 0.0, w, 0.0 if g.layer == "points" else w)
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
-    placer = Placer(obstacles, view.paper_box)
+    thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
+    placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box)
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     _leading(pending)
     tried = _fan_options(groups, pending)

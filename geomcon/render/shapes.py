@@ -264,6 +264,39 @@ def _line(pts: list[XY]) -> shapely.Geometry:
     return shapely.linestrings(np.array(pts, dtype=float))
 
 
+LEAN_TOLERANCE = 0.01
+"""How far (paper mm) the line a label keeps clear of may stray from a long drawn polyline (:func:`lean`): a
+fifteenth of the thinnest stroke (0.15 mm), far below what a reader or the placer's :data:`.clearance.ENOUGH` can
+tell. At 0.02 mm one label of the gallery (001-23b's 3′) found another place, and two more moved after it; at
+0.01 mm none moves, and a cam's curves keep as few vertices (001-24: 4 016 vertices in all, 2 106 at 0.01 mm,
+2 090 at 0.02 mm)."""
+
+LEAN_FROM = 64
+"""Line strings with more vertices than this are thinned for placement (a cam's profile and pitch curve, 0.2 mm a
+segment; an arc's vertices are ~1 mm apart and few)."""
+
+
+def lean(geoms: list[shapely.Geometry], tolerance: float = LEAN_TOLERANCE) -> list[shapely.Geometry]:
+    """``geoms`` with every line string of more than :data:`LEAN_FROM` vertices simplified (Douglas–Peucker,
+    ``shapely.simplify``) to within ``tolerance``: what labels keep clear of, with a tenth as many segments to
+    measure (a cam's 0.2 mm segments); the drawn stroke itself is unchanged. Areas, points and short lines are returned as they are.
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, math.pi, 800)
+    >>> arc = shapely.LineString(np.stack([20 * np.cos(t), 20 * np.sin(t)], axis=1))
+    >>> thin, = lean([arc])
+    >>> int(shapely.get_num_coordinates(thin)), thin.hausdorff_distance(arc) <= 0.01
+    (65, True)
+    """
+    g = np.empty(len(geoms), dtype=object)
+    g[:] = geoms
+    long = np.flatnonzero((shapely.get_type_id(g) == 1) & (shapely.get_num_coordinates(g) > LEAN_FROM))
+    if len(long):
+        g[long] = shapely.simplify(g[long], tolerance, preserve_topology=False)
+    return g.tolist()
+
+
 def text_polygon(t: Text) -> shapely.Geometry:
     """The estimated box of a text, rotated as drawn."""
     x0, y0, x1, y1 = t.box
