@@ -24,7 +24,7 @@ import functools
 import re
 from itertools import chain
 
-from .zh_words import words
+from .zh_words import is_ideograph, words
 
 Runs = tuple[tuple[str, bool], ...]
 
@@ -187,10 +187,11 @@ _WIDE: dict[str, bool] = {}
 def _tokens(s: str) -> list[str]:
     """Breakable pieces: Latin words with their trailing space, Chinese words (:func:`.zh_words.words`: a line
     breaks between words, never inside one), single other CJK characters; closing punctuation stays with the
-    piece before it, opening punctuation with the piece after it.
+    piece before it, opening punctuation with the piece after it; a unit with its number and a bracket's short
+    first word with the word after it (:func:`_glued`).
 
     >>> _tokens("以 A 为圆心作曲柄圆（半径 AB），交于 C1")
-    ['以 ', 'A ', '为', '圆心', '作', '曲柄', '圆', '（半径 ', 'AB），', '交', '于 ', 'C1']
+    ['以 ', 'A ', '为', '圆心', '作', '曲柄', '圆', '（半径 AB），', '交', '于 ', 'C1']
     """
     if _ANY_WIDE.search(s) is None:                 # Latin only: words with their trailing space
         parts = s.split(" ")
@@ -245,14 +246,21 @@ _OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
 
 
 def _glued(tokens: list[str]) -> list[str]:
-    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side, and
-    every token that begins with a mark no line may begin with (closing punctuation, an ellipsis, a per cent
-    sign: :data:`_NO_START`) joined to the token before it, even across a space.
+    """``tokens`` with every operator token (``"= "``, ``"+ "``, ``"− "`` …) joined to the tokens either side,
+    the token after 第 joined to it (an ordinal: 第 2 张), every token that begins with a mark no line may begin
+    with (closing punctuation, an ellipsis, a per cent sign: :data:`_NO_START`) or that is a unit after a number
+    (``450 mm``, ``2 mm/mm``: :data:`_UNITS`) joined to the token before it, even across a space, a bracket's
+    short first word joined to the word after it and a one-character last one to the word before it
+    (:func:`_opens_short`, :func:`_closes_short`: no line ends in "(at" or "（即", none begins with "处）").
 
     >>> _glued(["(at ", "δ ", "= ", "5°)"])
-    ['(at ', 'δ = 5°)']
+    ['(at δ = 5°)']
     >>> _glued(["1, ", "2, ", "…", "（即"]), _glued(["0.00 ", "%）"])
     (['1, ', '2, …', '（即'], ['0.00 %）'])
+    >>> _glued(["360° ", "= ", "450 ", "mm ", "(on ", "sheet ", "2)"]), _glued(["（δ = 5° ", "处）"])
+    (['360° = 450 mm ', '(on sheet ', '2)'], ['（δ = 5° 处）'])
+    >>> _glued(["见", "第 ", "2 ", "张）"])                   # an ordinal stays with its number
+    ['见', '第 2 张）']
     """
     out: list[str] = []
     glue = False
@@ -260,12 +268,81 @@ def _glued(tokens: list[str]) -> list[str]:
         if out and t.strip() in _OPERATORS:
             out[-1] += t
             glue = True
-        elif glue or (out and t[:1] in _NO_START):
+        elif glue or (out and (t[:1] in _NO_START or out[-1].rstrip().endswith("第") or _opens_short(out[-1])
+                               or _closes_short(t) or _unit_after_number(out[-1], t))):
             out[-1] += t
             glue = False
         else:
             out.append(t)
     return out
+
+
+_UNITS = frozenset(("mm", "cm", "m", "mm/mm", "mm/s", "mm/s²", "m/s", "m/s²", "rad", "rad/s", "rad/s²", "rpm",
+                    "r/min", "(mm/s)/mm", "(mm/s²)/mm", "°", "%", "‰", "张"))
+"""Units a number is printed with: a line never breaks between the number and its unit ("360° = 450 mm",
+"μl = 2 mm/mm", "vB = 500 mm/s", a sheet's count "第 2 张")."""
+_TRAIL = " ,;:.)]）］，；：。、"
+"""What may follow a word inside its token: a space, closing punctuation."""
+
+
+def _unit_after_number(before: str, tok: str) -> bool:
+    """Whether ``tok`` is a unit (:data:`_UNITS`, punctuation after it allowed) and ``before`` ends in a digit.
+
+    >>> _unit_after_number("450 ", "mm（画"), _unit_after_number("= 2 ", "mm/mm"), _unit_after_number("AB ", "mm")
+    (True, True, False)
+    """
+    body = before.rstrip()
+    if not body or not body[-1].isdigit():
+        return False
+    word = tok.split("（", 1)[0].split("(", 1)[0] if not tok.startswith("(") else tok.split(" ", 1)[0]
+    return word.rstrip(_TRAIL) in _UNITS
+
+
+_OPEN_ANY = "([（［【「『《“‘"
+_CLOSE_ANY = ")]）］】」』》”’"
+
+
+def _opens_short(tok: str) -> bool:
+    """Whether ``tok`` ends inside a bracket it opens, after at most a short first word (:func:`_short`): an
+    opening mark alone, "(at", "(the", "(C1", "[190,", "（即", "（位于". Such a token keeps the word after it on its
+    line.
+
+    >>> [_opens_short(t) for t in ("(at ", "(the ", "[190, ", "（位于", "(intersection ", "（位于有向", "(a)", "A (")]
+    [True, True, True, True, False, False, False, True]
+    """
+    i = max(map(tok.rfind, _OPEN_ANY))
+    if i < 0:
+        return False
+    inner = tok[i + 1:]
+    return not any(c in _CLOSE_ANY for c in inner) and _short(inner)
+
+
+def _closes_short(tok: str) -> bool:
+    """Whether ``tok`` closes a bracket opened before it after a single Chinese character ("处）", "画）"): such a
+    token stays on the line of the word before it. (A longer last word may begin a line, and so may a Latin one,
+    "B″), else": kept with the words before it, it pushed a protocol's step to a sheet of its own.)
+
+    >>> [_closes_short(t) for t in ("处）；", "左侧）", "2) ", "（处）", "处")]
+    [True, False, False, False, False]
+    """
+    j = tok.find("）")
+    return j == 1 and is_ideograph(tok[0])
+
+
+def _short(inner: str) -> bool:
+    """Whether the text inside a bracket next to its mark is at most a short word: nothing, a Latin word of at most
+    4 characters, or one Chinese word (:func:`.zh_words.words`).
+
+    >>> [_short(s) for s in ("", "at ", "190, ", "位于", "位于有向", "the end", "long word")]
+    [True, True, True, True, False, False, False]
+    """
+    inner = inner.strip().rstrip(_TRAIL)
+    if " " in inner:
+        return False
+    han = [m.group() for m in _HAN.finditer(inner) if m.group(1)]
+    if han:
+        return len(han) == 1 and han[0] == inner and len(words(inner)) <= 1
+    return len(inner) <= 4
 
 
 _OPENING = "（「『《【“‘"
@@ -282,7 +359,9 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
 
     Latin text breaks at spaces, but not beside an operator set between spaces (``=``, ``+``, ``−`` …), Chinese text
     between words (:mod:`.zh_words`), other CJK text between characters, but not after an opening mark nor before a
-    closing one. ``last_reserve`` keeps room at the end of the last line (for a value appended later).
+    closing one, nor after a bracket's short first word ("(at"), nor before a one-character last one ("处）"), nor between a number and its unit
+    ("450 mm": :func:`_glued`). ``last_reserve`` keeps room at the end of the last line (for a value appended
+    later).
 
     Examples
     --------
@@ -290,6 +369,8 @@ def wrap(text: str, width: float, size: float, last_reserve: float = 0.0) -> lis
     ['以 A 为', '圆心、BC − AB = 20', '为半径作圆']
     >>> wrap("速度突降，刚性冲击）", 21.6, 2.4)        # a closing mark never starts a line
     ['速度突降，刚性', '冲击）']
+    >>> wrap("超过许用值 45°（δ = 5.000° 处）", 28.0, 3.5)      # nor the bracket's one-character last word
+    ['超过许用值 45°', '（δ = 5.000° 处）']
     >>> wrap("With K = 1.2: θ = 180°(K − 1)/(K + 1)", 60.0, 3.5, last_reserve=20.0)    # room for " = 16.364°"
     ['With K = 1.2:', 'θ = 180°(K − 1)/(K + 1)']
     >>> wrap("运动失真（根切）：否", 12.0, 2.4)         # an opening mark never ends one
