@@ -151,20 +151,43 @@ def cmd_solve(args: argparse.Namespace) -> int:
     return 0 if sol.ok else EXIT_CHECK_FAILED
 
 
-UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "count": "whole number", "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm",
-              "deg[]": "list, °", "[]": "list", "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s",
-              "rad/s": "rad/s", "mm/s²": "mm/s²", "rad/s²": "rad/s²", "mm/s[]": "list, mm/s", "mm/s²[]": "list, mm/s²",
-              "rad/s[]": "list, rad/s", "rad/s²[]": "list, rad/s²"}
-"""How ``geomcon recipes`` names a unit."""
+UNIT_WORDS = {"mm": "mm", "interval[]": "[[low, high], …] mm", "deg": "°", "": "ratio", "count": "whole number",
+              "bool": "true/false", "point": "[x, y] mm", "mm[]": "list, mm", "deg[]": "list, °", "[]": "list",
+              "table[]": "list of tables", "choice": "one of", "mm/s": "mm/s", "rad/s": "rad/s", "mm/s²": "mm/s²",
+              "rad/s²": "rad/s²", "mm/s[]": "list, mm/s", "mm/s²[]": "list, mm/s²", "rad/s[]": "list, rad/s",
+              "rad/s²[]": "list, rad/s²"}
+"""How ``geomcon recipes`` names a given's unit (a flag is written true or false in a problem file)."""
+ANSWER_WORDS = {**UNIT_WORDS, "bool": "yes/no (JSON true/false)"}
+"""How ``geomcon recipes`` names an answer's unit: a flag reads yes or no, as the results print it."""
+
+
+def _unit_words(q, words: dict[str, str] = UNIT_WORDS) -> str:
+    """A quantity's unit as ``geomcon recipes`` prints it, with the words a choice may take.
+
+    >>> from geomcon.recipes.base import Quantity
+    >>> _unit_words(Quantity("K", "", "time-ratio coefficient")), _unit_words(Quantity("ok", "bool", "x"), ANSWER_WORDS)
+    ('ratio', 'yes/no (JSON true/false)')
+    >>> _unit_words(Quantity("arm", "choice", "side", choices=("left", "right")))
+    'one of left|right'
+    """
+    unit = words.get(q.unit, q.unit)
+    return f"{unit} {'|'.join(q.choices)}" if q.choices else unit
 
 
 def _given_line(q) -> str:
     """One given of ``geomcon recipes``: name, unit, required or its default, range, meaning."""
-    unit = UNIT_WORDS.get(q.unit, q.unit)
-    if q.choices:
-        unit = f"{unit} {'|'.join(q.choices)}"
     need = "required" if q.required else ("optional" if q.default is None else f"default {_shown(q.default)}")
-    return f"    {q.name:<18} {unit:<30} {need:<19} {q.doc}"
+    return f"    {q.name:<18} {_unit_words(q):<30} {need:<19} {q.doc}"
+
+
+def _answer_line(q) -> str:
+    """One answer of ``geomcon recipes``: name, unit (yes/no for a flag), meaning.
+
+    >>> from geomcon.recipes.base import Quantity
+    >>> _answer_line(Quantity("A_near", "bool", "yes when A lies on D's side of C1C2")).split()
+    ['A_near', 'yes/no', '(JSON', 'true/false)', 'yes', 'when', 'A', 'lies', 'on', "D's", 'side', 'of', 'C1C2']
+    """
+    return f"    {q.name:<18} {_unit_words(q, ANSWER_WORDS):<30} {'':<19} {q.doc}"
 
 
 def _shown(v) -> str:
@@ -226,7 +249,9 @@ def cmd_recipes(args: argparse.Namespace) -> int:
         print("  given:")
         for q in r.givens:
             print(_given_line(q))
-        print("  answers: " + ", ".join(f"{q.name} ({UNIT_WORDS.get(q.unit, q.unit)})" for q in r.answers))
+        print("  answers:")
+        for q in r.answers:
+            print(_answer_line(q))
         print()
     return 0
 

@@ -179,9 +179,11 @@ def test_gallery_is_fresh():
 def test_recipes_prints_units_defaults_and_meanings(capsys):
     assert main(["recipes"]) == 0
     out = capsys.readouterr().out
-    rotation = [line for line in out.splitlines() if line.split()[:1] == ["rotation"]]
+    givens = [line for block in out.split("  answers:") if "  given:" in block
+              for line in block.split("  given:")[1].splitlines()]           # the answers follow, listed alike
+    rotation = [line for line in givens if line.split()[:1] == ["rotation"]]
     assert rotation and all("default ccw" in line and "ccw|cw" in line for line in rotation)
-    ab = [line for line in out.splitlines() if line.split()[:1] == ["AB"]]
+    ab = [line for line in givens if line.split()[:1] == ["AB"]]
     assert all(" mm " in line for line in ab) and {line.split()[2] for line in ab} == {"required", "optional"}
     assert main(["recipes", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["cam.translating"]["given"]["rotation"]["default"] == "ccw"

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -48,3 +49,53 @@ def test_a_count_and_an_angular_speed_are_still_range_checked(bad):
         problem_from_dict(_oscillating(divisions=bad), name="demo")
     with pytest.raises(ProblemError):
         problem_from_dict(_oscillating(omega=bad), name="demo")
+
+
+RATIO_WORDS = re.compile(r"ratio|coefficient|/")
+"""What the meaning of a quantity without a unit names: a ratio, a coefficient or a quotient (ω2/ω1)."""
+
+
+def test_a_quantity_listed_as_a_ratio_is_one_and_a_flag_is_yes_or_no():
+    # issue 11 (review of session g): `geomcon recipes` listed crank_rocker.design_by_K's C1_folded and A_near,
+    # answers that are 1 or 0 ("1 when C1 is the folded one, else 0"), as "(ratio)"
+    for name, q in QUANTITIES:
+        if q.unit == "":
+            assert RATIO_WORDS.search(q.doc), (name, q.name, q.doc)
+        if re.match(r"(yes|1) when\b", q.doc):
+            assert q.unit == "bool", (name, q.name, q.unit, q.doc)
+    units = {q.name: q.unit for q in get_recipe("crank_rocker.design_by_K").answers}
+    assert units["C1_folded"] == units["A_near"] == "bool"
+
+
+def test_the_listing_gives_every_answer_its_unit_and_meaning_and_a_flag_reads_yes_or_no():
+    out = subprocess.run([sys.executable, "-m", "geomcon", "recipes"], capture_output=True, text=True, check=True).stdout
+    rows = {}
+    for block in out.split("\n\n"):
+        if "  answers:" not in block:
+            continue
+        recipe = block.split()[0]
+        for line in block.split("  answers:\n", 1)[1].splitlines():
+            m = re.match(r"^    (\S+) +(.+?) {2,}(\S.*)$", line)
+            assert m, line
+            rows[recipe, m[1]] = (m[2], m[3])
+    answers = [(name, q) for name in sorted(RECIPES) for q in get_recipe(name).answers]
+    assert set(rows) == {(name, q.name) for name, q in answers}
+    for name, q in answers:
+        unit, meaning = rows[name, q.name]
+        assert meaning == q.doc, (name, q.name)
+        assert (unit == "yes/no (JSON true/false)") == (q.unit == "bool"), (name, q.name, unit)
+        assert "ratio" not in unit or q.unit == "", (name, q.name, unit)
+    assert rows["crank_rocker.design_by_K", "C1_folded"][0].startswith("yes/no")
+    assert rows["four_bar.analysis", "type"][0] == ("one of crank-rocker|double-crank|double-rocker|change-point"
+                                                    "|immovable")
+
+
+def test_a_flag_and_its_twin_are_yes_or_no_in_the_solution():
+    from geomcon.problems import load_problem
+    from geomcon.solve import solve
+    problems = Path(__file__).resolve().parents[1] / "problems"
+    sol = solve(load_problem(problems / "001-15_crank_rocker_frame_and_position.toml"))
+    rows = [r for r in sol.checks if r["quantity"].split(".")[-1] in ("C1_folded", "A_near")]
+    assert len(rows) >= 4
+    assert all(type(r["construction"]) is bool and type(r["analytic"]) is bool and r["ok"] for r in rows), rows
+    assert {type(s[k]) for s in sol.solution_values for k in ("C1_folded", "A_near")} == {bool}

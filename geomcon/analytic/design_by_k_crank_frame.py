@@ -144,6 +144,6 @@ def crank_frame_designs(K: float, AB: float, AD: float, psi: float, *, cd_max: f
         c1, c2 = (c * math.cos(phi1), c * math.sin(phi1)), (c * math.cos(phi2), c * math.sin(phi2))
         out.append({"AB": a, "BC": b, "CD": c, "AD": d, "psi": psi,
                     "gamma_min": crank_rocker_gamma_from_positions((d, 0.0), (0.0, 0.0), c1, c2),
-                    "theta": math.degrees(th), "K": K, "C1_folded": 1.0,
-                    "A_near": float(d * math.cos(beta) < c * k)})
+                    "theta": math.degrees(th), "K": K, "C1_folded": True,
+                    "A_near": d * math.cos(beta) < c * k})
     return sorted(out, key=lambda r: (-r["A_near"], r["CD"]))

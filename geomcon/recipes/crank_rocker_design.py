@@ -66,10 +66,12 @@ ANSWERS = (
     Quantity("gamma_min", "deg", "smallest transmission angle of the designed linkage"),
     Quantity("theta", "deg", "180°(K − 1)/(K + 1)"),
     Quantity("K", "", "time-ratio coefficient (as given)"),
-    Quantity("C1_folded", "", "1 when the extreme position C1 is the folded one (AC1 = BC − AB), else 0; at K = 1 "
+    Quantity("C1_folded", "bool", "yes when the extreme position C1 is the folded one (AC1 = BC − AB), no when it is "
+             "the extended one; at K = 1 "
              "too (A, C1, C2 on one line, the folded position the nearer to A): with the frame given, C2 is the "
              "second meeting of the line AC1 with the rocker circle, never C1 itself"),
-    Quantity("A_near", "", "1 when A lies on D's side of C1C2 (always 1 when the frame is given)"),
+    Quantity("A_near", "bool", "yes when A lies on D's side of C1C2, no when on the far side (always yes when the "
+             "frame is given)"),
     Quantity("DE", "mm", "arm of the output stage, H_out / (2 sin ψ/2) (only with H_out)"),
 )
 CLOSINGS = ("BC", "AB", "AC1", "frame_line", "AD")
@@ -534,7 +536,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     K, CD = g["K"], g["CD"]
     if family != "positions":
         keep = ("AB", "BC", "AD", "CD", "psi", "gamma_min", "theta", "K", "C1_folded", "A_near")
-        out = sorted(({k: float(s[k]) for k in keep} for s in _frame_family_twin(g)), key=preference)
+        out = sorted(({k: s[k] if k in ("C1_folded", "A_near") else float(s[k]) for k in keep}       # flags: yes/no
+                      for s in _frame_family_twin(g)), key=preference)
     else:
         c1, c2 = _extreme_xy(g)
         # ψ given (and the closing condition symmetric): the mirror images are the same designs
@@ -544,8 +547,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         d_side = ux * (0.0 - c1y) - uy * (0.0 - c1x)       # which side of the line c1→c2 D (the origin) lies
         th, cd, k = float(theta_from_k(K)), float(CD), float(K)
         out = sorted(({"AB": a, "BC": b, "AD": ad, "CD": cd, "psi": psi, "gamma_min": gamma, "theta": th, "K": k,
-                       "C1_folded": folded,            # K = 1: A on the line C1C2 counts as near
-                       "A_near": float(K == 1.0 or (ux * (ay - c1y) - uy * (ax - c1x)) * d_side > 0)}
+                       "C1_folded": bool(folded),      # K = 1: A on the line C1C2 counts as near
+                       "A_near": K == 1.0 or (ux * (ay - c1y) - uy * (ax - c1x)) * d_side > 0}
                       for a, b, ad, ax, ay, folded, psi, gamma in rows), key=preference)
     if g.get("H_out") is not None:
         for s in out:
@@ -608,7 +611,7 @@ def _frame_family_twin(g: Mapping[str, Any]) -> list[dict[str, float]]:
             c1, c2 = (x1, y1), (w * math.cos(math.radians(beta)), y2)
             gmin = crank_rocker_gamma_from_positions((0.0, 0.0), (AD, 0.0), *((c1, c2) if w1 < w else (c2, c1)))
             out.append({"AB": a, "BC": b, "AD": AD, "CD": CD, "psi": abs(adc2 - adc1), "gamma_min": gmin,
-                        "theta": th, "K": K, "C1_folded": float(w1 < w), "A_near": 1.0})
+                        "theta": th, "K": K, "C1_folded": w1 < w, "A_near": True})
     return out
 
 

@@ -160,7 +160,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
     # chord on the x axis, M at the origin, C1 = (−c/2, 0), C2 = (c/2, 0), A = (−s, d), D = (0, ±h)
     c1, c2, A = (-chord / 2, 0.0), (chord / 2, 0.0), (-s, d)
     out = []
-    for near, Dy in ((1.0, h), (0.0, -h)):
+    for near, Dy in ((True, h), (False, -h)):
         ux, uy = 0.0 - A[0], Dy - A[1]
         ad = math.hypot(ux, uy)
         h1 = (ux * (c1[1] - A[1]) - uy * (c1[0] - A[0])) / ad
@@ -170,5 +170,5 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, float]]:
         gmin = crank_rocker_gamma_from_positions(A, (0.0, Dy), c1, c2)    # γmin from the points, not the lengths
         psi_d = angle_deg_at((0.0, Dy), c1, c2)                          # ψ of the points as well
         out.append({"AB": a, "BC": b, "AD": ad, "CD": cd, "psi": psi_d, "gamma_min": gmin,
-                    "theta": th, "K": K, "C1_folded": 1.0, "A_near": near})
+                    "theta": th, "K": K, "C1_folded": True, "A_near": near})
     return out
