@@ -210,6 +210,25 @@ def _VERDICT(s: Solution) -> tuple[bool, list[str]]:
     return s.ok, s.warnings
 
 
+def _float_passes(b: Any, e: Any, scale: float) -> bool:
+    """True when ``b`` and ``e`` are both floats and agree as a check row has them agree:
+    ``|b − e| < inf`` and ``|b − e| ≤ CHECK_REL·max(|b|, |e|, scale)`` (the max written as comparisons).
+
+    >>> _float_passes(1.0, 1.0 + 1e-12, 1.0), _float_passes(1.0, 1.1, 1.0), _float_passes(1, 1.0, 1.0)
+    (True, False, False)
+    """
+    if type(b) is not float or type(e) is not float:
+        return False
+    err = abs(b - e)
+    m = abs(b)
+    t = abs(e)
+    if t > m:
+        m = t
+    if scale > m:
+        m = scale
+    return err < math.inf and err <= CHECK_REL * m
+
+
 def _all_pass(s: Solution) -> bool:
     """True when every check of :attr:`Solution.checks` passes at ``CHECK_REL`` as a plain comparison of
     floats: each answer of each matched pair of solutions and each back-substitution, their errors and
@@ -221,7 +240,6 @@ def _all_pass(s: Solution) -> bool:
     if len(built_all) != len(exact_all):
         return False
     scales = s._unit_scales
-    inf = math.inf
     pairs = _answer_pairs(s.recipe)
     for i, j in s.matching:
         built, exact = built_all[i], exact_all[j]
@@ -236,36 +254,15 @@ def _all_pass(s: Solution) -> bool:
                 if b is not e:
                     return False
                 continue
-            if type(b) is not float or type(e) is not float:
-                return False
-            err = abs(b - e)
-            m = abs(b)
-            t = abs(e)
-            if t > m:
-                m = t
-            t = scales[unit]
-            if t > m:
-                m = t
-            if not (err < inf and err <= CHECK_REL * m):
+            if not _float_passes(b, e, scales[unit]):
                 return False
     back_check = s.recipe.back_check
     if back_check is not None:
         given = s.problem.given
         for built in built_all:
             for _, b, e, unit in planned(s.recipe.name, back_check, given, built):
-                if type(b) is not float or type(e) is not float:
-                    return False
-                err = abs(b - e)
-                m = abs(b)
-                t = abs(e)
-                if t > m:
-                    m = t
                 t = scales.get(unit)
-                if t is None:
-                    t = s.unit_scale(unit)
-                if t > m:
-                    m = t
-                if not (err < inf and err <= CHECK_REL * m):
+                if not _float_passes(b, e, s.unit_scale(unit) if t is None else t):
                     return False
     return True
 
