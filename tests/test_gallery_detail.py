@@ -85,21 +85,10 @@ def _detail_sizes_without_room(pid: str) -> list[tuple[float, float]]:
     empty when the detail view asks for none."""
     from geomcon.render.detail import detail_figure
     from geomcon.render.figure import build_figure
-    from geomcon.render.free_area import FreeRoom
-    from geomcon.render.page import INSET, frame_box
-    from geomcon.render.svg import _keepouts, results_in_free_room
+    from sheet_room import results_and_room
     sol, page, sc, info, warnings, sl, scale, view, keep = _sheet1(pid)
     fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep)
-    if not sl.info_here:
-        sl = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps()) or sl
-    outs = _keepouts(fig, sl, page, scale)
-    if sl.info_here:
-        x, y = sl.info_at
-        outs.append((x - INSET, y, x + sl.info_w + INSET, y + sl.info_h + INSET))
-        outs += [(pc.x - INSET, pc.y, pc.x + pc.w + INSET, pc.y + pc.h + INSET) for pc in sl.pieces]
-    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
-    room = FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
-                    outs)
+    sl, room = results_and_room(fig, sl, page, scale, info, warnings, sol)
     asked: list[tuple[float, float]] = []
     assert detail_figure(sc, fig, scale, lambda w, h: asked.append((w, h)), None) is None
     for w, h in asked:

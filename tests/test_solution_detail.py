@@ -19,12 +19,11 @@ from geomcon.paper import Scale
 from geomcon.problems import load_problem
 from geomcon.render.detail import MIN_LINK, detail_figure, mechanism_steps
 from geomcon.render.figure import build_figure, shown_steps
-from geomcon.render.free_area import FreeRoom
-from geomcon.render.page import INSET, frame_box
 from geomcon.render.results import brief_warnings
-from geomcon.render.svg import _detail_first, _keepouts, place_figure, results_in_free_room
+from geomcon.render.svg import _detail_first, place_figure
 from geomcon.render.warning_words import warning_lines
 from geomcon.solve import solve
+from sheet_room import results_and_room
 
 ROOT = Path(__file__).resolve().parents[1]
 SEVERAL = ["001-10_crank_rocker_design_coupler", "001-11_jaw_crusher_design", "001-12_crank_rocker_frame_line",
@@ -72,16 +71,7 @@ def test_a_solution_sheet_shows_short_links_in_a_detail_view_where_room_allows(p
         assert shortest * detail.factor / scale.factor >= MIN_LINK - 1e-9 and detail > scale
         return
     fig = build_figure(sc, None, view.box, view.origin, mu=view.mu)
-    if not sl.info_here:
-        sl = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps()) or sl
-    outs = _keepouts(fig, sl, page, scale)
-    if sl.info_here:
-        x, y = sl.info_at
-        outs.append((x - INSET, y, x + sl.info_w + INSET, y + sl.info_h + INSET))
-        outs += [(pc.x - INSET, pc.y, pc.x + pc.w + INSET, pc.y + pc.h + INSET) for pc in sl.pieces]
-    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
-    room = FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
-                    outs)
+    sl, room = results_and_room(fig, sl, page, scale, info, warnings, sol)
     asked: list[tuple[float, float]] = []
     assert detail_figure(sc, fig, scale, lambda w, h: asked.append((w, h)), None) is None
     assert asked, (pid, n, round(shortest, 2))                  # a detail was asked for ...
