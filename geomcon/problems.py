@@ -215,7 +215,7 @@ _SCALAR_UNITS = ("mm", "deg", "", "count", "mm/s", "rad/s", "rad/s²")
 def plain_validator(recipe: Recipe) -> Callable[[Any], dict[str, Any] | None]:
     """For many rows of one recipe (a batch): ``run(given)`` gives :func:`validate_given`'s result when
     ``given`` is a dict of known names whose values are all plain numbers passing :func:`_plain`'s checks (the
-    recipe's quantities read once, here, not per row); None when anything else is met (an unknown or missing
+    recipe's names read once, here, not per row); None when anything else is met (an unknown or missing
     name, a word, a list, a number to refuse), and the caller then calls :func:`validate_given`, which answers
     or refuses in its words. The units' ranges (:data:`RANGES`) are read at each call, as :func:`_plain` does.
 
@@ -225,8 +225,7 @@ def plain_validator(recipe: Recipe) -> Callable[[Any], dict[str, Any] | None]:
     ({'AB': 145.0, 'AC': 290.0, 'e': None, 'L': None}, None, None)
     """
     names = frozenset(recipe.given_names())
-    specs = tuple((q.name, q.unit, q.unit in _SCALAR_UNITS, q.minimum, q.inclusive, q.maximum, q.required,
-                   q.default) for q in recipe.givens)
+    specs = tuple((q.name, q, q.required, q.default) for q in recipe.givens)
 
     def run(given: Any) -> dict[str, Any] | None:
         if type(given) is not dict:
@@ -235,25 +234,14 @@ def plain_validator(recipe: Recipe) -> Callable[[Any], dict[str, Any] | None]:
             if k not in names:
                 return None
         out: dict[str, Any] = {}
-        for name, unit, scalar, minimum, inclusive, maximum, required, default in specs:
+        for name, q, required, default in specs:
             if name not in given:
                 if required:
                     return None
                 out[name] = default
                 continue
-            value = given[name]
-            t = type(value)
-            if (t is not float and t is not int) or not scalar:
-                return None
-            if t is int and not -1e300 <= value <= 1e300:
-                return None
-            x = float(value)
-            lo, hi = RANGES[unit]
-            if not (x - x == 0.0 and abs(x) <= hi and (x == 0.0 or abs(x) >= lo)):
-                return None
-            if minimum is not None and (x < minimum if inclusive else x <= minimum):
-                return None
-            if maximum is not None and x > maximum:
+            x = _plain(q, given[name])
+            if x is None:
                 return None
             out[name] = x
         _length_span(recipe, out)
