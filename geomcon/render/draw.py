@@ -111,6 +111,9 @@ class Context:
     curves: tuple[tuple[XY, ...], ...] = ()
     """The curves drawn as links (a cam's profile) on paper, as point chains: a ground symbol's hatch keeps off
     them (200-03's O hatched across its small cam's profile)."""
+    dims: tuple[tuple[XY, XY], ...] = ()
+    """The dimensions of the figure on paper, as segments (each dimension line and its extension lines): a ground
+    symbol keeps off them (:func:`geomcon.render.symbols.dimension_lines`)."""
 
 
 def pen(style: Style) -> Pen:

@@ -84,7 +84,8 @@ width, 0.35 mm, half a stroke and a 0.3 mm gap) and a point of the figure (a pin
 a gap): shrunk, it stands in a tight place and must read as apart from what is near."""
 
 
-def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: tuple[Any, Any, list[XY]]) -> Drawn | None:
+def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: tuple[Any, Any, list[XY], Any]
+                    ) -> Drawn | None:
     """The largest shrunk ground symbol (:data:`COMPACT_SIZES`) at paper point ``c`` whose turn
     (:data:`COMPACT_TURNS`) keeps it :data:`COMPACT_GAP` clear of every link and point, out of every angle
     mark's sector and :data:`COMPACT_ROOM` off the links at its hinge; None when none is.
@@ -161,7 +162,7 @@ GROUND_REACH = 9.0
 its hatch strokes 1.7 mm further)."""
 
 
-def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY]]:
+def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY], Any]:
     """What a ground symbol at ``c`` may meet, whichever way it turns: the links, fixed links and curves drawn
     as links (a cam's profile) and the angle marks' sectors
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
@@ -174,16 +175,41 @@ def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY]]:
     if pies is not None:
         pies = pies[shapely.dwithin(pies, spot, GROUND_REACH)]
     pts = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
-    return links, pies, pts
+    dims = np.array([shapely.LineString(q) for q in ctx.dims], dtype=object) if ctx.dims else None
+    if dims is not None:
+        dims = dims[shapely.dwithin(dims, spot, GROUND_REACH)]
+    return links, pies, pts, dims
 
 
-def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY]], gaps: tuple[float, float] | None = None) -> float:
+def dimension_lines(values: list[Any], view: Any) -> tuple[tuple[XY, XY], ...]:
+    """The paper segments of the dimensions among ``values``: each dimension line (the measured points shifted by
+    its offset) and, when it stands off them, its two extension lines. A ground symbol keeps off them: 200-09's
+    and 200-19's O hung its hatch across the offset e's dimension line, 4 mm below O (issue 11, crowded knots).
+
+    >>> from geomcon.render.view import View
+    >>> dimension_lines([Dimension(Point(0, 0), Point(10, 0), "e", 10.0, -4.0)], View((-20, -20, 20, 20), 1.0, (0, 0)))
+    (((20.0, 24.0), (30.0, 24.0)), ((20.0, 21.0), (20.0, 24.0)), ((30.0, 21.0), (30.0, 24.0)))
+    """
+    out: list[tuple[XY, XY]] = []
+    for m in values:
+        if not isinstance(m, Dimension) or m.a == m.b:
+            continue
+        shift = (m.b - m.a).unit().perp() * m.offset
+        pa, pb, qa, qb = view.p(m.a), view.p(m.b), view.p(m.a + shift), view.p(m.b + shift)
+        out.append((qa, qb))
+        if view.length(abs(m.offset)) > 1.0:              # drawn from 1 mm off the measured point
+            n = _unit(qa[0] - pa[0], qa[1] - pa[1])
+            out += [(_add(pa, n, 1.0), qa), (_add(pb, n, 1.0), qb)]
+    return tuple(out)
+
+
+def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY], Any], gaps: tuple[float, float] | None = None) -> float:
     """How much a ground symbol at paper point ``c`` meets, away from the hinge it holds: the length of it
     inside angle marks' sectors, plus 10 mm for each link it crosses (or comes within ``gaps[0]`` of, for a link not
     at its hinge) and for each
     other point of the figure it comes within :data:`POINT_GAP` (``gaps[1]``) of (0 when clear); ``near`` from
     :func:`_near`."""
-    links, pies, pts = near
+    links, pies, pts, dims = near
     hinge = shapely.Point(c).buffer(1.7, 8)
     geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
     hit = 0.0
@@ -196,7 +222,14 @@ def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY]], gaps: tuple
         hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(pts), POINT_GAP if gaps is None else gaps[1]))
     if pies is not None and len(pies):
         hit += float(shapely.length(shapely.intersection(geo, pies)).sum())
+    if dims is not None and len(dims):
+        hit += 10.0 * int(shapely.dwithin(geo, dims, DIM_GAP).sum())
     return hit
+
+
+DIM_GAP = 0.5
+"""Least paper mm between a ground symbol and a dimension's line or extension line: touching, its hatch reads as
+part of the dimension (200-09's O, turned off e's dimension line, touched e's extension line with its base's end)."""
 
 
 def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
@@ -282,7 +315,26 @@ def _block_size(c: XY, u: XY, ctx: Context) -> tuple[float, float]:
             if mine.distance(theirs) >= BLOCK_GAP or i == len(steps) - 1:
                 a, b = min(a, sa), min(b, sb)
                 break
+    others = [q for q in map(ctx.view.p, ctx.points) if SAME_SPOT < math.hypot(q[0] - c[0], q[1] - c[1]) <= 2 * (a + b)]
+    if others:
+        spots = shapely.MultiPoint(others)
+        lengths = [sa for sa, _ in steps[:6] if sa <= a]            # its width stays: it runs on its guide
+        for i, sa in enumerate(lengths):
+            if shapely.Polygon(_block(c, u, sa, b)).distance(spots) >= PIN_CLEAR or i == len(lengths) - 1:
+                a = sa
+                break
     return a, b
+
+
+SAME_SPOT = 1e-3
+"""Paper mm within which a point is the block's own joint (a pin drawn at the block's centre)."""
+
+PIN_CLEAR = 1.6
+"""Least paper mm between a slider block and the centre of another point of the figure: a pin's 1.25 mm radius
+and a gap. A block is 8 mm long at any scale, and at 1:5 the points a design by K finds beside C1 lie closer:
+004-02's B2 pin and E dot sat on C1's block, 001-06b's C3 on its edge (issue 11, crowded knots); the block
+shortens as for a neighbouring block (:func:`_block_size`), down to half its length; its width stays, so that it
+still runs on its guide's hatched line."""
 
 
 def draw_guide(g: Guide, style: Style, ctx: Context) -> Drawn:
