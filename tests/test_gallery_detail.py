@@ -5,7 +5,8 @@ detail view of the mechanism at the smallest standard scale that draws every lin
 or a diagram's ordinate drawn like one is an annotation, not a link (:func:`geomcon.render.detail._is_link`).
 Where no detail view is drawn although a link is short, the test shows why: the sheet's free room, clear of the
 figure, the results, title block, scale bar and captions, holds no box of the detail's size (000-03, 001-10,
-001-11, 001-12, 200-07 on A4 landscape)."""
+001-11, 200-07 on A4 landscape). Two hinges of the mechanism drawn closer than 6 mm (a knot: 001-19's A and D′,
+001-12's A, B1, B2) are shown apart in a detail view too: the mechanism's, or a window about the knot."""
 from __future__ import annotations
 
 import re
@@ -53,6 +54,34 @@ def _shortest(pid: str) -> tuple[float, Scale] | None:
     return (min(lengths) / view.mu, scale) if lengths else None
 
 
+@lru_cache(maxsize=None)
+def _knot(pid: str) -> tuple[float, Scale] | None:
+    """The distance on paper (mm) of the two hinges of sheet 1's mechanism drawn closest but closer than
+    :data:`~geomcon.render.detail.MIN_KNOT`, and the sheet's scale; None without such a knot."""
+    from geomcon.render.detail import knot
+    sol, page, sc, info, warnings, sl, scale, view, keep = _sheet1(pid)
+    steps, _ = shown_steps(sc, None, keep)
+    values = sc.evaluate([s.key for _, s in steps])
+    keys, _, _ = mechanism_steps(steps, values)
+    found = knot(steps, values, keys, view)
+    return (found[0], scale) if found else None
+
+
+@pytest.mark.parametrize("pid", PROBLEMS)
+def test_every_knot_of_hinges_is_shown_apart_in_a_detail_view(pid):
+    # issue 11: 001-19's A and D′ 5.4 mm apart at 1:5 (A's ground drawn shrunk between them), 001-12's A, B1 and
+    # B2 3 mm apart at 1:20: a window about the knot, at the scale that sets them 6 mm apart (detail.knot_detail)
+    from geomcon.render.detail import MIN_KNOT
+    svg_path = GALLERY / f"{pid}.svg"
+    got = _knot(pid) if svg_path.exists() else None
+    if got is None:
+        return
+    d, scale = got
+    detail = _detail_scale(svg_path.read_text(encoding="utf-8"))     # the mechanism's, or the knot's window
+    assert detail is not None, (pid, round(d, 2))
+    assert d * detail.factor / scale.factor >= MIN_KNOT - 1e-9, (pid, str(detail))
+
+
 def _detail_scale(svg: str) -> Scale | None:
     m = re.search(r'class="detail-head"[^>]*>(?:<tspan>)?[^<]*?(\d+(?:\.\d+)?:\d+(?:\.\d+)?)', svg)
     return Scale.parse(m.group(1)) if m else None
@@ -69,7 +98,8 @@ def test_every_link_is_ten_mm_on_paper_or_shown_in_a_detail_view(pid):
     shortest, scale = got
     detail = _detail_scale(svg_path.read_text(encoding="utf-8"))
     if shortest >= MIN_LINK - 1e-9:
-        assert detail is None, (pid, shortest)            # no detail where the drawing is readable already
+        if _knot(pid) is None:
+            assert detail is None, (pid, shortest)        # no detail where the drawing is readable already
         return
     if detail is None:
         sizes = _detail_sizes_without_room(pid)

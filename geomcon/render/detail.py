@@ -1,5 +1,6 @@
 """A detail view of the mechanism at a larger standard scale, when the sheet's scale draws a link shorter than
-:data:`MIN_LINK` (issue 11, review item A2).
+:data:`MIN_LINK` (issue 11, review item A2), or two of its hinges closer than :data:`MIN_KNOT` (a knot: then, where
+the whole mechanism finds no room at that scale, a window about the knot, :func:`knot_detail`).
 
 The scale of sheet 1 is the largest that fits everything drawn, and a design by K draws the θ-circle through
 C1 and C2 and its construction points P, P′ — at θ = 9.5° (001-10c) a circle ten times the mechanism's size, so
@@ -22,12 +23,13 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Sequence
 
-from ..geometry.primitives import Point, Segment
+from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
 from ..paper import STANDARD, Scale
 from ..scene import Role, Scene, Step
-from ..scene.marks import Ground, Guide, Slider
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, Slider
 from .figure import Figure, build_figure, content_box, shown_steps
-from .style import resolve_style
+from .labels import text_width
+from .style import INFO_SIZE, resolve_style
 from .view import FIG_MARGIN, Box, grow
 
 MIN_LINK = 10.0
@@ -114,8 +116,10 @@ def detail_scale(shortest_paper: float, scale: Scale) -> Scale | None:
 def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float, float], tuple | None],
                   upto: int | None = None) -> tuple[Figure, Scale, Box] | None:
     """The detail view of ``fig``'s mechanism: its figure (drawn at the detail scale, placed in the box that
-    ``free(w, h)`` finds for it), the scale and the box on paper (caption included); None when every link is
-    at least :data:`MIN_LINK` on paper already, or when no free box holds the detail."""
+    ``free(w, h)`` finds for it), the scale and the box on paper (caption included); where the whole mechanism
+    needs none or finds no room, the window about its knot (:func:`knot_detail`); None when every link is at
+    least :data:`MIN_LINK` and every two hinges :data:`MIN_KNOT` apart on paper already, or when no free box
+    holds the detail."""
     values = fig.values
     steps = [(n, s) for n, s in shown_steps(scene, upto)[0] if s.key in values]     # those the figure draws
     keys, guides, lengths = mechanism_steps(steps, values)
@@ -123,19 +127,130 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
         return None
     shortest = min(lengths) / fig.view.mu
     big = detail_scale(shortest, scale)
-    if big is None:
+    found = knot(steps, values, keys, fig.view)
+    apart = None if found is None else detail_scale(found[0] * MIN_LINK / MIN_KNOT, scale)
+    if apart is not None and (big is None or apart.factor > big.factor):
+        big = apart                                   # the knot's hinges MIN_KNOT apart too
+    if big is not None:
+        mu = big.real / big.paper
+        for drawn in ((keys | guides, keys) if guides else (keys,)):     # the sliders' guides too, when they fit
+            kept = [(n, s) for n, s in steps if s.key in drawn]
+            box = grow(content_box(scene, kept, values), FIG_MARGIN * mu)
+            got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
+            if got is not None:
+                return got
+    return None if found is None or big is None else knot_detail(scene, fig, steps, found, scale, big, free, upto)
+
+
+def _placed(scene: Scene, upto: int | None, box: Box, mu: float, big: Scale,
+            free: Callable[[float, float], tuple | None], keep: Callable[[Step], bool]
+            ) -> tuple[Figure, Scale, Box] | None:
+    """The detail figure of model ``box`` at ``mu`` in the free box ``free`` finds for it (caption above), or None."""
+    w, h = (box[2] - box[0]) / mu, (box[3] - box[1]) / mu
+    spot = free(w, h + CAPTION_H)
+    if spot is None:
         return None
+    x, y = spot[0], spot[1]
+    detail = build_figure(scene, upto, box, (x, y + CAPTION_H), mu=mu, keep=keep)
+    return detail, big, (x, y, x + w, y + h + CAPTION_H)
+
+
+MIN_KNOT = 6.0
+"""Paper mm two joints of the mechanism should lie apart: closer, their pins (Ø 2.5 mm), the grounds and blocks at
+them and their labels make a knot a reader cannot untie (001-19's A and D′ 5.4 mm apart at 1:5, A's ground drawn
+shrunk between them; 001-12's A, B1 and B2 3 mm apart at 1:20)."""
+
+KNOT_REACH = 2.0
+"""The window of a knot's detail holds the points within this many :data:`MIN_KNOT` (on the sheet) of its two
+joints (001-19: C, 10 mm below A, with A and D′)."""
+
+
+def knot(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[str], view: Any
+         ) -> tuple[float, tuple[Point, Point]] | None:
+    """The two joints of the mechanism (points among the steps ``keys`` drawn as a hinge's hollow circle: not a
+    dot, not a grey candidate) drawn closest but apart on paper, as their distance on paper and the two points;
+    None when every two are :data:`MIN_KNOT` apart or more (000-04's A0 beside its arm's pitch points, drawn as
+    dots, is no knot of hinges).
+
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> from geomcon.render.view import View
+    >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+    >>> steps, _ = shown_steps(sc, None)
+    >>> values = sc.evaluate([s.key for _, s in steps])
+    >>> keys, _, _ = mechanism_steps(steps, values)
+    >>> knot(steps, values, keys, View((-100, -100, 100, 100), 1.0, (0, 0))) is None
+    True
+    >>> d, at = knot(steps, values, keys, View((-100, -100, 100, 100), 20.0, (0, 0)))
+    >>> d < MIN_KNOT
+    True
+    """
+    pts = sorted({(p.x, p.y) for _, s in steps if s.key in keys and _pin(s) for p in _items(values[s.key])
+                  if isinstance(p, Point)})
+    best = None
+    for i, a in enumerate(pts):
+        for b in pts[i + 1:]:
+            d = math.dist(a, b) / view.mu
+            if 1e-3 < d < MIN_KNOT and (best is None or d < best[0]):
+                best = (d, (Point(*a), Point(*b)))
+    return best
+
+
+def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found: tuple[float, tuple[Point, Point]],
+                scale: Scale, big: Scale, free: Callable[[float, float], tuple | None], upto: int | None = None
+                ) -> tuple[Figure, Scale, Box] | None:
+    """A window about the knot of the mechanism (:func:`knot`), drawn at the smallest standard scale that sets its
+    joints :data:`MIN_KNOT` apart (and its links :data:`MIN_LINK` long, ``big``, when that is larger), with every
+    point, line, ground, slider and angle mark there — the textbook's 局部放大图 of a crowded spot, where the
+    mechanism as a whole finds no room at that scale (``found``: :func:`knot`'s answer; ``big``: the scale, which
+    :func:`detail_figure` chose for both). None when no free box holds it."""
+    values = fig.values
+    _, ends = found
+    reach = KNOT_REACH * MIN_KNOT * fig.view.mu
+    near = [p for _, s in steps for p in _items(values[s.key])
+            if isinstance(p, Point) and min(math.dist((p.x, p.y), (q.x, q.y)) for q in ends) <= reach]
+    xs, ys = [p.x for p in near], [p.y for p in near]
     mu = big.real / big.paper
-    for drawn in ((keys | guides, keys) if guides else (keys,)):     # the sliders' guides too, when they fit
-        kept = [(n, s) for n, s in steps if s.key in drawn]
-        box = grow(content_box(scene, kept, values), FIG_MARGIN * mu)
-        w, h = (box[2] - box[0]) / mu, (box[3] - box[1]) / mu
-        spot = free(w, h + CAPTION_H)
-        if spot is not None:
-            x, y = spot[0], spot[1]
-            detail = build_figure(scene, upto, box, (x, y + CAPTION_H), mu=mu, keep=lambda s: s.key in drawn)
-            return detail, big, (x, y, x + w, y + h + CAPTION_H)
-    return None
+    x0, y0, x1, y1 = grow((min(xs), min(ys), max(xs), max(ys)), FIG_MARGIN * mu)
+    wide = (text_width(f"Detail 局部放大  {big}   μl = {mu:g} mm/mm", INFO_SIZE) + 3.0) * mu   # its caption
+    if x1 - x0 < wide:
+        x0, x1 = (x0 + x1 - wide) / 2, (x0 + x1 + wide) / 2
+    box = (x0, y0, x1, y1)
+
+    def inside(v: Any) -> bool:
+        pts = [p for x in _items(v) for p in _anchors(x)]
+        return bool(pts) and all(box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3] for p in pts)
+
+    def keep(s: Step) -> bool:
+        v = values.get(s.key)
+        return v is not None and (all(isinstance(x, _CLIPPED) for x in _items(v)) or inside(v))
+
+    return _placed(scene, upto, box, mu, big, free, keep)
 
 
-__all__ = ["CAPTION_H", "MIN_LINK", "detail_figure", "detail_scale", "mechanism_steps"]
+def _pin(step: Step) -> bool:
+    """Whether ``step`` draws its point as a hinge: a hollow circle in ink (a candidate's is grey)."""
+    style = resolve_style(step.style, step.role, "point")
+    return style.marker == "hollow" and style.name != "candidate"
+
+
+_CLIPPED = (Segment, Line, Ray, Circle, Arc)
+"""What a detail's view clips to its box (a link, a construction line, a compass arc): drawn whatever its ends."""
+
+
+def _anchors(x: Any) -> list[Point]:
+    """Where a drawn value stands: a point, a symbol's or mark's point, a dimension's or guide's ends; [] for a
+    value the window does not draw (a number, a curve of many points)."""
+    if isinstance(x, Point):
+        return [x]
+    if isinstance(x, (Ground, Slider)):
+        return [x.at]
+    if isinstance(x, AngleMark):                  # an arc of a given radius (000-04's ψ0 about A0) kept whole
+        r = x.radius or 0.0
+        return [x.vertex + Point(dx * r, dy * r) for dx, dy in ((0, 0), (-1, -1), (1, 1))]
+    if isinstance(x, (Guide, Dimension)):
+        return [x.a, x.b]
+    return []
+
+
+__all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "detail_figure", "detail_scale", "knot", "knot_detail",
+           "mechanism_steps"]
