@@ -30,7 +30,7 @@ from ..scene.marks import AngleMark, Dimension, Ground, Guide, Slider
 from .figure import Figure, build_figure, content_box, shown_steps
 from .labels import text_width
 from .style import INFO_SIZE, resolve_style
-from .view import FIG_MARGIN, Box, grow
+from .view import FIG_MARGIN, Box, clip_interval, grow
 
 MIN_LINK = 10.0
 """The shortest link a drawing should show on paper (mm): shorter, a joint's circle (Ø 2.4 mm), its label and
@@ -222,7 +222,12 @@ def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found:
 
     def keep(s: Step) -> bool:
         v = values.get(s.key)
-        return v is not None and (all(isinstance(x, _CLIPPED) for x in _items(v)) or inside(v))
+        if v is None:
+            return False
+        xs = _items(v)
+        if all(isinstance(x, _CLIPPED) for x in xs):
+            return any(_meets(x, box) for x in xs)
+        return inside(v)
 
     return _placed(scene, upto, box, mu, big, free, keep)
 
@@ -235,6 +240,32 @@ def _pin(step: Step) -> bool:
 
 _CLIPPED = (Segment, Line, Ray, Circle, Arc)
 """What a detail's view clips to its box (a link, a construction line, a compass arc): drawn whatever its ends."""
+
+
+def _meets(x: Any, box: Box) -> bool:
+    """Whether a line, segment, ray, circle or arc ``x`` (model) passes through ``box`` (an arc as its circle): the
+    window draws only those (the others, clipped away, would cost a figure's placement for nothing).
+
+    >>> box = (0.0, 0.0, 10.0, 10.0)
+    >>> _meets(Segment(Point(-5, 5), Point(-1, 5)), box), _meets(Line(Point(-5, 5), Point(1, 0)), box)
+    (False, True)
+    >>> _meets(Circle(Point(5, 5), 20.0), box), _meets(Circle(Point(5, 5), 6.0), box)
+    (False, True)
+    """
+    if isinstance(x, (Circle, Arc)):
+        cx, cy = x.center.x, x.center.y
+        near = math.hypot(cx - min(max(cx, box[0]), box[2]), cy - min(max(cy, box[1]), box[3]))
+        far = max(math.hypot(cx - px, cy - py) for px in (box[0], box[2]) for py in (box[1], box[3]))
+        return near <= x.r <= far
+    if isinstance(x, Segment):
+        p, d, lo, hi = x.a, x.b - x.a, 0.0, 1.0
+    elif isinstance(x, Ray):
+        p, d, lo, hi = x.origin, x.direction, 0.0, math.inf
+    else:
+        p, d, lo, hi = x.point, x.direction, -math.inf, math.inf
+    if d.x == 0.0 and d.y == 0.0:
+        return box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3]
+    return clip_interval((p.x, p.y), (d.x, d.y), box, lo, hi) is not None
 
 
 def _anchors(x: Any) -> list[Point]:

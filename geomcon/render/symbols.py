@@ -16,7 +16,7 @@ Examples
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 import shapely
@@ -50,9 +50,11 @@ def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     best = None
     for i, turn in enumerate(GROUND_TURNS):
         angle = g.angle + turn
+        room = _angular_room((math.cos(angle), -math.sin(angle)), away)
+        if i >= 8 and room < GROUND_ROOM - 1e-9:     # a 15° turn is taken only when clear: not measured
+            continue
         out = _ground_at(c, angle, style)
         hit = _collision(c, out, near)
-        room = _angular_room((math.cos(angle), -math.sin(angle)), away)
         if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
             return out
         if i >= 8:                                   # a 15° turn is taken only when clear
@@ -84,8 +86,7 @@ width, 0.35 mm, half a stroke and a 0.3 mm gap) and a point of the figure (a pin
 a gap): shrunk, it stands in a tight place and must read as apart from what is near."""
 
 
-def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: tuple[Any, Any, list[XY], Any]
-                    ) -> Drawn | None:
+def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: Near) -> Drawn | None:
     """The largest shrunk ground symbol (:data:`COMPACT_SIZES`) at paper point ``c`` whose turn
     (:data:`COMPACT_TURNS`) keeps it :data:`COMPACT_GAP` clear of every link and point, out of every angle
     mark's sector and :data:`COMPACT_ROOM` off the links at its hinge; None when none is.
@@ -162,9 +163,24 @@ GROUND_REACH = 9.0
 its hatch strokes 1.7 mm further)."""
 
 
-def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY], Any]:
+class Near(NamedTuple):
+    """What a ground symbol at one hinge may meet (:func:`_near`), with what every turn tried measures alike."""
+
+    links: Any
+    pies: Any
+    pts: list[XY]
+    dims: Any
+    hinge: Any
+    """The disc about the hinge left out of the symbol (its legs meet there)."""
+    apart: Any
+    """Which of ``links`` do not leave the hinge (kept clear of by a shrunk symbol)."""
+    spots: Any
+    """``pts`` as one shapely MultiPoint (None without points)."""
+
+
+def _near(c: XY, ctx: Context) -> Near:
     """What a ground symbol at ``c`` may meet, whichever way it turns: the links, fixed links and curves drawn
-    as links (a cam's profile) and the angle marks' sectors
+    as links (a cam's profile), the angle marks' sectors and the dimensions' lines
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
     spot = shapely.Point(c)
     lines = ctx.links + ctx.frames + ctx.curves    # a hatch across the frame AD or a cam's profile reads as wrong
@@ -178,7 +194,8 @@ def _near(c: XY, ctx: Context) -> tuple[Any, Any, list[XY], Any]:
     dims = np.array([shapely.LineString(q) for q in ctx.dims], dtype=object) if ctx.dims else None
     if dims is not None:
         dims = dims[shapely.dwithin(dims, spot, GROUND_REACH)]
-    return links, pies, pts, dims
+    apart = ~shapely.dwithin(links, spot, 0.5) if links is not None and len(links) else None
+    return Near(links, pies, pts, dims, spot.buffer(1.7, 8), apart, shapely.MultiPoint(pts) if pts else None)
 
 
 def dimension_lines(values: list[Any], view: Any) -> tuple[tuple[XY, XY], ...]:
@@ -203,23 +220,22 @@ def dimension_lines(values: list[Any], view: Any) -> tuple[tuple[XY, XY], ...]:
     return tuple(out)
 
 
-def _collision(c: XY, drawn: Drawn, near: tuple[Any, Any, list[XY], Any], gaps: tuple[float, float] | None = None) -> float:
+def _collision(c: XY, drawn: Drawn, near: Near, gaps: tuple[float, float] | None = None) -> float:
     """How much a ground symbol at paper point ``c`` meets, away from the hinge it holds: the length of it
     inside angle marks' sectors, plus 10 mm for each link it crosses (or comes within ``gaps[0]`` of, for a link not
     at its hinge) and for each
     other point of the figure it comes within :data:`POINT_GAP` (``gaps[1]``) of (0 when clear); ``near`` from
     :func:`_near`."""
-    links, pies, pts, dims = near
-    hinge = shapely.Point(c).buffer(1.7, 8)
-    geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge)
+    links, pies, pts, dims = near.links, near.pies, near.pts, near.dims
+    geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(near.hinge)
     hit = 0.0
     if links is not None and len(links):
         touch = shapely.intersects(geo, links)
         if gaps is not None:                       # kept apart from links not at its hinge
-            touch |= shapely.dwithin(geo, links, gaps[0]) & ~shapely.dwithin(links, shapely.Point(c), 0.5)
+            touch |= shapely.dwithin(geo, links, gaps[0]) & near.apart
         hit += 10.0 * int(touch.sum())
     if pts:
-        hit += 10.0 * int(shapely.dwithin(geo, shapely.MultiPoint(pts), POINT_GAP if gaps is None else gaps[1]))
+        hit += 10.0 * int(shapely.dwithin(geo, near.spots, POINT_GAP if gaps is None else gaps[1]))
     if pies is not None and len(pies):
         hit += float(shapely.length(shapely.intersection(geo, pies)).sum())
     if dims is not None and len(dims):
