@@ -4,12 +4,17 @@ another point, and no ground symbol touches a dimension's ink (:mod:`tests.knots
 
 The figures in :data:`KNOWN` are still crowded; their count of knots may only shrink. Why they stay:
 
-- 000-04…000-08, 200-12, 200-13, 200-15, 100-01, 100-03: a construction point (a division's pitch point, a shown
-  branch) on or beside a hinge that is another point of the construction; two things drawn where the geometry
-  puts them, to be labelled jointly (label placement, :mod:`geomcon.render.coincident`).
-- 001-06b, 004-02 (both scales), 004-03, 001-10b, 001-10c, 001-21, 200-16: a joined label ("E, B2", "M, C4",
-  "B1*, B(75°)") found no room and fell back to two labels, or E lies within a slider block's width of C1 (the
-  block shortens, :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to run on its guide).
+- 000-04…000-08, 200-12, 200-13, 200-15, 100-01, 100-03, 001-10b: a construction point drawn on or beside a hinge
+  (an arm's pitch point by B0, a pressure angle's point on a division, a shown branch by C2, 001-10b's N 0.3 mm from
+  B2): two things drawn where the geometry puts them; they share one label where it finds room
+  (:mod:`geomcon.render.coincident`), the markers stay.
+- 001-06b, 004-02: E lies 1.35 mm from B2 and within a block's width of C1 at 1:5 (the block shortens,
+  :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to run on its guide); the mechanism's detail view
+  at 1:2.5 shows C1 and B2 apart, without the construction's E.
+- 001-10c, 004-03: C1 (C2) and B2 2 mm apart at 1:20; the mechanism's detail view at 1:5 sets them 8 mm apart.
+- 200-16: B1* and B(75°), two follower positions 2.5 mm apart on the cam. 001-21: the label N of the point drawn
+  on C1 lies nearer M; 004-02 at 1:5: "M" and "C4" found no clear place as one label and print apart (text
+  placement's choices, hplace11f's).
 - 000-02: the ram's blocks sit on D1 and D2, the guide bar's ends (drawn so by the recipe).
 """
 from __future__ import annotations
