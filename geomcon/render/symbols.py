@@ -320,7 +320,16 @@ def _block(c: XY, u: XY, a: float, b: float) -> tuple[XY, ...]:
 def _block_size(c: XY, u: XY, ctx: Context) -> tuple[float, float]:
     """Half the length and half the width of the block at ``c`` along ``u``: those of :data:`SLIDER`, or less
     where another block of the figure would come nearer than :data:`BLOCK_GAP`. Each pair of blocks shrinks
-    alike (first the length, to half of it, then the width, to 60 %), so both ends of a pair agree."""
+    alike (first the length, to half of it, then the width, to 60 %), so both ends of a pair agree. A block also
+    shortens (not narrows) until it keeps :data:`PIN_CLEAR` from every other point of the figure.
+
+    >>> from geomcon.render.view import View
+    >>> ctx = Context(View((-20.0, -20.0, 20.0, 20.0), 1.0, (0.0, 0.0)), points=(Point(0, 0), Point(4.5, 1.0)))
+    >>> _block_size((20.0, 20.0), (1.0, 0.0), ctx)           # a pin 4.5 mm along: 2.8 mm half-length, not 4
+    (2.8, 2.5)
+    >>> _block_size((20.0, 20.0), (1.0, 0.0), Context(ctx.view, points=(Point(0, 0),)))
+    (4.0, 2.5)
+    """
     a, b = SLIDER[0] / 2, SLIDER[1] / 2
     steps = [(a * f, b) for f in (1.0, 0.9, 0.8, 0.7, 0.6, 0.5)] + [(a / 2, b * f) for f in (0.9, 0.8, 0.7, 0.6)]
     for q, w in ctx.sliders:
