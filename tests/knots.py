@@ -9,7 +9,8 @@ Two rules, each over one figure of the sheet (the main figure, or its detail vie
 - no pin (a hinge's hollow circle) comes within :data:`PIN_GAP` of another point's marker, and no ground symbol or
   slider block overlaps one (a symbol meets the points at its own hinge only; two points drawn within 1e-3 mm of
   each other are one spot);
-- no ground symbol touches a dimension's ink away from its hinge.
+- no ground symbol touches a dimension's ink away from its hinge;
+- no point's label covers a slider block.
 
 Examples
 --------
@@ -40,6 +41,10 @@ TEXT = re.compile(r'<text class="label([^"]*)"([^>]*)>(.*?)</text>', re.S)
 PATH = re.compile(r'<path class="ink"[^>]* d="([^"]+)"')
 JOINS = (", ", " = ")
 SAME_SPOT = 1e-3
+COVER = 1.0
+"""Paper mm² of a slider block a point's label box may cover (001-05c's "T1 = B1" touches its block's corner with
+0.8 mm²): more, the label reads as written on the block (004-02's C1: 1.3 mm² at 1:5, 8.0 mm² in its detail view;
+004-01's C1: 3.4 mm²)."""
 PIN_GAP = 0.3
 """Least paper mm between a hinge's circle and another point's marker: less, the two read as one blot."""
 DIM_TOUCH = 0.2
@@ -171,6 +176,10 @@ def knots(svg: str) -> list[Knot]:
                     continue
                 if shape.distance(shapely.Point(q.at)) < q.r:
                     out.append(Knot(fig, f"{what} meets pin {q.key}"))
+            if what.startswith("slider"):
+                for p, name, box in labels.get(fig, []):
+                    if shapely.box(*box).intersection(shape).area > COVER:
+                        out.append(Knot(fig, f"label {name} covers {what}"))
             if what.startswith("ground"):
                 apart = shape.difference(shapely.Point(paths[0][1]).buffer(HINGE, 8))   # a dimension from its hinge
                 for key, line in dims.get(fig, []):
