@@ -257,7 +257,7 @@ def cmd_recipes(args: argparse.Namespace) -> int:
 
 
 def cmd_gallery(args: argparse.Namespace) -> int:
-    from .fileio import write_all
+    from .fileio import changed, write_all
     from .gallery import build_gallery, problem_files, stale_files
 
     problems, out = Path(args.problems), Path(args.out)
@@ -275,10 +275,12 @@ def cmd_gallery(args: argparse.Namespace) -> int:
         files = build_gallery(problems, lang=args.lang, jobs=args.jobs)
     except GeomconError as exc:
         return _fail(_current_file(exc, problems), str(exc))
-    write_all({out / name: text for name, text in files.items()})
+    new = changed({out / name: text for name, text in files.items()})      # a file already as built stays as it is
+    write_all(new)
     for stale in sorted(p for p in out.rglob("*") if p.is_file() and p.relative_to(out).as_posix() not in files):
         stale.unlink()
-    print(f"wrote {len(files)} files to {out}/ from {len(problem_files(problems))} problems")
+    same = f" ({len(files) - len(new)} unchanged)" if len(new) < len(files) else ""
+    print(f"wrote {len(new)} file{'' if len(new) == 1 else 's'}{same} to {out}/ from {len(problem_files(problems))} problems")
     return 0
 
 

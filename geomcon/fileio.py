@@ -69,6 +69,34 @@ def check_targets(files: Mapping[str, str | Path], dirs: Mapping[str, str | Path
             raise ProblemError(f"{opt}: the output's folder is not a directory")
 
 
+def changed(files: Mapping[Path | str, str]) -> dict[Path | str, str]:
+    """The entries of ``files`` (path → text) whose target is not already a regular file holding exactly the
+    text's UTF-8 bytes: what :func:`write_all` must write for the folder to hold ``files``.
+
+    ``geomcon gallery`` writes only these: reading and comparing the ~470 files of the gallery takes about a
+    sixth of the time of writing them all again (16 MB through temporaries and renames), and a file that did not
+    change keeps its time stamp.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> d = pathlib.Path(tempfile.mkdtemp())
+    >>> write_all({d / "a.txt": "alpha", d / "b.txt": "beta"})
+    >>> sorted(p.name for p in changed({d / "a.txt": "alpha", d / "b.txt": "beta!", d / "c.txt": ""}))
+    ['b.txt', 'c.txt']
+    """
+    out: dict[Path | str, str] = {}
+    for path, text in files.items():
+        try:
+            with open(path, "rb") as fh:
+                same = fh.read() == text.encode("utf-8")
+        except OSError:              # missing, a directory, unreadable: write_all writes it or says why not
+            same = False
+        if not same:
+            out[path] = text
+    return out
+
+
 def write_all(files: Mapping[Path | str, str]) -> None:
     """Write every ``path → text``: all temporaries first, then the renames (UTF-8, ``\\n`` newlines).
 

@@ -85,3 +85,17 @@ def test_the_replayed_lane_gives_what_single_solves_give(recipe):
                 assert got is None and err == str(exc) and not ok and words == []
                 continue
             assert (got, err, ok, words) == (want, None, want_ok, want_words)
+
+
+@pytest.mark.parametrize("checks", [True, False])
+def test_a_batch_solved_in_chunks_gives_what_one_chunk_gives(monkeypatch, checks):
+    """The variants are solved :data:`~geomcon.batch.CHUNK` at a time (a whole large batch at once cost more per
+    variant the larger it was); across chunk boundaries every answer, error, verdict and warning stays in place."""
+    import geomcon.batch as batch
+    rows = [ROWS[i % len(ROWS)] | {"AB": ROWS[i % len(ROWS)].get("AB", 50) + (i % 7) * 0.5} for i in range(37)]
+    monkeypatch.setattr(batch, "CHUNK", 8)
+    chunked = solve_batch("crank_rocker.extremes", rows, checks=checks)
+    monkeypatch.setattr(batch, "CHUNK", 1000)
+    whole = solve_batch("crank_rocker.extremes", rows, checks=checks)
+    assert chunked == whole
+    assert sum(e is not None for e in whole.errors) >= 7 and sum(whole.ok) >= 14

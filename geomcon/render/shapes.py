@@ -212,6 +212,8 @@ def stacked_runs(runs: tuple[tuple[str, bool], ...], size: float, least: float =
     >>> stacked_runs((("C", False), ("1", True)), 3.5)
     [('C', False, False, 0.0), ('1', True, False, 0.0)]
     """
+    if not any(s and (s[0] in SUPERSCRIPTS or s[-1] in SUPERSCRIPTS) for s, _ in runs):
+        return [(s, sub, False, 0.0) for s, sub in runs]   # nothing to stack (all but ~1 % of a gallery's texts)
     from .labels import text_width
     small = max(size * SUB_SCALE, least) / size            # what text_width's 0.72 is here
 
@@ -334,8 +336,27 @@ def disc_polygon(cx: float, cy: float, r: float) -> shapely.Geometry:
     return shapely.polygons(ring)
 
 
+_OBSTACLES: dict[int, tuple[Shape, shapely.Geometry]] = {}
+""":func:`obstacle` of the shapes met lately, by ``id`` (each entry holds its shape, so that the id is not
+reused while it is here; shapes are frozen, and so are shapely geometries): a figure's shapes are measured by
+the label placer and again by the free-room search of its sheet."""
+_OBSTACLES_MAX = 8192
+
+
 def obstacle(shape: Shape) -> shapely.Geometry:
-    """The shapely geometry a label must keep clear of: strokes as lines, markers and texts as areas."""
+    """The shapely geometry a label must keep clear of: strokes as lines, markers and texts as areas (the same
+    object for the same shape while it is remembered)."""
+    hit = _OBSTACLES.get(id(shape))
+    if hit is not None and hit[0] is shape:
+        return hit[1]
+    geom = _obstacle(shape)
+    if len(_OBSTACLES) >= _OBSTACLES_MAX:
+        _OBSTACLES.clear()
+    _OBSTACLES[id(shape)] = (shape, geom)
+    return geom
+
+
+def _obstacle(shape: Shape) -> shapely.Geometry:
     if isinstance(shape, Poly):
         pts = list(shape.pts) + ([shape.pts[0]] if shape.closed else [])
         if shape.closed and shape.fill != "none" and len(pts) > 3:
