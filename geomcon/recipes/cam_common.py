@@ -265,7 +265,7 @@ def add_motion_diagram(sc: Scene, program: Program, h: float, origin: Point, wid
            caption=(f"Plot {symbol}(δ) of the motion program", f"按运动规律画出 {symbol}(δ) 曲线"))
     for i, dv in enumerate(divisions, 1):
         sv = program.motion1(h, dv)[0]
-        foot = sc.given(f"sd_div{i}", at(dv, 0.0), label=str(i), style="tick")
+        foot = sc.given(f"sd_div{i}", at(dv, 0.0), label=str(i), style="tick-division")
         if abs(sv) * scale > 1e-9 * width:
             sc.add(f"sd_ord{i}", segment, foot, at(dv, sv), style="construction",
                    caption=("Divide the δ axis as the cam angle and erect the ordinates 1, 2, … (the displacements)",

@@ -33,10 +33,10 @@ from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals
                    draw_compass)
 from .clearance import ENOUGH
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
-from .rows import SEP, Fan, clusters, fans, row_centre
+from .rows import SEP, Fan, clusters, fans, row_centre, thinned
 from .labels import text_width
 from .shapes import ArcP, Pen, Poly, Shape, Text, lean, obstacle, recolour
-from .style import HIGHLIGHT, INK, LAYERS, TRIM_OVERSHOOT, highlighted, resolve_style
+from .style import HIGHLIGHT, INK, LAYERS, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import dimension_lines, draw, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
@@ -452,6 +452,22 @@ def _rows(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> list[
     return list(rows.values())
 
 
+def _thin(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
+    """Leave out the numbers of a crowded row of counting numbers on a line (a style with ``label_thin``: the
+    divisions 1, 2, … of an s–δ diagram's δ axis) but every 2nd, 4th, … (:func:`.rows.thinned`)."""
+    rows: dict[str, list[tuple[int, TextRequest]]] = {}
+    for i, (g, (drawn, _)) in enumerate(zip(groups, pending)):
+        style = next((c[6:] for c in g.classes.split() if c.startswith("style-")), "")
+        if style in STYLES and STYLES[style].label_thin:
+            rows.setdefault(style, []).extend((i, t) for t in drawn.texts if t.optional)
+    for row in rows.values():
+        kept = set(thinned([t.request.anchor for _, t in row], [(t.request.width, t.request.height) for _, t in row],
+                           SEP))
+        for k, (i, t) in enumerate(row):
+            if k not in kept:
+                pending[i][0].texts.remove(t)
+
+
 def _outward(groups: list[StepDrawing], pending: list[tuple[Drawn, bool]]) -> None:
     """Number a row going round a centre (a cam's divisions round O: :func:`.rows.row_centre`) as a textbook
     does, outside the profile: each label is tried along its ray from that centre and up to 50° either side of
@@ -609,6 +625,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
     placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box)
+    _thin(groups, pending)                      # before measuring: it leaves out a crowded axis's numbers
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     _leading(pending)
     tried = _fan_options(groups, pending)

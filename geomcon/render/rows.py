@@ -72,6 +72,25 @@ def clusters(anchors: Sequence[XY], sizes: Sequence[tuple[float, float]], sep: f
     return out
 
 
+def thinned(anchors: Sequence[XY], sizes: Sequence[tuple[float, float]], sep: float) -> list[int]:
+    """The indices of a row of counting numbers on a line to print: in each crowded run (:func:`clusters`), its
+    first and every 2nd after it, or every 4th, 8th, … where every 2nd still would not fit side by side (the
+    numbers left out are counted on from those printed, as on a textbook's crowded axis).
+
+    >>> thinned([(float(x), 0.0) for x in (0, 1, 2, 3, 4, 20, 21)], [(1.5, 2.0)] * 7, 0.4)
+    [0, 2, 4, 5]
+    >>> thinned([(0.5 * x, 0.0) for x in range(6)], [(1.5, 2.0)] * 6, 0.4)
+    [0, 4]
+    """
+    keep = set(range(len(anchors)))
+    for run in clusters(anchors, sizes, sep):
+        step = 2
+        while step < len(run) and clusters([anchors[k] for k in run[::step]], [sizes[k] for k in run[::step]], sep):
+            step *= 2
+        keep -= set(run) - set(run[::step])
+    return sorted(keep)
+
+
 def row_centre(anchors: Sequence[XY]) -> XY | None:
     """The centre of the circle best fitting a row's points (least squares on x² + y² + Dx + Ey + F = 0): a cam's
     centre O, as its divisions go round it; None for fewer than three points, or points that do not go round a
@@ -137,4 +156,4 @@ def fans(anchors: Sequence[XY], sizes: Sequence[tuple[float, float]], marker: fl
     return out
 
 
-__all__ = ["FAN_REACH", "Fan", "OFFSETS", "SEP", "clusters", "fans", "row_centre", "spread"]
+__all__ = ["FAN_REACH", "Fan", "OFFSETS", "SEP", "clusters", "fans", "row_centre", "spread", "thinned"]

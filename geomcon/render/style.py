@@ -90,6 +90,11 @@ class Style:
     label_whole : bool
         A label naming the point twice ("B (P12)": a joint that is also an instant centre) always prints whole:
         its bracketed name is an answer, never dropped for room as a candidate's ("N (E1)" → "N") is.
+    label_thin : bool
+        A row of counting numbers on a line (the divisions 1, 2, … of an s–δ diagram's δ axis): where two
+        neighbours' numbers would not fit side by side, only every 2nd (4th, …) of that crowded run is printed, as a
+        textbook numbers a crowded axis (:func:`~geomcon.render.rows.thinned`), instead of spreading all of them
+        out with leaders.
     """
 
     name: str
@@ -107,6 +112,7 @@ class Style:
     label_optional: bool = False
     trim: bool = False
     label_whole: bool = False
+    label_thin: bool = False
 
 
 STYLES: dict[str, Style] = {s.name: s for s in (
@@ -117,6 +123,8 @@ STYLES: dict[str, Style] = {s.name: s for s in (
     Style("candidate", stroke="#7d8590", marker="hollow", radius=1.0, marker_width=0.3, layer="construction"),
     Style("given", marker="dot", radius=0.75),
     Style("tick", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6, label_optional=True),
+    Style("tick-division", marker="dot", radius=0.45, label_dir=math.pi / 2, label_size=2.6, label_optional=True,
+          label_thin=True),
     Style("division", marker="dot", radius=0.55, label_optional=True),
     Style("row-start", marker="dot", radius=0.45, label_dir=math.pi, label_size=2.6),
     # the points of an instant-centre problem named as centres too ("B (P12)", "P34 (∞)"): the name in brackets
