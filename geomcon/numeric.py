@@ -12,6 +12,22 @@ from __future__ import annotations
 from typing import Callable, Iterable
 
 
+TURN_EPS = 1e-9
+"""Degrees within which an angle of a cycle short of 360° is the cycle's start, 0° (:func:`deg360`)."""
+
+
+def deg360(x: float) -> float:
+    """An angle of a cycle (degrees) as a textbook states it, in [0°, 360°): a cam angle, or an angle measured
+    counter-clockwise from a line; within :data:`TURN_EPS` of 360° it is 0° (the end of a return is the start
+    of the next rise: 001-29 printed δ(α′max) = 360° where the textbook says 0°).
+
+    >>> deg360(-171.561), deg360(360.0), deg360(-1e-17), deg360(359.9999999999), deg360(725.0)
+    (188.439, 0.0, 0.0, 0.0, 5.0)
+    """
+    r = x % 360.0
+    return 0.0 if 360.0 - r < TURN_EPS else r
+
+
 def stationary(f: Callable[[float], float], x: float, radii: Iterable[float]) -> float:
     """The maximum of a smooth ``f`` near ``x``, to the last digits.
 

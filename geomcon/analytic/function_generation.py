@@ -38,6 +38,7 @@ import math
 from typing import Sequence
 
 from ..errors import NotAMechanism
+from ..numeric import deg360
 from .fourbar_drive import (REFUSE_CONDITION, WARN_CONDITION, arc_through, bd_extremes, centre_condition,
                             dead_point_free, on_arc, turns_fully)
 from .linkages import _tri_angle
@@ -239,7 +240,7 @@ def function_generation(AD: float, AB: float, phi: Sequence[float], psi: Sequenc
     rad, (x, y, U, V, W) = _solution(d, a, phi, psi)
     c = math.hypot(U, V)
     b = math.sqrt(max(0.0, a * a + c * c + d * d - 2.0 * a * d * W))
-    beta = math.degrees(math.atan2(V, U))
+    beta = deg360(math.degrees(math.atan2(V, U)))
     ls = sorted((a, b, c, d))
     branches = []
     for f, p in zip(phi, psi):

@@ -33,6 +33,7 @@ import cmath
 import math
 from typing import Sequence
 
+from ..numeric import deg360
 from .fourbar_drive import arc_through, on_arc
 from .function_generation import STEP, solve3
 
@@ -171,7 +172,7 @@ def three_positions(D: XY, psi: Sequence[float], e: float, alpha: float, s: Sequ
     x, y, U, V, W = three_hinge(D, psi, e, alpha, s)
     r = math.hypot(U, V)
     l = math.sqrt(max(0.0, r * r - W))
-    beta = math.degrees(math.atan2(V, U))
+    beta = deg360(math.degrees(math.atan2(V, U)))
 
     def f(Dx, Dy, p1, p2, p3, e_, a_, s1, s2, s3):
         return _three(Dx, Dy, (p1, p2, p3), e_, a_, (s1, s2, s3))

@@ -165,7 +165,8 @@ def _extremes(ps: Sequence[Piece], alpha: Callable, dalpha: Callable, curvature:
         found = [piece_max(lambda d, m=m: alpha(*m(d)), a, b, lambda d, m=m: dalpha(*m(d)))
                  for k, a, b, m in ps if k == kind]
         v, x = best_of(found) if found else (0.0, 0.0)
-        out[f"alpha_max_{part}"], out[f"delta_alpha_max_{part}"] = v, math.degrees(x)
+        d = math.degrees(x) % 360.0                 # [0°, 360°): a return's end is 0°, as the recipes say
+        out[f"alpha_max_{part}"], out[f"delta_alpha_max_{part}"] = v, 0.0 if 360.0 - d < 1e-9 else d
     top = max(piece_max(lambda d, m=m: curvature(*m(d), d), a, b)[0] for _, a, b, m in ps)
     out["rho_min_pitch"] = 1.0 / top if top > 0 else math.inf
     return out

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..errors import NotAMechanism
+from ..numeric import deg360
 import numpy as np
 
 from .base_radius import bisect_root
@@ -44,12 +45,6 @@ FOLLOWERS = ("knife", "roller", "flat")
 ROTATIONS = ("ccw", "cw")
 SAMPLES = 720
 """Grid of cam angles that brackets the critical points of α before they are refined."""
-
-
-def _mod360(x: float) -> float:
-    """``x`` reduced to [0, 360), with values within 1e-9° of 360 taken as 0."""
-    r = x % 360.0
-    return 0.0 if 360.0 - r < 1e-9 else r
 
 
 def check_disc(R: float, OA: float) -> None:
@@ -81,7 +76,7 @@ class _Turning:
 
     def delta_of(self, phi: float) -> float:
         """Cam angle (deg, [0, 360)) turned from the lowest position to the position φ."""
-        return _mod360(self.sense * math.degrees(phi - self.phi_low))
+        return deg360(self.sense * math.degrees(phi - self.phi_low))
 
     def phi_of(self, delta: float) -> float:
         """φ after turning the cam by δ (deg) from the lowest position."""
@@ -242,15 +237,10 @@ class Translating(_Turning):
         p0, p1 = sorted((self.phi_of(d0), self.phi_of(d1)))
         cands = self._critical(p0, p1)
         best = max(cands, key=self.alpha)
-        out = {f"alpha_max_{part}": self.alpha(best), f"delta_alpha_max_{part}": self._delta_in(best, d0, d1)}
+        out = {f"alpha_max_{part}": self.alpha(best), f"delta_alpha_max_{part}": self.delta_of(best)}
         if part == "rise":
             out["alpha_min_rise"] = min(self.alpha(p) for p in cands)
         return out
-
-    def _delta_in(self, phi: float, d0: float, d1: float) -> float:
-        """δ of φ, reported in [d0, d1] (the end of the return is 360°, not 0°)."""
-        d = self.delta_of(phi)
-        return d1 if (d1 == 360.0 and d < 1e-9 and d0 > 0) else d
 
     def offset_correct(self) -> bool:
         """True when this offset gives a smaller largest rise pressure angle than the mirrored one."""

@@ -38,6 +38,7 @@ import math
 import random
 from dataclasses import dataclass
 
+from ..numeric import deg360
 from .case import Generator, ValidCase
 
 XY = tuple[float, float]
@@ -307,7 +308,7 @@ def gen_function_generation(rng: random.Random) -> ValidCase:
     C1 = (k * pos[0][1][0], k * pos[0][1][1])
     bt = t / (k * CD)                                     # rad
     expect = {"C1": (C1, t), "BC": (k * BC, 2 * t), "CD": (k * CD, t),
-              "beta": (beta, math.degrees(bt) + 1e-9 * 180 + (math.degrees(dang) if drafted else 0.0))}
+              "beta": (deg360(beta), math.degrees(bt) + 1e-9 * 180 + (math.degrees(dang) if drafted else 0.0))}
     return ValidCase({"recipe": "four_bar.function_generation", "given": given}, _determined(expect, t, L),
                      _kind(kscale, kspread, "angles rounded to 4 decimals" if drafted else ""), may_refuse=refuse)
 
@@ -387,7 +388,7 @@ def gen_rocker_slider_three(rng: random.Random) -> ValidCase:
     t = _tol(kappa, err, L)
     given = {"D": list(Dw), "psi": psi_w, "e": e, "guide_angle": alpha, "s": s}
     expect = {"F1": (f(Fs[0]), t), "DF": (k * DF, t + err), "EF": (k * EF, 2 * t + err),
-              "beta": (beta, math.degrees(2 * t / (k * DF)) + 1e-7)}
+              "beta": (deg360(beta), math.degrees(2 * t / (k * DF)) + 1e-7)}
     return ValidCase({"recipe": "rocker_slider.three_positions", "given": given}, _determined(expect, t, L),
                      _kind(kscale, kspread, "drafted data rounded to 4 decimals" if drafted else ""), may_refuse=refuse)
 

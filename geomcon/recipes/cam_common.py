@@ -25,6 +25,7 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
+from ..numeric import deg360
 from ..cam.oscillating import ArmMotion, levels, segment_motion, segment_motion1
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, Profile, STRICT_TOLERANCE_REL, TOLERANCE_REL, numpy_is_libm,
                            backward_jumps)
@@ -163,8 +164,8 @@ def extremum_value(e: Extremum) -> float:
 
 
 def extremum_deg(e: Extremum) -> float:
-    """The place of an extremum, in degrees of cam angle."""
-    return e.delta_deg
+    """The place of an extremum, in degrees of cam angle in [0°, 360°) (a return's end is 0°, not 360°)."""
+    return deg360(e.delta_deg)
 
 
 def minus(a: float, b: float) -> float:
@@ -360,6 +361,11 @@ def velocity_segment(B: Point, v: Point, size: float) -> Segment:
 def pick(pair: tuple[float, float], i: int) -> float:
     """One member of a pair."""
     return pair[i]
+
+
+def place_deg(worst: tuple[float, float]) -> float:
+    """The cam angle (deg) of a (value, δ) worst position, in [0°, 360°): a return's end is 0°, not 360°."""
+    return deg360(worst[1])
 
 
 def collect(*values: Any) -> tuple[float, ...]:

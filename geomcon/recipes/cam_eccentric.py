@@ -46,6 +46,7 @@ from ..cam.eccentric import Oscillating, Translating, check_disc
 from ..cam.eccentric_speeds import arm_maxima, arm_speeds, translating_maxima, translating_speeds
 from ..cam.profile import maximise
 from ..errors import GeomconError, NotAMechanism
+from ..numeric import deg360
 from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, circle, circle_circle, line_circle, line_line,
                         point_along,
                         line_through, rotate, segment, thales_circle)
@@ -162,8 +163,7 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
 def turned_against(o: Point, p: Point, q: Point, sense: float) -> float:
     """The cam angle (deg, [0, 360)) from ray o→p to ray o→q measured against the cam's rotation (the
     follower's inverted motion): clockwise for a counter-clockwise cam."""
-    d = math.degrees(-sense * signed_angle(p - o, q - o)) % 360.0
-    return 0.0 if 360.0 - d < 1e-9 else d
+    return deg360(math.degrees(-sense * signed_angle(p - o, q - o)))
 
 
 def guide_pressure(a: Point, b: Point, direction: Point) -> float:
@@ -262,6 +262,12 @@ def first(pair: tuple) -> float:
 def second(pair: tuple) -> float:
     """The δ of a (value, δ) pair."""
     return pair[1]
+
+
+def second_in_turn(pair: tuple) -> float:
+    """The δ of a (value, δ) pair in [0°, 360°): the return's end (δ = 360° of the candidates) is 0°, the start
+    of the next rise, as the textbook states it (001-26, 001-29 cw printed δ(α′max) = 360°)."""
+    return deg360(pair[1])
 
 
 def offset_correct(e: float, sense: float) -> bool:
@@ -451,7 +457,7 @@ def _alpha_extremes(sc: Scene, O: Ref, A: Ref, pitch: Ref, B0: Ref, B1: Ref, ref
     sc.add("alpha_min_rise", first, rmin, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add("alpha_max_return", first, tmax, role=Role.MEASUREMENT, unit="deg",
            caption=("Largest return pressure angle, likewise", "回程最大压力角(同理)"))
-    sc.add("delta_alpha_max_return", second, tmax, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("delta_alpha_max_return", second_in_turn, tmax, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add("alpha_max", max, Ref("alpha_max_rise"), Ref("alpha_max_return"), role=Role.MEASUREMENT, unit="deg",
            visible=False)
     return {n: n for n in ("alpha_max_rise", "delta_alpha_max_rise", "alpha_min_rise", "alpha_max_return",

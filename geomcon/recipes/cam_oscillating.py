@@ -21,6 +21,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from ..numeric import deg360
 from ..cam.oscillating import OscillatingCam, psi0_rad
 from ..cam.profile import rho_min, roller_profile
 from ..errors import NotAMechanism
@@ -31,7 +32,7 @@ from ..analytic.cam_motion import follower_speeds
 from .cam_common import (ARM_SPEED_ANSWERS, OMEGA, PRESSURE_ANSWERS, add_speed_steps, AT, PROGRAM, ROTATION, STRICT, TOL, ArmInversion, add_base_circle,
                          add_cam_centre, add_motion_diagram, add_profile_steps, add_roller_circles, arm_division_angles,
                          arm_at, arm_contacts, arm_pressures, arm_velocity, at_least, collect, column,
-                         extremum_value, laid_off, minus, normal_segment, pick,
+                         extremum_value, laid_off, minus, normal_segment, pick, place_deg,
                          pitch_polyline, pressure_mark, profile_tolerance, program_of, speed_ratio, turned,
                          velocity_segment)
 from .cam_oscillating_flat import advise_flat, analytic_flat, construct_flat, validate_flat
@@ -87,6 +88,7 @@ ROLLER_WARN = 3.0
 
 
 # ---------------------------------------------------------------------------------------------- givens
+
 def cam_of(g: Mapping[str, Any]) -> OscillatingCam:
     """The knife or roller cam described by the givens."""
     return OscillatingCam(g["a"], g["L"], g["r0"], g["h"], program_of(g), g.get("rotation", "ccw"),
@@ -303,7 +305,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     answers = {q: q for q in ("psi_max", "psi0", "rho_min_pitch", "rho_min_actual", "undercut")}
     for part, zh in (("rise", "推程"), ("return", "回程")):
         w = sc.add(f"worst_{part}", worst, cam, part, visible=False)
-        where = sc.add(f"delta_alpha_max_{part}", pick, w, 1, role=Role.MEASUREMENT, unit="deg", visible=False)
+        where = sc.add(f"delta_alpha_max_{part}", place_deg, w, role=Role.MEASUREMENT, unit="deg", visible=False)
         A, _, B = inv.position(f"w_{part}", where, caption=(
             f"The {part}'s worst position (largest α): the arm A0′B and the common normal at B, through the relative "
             "instant centre P of cam and arm on OA0′ (A0′P = a/(1 − εψ′))",
@@ -357,7 +359,8 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
         "rho_min_pitch": float(rho), "rho_min_actual": float(rho - rr), "undercut": bool(rr >= rho),
     }
     for kind in ("rise", "return"):
-        out[f"alpha_max_{kind}"], out[f"delta_alpha_max_{kind}"] = cam.worst_pressure(kind, route="arg")
+        alpha, where = cam.worst_pressure(kind, route="arg")
+        out[f"alpha_max_{kind}"], out[f"delta_alpha_max_{kind}"] = alpha, deg360(where)
     at = tuple(g.get("at") or ())
     if at:
         d = np.asarray(at, dtype=float)

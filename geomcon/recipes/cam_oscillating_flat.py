@@ -12,6 +12,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from ..numeric import deg360
 from ..cam.arm_face import (_FaceSearch, _segment_pieces, face_extremes, face_nearest, face_place, face_place1,
                             face_place_and_slope, face_place_slope, face_place_slope1, flat_family)
 from ..cam.oscillating_flat import END_TIE, FlatArmCam
@@ -139,7 +140,7 @@ def face_pressure_deg(A: Point, K: Point, n: Point) -> float:
 
 def worst_place(nearest: Extremum) -> float:
     """The cam angle (deg) of the nearest contact (:func:`face_nearest`): the largest α = atan(|f|/l)."""
-    return nearest.delta_deg
+    return deg360(nearest.delta_deg)
 
 
 def offset_pressure_deg(f: float, nearest: Extremum) -> float:
@@ -385,7 +386,7 @@ def analytic_flat(g: Mapping[str, Any]) -> list[dict[str, Any]]:
         alpha, where = cam.worst_pressure(kind)
         out[f"alpha_max_{kind}"] = alpha
         if cam.offset:
-            out[f"delta_alpha_max_{kind}"] = where
+            out[f"delta_alpha_max_{kind}"] = deg360(where)
     at = tuple(g.get("at") or ())
     if at:
         out.update(lists_flat(cam, at))

@@ -19,6 +19,7 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
+from ..numeric import deg360
 from ..cam.profile import (Extremum, LineFamily, PitchCurve, contact_slope, corners, envelope, envelope1, envelope_rho_min,
                            flat_profile, frame_pressure_angle_slope, frame_pressure_angle_slope1, inverted, inverted1,
                            pressure_angle1,
@@ -553,7 +554,7 @@ def analytic(g: Mapping[str, Any]) -> list[dict[str, Any]]:
             out[f"alpha_max_{part}"] = 0.0
             continue
         a, d = cam.alpha_max(part)
-        out[f"alpha_max_{part}"], out[f"delta_alpha_max_{part}"] = a, d
+        out[f"alpha_max_{part}"], out[f"delta_alpha_max_{part}"] = a, deg360(d)
     if at:
         out["s"] = tuple(float(x) for x in prog.motion(h, np.asarray(at, dtype=float))[0])
         out["alpha"] = tuple(float(x) for x in cam.alpha(np.asarray(at, dtype=float)))

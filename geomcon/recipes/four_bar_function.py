@@ -34,6 +34,7 @@ from typing import Any, Mapping, Sequence
 from ..analytic.fourbar_drive import angle_of, assemble, branch_of, crank_point
 from ..analytic.function_generation import check_inverted, function_generation, hinge_distance, inverted_pins
 from ..errors import NotAMechanism
+from ..numeric import deg360
 from ..geometry import (Arc, LeftOf, Point, RightOf, circle, circle_circle, midpoint,
                         perpendicular_bisector, polar_angle, rotate, segment)
 from ..geometry.primitives import unit_xy
@@ -55,7 +56,7 @@ ANSWERS = (
     Quantity("C1", "mm[]", "hinge of coupler and rocker in position 1, [x, y]"),
     Quantity("BC", "mm", "coupler"),
     Quantity("CD", "mm", "rocker"),
-    Quantity("beta", "deg", "angle of DC from the marked line DE, counter-clockwise"),
+    Quantity("beta", "deg", "angle of DC from the marked line DE, counter-clockwise, 0° ≤ β < 360°"),
     Quantity("gamma_min", "deg", "smallest transmission angle over the motion (whole turn when AB is a crank, else "
              "from φ1 through φ2 to φ3)"),
     Quantity("grashof", "bool", "shortest + longest ≤ sum of the other two"),
@@ -333,10 +334,10 @@ def from_D(D: Point, u: Point) -> Point:
     return D + u
 
 
-def signed_deg_of(D: Point, E: Point, u: Point) -> float:
-    """The angle from DE to the vector u, counter-clockwise, degrees in (−180°, 180°]."""
-    a = math.degrees(math.atan2(u.y, u.x) - polar_angle(D, E))
-    return (a + 180.0) % 360.0 - 180.0 if (a + 180.0) % 360.0 != 0.0 else 180.0
+def ccw_deg_of(D: Point, E: Point, u: Point) -> float:
+    """The angle from DE to the vector u, counter-clockwise, degrees in [0°, 360°) as a textbook states an angle
+    measured one way round (100-06 printed β = −171.561° for 188.439°)."""
+    return deg360(math.degrees(math.atan2(u.y, u.x) - polar_angle(D, E)))
 
 
 def worst_transmission(A: Point, D: Point, AB: float, BC: float, CD: float, B1: Point, B2: Point, B3: Point,
@@ -457,7 +458,7 @@ def add_inversion(sc: Scene, D: Ref, X: Sequence[Ref], K1: Ref, psi: Sequence[fl
     if sc.drawing:
         sc.add("k_inv", circle, H1, r, style="construction")
     sc.add(arm, abs, u, role=Role.MEASUREMENT, unit="mm", caption=(f"Measure {arm} = D{h}1", f"量得{arm_zh} {arm} = D{h}1"))
-    sc.add("beta", signed_deg_of, D, K1, u, role=Role.MEASUREMENT, unit="deg", visible=False)
+    sc.add("beta", ccw_deg_of, D, K1, u, role=Role.MEASUREMENT, unit="deg", visible=False)
     sc.add(f"{h}1_xy", as_xy, H1, visible=False)
     H = [H1] + [sc.add(f"{h}{i}", turn, H1, D, psi[i - 1] - psi[0], role=Role.RESULT, style="joint", label=f"{h}{i}",
                        caption=(f"The rocker carries {h}1 to {h}{i} (through ψ{i} − ψ1)", f"摇杆带 {h}1 转到 {h}{i}"))

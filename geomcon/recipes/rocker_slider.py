@@ -72,7 +72,7 @@ THREE_ANSWERS = (
     Quantity("F1", "mm[]", "hinge of the rod on the rocker, position 1, [x, y]"),
     Quantity("DF", "mm", "rocker arm D to F"),
     Quantity("EF", "mm", "connecting rod"),
-    Quantity("beta", "deg", "angle of DF from the marked line DK, counter-clockwise"),
+    Quantity("beta", "deg", "angle of DF from the marked line DK, counter-clockwise, 0° ≤ β < 360°"),
     *FLAGS,
     Quantity("sens_F1", "mm", "how far F1 moves per 0.1° of error in any one ψ or the guide's angle (the largest)"),
     Quantity("sens_F1_mm", "mm", "how far F1 moves per 0.1 mm of error in D, e or any s (the largest)"),

@@ -106,7 +106,7 @@ NAMES: dict[str, AnswerName] = {
     "gamma_min_fast": _n("γq,min", "fast stroke, smallest transmission angle", "空回行程最小传动角"),
     "gamma_min_slow": _n("γw,min", "slow stroke, smallest transmission angle", "工作行程最小传动角"),
     "C1": _n("C1", "hinge position 1", "铰链位置 1"),
-    "beta": _n("β", "angle of DC from DE", "DC 与 DE 的夹角"),
+    "beta": _n("β", "angle of DC from DE, counter-clockwise", "自 DE 逆时针量到 DC 的角"),
     "grashof": _b("Grashof condition met", "满足杆长条件"),
     "crank": _b("AB is a crank", "AB 为曲柄"),
     "branch_ok": _b("one assembly branch", "在同一装配分支上"),
@@ -193,6 +193,8 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     # (001-03c, frame CD, printed "CD turns fully" for its frame)
     # the sign of a designed offset says its side (200-11 printed e = -5.657 mm with no side): the words say how
     ("cam.base_radius", "e"): _n("e", "offset (> 0: the follower's axis right of O)", "偏距（正值：导路在 O 右侧）"),
+    ("rocker_slider.three_positions", "beta"): _n("β", "angle of DF from DK, counter-clockwise",
+                                                  "自 DK 逆时针量到 DF 的角"),
     ("four_bar.analysis", "output_crank"): _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
     ("cam.translating", "v"): _n("v", "follower velocity at the cam angles asked", "从动件速度"),
     ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
