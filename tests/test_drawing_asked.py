@@ -69,6 +69,9 @@ ASKED = {
     "001-13_radar_antenna_K1": {"ψ"},
     "001-14_crank_rocker_K1_frame_angles": {"ψ", "φ1", "φ2"},
     "001-21_cutter_drive_K1": {"ψ", "φ1", "φ2"},
+    "100-07_rocker_slider_three_positions": {"αmax"},
+    "100-08_rocker_slider_inclined_guide": {"αmax"},
+    "100-09_rocker_slider_two_positions": {"αmax"},
 }
 """The quantities a problem asks for at its drawn position, as the figure must mark them (angle or dimension)."""
 
@@ -81,6 +84,19 @@ def marked(name: str) -> set[str]:
 @pytest.mark.parametrize("name", sorted(ASKED))
 def test_the_asked_quantities_are_marked_in_the_figure(name):
     assert ASKED[name] <= marked(name)
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if n.startswith(("100-07", "100-08", "100-09"))])
+def test_a_rocker_slider_marks_its_largest_pressure_angle_at_the_worst_slider(name):
+    """100-08 answered αmax = 38.093° with no mark in the figure: the arc between rod and guide is drawn at the pin
+    E of the position whose rod is most inclined to the guide, with the answer's value."""
+    from geomcon.solve import solve
+    sol = solve(load_problem(PROBLEMS / f"{name}.toml"))
+    fig = figure(name)
+    m = next(m for g in fig.groups for m in _members(fig.values[g.key]) if isinstance(m, AngleMark) and m.symbol == "αmax")
+    assert abs(m.value - sol.answers["alpha_max"]) < 1e-9
+    pins = [fig.values[k] for k in ("E1", "E2", "E3") if k in fig.values]
+    assert any(abs(m.vertex - E) < 1e-9 for E in pins)
 
 
 def test_the_crank_slider_shows_its_centre_at_infinity_and_every_joint_as_a_centre():

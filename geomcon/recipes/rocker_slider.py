@@ -38,7 +38,7 @@ from ..geometry import Line, Point, circle, line_circle, perpendicular_bisector,
 from ..scene import Ref, Role, Scene, marks
 from ..tolerance import REL_TOL
 from .base import Construction, Quantity, Recipe
-from .common import add_pivot, guide_between, largest, length, pressure_deg
+from .common import add_pivot, guide_angle_mark, guide_between, largest, length, pressure_deg
 from .four_bar_function import (DRAFT_DEG, DRAFT_MM, add_inversion, as_xy, bisector_mark, count,
                                 defect_warnings, first, inverse_turn, largest_shift, on_turn, polar_point,
                                 same_branch, same_pairs, second, turn, turn_arc)
@@ -207,6 +207,13 @@ def worst_pressure(guide: Line, *pairs: Point) -> float:
     return largest(*(pressure_deg(F, E, guide) for F, E in zip(pairs[::2], pairs[1::2])))
 
 
+def worst_pressure_mark(guide: Line, value: float, *pairs: Point) -> marks.AngleMark:
+    """The mark of αmax between the rod and the guide at the slider pin of the position where the rod makes the
+    largest angle with the guide (the largest pressure angle; the first such position on a tie)."""
+    F, E = max(zip(pairs[::2], pairs[1::2]), key=lambda fe: pressure_deg(fe[0], fe[1], guide))
+    return guide_angle_mark(E, F, guide, "αmax", value)
+
+
 def slider_block(E: Point, guide: Line) -> marks.Slider:
     """The slider block at its pin."""
     return marks.Slider(E, guide.direction)
@@ -324,9 +331,10 @@ def _flags(sc: Scene, D: Ref, guide: Ref, F: list, E: list, DF: Ref, EF: Ref, ma
            visible=False)
     sc.add("dead_at", dead_hinge_text, D, dead, visible=False)
     pairs = [x for pair in zip(F, E) for x in pair]
-    sc.add("alpha_max", worst_pressure, guide, *pairs, role=Role.MEASUREMENT, unit="deg",
-           caption=("αmax: the largest angle between rod and guide in the positions", "最大压力角(连杆与导路夹角)"))
+    amax = sc.add("alpha_max", worst_pressure, guide, *pairs, role=Role.MEASUREMENT, unit="deg",
+                  caption=("αmax: the largest angle between rod and guide in the positions", "最大压力角(连杆与导路夹角)"))
     if sc.drawing:
+        sc.add("mark_alpha", worst_pressure_mark, guide, amax, *pairs, role=Role.ANNOTATION, style="angle")
         sc.add("guide_mark", guide_between, E[0], E[-1], guide, margin, role=Role.ANNOTATION, style="guide")
     n = len(F)
     keys = {f"side{i}": f"side{i}" for i in range(1, n + 1)}
