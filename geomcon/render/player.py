@@ -29,6 +29,7 @@ from typing import Sequence
 from ..scene import Scene
 from .labels import rich_runs
 from .page import PageSpec, print_css, zh_punct
+from .serial import typeset
 from .shapes import stacked_runs
 from .style import FONT_FAMILY
 from .svg import render_sheets
@@ -155,7 +156,7 @@ def caption_html(text: str) -> str:
     >>> caption_html("aʳB2B3 < 1")
     'a<span class="stack"><span>r</span><span>B2B3</span></span> &lt; 1'
     """
-    runs = stacked_runs(rich_runs(text), 1.0)
+    runs = stacked_runs(rich_runs(typeset(text)), 1.0)
     out, i = [], 0
     while i < len(runs):
         s, sub, sup, _ = runs[i]
@@ -222,6 +223,6 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     steps = json.dumps([[caption_html(s) for s in c] for c in step_captions(scene, page.lang)], ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
                                     for f in FONT_FAMILY.split(","))}
-    return _PAGE % {"title": html.escape(title or scene.title), "css": css, "print": print_css(page), "replay_print": _PRINT_CSS,
+    return _PAGE % {"title": html.escape(typeset(title or scene.title)), "css": css, "print": print_css(page), "replay_print": _PRINT_CSS,
                     "lang": "zh-Hans" if page.lang == "zh" else "en", "n": len(scene.frames()), "svg": body,
                     "script": _SCRIPT % {"steps": steps}}

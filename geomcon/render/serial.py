@@ -47,7 +47,26 @@ from svgwrite.text import TSpan
 from svgwrite.utils import strlist
 
 _attrib = ElementTree._escape_attrib      # type: ignore[attr-defined]  # ElementTree's own escaping
-_cdata = ElementTree._escape_cdata        # type: ignore[attr-defined]
+_escape_cdata = ElementTree._escape_cdata        # type: ignore[attr-defined]
+
+PRODUCT_DOT = ("·", "⋅")
+"""A product's dot as a sheet prints it: U+22C5 (the dot operator), not U+00B7 (the middle dot), which the CJK font
+that sets every text draws full-width, as a Japanese "・" (001-09's title read "S = 2・CD"). Every "·" of the
+project's texts is a product (ω·AB, 2·acos, pb3·μ); the JSON and the terminal keep it."""
+
+
+def typeset(text: str) -> str:
+    """A text as a sheet prints it (:data:`PRODUCT_DOT`).
+
+    >>> typeset("S = 2·CD")
+    'S = 2⋅CD'
+    """
+    return text.replace(*PRODUCT_DOT)
+
+
+def _cdata(text: str) -> str:
+    return _escape_cdata(typeset(text))
+
 
 _PLAIN = BaseElement.get_xml
 _KNOWN = {Drawing.get_xml, Polyline.get_xml, Path.get_xml, TSpan.get_xml, Script.get_xml}
@@ -176,4 +195,4 @@ def _write_lean(el: Element, out: list[str]) -> None:
     out.append(f"</{tag}>")
 
 
-__all__ = ["Element", "svg_string"]
+__all__ = ["Element", "PRODUCT_DOT", "svg_string", "typeset"]
