@@ -99,6 +99,22 @@ def test_a_rocker_slider_marks_its_largest_pressure_angle_at_the_worst_slider(na
     assert any(abs(m.vertex - E) < 1e-9 for E in pins)
 
 
+def test_the_eccentric_arm_marks_psi0_plus_psimax_as_the_exact_angle_rounded_once():
+    """001-31's review read "ψ0+ψmax = 49.99°" as a sum of rounded parts short of 50°. It is not: the arm at its
+    highest has |OB1| = Rp + OA = 70 = L, so ∠OQ1B1 = acos(a / 2L) = acos(9/14) = 49.9948°, measured in the figure
+    and printed rounded once (16.195° + 33.800° = 49.995°); the mark equals ψ0 + ψmax and that angle."""
+    import math
+    from geomcon.solve import solve
+    sol = solve(load_problem(PROBLEMS / "001-31_eccentric_oscillating_roller.toml"))
+    fig = figure("001-31_eccentric_oscillating_roller")
+    m = next(m for g in fig.groups for m in _members(fig.values[g.key]) if isinstance(m, AngleMark)
+             and m.symbol == "ψ0+ψmax")
+    exact = math.degrees(math.acos(90.0 / (2 * 70.0)))
+    assert abs(m.value - exact) < 1e-9 and abs(sol.answers["psi0"] + sol.answers["psi_max"] - exact) < 1e-9
+    shown = [runs(t) for g in fig.groups if g.key == "mark_psi_high" for t in g.texts]
+    assert shown == ["ψ0+ψmax=49.99°"]
+
+
 def test_the_crank_slider_shows_its_centre_at_infinity_and_every_joint_as_a_centre():
     """400-05: the six centres of a crank-slider are A, B, C (P14, P12, P23), P13 and P24 by Kennedy and P34 at
     infinity, named at the tip of an arrow perpendicular to the guide; 400-04 names its four joints likewise."""
