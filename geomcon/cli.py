@@ -171,6 +171,8 @@ def _unit_words(q, words: dict[str, str] = UNIT_WORDS) -> str:
     'one of left|right'
     """
     unit = words.get(q.unit, q.unit)
+    for name, word, other in q.unit_when:                       # cam.base_radius's h: ° for an arm
+        unit += f", {words.get(other, other)} if {name} = {word}"
     return f"{unit} {'|'.join(q.choices)}" if q.choices else unit
 
 
@@ -238,6 +240,8 @@ def cmd_recipes(args: argparse.Namespace) -> int:
         import json
         data = {name: {"title": r.title,
                        "given": {q.name: {"unit": q.unit, "doc": q.doc, "required": q.required,
+                                          **({"unit_when": [{"given": n, "is": w, "unit": u} for n, w, u in q.unit_when]}
+                                             if q.unit_when else {}),
                                           **({"default": q.default} if q.default is not None else {}),
                                           **({"choices": list(q.choices)} if q.choices else {})} for q in r.givens},
                        "answers": {q.name: {"unit": q.unit, "doc": q.doc} for q in r.answers},

@@ -28,6 +28,7 @@ from .errors import NotAMechanism, ProblemError
 from .tolerance import CHECK_REL
 from .problems import Problem
 from .recipes import Construction, Recipe, get_recipe
+from .recipes.base import unit_in
 from .plan import planned
 from .taped import construct_taped, is_taped
 
@@ -102,12 +103,18 @@ _LENGTHS: dict[str, tuple[tuple[str, bool], ...]] = {}
 
 def _length_givens(recipe: Recipe) -> tuple[tuple[str, bool], ...]:
     """``(name, True)`` of each given length in mm, ``(name, False)`` of each point or list of lengths, in the
-    recipe's order (made once per recipe)."""
+    recipe's order (made once per recipe; a given whose unit depends on the others, :func:`_length_given_units`,
+    is left out)."""
     out = _LENGTHS.get(recipe.name)
     if out is None:
         out = _LENGTHS[recipe.name] = tuple((q.name, q.unit == "mm") for q in recipe.givens
-                                            if q.unit in ("mm", "point", "mm[]"))
+                                            if q.unit in ("mm", "point", "mm[]") and not q.unit_when)
     return out
+
+
+def _length_given_units(recipe: Recipe) -> tuple:
+    """The givens in mm whose unit depends on another given (cam.base_radius's h: degrees for an arm)."""
+    return tuple(q for q in recipe.givens if q.unit == "mm" and q.unit_when)
 
 
 _UNIT_SETS: dict[str, tuple[str, ...]] = {}
@@ -315,6 +322,10 @@ class Solution:
                 sizes.append(abs(v))
             else:
                 sizes += [abs(x) for x in v]
+        for q in _length_given_units(self.recipe):      # a length only when the other givens say mm
+            v = given.get(q.name)
+            if v is not None and unit_in(q, given) == "mm":
+                sizes.append(abs(v))
         return max(sizes)
 
     @cached_property

@@ -42,9 +42,13 @@ class Quantity(Frozen):
         (:data:`geomcon.problems.RANGES`); for lists, of every element.
     choices : tuple of str
         Givens of unit "choice": the admissible words.
+    unit_when : tuple of (str, str, str)
+        Givens only: (given, word, unit) — the unit is ``unit`` when the choice ``given`` is ``word``
+        (cam.base_radius's h: mm, or degrees when motion = "oscillating"; :func:`unit_in`).
     """
 
-    _FIELDS = ("name", "unit", "doc", "required", "default", "minimum", "inclusive", "maximum", "choices")
+    _FIELDS = ("name", "unit", "doc", "required", "default", "minimum", "inclusive", "maximum", "choices",
+               "unit_when")
     name: str
     unit: str
     doc: str
@@ -54,13 +58,27 @@ class Quantity(Frozen):
     inclusive: bool
     maximum: float | None
     choices: tuple[str, ...]
+    unit_when: tuple[tuple[str, str, str], ...]
 
     def __init__(self, name: str, unit: str, doc: str, required: bool = True, default: Any = None,
                  minimum: float | None = 0.0, inclusive: bool = False, maximum: float | None = None,
-                 choices: tuple[str, ...] = ()) -> None:
+                 choices: tuple[str, ...] = (), unit_when: tuple[tuple[str, str, str], ...] = ()) -> None:
         for field, value in zip(self._FIELDS, (name, unit, doc, required, default, minimum, inclusive, maximum,
-                                               choices)):
+                                               choices, unit_when)):
             store(self, field, value)
+
+
+def unit_in(q: Quantity, given: Mapping[str, Any]) -> str:
+    """The unit of given ``q`` in a problem's ``given`` (:attr:`Quantity.unit_when`).
+
+    >>> h = Quantity("h", "mm", "stroke", unit_when=(("motion", "oscillating", "deg"),))
+    >>> unit_in(h, {"motion": "oscillating"}), unit_in(h, {"motion": "translating"}), unit_in(h, {})
+    ('deg', 'mm', 'mm')
+    """
+    for name, word, unit in q.unit_when:
+        if given.get(name) == word:
+            return unit
+    return q.unit
 
 
 class Construction(Frozen):

@@ -60,7 +60,8 @@ rad apart, far from the 1e-13 at which intersections call lines parallel (a base
 by :func:`r0_floor` for most programs anyway)."""
 
 GIVENS = (
-    Quantity("h", "mm", "stroke: mm (translating), or the arm's angular stroke ψmax in degrees (oscillating)"),
+    Quantity("h", "mm", "stroke: mm (translating), or the arm's angular stroke ψmax in degrees (oscillating)",
+             unit_when=(("motion", "oscillating", "deg"),)),
     Quantity("program", "table[]", "motion program: rise, dwells, return (a full turn)"),
     Quantity("alpha_allow", "deg", "allowed pressure angle of the rise, 1e-6° ≤ α_allow < 90° (below, the lines "
              "at ±α_allow are within 1e-8 rad of each other; an arm needs about α_allow > h/2 for the wedges to meet); "

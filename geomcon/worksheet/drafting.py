@@ -44,6 +44,7 @@ from typing import Any, Callable, Iterator, Mapping, Sequence
 
 from ..errors import GeomconError
 from ..recipes import get_recipe
+from ..recipes.base import unit_in
 from .solving import read, solve_given
 from .spec import AnswerRef
 
@@ -105,10 +106,11 @@ def drafted(recipe: str, given: Mapping[str, Any], factor: float) -> list[Drafte
         v = given.get(q.name)
         if v is None or q.name in NOT_DRAWN:
             continue
-        if q.unit in ("mm", "deg") and _num(v):
-            if q.unit == "mm" and float(v) == 0.0:
+        unit = unit_in(q, given)                # cam.base_radius's h: degrees for an arm
+        if unit in ("mm", "deg") and _num(v):
+            if unit == "mm" and float(v) == 0.0:
                 continue
-            d = length if q.unit == "mm" else DEGREES
+            d = length if unit == "mm" else DEGREES
             out.append(Drafted(q.name, with_value(q.name, float(v) + d), with_value(q.name, float(v) - d)))
         elif q.unit == "" and q.name == "K" and _num(v) and float(v) != 1.0:
             th = theta_of_k(float(v))
