@@ -115,6 +115,34 @@ def test_the_eccentric_arm_marks_psi0_plus_psimax_as_the_exact_angle_rounded_onc
     assert shown == ["ψ0+ψmax=49.99°"]
 
 
+@pytest.mark.parametrize("name", [n for n in NAMES if n.startswith(("200-09", "200-10", "200-11", "200-19"))])
+def test_r0_and_s0_are_dimensioned_apart(name):
+    """200-10 (a centred follower: s0 = r0 along the same segment OB0) dimensioned r0 and s0 on that one segment,
+    2 mm apart, the one over the other: two dimensions of one figure either run in directions 15° or more apart or
+    lie 5 paper mm or more apart, and their texts do not overlap."""
+    import itertools
+    import math
+    import shapely
+    from shapely import affinity
+
+    def turned(t):
+        b = shapely.box(*t.box)
+        return affinity.rotate(b, t.rotate, origin=b.centroid) if t.rotate else b
+    fig = figure(name)
+    dims = [(g, m) for g in fig.groups for m in _members(fig.values[g.key]) if isinstance(m, Dimension)]
+    for (g1, m1), (g2, m2) in itertools.combinations(dims, 2):
+        a1, b1, a2, b2 = (fig.view.p(p) for p in (m1.a, m1.b, m2.a, m2.b))
+        t1 = math.atan2(b1[1] - a1[1], b1[0] - a1[0])
+        t2 = math.atan2(b2[1] - a2[1], b2[0] - a2[0])
+        turn = abs((t1 - t2 + math.pi / 2) % math.pi - math.pi / 2)
+        apart = shapely.LineString([a1, b1]).distance(shapely.LineString([a2, b2]))
+        off = abs(m1.offset - m2.offset) / fig.view.mu
+        assert turn >= math.radians(15) or apart >= 5.0 or off >= 5.0, (m1.symbol, m2.symbol)
+        for u in g1.texts:
+            for v in g2.texts:
+                assert turned(u).intersection(turned(v)).area <= 1e-9, (m1.symbol, m2.symbol)
+
+
 def test_the_crank_slider_shows_its_centre_at_infinity_and_every_joint_as_a_centre():
     """400-05: the six centres of a crank-slider are A, B, C (P14, P12, P23), P13 and P24 by Kennedy and P34 at
     infinity, named at the tip of an arrow perpendicular to the guide; 400-04 names its four joints likewise."""

@@ -311,7 +311,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("rr_max", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm",
            caption=("rr ≤ 0.8·ρmin", "滚子半径 rr ≤ 0.8ρmin"))
     limited = g.get("rho_allow") is not None        # the pressure angle's r0 is then r0,α, not the answer
-    sc.add("dim_r0", lambda o, b, v: marks.Dimension(o, b, "r0,α" if limited else "r0", v, 0.08 * scale), O, B0, r0,
+    sc.add("dim_r0", r0_dimension, O, B0, r0, "r0,α" if limited else "r0", 0.08 * scale, not limited,
            role=Role.ANNOTATION, style="dim")
     if sc.drawing:
         _diagram_axes(sc, prog, h, k, B0, O, e, None if limited else s0, scale)
@@ -320,6 +320,24 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if g.get("rho_allow") is not None:
         add_rho_steps(sc, answers, g, prog)
     return Construction(sc, answers, {"O": "O", "B0": "B0"})
+
+
+R0_APART = 0.25
+"""|e| below this fraction of r0 puts r0's dimension OB0 on top of s0's (the height of B0 above O, dimensioned
+along the axis beside it): r0 is then dimensioned along the radius at :data:`R0_RADIUS` instead."""
+R0_RADIUS = 200.0
+"""Direction (deg, from +x) of the radius r0 is dimensioned on when OB0 lies along the axis: down-left, off the
+ds/dδ diagram above B0, the pressure-angle lines through the region below O and the ω arrow beside O."""
+
+
+def r0_dimension(O: Point, B0: Point, r0: float, symbol: str, offset: float, with_s0: bool) -> marks.Dimension:
+    """r0 dimensioned along OB0, beside it; or, when s0 is dimensioned along the axis and OB0 nearly lies on it
+    (|e| < :data:`R0_APART`·r0: 200-10 printed r0 and s0 on one segment, the one over the other), along the radius
+    at :data:`R0_RADIUS` (a textbook's radius dimension of the base circle)."""
+    if with_s0 and abs(B0.x - O.x) < R0_APART * r0:
+        t = math.radians(R0_RADIUS)
+        return marks.Dimension(O, Point(O.x + r0 * math.cos(t), O.y + r0 * math.sin(t)), symbol, r0, 0.0)
+    return marks.Dimension(O, B0, symbol, r0, offset)
 
 
 def foot_on_axis(O: Point) -> Point:
