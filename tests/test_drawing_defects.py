@@ -463,6 +463,8 @@ MARK_LEADERS_ACROSS = {
     "004-0": "αmax at C on the guide among the positions' links (004-01, 004-02 K 1.5): every place near its arc "
              "is reached across a link or the guide mark",
     "100-0": "γ between the coupler and the rocker at C2: the clear places are across a link or the pin",
+    "001-10c": "θ at A in the 1:20 construction's knot of links (3.8 mm the shortest): every place near its arc is "
+               "across a link; the 1:5 detail view marks it clear",
 }
 """Figures (by name prefix) where a mark's leader may cross a link or a pivot symbol, and why: crossing counts
 against a place (Placer: LEADER_CROSSING), so it happens only where every place near the arc is worse."""

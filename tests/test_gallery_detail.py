@@ -137,3 +137,33 @@ def test_vectors_and_diagram_ordinates_are_not_links():
     for pid in ("400-01_four_bar_velocity_polygons", "001-24_cam_displacement_at_100", "200-16_cam_poly_4567"):
         got = _shortest(pid)
         assert got is not None and got[0] >= MIN_LINK, (pid, got)
+
+
+def test_the_crank_and_frame_design_marks_theta_and_psi_in_its_detail_view():
+    """001-10c answers θ and ψ but marked neither, in its 1:20 construction or its 1:5 detail view: both are
+    marked at A and D, and the detail view draws them large."""
+    svg = (GALLERY / "001-10c_crank_rocker_design_crank_and_frame.svg").read_text(encoding="utf-8")
+    for key in ("mark_theta", "mark_psi"):
+        assert f'id="step-{key}"' in svg and f'id="detail-step-{key}"' in svg
+
+
+@pytest.mark.parametrize("pid", PROBLEMS)
+def test_an_angle_marked_at_a_joint_is_in_the_detail_view_too(pid):
+    """A detail view draws the mechanism where the sheet's scale draws it too small to read: an angle marked at
+    one of its joints (θ at A, ψ at D) is read there too (the detail views left every mark out)."""
+    svg = (GALLERY / f"{pid}.svg").read_text(encoding="utf-8")
+    if 'id="detail"' not in svg:
+        return
+    from geomcon.scene.marks import AngleMark
+    sol, page, sc, info, warnings, sl, scale, view, keep = _sheet1(pid)
+    steps, _ = shown_steps(sc, None, keep)
+    values = sc.evaluate([s.key for _, s in steps])
+    keys, _, _ = mechanism_steps(steps, values)
+    from geomcon.geometry.primitives import Segment
+    ends = [p for k in keys for v in (values[k] if isinstance(values[k], (tuple, list)) else [values[k]])
+            if isinstance(v, Segment) for p in (v.a, v.b)]
+    tol = 1e-6 * max(abs(c) for p in ends for c in (p.x, p.y))
+    marked = [s.key for _, s in steps if isinstance(values[s.key], AngleMark)
+              and any(abs(values[s.key].vertex - p) <= tol for p in ends)]
+    for k in marked:
+        assert f'id="detail-step-{k}"' in svg, k

@@ -18,7 +18,7 @@ from ..scene import Ref, Role, Scene, marks
 from ..scene.tape import lifted
 from .base import Construction
 from .common import angle_deg, folded_flag, gamma_min_of, half_difference, half_sum, near_flag
-from .crank_rocker_design import _rocker_end, admissible_arcs
+from .crank_rocker_design import _rocker_end, admissible_arcs, swing_mark, theta_mark
 from .search import crossing
 from .theta_circle import add_theta_circle, add_theta_step
 
@@ -159,6 +159,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     add_unit_linkage(sc, Ref("A_1"), D, C1, C2, optional=True, labels=("B1", None))
     if sc.drawing:                          # the designed linkage's crank pivot is a fixed pivot, not only a candidate
         sc.add("A_ground", marks.ground, Ref("A_1"), -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
+        # θ and ψ are answers: marked where they are measured, θ at A between the extreme positions, ψ at D
+        # (001-10c marked neither; the detail view, which draws the mechanism large, shows them too)
+        sc.add("mark_theta", theta_mark, Ref("A_1"), C1, C2, th, role=Role.ANNOTATION, style="angle", optional=True)
+        sc.add("mark_psi", swing_mark, D, C1, C2, role=Role.ANNOTATION, style="angle", optional=True)
     return Construction(sc, dict(sols[0]), {"D": "D", "C1": "C1", "C2": "C2"}, solutions=tuple(sols),
                         no_solution=f"no crank-rocker with K = {K:g}, ψ = {psi:g}° has the crank AB = {AB:g} on the frame AD = {AD:g}")
 

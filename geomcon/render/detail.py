@@ -80,9 +80,10 @@ def mechanism_steps(steps: Sequence[tuple[int, Step]], values: dict[str, Any]
         return any(abs(p.x - e.x) <= tol and abs(p.y - e.y) <= tol for e in ends)
 
     blocks = []
-    for _, s in steps:
+    for _, s in steps:                    # an angle marked at a joint (θ at A, ψ at D) is read there, large
         for x in _items(values[s.key]):
-            if (isinstance(x, Point) and at_end(x)) or (isinstance(x, (Ground, Slider)) and at_end(x.at)):
+            if (isinstance(x, Point) and at_end(x)) or (isinstance(x, (Ground, Slider)) and at_end(x.at)) \
+                    or (isinstance(x, AngleMark) and at_end(x.vertex)):
                 keys.add(s.key)
                 if isinstance(x, Slider):
                     blocks.append(x.at)
