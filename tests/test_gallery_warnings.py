@@ -10,6 +10,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 from geomcon.render.labels import plain_text
+from geomcon.render.serial import typeset
 from geomcon.render.warning_words import warning_lines
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
@@ -48,7 +49,7 @@ def test_every_warning_is_in_one_of_its_problem_s_figures():
         texts = [_figure_text(p) for p in GALLERY.iterdir() if own.match(p.name)]
         assert texts, stem
         for w in warnings:
-            line = _words(plain_text(warning_lines([w], "en")[0]))
+            line = _words(typeset(plain_text(warning_lines([w], "en")[0])))      # "3·rr" prints "3⋅rr"
             if not any(line in t for t in texts):
                 missing.append((stem, line))
     assert not missing, missing
