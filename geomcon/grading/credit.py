@@ -5,7 +5,7 @@ is not a number of the answer's kind, or a malformed row, or an id the key does 
 
 Points. A correct answer earns its points. A wrong one earns a fraction of them when the diagnosis says
 the construction was right and only the reading went wrong (:data:`PARTIAL`: ``rounding``, ``scale``,
-``degrees_radians``, ``sign`` and ``swapped`` earn half), else nothing. **Follow-through**: a wrong answer
+``degrees_radians``, ``turn``, ``sign`` and ``swapped`` earn half), else nothing. **Follow-through**: a wrong answer
 that is right given the student's own earlier answer of the same exercise (the later answer's step replayed
 with the earlier step holding the student's value: K from their θ) earns its full points, diagnosis
 ``follow_through`` — but only when that earlier answer is itself a diagnosed mistake or lies within 3
@@ -28,7 +28,7 @@ from .cells import Cell, Unreadable, read_cell
 from .diagnosis import WORDS, Prepared, distance, match, rounding
 from .keyfile import Answer, StudentKey
 
-PARTIAL = {"rounding": 0.5, "scale": 0.5, "degrees_radians": 0.5, "sign": 0.5, "swapped": 0.5}
+PARTIAL = {"rounding": 0.5, "scale": 0.5, "degrees_radians": 0.5, "turn": 0.5, "sign": 0.5, "swapped": 0.5}
 """Fraction of an answer's points a diagnosed reading slip earns (a wrong construction earns 0)."""
 FOLLOW_WITHIN = 3.0
 """An undiagnosed earlier answer supports follow-through within this many of its tolerances."""

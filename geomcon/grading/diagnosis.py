@@ -11,7 +11,8 @@ Where the alternatives come from, in order of preference when two match equally 
 4. ``other_branch``: every named branch rule the asked answers depend on, flipped one at a time (the step is
    named in the feedback);
 5. ``swapped`` (another asked answer of the exercise, same unit), ``degrees_radians`` (an angle given in
-   radians, or radians taken for degrees), ``scale`` (a length off by a drawing-scale factor 2, 2.5, 5, 10 or its
+   radians, or radians taken for degrees), ``turn`` (an angle counted through another turn, ± 360°: 100-06's
+   β = 188.439° counter-clockwise from DE written as −171.561°), ``scale`` (a length off by a drawing-scale factor 2, 2.5, 5, 10 or its
    inverse: μl misread), ``sign``.
 
 A value matches an alternative within the answer's tolerance (scaled with it for ``scale`` and
@@ -50,12 +51,13 @@ if TYPE_CHECKING:
     from ..solve import Solution
 
 SCALES = (2.0, 2.5, 5.0, 10.0)
-SHARED = ("other_branch", "swapped", "degrees_radians", "scale", "sign", "rounding")
+SHARED = ("other_branch", "swapped", "degrees_radians", "turn", "scale", "sign", "rounding")
 """The codes every recipe shares (plus ``follow_through`` for credit carried from an earlier answer)."""
 WORDS: dict[str, tuple[str, str]] = {
     "other_branch": ("the other intersection taken at a step", "某一步取了另一个交点"),
     "swapped": ("two answers exchanged", "两个答案填反了"),
     "degrees_radians": ("degrees and radians confused", "角度与弧度混淆"),
+    "turn": ("the same direction counted through another turn (± 360°)", "方向相同，但多转或少转了一周(± 360°)"),
     "scale": ("off by a drawing-scale factor (μl misread)", "比例尺 μl 换算错误"),
     "sign": ("the sign is wrong", "符号错误"),
     "rounding": ("right, but rounded to fewer digits than asked", "数值正确但有效数字不足"),
@@ -135,6 +137,8 @@ def _shared(ex: ExerciseKey, a: Answer) -> list[Alt]:
         r = math.pi / 180.0
         out.append(Alt("degrees_radians", a.expected * r, a.tol * r, "the angle given in radians", "角度以弧度给出"))
         out.append(Alt("degrees_radians", a.expected / r, a.tol / r, "radians read as degrees", "把弧度当成了度"))
+        for k in (-360.0, 360.0):
+            out.append(Alt("turn", a.expected + k, a.tol, *WORDS["turn"]))
     if a.unit == "mm":
         for f in SCALES:
             for k in (f, 1.0 / f):
