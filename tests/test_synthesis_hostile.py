@@ -136,7 +136,7 @@ def test_function_generation_with_every_angle_within_a_tenth_of_a_degree():
                            for f, p in zip(ph, ps)])
         U, V, _ = mpmath.lu_solve(M, mpmath.matrix([mpmath.cos(f) for f in ph]))
         y = float(U * mpmath.sin(ps[0]) + V * mpmath.cos(ps[0]))
-        beta = float(mpmath.degrees(mpmath.atan2(V, U)))
+        beta = float(mpmath.degrees(mpmath.atan2(V, U)) % 360)   # β in [0°, 360°), as the answer states it
     for values in (sol.answers, sol.analytic[0]):
         assert values["C1"][1] == pytest.approx(y, rel=1e-9)
         assert values["beta"] == pytest.approx(beta, rel=1e-12)
@@ -158,7 +158,7 @@ def test_function_generation_with_a_tiny_crank():
         M = mpmath.matrix([[mpmath.cos(p) / a - mpmath.cos(f - p) / d, -(mpmath.sin(p) / a + mpmath.sin(f - p) / d), 1]
                            for f, p in zip(ph, ps)])
         U, V, _ = mpmath.lu_solve(M, mpmath.matrix([mpmath.cos(f) for f in ph]))
-        beta = float(mpmath.degrees(mpmath.atan2(V, U)))
+        beta = float(mpmath.degrees(mpmath.atan2(V, U)) % 360)   # β in [0°, 360°), as the answer states it
     for values in (sol.answers, sol.analytic[0]):
         assert values["beta"] == pytest.approx(beta, rel=1e-12)
         assert values["CD"] == pytest.approx(c, rel=1e-11)
