@@ -460,9 +460,16 @@ def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str
         en, zh = scene.caption(group[0].key)
         zh = zh_punct(zh) if zh else ""
         first = f"{k}. {(zh or en) if lang == 'zh' else en}"
-        lines = wrap(first, width, INFO_SIZE) + (wrap(zh, width, INFO_SIZE) if lang == "both" and zh else [])
-        if len(lines) > most:
-            lines = lines[:most - 1] + [fitted(" ".join(lines[most - 1:]), width, INFO_SIZE, least=INFO_SIZE)]
+        parts = [(first, wrap(first, width, INFO_SIZE))] + ([(zh, wrap(zh, width, INFO_SIZE))]
+                                                            if lang == "both" and zh else [])
+        lines = [ln for _, part in parts for ln in part]
+        if len(lines) > most:                  # the rest on the last line, cut short: each text as it was written
+            tail, n = [], 0
+            for src, part in parts:
+                if part[max(0, most - 1 - n):]:
+                    tail.append(rejoined(src, part[max(0, most - 1 - n):]))
+                n += len(part)
+            lines = lines[:most - 1] + [fitted(" ".join(tail), width, INFO_SIZE, least=INFO_SIZE)]
         for i, ln in enumerate(lines):
             el = _line(dwg, ln, box[0], box[1] + INFO_SIZE + i * lh, INFO_SIZE, HIGHLIGHT,
                        "stepcap current" if k == upto else "stepcap")
@@ -523,6 +530,25 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
         if found is not None:
             sl, (scale, view, fig, (drawn, marks)) = found
     return SheetOne(sl, scale, view, fig, dwg, drawn, marks, apart is not None, info, warnings)
+
+
+def rejoined(src: str, lines: Sequence[str]) -> str:
+    """Consecutive wrapped ``lines`` of the text ``src`` set on one line again, as ``src`` has them: with the space
+    the break dropped between Latin words, none between Chinese ones (a truncated step caption read
+    "以 O 为圆心 作基圆" for "以 O 为圆心作基圆").
+
+    >>> rejoined("以 O 为圆心作基圆，交于 B0", ["为圆心", "作基圆，交于 B0"]), rejoined("a long one", ["long", "one"])
+    ('为圆心作基圆，交于 B0', 'long one')
+    """
+    out, at = "", None
+    for ln in lines:
+        i = src.find(ln, at or 0)
+        if i < 0:                               # not found as written: keep it apart
+            out, at = (out + " " if out else "") + ln, at
+            continue
+        out += (src[at:i] if at is not None and out else "") + ln
+        at = i + len(ln)
+    return out
 
 
 def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
