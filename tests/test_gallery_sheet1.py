@@ -43,11 +43,11 @@ RESERVED = {"100-04_four_bar_fixed_pivots_coupler_angles": "1:2", "100-07_rocker
 """Drawings whose results no one box of the free room holds (100-04 and 300-01 had them in three boxes, 300-01's
 third inside the four-bar; 100-07 in two): one block in room reserved for it (a column at the right, a band above
 the title block), the drawing at that layout's scale: 100-04 and 100-07 at 1:1 → 1:2 (SPLIT_KEEP: at least half);
-300-01 at 2.5:1 → 1:1, the last resort, since at 2:1 not even two boxes outside the figure hold them, nor one box
+300-01 at 2.5:1 → 1:1, the last resort, since at 2.5:1 not even two boxes outside the figure hold them, nor one box
 their brief form."""
 BRIEF = {"200-15_cam_handbook_laws": "1:2"}
-"""Drawings whose results no one box holds at their scale, nor two boxes outside the figure in reading order, nor
-one block at an ISO 5455 scale down to half of it: their brief lines in one box of the free room at that scale,
+"""Drawings whose results no one box holds at their scale, nor reserved room at half of it or more, nor two boxes
+outside the figure in reading order: their brief lines in one box of the free room at that scale,
 in full on the next sheet (200-15 set "Results" touching its s–δ chart's caption row)."""
 
 

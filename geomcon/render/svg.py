@@ -30,7 +30,7 @@ from typing import Any, Callable, Sequence
 
 import svgwrite
 
-from ..paper import ISO_5455, STANDARD, Scale, Sheet, choose_scale
+from ..paper import STANDARD, Scale, Sheet, choose_scale
 from ..scene import Scene
 from .figure import Figure, build_figure, content_box, shown_steps
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
@@ -309,10 +309,9 @@ def outside_hull(room: Any, fig: Figure) -> Any:
 
 SPLIT_KEEP = 0.5
 """Results that no one box of the drawing's free room holds go as one block into room reserved for them (a band
-above the title block, a column at the right: :func:`_layouts`) or into the free room of the drawing at a smaller
-ISO 5455 scale, when the drawing keeps at least this share of its scale (100-04, 100-07: 1:1 → 1:2); else they
-are split over two boxes (:func:`_pieces`): a reader reads one block, and a drawing at half its size is still one
-to construct on."""
+above the title block, a column at the right: :func:`_layouts`) when the drawing keeps at least this share of its
+scale there (100-04, 100-07: 1:1 → 1:2); else they are split over two boxes (:func:`_pieces`): a reader reads one
+block, and a drawing at half its size is still one to construct on."""
 
 
 def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None
@@ -502,12 +501,13 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
               info_steps: Sequence[int] | None = None, upto: int | None = None, viewbox: Box | None = None,
               brief: tuple[Sequence[str], Sequence[str]] | None = None) -> SheetOne:
     """Where sheet 1 puts the drawing and the results: the layout at the largest standard scale
-    (:func:`place_figure`, :func:`diagram_apart`), and when that reserves no room for the results, the drawing's
-    free room or a smaller scale down to :data:`SPLIT_KEEP` of it (:func:`_results_placed`); else the ``brief``
-    lines (results, warnings; ``{sheet}`` in them the number of the sheet with the full ones) in the free room at
-    that scale; else the results as one block at the largest
-    smaller standard scale that holds them (300-01: 2.5:1 → 1:1, in a band above the title block; else they
-    had no place on sheet 1); else on a sheet of their own (``layout.info_here`` False)."""
+    (:func:`place_figure`, :func:`diagram_apart`), and when that reserves no room for the results, a reader reads
+    one block: one box of the drawing's free room (:func:`results_in_free_room`); else room reserved for them if
+    the drawing keeps :data:`SPLIT_KEEP` of its scale there (:func:`_in_reserved_room`; 100-04 and 100-07: 1:1 →
+    1:2); else two boxes of the free room outside the figure; else the ``brief`` lines (results, warnings;
+    ``{sheet}`` in them the number of the sheet with the full ones) in the free room; else room reserved for them
+    at whatever scale (300-01: 2.5:1 → 1:1, in a band above the title block; else they had no place on sheet 1);
+    else on a sheet of their own (``layout.info_here`` False)."""
     sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
     apart = None if viewbox is not None else diagram_apart(scene, page, info, warnings, scale)
     if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
@@ -517,18 +517,24 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
     dwg = document(page.sheet)
     drawn, marks = _figure_and_marks(dwg, scene, fig, scale, apart is None)
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
-        drawing = (scale, view, fig, (drawn, marks))
-        found = _results_placed(scene, dwg, page, sl, drawing, info, warnings, info_steps, upto, viewbox, keep)
-        if found is None and brief is not None:              # in brief on sheet 1, in full on the results sheet
+        placed = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps, _boxes(marks))
+        found = None if placed is None or split(placed) else (placed, None)
+        if found is None:                                    # one block at no less than half the scale
+            found = _in_reserved_room(scene, dwg, page, info, warnings, upto, viewbox, keep,
+                                      Scale(SPLIT_KEEP * scale.paper, scale.real))
+        if found is None and placed is not None:             # else in two boxes
+            found = (placed, None)
+        if found is None and brief is not None:              # else in brief, in full on the results sheet
             short = tuple([ln.replace("{sheet}", str(2 + int(apart is not None))) for ln in lines] for lines in brief)
             placed = results_in_free_room(fig, sl, page, short[0], short[1], scale, info_steps, _boxes(marks))
             if placed is not None:
                 return SheetOne(placed, scale, view, fig, dwg, drawn, marks, apart is not None, *short)
-        if found is None:
-            found = _results_placed(scene, dwg, page, sl, drawing, info, warnings, info_steps, upto, viewbox, keep,
-                                    least=0.0)
+        if found is None:                                    # else one block at whatever scale reserved room has
+            found = _in_reserved_room(scene, dwg, page, info, warnings, upto, viewbox, keep, STANDARD[0])
         if found is not None:
-            sl, (scale, view, fig, (drawn, marks)) = found
+            sl = found[0]
+            if found[1] is not None:
+                scale, view, fig, (drawn, marks) = found[1]
     return SheetOne(sl, scale, view, fig, dwg, drawn, marks, apart is not None, info, warnings)
 
 
@@ -678,55 +684,27 @@ Drawn = tuple[Scale, View, Figure, tuple[Any, Any]]
 """A drawing of sheet 1 at one scale: the scale, the view, the figure, its group and chart marks."""
 
 
-def _results_placed(scene: Scene, dwg: svgwrite.Drawing, page: PageSpec, sl: SheetLayout, drawn: Drawn,
-                    info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None, upto: int | None,
-                    viewbox: Box | None, keep: Callable[[Any], bool] | None, least: float = SPLIT_KEEP
-                    ) -> tuple[SheetLayout, Drawn] | None:
-    """The results and warnings on sheet 1 when the drawing ``drawn`` (at the largest standard scale S, the frame to
-    itself, as ``sl``) reserves no room for them: the layout with them placed, and the drawing; None when they fit
-    nowhere (:func:`sheet_one` then tries their brief lines).
-
-    A reader reads one block: S, then the ISO 5455 scales s down to ``least`` × S (:data:`SPLIT_KEEP`), the
-    largest at which a layout that reserves room for them (a band above the title block, a column at the right:
-    :func:`_layouts`) draws, or one box of the drawing's free room holds them (the reserved room first on a tie: its
-    lines wrap less). Only when no such scale does it, they are split over two boxes of the free room outside the
-    figure (:func:`_pieces`), at the largest of those scales where two do. 100-04 at 1:1 set its results in three
-    boxes (now one block in a column, the drawing at 1:2). With ``least`` below SPLIT_KEEP (the last resort) every
-    standard scale down to it is tried for one block, and none for two."""
-    scale = drawn[0]
-    steps_shown, _ = shown_steps(scene, upto if keep is None else None, keep)
-    content = viewbox or content_box(scene, steps_shown, scene.evaluate([s.key for _, s in steps_shown]))
-    margin = 0.0 if viewbox else FIG_MARGIN
-    bands = [(b, figure_scale(content, b.area, margin)) for b in _layouts(page, info, warnings) if b.info_here]
-    made: dict[tuple[Box, Scale], Drawn] = {(sl.area, scale): drawn}
-
-    def at(layout: SheetLayout, s: Scale) -> Drawn:
-        if (layout.area, s) not in made:
-            mu = _mu(s)
-            box = viewbox or grow(content, FIG_MARGIN * mu)
-            view = View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), layout.area))
-            fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
-            made[(layout.area, s)] = (s, view, fig, _figure_and_marks(dwg, scene, fig, s, keep is None))
-        return made[(layout.area, s)]
-
-    series = ISO_5455 if least >= SPLIT_KEEP else STANDARD
-    scales = [scale] + sorted((x for x in series if least * scale.factor <= x.factor < scale.factor), reverse=True)
-    for s in scales:
-        for layout in [b for b, bs in bands if bs == s] + [sl]:
-            d = at(layout, s)
-            if layout.info_here:
-                return layout, d
-            placed = results_in_free_room(d[2], layout, page, info, warnings, s, steps, _boxes(d[3][1]))
-            if placed is not None and not split(placed):
-                return placed, d
-    if least < SPLIT_KEEP:
+def _in_reserved_room(scene: Scene, dwg: svgwrite.Drawing, page: PageSpec, info: Sequence[str],
+                      warnings: Sequence[str], upto: int | None, viewbox: Box | None,
+                      keep: Callable[[Any], bool] | None, least: Scale) -> tuple[SheetLayout, Drawn] | None:
+    """The layout that reserves room for the results on sheet 1 (a band above the title block, a column at the
+    right: :func:`_layouts`) drawing at the largest standard scale, if that is at least ``least``; with the
+    drawing at that scale. None without such a layout."""
+    steps, _ = shown_steps(scene, upto if keep is None else None, keep)
+    content = viewbox or content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
+    best: tuple[SheetLayout, Scale] | None = None
+    for layout in _layouts(page, info, warnings):
+        s = figure_scale(content, layout.area, 0.0 if viewbox else FIG_MARGIN)
+        if layout.info_here and s >= least and (best is None or s > best[1]):
+            best = (layout, s)
+    if best is None:
         return None
-    for s in scales:
-        d = at(sl, s)
-        placed = results_in_free_room(d[2], sl, page, info, warnings, s, steps, _boxes(d[3][1]))
-        if placed is not None:
-            return placed, d
-    return None
+    layout, s = best
+    mu = _mu(s)
+    box = viewbox or grow(content, FIG_MARGIN * mu)
+    view = View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), layout.area))
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
+    return layout, (s, view, fig, _figure_and_marks(dwg, scene, fig, s, keep is None))
 
 
 def _figure_and_marks(dwg: svgwrite.Drawing, scene: Scene, fig: Figure, scale: Scale, beside: bool
