@@ -85,7 +85,7 @@ class SheetLayout:
 class Piece:
     """A part of the results block set in a free box of its own: its corner (as ``render_info`` takes it), width
     and height, the result rows it holds (indices into the results, in their frames' order), whether it holds
-    the warnings. When the results are split, their headings are numbered (1/3 …): the pieces lie where the
+    the warnings. When the results are split, their headings are numbered (1/2, 2/2): the pieces lie where the
     room is, not in reading order."""
 
     x: float
