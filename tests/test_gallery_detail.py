@@ -20,7 +20,7 @@ from geomcon.paper import Scale
 from geomcon.problems import load_problem
 from geomcon.render.detail import MIN_LINK, mechanism_steps
 from geomcon.render.figure import shown_steps
-from geomcon.render.svg import _not_diagram, diagram_apart, place_figure
+from geomcon.render.svg import _not_diagram, sheet_one
 from geomcon.render.warning_words import warning_lines
 from geomcon.solve import solve
 
@@ -35,13 +35,11 @@ def _sheet1(pid: str):
     page = gallery_page()
     sc = sol.drawing_scene
     info, warnings = sol.figure_lines(page.lang), warning_lines(sol.warnings, page.lang)
-    sl, scale, view = place_figure(sc, page, info, warnings)
-    apart = diagram_apart(sc, page, info, warnings, scale)
-    keep = None
-    if apart is not None:
-        sl, scale, view = apart
-        keep = _not_diagram
-    return sol, page, sc, info, warnings, sl, scale, view, keep
+    from geomcon.render.results import brief_warnings
+    brief = (sol.figure_lines(page.lang, brief=True), brief_warnings(sol.warnings, page.lang, "{sheet}"))
+    one = sheet_one(sc, page, info, warnings, sol.info_steps(), brief=brief)   # 300-01 drawn at 1:1, not 2.5:1
+    keep = _not_diagram if one.apart else None
+    return sol, page, sc, one.info, one.warnings, one.layout, one.scale, one.view, keep
 
 
 @lru_cache(maxsize=None)

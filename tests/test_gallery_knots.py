@@ -18,6 +18,9 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
 - 004-02 (main and detail view), 004-01: C1's label covers its slider block, its only room clear of links and
   guides (text placement weighs a block as a thin stroke; weighing it as a link moves 25 sheets' labels).
 - 000-02: the ram's blocks sit on D1 and D2, the guide bar's ends (drawn so by the recipe).
+- 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
+  K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
+  placement's choice, hplace11f's).
 """
 from __future__ import annotations
 
@@ -47,6 +50,7 @@ KNOWN = {
     "004-03_crank_rocker_best_by_K": 2,
     "100-01_four_bar_three_positions": 2,
     "100-03_four_bar_fixed_pivots_coupler_point": 1,
+    "100-07_rocker_slider_three_positions": 1,
     "200-12_oscillating_base_radius": 1,
     "200-13_cam_valve_speeds": 1,
     "200-15_cam_handbook_laws": 1,

@@ -52,6 +52,26 @@ def ends_in_open_bracket(line: str) -> bool:
     return len(inner) <= 4
 
 
+CLOSING_WORD = re.compile("^[^\\s(\\[\u2e80-\u9fff\uf900-\uffef]+[)\\]]")
+"""A line that begins with a bracket's closing Latin word: "analytic)", "form) = 29.995°"."""
+OPENING_WORD = re.compile("[(\\[][^\\s)\\]\u2e80-\u9fff\uf900-\uffef]*$")
+"""A line that ends with a bracket's opening mark and at most its first Latin word: "(=", "(closed"."""
+
+
+def splits_a_short_bracket(before: str, line: str) -> bool:
+    """Whether the break between the lines ``before`` and ``line`` splits a bracket of at most two Latin words: 400-05's
+    "… (=" / "analytic)", 001-08's "(closed" / "form) = 29.995°" (a longer bracket may break, at a space).
+
+    >>> splits_a_short_bracket("P13 = (0.000, 116.862) mm (=", "analytic)")
+    True
+    >>> splits_a_short_bracket("γ at the change point (closed", "form) = 29.995°")
+    True
+    >>> splits_a_short_bracket("(the links cannot", "move)"), splits_a_short_bracket("a (b)", "c)")
+    (False, False)
+    """
+    return bool(OPENING_WORD.search(before.rstrip()) and CLOSING_WORD.match(line.strip()))
+
+
 def broken_rules(line: str) -> list[str]:
     """The line-break rules ``line`` breaks (none for a good line).
 
@@ -111,10 +131,15 @@ def test_no_line_of_the_gallery_breaks_inside_a_bracket_or_between_a_number_and_
     lines = 0
     for f in files:
         for root in sheets(f):
+            before = ""
             for line in text_lines(root):
                 lines += 1
                 for rule in broken_rules(line):
                     bad.setdefault((rule, line.strip()), str(f.relative_to(GALLERY)))
+                if splits_a_short_bracket(before, line):
+                    bad.setdefault(("splits a two-word bracket", f"{before.strip()} / {line.strip()}"),
+                                   str(f.relative_to(GALLERY)))
+                before = line
     assert lines > 20000
     assert not bad, "\n".join(f"{f}: {rule}: {line!r}" for (rule, line), f in sorted(bad.items()))
 
@@ -125,3 +150,4 @@ def test_the_rules_catch_the_breaks_the_reviewer_saw():
                  "undercut: rr = 5 ≥ ρmin = 1.455 of the pitch curve (at", "作位移线图 ψ–δ：δ 轴，360° 对应 450 mm（画",
                  "（即", "°)", "crank-rocker: BC in [190,"):
         assert broken_rules(line), line
+    assert splits_a_short_bracket("P13 = (0.000, 116.862) mm (=", "analytic)")      # 400-05's narrow column

@@ -15,10 +15,10 @@ import shapely
 from geomcon.gallery import gallery_page
 from geomcon.paper import Scale
 from geomcon.problems import load_problem
-from geomcon.render.figure import build_figure
 from geomcon.render.free_area import CLEAR
 from geomcon.render.shapes import obstacle
-from geomcon.render.svg import _not_diagram, diagram_apart, place_figure, results_in_free_room
+from geomcon.render.svg import (SPLIT_KEEP, _boxes, _layouts, _not_diagram, place_figure, results_in_free_room,
+                                 sheet_one, split)
 from geomcon.render.warning_words import warning_lines
 from geomcon.solve import solve
 
@@ -28,16 +28,27 @@ NO_ROOM: dict[str, str] = {}
 """Drawings whose free room holds no box for their results, not even for their brief lines (one per result, the
 doubtful printed answers in one warning: :func:`geomcon.render.results.brief_warnings`): they would keep a sheet of
 their own. Empty since 000-03, 000-05, 000-06, 000-07 and 100-07 print their results in brief on sheet 1 (their
-full lines 206, 106 + 8 warnings, 356, 338 and 60 mm tall found no box there); the list may only stay empty."""
+full lines 206, 106 + 8 warnings, 356, 338 and 60 mm tall found no box there; 100-07's now go whole into a band at
+1:2, and 200-15's go in brief); the list may only stay empty."""
 FREE_ROOM = ["000-04_slotter_cam_psi0", "001-01_crank_rocker_change_point", "001-04_guide_bar_offset",
              "001-06_crank_slider", "001-07_crank_slider_strokes", "001-13_radar_antenna_K1",
              "001-14_crank_rocker_K1_frame_angles", "001-15_crank_rocker_frame_and_position",
              "001-17_crank_rocker_theta", "001-24_cam_displacement_at_100", "200-01_cam_roller_offset",
-             "200-03_cam_roller_undercut", "200-15_cam_handbook_laws", "200-16_cam_poly_4567",
-             "200-17_cam_table_law", "200-20_oscillating_base_radius_rho", "400-05_crank_slider_instant_centres",
-             "100-04_four_bar_fixed_pivots_coupler_angles", "300-01_four_bar_double_rocker_pressure_angle"]
-"""The drawings that kept their results off sheet 1 before (hlook11 item A1) and now set them in free room
-(000-04: results and warnings apart; 100-04, 300-01: the results in three numbered boxes)."""
+             "200-03_cam_roller_undercut", "200-16_cam_poly_4567", "200-17_cam_table_law",
+             "200-20_oscillating_base_radius_rho", "400-05_crank_slider_instant_centres"]
+"""The drawings that kept their results off sheet 1 before (hlook11 item A1) and now set them in free room at
+the scale they get with the frame to themselves (000-04: results and warnings apart)."""
+RESERVED = {"100-04_four_bar_fixed_pivots_coupler_angles": "1:2", "100-07_rocker_slider_three_positions": "1:2",
+            "300-01_four_bar_double_rocker_pressure_angle": "1:1"}
+"""Drawings whose results no one box of the free room holds (100-04 and 300-01 had them in three boxes, 300-01's
+third inside the four-bar; 100-07 in two): one block in room reserved for it (a column at the right, a band above
+the title block), the drawing at that layout's scale: 100-04 and 100-07 at 1:1 → 1:2 (SPLIT_KEEP: at least half);
+300-01 at 2.5:1 → 1:1, the last resort, since at 2.5:1 not even two boxes outside the figure hold them, nor one box
+their brief form."""
+BRIEF = {"200-15_cam_handbook_laws": "1:2"}
+"""Drawings whose results no one box holds at their scale, nor reserved room at half of it or more, nor two boxes
+outside the figure in reading order: their brief lines in one box of the free room at that scale,
+in full on the next sheet (200-15 set "Results" touching its s–δ chart's caption row)."""
 
 
 def _heads(svg: str, cls: str) -> list[str]:
@@ -77,26 +88,31 @@ def _scale(svg: str) -> Scale:
     return Scale.parse(re.search(r'class="tb tb-2-0"[^>]*>[^<]*?(\d+(?:\.\d+)?:\d+(?:\.\d+)?)<', svg).group(1))
 
 
-@pytest.mark.parametrize("pid", FREE_ROOM)
-def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
-    """The Results (and Warnings) box, grown by the clearance, meets none of the figure's strokes, marks,
-    symbols or texts; the drawing is at the scale it gets with no room reserved for the results; the SVG sets
-    the block where the box is."""
+def _sheet_one(pid: str):
     sol = _solution(pid)
     page = gallery_page()
     sc = sol.drawing_scene
     info, warnings = sol.figure_lines(page.lang), warning_lines(sol.warnings, page.lang)
-    sl, scale, view = place_figure(sc, page, info, warnings)
-    apart = diagram_apart(sc, page, info, warnings, scale)
-    if apart is not None:
-        sl, scale, view = apart
-    assert not sl.info_here                    # reserving room on sheet 1 would cost this drawing a scale
-    keep = None if apart is None else _not_diagram            # a cam's s–δ diagram on a sheet of its own
+    from geomcon.render.results import brief_warnings
+    brief = (sol.figure_lines(page.lang, brief=True), brief_warnings(sol.warnings, page.lang, "{sheet}"))
+    one = sheet_one(sc, page, info, warnings, sol.info_steps(), brief=brief)
+    keep = _not_diagram if one.apart else None                # a cam's s–δ diagram on a sheet of its own
     _, free_scale, _ = place_figure(sc, page, (), (), keep=keep)
+    return sol, page, info, warnings, one, free_scale
+
+
+@pytest.mark.parametrize("pid", FREE_ROOM + sorted(BRIEF))
+def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
+    """The Results (and Warnings) box, grown by the clearance, meets none of the figure's strokes, marks,
+    symbols or texts; the drawing is at the scale it gets with no room reserved for the results; the SVG sets the
+    block where the box is (:data:`BRIEF`: the brief lines)."""
+    sol, page, info, warnings, one, free_scale = _sheet_one(pid)
+    placed, scale, fig = one.layout, one.scale, one.fig
+    assert placed.info_here and placed not in _layouts(page, info, warnings)      # in free room, none reserved
     assert scale == free_scale
-    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep)
-    placed = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps())
-    assert placed is not None and placed.info_here
+    assert (one.info is not info) == (pid in BRIEF)
+    info, warnings = one.info, one.warnings
+    assert not split(placed)
     from geomcon.render.protocol import info_height
     x, y = placed.info_at
     if not placed.pieces:
@@ -123,6 +139,68 @@ def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
     assert _scale(svg) == scale
     first = re.search(r'<g id="info">.*?<text class="info-head"[^>]*\bx="([\d.]+)"', svg, re.S)
     assert first and abs(float(first.group(1)) - x) < 0.01
+
+
+@pytest.mark.parametrize("pid", sorted(RESERVED))
+def test_results_that_no_box_holds_whole_go_into_reserved_room(pid):
+    """One Results block in a layout that reserves room for it, at the scale named (:data:`RESERVED`)."""
+    sol, page, info, warnings, one, free_scale = _sheet_one(pid)
+    assert one.layout in _layouts(page, info, warnings) and one.layout.info_here and not one.layout.pieces
+    assert str(one.scale) == RESERVED[pid] and one.scale < free_scale
+    assert one.info is info
+    if one.scale.factor < SPLIT_KEEP * free_scale.factor:        # the last resort: no two boxes, nor the brief lines
+        *args, avoid = _at_free_scale(pid)
+        assert results_in_free_room(*args, sol.info_steps(), avoid) is None
+    svg = sol.sheets(page)[0]
+    assert _scale(svg) == one.scale
+    assert [h for h in _heads(svg, "info-head")] == ["Results  结果"]
+
+
+def _at_free_scale(pid: str):
+    """The figure at the scale it gets with the frame to itself, its layout, the page and its brief lines, the
+    scale and the chart marks' boxes: the arguments of ``results_in_free_room``."""
+    from geomcon.render.figure import build_figure
+    from geomcon.render.page import document
+    from geomcon.render.results import brief_warnings
+    from geomcon.render.svg import _figure_and_marks
+    sol, page, info, warnings, one, _ = _sheet_one(pid)
+    sc = sol.drawing_scene
+    sl, scale, view = place_figure(sc, page, info, warnings)
+    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu)
+    _, marks = _figure_and_marks(document(page.sheet), sc, fig, scale, True)
+    lines = [ln.replace("{sheet}", "2") for ln in sol.figure_lines(page.lang, brief=True)]
+    warned = [ln.replace("{sheet}", "2") for ln in brief_warnings(sol.warnings, page.lang, "{sheet}")]
+    return fig, sl, page, lines, warned, scale, _boxes(marks)
+
+
+def _split_sheets() -> list[str]:
+    return [svg.stem for _, svg in _drawings() if "Results (1/" in svg.read_text(encoding="utf-8")]
+
+
+def test_no_sheet_splits_its_results_in_more_than_two_boxes():
+    """A reader reads one block; when the free room has no box for it, two at most (300-01 had three)."""
+    for _, svg in _drawings():
+        text = svg.read_text(encoding="utf-8")
+        assert not re.search(r"Results \(\d+/([3-9]|\d\d)\)", text), svg.stem
+    assert len(_split_sheets()) >= 2
+
+
+@pytest.mark.parametrize("pid", _split_sheets())
+def test_a_piece_of_split_results_lies_outside_the_figure(pid):
+    """No box of a split Results block meets the convex hull of the figure's drawn elements (300-01's third box
+    lay inside the four-bar ABCD, between its links)."""
+    sol, page, _, _, one, _ = _sheet_one(pid)
+    sl = one.layout
+    if not sl.info_here:                       # the results in brief on sheet 1 (000-03), in full on a later sheet
+        from geomcon.render.results import brief_warnings
+        sheet = str(2 + one.apart)
+        lines = [ln.replace("{sheet}", sheet) for ln in sol.figure_lines(page.lang, brief=True)]
+        warned = [ln.replace("{sheet}", sheet) for ln in brief_warnings(sol.warnings, page.lang, "{sheet}")]
+        sl = results_in_free_room(one.fig, sl, page, lines, warned, one.scale, sol.info_steps(), _boxes(one.marks))
+    assert split(sl)
+    hull = shapely.convex_hull(shapely.GeometryCollection([obstacle(s) for g in one.fig.groups for s in g.shapes]))
+    for pc in sl.pieces:
+        assert not hull.intersects(shapely.box(pc.x, pc.y + 4.0, pc.x + pc.w, pc.y + pc.h)), (pid, pc)
 
 
 def _parts(svg: str) -> dict[int, tuple[float, float, float]]:

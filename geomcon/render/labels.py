@@ -274,6 +274,7 @@ def _glued(tokens: list[str]) -> list[str]:
         elif glue or (out and (t[:1] in _NO_START                  # each test behind a test of one character
                                or (not _OPEN_SET.isdisjoint(out[-1]) and _opens_short(out[-1]))
                                or ("）" in t and _closes_short(t))
+                               or (not _CLOSE_SET.isdisjoint(t) and _closes_pair(out[-1], t))
                                or (t[:1] in _UNIT_START and _unit_after_number(out[-1], t))
                                or ("第" in out[-1] and out[-1].rstrip().endswith("第")))):
             out[-1] += t
@@ -309,6 +310,7 @@ def _unit_after_number(before: str, tok: str) -> bool:
 _OPEN_ANY = "([（［【「『《“‘"
 _OPEN_SET = frozenset(_OPEN_ANY)
 _CLOSE_ANY = ")]）］】」』》”’"
+_CLOSE_SET = frozenset(_CLOSE_ANY)
 
 
 def _opens_short(tok: str) -> bool:
@@ -336,6 +338,23 @@ def _closes_short(tok: str) -> bool:
     """
     j = tok.find("）")
     return j == 1 and is_ideograph(tok[0])
+
+
+def _closes_pair(before: str, tok: str) -> bool:
+    """Whether ``tok`` closes, with its first word, a bracket of two Latin words that ``before`` opens with the
+    first ("(closed " + "form) = 29.995°", "(= " + "analytic)"): the two stay on one line, as no line may begin
+    with a bracket's closing word when its opening one ends the line before (400-05's "(=" / "analytic)"; Chinese
+    brackets keep their own rules, :func:`_opens_short`, :func:`_closes_short`).
+
+    >>> [_closes_pair(b, t) for b, t in (("(closed ", "form) "), ("A (", "B)"), ("(a b ", "c)"), ("(x) ", "y)"))]
+    [True, True, False, False]
+    """
+    j = min((i for i in map(tok.find, _CLOSE_ANY) if i >= 0), default=-1)
+    if j <= 0 or " " in tok[:j] or any(c in _OPEN_SET for c in tok[:j]) or _ANY_WIDE.search(tok[:j]):
+        return False
+    i = max(map(before.rfind, _OPEN_ANY))
+    inner = before[i + 1:].strip()
+    return i >= 0 and not any(c in _CLOSE_ANY for c in inner) and " " not in inner and not _ANY_WIDE.search(inner)
 
 
 def _short(inner: str) -> bool:

@@ -220,12 +220,14 @@ def fitted(s: str, width: float, size: float, weight: float = 1.0, least: float 
     ('abc', True)
     >>> fitted("x" * 30, 50.0, 3.5), fitted("x" * 30, 50.0, 3.5, least=3.5).endswith("…")
     ('xxxxxxxxxxxxxxxxxxxxxxxxxxxxxx', True)
+    >>> fitted("最大的点 A*（在弧上）", 26.0, 3.5, least=3.5)        # not "… A*（…"
+    '最大的点 A*…'
     """
     if text_width(s, least) * weight <= width:
         return s
     while s and text_width(s + "…", least) * weight > width:
         s = s[:-1]
-    return s.rstrip() + "…"
+    return s.rstrip().rstrip("([（［【「『《“‘").rstrip() + "…"      # no opening mark left before the cut
 
 
 def sheet_names(path: str, n: int) -> list[str]:

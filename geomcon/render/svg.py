@@ -85,7 +85,7 @@ class SheetLayout:
 class Piece:
     """A part of the results block set in a free box of its own: its corner (as ``render_info`` takes it), width
     and height, the result rows it holds (indices into the results, in their frames' order), whether it holds
-    the warnings. When the results are split, their headings are numbered (1/3 …): the pieces lie where the
+    the warnings. When the results are split, their headings are numbered (1/2, 2/2): the pieces lie where the
     room is, not in reading order."""
 
     x: float
@@ -277,6 +277,8 @@ def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Seq
         x, y, w, h = spot
         return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True)
     pieces = _pieces(room, info, warnings, steps)
+    if pieces is not None and sum(bool(pc.rows) for pc in pieces) > 1:       # the results split: outside the figure
+        pieces = _pieces(outside_hull(room, fig), info, warnings, steps)
     if pieces is None:
         return None
     first = pieces[0]
@@ -284,8 +286,32 @@ def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Seq
                    pieces=tuple(pieces))
 
 
-MAX_PIECES = 3
-"""At most this many boxes share the results and warnings on sheet 1."""
+MAX_PIECES = 2
+"""At most this many boxes share the results and warnings on sheet 1 (300-01 had three, one inside its figure)."""
+
+
+def outside_hull(room: Any, fig: Figure) -> Any:
+    """``room`` (:class:`~geomcon.render.free_area.FreeRoom`) without the convex hull of ``fig``'s drawn elements:
+    a piece of a split Results block lies outside the figure, never in a gap between its links (300-01's third
+    piece lay inside the four-bar ABCD)."""
+    import numpy as np
+    import shapely
+    from .free_area import CELL, FreeRoom
+    from .shapes import obstacle
+    hull = shapely.convex_hull(shapely.GeometryCollection([obstacle(s) for g in fig.groups for s in g.shapes]))
+    grid = room.grid.copy()
+    ny, nx = grid.shape
+    x0, y0 = room.grown[0], room.grown[1]
+    xs, ys = np.meshgrid(x0 + (np.arange(nx) + 0.5) * CELL, y0 + (np.arange(ny) + 0.5) * CELL)
+    grid[shapely.contains_xy(hull.buffer(CELL), xs, ys)] = 1      # every cell the hull touches
+    return FreeRoom((), room.region, (), grid)
+
+
+SPLIT_KEEP = 0.5
+"""Results that no one box of the drawing's free room holds go as one block into room reserved for them (a band
+above the title block, a column at the right: :func:`_layouts`) when the drawing keeps at least this share of its
+scale there (100-04, 100-07: 1:1 → 1:2); else they are split over two boxes (:func:`_pieces`): a reader reads one
+block, and a drawing at half its size is still one to construct on."""
 
 
 def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None
@@ -293,7 +319,8 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
     """The results (in their frames' order) and the warnings laid into free boxes of ``room``, greedily: all
     that is left in one box if one holds it; else the results left in one box, the warnings after; else the
     longest run of results that one box holds (the widest run over :data:`~geomcon.render.free_area.WIDTHS`),
-    the rest continued. None when :data:`MAX_PIECES` boxes do not hold them."""
+    the rest continued. None when :data:`MAX_PIECES` boxes do not hold them, or not in reading order
+    (:func:`_reading_order`: 200-15's first part lay below its second)."""
     from .free_area import WIDTHS
     order = sorted(range(len(info)), key=lambda i: (steps[i] if steps is not None else None) or 0)
 
@@ -311,7 +338,7 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
         spot = room.find([(w, height(rest, w, warn)) for w in WIDTHS])
         if spot is not None:
             out.append(piece(spot, rest, warn))
-            return _reading_order(whole, out, order, height) or out
+            return _reading_order(whole, out, order, height)
         if not rest:
             return None
         best: tuple[int, tuple[float, float, float, float]] | None = None
@@ -432,15 +459,102 @@ def step_captions_group(dwg: svgwrite.Drawing, scene: Scene, box: Box, lang: str
         en, zh = scene.caption(group[0].key)
         zh = zh_punct(zh) if zh else ""
         first = f"{k}. {(zh or en) if lang == 'zh' else en}"
-        lines = wrap(first, width, INFO_SIZE) + (wrap(zh, width, INFO_SIZE) if lang == "both" and zh else [])
-        if len(lines) > most:
-            lines = lines[:most - 1] + [fitted(" ".join(lines[most - 1:]), width, INFO_SIZE, least=INFO_SIZE)]
+        parts = [(first, wrap(first, width, INFO_SIZE))] + ([(zh, wrap(zh, width, INFO_SIZE))]
+                                                            if lang == "both" and zh else [])
+        lines = [ln for _, part in parts for ln in part]
+        if len(lines) > most:                  # the rest on the last line, cut short: each text as it was written
+            tail, n = [], 0
+            for src, part in parts:
+                if part[max(0, most - 1 - n):]:
+                    tail.append(rejoined(src, part[max(0, most - 1 - n):]))
+                n += len(part)
+            lines = lines[:most - 1] + [fitted(" ".join(tail), width, INFO_SIZE, least=INFO_SIZE)]
         for i, ln in enumerate(lines):
             el = _line(dwg, ln, box[0], box[1] + INFO_SIZE + i * lh, INFO_SIZE, HIGHLIGHT,
                        "stepcap current" if k == upto else "stepcap")
             el.attribs["data-step"] = str(k)
             g.add(el)
     return g
+
+
+@dataclass(frozen=True)
+class SheetOne:
+    """Sheet 1 as :func:`render_sheets` lays it out before the detail view: the layout (where the results are,
+    :attr:`SheetLayout.info_here` False when sheet 1 has no room for them in full), the scale, the view, the
+    figure, the document it is drawn into, the figure's group and the s–δ chart's marks beside it (None without
+    one), whether a cam's s–δ diagram is on a sheet of its own (``apart``: the cam alone on sheet 1)."""
+
+    layout: SheetLayout
+    scale: Scale
+    view: View
+    fig: Figure
+    dwg: Any
+    drawn: Any
+    marks: Any
+    apart: bool
+    info: Sequence[str] = ()
+    """The result lines sheet 1 prints (the brief ones when the full ones find no room there)."""
+    warnings: Sequence[str] = ()
+
+
+def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (), warnings: Sequence[str] = (),
+              info_steps: Sequence[int] | None = None, upto: int | None = None, viewbox: Box | None = None,
+              brief: tuple[Sequence[str], Sequence[str]] | None = None) -> SheetOne:
+    """Where sheet 1 puts the drawing and the results: the layout at the largest standard scale
+    (:func:`place_figure`, :func:`diagram_apart`), and when that reserves no room for the results, a reader reads
+    one block: one box of the drawing's free room (:func:`results_in_free_room`); else room reserved for them if
+    the drawing keeps :data:`SPLIT_KEEP` of its scale there (:func:`_in_reserved_room`; 100-04 and 100-07: 1:1 →
+    1:2); else two boxes of the free room outside the figure; else the ``brief`` lines (results, warnings;
+    ``{sheet}`` in them the number of the sheet with the full ones) in the free room; else room reserved for them
+    at whatever scale (300-01: 2.5:1 → 1:1, in a band above the title block; else they had no place on sheet 1);
+    else on a sheet of their own (``layout.info_here`` False)."""
+    sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
+    apart = None if viewbox is not None else diagram_apart(scene, page, info, warnings, scale)
+    if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
+        sl, scale, view = apart
+    keep = None if apart is None else _not_diagram
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
+    dwg = document(page.sheet)
+    drawn, marks = _figure_and_marks(dwg, scene, fig, scale, apart is None)
+    if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
+        placed = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps, _boxes(marks))
+        found = None if placed is None or split(placed) else (placed, None)
+        if found is None:                                    # one block at no less than half the scale
+            found = _in_reserved_room(scene, dwg, page, info, warnings, upto, viewbox, keep,
+                                      Scale(SPLIT_KEEP * scale.paper, scale.real))
+        if found is None and placed is not None:             # else in two boxes
+            found = (placed, None)
+        if found is None and brief is not None:              # else in brief, in full on the results sheet
+            short = tuple([ln.replace("{sheet}", str(2 + int(apart is not None))) for ln in lines] for lines in brief)
+            placed = results_in_free_room(fig, sl, page, short[0], short[1], scale, info_steps, _boxes(marks))
+            if placed is not None:
+                return SheetOne(placed, scale, view, fig, dwg, drawn, marks, apart is not None, *short)
+        if found is None:                                    # else one block at whatever scale reserved room has
+            found = _in_reserved_room(scene, dwg, page, info, warnings, upto, viewbox, keep, STANDARD[0])
+        if found is not None:
+            sl = found[0]
+            if found[1] is not None:
+                scale, view, fig, (drawn, marks) = found[1]
+    return SheetOne(sl, scale, view, fig, dwg, drawn, marks, apart is not None, info, warnings)
+
+
+def rejoined(src: str, lines: Sequence[str]) -> str:
+    """Consecutive wrapped ``lines`` of the text ``src`` set on one line again, as ``src`` has them: with the space
+    the break dropped between Latin words, none between Chinese ones (a truncated step caption read
+    "以 O 为圆心 作基圆" for "以 O 为圆心作基圆").
+
+    >>> rejoined("以 O 为圆心作基圆，交于 B0", ["为圆心", "作基圆，交于 B0"]), rejoined("a long one", ["long", "one"])
+    ('为圆心作基圆，交于 B0', 'long one')
+    """
+    out, at = "", None
+    for ln in lines:
+        i = src.find(ln, at or 0)
+        if i < 0:                               # not found as written: keep it apart
+            out, at = (out + " " if out else "") + ln, at
+            continue
+        out += (src[at:i] if at is not None and out else "") + ln
+        at = i + len(ln)
+    return out
 
 
 def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
@@ -487,25 +601,17 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     """
     sheet, lang = page.sheet, page.lang
     last = len(scene.frames())             # the warnings show with the last frame
-    sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
-    apart = None if viewbox is not None else diagram_apart(scene, page, info, warnings, scale)
-    if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
-        sl, scale, view = apart
-    keep = None if apart is None else _not_diagram
-    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
+    one = sheet_one(scene, page, info, warnings, info_steps, upto, viewbox, brief)
+    sl, scale, view, fig, dwg, drawn, marks = one.layout, one.scale, one.view, one.fig, one.dwg, one.drawn, one.marks
+    apart = one.apart
+    here = None if brief is None else tuple([ln.replace("{sheet}", str(2 + int(apart))) for ln in lines]
+                                            for lines in brief)
     origin = view.origin
-    if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
-        sl = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps) or sl
     fx0, fy0, fx1, fy1 = frame_box(sheet)
     tb = title_block_box(sheet)
-    extra = int(apart is not None)
-    moved = not sl.info_here and bool(info or warnings)      # the results head the first text sheet
-    shown_info, shown_warnings = info, warnings             # what sheet 1 prints
-    here = None if brief is None else tuple([ln.replace("{sheet}", str(2 + extra)) for ln in lines] for lines in brief)
-    if moved and here is not None:                          # in brief on sheet 1, in full on the results sheet
-        placed = results_in_free_room(fig, sl, page, here[0], here[1], scale, info_steps)
-        if placed is not None:
-            sl, shown_info, shown_warnings = placed, here[0], here[1]
+    extra = int(apart)
+    shown_info, shown_warnings = one.info, one.warnings       # what sheet 1 prints
+    moved = (not sl.info_here and bool(info or warnings)) or shown_info is not info   # the results head a text sheet
     asked: list[tuple[float, float]] = []
     detail = None if viewbox is not None else mechanism_detail(scene, fig, sl, page, shown_info, shown_warnings,
                                                                 scale, upto, asked)
@@ -519,24 +625,19 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     chunks = info_pages(info, warnings, info_steps, text_w, text_h) if moved else []
     skip = chunks[-1][2] + BLOCK_GAP if chunks else 0.0      # the protocol's heading as far below as Warnings'
 
-    notes = diagram_notes(scene, 2) if apart is not None else None
+    notes = diagram_notes(scene, 2) if apart else None
     pages = paginate(scene, text_w, text_h, lang, skip, notes) if protocol else []
     lead = max(len(chunks) - 1, 0)                          # sheets of results alone before the protocol's first
     n = 1 + extra + lead + max(len(pages), int(moved))
     block = TitleBlock(title or scene.title, problem or "—", recipe or "—", scale, str(sheet), 1, n, lang)
 
-    dwg = document(sheet)
     dwg.defs.add(dwg.style(CSS))
     dwg.attribs["class"] = "sheet"
     dwg.add(step_captions_group(dwg, scene, sl.caption, lang, upto))
-    drawn = dwg.add(_figure_group(dwg, fig))
+    dwg.add(drawn)
     dwg.add(_scale_bar(dwg, fig, origin[0], origin[1] + fig.view.size[1] + 6.0, scale))
-    if apart is None and "sd_axes" in scene:       # the s–δ diagram beside the cam: its axes ticked alike
-        from .charts import diagram_axes_marks, text_boxes
-        axes = scene.evaluate(["sd_axes"])["sd_axes"]
-        ax, ay = fig.view.xy(*axes.at(0.0, 0.0))
-        dwg.add(diagram_axes_marks(dwg, fig.view, axes, scale, ax, ay + 15.0, _step_number(fig, "sd_delta_axis"),
-                                   text_boxes(svg_string(drawn))))
+    if marks is not None:
+        dwg.add(marks)
     if detail is not None:
         dwg.add(_detail_group(dwg, *detail, lang))
     if sl.info_here and sl.pieces:
@@ -552,10 +653,10 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
         dwg.add(render_info(dwg, shown_info, *sl.info_at, sl.info_w, shown_warnings, info_steps, upto, lang, last))
     dwg.add(title_block(dwg, sheet, block))
     out = [svg_string(dwg)]
-    if apart is not None:
+    if apart:
         out.append(_diagram_sheet(scene, page, replace(block, sheet=2), upto))
     shown = fig.shown
-    values = fig.values if apart is None else scene.evaluate([st.key for _, st in shown_steps(scene, upto)[0]])
+    values = fig.values if not apart else scene.evaluate([st.key for _, st in shown_steps(scene, upto)[0]])
     for number in range(2 + extra, n + 1):
         d = _text_sheet(sheet, replace(block, sheet=number, scale=None))
         top = fy0 + INSET
@@ -572,6 +673,70 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
                                   shown if upto is not None else None, lang))
         out.append(svg_string(d))
     return out
+
+
+def split(sl: SheetLayout) -> bool:
+    """Whether ``sl`` sets the results in more than one box (the warnings in a box of their own do not count)."""
+    return sum(bool(pc.rows) for pc in sl.pieces) > 1
+
+
+Drawn = tuple[Scale, View, Figure, tuple[Any, Any]]
+"""A drawing of sheet 1 at one scale: the scale, the view, the figure, its group and chart marks."""
+
+
+def _in_reserved_room(scene: Scene, dwg: svgwrite.Drawing, page: PageSpec, info: Sequence[str],
+                      warnings: Sequence[str], upto: int | None, viewbox: Box | None,
+                      keep: Callable[[Any], bool] | None, least: Scale) -> tuple[SheetLayout, Drawn] | None:
+    """The layout that reserves room for the results on sheet 1 (a band above the title block, a column at the
+    right: :func:`_layouts`) drawing at the largest standard scale, if that is at least ``least``; with the
+    drawing at that scale. None without such a layout."""
+    steps, _ = shown_steps(scene, upto if keep is None else None, keep)
+    content = viewbox or content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
+    best: tuple[SheetLayout, Scale] | None = None
+    for layout in _layouts(page, info, warnings):
+        s = figure_scale(content, layout.area, 0.0 if viewbox else FIG_MARGIN)
+        if layout.info_here and s >= least and (best is None or s > best[1]):
+            best = (layout, s)
+    if best is None:
+        return None
+    layout, s = best
+    mu = _mu(s)
+    box = viewbox or grow(content, FIG_MARGIN * mu)
+    view = View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), layout.area))
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
+    return layout, (s, view, fig, _figure_and_marks(dwg, scene, fig, s, keep is None))
+
+
+def _figure_and_marks(dwg: svgwrite.Drawing, scene: Scene, fig: Figure, scale: Scale, beside: bool
+                      ) -> tuple[Any, Any]:
+    """The figure's group and, when a cam's s–δ diagram is drawn ``beside`` it on sheet 1, the diagram's axes
+    marks and caption row (:func:`geomcon.render.charts.diagram_axes_marks`; None without one), set clear of the
+    figure's texts. Made before the results are placed: the results keep off the caption row (001-24, 200-03 and
+    200-17 printed "Results 结果" over "δ: 360° = 82.5 mm;  s 1:2")."""
+    drawn = _figure_group(dwg, fig)
+    if not beside or "sd_axes" not in scene:
+        return drawn, None
+    from .charts import diagram_axes_marks, text_boxes
+    axes = scene.evaluate(["sd_axes"])["sd_axes"]
+    ax, ay = fig.view.xy(*axes.at(0.0, 0.0))
+    return drawn, diagram_axes_marks(dwg, fig.view, axes, scale, ax, ay + 15.0, _step_number(fig, "sd_delta_axis"),
+                                     text_boxes(svg_string(drawn)))
+
+
+CAPTION_GAP = 1.0
+"""Paper mm between a chart's caption row and a block set in the free room below it (the free room's clearance,
+:data:`~geomcon.render.free_area.CLEAR`, is for strokes; a caption and a heading are apart at a line's spacing)."""
+
+
+def _boxes(group: Any) -> list[Box]:
+    """The paper boxes of the texts of ``group`` (none for None), shrunk so that a block placed after it in the
+    free room keeps :data:`CAPTION_GAP` from them."""
+    if group is None:
+        return []
+    from .charts import text_boxes
+    from .free_area import CLEAR
+    d = CLEAR - CAPTION_GAP
+    return [(b[0] + d, b[1] + d, max(b[0] + d, b[2] - d), max(b[1] + d, b[3] - d)) for b in text_boxes(svg_string(group))]
 
 
 def info_pages(info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None, width: float,
