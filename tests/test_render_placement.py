@@ -324,3 +324,23 @@ def test_turned_text_boxes_are_measured_by_their_sides_and_the_rest_by_segments(
         want = shapely.distance(box, turned)
         assert min(m.known[k], placed.exact(box, m.pending_of(k))) == pytest.approx(
             min(want, ENOUGH) if want > 0.0 else -min(2.0, 0.6 * math.sqrt(shapely.area(box & turned))), abs=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_a_texts_bound_is_never_below_the_score_it_gets(seed):
+    """:meth:`Placer.bound` (what :func:`.figure._foresee` prepares fallbacks by) is at least the score
+    :meth:`Placer.best` gives the text, whatever was placed before it; with nothing placed it is that score,
+    or above it only by what GEOS finds a box covers of an area (never more than 2)."""
+    rng = random.Random(700 + seed)
+    obstacles, owners = random_figure(rng)
+    placer = Placer(obstacles, (0.0, 0.0, 60.0, 60.0))
+    jobs = [(random_request(rng), rng.choice(owners)) for _ in range(20)]
+    placer.prepare(jobs)
+    bounds = [placer.bound(req, owner) for req, owner in jobs]
+    for (req, owner), bound in zip(jobs, bounds):
+        fresh = Placer(obstacles, (0.0, 0.0, 60.0, 60.0)).best(req, owner)[1]
+        assert fresh <= bound <= fresh + 2.0 + 1e-9
+    for (req, owner), bound in zip(jobs, bounds):
+        centre, score = placer.best(req, owner)
+        assert score <= bound
+        placer.commit(req.box(*centre))

@@ -631,6 +631,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     tried = _fan_options(groups, pending)
     placer.prepare([(t.request, g.key) for g, (drawn, _) in zip(groups, pending) for t in drawn.texts]
                    + [job for _, _, options in tried for _, jobs in options for job in jobs])   # in one pass
+    every = [(g, is_cur, t) for g, (drawn, is_cur) in zip(groups, pending) for t in drawn.texts]
+    _foresee(placer, [(g.key, t) for g, _, t in every])
     fanned: dict[int, TextRequest] = {}
     texts: list[Any] = []
     steps_of = {g.key: (g, cur) for g, (_, cur) in zip(groups, pending) if not g.arc}     # a label's parts
@@ -688,7 +690,6 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
         else:
             g.shapes.append(_text_at(t, centre[0], centre[1], colour))
 
-    every = [(g, is_cur, t) for g, (drawn, is_cur) in zip(groups, pending) for t in drawn.texts]
     fixed = [x for x in every if x[2].cls == "mark-text" and x[2].request.candidates]
     for x in fixed:                             # a dimension's value first: it has only its few places on its line
         put(*x)
@@ -696,6 +697,31 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     for x in every:
         if not (x[2].cls == "mark-text" and x[2].request.candidates):
             put(*x)
+
+
+def _foresee(placer: Placer, texts: list[tuple[str, TextRequest]]) -> None:
+    """Prepare together (:meth:`.Placer.prepare`, one pass instead of one each) the other requests that
+    ``put`` in :func:`_place_texts` will surely try for ``texts`` (step key, text): those whose best score against
+    the drawing alone (:meth:`.Placer.bound`; what is placed later only lowers it) is already below the threshold
+    that sends them there: a point's label's leader form (:func:`_led`) below 0, its fallback below
+    :data:`CROWDED`, and the own labels of joined near points (:attr:`TextRequest.alone`, then their leader
+    forms). Only the work is moved: every score is what preparing each one alone gives."""
+    for _ in range(2):
+        jobs: list[tuple[Request, str]] = []
+        later: list[tuple[str, TextRequest]] = []
+        for key, t in texts:
+            bound = placer.bound(t.request, key)
+            if t.fallback is not None and t.fallback.runs != t.runs and bound < CROWDED:
+                jobs.append((t.fallback.request, key))
+            if bound >= 0.0:
+                continue
+            if t.alone:
+                jobs += [(a.request, k) for k, a in t.alone]
+                later += list(t.alone)
+            if t.fallback is None and t.cls == "label" and not t.optional and not t.request.candidates:
+                jobs.append((_led(t).request, key))
+        placer.prepare(jobs)
+        texts = later
 
 
 def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: float) -> bool:

@@ -313,6 +313,14 @@ class Placer:
             self._measure(batch, wave)
             texts = [t for t, _ in wave]
 
+    def bound(self, req: Request, owner: str) -> float:
+        """The highest score :meth:`best` can give ``req`` (prepared if need be): its best candidate's against the
+        fixed drawing alone (what is placed later only lowers a score; within 1e-12). A text whose bound is
+        already below a threshold surely takes its fallback, which can then be prepared with the others."""
+        self.prepare([(req, owner)])
+        t = self._ready[req, owner]
+        return t._best + 1e-12 if t.n else -math.inf
+
     def _barred(self, c: Candidates) -> np.ndarray:
         """Whether the leader of each led candidate of ``c`` crosses a link or a pivot symbol (an obstacle of
         weight :data:`HARD`) not of its text's own step: one query of a tree of them for all."""
