@@ -481,6 +481,9 @@ class Placed:
         self._others: list[shapely.Geometry] = []            # neither a rectangle nor a leader
         self._others_tree: shapely.STRtree | None = None
         self._arrays: tuple[np.ndarray, ...] | None = None
+        self._rect_rows = np.empty((5, 16))                 # the rectangles' bounds and index, grown in place
+        self._leader_rows = np.empty((9, 16))               # the segments' bounds, ends and index
+        self._hull_edges: list[tuple[np.ndarray, ...]] = []  # each turned box's corners and sides (:func:`_inside`)
         self._layer = Layer([])                 # all of it as segments, grown as it is needed (:meth:`_segments`)
 
     def __len__(self) -> int:
@@ -492,34 +495,43 @@ class Placed:
         if rect is not None:
             self._rects.append(rect)
             self._rect_ids.append(len(self.geoms))
+            self._rect_rows = _row(self._rect_rows, len(self._rects) - 1, (*rect, len(self.geoms)))
         elif shapely.get_type_id(geom) == 1 and shapely.get_num_coordinates(geom) == 2:
             ax, ay, bx, by = shapely.get_coordinates(geom).ravel().tolist()
-            self._leaders.append((ax, ay, bx, by))
-            self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
-            self._leader_ids.append(len(self.geoms))
+            self._leader(ax, ay, bx, by)
         else:
             corners = _convex_of(geom)
             if corners is None:
                 self._general = True
             else:                                           # a turned box: its sides as segments
                 self._hulls.append((corners, len(self.geoms)))
-                for (ax, ay), (bx, by) in zip(corners.tolist(), np.roll(corners, -1, axis=0).tolist()):
-                    self._leaders.append((ax, ay, bx, by))
-                    self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
-                    self._leader_ids.append(len(self.geoms))
+                b = np.roll(corners, -1, axis=0)
+                self._hull_edges.append((corners[:, 0][:, None], corners[:, 1][:, None],
+                                         (b[:, 0] - corners[:, 0])[:, None], (b[:, 1] - corners[:, 1])[:, None]))
+                for (ax, ay), (bx, by) in zip(corners.tolist(), b.tolist()):
+                    self._leader(ax, ay, bx, by)
             self._others.append(geom)
             self._others_tree = None
         self.geoms.append(geom)
         self._arrays = None
 
+    def _leader(self, ax: float, ay: float, bx: float, by: float) -> None:
+        """Record a segment (a leader, a side of a turned box) of the geometry being appended."""
+        self._leaders.append((ax, ay, bx, by))
+        self._leader_bounds.append((min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)))
+        self._leader_ids.append(len(self.geoms))
+        self._leader_rows = _row(self._leader_rows, len(self._leaders) - 1,
+                                 (*self._leader_bounds[-1], ax, ay, bx, by, len(self.geoms)))
+
     def _dense(self) -> tuple[np.ndarray, ...]:
         """The rectangles' and the segments' (leaders, sides of turned boxes) bounds side by side (x0, y0, x1,
         y1; the rectangles first), the segments' ends (ax, ay, bx, by) and the index into :attr:`geoms` of each
-        of them."""
+        of them (from the rows kept as they were appended)."""
         if self._arrays is None:
-            bounds = np.array(self._rects + self._leader_bounds, dtype=float).reshape(-1, 4).T.copy()
-            ends = np.array(self._leaders, dtype=float).reshape(-1, 4).T.copy()
-            self._arrays = (*bounds, *ends, np.array(self._rect_ids + self._leader_ids, dtype=np.intp))
+            r, s = self._rect_rows[:, :len(self._rects)], self._leader_rows[:, :len(self._leaders)]
+            bounds = np.concatenate((r[:4], s[:4]), axis=1)
+            ids = np.concatenate((r[4], s[8])).astype(np.intp)
+            self._arrays = (*bounds, *s[4:8].copy(), ids)
         return self._arrays
 
     def _segments(self) -> Layer:
@@ -561,20 +573,21 @@ class Placed:
                 least(known, k, d)
                 touch[k[~hit], nr + j[~hit]] = False            # their bounds meet, they do not
         k, j = np.nonzero(touch)
-        p = ids[j]
-        if self._hulls:                                     # boxes inside a turned box; a pair once
-            inside = [(np.flatnonzero(_within(corners, boxes.cx, boxes.cy)), i) for corners, i in self._hulls]
-            k = np.concatenate([k] + [w for w, _ in inside])
-            p = np.concatenate([p] + [np.full(len(w), i, dtype=np.intp) for w, i in inside])
-            pair = np.unique(k * len(self.geoms) + p)
-            k, p = pair // len(self.geoms), pair % len(self.geoms)
-        touching = np.zeros(n, dtype=bool)
+        if self._hulls:                                     # boxes inside a turned box; a pair once, in order
+            pairs = np.zeros((n, len(self.geoms)), dtype=bool)
+            pairs[k, ids[j]] = True
+            for (corners, i), edges in zip(self._hulls, self._hull_edges):
+                pairs[:, i] |= _inside(*edges, boxes.cx, boxes.cy)
+            k, p = np.nonzero(pairs)
+            touching = pairs.any(axis=1)
+        else:
+            p = ids[j]
+            touching = touch.any(axis=1)
         if not len(k):
             return Measured(known, known, known, touching, (_NONE, _NONE))
-        touching[k] = True
         hi, lo = known.copy(), known.copy()
-        least(hi, k, np.zeros(len(k)))
-        least(lo, k, np.full(len(k), -2.0))
+        np.minimum(hi, 0.0, out=hi, where=touching)
+        np.minimum(lo, -2.0, out=lo, where=touching)
         return Measured(known, hi, lo, touching, (k, p))
 
     def across(self, segments: np.ndarray) -> np.ndarray:
@@ -639,6 +652,28 @@ def _within(corners: np.ndarray, px: np.ndarray, py: np.ndarray) -> np.ndarray:
     side = ((b[:, 0] - a[:, 0])[:, None] * (py[None, :] - a[:, 1][:, None])
             - (b[:, 1] - a[:, 1])[:, None] * (px[None, :] - a[:, 0][:, None]))
     return (side >= 0.0).all(axis=0) | (side <= 0.0).all(axis=0)
+
+
+def _inside(ax: np.ndarray, ay: np.ndarray, ex: np.ndarray, ey: np.ndarray, px: np.ndarray, py: np.ndarray
+            ) -> np.ndarray:
+    """:func:`_within` from a polygon's corners (``ax``, ``ay``) and sides (``ex``, ``ey``: to the next corner),
+    as columns: the same numbers.
+
+    >>> sq = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]])
+    >>> e = np.roll(sq, -1, axis=0) - sq
+    >>> _inside(sq[:, :1], sq[:, 1:], e[:, :1], e[:, 1:], np.array([1.0, 3.0]), np.array([0.5, 0.5])).tolist()
+    [True, False]
+    """
+    side = ex * (py - ay) - ey * (px - ax)
+    return (side >= 0.0).all(axis=0) | (side <= 0.0).all(axis=0)
+
+
+def _row(rows: np.ndarray, i: int, values: tuple[float, ...]) -> np.ndarray:
+    """``rows`` with column ``i`` set to ``values`` (twice as many columns when full)."""
+    if i == rows.shape[1]:
+        rows = np.concatenate((rows, np.empty_like(rows)), axis=1)
+    rows[:, i] = values
+    return rows
 
 
 def _rect_of(geom: shapely.Geometry) -> tuple[float, float, float, float] | None:
