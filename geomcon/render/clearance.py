@@ -152,11 +152,11 @@ def turn(angle: float) -> tuple[float, float]:
     return (0.0 if abs(c) < 2.5e-16 else c), (0.0 if abs(s) < 2.5e-16 else s)
 
 
-def pair_distance(boxes: Boxes, k: np.ndarray, ax: np.ndarray, ay: np.ndarray, bx: np.ndarray, by: np.ndarray
-                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def pair_distance(boxes: Boxes, k: np.ndarray, ax: np.ndarray, ay: np.ndarray, bx: np.ndarray, by: np.ndarray,
+                  wanted: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Distance between box ``k[i]`` and segment i (ends a, b), whether they meet, and the length of the
-    segment inside the box (0 where they miss). A turned box is measured in its own frame (the segment turned
-    back about its centre)."""
+    segment inside the box (0 where they miss, and where ``wanted`` is False when given). A turned box is
+    measured in its own frame (the segment turned back about its centre)."""
     x0, y0, x1, y1 = boxes.x0[k], boxes.y0[k], boxes.x1[k], boxes.y1[k]
     turned = boxes.sin[k] != 0.0
     if turned.any():
@@ -170,7 +170,7 @@ def pair_distance(boxes: Boxes, k: np.ndarray, ax: np.ndarray, ay: np.ndarray, b
             px[t], py[t] = ux * c + uy * s, uy * c - ux * s
     d, hit = box_segment(x0, y0, x1, y1, ax, ay, bx, by)
     inside = np.zeros(len(d))
-    h = np.flatnonzero(hit)
+    h = np.flatnonzero(hit if wanted is None else hit & wanted)
     if len(h):
         inside[h] = inside_length(x0[h], y0[h], x1[h], y1[h], ax[h], ay[h], bx[h], by[h])
     return d, hit, inside
@@ -377,11 +377,11 @@ class Layer:
 
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from this layer's geometries (not those of a box's own step)."""
-        ax, ay, bx, by, parent, _, allow, _, _, _, weight, own = self.arrays()
+        ax, ay, bx, by, parent, _, allow, _, _, simple, weight, own = self.arrays()
         n = len(boxes)
         k, s, mine = self.pairs(boxes)
-        d, hit, inside = pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s])
-        p = parent[s]
+        p = parent[s]               # what a box covers is summed for other steps' geometries not known complex
+        d, hit, inside = pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s], ~mine & (simple[p] != 0))
         known = np.full(n, ENOUGH)
         cross = np.zeros(n)
         if mine.any():                                          # its own step's: crossings only
