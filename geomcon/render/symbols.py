@@ -178,20 +178,31 @@ class Near(NamedTuple):
     """``pts`` as one shapely MultiPoint (None without points)."""
 
 
+def _lines(polylines: Any) -> np.ndarray:
+    """``shapely.LineString`` of each of ``polylines`` (the same coordinates), made in one call.
+
+    >>> _lines([((0, 0), (1, 0)), ((0, 1), (1, 1), (2, 2))]).tolist() == [shapely.LineString([(0, 0), (1, 0)]),
+    ...                                                                 shapely.LineString([(0, 1), (1, 1), (2, 2)])]
+    True
+    """
+    xy = [np.asarray(q, dtype=float).reshape(-1, 2) for q in polylines]
+    return shapely.linestrings(np.concatenate(xy), indices=np.repeat(np.arange(len(xy)), [len(q) for q in xy]))
+
+
 def _near(c: XY, ctx: Context) -> Near:
     """What a ground symbol at ``c`` may meet, whichever way it turns: the links, fixed links and curves drawn
     as links (a cam's profile), the angle marks' sectors and the dimensions' lines
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
     spot = shapely.Point(c)
     lines = ctx.links + ctx.frames + ctx.curves    # a hatch across the frame AD or a cam's profile reads as wrong
-    links = np.array([shapely.LineString(q) for q in lines], dtype=object) if lines else None    # as across a link
+    links = _lines(lines) if lines else None                                     # as across a link
     pies = np.array([shapely.Polygon(p) for p in ctx.sectors], dtype=object) if ctx.sectors else None
     if links is not None:
         links = links[shapely.dwithin(links, spot, GROUND_REACH)]
     if pies is not None:
         pies = pies[shapely.dwithin(pies, spot, GROUND_REACH)]
     pts = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
-    dims = np.array([shapely.LineString(q) for q in ctx.dims], dtype=object) if ctx.dims else None
+    dims = _lines(ctx.dims) if ctx.dims else None
     if dims is not None:
         dims = dims[shapely.dwithin(dims, spot, GROUND_REACH)]
     apart = ~shapely.dwithin(links, spot, 0.5) if links is not None and len(links) else None
