@@ -344,3 +344,21 @@ def test_a_texts_bound_is_never_below_the_score_it_gets(seed):
         centre, score = placer.best(req, owner)
         assert score <= bound
         placer.commit(req.box(*centre))
+
+
+def test_placed_measure_reads_turned_boxes_as_the_convex_test_does():
+    """``Placed.measure``'s centres inside a turned box (:func:`.clearance._inside`, the sides kept as columns) are
+    :func:`.clearance._within`'s, bit for bit, for random turned boxes and points on and near their edges."""
+    from geomcon.render.clearance import _inside, _within
+
+    rng = random.Random(11)
+    for _ in range(300):
+        box = affinity.rotate(shapely.box(0, 0, rng.uniform(1, 9), rng.uniform(1, 4)), rng.uniform(-90, 90))
+        xy = shapely.get_coordinates(box)[:-1]
+        e = np.roll(xy, -1, axis=0) - xy
+        t = np.array([rng.random() for _ in range(40)])
+        i = np.array([rng.randrange(4) for _ in range(40)])
+        px = np.r_[xy[i, 0] + t * e[i, 0], np.array([rng.uniform(-2, 11) for _ in range(40)])]
+        py = np.r_[xy[i, 1] + t * e[i, 1], np.array([rng.uniform(-2, 11) for _ in range(40)])]
+        got = _inside(xy[:, :1], xy[:, 1:], e[:, :1], e[:, 1:], px, py)
+        assert got.tolist() == _within(xy, px, py).tolist()
