@@ -75,15 +75,20 @@ class TextRequest:
 
 @dataclass
 class Drawn:
-    """What one value draws: shapes now, texts after placement."""
+    """What one value draws: shapes now, texts after placement, and the areas texts keep out of."""
 
     shapes: list[Shape] = field(default_factory=list)
     texts: list[TextRequest] = field(default_factory=list)
+    keep_out: list[tuple[XY, ...]] = field(default_factory=list)
+    """Paper polygons no text belongs in, though nothing is drawn there: the inside of the arc of a sense of
+    rotation (an "O" printed there reads as part of the arrow). A text's box meeting one costs as much as one
+    across a link (:func:`geomcon.render.figure._place_texts`)."""
 
     def extend(self, other: Drawn) -> None:
         """Append another drawing."""
         self.shapes += other.shapes
         self.texts += other.texts
+        self.keep_out += other.keep_out
 
 
 @dataclass

@@ -621,8 +621,10 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     numbered row go on a line beside it, with leaders (:func:`_fanned`). The shapes whose ``id`` is in ``apart``
     (an angle's rays drawn on to its arc: :mod:`.arms`) are kept clear of by their own step's text too."""
     obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
-                  SOFT if g.layer == "construction" else 0.0, w, 0.0 if g.layer == "points" else w)
+                  SOFT if g.layer == "construction" else 0.0, w, w)
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
+    obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT)
+                  for g, (drawn, _) in zip(groups, pending) for area in drawn.keep_out]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
     placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box)
     _thin(groups, pending)                      # before measuring: it leaves out a crowded axis's numbers
@@ -751,8 +753,14 @@ def _weight(g: StepDrawing, sh: Shape) -> float:
     return 2.0 if g.layer in HARD or (g.layer == "marks" and not isinstance(sh, ArcP)) else 1.0
 
 
-HARD = ("links", "points", "ground")
-"""The layers whose strokes a text crossing them costs twice as much: the mechanism's links, pivots and grounds."""
+KEEP_OUT = 2.0
+"""The crossing weight of an area no text belongs in (:attr:`.draw.Drawn.keep_out`: the inside of a sense of
+rotation's arc), as of a link: 16 cam figures printed "O" inside the ω arrow's arc, where the centre's label had a
+free spot but the empty inside of the arc weighed nothing."""
+
+HARD = ("links", "points", "ground", "sliders")
+"""The layers whose strokes a text crossing them costs twice as much: the mechanism's links, pivots, grounds and
+slider blocks (a block weighed as a thin line before, and 001-05c's T1, T2 and 004-01's C1 printed inside one)."""
 
 
 def _leader(t: TextRequest, box: Any) -> Poly | None:

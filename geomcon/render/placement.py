@@ -323,7 +323,8 @@ class Placer:
 
     def _barred(self, c: Candidates) -> np.ndarray:
         """Whether the leader of each led candidate of ``c`` crosses a link or a pivot symbol (an obstacle of
-        weight :data:`HARD`) not of its text's own step: one query of a tree of them for all."""
+        weight :data:`HARD`) not of its text's own step, nor an area it starts in (a slider block round its
+        joint): one query of a tree of them for all."""
         out = np.zeros(len(c.led), dtype=bool)
         if not len(c.led):
             return out
@@ -337,6 +338,8 @@ class Placer:
         lines = shapely.linestrings(nudged(c.leader).reshape(-1, 2, 2))
         k, j = tree.query(lines, predicate="intersects")
         mine = codes[j] == c.boxes.owner[c.led[k]]
+        if len(j):          # an area round the leader's start (a slider block on its joint) is left, not crossed
+            mine |= shapely.contains_xy(tree.geometries[j], c.leader[k, 0], c.leader[k, 1])
         out[k[~mine]] = True
         return out
 

@@ -572,12 +572,24 @@ def draw_rotation(m: Rotation, style: Style, ctx: Context) -> Drawn:
     arc = ArcP(c, r, -start, -(end - start), pen(style))
     tip = arc.at(1.0)
     back = arc.at(0.93)                                                # the tangent's direction, backwards
-    out = Drawn([arc, _arrow(tip, back, style)])
+    out = Drawn([arc, _arrow(tip, back, style)], keep_out=[rotation_inside(arc)])
     runs = rich_runs(m.symbol)
     req = Request(arc.at(0.5), text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * 0.78, 0.6, -math.pi / 2,
                   spread=0.05, distances=MARK_DISTANCES)
     out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, italic=True, cls="mark-text"))
     return out
+
+
+def rotation_inside(arc: ArcP, n: int = 12) -> tuple[XY, ...]:
+    """The inside of the arc of a sense of rotation, on paper: the sector between its centre and its arc (as
+    ``n`` + 1 points along it), where no text belongs (:attr:`.draw.Drawn.keep_out`).
+
+    >>> from geomcon.render.shapes import Pen
+    >>> pts = rotation_inside(ArcP((0.0, 0.0), 2.0, 0.0, -math.pi / 2, Pen("#000", 0.2)), 2)
+    >>> [(round(x, 3), round(y, 3)) for x, y in pts]
+    [(0.0, 0.0), (2.0, 0.0), (1.414, -1.414), (0.0, -2.0)]
+    """
+    return (arc.c,) + tuple(arc.at(k / n) for k in range(n + 1))
 
 
 def draw_right_angle(m: RightAngleMark, style: Style, ctx: Context) -> Drawn:
@@ -638,6 +650,9 @@ def draw_dimension(m: Dimension, style: Style, ctx: Context) -> Drawn:
             for t in (0.5, 0.3, 0.7, 0.15, 0.85):
                 base = (qa[0] + (qb[0] - qa[0]) * t, qa[1] + (qb[1] - qa[1]) * t)
                 cands.append(_add(base, up, side * (gap + h / 2)))
+    for end, way in ((qb, 1.0), (qa, -1.0)):    # a short line: beyond an arrowhead, as a draftsman sets it
+        for side in (outward, -outward):        # (001-24's s across the cam's profile: it had no other place)
+            cands.append(_add(_add(end, u, way * (w / 2 + 1.0)), up, side * (0.6 + h / 2)))
     req = Request(((qa[0] + qb[0]) / 2, (qa[1] + qb[1]) / 2), w, h, 0.6, 0.0, spread=0.06,
                   candidates=tuple(cands), rotate=round(ang, 6))
     out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, cls="mark-text"))
