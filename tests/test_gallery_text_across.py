@@ -34,8 +34,8 @@ KNOWN_ACROSS: dict[str, str] = {
     "001-06b_crank_slider_redesign_K": "C3 by the guide's hatch, among C1–C4 on one guide (a crowded knot)",
     "001-21_cutter_drive_K1": "φ1 across DC2 and φ2 on D's ground: D is at the drawing's right edge, and every "
                               "place within the frame by the two arcs meets a link or the ground",
-    "001-29_eccentric_roller_offset_ccw": "α and K0 by the cam disc, B0 on the roller: the contact point's knot",
-    "001-29_eccentric_roller_offset_cw": "α and K0 by the cam disc, B0 on the roller: the contact point's knot",
+    "001-29_eccentric_roller_offset_ccw": "α and K0 by the cam disc: the contact point's knot",
+    "001-29_eccentric_roller_offset_cw": "α and K0 by the cam disc: the contact point's knot",
     "001-31_eccentric_oscillating_roller": "E0 on the profile: its other places are inside ω's arc (as bad) or "
                                            "on the roller",
     "004-02_best_by_K_1_2_offset_limit": "C1 in its slider block by A's ground and the guide (a crowded knot)",
@@ -43,7 +43,6 @@ KNOWN_ACROSS: dict[str, str] = {
     "004-03_crank_rocker_best_by_K": "A* by A's ground and C2 by its pin, among C1, C2, B2 and A (a crowded knot)",
     "200-03_cam_roller_undercut": "B1* on the roller drawn round it",
     "200-05_oscillating_roller_cam": "α′max under O's ground: the other places by its arc cross the profile",
-    "200-13_cam_valve_speeds": "B0 on the roller drawn round it",
     "200-20_oscillating_base_radius_rho": "K2* by the binding arm among the construction's wedge lines",
 }
 """Sheet-1 figures (by name) where a text still meets a link, block, ground or pin, and why: the list may only

@@ -73,6 +73,11 @@ across a link, better than a box outside the frame or on a text placed before (w
 HARD = 2.0
 """The crossing weight of a link or a pivot symbol (a point's marker, a ground): what a leader must not cross."""
 
+ROUND_JOINT = 0.05
+"""A closed curve of weight :data:`HARD` centred this near (paper mm) a leader's start is a part drawn round that
+joint (a roller): the leader leaves it, as it must, without counting as crossing (not a cam's profile round a
+mark's arc)."""
+
 AMBIGUOUS = 15.0
 """Score lost by a label's box nearer another point than its own (worse than covering a line, better than
 covering a text or leaving the frame)."""
@@ -294,7 +299,7 @@ class Placer:
         self._placed = Placed()
         self._frame = frame
         self._ready: dict[tuple[Request, str], _Text] = {}
-        self._bars: tuple[shapely.STRtree, np.ndarray] | None = None
+        self._bars: tuple[shapely.STRtree, np.ndarray, np.ndarray] | None = None
 
     def prepare(self, jobs: Sequence[tuple[Request, str]]) -> None:
         """Measure the candidates of every (request, owner) of ``jobs`` against the fixed drawing, in a few
@@ -323,8 +328,9 @@ class Placer:
 
     def _barred(self, c: Candidates) -> np.ndarray:
         """Whether the leader of each led candidate of ``c`` crosses a link or a pivot symbol (an obstacle of
-        weight :data:`HARD`) not of its text's own step, nor an area it starts in (a slider block round its
-        joint): one query of a tree of them for all."""
+        weight :data:`HARD`) not of its text's own step, nor a part drawn round its start (an area holding it: a
+        slider block on its joint; a closed curve centred within :data:`ROUND_JOINT` of it: a roller round its
+        centre): one query of a tree of them for all."""
         out = np.zeros(len(c.led), dtype=bool)
         if not len(c.led):
             return out
@@ -333,13 +339,20 @@ class Placer:
             idx = np.flatnonzero(weight >= HARD)
             geoms = np.empty(len(idx), dtype=object)
             geoms[:] = [self._fixed.geoms[i] for i in idx.tolist()]
-            self._bars = (shapely.STRtree(geoms), codes[idx])
-        tree, codes = self._bars
+            rings = (shapely.get_type_id(geoms) == 1) & shapely.is_closed(geoms)      # a roller's circle
+            centres = np.full((len(geoms), 2), np.nan)
+            if rings.any():
+                centres[rings] = [shapely.Polygon(g.coords).centroid.coords[0] for g in geoms[rings]]
+            self._bars = (shapely.STRtree(geoms), codes[idx], centres)
+        tree, codes, centres = self._bars
         lines = shapely.linestrings(nudged(c.leader).reshape(-1, 2, 2))
         k, j = tree.query(lines, predicate="intersects")
         mine = codes[j] == c.boxes.owner[c.led[k]]
-        if len(j):          # an area round the leader's start (a slider block on its joint) is left, not crossed
-            mine |= shapely.contains_xy(tree.geometries[j], c.leader[k, 0], c.leader[k, 1])
+        if len(j):          # an area round the leader's start (a slider block on its joint), a closed curve
+            # centred there (a roller round its centre) is left, not crossed
+            ax, ay = c.leader[k, 0], c.leader[k, 1]
+            mine |= shapely.contains_xy(tree.geometries[j], ax, ay)
+            mine |= np.hypot(centres[j, 0] - ax, centres[j, 1] - ay) <= ROUND_JOINT
         out[k[~mine]] = True
         return out
 
