@@ -41,6 +41,8 @@ KNOWN_ACROSS: dict[str, str] = {
     "004-02_best_by_K_1_2_offset_limit": "C1 in its slider block by A's ground and the guide (a crowded knot)",
     "004-02_best_by_K_1_5": "C4's part of the joined label by B2's pin (a crowded knot)",
     "004-03_crank_rocker_best_by_K": "A* by A's ground and C2 by its pin, among C1, C2, B2 and A (a crowded knot)",
+    "100-04_four_bar_fixed_pivots_coupler_angles": "B1, K2, K3 and C″ by links: new on main's 38b11fc (its results "
+                                                   "in one block, the drawing laid out anew), not yet looked into",
     "200-03_cam_roller_undercut": "B1* on the roller drawn round it",
     "200-05_oscillating_roller_cam": "α′max under O's ground: the other places by its arc cross the profile",
     "200-20_oscillating_base_radius_rho": "K2* by the binding arm among the construction's wedge lines",
