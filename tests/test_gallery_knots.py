@@ -12,11 +12,10 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
   :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to run on its guide); the mechanism's detail view
   at 1:2.5 shows C1 and B2 apart, without the construction's E.
 - 001-10c, 004-03: C1 (C2) and B2 2 mm apart at 1:20; the mechanism's detail view at 1:5 sets them 8 mm apart.
-- 200-16: B1* and B(75°), two follower positions 2.5 mm apart on the cam. 001-21: the label N of the point drawn
-  on C1 lies nearer M; 004-02 at 1:5: "M" and "C4" found no clear place as one label and print apart (text
-  placement's choices, hplace11f's).
-- 004-02 (main and detail view), 004-01: C1's label covers its slider block, its only room clear of links and
-  guides (text placement weighs a block as a thin stroke; weighing it as a link moves 25 sheets' labels).
+- 200-16: B1* and B(75°), two follower positions 2.5 mm apart on the cam. 004-02 at 1:5: "M" and "C4" found no
+  clear place as one label and print apart (text placement's choices).
+- 004-02 (main and detail view): C1's label covers its slider block, its only room clear of links and guides
+  (001-21's N and 004-01's C1 were cleared when text placement came to weigh a block as a link: hplace11f).
 - 000-02: the ram's blocks sit on D1 and D2, the guide bar's ends (drawn so by the recipe).
 - 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
   K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
@@ -43,10 +42,8 @@ KNOWN = {
     "001-06b_crank_slider_redesign_K": 3,
     "001-10b_crank_rocker_design_frame_and_swing": 1,
     "001-10c_crank_rocker_design_crank_and_frame": 1,
-    "001-21_cutter_drive_K1": 1,
-    "004-02_best_by_K_1_2_offset_limit": 5,
+    "004-02_best_by_K_1_2_offset_limit": 4,
     "004-02_best_by_K_1_5": 1,
-    "004-01_relative_design_H1": 1,
     "004-03_crank_rocker_best_by_K": 2,
     "100-01_four_bar_three_positions": 2,
     "100-03_four_bar_fixed_pivots_coupler_point": 1,
@@ -68,6 +65,12 @@ def test_the_gallery_has_its_sheets():
 def test_no_crowded_knot_on_sheet_1(sheet):
     found = knots(sheet.read_text(encoding="utf-8"))
     assert len(found) <= KNOWN.get(sheet.stem, 0), [k.figure + k.what for k in found]
+
+
+@pytest.mark.parametrize("stem", sorted(KNOWN))
+def test_a_known_crowded_sheet_is_listed_with_its_count_as_measured(stem):
+    # the list stays honest: a sheet that came clear, or lost a knot, is struck off or its count lowered
+    assert len(knots((GALLERY / f"{stem}.svg").read_text(encoding="utf-8"))) == KNOWN[stem]
 
 
 @pytest.mark.parametrize("stem", ["200-09_base_radius_cycloidal", "200-18_base_radius_flat_gate2020",
