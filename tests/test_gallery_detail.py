@@ -9,6 +9,7 @@ figure, the results, title block, scale bar and captions, holds no box of the de
 001-12's A, B1, B2) are shown apart in a detail view too: the mechanism's, or a window about the knot."""
 from __future__ import annotations
 
+import math
 import re
 from functools import lru_cache
 from pathlib import Path
@@ -168,3 +169,40 @@ def test_an_angle_marked_at_a_joint_is_in_the_detail_view_too(pid):
                       if isinstance(values[t.key], Point) and abs(values[t.key] - values[s.key].vertex) <= tol)]
     for k in marked:                                                            # knot's window shows a part)
         assert f'id="detail-step-{k}"' in svg, k
+
+
+_POINT = re.compile(r'<g class="step([^"]*)" data-step="\d+" id="(detail-)?step-([^"]+)"><circle class="ink[^"]*" '
+                    r'cx="([-\d.]+)" cy="([-\d.]+)" fill="([^"]*)" r="([\d.]+)"')
+
+
+@pytest.mark.parametrize("pid", PROBLEMS)
+def test_a_point_crowding_a_joint_is_drawn_in_the_detail_view_too(pid):
+    # issue 11: 001-06b's and 004-02's E, 1.35 mm from B2 at 1:5, was left out of the mechanism's detail at 1:2.5,
+    # which showed C1 and B2 apart but not what crowds them. Read from the SVG: a point (not a grey candidate) drawn
+    # closer than MIN_KNOT on the sheet to a joint the detail shows, and within the extent of the detail's joints
+    # (mapped by the detail's scale), is in the detail.
+    from geomcon.render.detail import MIN_KNOT
+    svg = (GALLERY / f"{pid}.svg").read_text(encoding="utf-8")
+    if 'id="detail"' not in svg:
+        return
+    main: dict[str, tuple[float, float, bool]] = {}
+    detail: dict[str, tuple[float, float, bool]] = {}
+    for cls, fig, key, cx, cy, fill, r in _POINT.findall(svg):
+        if "style-candidate" not in cls and float(r) <= 2.0:
+            (detail if fig else main)[key] = (float(cx), float(cy), fill == "#ffffff")
+    joints = [k for k, v in detail.items() if v[2] and k in main]
+    pairs = [(a, b) for a in joints for b in joints if math.dist(main[a][:2], main[b][:2]) > 1.0]
+    if not pairs:
+        return
+    a, b = pairs[0]
+    s = math.dist(detail[a][:2], detail[b][:2]) / math.dist(main[a][:2], main[b][:2])
+
+    def mapped(k: str) -> tuple[float, float]:
+        return (detail[a][0] + s * (main[k][0] - main[a][0]), detail[a][1] + s * (main[k][1] - main[a][1]))
+
+    xs, ys = [detail[j][0] for j in joints], [detail[j][1] for j in joints]
+    for k, (x, y, pin) in main.items():
+        near = any(1e-3 < math.dist((x, y), main[j][:2]) < MIN_KNOT for j in joints)
+        mx, my = mapped(k)
+        if near and not pin and min(xs) <= mx <= max(xs) and min(ys) <= my <= max(ys):
+            assert k in detail, k

@@ -134,13 +134,38 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
         big = apart                                   # the knot's hinges MIN_KNOT apart too
     if big is not None:
         mu = big.real / big.paper
+        crowd = crowding(steps, values, keys, fig.view.mu)
         for drawn in ((keys | guides, keys) if guides else (keys,)):     # the sliders' guides too, when they fit
             kept = [(n, s) for n, s in steps if s.key in drawn]
-            box = grow(content_box(scene, kept, values), FIG_MARGIN * mu)
+            own = content_box(scene, kept, values)                         # the crowding points within it
+            drawn = drawn | {k for k in crowd if own[0] <= values[k].x <= own[2] and own[1] <= values[k].y <= own[3]}
+            box = grow(own, FIG_MARGIN * mu)
             got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
             if got is not None:
                 return got
     return None if found is None or big is None else knot_detail(scene, fig, steps, found, scale, big, free, upto)
+
+
+def crowding(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[str], mu: float) -> set[str]:
+    """The keys of the construction points (a step drawing one point, not among ``keys``, not a grey candidate)
+    drawn closer than :data:`MIN_KNOT` on the sheet (``mu`` model mm per paper mm) to a joint of the mechanism (a
+    hinge among ``keys``). :func:`detail_figure` draws those within the mechanism's extent in its detail view too,
+    so that it shows apart what crowds a joint on the sheet (001-06b's and 004-02's E, 1.35 mm from B2 at 1:5,
+    was left out of the mechanism's detail at 1:2.5).
+
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+    >>> steps, _ = shown_steps(sc, None)
+    >>> values = sc.evaluate([s.key for _, s in steps])
+    >>> keys, _, _ = mechanism_steps(steps, values)
+    >>> crowding(steps, values, keys, 1.0), crowding(steps, values, keys - {"B"}, 1.0) <= {"B"}
+    (set(), True)
+    """
+    joints = [(p.x, p.y) for _, s in steps if s.key in keys and _pin(s) for p in _items(values[s.key])
+              if isinstance(p, Point)]
+    reach = MIN_KNOT * mu
+    return {s.key for _, s in steps if s.key not in keys and isinstance(values[s.key], Point) and not _grey(s)
+            and any(1e-9 * reach < math.dist((values[s.key].x, values[s.key].y), j) < reach for j in joints)}
 
 
 def _placed(scene: Scene, upto: int | None, box: Box, mu: float, big: Scale,
@@ -233,6 +258,11 @@ def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found:
     return _placed(scene, upto, box, mu, big, free, keep)
 
 
+def _grey(step: Step) -> bool:
+    """Whether ``step`` draws a grey candidate (001-16's A2, A4: a choice not taken, no point of the answer)."""
+    return resolve_style(step.style, step.role, "point").name == "candidate"
+
+
 def _pin(step: Step) -> bool:
     """Whether ``step`` draws its point as a hinge: a hollow circle in ink (a candidate's is grey)."""
     style = resolve_style(step.style, step.role, "point")
@@ -284,5 +314,5 @@ def _anchors(x: Any) -> list[Point]:
     return []
 
 
-__all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "detail_figure", "detail_scale", "knot", "knot_detail",
-           "mechanism_steps"]
+__all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "crowding", "detail_figure", "detail_scale", "knot",
+           "knot_detail", "mechanism_steps"]
