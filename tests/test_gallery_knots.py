@@ -10,13 +10,15 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
   (:mod:`geomcon.render.coincident`), the markers stay.
 - 001-06b, 004-02: E lies 1.35 mm from B2 and within a block's width of C1 at 1:5 (the block shortens,
   :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to run on its guide); the mechanism's detail view
-  at 1:2.5 shows C1 and B2 apart, without the construction's E.
+  at 1:2.5 shows C1, B2 and E (with C3) apart (:func:`geomcon.render.detail.crowding`).
 - 001-10c, 004-03: C1 (C2) and B2 2 mm apart at 1:20; the mechanism's detail view at 1:5 sets them 8 mm apart.
 - 200-16: B1* and B(75°), two follower positions 2.5 mm apart on the cam. 004-02 at 1:5: "M" and "C4" found no
   clear place as one label and print apart (text placement's choices).
 - 004-02 (main and detail view): C1's label covers its slider block, its only room clear of links and guides
   (001-21's N and 004-01's C1 were cleared when text placement came to weigh a block as a link: hplace11f).
-- 000-02: the ram's blocks sit on D1 and D2, the guide bar's ends (drawn so by the recipe).
+- 000-02: the ram's blocks sit on D1 and D2, the guide bar's ends (drawn so by the recipe: the ram under D, the
+  coupler DE not yet chosen); D lies 1.14 mm off the guide at 1:5, within the block's half width (1.5 mm), so no
+  shortening clears it, and the mechanism has no link there for a detail view to draw the ram with.
 - 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
   K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
   placement's choice, hplace11f's).
