@@ -44,7 +44,6 @@ KNOWN_ACROSS: dict[str, str] = {
     "100-04_four_bar_fixed_pivots_coupler_angles": "B1, K2, K3 and C″ by links: new on main's 38b11fc (its results "
                                                    "in one block, the drawing laid out anew), not yet looked into",
     "200-03_cam_roller_undercut": "B1* on the roller drawn round it",
-    "200-05_oscillating_roller_cam": "α′max under O's ground: the other places by its arc cross the profile",
     "200-20_oscillating_base_radius_rho": "K2* by the binding arm among the construction's wedge lines",
 }
 """Sheet-1 figures (by name) where a text still meets a link, block, ground or pin, and why: the list may only

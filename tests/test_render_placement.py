@@ -13,7 +13,7 @@ import shapely
 from shapely import affinity
 
 from geomcon.render.symbols import MARK_DISTANCES
-from geomcon.render.clearance import CROSS
+from geomcon.render.clearance import CROSS, NEAR, NEAR_WEIGHT
 from geomcon.render.placement import AMBIGUOUS, DISTANCES, ENOUGH, LABEL_DISTANCES, FAR_PENALTY, Placer, Request, directions, half_extent
 
 
@@ -26,6 +26,7 @@ class ReferencePlacer:
         self._allow = np.array([o[2] for o in obstacles], dtype=float)
         self._weight = np.array([o[3] if len(o) > 3 else 0.0 for o in obstacles], dtype=float)
         self._own = np.array([o[4] if len(o) > 4 else w for o, w in zip(obstacles, self._weight)], dtype=float)
+        self._halo = np.array([o[5] if len(o) > 5 else w >= NEAR_WEIGHT for o, w in zip(obstacles, self._weight)])
         self._tree = shapely.STRtree(self._geoms) if len(self._geoms) else None
         self._placed = []
         self._frame = frame
@@ -54,7 +55,10 @@ class ReferencePlacer:
             best = min(best, float(np.min(self._gaps(box, np.array(self._placed, dtype=object)))))
         crossed = [m if o == owner else w for g, o, w, m in zip(self._geoms, self._owners, self._weight, self._own)
                    if (m if o == owner else w) > 0.0 and box.intersects(g)]
-        return best - CROSS * sum(crossed)     # every line it crosses, its own step's too
+        halo = [w for g, o, w, h in zip(self._geoms, self._owners, self._weight, self._halo)
+                if h and o != owner and not box.intersects(g) and box.distance(g) <= NEAR]
+        return best - CROSS * (sum(crossed) + max(halo, default=0.0))  # every line it crosses, its own step's
+        # too, and the heaviest link, pin or ground of another step it comes within NEAR of (its halo into it)
 
     def best(self, req, owner):
         if req.candidates:
@@ -117,7 +121,7 @@ def random_figure(rng: random.Random, size: float = 60.0):
             pts = [(cx + rng.uniform(-5, 5), cy + rng.uniform(-5, 5)) for _ in range(rng.randint(3, 40))]
             g = shapely.LineString(pts)
         w = rng.choice([0.0, 1.0, 1.0, 2.0])
-        obstacles.append((g, owner, allow, w, rng.choice([w, w, 0.0])))
+        obstacles.append((g, owner, allow, w, rng.choice([w, w, 0.0]), w >= NEAR_WEIGHT and rng.random() < 0.8))
     return obstacles, owners
 
 
@@ -176,7 +180,8 @@ def test_bounds_enclose_the_exact_clearance(seed):
     obstacles, owners = random_figure(rng)
     ref = ReferencePlacer(obstacles, (0.0, 0.0, 60.0, 60.0))
     layer = Layer([o[0] for o in obstacles], [o[1] for o in obstacles], [o[2] for o in obstacles],
-                  index=True, weight=[o[3] for o in obstacles], own=[o[4] for o in obstacles])
+                  index=True, weight=[o[3] for o in obstacles], own=[o[4] for o in obstacles],
+                  halo=[o[5] for o in obstacles])
     placed = Placed()
     for _ in range(10):
         req, owner = random_request(rng), rng.choice(owners)
@@ -362,3 +367,23 @@ def test_placed_measure_reads_turned_boxes_as_the_convex_test_does():
         py = np.r_[xy[i, 1] + t * e[i, 1], np.array([rng.uniform(-2, 11) for _ in range(40)])]
         got = _inside(xy[:, :1], xy[:, 1:], e[:, :1], e[:, 1:], px, py)
         assert got.tolist() == _within(xy, px, py).tolist()
+
+
+def test_a_text_a_hair_from_a_link_or_a_ground_counts_as_crossing_it():
+    """200-05 printed α′max a hair under O's ground: the box touched no stroke, so it lost nothing, though its
+    white halo cut into the hatch. A box within NEAR of a link, pin or ground of another step loses the heaviest
+    one's crossing weight, once (a ground's hatch is many strokes), as if it crossed it; not so near a stroke of
+    its own step, an area kept out of (halo False) or a thin line."""
+    hatch = [shapely.LineString([(x, 10.0), (x + 1.0, 11.0)]) for x in (0.0, 1.0, 2.0, 3.0)]
+    obstacles = [(h, "ground", 0.0, 2.0) for h in hatch] + [(shapely.LineString([(0, 20), (9, 20)]), "thin", 0.5, 1.0),
+                                                           (shapely.box(0, 30, 9, 32), "keep", 0.0, 2.0, 2.0, False)]
+    p = Placer(obstacles, (-20.0, -20.0, 40.0, 60.0))
+    under = shapely.box(0.5, 11.0 + NEAR / 2, 3.5, 13.0)          # under the hatch, not touching it
+    far = shapely.box(0.5, 11.0 + 2 * NEAR, 3.5, 13.0)
+    assert p.clearance(under, "x") == pytest.approx(NEAR / 2 - CROSS * 2.0, abs=1e-12)
+    assert p.clearance(far, "x") == pytest.approx(2 * NEAR, abs=1e-12)
+    assert p.clearance(under, "ground") == ENOUGH                 # its own ground
+    assert p.clearance(shapely.box(0, 20 + NEAR / 2, 3, 22), "x") == pytest.approx(NEAR / 2 + 0.5, abs=1e-12)
+    assert p.clearance(shapely.box(0, 32 + NEAR / 2, 3, 34), "x") == pytest.approx(NEAR / 2, abs=1e-12)
+    r = Request((2.0, 12.2), 3.0, 1.8, 0.1, math.pi / 2, candidates=((2.0, 11.0 + NEAR / 2 + 0.9), (2.0, 20.0)))
+    assert p.best(r, "x")[0] == (2.0, 20.0)       # across a thin construction line rather than in the hatch's halo

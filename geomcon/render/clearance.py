@@ -44,6 +44,15 @@ CROSS = 1.0
 clearance alone (the worst thing covered) would tie them. A text's own step's strokes count too (a mark's own arc
 and the normal drawn with it), though their distance does not."""
 
+NEAR = 0.2
+"""Paper (mm) within which a box meets a geometry of crossing weight :data:`NEAR_WEIGHT` or more (a link, a pin,
+a ground, a slider block) of another step though it does not touch it: the text's white halo cuts into the line
+(200-05's value printed a hair under O's ground), so it loses the greatest crossing weight of those it comes so
+near, as if it crossed one of them (once, not once a stroke: a ground's hatch is many)."""
+
+NEAR_WEIGHT = 2.0
+"""The least crossing weight of a geometry a box must keep :data:`NEAR` from (that of a link)."""
+
 
 def covering(box: shapely.Geometry, geoms: np.ndarray) -> np.ndarray:
     """Minus the measure of how much ``box`` covers each of ``geoms`` (all touching it): 0.3 × the length
@@ -241,6 +250,19 @@ def _count(cross: np.ndarray, k: np.ndarray, p: np.ndarray, weight: np.ndarray, 
     cross += CROSS * np.bincount(pair // ng, weights=weight[pair % ng], minlength=len(cross))
 
 
+def _near(cross: np.ndarray, k: np.ndarray, p: np.ndarray, weight: np.ndarray, met: np.ndarray,
+          ng: int = 1) -> None:
+    """Add :data:`CROSS` × the greatest weight of the geometries ``p`` each box ``k`` comes within :data:`NEAR`
+    of without meeting them (``met``: the box, geometry pairs it meets, as box × ``ng`` + geometry) to
+    ``cross``: once a box, not once a geometry (a ground's hatch is many strokes)."""
+    if len(k) and len(met):
+        keep = ~np.isin(k * ng + p, met)
+        k, p = k[keep], p[keep]
+    if len(k):
+        np.maximum.at(near := np.zeros(len(cross)), k, weight[p])
+        cross += CROSS * near
+
+
 class Layer:
     """Geometries flattened into segments for measuring: their owners (a box does not keep clear of its own
     step's), allowances (added to their distances), bounds and whether each is an area. Geometries may be
@@ -260,19 +282,22 @@ class Layer:
     own : sequence of float, optional
         Each one's crossing weight for a text of its own step (``weight`` by default; 0 for a point's marker,
         which its label's box never meets: its pairs are then not measured at all).
+    halo : sequence of bool, optional
+        Whether a box of another step coming within :data:`NEAR` of it counts as crossing it (by default those
+        weighing :data:`NEAR_WEIGHT` or more; not an empty area kept out of, as the inside of ω's arc).
     index : bool
         Index the segments in a tree (geometries appended later are not).
     """
 
     def __init__(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
                  allow: Sequence[float] | None = None, index: bool = False, weight: Sequence[float] | None = None,
-                 own: Sequence[float] | None = None):
+                 own: Sequence[float] | None = None, halo: Sequence[bool] | None = None):
         self.geoms: list[shapely.Geometry] = []
         self.codes: dict[str, int] = {}
         self._parts: list[tuple[np.ndarray, ...]] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
         self._simple: dict[int, bool] = {}
-        self.extend(geoms, owners, allow, weight, own)
+        self.extend(geoms, owners, allow, weight, own, halo)
         self.tree = None
         if index and len(self.arrays()[0]):
             self.tree = shapely.STRtree(_diagonals(*self.arrays()[:4]))
@@ -287,7 +312,7 @@ class Layer:
 
     def extend(self, geoms: Sequence[shapely.Geometry], owners: Sequence[str] | None = None,
                allow: Sequence[float] | None = None, weight: Sequence[float] | None = None,
-               own: Sequence[float] | None = None) -> None:
+               own: Sequence[float] | None = None, halo: Sequence[bool] | None = None) -> None:
         """Add geometries (not to the tree)."""
         n0, n = len(self.geoms), len(geoms)
         if not n:
@@ -299,6 +324,7 @@ class Layer:
         allowed = np.array(allow, dtype=float) if allow is not None else np.zeros(n)
         weighed = np.array(weight, dtype=float) if weight is not None else np.zeros(n)
         mine = np.array(own, dtype=float) if own is not None else weighed
+        haloed = np.array(halo, dtype=bool) if halo is not None else weighed >= NEAR_WEIGHT
         parts, whole = shapely.get_parts(g, return_index=True)
         areal = shapely.get_dimensions(parts) == 2
         lines, owner = parts, whole
@@ -318,18 +344,20 @@ class Layer:
         simple[(types > 1) & (types != 3)] = 0
         self._parts.append((a[:, 0].copy(), a[:, 1].copy(), b[:, 0].copy(), b[:, 1].copy(), parent,
                             np.array(codes, dtype=np.intp), allowed, shapely.bounds(g).reshape(-1, 4),
-                            shapely.get_dimensions(g) == 2, simple.astype(np.int8), weighed, mine))
+                            shapely.get_dimensions(g) == 2, simple.astype(np.int8), weighed, mine,
+                            haloed))
         self._arrays = None
 
     def arrays(self) -> tuple[np.ndarray, ...]:
         """The segments' ends (ax, ay, bx, by) and geometry, and the geometries' owner codes, allowances, bounds,
         whether each is an area, and whether each is a simple line string or point (1), not (0) or not yet
-        known (-1), and their crossing weights (for other steps' texts, and for their own step's)."""
+        known (-1), their crossing weights (for other steps' texts, and for their own step's), and whether a box
+        within :data:`NEAR` of each crosses it."""
         if self._arrays is None:
             if not self._parts:
                 z = np.zeros(0)
                 self._arrays = (z, z, z, z, _NONE, _NONE, z, np.zeros((0, 4)), np.zeros(0, dtype=bool),
-                                np.zeros(0, dtype=np.int8), z, z)
+                                np.zeros(0, dtype=np.int8), z, z, np.zeros(0, dtype=bool))
             else:
                 self._arrays = tuple(np.concatenate(c) for c in zip(*self._parts))
                 self._parts = [self._arrays]
@@ -351,7 +379,7 @@ class Layer:
         tree, or each box's bounds against those of the segments of the geometries near all the boxes: a pair
         farther apart cannot lower a clearance below :data:`ENOUGH`, nor meet), not of a box's own step unless counted
         (a crossing weight); and whether each pair is of the box's own step."""
-        ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own = self.arrays()
+        ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own, _ = self.arrays()
         if not len(ax) or not len(boxes):
             return _NONE, _NONE, _NO
         if self.tree is not None:
@@ -377,7 +405,7 @@ class Layer:
 
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from this layer's geometries (not those of a box's own step)."""
-        ax, ay, bx, by, parent, _, allow, _, _, simple, weight, own = self.arrays()
+        ax, ay, bx, by, parent, _, allow, _, _, simple, weight, own, halo = self.arrays()
         n = len(boxes)
         k, s, mine = self.pairs(boxes)
         p = parent[s]               # what a box covers is summed for other steps' geometries not known complex
@@ -390,6 +418,8 @@ class Layer:
             other = np.flatnonzero(~mine)
             k, p, d, hit, inside = k[other], p[other], d[other], hit[other], inside[other]
         least(known, k, d + allow[p])
+        near = np.flatnonzero((d <= NEAR) & halo[p])      # a halo into a link: as crossing it
+        nk, np_ = k[near], p[near]
         touching = np.zeros(n, dtype=bool)
         h = np.flatnonzero(hit)
         touching[k[h]] = True
@@ -399,12 +429,14 @@ class Layer:
             touching[ck] = True
             hk, hp, hin = np.concatenate([hk, ck]), np.concatenate([hp, cp]), np.concatenate([hin, np.zeros(len(ck))])
         if not len(hk):
+            _near(cross, nk, np_, weight, _NONE)
             return Measured(known, known, known, touching, (_NONE, _NONE), cross)
         order = np.argsort(hk * len(self.geoms) + hp, kind="stable")
         hk, hp, hin = hk[order], hp[order], hin[order]
         first = np.flatnonzero(_starts((hk[1:] != hk[:-1]) | (hp[1:] != hp[:-1])))
         gk, gp = hk[first], hp[first]
         cross += CROSS * np.bincount(gk, weights=weight[gp], minlength=n)
+        _near(cross, nk, np_, weight, gk * len(self.geoms) + gp, len(self.geoms))
         covered = np.add.reduceat(hin, first)
         simple = self._simple_of(gp)
         least(known, gk[simple], allow[gp[simple]] - np.minimum(2.0, 0.3 * covered[simple]))
@@ -419,19 +451,22 @@ class Layer:
     def crossing(self, box: shapely.Geometry, owner: str | None) -> float:
         """:data:`CROSS` × the crossing weights of the geometries ``box`` touches, its own step's included (by
         GEOS: the definition :meth:`measure`'s ``cross`` follows)."""
-        weight, own, codes = self.arrays()[10], self.arrays()[11], self.arrays()[5]
-        w = np.where((codes == self.code(owner)) & (codes >= 0), own, weight)
+        weight, own, codes, halo = self.arrays()[10], self.arrays()[11], self.arrays()[5], self.arrays()[12]
+        mine = (codes == self.code(owner)) & (codes >= 0)
+        w = np.where(mine, own, weight)
         idx = np.flatnonzero(w > 0.0)
         if not len(idx):
             return 0.0
         geoms = np.empty(len(idx), dtype=object)
         geoms[:] = [self.geoms[i] for i in idx.tolist()]
-        return CROSS * float(w[idx][shapely.intersects(box, geoms)].sum())
+        met = shapely.intersects(box, geoms)
+        near = ~met & ~mine[idx] & halo[idx] & shapely.dwithin(box, geoms, NEAR)
+        return CROSS * (float(w[idx][met].sum()) + float(w[idx][near].max(initial=0.0)))
 
     def _contained(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
         """(box, area) pairs, sorted by box, where the box lies within the area's bounds and meets the area (by
         GEOS): a box wholly inside an area meets none of its rings."""
-        _, _, _, _, _, owner, _, bounds, areal, _, _, _ = self.arrays()
+        _, _, _, _, _, owner, _, bounds, areal, _, _, _, _ = self.arrays()
         if not areal.any() or not len(boxes):
             return _NONE, _NONE
         w, h = (boxes.x1 - boxes.x0).min(), (boxes.y1 - boxes.y0).min()

@@ -619,11 +619,14 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                  apart: set[int] = frozenset()) -> None:          # type: ignore[assignment]
     """Place every label and mark text, in step order, clear of all shapes of the frame; the labels of a crowded
     numbered row go on a line beside it, with leaders (:func:`_fanned`). The shapes whose ``id`` is in ``apart``
-    (an angle's rays drawn on to its arc: :mod:`.arms`) are kept clear of by their own step's text too."""
+    (an angle's rays drawn on to its arc: :mod:`.arms`) are kept clear of by their own step's text too. A text
+    within :data:`.clearance.NEAR` of another step's link, ground, slider block or mark stroke crosses it (its
+    halo would cut into it); not so a point's marker (a label keeps its gap from its own, and a joined label of
+    coincident points lies by the others' too) nor the inside of ω's arc."""
     obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
-                  SOFT if g.layer == "construction" else 0.0, w, w)
+                  SOFT if g.layer == "construction" else 0.0, w, w, w >= 2.0 and g.layer != "points")
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
-    obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT)
+    obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT, False)
                   for g, (drawn, _) in zip(groups, pending) for area in drawn.keep_out]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
     placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box)
@@ -753,10 +756,11 @@ def _weight(g: StepDrawing, sh: Shape) -> float:
     return 2.0 if g.layer in HARD or (g.layer == "marks" and not isinstance(sh, ArcP)) else 1.0
 
 
-KEEP_OUT = 2.0
+KEEP_OUT = 3.0
 """The crossing weight of an area no text belongs in (:attr:`.draw.Drawn.keep_out`: the inside of a sense of
-rotation's arc), as of a link: 16 cam figures printed "O" inside the ω arrow's arc, where the centre's label had a
-free spot but the empty inside of the arc weighed nothing."""
+rotation's arc), more than a link's: 16 cam figures printed "O" inside the ω arrow's arc, where the centre's label
+had a free spot but the empty inside of the arc weighed nothing; and more than coming within
+:data:`.clearance.NEAR` of a link or ground costs (200-01's O, a hair from its ground, would go into the arc)."""
 
 HARD = ("links", "points", "ground", "sliders")
 """The layers whose strokes a text crossing them costs twice as much: the mechanism's links, pivots, grounds and

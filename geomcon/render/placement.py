@@ -31,7 +31,7 @@ import shapely
 from shapely import affinity
 
 from .candidates import FAR_PENALTY, Candidates, candidates, directions, rivalled
-from .clearance import ENOUGH, Boxes, Layer, Measured, Placed, _starts, gaps
+from .clearance import ENOUGH, NEAR_WEIGHT, Boxes, Layer, Measured, Placed, _starts, gaps
 
 XY = tuple[float, float]
 
@@ -280,13 +280,15 @@ class Placer:
 
     Parameters
     ----------
-    obstacles : sequence of (geometry, owner, allowance[, weight[, own weight]])
+    obstacles : sequence of (geometry, owner, allowance[, weight[, own weight[, halo]]])
         Drawn strokes, markers and texts. ``owner`` tags the step that drew it (a text keeps no distance from its
         own step's strokes); ``allowance`` is added to the distance, so that crossing a thin, light
         construction line (allowance > 0) costs less than touching a link; ``weight`` (0 when left out) is its
         crossing weight: a box touching it loses :data:`.clearance.CROSS` × the weight, its own step's too (a
         mark's value across its own arc), so that the box crossing fewest lines wins; ``own weight`` (``weight``
-        when left out) is the weight for a text of its own step (0 for a point's marker, never met by its label).
+        when left out) is the weight for a text of its own step (0 for a point's marker, never met by its label);
+        ``halo`` (weight ≥ :data:`.clearance.NEAR_WEIGHT` when left out) whether a box of another step within
+        :data:`.clearance.NEAR` of it crosses it (not an empty area kept out of).
     frame : (x0, y0, x1, y1)
         Texts must stay inside this paper box.
     """
@@ -295,7 +297,9 @@ class Placer:
                  frame: tuple[float, float, float, float]):
         self._fixed = Layer([o[0] for o in obstacles], [o[1] for o in obstacles], [o[2] for o in obstacles],
                             index=True, weight=[o[3] if len(o) > 3 else 0.0 for o in obstacles],
-                            own=[o[4] if len(o) > 4 else (o[3] if len(o) > 3 else 0.0) for o in obstacles])
+                            own=[o[4] if len(o) > 4 else (o[3] if len(o) > 3 else 0.0) for o in obstacles],
+                            halo=[o[5] if len(o) > 5 else (o[3] if len(o) > 3 else 0.0) >= NEAR_WEIGHT
+                                  for o in obstacles])
         self._placed = Placed()
         self._frame = frame
         self._ready: dict[tuple[Request, str], _Text] = {}
