@@ -135,9 +135,8 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
     if big is not None:
         mu = big.real / big.paper
         crowd = crowding(steps, values, keys, fig.view.mu)
-        for drawn in ((keys | guides, keys) if guides else (keys,)):     # the sliders' guides too, when they fit
-            kept = [(n, s) for n, s in steps if s.key in drawn]
-            own = content_box(scene, kept, values)                         # the crowding points within it
+        own = content_box(scene, [(n, s) for n, s in steps if s.key in keys], values)   # the mechanism's extent:
+        for drawn in ((keys | guides, keys) if guides else (keys,)):     # its sliders' guides cut to it, when they fit
             drawn = drawn | {k for k in crowd if own[0] <= values[k].x <= own[2] and own[1] <= values[k].y <= own[3]}
             box = grow(own, FIG_MARGIN * mu)
             got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
