@@ -180,9 +180,12 @@ RIVAL_REACH = 15.0
 def _rivals(c: XY, ctx: Context, reach: float = RIVAL_REACH) -> tuple[XY, ...]:
     """The other points of the figure within ``reach`` of paper point ``c``, on paper."""
     out = []
+    v = ctx.view                          # View.p inlined (same operations, same bits): called for every label
+    (ox, oy), x0, y1, mu = v.origin, v.box[0], v.box[3], v.mu
+    cx, cy = c
     for p in ctx.points:
-        q = ctx.view.p(p)
-        d = math.hypot(q[0] - c[0], q[1] - c[1])
+        q = (ox + (p.x - x0) / mu, oy + (y1 - p.y) / mu)
+        d = math.hypot(q[0] - cx, q[1] - cy)
         if 1e-9 < d <= reach:
             out.append(q)
     return tuple(sorted(set(out)))
