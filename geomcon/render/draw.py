@@ -180,11 +180,8 @@ RIVAL_REACH = 15.0
 def _rivals(c: XY, ctx: Context, reach: float = RIVAL_REACH) -> tuple[XY, ...]:
     """The other points of the figure within ``reach`` of paper point ``c``, on paper."""
     out = []
-    v = ctx.view                          # View.p inlined (same operations, same bits): called for every label
-    (ox, oy), x0, y1, mu = v.origin, v.box[0], v.box[3], v.mu
     cx, cy = c
-    for p in ctx.points:
-        q = (ox + (p.x - x0) / mu, oy + (y1 - p.y) / mu)
+    for q in ctx.view.ps(ctx.points):
         d = math.hypot(q[0] - cx, q[1] - cy)
         if 1e-9 < d <= reach:
             out.append(q)
@@ -342,7 +339,4 @@ def draw_arc(a: Arc, style: Style, ctx: Context) -> Drawn:
 
 def draw_polyline(pl: Polyline, style: Style, ctx: Context) -> Drawn:
     """A sampled curve (pitch curve, cam profile, path) as one SVG polyline (its points are part of the view's content box)."""
-    v = ctx.view                          # View.p inlined (same operations, same bits): curves have ~700 points
-    (ox, oy), x0, y1, mu = v.origin, v.box[0], v.box[3], v.mu
-    return Drawn([Poly(tuple([(ox + (p.x - x0) / mu, oy + (y1 - p.y) / mu) for p in pl.points]), pen(style),
-                       closed=pl.closed)])
+    return Drawn([Poly(tuple(ctx.view.ps(pl.points)), pen(style), closed=pl.closed)])

@@ -354,13 +354,11 @@ def _links(steps: list[tuple[int, Step]], values: dict[str, Any], view: View, fr
 def _curves(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, ...], ...]:
     """The curves drawn as links (a cam's profile: polylines of a style on the links layer) on paper."""
     out = []
-    (ox, oy), x0, y1, mu = view.origin, view.box[0], view.box[3], view.mu    # View.p inlined: same bits
     for _, s in steps:
         v = values[s.key]
         lines = [x for x in (v if isinstance(v, (tuple, list)) else (v,)) if isinstance(x, Polyline)]
         if lines and resolve_style(s.style, s.role, "curve").layer == "links":
-            out += [tuple([(ox + (q.x - x0) / mu, oy + (y1 - q.y) / mu)
-                           for q in x.points + (x.points[:1] if x.closed else ())]) for x in lines]
+            out += [tuple(view.ps(x.points + (x.points[:1] if x.closed else ()))) for x in lines]
     return tuple(out)
 
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Iterable, Iterator
 
 from ..geometry.primitives import Point
 
@@ -115,6 +115,17 @@ class View:
     def p(self, pt: Point) -> tuple[float, float]:
         """Paper coordinates of a model :class:`Point`."""
         return self.xy(pt.x, pt.y)
+
+    def ps(self, pts: Iterable[Point]) -> list[tuple[float, float]]:
+        """Paper coordinates of many model points: :meth:`p`'s operations in its order (the same bits), without
+        two calls a point (a cam's curves have ~700 points; every label looks at every point of its figure).
+
+        >>> v = View((0.0, 0.0, 10.0, 10.0), 2.0, (5.0, 5.0))
+        >>> v.ps([Point(1.0, 3.0), Point(0.1, 0.7)]) == [v.p(Point(1.0, 3.0)), v.p(Point(0.1, 0.7))]
+        True
+        """
+        (ox, oy), x0, y1, mu = self.origin, self.box[0], self.box[3], self.mu
+        return [(ox + (q.x - x0) / mu, oy + (y1 - q.y) / mu) for q in pts]
 
     def length(self, d: float) -> float:
         """Paper length of a model length."""
