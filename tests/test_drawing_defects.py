@@ -458,7 +458,6 @@ MARK_LEADERS_ACROSS = {
     "200-0": "α′max or αmax at the contact point: the value outside the cam is reached across the profile",
     "200-1": "α′max or αmax at the contact point: the value outside the cam is reached across the profile",
     "200-20": "ψ0 between the two binding arms: any place clear of the construction wedge is across an arm",
-    "001-29": "α at the contact point inside the roller: the free side is across the disc",
     "001-18": "αmax between B2C2 and the guide: the one clear place is across B2C2",
     "001-06": "αmax between B2C2 and the guide at C3: its 20 mm value has no room under B2C2 (it covered C1's "
               "slider block there before); the clear place is above B2C2, the leader across it",

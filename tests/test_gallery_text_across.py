@@ -34,8 +34,6 @@ KNOWN_ACROSS: dict[str, str] = {
     "001-06b_crank_slider_redesign_K": "C3 by the guide's hatch, among C1–C4 on one guide (a crowded knot)",
     "001-21_cutter_drive_K1": "φ1 across DC2 and φ2 on D's ground: D is at the drawing's right edge, and every "
                               "place within the frame by the two arcs meets a link or the ground",
-    "001-29_eccentric_roller_offset_ccw": "α and K0 by the cam disc: the contact point's knot",
-    "001-29_eccentric_roller_offset_cw": "α and K0 by the cam disc: the contact point's knot",
     "001-31_eccentric_oscillating_roller": "E0 on the profile: its other places are inside ω's arc (as bad) or "
                                            "on the roller",
     "004-02_best_by_K_1_2_offset_limit": "C1 in its slider block by A's ground and the guide (a crowded knot)",

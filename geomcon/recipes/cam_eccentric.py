@@ -386,7 +386,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("roller", circle, B, rr, role=Role.RESULT, style="link", caption=("", ""))
     top = sc.add("top", lambda b, k: b + UP * k, B, 0.6 * R, visible=False)
     sc.add("stem", segment, B, top, role=Role.RESULT, style="link", caption=("", ""))
-    sc.add("guide_mark", lambda b: marks.bearing(b + UP * (0.4 * R), UP), B, role=Role.ANNOTATION, style="guide")
+    sc.add("guide_mark", lambda b: marks.bearing(b + UP * (0.45 * R), UP), B, role=Role.ANNOTATION,  # clear of
+           style="guide")                                                       # α's arc above B (_alpha_mark)
     sc.add("delta", turned_against, O, ref0, D if e else B, sense, role=Role.MEASUREMENT, unit="deg",
            caption=("Cam angle from the lowest position: δ = ∠K0OD against ω" if e else "δ = ∠B0OB against ω",
                     "自最低位置的凸轮转角 δ = ∠K0OD(逆 ω)" if e else "凸轮转角 δ = ∠B0OB(逆 ω)"))
@@ -396,8 +397,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("normal", line_through, A, B, style="construction", caption=("The normal at B passes the centre A", "B 点法线过圆心 A"))
     al = sc.add("alpha", guide_pressure, A, B, UP, role=Role.MEASUREMENT, unit="deg",
                 caption=("Pressure angle α between the normal AB and the guide", "压力角 α:法线 AB 与导路所夹锐角"))
-    sc.add("mark_alpha", lambda b, a, v: marks.AngleMark(b, b + UP, b * 2.0 - a if (b - a).y < 0 else a, "α", v),
-           B, A, al, role=Role.ANNOTATION, style="angle")
+    sc.add("mark_alpha", _alpha_mark, B, A, O, al, follower == "roller", role=Role.ANNOTATION, style="angle")
     sc.add("dim_s", lambda b, v, lo: marks.Dimension(b - UP * v, b, "s", v, 0.35 * R), B, s, low,
            role=Role.ANNOTATION, style="dim", caption=("Dimension s from the lowest position", "标注位移 s"))
     answers = {n: n for n in ("r0", "r0_actual", "h", "rise_angle", "return_angle", "delta", "s", "alpha")}
@@ -413,6 +413,27 @@ def construct(g: Mapping[str, Any]) -> Construction:
         answers["offset_correct"] = "offset_correct"
     points = {"O": "O", "A": "A", "B": "B", "B0": "B0", "B1": "B1"}
     return Construction(sc, answers, points)
+
+
+def _alpha_mark(b: Point, a: Point, o: Point, value: float, roller: bool) -> marks.AngleMark:
+    """The pressure angle α of a translating follower at B, between the guide and the normal AB: below B, between
+    the guide's axis and the normal towards A, as before; but for a roller whose normal runs down towards O's side
+    of the guide, above B, between the stem (B's velocity) and the normal beyond B (the cam's force on B). There,
+    below B, the angle lies inside the disc, its profile crossing it a roller radius from B, and its value found
+    room only on the profile (001-29 printed α=36.87° across it); above B only the stem and the guide's bearing are
+    near (the bearing sits at 0.45 R, clear of the arc). A knife's profile leaves the angle below B at B, and a
+    normal running down across the guide from O (001-27) leaves its value room beside the guide.
+
+    >>> m = _alpha_mark(Point(25.0, 20.0), Point(-6.0, -12.0), Point(0.0, 0.0), 36.87, True)  # A on O's side
+    >>> m.a - m.vertex, m.b - m.vertex
+    (Point(x=0.0, y=1.0), Point(x=31.0, y=32.0))
+    >>> m = _alpha_mark(Point(10.0, 50.0), Point(20.0, 0.0), Point(0.0, 0.0), 31.0, True)     # A across the guide
+    >>> m.b
+    Point(x=20.0, y=0.0)
+    """
+    up = b - a if (b - a).y >= 0.0 else a - b             # the normal's direction up from B
+    above = roller and (a.x - b.x) * (o.x - b.x) > 0.0
+    return marks.AngleMark(b, b + UP, b + up if above else b - up, "α", value)
 
 
 def _alpha_extremes(sc: Scene, O: Ref, A: Ref, pitch: Ref, B0: Ref, B1: Ref, ref0: Ref, e: float, sense: float,
