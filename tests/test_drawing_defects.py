@@ -243,12 +243,13 @@ def test_every_slider_lies_on_a_drawn_bar_or_guide_along_its_motion(name):
 
 
 def test_the_slotter_by_K_draws_its_sliders_ram_and_theta():
-    """000-02: B1, B2 are slider blocks on their guide bars; the ram runs on a hatched guide; θ is marked; the
-    step that finds D1 says where D1 lies (between C and B1 here: CD1 = 115.24 < CB1 = 145.36)."""
+    """000-02: B1, B2 are slider blocks on their guide bars; the ram's stroke H is dimensioned on its guide (DE
+    not given: no block guesses where E is, :mod:`tests.test_slotter_design_drawing`); θ is marked; the step
+    that finds D1 says where D1 lies (between C and B1 here: CD1 = 115.24 < CB1 = 145.36)."""
     fig = figure("000-02_slotter_design_by_K")
     v = fig.values
     keys = {g.key for g in fig.groups}
-    assert {"slider_B1", "slider_B2", "ram_guide_mark", "ram1", "ram2", "mark_theta"} <= keys
+    assert {"slider_B1", "slider_B2", "ram_guide", "dim_H", "mark_theta", "mark_psi"} <= keys
     C, B1, D1 = v["C"], v["B1"], v["D1"]
     assert abs(D1 - C) < abs(B1 - C)
     assert v["CD1"].b == B1                       # the bar reaches the slider

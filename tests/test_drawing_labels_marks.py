@@ -78,7 +78,8 @@ def test_the_gallery_joins_the_labels_the_review_found_on_one_spot():
     assert {"B0 = B", "D = K0"} <= _joined(figure("001-29_eccentric_roller_offset_cw"))
     assert {"Q = Q0", "B = B0"} <= _joined(figure("001-31_eccentric_oscillating_roller"))
     assert {"C2 = C′", "B2 = B′"} <= _joined(figure("001-01_crank_rocker_change_point"))
-    assert {"T, M, G"} <= _joined(figure("000-02_slotter_design_by_K"))
+    slotter = _joined(figure("000-02_slotter_design_by_K"))     # at 1:5 T, G, M lay 1.14 mm apart: one label; at
+    assert {"T, M, G"} <= slotter or {"T", "M", "G"} <= slotter  # 1:2 (hram11) 2.85 mm, each by its own dot
     labels = _joined(figure("001-10b_crank_rocker_design_frame_and_swing"))   # N lies 0.3 mm from B2: joined, or
     assert {"N, B2"} <= labels or {"N", "B2"} <= labels       # each its own where the joined label finds no clear place
 

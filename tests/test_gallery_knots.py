@@ -16,9 +16,6 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
   clear place as one label and print apart (text placement's choices).
 - 004-02 (main and detail view): C1's label covers its slider block, its only room clear of links and guides
   (001-21's N and 004-01's C1 were cleared when text placement came to weigh a block as a link: hplace11f).
-- 000-02: the ram's blocks sit on D1 and D2, the guide bar's ends (drawn so by the recipe: the ram under D, the
-  coupler DE not yet chosen); D lies 1.14 mm off the guide at 1:5, within the block's half width (1.5 mm), so no
-  shortening clears it, and the mechanism has no link there for a detail view to draw the ram with.
 - 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
   K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
   placement's choice, hplace11f's).
@@ -35,7 +32,6 @@ GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "-3", "-4", "-5", "_motion"))
                 and not f.name.startswith(("grading_", "bench_")))
 KNOWN = {
-    "000-02_slotter_design_by_K": 2,
     "000-04_slotter_cam_psi0": 6,
     "000-05_slotter_cam_motion_law": 6,
     "000-06_slotter_cam_pitch_points": 6,

@@ -13,6 +13,17 @@ The shaper adds the ram: D on the guide bar at CD from C describes an arc whose 
 the arc's sagitta, h = CD(1 + cos(θ/2))/2 from C, so the largest deviation of D from it, half the sagitta,
 is as small as it can be; a coupler DE then meets the guide at a pressure angle of at most
 asin(deviation / DE), and the shortest DE for an allowed angle is deviation / sin α.
+
+How the drawing shows the ram. D swings only between D1 and D2, so the arc of D is drawn from D1 to D2
+through T (a little beyond each), not as the whole circle about C, which claimed a path D never takes and
+reached CD below C: it set the drawing's extent, and 000-02 fitted A4 only at 1:5 (now 1:2). With DE given
+(or sized from alpha_allow) the ram's block E1 is drawn on its hatched guide at DE from D1. Without DE, as in
+000-02, where E lies is unknown; the seed (the slotter 插床 course design) gives the link design only as a
+heading, and its BASIC program's coupler BC = 46 belongs to a guide placed at x = −276.4, not through G, so it
+gives no DE for this construction. So the step draws what the givens fix: the ram's guide (the line through G)
+with the stroke H dimensioned on it between the feet of D1 and D2 — D1 and D2 lie one distance from the
+guide, so any coupler puts the ram's ends of stroke E1, E2 at the feet shifted alike and E1E2 = D1D2 = H.
+Blocks drawn "under D1, D2", as before, guessed E's place and covered the pins D1, D2.
 """
 from __future__ import annotations
 
@@ -22,7 +33,7 @@ from typing import Any, Mapping
 from ..analytic.design_by_k import guide_bar_design, shaper_design
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
-from ..geometry import (Ahead, Line, NearestTo, Point, circle, foot, line_circle, line_through, midpoint, perpendicular,
+from ..geometry import (Ahead, Arc, Line, NearestTo, Point, circle, foot, line_circle, line_through, midpoint, perpendicular,
                         point_on_ray, reflect)
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
@@ -149,6 +160,29 @@ def _slider_on(B: Point, C: Point) -> marks.Slider:
     return marks.slider(B, B - C)
 
 
+ARC_OVERRUN = 0.125
+"""How far the arc of D runs on past D1 and D2, a fraction of its sweep ψ on each side (a compass arc drawn a
+little beyond the points it joins)."""
+
+
+def _arc_of_d(C: Point, D1: Point, D2: Point) -> Arc:
+    """The arc D describes about C, from D2 to D1 through its top T (the shorter way round), run on by
+    :data:`ARC_OVERRUN` of its sweep at each end: D swings only between D1 and D2, so the whole circle, drawn
+    before, claimed a path D never takes and reached CD below C, setting the drawing's extent (000-02 fitted
+    only 1:5 on A4).
+
+    >>> a = _arc_of_d(Point(0.0, 0.0), Point(-1.0, 1.0), Point(1.0, 1.0))
+    >>> round(math.degrees(a.start), 6), round(math.degrees(a.sweep), 6)
+    (33.75, 112.5)
+    """
+    t2 = math.atan2(D2.y - C.y, D2.x - C.x)
+    sweep = (math.atan2(D1.y - C.y, D1.x - C.x) - t2) % (2 * math.pi)
+    if sweep > math.pi:                      # D1 lies clockwise of D2: the arc runs from D1 instead
+        t2, sweep = t2 + sweep, 2 * math.pi - sweep
+    over = ARC_OVERRUN * sweep
+    return Arc(C, abs(D1 - C), t2 - over, sweep + 2 * over)
+
+
 def _ram_guide(guide: Line, D1: Point, D2: Point) -> marks.Guide:
     """The ram's guide drawn (hatched on the side away from the coupler) over the feet of D1 and D2 on it,
     a fifth of the stroke beyond each."""
@@ -158,9 +192,26 @@ def _ram_guide(guide: Line, D1: Point, D2: Point) -> marks.Guide:
     return marks.guide(a - extra, b + extra, side)
 
 
-def _ram_under(guide: Line, D: Point) -> marks.Slider:
-    """The ram's block on its guide under D."""
-    return marks.slider(foot(guide, D), guide.direction)
+STROKE_OFFSET = 0.12
+"""How far the stroke's dimension line stands off the ram's guide, a fraction of the stroke H, towards A: on the
+guide's hatched side, clear of D1, D2 and the arc of D on the other."""
+
+
+def _stroke_on_guide(guide: Line, D1: Point, D2: Point, H: float) -> marks.Dimension:
+    """The ram's stroke H dimensioned on its guide between the feet of D1 and D2, standing off towards the
+    guide's hatched side (away from D).
+
+    D1 and D2 lie at one distance from the guide (the chord D1D2 is parallel to it), so a coupler DE of any
+    length puts the ram's ends of stroke E1, E2 at the feet shifted alike: E1E2 = D1D2 = H. Where E lies needs
+    DE, which this problem does not give; a block drawn "under D" (as before) guessed it and covered D1, D2.
+
+    >>> d = _stroke_on_guide(Line(Point(0.0, 0.0), Point(1.0, 0.0)), Point(-50.0, -5.0), Point(50.0, -5.0), 100.0)
+    >>> d.a, d.b, d.offset, d.text
+    (Point(x=-50.0, y=0.0), Point(x=50.0, y=0.0), 12.0, 'H=100.00')
+    """
+    a, b = foot(guide, D1), foot(guide, D2)
+    away = 1.0 if (b - a).cross(D1 - a) < 0 else -1.0          # the dimension's left of a→b is away from D
+    return marks.dimension(a, b, "H", abs(b - a), away * STROKE_OFFSET * H)
 
 
 def _bar_end(C: Point, B: Point, D: Point) -> Point:
@@ -216,7 +267,8 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
         add_bar(sc, f"CD{i}", C, end, (f"Guide bar CD{i}, carrying the slider B{i}", f"导杆 CD{i}(滑块 B{i} 在其上)")
                 if i == 1 else ("", ""), style="link" if i == 1 else "link-alt")
     if drawing:
-        sc.add("arcD", circle, C, CD, style="path", caption=("The arc of D about C", "D 点绕 C 的轨迹圆弧"))
+        sc.add("arcD", _arc_of_d, C, D1, D2, style="path", caption=("The arc of D about C, from D1 to D2",
+                                                                     "D 点绕 C 的轨迹圆弧 D1D2"))
     T = sc.add("T", line_circle, centre, sc.add("kCD", circle, C, CD, visible=False), branch=Ahead(C, A), style="point",
                label="T", caption=("The arc's top T on the centre line", "圆弧与中心线的交点 T"))
     M = sc.add("Mchord", midpoint, D1, D2, style="point", label="M", caption=("The chord's midpoint M", "弦 D1D2 的中点 M"))
@@ -226,14 +278,15 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     sc.add("h", length, C, G, role=Role.MEASUREMENT, unit="mm", caption=("h = CG", "导路位置 h = CG"))
     dev = sc.add("deviation", length, G, M, role=Role.MEASUREMENT, unit="mm",
                  caption=("Largest deviation of D from the guide: GM = GT", "D 偏离导路的最大距离 GM = GT"))
-    if drawing:
+    chosen = g.get("alpha_allow") is not None or g.get("DE") is not None     # DE known: the ram's block E1 drawn
+    if drawing and chosen:
         sc.add("ram_guide_mark", _ram_guide, guide, D1, D2, role=Role.ANNOTATION, style="guide",
                caption=("The ram's guide over the stroke", "滑枕(刨头)导路"))
-    if drawing and g.get("alpha_allow") is None and g.get("DE") is None:
-        for i, D in enumerate((D1, D2), 1):     # DE not yet chosen: the ram at its ends of stroke, under D1, D2
-            sc.add(f"ram{i}", _ram_under, guide, D, role=Role.ANNOTATION, style="slider", caption=(
-                "The ram at its ends of stroke under D1 and D2 (D1D2 = H; a coupler DE joins it to D)",
-                "滑枕位于行程两端(D1、D2 之下,D1D2 = H;连杆 DE 连接 D 与滑枕)") if i == 1 else ("", ""))
+    if drawing and not chosen:                  # E's place unknown: the guide's line and the stroke on it
+        sc.add("dim_H", _stroke_on_guide, guide, D1, D2, H, role=Role.ANNOTATION, style="dim", caption=(
+            "The ram's stroke H on its guide, between the feet of D1 and D2 (whatever the coupler DE, the ram's ends "
+            "of stroke lie D1D2 = H apart)",
+            "滑枕行程 H 标在导路上 D1、D2 的垂足之间(连杆 DE 取任何长度,滑枕两极限位置之距均为 D1D2 = H)"))
     if g.get("alpha_allow") is not None:
         DE = sc.add("DE", _sin_ratio, dev, g["alpha_allow"], role=Role.MEASUREMENT, unit="mm",
                     caption=(f"Shortest coupler DE = GM / sin αallow, αallow = {g['alpha_allow']:g}°",

@@ -210,6 +210,8 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     ("slotter.design_by_K", "DE"): _n("DE", "coupler to the slide", "连杆"),
     ("shaper.design_by_K", "CD"): _n("CD", "guide bar, C to D", "导杆"),
     ("shaper.design_by_K", "DE"): _n("DE", "coupler to the ram", "连杆"),
+    # h is where the ram's guide lies, not the stroke (000-02 and 001-20 printed "h = 109.532 mm … 行程" beside H = 100)
+    ("shaper.design_by_K", "h"): _n("h", "distance of the ram's guide from C", "滑枕导路至 C 的距离"),
     ("guide_bar.design_by_K", "CD"): _n("CD", "guide bar, C to D", "导杆"),
     ("guide_bar.design_by_K", "DE"): _n("DE", "coupler to the ram", "连杆"),
 }
