@@ -1,24 +1,31 @@
 """000-02, the slotter designed by K, drawn as a textbook draws it (issue 11, hram11): the ram's stroke on its guide
 instead of blocks guessed "under D", the arc of D only where D goes (the sheet at 1:2, not 1:5), h printed as where
-the guide lies (not "行程", the stroke)."""
+the guide lies (not "行程", the stroke), and no ground symbol's hatch beside a guide's."""
 from __future__ import annotations
 
 import math
+import re
 import sys
 from pathlib import Path
 
 import pytest
+import shapely
 
 from geomcon.geometry import foot
 from geomcon.geometry.primitives import Arc, Circle, Line, Point
 from geomcon.problems import load_problem
+from geomcon.render.draw import Context
 from geomcon.render.page import PageSpec
 from geomcon.render.results import name_of
+from geomcon.render.style import STYLES
 from geomcon.render.svg import place_figure
-from geomcon.scene.marks import Dimension, Guide, Slider
+from geomcon.render.symbols import GUIDE_GAP, draw, guide_bands
+from geomcon.render.view import View
+from geomcon.scene.marks import Dimension, Ground, Guide, Slider
 from geomcon.solve import solve
 
 sys.path.insert(0, str(Path(__file__).parent))
+from knots import GROUP, PATH, _polylines  # noqa: E402
 from test_drawing_defects import figure  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -86,3 +93,53 @@ def test_h_prints_as_the_guides_place_not_the_stroke():
     assert "行程" not in n.zh and "stroke" not in n.en and "guide" in n.en
     svg = (ROOT / "gallery" / f"{NAME}.svg").read_text(encoding="utf-8")
     assert "导路至 C 的距离" in svg
+
+
+def _grounds_and_guides(svg: str) -> dict[str, list[tuple[str, str, list]]]:
+    figs: dict[str, list[tuple[str, str, list]]] = {}
+    for classes, gid, body in GROUP.findall(svg):
+        m = re.search(r"style-(ground|guide)\b", classes)
+        paths = [q for d in PATH.findall(body) for q in _polylines(d)] if m else []
+        if paths:
+            figs.setdefault("detail" if gid.startswith("detail-") else "", []).append((m.group(1), gid, paths))
+    return figs
+
+
+SHEETS = sorted(f for f in (ROOT / "gallery").glob("*.svg") if 'style-guide' in f.read_text(encoding="utf-8"))
+
+
+def test_the_gallery_has_guides_beside_grounds():
+    assert len(SHEETS) >= 5
+
+
+@pytest.mark.parametrize("sheet", SHEETS, ids=lambda f: f.stem)
+def test_no_ground_symbol_hangs_by_a_guides_hatch(sheet):
+    """000-02's A hung its hatch 1.2 mm above the ram's guide's hatch, 004-02 (K = 1.5)'s A* 0.26 mm: grounds
+    did not look at guides. Every ground symbol keeps GUIDE_GAP off every guide's ink (surface and hatch),
+    away from its hinge."""
+    for items in _grounds_and_guides(sheet.read_text(encoding="utf-8")).values():
+        for kind, gid, paths in items:
+            if kind != "ground":
+                continue
+            ground = shapely.MultiLineString(paths).difference(shapely.Point(paths[0][1]).buffer(1.7, 8))
+            for kind2, gid2, paths2 in items:
+                if kind2 == "guide":
+                    assert ground.distance(shapely.MultiLineString(paths2)) >= GUIDE_GAP - 1e-3, (gid, gid2)
+
+
+def test_a_ground_turns_off_a_guides_hatch_below_it():
+    """A ground hanging down from its hinge with a guide hatched upwards 4 mm below: its default side (down) would
+    put its hatch 1 mm from the guide's; it turns so that it keeps GUIDE_GAP off the guide's band."""
+    view = View((-20.0, -20.0, 20.0, 20.0), 1.0, (0.0, 0.0))
+    guide = Guide(Point(-15.0, -9.5), Point(15.0, -9.5), 1)      # surface at y = -7, hatched up to -5.73
+    bands = guide_bands([guide], view)
+    band = shapely.Polygon(bands[0])
+    plain = draw(Ground(Point(0.0, 0.0)), STYLES["ground"], Context(view))
+    hinge = shapely.Point(view.p(Point(0.0, 0.0))).buffer(1.7, 8)
+
+    def gap(drawn) -> float:
+        return shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(hinge).distance(band)
+
+    assert gap(plain) < GUIDE_GAP                                 # the ground as drawn before: by the hatch
+    turned = draw(Ground(Point(0.0, 0.0)), STYLES["ground"], Context(view, guides=bands))
+    assert gap(turned) >= GUIDE_GAP

@@ -119,6 +119,9 @@ class Context:
     dims: tuple[tuple[XY, XY], ...] = ()
     """The dimensions of the figure on paper, as segments (each dimension line and its extension lines): a ground
     symbol keeps off them (:func:`geomcon.render.symbols.dimension_lines`)."""
+    guides: tuple[tuple[XY, ...], ...] = ()
+    """The guides' hatched bands on paper, as polygons (the surface and its hatch strokes): a ground symbol keeps
+    off them (:func:`geomcon.render.symbols.guide_bands`)."""
 
 
 def pen(style: Style) -> Pen:

@@ -37,7 +37,7 @@ from .rows import SEP, Fan, clusters, fans, row_centre, thinned
 from .labels import text_width
 from .shapes import ArcP, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
-from .symbols import dimension_lines, draw, kind_of, sector
+from .symbols import dimension_lines, draw, guide_bands, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
@@ -190,7 +190,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
                   frames=_links(steps, values, view, frame=True), numbers=tuple(n for n, _ in numbered),
                   sliders=_sliders(steps, values, view), sectors=_sectors(steps, values, view),
                   curves=_curves(steps, values, view),
-                  dims=dimension_lines([m for _, s in steps for m in _all(values[s.key])], view))
+                  dims=dimension_lines([m for _, s in steps for m in _all(values[s.key])], view),
+                  guides=guide_bands([m for _, s in steps for m in _all(values[s.key])], view))
     current = n if upto is not None else None
     frame_lines = _frame_lines(steps, values, view)
     labels = merged_labels(steps, values, box)

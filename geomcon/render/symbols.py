@@ -39,9 +39,9 @@ a value always prints (a leader joins a far text to its arc)."""
 def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     """A fixed pivot's ground: two legs from the hinge to a base line, hatched on the ground side at 45° to
     it; turned from its side by the least multiple of 45° (then of 15°, :data:`GROUND_TURNS`) that keeps it off
-    every link, frame line, angle
-    mark's sector and point of the figure (a ground drawn across a link reads as a frame the link cannot
-    pass; one inside an angle's arc hides the angle) and :data:`GROUND_ROOM` away from every link and fixed
+    every link, frame line, angle mark's sector, guide's hatch (:data:`GUIDE_GAP`) and point of the figure (a
+    ground drawn across a link reads as a frame the link cannot pass; one inside an angle's arc hides the
+    angle; one by a guide's hatch reads as one frame with it) and :data:`GROUND_ROOM` away from every link and fixed
     link leaving the hinge (the hatch points away from them, not into the corner between two); else the
     multiple of 45° that meets least, then the one with the most room."""
     c = ctx.view.p(g.at)
@@ -170,6 +170,8 @@ class Near(NamedTuple):
     pies: Any
     pts: list[XY]
     dims: Any
+    guides: Any
+    """The guides' hatched bands within reach (:func:`guide_bands`), None without."""
     hinge: Any
     """The disc about the hinge left out of the symbol (its legs meet there)."""
     apart: Any
@@ -205,8 +207,11 @@ def _near(c: XY, ctx: Context) -> Near:
     dims = _lines(ctx.dims) if ctx.dims else None
     if dims is not None:
         dims = dims[shapely.dwithin(dims, spot, GROUND_REACH)]
+    bands = np.array([shapely.Polygon(b) for b in ctx.guides], dtype=object) if ctx.guides else None
+    if bands is not None:
+        bands = bands[shapely.dwithin(bands, spot, GROUND_REACH + GUIDE_GAP)]
     apart = ~shapely.dwithin(links, spot, 0.5) if links is not None and len(links) else None
-    return Near(links, pies, pts, dims, spot.buffer(1.7, 8), apart, shapely.MultiPoint(pts) if pts else None)
+    return Near(links, pies, pts, dims, bands, spot.buffer(1.7, 8), apart, shapely.MultiPoint(pts) if pts else None)
 
 
 def dimension_lines(values: list[Any], view: Any) -> tuple[tuple[XY, XY], ...]:
@@ -251,7 +256,33 @@ def _collision(c: XY, drawn: Drawn, near: Near, gaps: tuple[float, float] | None
         hit += float(shapely.length(shapely.intersection(geo, pies)).sum())
     if dims is not None and len(dims):
         hit += 10.0 * int(shapely.dwithin(geo, dims, DIM_GAP).sum())
+    if near.guides is not None and len(near.guides):
+        hit += 10.0 * int(shapely.dwithin(geo, near.guides, GUIDE_GAP).sum())
     return hit
+
+
+GUIDE_GAP = 1.5
+"""Least paper mm between a ground symbol and a guide's hatched band: closer, the two hatches read as one frame
+(000-02's A hung its hatch 1.2 mm above the ram's guide's at 1:5, 004-02 (K = 1.5)'s A* 0.26 mm; 004-02
+(K = 1.2)'s A* stands 1.9 mm off its guide's end and reads apart)."""
+
+
+def guide_bands(values: list[Any], view: Any) -> tuple[tuple[XY, ...], ...]:
+    """The paper polygons the guides among ``values`` cover with their surface and hatch (:func:`draw_guide`):
+    a ground symbol keeps :data:`GUIDE_GAP` off them.
+
+    >>> from geomcon.render.view import View
+    >>> [[tuple(round(c, 2) for c in q) for q in b] for b in guide_bands([Guide(Point(0, 0), Point(10, 0), 1)],
+    ...                                                                  View((-20, -20, 20, 20), 1.0, (0, 0)))]
+    [[(20.0, 17.5), (30.0, 17.5), (30.0, 16.23), (19.93, 16.23)]]
+    """
+    out = []
+    for m in values:
+        if isinstance(m, Guide) and m.a != m.b:
+            a2, b2, n, u = _guide_surface(m, view)       # the strokes lean back along a→b: the first starts
+            back = GUIDE_FIRST - GUIDE_HATCH_DEPTH          # 1.2 mm in and ends 0.07 mm before a2
+            out.append((a2, b2, _add(b2, n, GUIDE_HATCH_DEPTH), _add(_add(a2, n, GUIDE_HATCH_DEPTH), u, min(0.0, back))))
+    return tuple(out)
 
 
 DIM_GAP = 0.5
@@ -378,21 +409,37 @@ def draw_guide(g: Guide, style: Style, ctx: Context) -> Drawn:
     hatched on that side."""
     if g.a == g.b:
         return Drawn()
-    pa, pb = ctx.view.p(g.a), ctx.view.p(g.b)
+    a2, b2, n, u = _guide_surface(g, ctx.view)
+    out = Drawn([Poly((a2, b2), pen(style))])
+    length = math.hypot(b2[0] - a2[0], b2[1] - a2[1])
+    slant = _unit(n[0] - u[0], n[1] - u[1])
+    k = GUIDE_FIRST
+    while k <= length:
+        q = _add(a2, u, k)
+        out.shapes.append(Poly((q, _add(q, slant, GUIDE_STROKE)), Pen(style.stroke, HATCH)))
+        k += 2.4
+    return out
+
+
+GUIDE_STROKE = 1.8
+"""Length of a guide's hatch stroke (paper mm), at 45° to its surface."""
+
+GUIDE_FIRST = 1.2
+"""Where a guide's first hatch stroke starts, paper mm from its surface's start (then every 2.4 mm)."""
+
+GUIDE_HATCH_DEPTH = GUIDE_STROKE * math.sqrt(0.5)
+"""How far a guide's hatch reaches beyond its surface (paper mm)."""
+
+
+def _guide_surface(g: Guide, view: Any) -> tuple[XY, XY, XY, XY]:
+    """A guide's surface on paper (half a block off the line a–b on its ``side``), the unit normal towards its
+    hatch and the unit direction a→b."""
+    pa, pb = view.p(g.a), view.p(g.b)
     u = _unit(pb[0] - pa[0], pb[1] - pa[1])
     side = -1.0 if g.side >= 0 else 1.0                 # model left of a→b is paper right-hand (y flipped)
     n = (-u[1] * side, u[0] * side)
     off = SLIDER[1] / 2
-    a2, b2 = _add(pa, n, off), _add(pb, n, off)
-    out = Drawn([Poly((a2, b2), pen(style))])
-    length = math.hypot(b2[0] - a2[0], b2[1] - a2[1])
-    slant = _unit(n[0] - u[0], n[1] - u[1])
-    k = 1.2
-    while k <= length:
-        q = _add(a2, u, k)
-        out.shapes.append(Poly((q, _add(q, slant, 1.8)), Pen(style.stroke, HATCH)))
-        k += 2.4
-    return out
+    return _add(pa, n, off), _add(pb, n, off), n, u
 
 
 BEARING = (6.0, 1.6)
