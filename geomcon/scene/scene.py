@@ -362,7 +362,9 @@ class Scene:
         """The visible steps grouped by protocol number: a step with an empty caption is drawn with the
         numbered step before it (a link drawn with its position, a ground symbol with its pivot), except an
         annotation that shows a measurement (an angle mark with its value): it is drawn with the last
-        measurement it refers to, so that the mark appears with the step that measures it.
+        measurement it refers to, so that the mark appears with the step that measures it — but never before
+        the drawn steps it stands on (θ = 180°(K − 1)/(K + 1), step 1 of a design by K, had its mark drawn at
+        step 1 about a vertex and lines not yet drawn: 21 players showed a floating arc).
 
         The grouping is remembered while the scene's records stay the same (a drawing, its protocol, its
         captions and its results' frames each ask for it); each call returns new lists."""
@@ -381,9 +383,10 @@ class Scene:
                 continue
             at = len(out) - 1
             if s.role is Role.ANNOTATION:
-                measured = [where[d] for d in rec[s.key][7] if d in where and rec[d][8][1] is Role.MEASUREMENT]
+                deps = rec[s.key][7]
+                measured = [where[d] for d in deps if d in where and rec[d][8][1] is Role.MEASUREMENT]
                 if measured:
-                    at = max(measured)
+                    at = max(measured + [where[d] for d in deps if d in where])
             out[at].append(s)
             where[s.key] = at
         self._frames = (rec, len(rec), tuple(tuple(g) for g in out))
