@@ -25,11 +25,13 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
 
-from knots import knots
+from geomcon.render.style import PAPER
+from knots import CIRCLE, GROUP, MARKER, SAME_SPOT, knots
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "-3", "-4", "-5", "_motion"))
@@ -89,3 +91,71 @@ def test_a_slider_block_leaves_the_points_beside_it_free(stem, point):
     # issue 11: at 1:5 the 8 mm block at C1 covered C3's dot (001-06b) and B2's pin (004-02); it now shortens
     found = knots((GALLERY / f"{stem}.svg").read_text(encoding="utf-8"))
     assert f"slider slider1 meets pin {point}" not in [k.what for k in found], found
+
+
+def _markers(svg: str) -> list[tuple[str, str, float, float, float, bool]]:
+    """(figure, step key, x, y, r, hollow) of every point's marker of the sheet, in drawing order."""
+    out = []
+    for _, gid, body in GROUP.findall(svg):
+        c = CIRCLE.findall(body)
+        if c and body.startswith("<circle") and float(c[0][3]) <= MARKER:
+            fig, key = gid.split("step-", 1)
+            out.append((fig, key, float(c[0][0]), float(c[0][1]), float(c[0][3]), c[0][2] == PAPER))
+    return out
+
+
+@pytest.mark.parametrize("sheet", SHEETS, ids=lambda f: f.stem)
+def test_points_at_one_spot_share_one_marker(sheet):
+    # issue 11: the same point reached twice was drawn twice, a dot in a hinge's circle (200-12's B0 with the rise's
+    # first and the return's last positions, 001-13's C1 with N, 001-29's B with B0): it read as two points
+    ms = _markers(sheet.read_text(encoding="utf-8"))
+    twice = [(a[1], b[1]) for i, a in enumerate(ms) for b in ms[i + 1:]
+             if a[0] == b[0] and math.dist(a[2:4], b[2:4]) <= SAME_SPOT]
+    assert not twice, twice
+
+
+@pytest.mark.parametrize("sheet", SHEETS, ids=lambda f: f.stem)
+def test_no_hinge_hides_a_dot(sheet):
+    # issue 11: a hinge's white disc drawn after a dot within its circle hid the point (001-10b's N, 0.3 mm from
+    # B2's centre; 200-13's division B3 under P_alpha_rise's circle, 0.75 mm apart): dots are drawn above hinges
+    ms = _markers(sheet.read_text(encoding="utf-8"))
+    hidden = [(dot[1], pin[1]) for i, dot in enumerate(ms) if not dot[5] for pin in ms[i + 1:]
+              if pin[5] and pin[0] == dot[0] and math.dist(dot[2:4], pin[2:4]) < pin[4] + dot[4]]
+    assert not hidden, hidden
+
+
+def _two(d: float, second: str = "#1a1a1a", r: float = 0.55) -> str:
+    """A hinge at the origin and a second marker ``d`` mm to its right, as a sheet draws them."""
+    return ('<g class="step" data-step="1" id="step-P"><circle class="ink" cx="0" cy="0" fill="#ffffff" r="1.25" />'
+            '</g><g class="step" data-step="2" id="step-Q"><circle class="ink dot" cx="%g" cy="0" fill="%s" '
+            'r="%g" /></g>' % (d, second, r))
+
+
+def test_a_shared_marker_is_one_point_and_half_a_millimetre_is_two():
+    # the rule of tests/knots.py: a marker is a point; a step at its spot draws none (shared: no knot), and two
+    # markers at one spot are one point; two points 0.5 mm apart are two, and crowd each other
+    shared = _two(0.0).replace('<circle class="ink dot" cx="0" cy="0" fill="#1a1a1a" r="0.55" />', "")
+    assert knots(shared) == [] and knots(_two(0.0)) == [] and knots(_two(0.0005)) == []
+    assert [k.what for k in knots(_two(0.5))] == ["pin P meets pin Q"]
+    assert [k.what for k in knots(_two(0.5, "#ffffff", 1.25))] == ["pin P meets pin Q"]
+
+
+def test_a_step_player_shows_the_point_a_step_finds_though_it_shares_a_marker():
+    # 200-12: B_return6, the return's last position, is B0 reached again; sheet 1 draws B0's hinge only, but the
+    # player's frame of that step draws B_return6's own dot, highlighted (a frame shows what its step finds)
+    from geomcon.problems import load_problem
+    from geomcon.render.figure import build_figure
+    from geomcon.render.shapes import Disc
+    from geomcon.render.svg import place_figure
+    from geomcon.render.page import PageSpec
+    from geomcon.solve import solve
+    sc = solve(load_problem(GALLERY.parent / "problems" / "200-12_oscillating_base_radius.toml")).drawing_scene
+    _, _, view = place_figure(sc, PageSpec())
+    whole = build_figure(sc, None, view.box, view.origin, mu=view.mu)
+    n = next(g.number for g in whole.groups if g.key == "B_return6")
+    frame = build_figure(sc, n, view.box, view.origin, mu=view.mu)
+
+    def discs(fig, key):
+        return [sh for g in fig.groups if g.key == key for sh in g.shapes if isinstance(sh, Disc)]
+    assert discs(whole, "B0") and not discs(whole, "B_return6")
+    assert discs(frame, "B_return6") and discs(frame, "B0")
