@@ -11,6 +11,9 @@ The rules, each over one figure of the sheet (the main figure, or its detail vie
 - no ground symbol touches a dimension's ink away from its hinge;
 - no point's label covers a slider block.
 
+Two pins that meet in the main figure and that the sheet's detail view draws apart (both there, meeting no more)
+are read there, as a textbook's 局部放大图 is read: no knot.
+
 Points are read from their markers: a marker is one point, however many steps reach it. Points that coincide
 (within :func:`geomcon.render.coincident.same_spot`) share the largest one's marker
 (:func:`geomcon.render.coincident.shared_markers`); a step drawing no marker of its own is no point here (its name is
@@ -192,7 +195,20 @@ def knots(svg: str) -> list[Knot]:
                 for key, line in dims.get(fig, []):
                     if apart.distance(line) < DIM_TOUCH:
                         out.append(Knot(fig, f"{what} meets dimension {key}"))
-    return out
+    return _read_in_detail(out, {p.key for p in points.get("detail-", [])})
+
+
+def _read_in_detail(found: list[Knot], shown: set[str]) -> list[Knot]:
+    """``found`` less the main figure's pins that meet where the sheet's detail view (its points ``shown``) draws
+    both points and they meet no more: the reader reads that knot in the detail, the textbook's 局部放大图."""
+    apart = set()
+    for k in found:
+        m = re.fullmatch(r"pin (\S+) meets pin (\S+)", k.what)
+        if k.figure == "" and m and {m.group(1), m.group(2)} <= shown:
+            both = (k.what, f"pin {m.group(2)} meets pin {m.group(1)}")
+            if not any(Knot("detail-", w) in found for w in both):
+                apart.add(k)
+    return [k for k in found if k not in apart]
 
 
 def _kind(gid: str, svg: str) -> str | None:

@@ -140,4 +140,35 @@ def dots_above(groups: list, hollow: Callable[[object], bool]) -> list:
     return [g for g in groups if hollow(g)] + [g for g in groups if not hollow(g)]
 
 
-__all__ = ["LABEL_HEIGHT", "NEAR", "SAME", "Together", "dots_above", "groups_of", "same_spot", "shared_markers"]
+PIN_GAP = 0.3
+"""Least paper mm between a hinge's circle and another point's marker: closer, the two read as one blot (the rule
+``tests/knots.py`` checks)."""
+
+
+def tightest(markers: list[tuple[Point, XY, float, bool]]) -> tuple[float, float, tuple[Point, Point]] | None:
+    """Of the point markers — (model point, centre on paper, radius, hollow) — the hinge and the dot (a construction
+    point on a hinge) drawn closer than their radii and :data:`PIN_GAP`, two distinct points (the markers of points
+    that coincide are one), that need the most enlarging to stand apart: (their distance on paper, the distance
+    they need, the two model points); None when every dot keeps :data:`PIN_GAP` from the hinges. Two hinges are
+    the mechanism's knot (:func:`.detail.knot`), not this one's.
+
+    >>> m = [(Point(0, 0), (0.0, 0.0), 1.25, True), (Point(0.7, 0), (0.7, 0.0), 0.55, False),
+    ...      (Point(9, 0), (9.0, 0.0), 0.55, False)]
+    >>> d, need, (p, q) = tightest(m)
+    >>> round(d, 9), round(need, 9), p, q
+    (0.7, 2.1, Point(x=0.0, y=0.0), Point(x=0.7, y=0.0))
+    """
+    best = None
+    dots = [m for m in markers if not m[3]]
+    for p, a, r, _ in (m for m in markers if m[3]):
+        for q, b, s, _ in dots:
+            need = r + s + PIN_GAP
+            if abs(a[0] - b[0]) < need and abs(a[1] - b[1]) < need:
+                d = math.dist(a, b)
+                if 1e-3 < d < need and (best is None or need / d > best[1] / best[0]):
+                    best = (d, need, (p, q))
+    return best
+
+
+__all__ = ["LABEL_HEIGHT", "NEAR", "PIN_GAP", "SAME", "Together", "dots_above", "groups_of", "same_spot",
+           "shared_markers", "tightest"]
