@@ -1,16 +1,25 @@
 """Crowded knots on a gallery sheet, measured from its SVG (issue 11, hknot11): where pins, grounds, slider blocks and
 labels meet so that a reader cannot tell which label names which point.
 
-Two rules, each over one figure of the sheet (the main figure, or its detail view):
+The rules, each over one figure of the sheet (the main figure, or its detail view):
 
 - a point's label is nearer to its own point than to any other labelled point (the label's box, measured to the
   points' centres; a label joined with a leader is read along the leader and left out; a joined label's part
   ", C4" is measured from its name, not its comma; points closer than a label's height share one label);
 - no pin (a hinge's hollow circle) comes within :data:`PIN_GAP` of another point's marker, and no ground symbol or
-  slider block overlaps one (a symbol meets the points at its own hinge only; two points drawn within 1e-3 mm of
-  each other are one spot);
+  slider block overlaps one (a symbol meets the points at its own hinge only);
 - no ground symbol touches a dimension's ink away from its hinge;
 - no point's label covers a slider block.
+
+Two pins that meet in the main figure and that the sheet's detail view draws apart (both there, meeting no more)
+are read there, as a textbook's 局部放大图 is read: no knot.
+
+Points are read from their markers: a marker is one point, however many steps reach it. Points that coincide
+(within :func:`geomcon.render.coincident.same_spot`) share the largest one's marker
+(:func:`geomcon.render.coincident.shared_markers`); a step drawing no marker of its own is no point here (its name is
+part of the shared label). Two markers centred within :data:`SAME_SPOT` (the SVG's printed precision) are one spot
+too: a player's frame draws the current step's marker over the shared one. Any two markers farther apart are two
+points, and crowd each other by the rules above (two points 0.5 mm apart do: ``test_gallery_knots``).
 
 Examples
 --------
@@ -41,6 +50,7 @@ TEXT = re.compile(r'<text class="label([^"]*)"([^>]*)>(.*?)</text>', re.S)
 PATH = re.compile(r'<path class="ink"[^>]* d="([^"]+)"')
 JOINS = (", ", " = ")
 SAME_SPOT = 1e-3
+"""Paper mm (the SVG's printed precision) within which two markers' centres are one spot, one point."""
 COVER = 1.0
 """Paper mm² of a slider block a point's label box may cover (001-05c's "T1 = B1" touches its block's corner with
 0.8 mm²): more, the label reads as written on the block (004-02's C1: 1.3 mm² at 1:5, 8.0 mm² in its detail view;
@@ -185,7 +195,20 @@ def knots(svg: str) -> list[Knot]:
                 for key, line in dims.get(fig, []):
                     if apart.distance(line) < DIM_TOUCH:
                         out.append(Knot(fig, f"{what} meets dimension {key}"))
-    return out
+    return _read_in_detail(out, {p.key for p in points.get("detail-", [])})
+
+
+def _read_in_detail(found: list[Knot], shown: set[str]) -> list[Knot]:
+    """``found`` less the main figure's pins that meet where the sheet's detail view (its points ``shown``) draws
+    both points and they meet no more: the reader reads that knot in the detail, the textbook's 局部放大图."""
+    apart = set()
+    for k in found:
+        m = re.fullmatch(r"pin (\S+) meets pin (\S+)", k.what)
+        if k.figure == "" and m and {m.group(1), m.group(2)} <= shown:
+            both = (k.what, f"pin {m.group(2)} meets pin {m.group(1)}")
+            if not any(Knot("detail-", w) in found for w in both):
+                apart.add(k)
+    return [k for k in found if k not in apart]
 
 
 def _kind(gid: str, svg: str) -> str | None:

@@ -6,7 +6,8 @@ or a diagram's ordinate drawn like one is an annotation, not a link (:func:`geom
 Where no detail view is drawn although a link is short, the test shows why: the sheet's free room, clear of the
 figure, the results, title block, scale bar and captions, holds no box of the detail's size (000-03, 001-10,
 001-11, 200-07 on A4 landscape). Two hinges of the mechanism drawn closer than 6 mm (a knot: 001-19's A and D′,
-001-12's A, B1, B2) are shown apart in a detail view too: the mechanism's, or a window about the knot."""
+001-12's A, B1, B2) are shown apart in a detail view too: the mechanism's, or a window about the knot; so is a
+construction point's dot drawn on a hinge (001-10b's N 0.3 mm from B2: a window at 5:1)."""
 from __future__ import annotations
 
 import math
@@ -81,6 +82,25 @@ def test_every_knot_of_hinges_is_shown_apart_in_a_detail_view(pid):
     assert d * detail.factor / scale.factor >= MIN_KNOT - 1e-9, (pid, str(detail))
 
 
+def _point_knot(svg: str) -> tuple[float, float, tuple] | None:
+    """A hinge and a dot of sheet 1's main figure drawn closer than their markers and 0.3 mm, read from its SVG
+    (:func:`geomcon.render.coincident.tightest`): they get a window (:func:`geomcon.render.detail.point_detail`)."""
+    from geomcon.render.coincident import tightest
+    from geomcon.render.style import PAPER
+    markers = []
+    for _, gid, body in re.findall(r'<g class="step([^"]*)" data-step="\d+" id="(step-[^"]+)">(.*?)</g>', svg, re.S):
+        m = re.match(r'<circle class="ink[^"]*" cx="([-\d.]+)" cy="([-\d.]+)" fill="([^"]*)" r="([\d.]+)"', body)
+        if m and m.group(3) != "none" and float(m.group(4)) <= 2.0:
+            markers.append((gid, (float(m.group(1)), float(m.group(2))), float(m.group(4)), m.group(3) == PAPER))
+    return tightest(markers)
+
+
+def test_a_hinge_and_a_dot_apart_get_no_window():
+    # 001-10b's N 0.3 mm from B2 gets one (5:1); a sheet whose dots keep 0.3 mm off every hinge gets none
+    assert _point_knot((GALLERY / "001-10b_crank_rocker_design_frame_and_swing.svg").read_text(encoding="utf-8"))
+    assert _point_knot((GALLERY / "001-08_crank_rocker.svg").read_text(encoding="utf-8")) is None
+
+
 def _detail_scale(svg: str) -> Scale | None:
     m = re.search(r'class="detail-head"[^>]*>(?:<tspan>)?[^<]*?(\d+(?:\.\d+)?:\d+(?:\.\d+)?)', svg)
     return Scale.parse(m.group(1)) if m else None
@@ -97,7 +117,7 @@ def test_every_link_is_ten_mm_on_paper_or_shown_in_a_detail_view(pid):
     shortest, scale = got
     detail = _detail_scale(svg_path.read_text(encoding="utf-8"))
     if shortest >= MIN_LINK - 1e-9:
-        if _knot(pid) is None:
+        if _knot(pid) is None and _point_knot(svg_path.read_text(encoding="utf-8")) is None:
             assert detail is None, (pid, shortest)        # no detail where the drawing is readable already
         return
     if detail is None:

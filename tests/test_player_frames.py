@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from geomcon.gallery import gallery_page, problem_files
+from geomcon.geometry import Point
 from geomcon.problems import load_problem
 from geomcon.render.draw import COMPASS_HALF
 from geomcon.render.figure import build_figure
@@ -50,6 +51,9 @@ def test_no_compass_arc_is_drawn_before_the_point_it_is_swung_for(pid):
     _, _, view = place_figure(sc, gallery_page())
     fig = build_figure(sc, None, view.box, view.origin, mu=view.mu)
     points = [(g.number, sh.c) for g in fig.groups if g.layer == "points" for sh in g.shapes if isinstance(sh, Disc)]
+    points += [(g.number, fig.view.p(fig.values[g.key])) for g in fig.groups      # a point sharing another's marker
+               if g.layer == "points" and isinstance(fig.values.get(g.key), Point)     # (drawn at its own frame)
+               and not any(isinstance(sh, Disc) for sh in g.shapes)]
     for g in fig.groups:
         arcs = [sh for sh in g.shapes if isinstance(sh, ArcP)] if "style-construction" in g.classes.split() else []
         for arc in arcs:

@@ -7,6 +7,12 @@ The label is placed as one text about the group, and printed in parts: each name
 step that draws its point, so that the step player never shows a name before its point exists and the label never
 moves when the next name appears.
 
+Points that coincide (the same point reached twice: 200-12's B0, the rise's first and the return's last position;
+001-13's C1 and N) share one marker, the largest of them (:func:`shared_markers`): a dot drawn in a hinge's circle
+reads as a second point where there is one. A point near another but apart keeps its marker, and a dot is drawn
+above the hinges (:func:`dots_above`), so that no hinge's white disc hides a point of the construction (001-10b's N,
+0.3 mm from B2's centre, was under B2's circle).
+
 Examples
 --------
 >>> from geomcon.geometry import Point
@@ -20,6 +26,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable, Collection
 
 from ..geometry.primitives import Point
 from .labels import Runs, label_runs
@@ -69,8 +76,7 @@ def groups_of(points: list[tuple[str, str, Point, float]], view: View) -> list[T
     """The groups of two or more of ``points`` — (step key, label, model point, marker radius on paper), in step
     order — lying pairwise closer than :data:`LABEL_HEIGHT` on paper: each point joins the first group all of whose
     members are that near (a chain of near points never makes one long label), else starts its own."""
-    box = view.box
-    eps = 1e-9 * max(box[2] - box[0], box[3] - box[1])
+    eps = same_spot(view.box)
     groups: list[list[tuple[str, str, Point, float]]] = []
     for p in points:
         q = view.p(p[2])
@@ -93,4 +99,76 @@ def groups_of(points: list[tuple[str, str, Point, float]], view: View) -> list[T
     return out
 
 
-__all__ = ["LABEL_HEIGHT", "NEAR", "SAME", "Together", "groups_of"]
+def same_spot(box: tuple[float, float, float, float]) -> float:
+    """The model distance within which two points of a drawing of model ``box`` coincide: 1e-9 of its size (the
+    join :data:`SAME` of their names and their shared marker use this one rule)."""
+    return 1e-9 * max(box[2] - box[0], box[3] - box[1])
+
+
+def shared_markers(points: list[tuple[str, Point, float]], eps: float, current: Collection[str] = ()) -> set[str]:
+    """The step keys of ``points`` — (step key, model point, marker radius on paper), in step order — whose marker
+    another point at the same spot (within ``eps``) draws: of points that coincide only the largest marker, the
+    first of equal ones, is drawn; the current step's points keep their own (a step player shows what it finds).
+
+    >>> pts = [("B0", Point(0, 0), 1.25), ("C", Point(0.5, 0), 0.55), ("B6", Point(0, 0), 0.55),
+    ...        ("T", Point(0, 0), 1.25)]
+    >>> sorted(shared_markers(pts, 1e-9)), sorted(shared_markers(pts, 1e-9, current={"B6"}))
+    (['B6', 'T'], ['T'])
+    """
+    order = sorted(range(len(points)), key=lambda i: points[i][1].x)       # a sweep along x: coinciding are adjacent
+    out: set[str] = set()
+    for n, i in enumerate(order):
+        p = points[i][1]
+        for j in order[n + 1:]:
+            q = points[j][1]
+            if q.x - p.x > eps:
+                break
+            if abs(q.y - p.y) <= eps and abs(p - q) <= eps:
+                ri, rj = points[i][2], points[j][2]
+                lose = j if (ri > rj or (ri == rj and i < j)) else i        # the larger marker, the first of equal
+                out.add(points[lose][0])
+    return out - set(current)
+
+
+def dots_above(groups: list, hollow: Callable[[object], bool]) -> list:
+    """``groups`` (one layer's step drawings, in step order) with the hinges' (``hollow``) first, then the rest, each
+    in its order: a dot near a hinge is drawn on its circle, not under its white disc.
+
+    >>> dots_above(["dot A", "pin B", "dot C", "pin D"], lambda g: g.startswith("pin"))
+    ['pin B', 'pin D', 'dot A', 'dot C']
+    """
+    return [g for g in groups if hollow(g)] + [g for g in groups if not hollow(g)]
+
+
+PIN_GAP = 0.3
+"""Least paper mm between a hinge's circle and another point's marker: closer, the two read as one blot (the rule
+``tests/knots.py`` checks)."""
+
+
+def tightest(markers: list[tuple[Point, XY, float, bool]]) -> tuple[float, float, tuple[Point, Point]] | None:
+    """Of the point markers — (model point, centre on paper, radius, hollow) — the hinge and the dot (a construction
+    point on a hinge) drawn closer than their radii and :data:`PIN_GAP`, two distinct points (the markers of points
+    that coincide are one), that need the most enlarging to stand apart: (their distance on paper, the distance
+    they need, the two model points); None when every dot keeps :data:`PIN_GAP` from the hinges. Two hinges are
+    the mechanism's knot (:func:`.detail.knot`), not this one's.
+
+    >>> m = [(Point(0, 0), (0.0, 0.0), 1.25, True), (Point(0.7, 0), (0.7, 0.0), 0.55, False),
+    ...      (Point(9, 0), (9.0, 0.0), 0.55, False)]
+    >>> d, need, (p, q) = tightest(m)
+    >>> round(d, 9), round(need, 9), p, q
+    (0.7, 2.1, Point(x=0.0, y=0.0), Point(x=0.7, y=0.0))
+    """
+    best = None
+    dots = [m for m in markers if not m[3]]
+    for p, a, r, _ in (m for m in markers if m[3]):
+        for q, b, s, _ in dots:
+            need = r + s + PIN_GAP
+            if abs(a[0] - b[0]) < need and abs(a[1] - b[1]) < need:
+                d = math.dist(a, b)
+                if 1e-3 < d < need and (best is None or need / d > best[1] / best[0]):
+                    best = (d, need, (p, q))
+    return best
+
+
+__all__ = ["LABEL_HEIGHT", "NEAR", "PIN_GAP", "SAME", "Together", "dots_above", "groups_of", "same_spot",
+           "shared_markers", "tightest"]

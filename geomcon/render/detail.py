@@ -29,7 +29,8 @@ from ..scene import Role, Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, Slider
 from .figure import Figure, build_figure, content_box, shown_steps
 from .labels import text_width
-from .style import INFO_SIZE, resolve_style
+from .shapes import Disc
+from .style import INFO_SIZE, PAPER, resolve_style
 from .view import FIG_MARGIN, Box, clip_interval, grow
 
 MIN_LINK = 10.0
@@ -142,7 +143,35 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
             got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
             if got is not None:
                 return got
-    return None if found is None or big is None else knot_detail(scene, fig, steps, found, scale, big, free, upto)
+    if found is not None and big is not None:
+        return knot_detail(scene, fig, steps, found, scale, big, free, upto)
+    return point_detail(scene, fig, steps, scale, free, upto)
+
+
+def point_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], scale: Scale,
+                 free: Callable[[float, float], tuple | None], upto: int | None = None
+                 ) -> tuple[Figure, Scale, Box] | None:
+    """A window about a hinge and a point drawn closer than their markers (:func:`.coincident.tightest`: two
+    distinct points, 001-10b's N 0.3 mm from B2's centre at 1:2), at the smallest standard scale that sets them
+    apart and a label's height apart (a label each; where that finds no room, just apart), holding what lies
+    within that distance of them on the sheet; None when there is none, or no room."""
+    from .coincident import LABEL_HEIGHT, tightest
+    markers = [(fig.values[g.key], sh.c, sh.r, sh.fill == PAPER) for g in fig.groups if g.layer == "points"
+               and isinstance(fig.values.get(g.key), Point) for sh in g.shapes[:1] if isinstance(sh, Disc)]
+    found = tightest(markers)
+    if found is None:
+        return None
+    d, need, ends = found
+    scales = []
+    for apart in (max(need, LABEL_HEIGHT), need):           # a label each where that finds room, else just apart
+        big = next((s for s in STANDARD if s.factor >= scale.factor * apart / d * (1 - 1e-12)), None)
+        if big is not None and big not in scales:
+            scales.append(big)
+    for big in scales:
+        got = knot_detail(scene, fig, steps, (d, ends), scale, big, free, upto, reach=need * fig.view.mu)
+        if got is not None:
+            return got
+    return None
 
 
 def crowding(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[str], mu: float) -> set[str]:
@@ -221,8 +250,8 @@ def knot(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[st
 
 
 def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found: tuple[float, tuple[Point, Point]],
-                scale: Scale, big: Scale, free: Callable[[float, float], tuple | None], upto: int | None = None
-                ) -> tuple[Figure, Scale, Box] | None:
+                scale: Scale, big: Scale, free: Callable[[float, float], tuple | None], upto: int | None = None,
+                reach: float | None = None) -> tuple[Figure, Scale, Box] | None:
     """A window about the knot of the mechanism (:func:`knot`), drawn at the smallest standard scale that sets its
     joints :data:`MIN_KNOT` apart (and its links :data:`MIN_LINK` long, ``big``, when that is larger), with every
     point, line, ground, slider and angle mark there — the textbook's 局部放大图 of a crowded spot, where the
@@ -230,7 +259,7 @@ def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found:
     :func:`detail_figure` chose for both). None when no free box holds it."""
     values = fig.values
     _, ends = found
-    reach = KNOT_REACH * MIN_KNOT * fig.view.mu
+    reach = KNOT_REACH * MIN_KNOT * fig.view.mu if reach is None else reach      # model mm about the two
     near = [p for _, s in steps for p in _items(values[s.key])
             if isinstance(p, Point) and min(math.dist((p.x, p.y), (q.x, q.y)) for q in ends) <= reach]
     xs, ys = [p.x for p in near], [p.y for p in near]
@@ -314,4 +343,4 @@ def _anchors(x: Any) -> list[Point]:
 
 
 __all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "crowding", "detail_figure", "detail_scale", "knot",
-           "knot_detail", "mechanism_steps"]
+           "knot_detail", "mechanism_steps", "point_detail"]

@@ -28,15 +28,15 @@ from ..scene import Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
 from .arms import add_arms
 from .boxgeom import box_point
-from .coincident import NEAR as NEAR_NAMES, Together, groups_of
+from .coincident import NEAR as NEAR_NAMES, Together, dots_above, groups_of, same_spot, shared_markers
 from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals, compass_half, compass_steps,
                    draw_compass)
 from .clearance import ENOUGH
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
 from .rows import SEP, Fan, clusters, fans, row_centre, thinned
 from .labels import text_width
-from .shapes import ArcP, Pen, Poly, Shape, Text, lean, obstacle, recolour
-from .style import HIGHLIGHT, INK, LAYERS, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
+from .shapes import ArcP, Disc, Pen, Poly, Shape, Text, lean, obstacle, recolour
+from .style import HIGHLIGHT, INK, LAYERS, PAPER, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import dimension_lines, draw, guide_bands, kind_of, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
@@ -77,8 +77,15 @@ class Figure:
     shown: int
 
     def layers(self) -> list[tuple[str, list[StepDrawing]]]:
-        """The step drawings by layer, bottom layer first."""
-        return [(name, [g for g in self.groups if g.layer == name]) for name in LAYERS]
+        """The step drawings by layer, bottom layer first; in the points layer the hinges' before the dots
+        (:func:`.coincident.dots_above`)."""
+        return [(name, dots_above([g for g in self.groups if g.layer == name], _hollow) if name == "points"
+                 else [g for g in self.groups if g.layer == name]) for name in LAYERS]
+
+
+def _hollow(g: StepDrawing) -> bool:
+    """Whether the step draws a hollow marker (a hinge's, a candidate's circle: white inside)."""
+    return any(isinstance(sh, Disc) and sh.fill == PAPER for sh in g.shapes)
 
 
 # ---------------------------------------------------------------------------------------------- extent
@@ -198,6 +205,7 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     together = {t.keys[0]: t for t in _together(steps, values, labels, view)}
     quiet = {k for t in together.values() for k in t.keys[1:]}         # named by the first point's label
     near: dict[str, TextRequest | None] = {k: None for t in together.values() if NEAR_NAMES in t.joins for k in t.keys}
+    shared = _shared(steps, values, box, current)
     groups, pending = [], []
     for number, s in steps:
         value = values[s.key]
@@ -219,6 +227,8 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
                 drawn.shapes = off_frames(drawn.shapes, frame_lines)
             if s.key in together:
                 drawn.texts[-1] = _joined(drawn.texts[-1], together[s.key], ctx)
+            if s.key in shared:                     # its spot's marker is another point's (one marker, one point)
+                drawn.shapes = [sh for sh in drawn.shapes if not isinstance(sh, Disc)]
             if s.key in near:                       # its own label, printed if the joined one finds no room
                 near[s.key] = draw(value, highlighted(style) if is_cur else style, ctx, own).texts[-1]
         groups.append(StepDrawing(s.key, number, cls + (" current" if is_cur else ""), layer, list(drawn.shapes)))
@@ -420,6 +430,13 @@ def _together(steps: list[tuple[int, Step]], values: dict[str, Any], labels: dic
             if not style.label_optional and style.label_dir is None:
                 pts.append((s.key, label, v, style.radius))
     return groups_of(pts, view)
+
+
+def _shared(steps: list[tuple[int, Step]], values: dict[str, Any], box: Box, current: int | None) -> set[str]:
+    """The points drawn with no marker of their own: another point's marks their spot (:mod:`.coincident`)."""
+    pts = [(s.key, values[s.key], resolve_style(s.style, s.role, "point").radius) for _, s in steps
+           if isinstance(values[s.key], Point)]
+    return shared_markers(pts, same_spot(box), {s.key for n, s in steps if n == current})
 
 
 def _joined(t: TextRequest, group: Together, ctx: Context) -> TextRequest:
