@@ -32,8 +32,6 @@ another step's pin: nearer, the text's white halo cuts into the line (200-05's �
 
 KNOWN_ACROSS: dict[str, str] = {
     "001-06b_crank_slider_redesign_K": "C3 by the guide's hatch, among C1–C4 on one guide (a crowded knot)",
-    "001-21_cutter_drive_K1": "φ1 across DC2 and φ2 on D's ground: D is at the drawing's right edge, and every "
-                              "place within the frame by the two arcs meets a link or the ground",
     "001-31_eccentric_oscillating_roller": "E0, the contact point, where the roller (r 5 mm at 1:2) touches the "
                                            "disc (r 20 mm): the gap between them is 1.1 mm 3 mm from E0, narrower "
                                            "than E0's 3.4 mm label, so every place within 3 mm of E0 is on the "
