@@ -705,7 +705,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             alt, alt_score = placer.best(led.request, g.key)
             if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN):
                 t, centre, score = led, alt, alt_score
-        if wide is not None and score < 0.0 and not t.optional and meets_hard(t.request.box(*centre), g.key):
+        if (wide is not None and score < 0.0 and not t.optional and _reaches_out(t.request, view.paper_box, room)
+                and meets_hard(t.request.box(*centre), g.key)):
             alt, alt_score = wide.best(t.request, g.key)
             if alt_score > score + WIDE_GAIN:
                 centre, score = alt, alt_score
@@ -739,6 +740,28 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     for x in every:
         if not (x[2].cls == "mark-text" and x[2].request.candidates):
             put(*x)
+
+
+def _reaches_out(r: Request, inner: Box, outer: Box) -> bool:
+    """Whether a candidate box of ``r`` may reach beyond ``inner`` into ``outer`` (a text's room beyond its view):
+    an explicit one that does, or its anchor within its farthest reach of a side of ``inner`` that ``outer``
+    passes (texts deep in the drawing, as 004-02's C1 and C3, are not tried beyond it at all).
+
+    >>> r = Request((50.0, 50.0), 4.0, 3.0, 1.0, 0.0)
+    >>> _reaches_out(r, (0.0, 0.0, 100.0, 100.0), (0.0, 0.0, 150.0, 100.0)), _reaches_out(
+    ...     replace(r, anchor=(95.0, 50.0)), (0.0, 0.0, 100.0, 100.0), (0.0, 0.0, 150.0, 100.0))
+    (False, True)
+    """
+    hw, hh = r.width / 2, r.height / 2
+    if r.candidates:
+        return any(x - hw < inner[0] or y - hh < inner[1] or x + hw > inner[2] or y + hh > inner[3]
+                   for x, y in r.candidates)
+    reach = r.gap + max(r.distances) + 2.0 * math.hypot(hw, hh)
+    if r.lead < math.inf:                           # a leader's text: from the farthest of its starts
+        reach += max((math.dist(r.anchor, p) for p in r.starts), default=0.0)
+    x, y = r.anchor
+    return ((outer[0] < inner[0] and x - reach < inner[0]) or (outer[1] < inner[1] and y - reach < inner[1])
+            or (outer[2] > inner[2] and x + reach > inner[2]) or (outer[3] > inner[3] and y + reach > inner[3]))
 
 
 def _foresee(placer: Placer, texts: list[tuple[str, TextRequest]]) -> None:
