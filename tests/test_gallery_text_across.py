@@ -40,15 +40,12 @@ KNOWN_ACROSS: dict[str, str] = {
     "004-02_best_by_K_1_2_offset_limit": "C1 in its slider block by A's ground and the guide (a crowded knot)",
     "004-02_best_by_K_1_5": "C4's part of the joined label by B2's pin (a crowded knot)",
     "004-03_crank_rocker_best_by_K": "A* by A's ground and C2 by its pin, among C1, C2, B2 and A (a crowded knot)",
-    "100-04_four_bar_fixed_pivots_coupler_angles": "B1, K2, K3 and C″ by links: new on main's 38b11fc (its results "
-                                                   "in one block, the drawing laid out anew), not yet looked into",
+    "100-04_four_bar_fixed_pivots_coupler_angles": "B1 a hair from AB1 (below its pin, between AB1 and the given "
+                                                   "AB1 drawn thin): at 1:2 (one results block) B1, K3, K2 and C″ lie "
+                                                   "within 10 mm among 5 links and 14 construction lines",
     "200-03_cam_roller_undercut": "B1* lies 0.47 mm inside the start roller (r 10 mm at 1:2, B1* 9.53 mm from "
                                   "B0), which runs through its pin: every place within 3 mm of it meets that roller "
                                   "or the divisions' dashed rollers (best score -7.6; its leader form -7.8)",
-    "200-20_oscillating_base_radius_rho": "K2* lies on its binding arm (A0 to the arm's end, through K2*): its "
-                                          "label is on the arm or above it across three of the construction's "
-                                          "wedge lines (both score -4.2, the nearer wins); its leader form (-3.5) "
-                                          "would cross the initial arm A0B0",
 }
 """Sheet-1 figures (by name) where a text still meets a link, block, ground or pin, and why: the list may only
 shrink (a listed figure that is clean fails, so that it leaves the list)."""

@@ -654,15 +654,17 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     wide = placer.widened(room) if room is not None and room != view.paper_box else None
     hard: list[Any] = []                        # a tree of the links, grounds, blocks and pins, when asked
 
-    def meets_hard(box: Any, key: str) -> bool:
+    def meets_hard(box: Any, key: str, near: float = HALO) -> bool:
         if not hard:
             keep = [o for o in obstacles if o[3] >= 2.0 and o[1] != key + " ray"]
             geoms = np.empty(len(keep), dtype=object)
             geoms[:] = [o[0] for o in keep]
             hard.append((shapely.STRtree(geoms), [o[1] for o in keep], [o[5] for o in keep]))
         tree, owners, halo = hard[0]
-        near = tree.query(box, predicate="dwithin", distance=HALO).tolist()
-        return any(owners[i] != key and (halo[i] or tree.geometries[i].intersects(box)) for i in near)
+        if not near:
+            return any(owners[i] != key for i in tree.query(box, predicate="intersects").tolist())
+        found = tree.query(box, predicate="dwithin", distance=near).tolist()
+        return any(owners[i] != key and (halo[i] or tree.geometries[i].intersects(box)) for i in found)
     _thin(groups, pending)                      # before measuring: it leaves out a crowded axis's numbers
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     _leading(pending)
@@ -703,7 +705,9 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
         if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
             led = _led(t)                       # a point's label that covers a line: farther, with a leader
             alt, alt_score = placer.best(led.request, g.key)
-            if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN):
+            if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN) or (
+                    alt_score > score and meets_hard(t.request.box(*centre), g.key, 0.0)
+                    and not meets_hard(led.request.box(*alt), g.key)):
                 t, centre, score = led, alt, alt_score
         if (wide is not None and score < 0.0 and not t.optional and _reaches_out(t.request, view.paper_box, room)
                 and meets_hard(t.request.box(*centre), g.key)):
