@@ -647,6 +647,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
                   SOFT if g.layer == "construction" else 0.0, w, w, w >= 2.0 and g.layer != "points")
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
+    mech = [g.layer in HARD for g in groups for _ in g.shapes]      # the mechanism's: links, pins, grounds, blocks
     obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT, False)
                   for g, (drawn, _) in zip(groups, pending) for area in drawn.keep_out]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
@@ -655,8 +656,10 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     hard: list[Any] = []                        # a tree of the links, grounds, blocks and pins, when asked
 
     def meets_hard(box: Any, key: str, near: float = HALO) -> bool:
+        """Whether ``box`` (of step ``key``'s text) meets another step's link, ground, block or pin (comes within
+        ``near`` of a link, ground or block; 0: touches one), as the gallery's rule reads them."""
         if not hard:
-            keep = [o for o in obstacles if o[3] >= 2.0 and o[1] != key + " ray"]
+            keep = [o for o, m in zip(obstacles, mech) if m and o[3] >= 2.0]
             geoms = np.empty(len(keep), dtype=object)
             geoms[:] = [o[0] for o in keep]
             hard.append((shapely.STRtree(geoms), [o[1] for o in keep], [o[5] for o in keep]))
