@@ -14,7 +14,7 @@ from shapely import affinity
 
 from geomcon.geometry.primitives import Line, Point, Ray, Segment
 from geomcon.problems import load_problem
-from geomcon.render.figure import Figure, build_figure
+from geomcon.render.figure import Figure, build_figure, text_room
 from geomcon.render.labels import rich_runs
 from geomcon.render.placement import LABEL_REACH
 from geomcon.render.symbols import angle_rays
@@ -33,11 +33,12 @@ def figure(name: str) -> Figure:
     sol = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml"))
     sc, page = sol.drawing_scene, PageSpec()
     info, warnings = sol.figure_lines(page.lang), sol.warnings
-    _, scale, view = place_figure(sc, page, info, warnings)
+    sl, scale, view = place_figure(sc, page, info, warnings)
     apart = diagram_apart(sc, page, info, warnings, scale)      # a cam alone, its s–δ diagram on sheet 2
     if apart is not None:
-        view = apart[2]
-    return build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=None if apart is None else _not_diagram)
+        sl, _, view = apart
+    return build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=None if apart is None else _not_diagram,
+                        room=text_room(view, sl.area))
 
 
 def box(t: Text) -> shapely.Geometry:

@@ -133,10 +133,10 @@ def _detail_sizes_without_room(pid: str) -> list[tuple[float, float]]:
     sheet (a fresh :class:`~geomcon.render.free_area.FreeRoom` of the figure with the results and keep-outs);
     empty when the detail view asks for none."""
     from geomcon.render.detail import detail_figure
-    from geomcon.render.figure import build_figure
+    from geomcon.render.figure import build_figure, text_room
     from sheet_room import results_and_room
     sol, page, sc, info, warnings, sl, scale, view, keep = _sheet1(pid)
-    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep)
+    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep, room=text_room(view, sl.area))
     sl, room = results_and_room(fig, sl, page, scale, info, warnings, sol)
     asked: list[tuple[float, float]] = []
     assert detail_figure(sc, fig, scale, lambda w, h: asked.append((w, h)), None) is None

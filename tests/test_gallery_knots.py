@@ -21,8 +21,9 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
   the mechanism's detail view at 1:5 (as 001-10c's, which came clear so).
 - 200-16: B1* and B(75°), two follower positions 2.5 mm apart on the cam (two hinges: not a construction point's
   window). 004-02 (K = 1.5, at 1:2): "M" and "C4" found no clear place as one label and print apart (text placement's choices).
-- 004-02 (main and detail view): C1's label covers its slider block, its only room clear of links and guides
-  (001-21's N and 004-01's C1 were cleared when text placement came to weigh a block as a link: hplace11f).
+- 004-02 (K 1.2): its detail view's C1 printed on its slider block, now below the guide with a leader (a point's
+  label across a link, block, ground or pin takes its leader form when that is clear of them: hacross11l); 001-21's
+  N and 004-01's C1 were cleared when text placement came to weigh a block as a link (hplace11f).
 - 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
   K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
   placement's choice, hplace11f's).
@@ -47,7 +48,7 @@ KNOWN = {
     "000-07_slotter_cam_actual_profile": 6,
     "000-08_slotter_cam_pressure_angle": 1,
     "001-06b_crank_slider_redesign_K": 2,
-    "004-02_best_by_K_1_2_offset_limit": 2,
+    "004-02_best_by_K_1_2_offset_limit": 1,
     "004-02_best_by_K_1_5": 1,
     "004-03_crank_rocker_best_by_K": 1,
     "100-01_four_bar_three_positions": 1,

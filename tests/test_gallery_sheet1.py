@@ -159,14 +159,14 @@ def test_results_that_no_box_holds_whole_go_into_reserved_room(pid):
 def _at_free_scale(pid: str):
     """The figure at the scale it gets with the frame to itself, its layout, the page and its brief lines, the
     scale and the chart marks' boxes: the arguments of ``results_in_free_room``."""
-    from geomcon.render.figure import build_figure
+    from geomcon.render.figure import build_figure, text_room
     from geomcon.render.page import document
     from geomcon.render.results import brief_warnings
     from geomcon.render.svg import _figure_and_marks
     sol, page, info, warnings, one, _ = _sheet_one(pid)
     sc = sol.drawing_scene
     sl, scale, view = place_figure(sc, page, info, warnings)
-    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu)
+    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, room=text_room(view, sl.area))
     _, marks = _figure_and_marks(document(page.sheet), sc, fig, scale, True)
     lines = [ln.replace("{sheet}", "2") for ln in sol.figure_lines(page.lang, brief=True)]
     warned = [ln.replace("{sheet}", "2") for ln in brief_warnings(sol.warnings, page.lang, "{sheet}")]

@@ -31,7 +31,7 @@ from .boxgeom import box_point
 from .coincident import NEAR as NEAR_NAMES, Together, dots_above, groups_of, same_spot, shared_markers
 from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals, compass_half, compass_steps,
                    draw_compass)
-from .clearance import ENOUGH
+from .clearance import ENOUGH, NEAR as HALO
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
 from .rows import SEP, Fan, clusters, fans, row_centre, thinned
 from .labels import text_width
@@ -178,11 +178,14 @@ def fit_view(content: Box, target: float = FIG_TARGET) -> Box:
 # ---------------------------------------------------------------------------------------------- building
 def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
                  origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET,
-                 mu: float | None = None, keep: Callable[[Step], bool] | None = None) -> Figure:
+                 mu: float | None = None, keep: Callable[[Step], bool] | None = None,
+                 room: Box | None = None) -> Figure:
     """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted;
     ``target`` is the paper width aimed at, unless the scale ``mu`` (model mm per paper mm) is given: then the
     view is ``viewbox``, or the content with :data:`FIG_MARGIN` paper mm around it, drawn at exactly ``mu``;
-    ``keep`` draws only the steps it keeps (a cam on one sheet, its s–δ diagram on another)."""
+    ``keep`` draws only the steps it keeps (a cam on one sheet, its s–δ diagram on another); ``room`` is the
+    paper box about the view where a text that would meet a link, a ground, a block or a pin in the view may go
+    instead (:func:`text_room`)."""
     steps, n = shown_steps(scene, upto, keep)
     values = scene.evaluate([s.key for _, s in steps])
     if mu is None:
@@ -247,8 +250,22 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     for drawn, _ in pending:                    # a mark's text follows its arc drawn smaller
         drawn.texts[:] = [replace(t, request=replace(t.request, anchor=moved[t.request.anchor]))
                           if t.request.anchor in moved else t for t in drawn.texts]
-    _place_texts(view, groups, pending, {id(r) for r in rays})
+    _place_texts(view, groups, pending, {id(r) for r in rays}, room)
     return Figure(view, groups, values, n)
+
+
+def text_room(view: View, area: Box) -> Box:
+    """The paper box of sheet 1 a text of its figure that finds no place clear of the links in the view may take
+    (:func:`_place_texts`): the view's paper box, widened to the drawing's ``area`` left, right and above (the
+    view lies centred in it; below it comes the scale bar). The view's :data:`FIG_MARGIN` is room enough for a
+    point's label, not for a mark's value beside a pivot at the drawing's edge: 001-21 printed φ1 across the
+    rocker and φ2 on D's ground, the free place by their arcs lying beyond the view box though on the sheet.
+
+    >>> text_room(View((0.0, 0.0, 100.0, 50.0), 1.0, (50.0, 40.0)), (20.0, 10.0, 270.0, 150.0))
+    (20.0, 10.0, 270.0, 90.0)
+    """
+    x0, y0, x1, y1 = view.paper_box
+    return (min(x0, area[0]), min(y0, area[1]), max(x1, area[2]), y1)
 
 
 def _frame_lines(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:
@@ -634,20 +651,40 @@ def _fan_leader(t: TextRequest, box: Any) -> Poly | None:
 
 
 def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Drawn, bool]],
-                 apart: set[int] = frozenset()) -> None:          # type: ignore[assignment]
+                 apart: set[int] = frozenset(), room: Box | None = None) -> None:  # type: ignore[assignment]
     """Place every label and mark text, in step order, clear of all shapes of the frame; the labels of a crowded
     numbered row go on a line beside it, with leaders (:func:`_fanned`). The shapes whose ``id`` is in ``apart``
     (an angle's rays drawn on to its arc: :mod:`.arms`) are kept clear of by their own step's text too. A text
     within :data:`.clearance.NEAR` of another step's link, ground, slider block or mark stroke crosses it (its
     halo would cut into it); not so a point's marker (a label keeps its gap from its own, and a joined label of
-    coincident points lies by the others' too) nor the inside of ω's arc."""
+    coincident points lies by the others' too) nor the inside of ω's arc. A text that would still meet a link, a
+    ground, a block or a pin may go beyond the view, into ``room`` (:func:`text_room`), where that scores better
+    by more than :data:`WIDE_GAIN`; one that crosses only thin lines stays in the view, which leaves the sheet's
+    free room to the results (200-13's α′max went out and split them in two boxes)."""
     obstacles = [(obstacle(sh), g.key + " ray" if id(sh) in apart else g.key,
                   SOFT if g.layer == "construction" else 0.0, w, w, w >= 2.0 and g.layer != "points")
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
+    mech = [g.layer in HARD for g in groups for _ in g.shapes]      # the mechanism's: links, pins, grounds, blocks
     obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT, False)
                   for g, (drawn, _) in zip(groups, pending) for area in drawn.keep_out]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
     placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box)
+    wide = placer.widened(room) if room is not None and room != view.paper_box else None
+    hard: list[Any] = []                        # a tree of the links, grounds, blocks and pins, when asked
+
+    def meets_hard(box: Any, key: str, near: float = HALO) -> bool:
+        """Whether ``box`` (of step ``key``'s text) meets another step's link, ground, block or pin (comes within
+        ``near`` of a link, ground or block; 0: touches one), as the gallery's rule reads them."""
+        if not hard:
+            keep = [o for o, m in zip(obstacles, mech) if m and o[3] >= 2.0]
+            geoms = np.empty(len(keep), dtype=object)
+            geoms[:] = [o[0] for o in keep]
+            hard.append((shapely.STRtree(geoms), [o[1] for o in keep], [o[5] for o in keep]))
+        tree, owners, halo = hard[0]
+        if not near:
+            return any(owners[i] != key for i in tree.query(box, predicate="intersects").tolist())
+        found = tree.query(box, predicate="dwithin", distance=near).tolist()
+        return any(owners[i] != key and (halo[i] or tree.geometries[i].intersects(box)) for i in found)
     _thin(groups, pending)                      # before measuring: it leaves out a crowded axis's numbers
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     _leading(pending)
@@ -688,8 +725,15 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
         if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
             led = _led(t)                       # a point's label that covers a line: farther, with a leader
             alt, alt_score = placer.best(led.request, g.key)
-            if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN):
-                t, centre = led, alt
+            if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN) or (
+                    alt_score > score and meets_hard(t.request.box(*centre), g.key, 0.0)
+                    and not meets_hard(led.request.box(*alt), g.key)):
+                t, centre, score = led, alt, alt_score
+        if (wide is not None and score < 0.0 and not t.optional and _reaches_out(t.request, view.paper_box, room)
+                and meets_hard(t.request.box(*centre), g.key)):
+            alt, alt_score = wide.best(t.request, g.key)
+            if alt_score > score + WIDE_GAIN:
+                centre, score = alt, alt_score
         box = t.request.box(*centre)
         if t.optional and ((texts and shapely.intersects(box, texts).any())
                            or placer.rivalled(t.request, g.key, centre)):
@@ -720,6 +764,28 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     for x in every:
         if not (x[2].cls == "mark-text" and x[2].request.candidates):
             put(*x)
+
+
+def _reaches_out(r: Request, inner: Box, outer: Box) -> bool:
+    """Whether a candidate box of ``r`` may reach beyond ``inner`` into ``outer`` (a text's room beyond its view):
+    an explicit one that does, or its anchor within its farthest reach of a side of ``inner`` that ``outer``
+    passes (texts deep in the drawing, as 004-02's C1 and C3, are not tried beyond it at all).
+
+    >>> r = Request((50.0, 50.0), 4.0, 3.0, 1.0, 0.0)
+    >>> _reaches_out(r, (0.0, 0.0, 100.0, 100.0), (0.0, 0.0, 150.0, 100.0)), _reaches_out(
+    ...     replace(r, anchor=(95.0, 50.0)), (0.0, 0.0, 100.0, 100.0), (0.0, 0.0, 150.0, 100.0))
+    (False, True)
+    """
+    hw, hh = r.width / 2, r.height / 2
+    if r.candidates:
+        return any(x - hw < inner[0] or y - hh < inner[1] or x + hw > inner[2] or y + hh > inner[3]
+                   for x, y in r.candidates)
+    reach = r.gap + max(r.distances) + 2.0 * math.hypot(hw, hh)
+    if r.lead < math.inf:                           # a leader's text: from the farthest of its starts
+        reach += max((math.dist(r.anchor, p) for p in r.starts), default=0.0)
+    x, y = r.anchor
+    return ((outer[0] < inner[0] and x - reach < inner[0]) or (outer[1] < inner[1] and y - reach < inner[1])
+            or (outer[2] > inner[2] and x + reach > inner[2]) or (outer[3] > inner[3] and y + reach > inner[3]))
 
 
 def _foresee(placer: Placer, texts: list[tuple[str, TextRequest]]) -> None:
@@ -773,6 +839,9 @@ def _weight(g: StepDrawing, sh: Shape) -> float:
         return 0.0
     return 2.0 if g.layer in HARD or (g.layer == "marks" and not isinstance(sh, ArcP)) else 1.0
 
+
+WIDE_GAIN = 0.3
+"""How much better (score) a text's place beyond the view (:func:`text_room`) must be to be taken."""
 
 KEEP_OUT = 3.0
 """The crossing weight of an area no text belongs in (:attr:`.draw.Drawn.keep_out`: the inside of a sense of

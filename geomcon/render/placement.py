@@ -22,6 +22,7 @@ True
 """
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass
 from typing import Sequence
@@ -304,6 +305,13 @@ class Placer:
         self._frame = frame
         self._ready: dict[tuple[Request, str], _Text] = {}
         self._bars: tuple[shapely.STRtree, np.ndarray, np.ndarray] | None = None
+
+    def widened(self, frame: tuple[float, float, float, float]) -> Placer:
+        """A placer whose texts may take ``frame``, sharing this one's obstacles and what is placed (what either
+        commits, both keep clear of)."""
+        other = copy.copy(self)
+        other._frame, other._ready = frame, {}
+        return other
 
     def prepare(self, jobs: Sequence[tuple[Request, str]]) -> None:
         """Measure the candidates of every (request, owner) of ``jobs`` against the fixed drawing, in a few

@@ -32,7 +32,7 @@ import svgwrite
 
 from ..paper import STANDARD, Scale, Sheet, choose_scale
 from ..scene import Scene
-from .figure import Figure, build_figure, content_box, shown_steps
+from .figure import Figure, build_figure, content_box, shown_steps, text_room
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
                    title_block_box)
 from .serial import Element, svg_string
@@ -513,7 +513,7 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
     if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
         sl, scale, view = apart
     keep = None if apart is None else _not_diagram
-    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep, room=text_room(view, sl.area))
     dwg = document(page.sheet)
     drawn, marks = _figure_and_marks(dwg, scene, fig, scale, apart is None)
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
@@ -703,7 +703,7 @@ def _in_reserved_room(scene: Scene, dwg: svgwrite.Drawing, page: PageSpec, info:
     mu = _mu(s)
     box = viewbox or grow(content, FIG_MARGIN * mu)
     view = View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), layout.area))
-    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep)
+    fig = build_figure(scene, upto, view.box, view.origin, mu=view.mu, keep=keep, room=text_room(view, layout.area))
     return layout, (s, view, fig, _figure_and_marks(dwg, scene, fig, s, keep is None))
 
 
