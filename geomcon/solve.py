@@ -743,6 +743,12 @@ class Solution:
                                      at=tuple(at or ())))
         return lines
 
+    def listed_at(self) -> dict[str, tuple[float, ...]]:
+        """The cam angles ``at`` of each list answer given at them (as :meth:`figure_lines` prints it: ``ψ(2°, 4°)``),
+        by answer: a warning names a list's entry the same way (``ψ(6°)``, not ``psi[2]``)."""
+        at = tuple(self.problem.given.get("at") or ())
+        return {q.name: at for q in self.recipe.answers if at and "`at`" in q.doc}
+
     def info_steps(self) -> list[int]:
         """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
         several candidate solutions, the last of its candidates' steps: a result never shows early; an answer
@@ -815,9 +821,10 @@ class Solution:
         from .render.results import brief_warnings
         from .render.warning_words import warning_lines
         page = page or PageSpec()
-        brief = (self.figure_lines(page.lang, brief=True), brief_warnings(self.warnings, page.lang, "{sheet}"))
+        at = self.listed_at()
+        brief = (self.figure_lines(page.lang, brief=True), brief_warnings(self.warnings, page.lang, "{sheet}", at))
         return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(),
-                             info=self.figure_lines(page.lang), warnings=warning_lines(self.warnings, page.lang),
+                             info=self.figure_lines(page.lang), warnings=warning_lines(self.warnings, page.lang, at),
                              info_steps=self.info_steps(), brief=brief,
                              page=page, problem=self.problem.id + ".toml" if self.problem.path else self.problem.id,
                              recipe=self.recipe.name)

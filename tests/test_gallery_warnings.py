@@ -9,9 +9,11 @@ import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+from geomcon.problems import load_problem
 from geomcon.render.labels import plain_text
 from geomcon.render.serial import typeset
 from geomcon.render.warning_words import warning_lines
+from geomcon.solve import solve
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 SVG = "{http://www.w3.org/2000/svg}"
@@ -40,6 +42,13 @@ def _warned() -> dict[str, list[str]]:
     return out
 
 
+def _listed_at(stem: str) -> dict[str, tuple[float, ...]] | None:
+    """The cam angles of the problem's list answers (a warning names a list's entry as ``ψ(6°)``), or None for
+    a gallery page that is not a problem's."""
+    path = GALLERY.parent / "problems" / f"{stem}.toml"
+    return solve(load_problem(path)).listed_at() if path.exists() else None
+
+
 def test_every_warning_is_in_one_of_its_problem_s_figures():
     warned = _warned()
     assert len(warned) >= 15 and "002-01_conveyor_cycle" in warned
@@ -48,8 +57,9 @@ def test_every_warning_is_in_one_of_its_problem_s_figures():
         own = re.compile(re.escape(stem) + r"(-\d+|_motion(-\d+)?|_cycle)?\.(svg|html)$")
         texts = [_figure_text(p) for p in GALLERY.iterdir() if own.match(p.name)]
         assert texts, stem
+        at = _listed_at(stem) if any("[" in w for w in warnings) else None
         for w in warnings:
-            line = _words(typeset(plain_text(warning_lines([w], "en")[0])))      # "3·rr" prints "3⋅rr"
+            line = _words(typeset(plain_text(warning_lines([w], "en", at)[0])))  # "3·rr" prints "3⋅rr"
             if not any(line in t for t in texts):
                 missing.append((stem, line))
     assert not missing, missing

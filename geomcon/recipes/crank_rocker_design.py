@@ -390,10 +390,10 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
             for rule, flab in rules:
                 n += 1
                 F = sc.add(f"F_{n}", circle_circle, shared["kC1"], kF, branch=rule, label=f"{flab}{pre}", **opt,
-                           caption=(f"They meet at {flab}: AF = AC2 (the other end)", f"两圆交于 {flab}"))
-                lF = sc.add(f"lF_{n}", line_through, C1, F, optional=True, caption=("Join C1F", "连接 C1F"))
+                           caption=(f"They meet at {flab}{pre}: AF = AC2 (the other end)", f"两圆交于 {flab}{pre}"))
+                lF = sc.add(f"lF_{n}", line_through, C1, F, optional=True, caption=(f"Join C1 and {flab}{pre}", f"连接 C1 与 {flab}{pre}"))
                 out.append((sc.add(f"A_{n}", line_circle, lF, kT, branch=OtherThan(C1), label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
+                                   caption=(f"It meets the θ-circle again at A{n}", f"交 θ 圆于 A{n}")), C1, C2, near_flag, s))
         elif closing == "AB":
             beta = sc.add(f"{pre}beta", _plus, th, 0.5, 90.0, visible=False, unit="deg")
             kE = add_seeing_circle(sc, f"{pre}kE", C1, C2, beta, s, (f"Circle seeing C1C2 under 90° + θ/2, {en}",
@@ -404,11 +404,13 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
                     shared[kkey] = sc.add(kkey, circle, far_end, 2 * g["AB"], caption=(
                         f"Circle about {nm} with radius 2·AB = {2 * g['AB']:g}", f"以 {nm} 为圆心、2AB = {2 * g['AB']:g} 为半径作圆"))
                 n += 1
+                folded = "C1" if nm == "C2" else "C2"
                 E = sc.add(f"E_{n}", circle_circle, shared[kkey], kE, branch=side_rule, label=f"E{n}", **opt,
-                           caption=("They meet at E (on AC of the extended end, AE = the folded distance)", "两圆交于 E"))
-                lE = sc.add(f"lE_{n}", line_through, far_end, E, optional=True, caption=(f"Join {nm}E", f"连接 {nm}E"))
+                           caption=(f"They meet at E{n}, on A{nm} with AE{n} = A{folded} (the folded distance)",
+                                    f"两圆交于 E{n},E{n} 在 A{nm} 上且 AE{n} = A{folded}"))
+                lE = sc.add(f"lE_{n}", line_through, far_end, E, optional=True, caption=(f"Join {nm}E{n}", f"连接 {nm}E{n}"))
                 out.append((sc.add(f"A_{n}", line_circle, lE, kT, branch=OtherThan(far_end), label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle again at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
+                                   caption=(f"It meets the θ-circle again at A{n}", f"交 θ 圆于 A{n}")), C1, C2, near_flag, s))
         elif closing == "AC1":
             if "kA" not in shared:
                 shared["kA"] = sc.add("kA", circle, C1, g["AC1"], caption=(
@@ -416,7 +418,7 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
             for rule in (FarthestFrom(C2), NearestTo(C2)):
                 n += 1
                 out.append((sc.add(f"A_{n}", circle_circle, shared["kA"], kT, branch=rule, label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
+                                   caption=(f"It meets the θ-circle at A{n}", f"交 θ 圆于 A{n}")), C1, C2, near_flag, s))
         elif closing == "AD":            # the frame given with the swing: A on the circle of radius AD about D
             if "kAD" not in shared:
                 shared["kAD"] = sc.add("kAD", circle, D, g["AD"], caption=(
@@ -424,12 +426,12 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
             for rule in (NearestTo(C1),) + (() if symmetric else (FarthestFrom(C1),)):
                 n += 1
                 out.append((sc.add(f"A_{n}", circle_circle, shared["kAD"], kT, branch=rule, label=f"A{n}", **opt,
-                                   caption=("It meets the θ-circle at A", "交 θ 圆于 A")), C1, C2, near_flag, s))
+                                   caption=(f"It meets the θ-circle at A{n}", f"交 θ 圆于 A{n}")), C1, C2, near_flag, s))
         else:  # frame_line
             for rule in (Leftmost(), Rightmost()):
                 n += 1
                 out.append((sc.add(f"A_{n}", line_circle, xaxis, kT, branch=rule, label=f"A{n}", **opt,
-                                   caption=("The frame line meets the θ-circle at A", "机架线交 θ 圆于 A")), C1, C2, near_flag, s))
+                                   caption=(f"The frame line meets the θ-circle at A{n}", f"机架线交 θ 圆于 A{n}")), C1, C2, near_flag, s))
     return out
 
 

@@ -125,6 +125,16 @@ def boundaries_of(frame: str, x: str, na: str, a: float, nb: str, b: float, nc: 
     return tuple(ends_of(*pieces_of(known, x, frame, list(cases) + [a, c], kind)))
 
 
+def interval_text(lo: float, hi: float) -> str:
+    """A range of lengths as a caption prints it: closed, or open towards an unbounded end (as the Results block
+    prints it), never Python's ``inf``.
+
+    >>> interval_text(190, 290), interval_text(610, math.inf)
+    ('[190, 290]', '[610, ∞)')
+    """
+    return f"[{lo:g}, ∞)" if hi == math.inf else f"[{lo:g}, {hi:g}]"
+
+
 def _intervals(*flat: float) -> tuple[tuple[float, float], ...]:
     """Pairs ((low, high), …) from the flat list low1, high1, low2, high2 …"""
     return tuple((flat[i], flat[i + 1]) for i in range(0, len(flat), 2))
@@ -158,8 +168,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     for i, (name, (en, zh)) in enumerate(list(KIND_NAMES.items()) + [("grashof_ranges", ("Grashof", "满足杆长条件"))]):
         flat = [v for iv in runs[name] for v in iv]
         sc.add(name, _intervals, *flat, role=Role.MEASUREMENT,
-               caption=(f"{en}: {x} in " + (", ".join(f"[{lo_:g}, {hi_:g}]" for lo_, hi_ in runs[name]) or "no range"),
-                        f"{zh}:{x} 取 " + ("、".join(f"[{lo_:g}, {hi_:g}]" for lo_, hi_ in runs[name]) or "无")))
+               caption=(f"{en}: {x} in " + (", ".join(interval_text(*iv) for iv in runs[name]) or "no range"),
+                        f"{zh}:{x} 取 " + ("、".join(interval_text(*iv) for iv in runs[name]) or "无")))
         answers[name] = name
         y = -row * i
         if sc.drawing:

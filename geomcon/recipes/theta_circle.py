@@ -194,7 +194,7 @@ def add_theta_circle(sc: Scene, C1: Ref, C2: Ref, theta: Ref, side: int, *, side
                caption=(f"The two lines meet at {label}", f"两线交于 {label}"))
     return sc.add(f"{prefix}kTheta", circle_through3, C1, C2, P, style="theta-circle",
                   caption=(f"The circle through C1, C2, {label}: from its arc {en} C1C2 is seen under θ",
-                           f"作 △C1C2{label} 的外接圆(其{zh}的圆弧上各点对 C1C2 张角为 θ)"))
+                           f"作 △C1C2{label} 的外接圆(其{' ' * zh[:1].isascii()}{zh}的圆弧上各点对 C1C2 张角为 θ)"))
 
 
 def add_seeing_circle(sc: Scene, key: str, C1: Ref, C2: Ref, beta: Ref, side: int, caption: tuple[str, str]) -> Ref:

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Mapping, Sequence
 
 
 @dataclass(frozen=True)
@@ -387,21 +387,41 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     return head + _remarks(twin, printed, lang)
 
 
+def entries(symbol: str, index: Sequence[int], at: Sequence[float] = ()) -> str:
+    """Entries ``index`` (from 0) of a list answer named as its Results line names them: at the cam angles ``at``
+    as the function of δ it is (``ψ(6°, 8°)``), a one-letter symbol's positions by their number from 1 (``φ2``),
+    else by the list's index (``xp[0…4]``).
+
+    >>> entries("ψ", [2, 3, 4], (2, 4, 6, 8, 10)), entries("φ", [1]), entries("xp", [0, 1, 2])
+    ('ψ(6°, 8°, 10°)', 'φ2', 'xp[0…2]')
+    """
+    if at and all(0 <= i < len(at) for i in index):
+        return f"{symbol}({', '.join(f'{at[i]:g}°' for i in index)})"
+    if len(symbol) == 1:
+        return ", ".join(f"{symbol}{i + 1}" for i in index)
+    return f"{symbol}[{index[0]}]" if len(index) == 1 else f"{symbol}[{min(index)}…{max(index)}]"
+
+
 _DOUBTFUL = re.compile(r"published (?P<q>\w+)(?P<i>\[\d+\])? = \S+ is doubtful: it deviates from the exact "
                                      r"\S+ by .+?, beyond drafting accuracy \(±(?P<acc>.+?)\)")
 
 
-def brief_warnings(warnings: Sequence[str], lang: str, sheet: int | str) -> list[str]:
+def brief_warnings(warnings: Sequence[str], lang: str, sheet: int | str,
+                   at: Mapping[str, Sequence[float]] | None = None) -> list[str]:
     """The warnings as sheet 1 prints them when the full block finds no room there: every doubtful printed answer
-    in one line (its symbol; a list's entries as ``xp[0…4]``: the Results lines carry each deviation), the others
-    as :func:`geomcon.render.warning_words.warning_lines` words them; the full sentences stand on sheet ``sheet``
-    (``"{sheet}"``: filled in when the sheets are counted).
+    in one line (its symbol; a list's entries as its Results line names them, :func:`entries`: the Results lines
+    carry each deviation), the others as :func:`geomcon.render.warning_words.warning_lines` words them; the full
+    sentences stand on sheet ``sheet`` (``"{sheet}"``: filled in when the sheets are counted). ``at``: the cam
+    angles of the list answers given at angles, by answer.
 
     >>> brief_warnings(["published vD = 330 is doubtful: it deviates from the exact 385.405 by -14.38 %, beyond "
     ...                 "drafting accuracy (±3 %)", "published pitch_x[0] = 1 is doubtful: it deviates from the exact 2 "
     ...                 "by -50 %, beyond drafting accuracy (±3 %)", "published pitch_x[1] = 1 is doubtful: it "
     ...                 "deviates from the exact 2 by -50 %, beyond drafting accuracy (±3 %)"], "en", 2)
     ['printed vD, xp[0…1] doubtful: beyond drafting accuracy (±3 %); see sheet 2']
+    >>> brief_warnings([f"published psi[{i}] = 1 is doubtful: it deviates from the exact 2 by -50 %, beyond drafting "
+    ...                 "accuracy (±3 %)" for i in (2, 3)], "en", 3, at={"psi": (2, 4, 6, 8)})
+    ['printed ψ(6°, 8°) doubtful: beyond drafting accuracy (±3 %); see sheet 3']
     >>> brief_warnings(["published vD = 330 is doubtful: it deviates from the exact 385.405 by -14.38 %, beyond "
     ...                 "drafting accuracy (±3 %)"], "zh", 3)
     ['教材答案 vD 存疑：超出作图精度（±3 %），详见第 3 张']
@@ -421,11 +441,11 @@ def brief_warnings(warnings: Sequence[str], lang: str, sheet: int | str) -> list
         names = []
         for q, idx in doubtful.items():
             sym = name_of(q).symbol
-            names.append(sym if not idx else f"{sym}[{idx[0]}]" if len(idx) == 1 else f"{sym}[{min(idx)}…{max(idx)}]")
+            names.append(entries(sym, sorted(idx), (at or {}).get(q, ())) if idx else sym)
         en = f"printed {', '.join(names)} doubtful: beyond drafting accuracy (±{acc}); see sheet {sheet}"
         zh = f"教材答案 {'、'.join(names)} 存疑：超出作图精度（±{acc}），详见第 {sheet} 张"
         out += [en] if lang == "en" else [zh] if lang == "zh" else [en, zh]
-    return out + warning_lines(rest, lang)
+    return out + warning_lines(rest, lang, at)
 
 
 def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[str]:
@@ -448,5 +468,5 @@ def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[s
     return [f"{len(printed)} 个中 {n} 个存疑" if zh else f"{n} of {len(printed)} doubtful"]
 
 
-__all__ = ["AnswerName", "brief_printed", "brief_warnings", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "result_line", "shown_printed",
+__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "result_line", "shown_printed",
            "shown_value", "unit_text"]

@@ -167,7 +167,7 @@ _RETURN_ALPHA = (("α_max of the return", "α′_max of the return"), ("回程�
 _AUDITED = re.compile(r"(?<=^published )(\w+)(\[\d+\])?|(?<=^教材答案 )(\w+)(\[\d+\])?")
 
 
-def printed_words(line: str, zh: bool = False) -> str:
+def printed_words(line: str, zh: bool = False, at: Mapping[str, Sequence[float]] | None = None) -> str:
     """A warning line with the identifiers it quotes written as the figure's Results block prints them: an audited
     answer by its symbol (``theta`` → ``θ``; ``profile_x[0]`` → ``xa[0] (profile points)``, the return's α_max as α′_max) and a given allowance
     by its symbol (``alpha_allow`` → ``α_allow``, drawn as α with a subscript; ``[α]`` in Chinese).
@@ -176,8 +176,14 @@ def printed_words(line: str, zh: bool = False) -> str:
     'published xa[0] (profile points) = -26.8 is doubtful'
     >>> printed_words("回程最大压力角 αmax = 36.71° 超过许用压力角 alpha_allow = 30°", zh=True)
     '回程最大压力角 α′max = 36.71° 超过许用压力角 [α] = 30°'
+
+    A list's entry is named as its Results line names it (:func:`~geomcon.render.results.entries`; ``at``: the
+    cam angles of the list answers given at angles, by answer):
+
+    >>> printed_words("published psi[2] = 14.4 is doubtful", at={"psi": (2, 4, 6, 8, 10)})
+    'published ψ(6°) (swing of the arm) = 14.4 is doubtful'
     """
-    from .results import name_of
+    from .results import entries, name_of
 
     def answer(m: re.Match) -> str:
         key, index = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
@@ -185,7 +191,8 @@ def printed_words(line: str, zh: bool = False) -> str:
         if not name.symbol or name.symbol == key.replace("_", " "):
             return m.group(0)
         words = name.zh if zh else name.en
-        return name.symbol + (index or "") + (f"（{words}）" if zh else f" ({words})") * bool(index and words)
+        head = entries(name.symbol, [int(index[1:-1])], (at or {}).get(key, ())) if index else name.symbol
+        return head + (f"（{words}）" if zh else f" ({words})") * bool(index and words)
 
     line = _AUDITED.sub(answer, line)
     for raw, primed in _RETURN_ALPHA:                        # the return's angle is α′, as the Results print it
@@ -195,21 +202,41 @@ def printed_words(line: str, zh: bool = False) -> str:
     return line
 
 
-def warning_lines(warnings: Sequence[str], lang: str) -> list[str]:
+EN_HINTS = {"(增大基圆或减小滚子半径)": "(enlarge the base circle or use a smaller roller)",
+            "(增大基圆 r0)": "(enlarge the base circle r0)"}
+"""The Chinese remedy a warning's sentence carries (JSON keeps the sentence as it is), in the words an English
+line of a figure prints: an English reader is not left with Chinese, and ``both`` does not print the hint twice
+in Chinese."""
+
+
+def english_words(warning: str) -> str:
+    """A warning as a figure's English line prints it: the Chinese remedy it carries in English
+    (:data:`EN_HINTS`).
+
+    >>> english_words("undercut: rr = 20 ≥ ρmin = 17.11 of the pitch curve; the profile is trimmed and the "
+    ...               "follower's motion is distorted there (增大基圆或减小滚子半径)").split("; ")[1]
+    "the profile is trimmed and the follower's motion is distorted there (enlarge the base circle or use a smaller roller)"
+    """
+    for zh, en in EN_HINTS.items():
+        warning = warning.replace(zh, en)
+    return warning
+
+
+def warning_lines(warnings: Sequence[str], lang: str, at: Mapping[str, Sequence[float]] | None = None) -> list[str]:
     """The warnings as a figure prints them: English (``en``), Chinese (``zh``; a warning no rule knows stays in
     English), or each in English followed by its Chinese (``both``); the identifiers they quote as the Results
-    block prints them (:func:`printed_words`)."""
+    block prints them (:func:`printed_words`, ``at`` passed on)."""
     out = []
     for w in warnings:
         zh = warning_zh(w)
-        en = zh_brackets(printed_words(w))                   # a Chinese hint in an English warning: （…）
+        en = zh_brackets(printed_words(english_words(w), at=at))    # a Chinese hint no rule words: （…）
         if lang == "en" or zh is None:
             out.append(en)
         elif lang == "zh":
-            out.append(printed_words(zh, zh=True))
+            out.append(printed_words(zh, zh=True, at=at))
         else:
-            out += [en, printed_words(zh, zh=True)]
+            out += [en, printed_words(zh, zh=True, at=at)]
     return out
 
 
-__all__ = ["RULES", "printed_words", "warning_lines", "warning_zh"]
+__all__ = ["EN_HINTS", "RULES", "english_words", "printed_words", "warning_lines", "warning_zh"]

@@ -34,6 +34,8 @@ def zh_punct(s: str) -> str:
     '交摇杆圆于 C1（位于直线 AD 上方的交点）；K = (180° + θ)/(180° − θ)'
     >>> zh_punct("验证 AB 为曲柄(AC > AB + e),何时不能成为机构?位移线图 s–δ:δ 轴,比例 1:2")
     '验证 AB 为曲柄（AC > AB + e），何时不能成为机构？位移线图 s–δ：δ 轴，比例 1:2'
+    >>> zh_punct("曲柄销 B1(重叠共线)与 B2(拉直共线),AB = (AC远 − AC近)/2")
+    '曲柄销 B1（重叠共线）与 B2（拉直共线），AB = (AC远 − AC近)/2'
     """
     out = list(s)
     stack: list[int] = []
@@ -43,7 +45,8 @@ def zh_punct(s: str) -> str:
             stack.append(i)
         elif ch == ")" and stack:
             j = stack.pop()
-            if any(_cjk(c) for c in s[j + 1:i]) or (j > 0 and "\u4e00" <= s[j - 1] <= "\u9fff"):
+            formula = s[i + 1:i + 2] == "/" or s[:j].rstrip().endswith("=")   # a term of a formula: (AC远 − AC近)/2
+            if not formula and (any(_cjk(c) for c in s[j + 1:i]) or (j > 0 and "\u4e00" <= s[j - 1] <= "\u9fff")):
                 out[j], out[i] = _FULL["("], _FULL[")"]
         elif ch in ",;:?!":
             before = "".join(out[:i]).rstrip()[-1:]
