@@ -406,8 +406,8 @@ def _positions_candidates(sc: Scene, g: Mapping[str, Any], closing: str, th: Ref
                 n += 1
                 folded = "C1" if nm == "C2" else "C2"
                 E = sc.add(f"E_{n}", circle_circle, shared[kkey], kE, branch=side_rule, label=f"E{n}", **opt,
-                           caption=(f"They meet at E{n}, on A{nm} with AE{n} = A{folded} (the folded distance)",
-                                    f"两圆交于 E{n},E{n} 在 A{nm} 上且 AE{n} = A{folded}"))
+                           caption=(f"On A{nm}, with AE{n} = A{folded} (the folded distance), the circles meet at E{n}",
+                                    f"E{n} 在 A{nm} 上且 AE{n} = A{folded}:两圆交于 E{n}"))
                 lE = sc.add(f"lE_{n}", line_through, far_end, E, optional=True, caption=(f"Join {nm}E{n}", f"连接 {nm}E{n}"))
                 out.append((sc.add(f"A_{n}", line_circle, lE, kT, branch=OtherThan(far_end), label=f"A{n}", **opt,
                                    caption=(f"It meets the θ-circle again at A{n}", f"交 θ 圆于 A{n}")), C1, C2, near_flag, s))
