@@ -740,7 +740,7 @@ class Solution:
             lines.append(result_line(q.name, self.answers[q.name], q.unit,
                                      twin=None if not rows else all(r["ok"] for r in rows), printed=words,
                                      lang=("zh" if zh else "en") if brief else lang, recipe=self.recipe.name,
-                                     at=tuple(at or ())))
+                                     at=tuple(at or ()), given=self.problem.given))
         return lines
 
     def listed_at(self) -> dict[str, tuple[float, ...]]:

@@ -110,3 +110,13 @@ def test_a_candidate_s_step_names_the_point_as_the_drawing_labels_it(stem):
         if m:
             assert m.group(2) in labels, (s.key, en, sorted(labels))
     assert named >= 2
+
+
+def test_a_four_bar_analysis_names_the_link_at_each_pivot_of_its_frame(sheets):
+    """001-03, 001-03b, 001-03c, 300-01 printed "the link at the first pivot is a crank" (which pivot? 001-03b's
+    frame AB lists it after "the link at the second pivot"): the link is named as a textbook names it."""
+    assert not [(n, t) for n, lines in sheets.items() for t in lines if "pivot is a crank" in t]
+    frame_ab = sheets["001-03b_four_bar_frame_AB.svg"]
+    assert any(t.startswith("AD is a crank: yes") for t in frame_ab)
+    assert any(t.startswith("BC is a crank: yes") for t in frame_ab)
+    assert any(t.startswith("AD is a crank: no") for t in sheets["001-03c_four_bar_frame_CD.svg"])

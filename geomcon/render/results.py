@@ -232,14 +232,35 @@ def unit_text(unit: str) -> str:
     return UNITS[u] if u in UNITS else f" {u}"
 
 
-def name_of(answer: str, recipe: str = "") -> AnswerName:
-    """The printed name of ``answer`` （of ``recipe`` when it names it its own way：：data：`RECIPE_NAMES`; a
-    fallback for a name not in ：data：`NAMES`）.
+def name_of(answer: str, recipe: str = "", given: Mapping[str, Any] | None = None) -> AnswerName:
+    """The printed name of ``answer`` (of ``recipe`` when it names it its own way: :data:`RECIPE_NAMES`; a
+    fallback for a name not in :data:`NAMES`). With the problem's ``given``, a four-bar analysis names the link
+    at each pivot of its frame (:func:`pivot_links`): "AD is a crank", not "the link at the first pivot".
 
     >>> name_of("theta").symbol, name_of("new_answer").symbol, name_of("omega2", "cam.oscillating").zh
     ('θ', 'new answer', '摆杆角速度')
+    >>> name_of("output_crank", "four_bar.analysis", {"frame": "AB"}).en
+    'BC is a crank'
     """
+    if recipe == "four_bar.analysis" and answer in ("input_crank", "output_crank") and given is not None:
+        link = pivot_links(str(given.get("frame") or "AD"))[answer == "output_crank"]
+        return _b(f"{link} is a crank", f"{link} 为曲柄")
     return RECIPE_NAMES.get((recipe, answer)) or NAMES.get(answer) or AnswerName(answer.replace("_", " "), "", "")
+
+
+def pivot_links(frame: str) -> tuple[str, str]:
+    """The links of the chain A–B–C–D–A at the first and the second pivot of ``frame``, the other than the frame.
+
+    >>> pivot_links("AD"), pivot_links("AB"), pivot_links("CD")
+    (('AB', 'CD'), ('AD', 'BC'), ('BC', 'AD'))
+    """
+    chain = "ABCD"
+    out = []
+    for pivot, other in ((frame[0], frame[1]), (frame[1], frame[0])):
+        i = chain.index(pivot)
+        (end,) = {chain[i - 1], chain[(i + 1) % 4]} - {other}
+        out.append("".join(sorted(pivot + end)))
+    return out[0], out[1]
 
 
 def fixed(x: float) -> str:
@@ -352,13 +373,15 @@ def _head(nm: AnswerName, value: Any, unit: str, lang: str, answer: str, at: Seq
 
 
 def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None, printed: Sequence[str] = (),
-                lang: str = "en", recipe: str = "", at: Sequence[float] = ()) -> str:
+                lang: str = "en", recipe: str = "", at: Sequence[float] = (),
+                given: Mapping[str, Any] | None = None) -> str:
     """One result line of a drawing: the answer by its symbol (a number) or as a statement (yes/no), its value,
     what agreed with what (``twin``: the construction against the analytic twin) and the textbook's printed
     values with their deviation (``printed``, already worded).
 
     ``lang`` is ``en``, ``zh`` or ``both`` (the English line, then the Chinese words); ``at``: the cam angles
-    (deg) a list answer is given at.
+    (deg) a list answer is given at; ``given``: the problem's givens, when a name depends on them
+    (:func:`name_of`).
 
     >>> result_line("s", (0.0, 2.0), "mm[]", at=(0.0, 15.0))
     's(0°, 15°) = 0.000, 2.000 mm'
@@ -367,13 +390,14 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     >>> result_line("double_crank", [], "interval[]", lang="both")
     'double-crank: none  双曲柄机构的杆长范围：无'
     """
-    nm = name_of(answer, recipe)
+    nm = name_of(answer, recipe, given)
     is_bool = isinstance(value, bool) or unit == "bool" or (not nm.symbol and unit == "")
     if is_bool:
         value = bool(value)
     empty = unit == "interval[]" and not value
     if lang == "both":
-        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en", recipe=recipe, at=at)
+        en = result_line(answer, value, unit, twin=twin, printed=printed, lang="en", recipe=recipe, at=at,
+                         given=given)
         if not nm.zh:
             return en
         return f"{en}  {nm.zh}：{shown_value(value, unit, 'zh', answer)}" if is_bool or empty else f"{en}  {nm.zh}"
@@ -468,5 +492,5 @@ def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[s
     return [f"{len(printed)} 个中 {n} 个存疑" if zh else f"{n} of {len(printed)} doubtful"]
 
 
-__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "result_line", "shown_printed",
+__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed",
            "shown_value", "unit_text"]
