@@ -400,8 +400,10 @@ def defect_warnings(v: Mapping[str, Any]) -> list[str]:
     """Warnings for the branch and order defects and for a change-point linkage, from the evaluated flags."""
     out = []
     if not v["branch_ok"]:
+        where = {1: "left", -1: "right", 0: "on it"}          # C_i's side of B_i→D, as a student says it
         out.append("branch defect: the three positions are not on one assembly branch (C on different sides of B→D: "
-                   f"{', '.join(f'{s:+d}' for s in v['sides'])}); no continuous motion of the linkage passes all three")
+                   f"{', '.join(f'C{i} {where[s]}' for i, s in enumerate(v['sides'], 1))}); no continuous motion of "
+                   "the linkage passes all three")
     if not v["order_ok"]:
         out.append(f"order defect: the input meets a dead point turning from B1 through B2 to B3 (crank angles "
                    f"{', '.join(f'{p:.4g}°' for p in v['phi'])}; AB is not a crank), so the positions are not "

@@ -30,7 +30,7 @@ PART = {"rise": "推程", "return": "回程"}
 WHAT = {"the fixed pivot A": "固定铰链 A", "the fixed pivot D": "固定铰链 D", "the hinge C1": "铰链 C1",
         "the hinge F1": "铰链 F1", "C1": "C1", "F1": "F1", "the coupler is not rigid": "连杆不是刚体",
         "the input link does not keep its length": "输入连架杆长度不一致",
-        "K is not one point of a rigid coupler": "K 不是刚性连杆上的同一点"}
+        "K is not one point of a rigid coupler": "K 不是刚性连杆上的同一点", "side of C from B→D": "C 在 B→D 的哪一侧"}
 """The phrases a warning takes from its recipe (what moves, what is wrong), in Chinese."""
 
 WHY = {"(drafted data?): each C_i is slid along B_iC_i to the mean BC = ": "（作图数据？）：各 C_i 沿 B_iC_i 移到平均值 BC = ",
@@ -48,6 +48,20 @@ def _why(s: str) -> str:
         if s.startswith(en):
             rest = s[len(en):].replace(" mm, K_i with it", " mm，K_i 随之移动")
             return zh + rest
+    return s
+
+
+def _sides(s: str | None) -> str:
+    """Which side of a line each position's point lies on, in Chinese (``C1 left, C3 right``,
+    ``position 1: left``).
+
+    >>> _sides("C1 left, C2 left, C3 right"), _sides("position 1: left, position 2: on it")
+    ('C1 左侧、C2 左侧、C3 右侧', '位置 1：左侧、位置 2：线上')
+    """
+    s = re.sub(r"position (\d+): ", r"位置 \1：", s or "")
+    for en, zh in ((" left", " 左侧"), (" right", " 右侧"), (" on it", " 线上"), ("：left", "：左侧"),
+                   ("：right", "：右侧"), ("：on it", "：线上"), (", ", "、")):
+        s = s.replace(en, zh)
     return s
 
 
@@ -106,10 +120,10 @@ RULES: tuple[Rule, ...] = (
      r"would hit the pivot", "行程最高点处凸轮离 O {x} mm，超过摆杆转轴（a = {a}）：将与转轴相碰", {}),
     (r"branch defect: the three positions are not on one assembly branch \(C on different sides of B→D: (?P<s>.+?)\); "
      r"no continuous motion of the linkage passes all three",
-     "错位缺陷：三个位置不在同一装配分支上（C 位于 B→D 的不同侧：{s}）；机构不能连续运动经过全部三个位置", {}),
+     "错位缺陷：三个位置不在同一装配分支上（C 位于 B→D 的不同侧：{s}）；机构不能连续运动经过全部三个位置", {"s": _sides}),
     (r"branch defect: the designed positions lie on different assembly branches \((?P<w>.+?): (?P<x>.+?)\); they "
      r"cannot all be reached without taking the linkage apart",
-     "错位缺陷：设计位置位于不同的装配分支上（{w}：{x}）；不拆开机构便不能全部到达", {}),
+     "错位缺陷：设计位置位于不同的装配分支上（{w}：{x}）；不拆开机构便不能全部到达", {"w": _what, "x": _sides}),
     (r"order defect: the input meets a dead point turning from B1 through B2 to B3 \(crank angles (?P<l>.+?); AB is "
      r"not a crank\), so the positions are not reached in the given order by one motion",
      "错序缺陷：输入构件由 B1 经 B2 转到 B3 时遇到死点（曲柄转角 {l}；AB 不是曲柄），一次运动不能按给定顺序到达各位置", {}),
