@@ -120,3 +120,10 @@ def test_a_four_bar_analysis_names_the_link_at_each_pivot_of_its_frame(sheets):
     assert any(t.startswith("AD is a crank: yes") for t in frame_ab)
     assert any(t.startswith("BC is a crank: yes") for t in frame_ab)
     assert any(t.startswith("AD is a crank: no") for t in sheets["001-03c_four_bar_frame_CD.svg"])
+
+
+def test_an_angle_s_gloss_names_an_angle(sheets):
+    """001-01, 001-08, 001-17 glossed ∠C1AD "重叠共线极限位置" (the folded extreme position: a position, not the
+    angle the crank line makes with the frame there)."""
+    assert not [(n, t) for n, lines in sheets.items() for t in lines if t.rstrip().endswith("共线极限位置")]
+    assert "重叠共线位置 AC1 与机架的夹角" in sheets["001-08_crank_rocker.svg"]

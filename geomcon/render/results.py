@@ -97,8 +97,9 @@ NAMES: dict[str, AnswerName] = {
     "DE": _n("DE", "output arm", "输出摆杆"),
     "gamma_1": _n("γ1", "transmission angle, crank along AD", "曲柄与 AD 重合时的传动角"),
     "gamma_2": _n("γ2", "transmission angle, crank along DA extended", "曲柄与 DA 延长线重合时的传动角"),
-    "angle_C1AD": _n("∠C1AD", "folded extreme position", "重叠共线极限位置"),
-    "angle_C2AD": _n("∠C2AD", "extended extreme position", "拉直共线极限位置"),
+    # the angle the crank line makes with the frame, not the position itself (001-08 glossed ∠C1AD "重叠共线极限位置")
+    "angle_C1AD": _n("∠C1AD", "crank line AC1 to the frame, folded extreme position", "重叠共线位置 AC1 与机架的夹角"),
+    "angle_C2AD": _n("∠C2AD", "crank line AC2 to the frame, extended extreme position", "拉直共线位置 AC2 与机架的夹角"),
     "gamma_w_min": _n("γw,min", "working stroke, smallest transmission angle", "工作行程最小传动角"),
     "AC1": _n("AC1", "A to the folded extreme position", "A 至重叠共线位置"),
     "AC2": _n("AC2", "A to the extended extreme position", "A 至拉直共线位置"),
