@@ -127,3 +127,11 @@ def test_an_angle_s_gloss_names_an_angle(sheets):
     angle the crank line makes with the frame there)."""
     assert not [(n, t) for n, lines in sheets.items() for t in lines if t.rstrip().endswith("共线极限位置")]
     assert "重叠共线位置 AC1 与机架的夹角" in sheets["001-08_crank_rocker.svg"]
+
+
+def test_link_3_is_named_as_its_mechanism_has_it(sheets):
+    """400-01 (a four-bar's rocker CD), 400-03 and 000-03 (a guide bar) glossed ω3, ε3 "构件 3（摇杆或导杆）的角速度":
+    the drawing knows which it is."""
+    assert not [(n, t) for n, lines in sheets.items() for t in lines if "摇杆或导杆" in t or "rocker or guide" in t]
+    assert any("摇杆 CD 的角速度" in t for t in sheets["400-01_four_bar_velocity_polygons.svg"])
+    assert any("导杆角加速度" in t for t in sheets["400-03_guide_bar_coriolis.svg"])

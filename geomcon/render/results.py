@@ -199,6 +199,13 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     ("four_bar.analysis", "output_crank"): _b("the link at the second pivot is a crank", "第二固定铰链处的连架杆为曲柄"),
     ("cam.translating", "v"): _n("v", "follower velocity at the cam angles asked", "从动件速度"),
     ("cam.translating", "a"): _n("a", "follower acceleration at the cam angles asked", "从动件加速度"),
+    # link 3 named as the mechanism has it (400-01 printed "构件 3（摇杆或导杆）的角速度" for a four-bar's rocker)
+    ("four_bar.kinematics", "omega3"): _n("ω3", "angular velocity of the rocker CD", "摇杆 CD 的角速度"),
+    ("four_bar.kinematics", "epsilon3"): _n("ε3", "angular acceleration of the rocker CD", "摇杆 CD 的角加速度"),
+    ("guide_bar.kinematics", "omega3"): _n("ω3", "angular velocity of the guide bar", "导杆角速度"),
+    ("guide_bar.kinematics", "epsilon3"): _n("ε3", "angular acceleration of the guide bar", "导杆角加速度"),
+    ("slotter.kinematics", "omega3"): _n("ω3", "angular velocity of the guide bar", "导杆角速度"),
+    ("slotter.kinematics", "epsilon3"): _n("ε3", "angular acceleration of the guide bar", "导杆角加速度"),
     ("cam.oscillating", "omega2"): _n("ω2", "angular velocity of the arm", "摆杆角速度"),
     ("cam.oscillating", "epsilon2"): _n("ε2", "angular acceleration of the arm", "摆杆角加速度"),
     ("cam.eccentric", "a"): _n("a", "follower acceleration", "从动件加速度"),
