@@ -135,3 +135,17 @@ def test_link_3_is_named_as_its_mechanism_has_it(sheets):
     assert not [(n, t) for n, lines in sheets.items() for t in lines if "摇杆或导杆" in t or "rocker or guide" in t]
     assert any("摇杆 CD 的角速度" in t for t in sheets["400-01_four_bar_velocity_polygons.svg"])
     assert any("导杆角加速度" in t for t in sheets["400-03_guide_bar_coriolis.svg"])
+
+
+def test_a_chinese_caption_takes_its_branch_remark_into_its_own_brackets(sheets):
+    """001-08 …: "交摇杆圆于 C1（曲柄与连杆重叠共线）（位于直线 AD 上方的交点）", two brackets in a row; the remark
+    joins the caption's own: "（曲柄与连杆重叠共线；位于直线 AD 上方的交点）"."""
+    assert not [(n, t) for n, lines in sheets.items() for t in lines if "）（" in t]
+    assert any("曲柄与连杆重叠共线；位于直线" in t for t in sheets["001-08_crank_rocker-2.svg"])
+
+
+def test_a_branch_is_said_in_words_not_by_a_helper_point(sheets):
+    """001-25 … 001-30b said "the intersection farther along D→D + ↑" (a point "D + ↑" the drawing never
+    shows): the follower's point is "the upper intersection"."""
+    assert not [(n, t) for n, lines in sheets.items() for t in lines if "↑" in t]
+    assert any("the upper intersection" in t for t in sheets["001-27_eccentric_roller_offset-2.svg"])

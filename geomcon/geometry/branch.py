@@ -274,6 +274,23 @@ class Leftmost(Branch):
         return ("the left intersection", "左侧的交点")
 
 
+class Upper(Branch):
+    """The upper one of the two intersections in the drawing (larger y): a vertical guide's point above the
+    other, said as a textbook says it (001-25…001-29 printed "the intersection farther along D→D + ↑").
+
+    >>> Upper().choose((Point(0.0, -2.0), Point(0.0, 3.0))), Upper().describe()
+    (Point(x=0.0, y=3.0), ('the upper intersection', '上方的交点'))
+    """
+
+    @staticmethod
+    def rule(cands: tuple[Point, ...]) -> Point:
+        """Choose among ``cands`` given the rule's resolved points."""
+        return _pick(cands, lambda q: q.y, "the upper one")
+
+    def describe(self, label=None) -> tuple[str, str]:
+        return ("the upper intersection", "上方的交点")
+
+
 class Rightmost(Branch):
     """The right one of the two intersections in the drawing (larger x)."""
 

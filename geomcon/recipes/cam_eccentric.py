@@ -47,8 +47,8 @@ from ..cam.eccentric_speeds import arm_maxima, arm_speeds, translating_maxima, t
 from ..cam.profile import maximise
 from ..errors import GeomconError, NotAMechanism
 from ..numeric import deg360
-from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, circle, circle_circle, line_circle, line_line,
-                        point_along,
+from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, Upper, circle, circle_circle,
+                        line_circle, line_line, point_along,
                         line_through, rotate, segment, thales_circle)
 from ..geometry.measure import angle_at, signed_angle
 from ..scene import Ref, Role, Scene, marks
@@ -378,8 +378,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                   caption=("Rise angle: ∠K0OK1 against ω" if e else "Rise angle: ∠B0OB1 against ω",
                            "推程运动角:逆 ω 方向量 ∠K0OK1" if e else "推程运动角 ∠B0OB1(逆 ω)"))
     sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
-    up = sc.add("up", lambda d: d + UP, D, visible=False, label="D + ↑")
-    B = sc.add("B", line_circle, axis, pitch, branch=Ahead(D, up), role=Role.RESULT, style="joint",
+    B = sc.add("B", line_circle, axis, pitch, branch=Upper(), role=Role.RESULT, style="joint",
                label=contact, caption=(f"The follower meets the pitch curve at {contact}",
                                        f"导路交理论廓线于 {contact}(从动件位置)"))
     if follower == "roller":
@@ -491,8 +490,7 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
     R = g["R"]
     vA = sc.add("vA", Line, A, UP, style="construction",
                 caption=("The line through A parallel to the guide", "过 A 作导路的平行线"))
-    Aup = sc.add("A_up", lambda a: a + UP, A, visible=False, label="A + ↑")
-    K = sc.add("K", line_circle, vA, Ref("disc"), branch=Ahead(A, Aup), role=Role.RESULT, style="joint", label="K",
+    K = sc.add("K", line_circle, vA, Ref("disc"), branch=Upper(), role=Role.RESULT, style="joint", label="K",
                caption=("It meets the disc at K: the contact point", "交圆盘于接触点 K"))
     F = sc.add("F", lambda l1, l2: line_line(l1, l2)[0], axis, sc.add("face_line", Line, K, Point(1.0, 0.0), visible=False),
                style="point", label="F", caption=("The face through K ⊥ the guide meets the axis at F",

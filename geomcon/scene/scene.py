@@ -143,6 +143,27 @@ _ANNOTATION = Role.ANNOTATION
 _new_ref = tuple.__new__
 
 
+def _remark_zh(zh: str, remark: str) -> str:
+    """A Chinese caption with a remark (its branch rule) added: inside the caption's closing bracket remark when
+    there is one (``交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)``, not two brackets in a row), else
+    in its own brackets. A closing bracket of a formula (no ideograph inside) is left alone.
+
+    >>> _remark_zh("交摇杆圆于 C1(曲柄与连杆重叠共线)", "位于直线 AD 上方的交点")
+    '交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)'
+    >>> _remark_zh("K = (180° + θ)/(180° − θ)", "较近的交点"), _remark_zh("两线交于 P", "较近的交点")
+    ('K = (180° + θ)/(180° − θ)(较近的交点)', '两线交于 P(较近的交点)')
+    """
+    if zh.endswith((")", "）")):
+        depth = 0
+        for i in range(len(zh) - 1, -1, -1):
+            depth += (zh[i] in ")）") - (zh[i] in "(（")
+            if depth == 0:
+                if any("\u4e00" <= c <= "\u9fff" for c in zh[i + 1:-1]):
+                    return f"{zh[:-1]};{remark}{zh[-1]}"
+                break
+    return f"{zh}({remark})"
+
+
 class Scene:
     """An ordered mapping key → :class:`Step` with lazy, memoised evaluation.
 
@@ -431,7 +452,7 @@ class Scene:
         if branch is not None:
             ben, bzh = branch.describe(self.label_of)
             en = f"{en} ({ben})" if en else ben
-            zh = f"{zh}({bzh})" if zh else bzh
+            zh = _remark_zh(zh, bzh) if zh else bzh
         return en, zh
 
     def closure(self, keys: Iterable[str]) -> list[str]:
