@@ -212,6 +212,22 @@ def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fil
     return el
 
 
+def _value_run(line: Element, value: str) -> Element:
+    """The measured value's bold run at the end of ``line``, on the line's baseline: a line ending in a subscript
+    (``Measure θ = ∠C1AC2``) left the next run 0.77 mm low, and 001-08's "= 12.506°" printed on the subscript's
+    baseline.
+
+    >>> el = _line(None, "θ = ∠C_1AC_2", 0.0, 0.0, 3.5, "#000", "en")
+    >>> _value_run(el, " = 12.5°").attribs["dy"], "dy" in _value_run(_line(None, "K", 0.0, 0.0, 3.5, "#000", "en"), "1").attribs
+    ('-0.77', False)
+    """
+    shift = sum(float(t.attribs.get("dy") or 0.0) for t in line.elements)
+    run = Element("tspan", value, class_="value", font_weight="bold")
+    if abs(shift) > 1e-9:
+        run.attribs["dy"] = fmt(-shift)
+    return run
+
+
 def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, values: Mapping[str, Any],
                     shown: int, current: int | None, lang: str = "both") -> Any:
     """The protocol group: entries 1…``shown`` (each ``<g class="proto" data-step="n">``), entry
@@ -236,7 +252,7 @@ def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, valu
         for j, ln in enumerate(e.en):
             el = _line(dwg, ln, x0 + NUM_W, yy, PROTO_SIZE, ink, "en")
             if value and j == len(e.en) - 1:
-                el.add(Element("tspan", value, class_="value", font_weight="bold"))
+                el.add(_value_run(el, value))
             g.add(el)
             yy += EN_LH
         yy += ZH_LH - EN_LH
