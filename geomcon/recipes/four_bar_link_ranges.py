@@ -183,6 +183,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 q = sc.add(f"{name}_{k}_hi", Point, hi_d, y, style="tick", role=Role.RESULT,
                            label="∞" if hi_ == math.inf else f"{hi_:g}")
                 sc.add(f"{name}_{k}", segment, p, q, style="admissible", role=Role.RESULT)
+    if sc.drawing:                           # the number lines' quantity, at the top row's end
+        sc.add("axis_name", Point, top, 0.0, label=f"{x} (mm)", style="row-end", role=Role.ANNOTATION)
     ends = ends_of(edges, runs)
     named = [(e, _kind({**known, x: e}, frame)[0]) for e in ends]
     sc.add("boundaries", boundaries_of, frame, x, na, a, nb, b, nc, c, *case_refs, role=Role.MEASUREMENT, unit="mm",

@@ -127,6 +127,9 @@ STYLES: dict[str, Style] = {s.name: s for s in (
           label_thin=True),
     Style("division", marker="dot", radius=0.55, label_optional=True),
     Style("row-start", marker="dot", radius=0.45, label_dir=math.pi, label_size=2.6),
+    # the end of a table's number lines, named by the quantity they measure at their right, as an s–δ chart
+    # names its δ axis (001-02 named no variable: "BC (mm)")
+    Style("row-end", marker="dot", radius=0.45, label_dir=0.0, label_size=2.6, label_whole=True),
     # the points of an instant-centre problem named as centres too ("B (P12)", "P34 (∞)"): the name in brackets
     # is the answer asked for, so the label prints whole
     Style("pivot-centre", marker="hollow", radius=1.5, marker_width=0.4, label_whole=True),
