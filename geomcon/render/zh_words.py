@@ -41,14 +41,14 @@ WORDS = frozenset("""
 许用 轨迹 反向 分段 接触 试用 小于 高于 等于 异于 对应 关于 位于 处于 之间 之外 之下 之和 之比 所在 所得 所求 所指 候选 备选 初始 起始 起止 终点
 最大 最小 最长 最短 最低 最高 最近 最远 最佳 上方 下方 左侧 右侧 一侧 另一侧 外侧 同侧 两端 该处 无穷 无穷远
 一个 两个 三个 一点 一致 一系列 第一 第二 同一 另一 二者 两圆 两线 不同 不是 不能 不在 全部 其余 其间 其中 此时 否则
-分别 同理 如图 已知 精确 正确 慢速 工作 居中 比较 外凸 活动 固定 箭头 顺序 休止 详见
+分别 同理 如图 已知 精确 正确 慢速 工作 居中 比较 外凸 活动 固定 箭头 顺序 休止 详见 任何
 """.split())
 """Words of two characters or more (at most :data:`_LONGEST`) that a line never breaks inside."""
 
 SINGLE = frozenset("""
 的 之 其 该 每 各 者 所 为 是 与 及 或 且 若 即 于 在 以 由 按 沿 绕 自 至 到 向 过 对 离 经 将 把 被 随 使 须 能 可 不
 仍 仅 只 再 均 任 另 同 一 两 双 六 第 上 中 内 后 旁 边 侧 处 时 近 远 较 高 短 小 慢 正 逆 顺 非 否 无 有 用 夹
-作 取 交 画 求 得 量 成 转 找 见 切 张 个 靠 带 点 线 圆 弧 弦 角 杆 长 距 轴 销 族 值 解 根
+作 取 交 画 求 得 量 成 转 找 见 切 张 个 靠 带 标 点 线 圆 弧 弦 角 杆 长 距 轴 销 族 值 解 根
 """.split())
 """Characters that are words by themselves (particles, prepositions, measure and function words, single-syllable
 verbs and nouns of a construction: 以 A 为圆心, 作圆, 交于, 取点): a character of a text that is neither one nor part
