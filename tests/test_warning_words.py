@@ -39,6 +39,9 @@ EXAMPLES = [
     "C3 right); no continuous motion of the linkage passes all three",
     "branch defect: the designed positions lie on different assembly branches (side of C from B→D: position 1: left, "
     "position 2: right, position 3: left); they cannot all be reached without taking the linkage apart",
+    "branch defect: the designed positions lie on different assembly branches (pin E against the foot of F on the "
+    "guide: position 1: ahead, position 2: behind, position 3: ahead); they cannot all be reached without taking "
+    "the linkage apart",
     "order defect: the input meets a dead point turning from B1 through B2 to B3 (crank angles 10°, 50°, 90°; AB is "
     "not a crank), so the positions are not reached in the given order by one motion",
     "order defect: the input's motion from position 1 through 2 to 3 passes a dead point (γ = 0 at φ = 40°); the "
@@ -70,7 +73,7 @@ def test_each_example_is_translated_with_its_numbers(warning):
     assert zh is not None and not HALF.search(zh), zh
     for number in re.findall(r"-?\d+(?:\.\d+)?", warning):
         assert number in zh, (number, zh)
-    assert not re.search(r"\b(the|is|of|at δ|left|right|side|position)\b", zh), zh   # no English words left
+    assert not re.search(r"\b(the|is|of|at δ|left|right|side|position|ahead|behind|pin|foot)\b", zh), zh
 
 
 def test_every_rule_has_an_example():

@@ -375,13 +375,15 @@ def as_xy(p: Point) -> tuple[float, float]:
     return p.tuple()
 
 
-def defect_warnings(sc: Scene, keys: Mapping[str, str], labels: Sequence[str], what: str) -> tuple[str, ...]:
-    """Warnings for a branch or an order defect, with the numbers (evaluates the flag steps)."""
+def defect_warnings(sc: Scene, keys: Mapping[str, str], labels: Sequence[str], what: str,
+                    sides_words: tuple[str, str, str] = ("left", "right", "on it")) -> tuple[str, ...]:
+    """Warnings for a branch or an order defect, with the numbers (evaluates the flag steps); ``sides_words``
+    says a side +1, −1, 0 as ``what`` measures it (a point left or right of a line; a pin ahead or behind)."""
     v = sc.evaluate(list(keys.values()))
     out = []
     sides = [v[keys[f"side{i}"]] for i in range(1, len(labels) + 1)]
     if not v[keys["branch_ok"]]:
-        names = {1: "left", -1: "right", 0: "on"}
+        names = dict(zip((1, -1, 0), sides_words))
         where = ", ".join(f"{lab}: {names[s]}" for lab, s in zip(labels, sides))
         out.append(f"branch defect: the designed positions lie on different assembly branches ({what}: {where}); "
                    "they cannot all be reached without taking the linkage apart")

@@ -339,7 +339,8 @@ def _flags(sc: Scene, D: Ref, guide: Ref, F: list, E: list, DF: Ref, EF: Ref, ma
     n = len(F)
     keys = {f"side{i}": f"side{i}" for i in range(1, n + 1)}
     keys.update(branch_ok="branch_ok", order_ok="order_ok", dead_at="dead_at")
-    return defect_warnings(sc, keys, [f"position {i}" for i in range(1, n + 1)], "pin ahead (+) of the hinge's foot")
+    return defect_warnings(sc, keys, [f"position {i}" for i in range(1, n + 1)],     # pin_side's +1, −1, 0:
+                           "pin E against the foot of F on the guide", ("ahead", "behind", "at it"))   # not left/right
 
 
 def dead_hinge_text(D: Point, dead: tuple) -> str:

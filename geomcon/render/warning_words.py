@@ -30,7 +30,8 @@ PART = {"rise": "推程", "return": "回程"}
 WHAT = {"the fixed pivot A": "固定铰链 A", "the fixed pivot D": "固定铰链 D", "the hinge C1": "铰链 C1",
         "the hinge F1": "铰链 F1", "C1": "C1", "F1": "F1", "the coupler is not rigid": "连杆不是刚体",
         "the input link does not keep its length": "输入连架杆长度不一致",
-        "K is not one point of a rigid coupler": "K 不是刚性连杆上的同一点", "side of C from B→D": "C 在 B→D 的哪一侧"}
+        "K is not one point of a rigid coupler": "K 不是刚性连杆上的同一点", "side of C from B→D": "C 在 B→D 的哪一侧",
+        "pin E against the foot of F on the guide": "销 E 相对 F 在导路上的垂足"}
 """The phrases a warning takes from its recipe (what moves, what is wrong), in Chinese."""
 
 WHY = {"(drafted data?): each C_i is slid along B_iC_i to the mean BC = ": "（作图数据？）：各 C_i 沿 B_iC_i 移到平均值 BC = ",
@@ -60,7 +61,8 @@ def _sides(s: str | None) -> str:
     """
     s = re.sub(r"position (\d+): ", r"位置 \1：", s or "")
     for en, zh in ((" left", " 左侧"), (" right", " 右侧"), (" on it", " 线上"), ("：left", "：左侧"),
-                   ("：right", "：右侧"), ("：on it", "：线上"), (", ", "、")):
+                   ("：right", "：右侧"), ("：on it", "：线上"), ("：ahead", "：在前"), ("：behind", "：在后"),
+                   ("：at it", "：重合"), (", ", "、")):
         s = s.replace(en, zh)
     return s
 
