@@ -216,6 +216,11 @@ def test_rocker_slider_branch_defect():
     sol = _solve(RS3, D=list(D), psi=psis, e=e, s=s)
     _all_ok(sol)
     assert not sol.answers["branch_ok"] and any(w.startswith("branch defect") for w in sol.warnings)
+    # the pin's side along the guide is ahead or behind, not left or right (session j), said in Chinese too
+    from geomcon.render.warning_words import warning_zh
+    (w,) = [w for w in sol.warnings if w.startswith("branch defect")]
+    assert "ahead" in w and "behind" in w and "left" not in w and "right" not in w, w
+    assert "在前" in warning_zh(w) and "在后" in warning_zh(w)
 
 
 def test_rocker_slider_order_defect():
