@@ -355,10 +355,13 @@ class Placer:
             centres = np.full((len(geoms), 2), np.nan)
             if rings.any():
                 centres[rings] = [shapely.Polygon(g.coords).centroid.coords[0] for g in geoms[rings]]
+            shapely.prepare(geoms)          # a cam's profile indexed once, not walked for each leader
             self._bars = (shapely.STRtree(geoms), codes[idx], centres)
         tree, codes, centres = self._bars
         lines = shapely.linestrings(nudged(c.leader).reshape(-1, 2, 2))
-        k, j = tree.query(lines, predicate="intersects")
+        k, j = tree.query(lines)                            # bounds that meet; then the prepared bar meets it
+        met = shapely.intersects(tree.geometries[j], lines[k])
+        k, j = k[met], j[met]
         mine = codes[j] == c.boxes.owner[c.led[k]]
         if len(j):          # an area round the leader's start (a slider block on its joint), a closed curve
             # centred there (a roller round its centre) is left, not crossed
