@@ -539,6 +539,7 @@ class Placed:
         self._rect_rows = np.empty((5, 16))                 # the rectangles' bounds and index, grown in place
         self._leader_rows = np.empty((9, 16))               # the segments' bounds, ends and index
         self._hull_edges: list[tuple[np.ndarray, ...]] = []  # each turned box's corners and sides (:func:`_inside`)
+        self._hull_bounds: list[tuple[float, ...]] = []       # and its bounds
         self._layer = Layer([])                 # all of it as segments, grown as it is needed (:meth:`_segments`)
 
     def __len__(self) -> int:
@@ -561,6 +562,7 @@ class Placed:
                 self._general = True
             else:                                           # a turned box: its sides as segments
                 self._hulls.append((corners, len(self.geoms)))
+                self._hull_bounds.append((*corners.min(axis=0).tolist(), *corners.max(axis=0).tolist()))
                 b = np.roll(corners, -1, axis=0)
                 self._hull_edges.append((corners[:, 0][:, None], corners[:, 1][:, None],
                                          (b[:, 0] - corners[:, 0])[:, None], (b[:, 1] - corners[:, 1])[:, None]))
@@ -606,7 +608,7 @@ class Placed:
         others cannot lower a clearance, nor meet); a box meeting no side of a turned box touches it when its
         centre lies inside (the box then lies wholly inside: the distance to the sides is kept, as a
         :class:`Layer` keeps it for a box inside an area)."""
-        if self._general or boxes.turned.any():                # rare: all of it as segments (a turned candidate)
+        if self._general or boxes.sin.any():                   # rare: all of it as segments (a turned candidate)
             return self._segments().measure(boxes)
         n = len(boxes)
         known = np.full(n, ENOUGH)
@@ -632,8 +634,10 @@ class Placed:
         if self._hulls:                                     # boxes inside a turned box; a pair once, in order
             pairs = np.zeros((n, len(self.geoms)), dtype=bool)
             pairs[k, ids[j]] = True
-            for (corners, i), edges in zip(self._hulls, self._hull_edges):
-                pairs[:, i] |= _inside(*edges, boxes.cx, boxes.cy)
+            cx0, cx1, cy0, cy1 = boxes.cx.min(), boxes.cx.max(), boxes.cy.min(), boxes.cy.max()
+            for (_, i), edges, (hx0, hy0, hx1, hy1) in zip(self._hulls, self._hull_edges, self._hull_bounds):
+                if hx0 <= cx1 and cx0 <= hx1 and hy0 <= cy1 and cy0 <= hy1:     # a centre may lie inside
+                    pairs[:, i] |= _inside(*edges, boxes.cx, boxes.cy)
             k, p = np.nonzero(pairs)
             touching = pairs.any(axis=1)
         else:
@@ -747,11 +751,14 @@ def _row(rows: np.ndarray, i: int, values: tuple[float, ...]) -> np.ndarray:
 def _rect_of(geom: shapely.Geometry) -> tuple[float, float, float, float] | None:
     """The bounds of an axis-parallel rectangle as ``shapely.box`` makes them (one ring of four distinct corners
     on its bounds, each side parallel to an axis); None for anything else."""
-    if shapely.get_type_id(geom) != 3 or shapely.get_num_interior_rings(geom):
+    if type(geom) is not shapely.Polygon:
         return None
     xy = shapely.get_coordinates(geom).tolist()
-    x0, y0, x1, y1 = shapely.bounds(geom).tolist()
-    if len(xy) != 5 or x0 == x1 or y0 == y1:
+    if len(xy) != 5:                                    # a hole would add coordinates
+        return None
+    xs, ys = [p[0] for p in xy], [p[1] for p in xy]
+    x0, y0, x1, y1 = min(xs), min(ys), max(xs), max(ys)     # its bounds
+    if x0 == x1 or y0 == y1:
         return None
     if any((x != x0 and x != x1) or (y != y0 and y != y1) for x, y in xy):
         return None
