@@ -145,3 +145,18 @@ def test_leaders_across_bars_are_those_geos_finds_unprepared():
     starts = shapely.contains_xy(bars[None, :], c.leader[:, :1], c.leader[:, 1:2])
     want = (meets & ~starts).any(axis=1)
     assert len(c.led) and want.any() and barred.tolist() == want.tolist()
+
+
+def test_layer_exact_takes_drawn_rectangles_in_closed_form_and_the_rest_by_geos():
+    from geomcon.render.clearance import Layer
+    from geomcon.render.shapes import disc_polygon
+    geoms = [shapely.box(0, 0, 4, 2), disc_polygon(2.0, 1.0, 0.55), shapely.box(3.5, 1.5, 6, 4),
+             shapely.Polygon([(1, 0), (3, 0), (2, 3)])]
+    layer = Layer(geoms, ["a", "b", "c", "d"], [0.0, 0.5, 0.25, 0.0])
+    box = shapely.box(0.75, 0.25, 3.75, 1.75)
+    allow = np.array([0.0, 0.5, 0.25, 0.0])
+    for parents in ([0, 1, 2, 3], [2], [0, 2], [1, 3]):
+        p = np.array(parents)
+        want = float(np.min(covering(box, np.array(geoms, dtype=object)[p]) + allow[p]))
+        assert layer.exact(box, p) == want
+    assert layer._rect(0) == (0.0, 0.0, 4.0, 2.0) and layer._rect(1) is None

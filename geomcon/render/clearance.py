@@ -316,6 +316,7 @@ class Layer:
         self._parts: list[tuple[np.ndarray, ...]] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
         self._simple: dict[int, bool] = {}
+        self._rects: dict[int, tuple[float, ...] | None] = {}      # :meth:`_rect`
         self.extend(geoms, owners, allow, weight, own, halo)
         self.tree = None
         if index and len(self.arrays()[0]):
@@ -507,13 +508,32 @@ class Layer:
         return k[meets], p[meets]
 
     def exact(self, box: shapely.Geometry, parents: np.ndarray) -> float:
-        """The least of :func:`covering` plus allowance over the geometries ``parents`` (all touching ``box``)."""
+        """The least of :func:`covering` plus allowance over the geometries ``parents`` (all touching ``box``): an
+        axis-parallel box and an axis-parallel rectangle (a text drawn, a slider block) by :func:`rect_covering`,
+        anything else by GEOS."""
         if not len(parents):
             return math.inf
         allow = self.arrays()[6]
-        geoms = np.empty(len(parents), dtype=object)
-        geoms[:] = [self.geoms[i] for i in parents.tolist()]
-        return float(np.min(covering(box, geoms) + allow[parents]))
+        rect = _rect_of(box)
+        least_ = math.inf
+        rest = []
+        for i in parents.tolist():
+            other = None if rect is None else self._rect(i)
+            if other is None:
+                rest.append(i)
+            else:
+                least_ = min(least_, rect_covering(rect, other) + float(allow[i]))
+        if rest:
+            geoms = np.empty(len(rest), dtype=object)
+            geoms[:] = [self.geoms[i] for i in rest]
+            least_ = min(least_, float(np.min(covering(box, geoms) + allow[rest])))
+        return least_
+
+    def _rect(self, i: int) -> tuple[float, ...] | None:
+        """:func:`_rect_of` geometry ``i`` (remembered)."""
+        if i not in self._rects:
+            self._rects[i] = _rect_of(self.geoms[i])
+        return self._rects[i]
 
 
 class Placed:
