@@ -195,6 +195,8 @@ class _Batch:
         self.known, self.hi = np.full(len(c.cost), np.nan), np.full(len(c.cost), np.nan)
         self.cross = np.zeros(len(c.cost))
         self.pending: dict[int, np.ndarray] = {}
+        self.starts: list[int] = c.starts.tolist()                          # each text's candidates and led ones
+        self.led_starts: list[int] = np.searchsorted(c.led, c.starts).tolist()
 
     def record(self, rows: np.ndarray, m: Measured) -> None:
         """Keep the clearances ``m`` of the candidates ``rows`` (of the batch)."""
@@ -223,12 +225,12 @@ class _Text:
     """
 
     def __init__(self, batch: _Batch, i: int):
-        a, b = (int(v) for v in batch.c.starts[i:i + 2])
+        a, b = batch.starts[i], batch.starts[i + 1]
         self.batch, self.offset, self.n = batch, a, b - a
         c = batch.c
         self.cost, self.framed, self.rivalled = c.cost[a:b], c.framed[a:b], c.rivalled[a:b]
         self.leading = batch.leading[a:b]
-        lo, hi = np.searchsorted(c.led, [a, b])
+        lo, hi = batch.led_starts[i], batch.led_starts[i + 1]
         self.led, self.leader = c.led[lo:hi] - a, c.leader[lo:hi]
         self.boxes = batch.boxes.slice(a, b)
         self.outside, self.static = batch.outside[a:b], batch.static[a:b]
