@@ -160,3 +160,25 @@ def test_layer_exact_takes_drawn_rectangles_in_closed_form_and_the_rest_by_geos(
         want = float(np.min(covering(box, np.array(geoms, dtype=object)[p]) + allow[p]))
         assert layer.exact(box, p) == want
     assert layer._rect(0) == (0.0, 0.0, 4.0, 2.0) and layer._rect(1) is None
+
+
+def test_placed_measures_many_boxes_from_the_columns_near_them_as_one_box_from_all():
+    from shapely import affinity
+    rng = np.random.default_rng(11)
+    placed = Placed()
+    for x, y in rng.uniform(0, 100, (40, 2)):
+        placed.append(shapely.box(x, y, x + 4, y + 2))
+        placed.append(shapely.LineString([(x, y), (x + rng.uniform(-6, 6), y + rng.uniform(-6, 6))]))
+    placed.append(affinity.rotate(shapely.box(20, 20, 26, 22), 30))        # a turned text box
+    cx, cy = rng.uniform(15, 35, 120), rng.uniform(15, 35, 120)
+    boxes = Boxes.aligned(cx, cy, 4.0, 2.0, np.zeros(120, dtype=np.intp))
+    whole = placed.measure(boxes)                       # 120 boxes x 121 columns: only those near them
+    rows, parents = [], []
+    for i in range(120):
+        one = placed.measure(boxes.take(np.array([i])))    # one box: every column
+        for a, b in ((whole.known, one.known), (whole.hi, one.hi), (whole.lo, one.lo)):
+            assert a[i] == b[0]
+        assert whole.touching[i] == one.touching[0]
+        rows += [i] * len(one.pending[0])
+        parents += one.pending[1].tolist()
+    assert whole.pending[0].tolist() == rows and whole.pending[1].tolist() == parents and len(rows)
