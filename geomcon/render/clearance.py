@@ -387,12 +387,14 @@ class Layer:
         """Whether each geometry of ``parents`` is simple (what a box covers of it is the sum of what it covers of
         its segments): points and line strings that do not overlap themselves."""
         simple = self.arrays()[9]
-        unknown = np.unique(parents[simple[parents] < 0])
-        if len(unknown):
+        of = simple[parents]
+        if (of < 0).any():                                  # not yet known: GEOS says, once
+            unknown = np.unique(parents[of < 0])
             geoms = np.empty(len(unknown), dtype=object)
             geoms[:] = [self.geoms[i] for i in unknown.tolist()]
             simple[unknown] = shapely.is_simple(geoms)
-        return simple[parents] == 1
+            of = simple[parents]
+        return of == 1
 
     def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
