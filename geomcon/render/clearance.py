@@ -69,14 +69,16 @@ def rect_covering(a: Sequence[float], b: Sequence[float]) -> float:
     edge or a corner in common: a line of that length, a point).
 
     >>> box = shapely.box(0.0, 0.0, 4.0, 2.0)
-    >>> for b in [(3.0, 1.0, 6.0, 5.0), (4.0, 0.5, 6.0, 1.0), (0.0, 0.0, 0.5, 0.25)]:
+    >>> for b in [(3.0, 1.0, 6.0, 5.0), (4.0, 0.5, 6.0, 1.0), (0.0, 0.0, 0.5, 0.25), (4.0, 2.0, 5.0, 3.0), (5.0, 0.0, 6.0, 1.0)]:
     ...     assert rect_covering(box.bounds, b) == covering(box, np.array([shapely.box(*b)]))[0]
     >>> rect_covering((0.0, 0.0, 4.0, 2.0), (3.0, 1.0, 6.0, 5.0))
     -0.6
     """
     w = min(a[2], b[2]) - max(a[0], b[0])
     h = min(a[3], b[3]) - max(a[1], b[1])
-    covered = 2.0 * math.sqrt(w * h) if w > 0.0 and h > 0.0 else max(w, h, 0.0)
+    if w < 0.0 or h < 0.0:                              # apart after all: GEOS's empty intersection
+        return -0.0
+    covered = 2.0 * math.sqrt(w * h) if w > 0.0 and h > 0.0 else max(w, h)
     return -min(2.0, 0.3 * covered)
 
 
