@@ -93,3 +93,48 @@ def test_statement_forms():
         assert "{" not in en + zh and zh.endswith("。")
         for v in g.values():
             assert str(v) in en and str(v) in zh
+
+
+def _drawn_links(sol):
+    """(style, a, b) of every visible segment drawn as a link (a bar of the mechanism), as complex numbers."""
+    from geomcon.geometry.primitives import Segment
+    out = []
+    for st in sol.scene.visible_steps():
+        v = sol.scene.value(st.key)
+        if isinstance(v, Segment) and st.style.startswith("link"):
+            out.append((st.style, complex(*v.a.tuple()), complex(*v.b.tuple())))
+    return out
+
+
+@pytest.mark.parametrize("given", [dict(AB=40, AC=60, e=10),                 # seed 001-04
+                                   dict(AB=40, AC=150, e=25, L=170), dict(AB=20, AC=90, e=35)])
+def test_offset_bars_hang_from_c_by_an_arm_of_length_e(given):
+    """001-04 drew the two guide bars floating beside C: the arm of length e from C to each bar's foot was
+    missing. Each drawn bar through B_i lies at distance e from C, and a link of its style joins C to its foot
+    (the rigid L of arm and bar a textbook draws)."""
+    sol = _solve(**given)
+    e = given["e"]
+    p = {k: complex(*v) for k, v in sol.points.items()}
+    C, A = p["C"], p["A"]
+    links = _drawn_links(sol)
+    tol = 1e-9 * given["AC"]
+    for i in (1, 2):
+        B = p[f"B{i}"]
+        bars = [(s, a, b) for s, a, b in links
+                if abs(a - A) > tol and abs(b - A) > tol and abs(((B - a) * (b - a).conjugate()).imag) <= tol * abs(b - a)]
+        assert len(bars) == 1, (i, bars)
+        style, a, b = bars[0]
+        u = (b - a) / abs(b - a)
+        assert abs(((C - a) * u.conjugate()).imag) == pytest.approx(e, rel=1e-9)       # the bar's line at e from C
+        foot = a + ((C - a) * u.conjugate()).real * u
+        arms = [(s, x, y) for s, x, y in links if max(abs(x - C), abs(y - foot)) <= tol
+                or max(abs(y - C), abs(x - foot)) <= tol]
+        assert arms and arms[0][0] == style, (i, links)
+        assert abs(arms[0][2] - arms[0][1]) == pytest.approx(e, rel=1e-9)
+        assert min(abs(a - foot), abs(b - foot)) <= tol                    # the bar starts at the arm's end: an L
+
+
+def test_no_arm_without_offset():
+    """e = 0: the bar passes through C, and no zero-length arm is drawn."""
+    sol = _solve(AB=100, AC=200, L=400)
+    assert all(abs(b - a) > 1e-9 for _, a, b in _drawn_links(sol))

@@ -17,9 +17,9 @@ from ..analytic.crank_rocker_best import crank_rocker_best
 from ..errors import NotAMechanism
 from ..numeric import stationary
 from ..geometry import Point, segment
-from ..scene import Role, Scene, marks
+from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
-from .common import gamma_min_of, half_difference, half_sum, length
+from .common import gamma_min_of, half_difference, half_sum, length, near_flag
 from .crank_rocker_crank_frame import add_frame_rocker, add_unit_linkage
 from .crank_rocker_design import admissible_arcs, swing_mark, theta_mark
 from .search import maximise
@@ -67,6 +67,19 @@ def best_on_arcs(D: Point, C1: Point, C2: Point, *arcs_per_side: Any) -> Point:
     return best[1]
 
 
+def best_words(A: Point, D: Point, C1: Point, C2: Point) -> tuple[str, str]:
+    """The caption of A*: the arc it lies on (D's side of C1C2 or the far side) and the γmin it gives.
+
+    >>> best_words(Point(0, 1), Point(0, 5), Point(-1, 0), Point(1, 0))[0].startswith("A* on the admissible arc on D's side")
+    True
+    """
+    near = near_flag(A, C1, C2, D)
+    side = ("on D's side", "D 所在一侧") if near else ("on the far side", "远离 D 的一侧")
+    g = gamma_min_of(A, D, C1, C2)
+    return (f"A* on the admissible arc {side[0]} of C1C2 where γmin is largest, {g:.2f}° (searched along the arcs)",
+            f"在可行弧段上搜索使 γmin 最大的 A*（{side[1]}，γmin = {g:.2f}°）")
+
+
 def _ratio(AD: float, A: Point, D: Point) -> float:
     return AD / math.hypot(A.x - D.x, A.y - D.y)
 
@@ -89,9 +102,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
         arcs.append(sc.add(f"{pre}arcs", admissible_arcs, kT, C1, C2, D, AD, None, style="admissible",
                            caption=(f"Admissible arcs {en}: a crank, C1 and C2 on one side of AD",
                                     f"A 的可行弧段({zh})")))
+    words = ("A* on the admissible arcs where γmin is largest (searched along the arcs)",
+             "在可行弧段上搜索使 γmin 最大的 A*")
     A = sc.add("A", best_on_arcs, D, C1, C2, *arcs, role=Role.RESULT, style="pivot", label="A*",
-               caption=("A* on the admissible arcs where γmin is largest (searched along the arcs)",
-                        "在可行弧段上搜索使 γmin 最大的 A*"))
+               caption=Ref("A_words") if sc.drawing else words)
+    if sc.drawing:                           # which arc A* lies on and its γmin: computed once A* is found
+        sc.add("A_words", best_words, A, D, C1, C2, visible=False)
     if sc.drawing:
         sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     lam = sc.add("scale", _ratio, AD, A, D, role=Role.MEASUREMENT,

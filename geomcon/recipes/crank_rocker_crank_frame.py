@@ -17,6 +17,7 @@ from ..geometry import Point, segment
 from ..scene import Ref, Role, Scene, marks
 from ..scene.tape import lifted
 from .base import Construction
+from .choice_words import flat_caption
 from .common import angle_deg, folded_flag, gamma_min_of, half_difference, half_sum, near_flag
 from .crank_rocker_design import _rocker_end, admissible_arcs, swing_mark, theta_mark
 from .search import crossing
@@ -97,15 +98,17 @@ def crank_end(A: Point, C1: Point, C2: Point, extended: bool) -> Point:
 
 
 def add_unit_linkage(sc: Scene, A: Any, D: Any, C1: Any, C2: Any, optional: bool = False,
-                     labels: tuple[str | None, str | None] = ("B1", "B2")) -> None:
+                     labels: tuple[str | None, str | None] = ("B1", "B2"),
+                     caption: tuple[str, str] | Ref = ("The frame AD", "机架 AD")) -> None:
     """The designed linkage drawn solid on the unit drawing in both extreme positions: the crank AB, the
     coupler BC and the frame AD (the rocker DC1, DC2 is drawn already); a figure that shows only the
     construction leaves the answer undrawn (drawing only). ``labels`` names the crank pins (None: unlabelled,
-    where the drawing is too small for two more names)."""
+    where the drawing is too small for two more names); ``caption`` is the frame's step's (a :class:`Ref`:
+    the step computing it)."""
     if not sc.drawing:
         return
     opt = dict(optional=True) if optional else {}
-    sc.add("AD_design", segment, A, D, role=Role.RESULT, style="frame", caption=("The frame AD", "机架 AD"), **opt)
+    sc.add("AD_design", segment, A, D, role=Role.RESULT, style="frame", caption=caption, **opt)
     for i, extended in enumerate((False, True), 1):
         near = sc.add(f"Cn{i}", _pick_c, A, C1, C2, extended, visible=False, **opt)
         B = sc.add(f"B{i}", crank_end, A, C1, C2, extended, role=Role.RESULT, style="joint", label=labels[i - 1],
@@ -156,7 +159,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
                      "gamma_min": f"gamma_min_{i}", "theta": "theta", "K": "K", "C1_folded": f"C1_folded_{i}",
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
     # solution 1 drawn as a linkage; B2 unnamed: on the small unit drawing its name would sit nearer A2
-    add_unit_linkage(sc, Ref("A_1"), D, C1, C2, optional=True, labels=("B1", None))
+    words = sc.add("choice_words", _drawn_words, 0, tuple(f"A{i + 1}" for i in range(SLOTS)),
+                   *(Ref(f"{k}_{i}") for i in range(SLOTS) for k in ("valid", "C1_folded", "A_near", "AD")),
+                   visible=False) if sc.drawing else ("The frame AD", "机架 AD")
+    add_unit_linkage(sc, Ref("A_1"), D, C1, C2, optional=True, labels=("B1", None), caption=words)
     if sc.drawing:                          # the designed linkage's crank pivot is a fixed pivot, not only a candidate
         sc.add("A_ground", marks.ground, Ref("A_1"), -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
         # θ and ψ are answers: marked where they are measured, θ at A between the extreme positions, ψ at D
@@ -165,6 +171,14 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("mark_psi", swing_mark, D, C1, C2, role=Role.ANNOTATION, style="angle", optional=True)
     return Construction(sc, dict(sols[0]), {"D": "D", "C1": "C1", "C2": "C2"}, solutions=tuple(sols),
                         no_solution=f"no crank-rocker with K = {K:g}, ψ = {psi:g}° has the crank AB = {AB:g} on the frame AD = {AD:g}")
+
+
+def _drawn_words(idx: int, labels: tuple[str, ...], *flat: Any) -> tuple[str, str]:
+    """The frame's step of the design drawn (A1, the first by :func:`preference`: the roots come on D's side
+    first, every one folded, AD given) naming it and the other solutions (:mod:`.choice_words`; 001-10c did
+    not say which of A1, A2 it drew)."""
+    en, zh = flat_caption("A", idx if flat[0] else None, labels, *flat)
+    return f"{en}: draw its frame AD", f"{zh}：作机架 AD"
 
 
 def _ratio_of(AB: float, AD: float) -> float:

@@ -35,6 +35,7 @@ from ..scene.tape import lifted
 from ..tolerance import tol
 from . import crank_rocker_links
 from .base import Construction, Quantity, Recipe
+from .choice_words import flat_caption
 from .common import (add_bar, angle_deg, best_index, folded_flag, gamma_min_of, half_difference, half_sum, is_valid,
                      length, near_flag, one, pick, preference, rebuilt_values)
 from .theta_circle import K_MAX_OBTUSE, add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
@@ -238,7 +239,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
         flat += [Ref(f"valid_{i}"), Ref(f"C1_folded_{i}"), Ref(f"A_near_{i}"), Ref(f"AD_{i}")]
     idx = sc.add("choice", best_index, *flat, visible=False)
-    _draw_choice(sc, idx, cands, th)
+    # the frame given keeps its fixed words: its candidates C2,1… print as "C2,4" in a protocol's text
+    named = sc.drawing and family == "positions"
+    words = sc.add("choice_words", flat_caption, "A", idx, tuple(sc.label_of(c[0]) for c in cands), *flat,
+                   visible=False) if named else None
+    _draw_choice(sc, idx, cands, th, words)
     if sc.drawing and family == "positions":
         _mark_given_angles(sc, g)
     elif sc.drawing:                         # the frame given (001-15, 001-22): ψ is an answer, marked at D too
@@ -483,11 +488,13 @@ def _ahead(A: Point, r, C: Point) -> Point | None:
     return C if (C - A).dot(r.direction) > 0 else None
 
 
-def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref) -> None:
-    """The textbook's choice drawn as the result: A, B1, B2 and both extreme positions of the linkage."""
+def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref, caption: Ref | None = None) -> None:
+    """The textbook's choice drawn as the result: A, B1, B2 and both extreme positions of the linkage;
+    ``caption`` the step naming the candidate chosen (a drawing's; a lean scene's step keeps fixed words)."""
     fixed_A = len({c[0].key for c in cands}) == 1          # frame given: A is a given point, labelled already
     A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label=None if fixed_A else "A",
-               caption=("The textbook's choice of A (the other valid points are candidates)", "取 A(其余可行点为备选解)"))
+               caption=caption or ("The textbook's choice of A (the other valid points are candidates)",
+                                   "取 A(其余可行点为备选解)"))
     P1 = sc.add("P1c", pick, idx, *(c[1] for c in cands), visible=False)    # pick itself handles None:
     P2 = sc.add("P2c", pick, idx, *(c[2] for c in cands), visible=False)    # not optional
 

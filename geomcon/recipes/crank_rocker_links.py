@@ -24,6 +24,7 @@ from ..analytic.linkages import crank_rocker_gamma_from_positions, theta_from_k
 from ..geometry import Point, perpendicular_bisector, point_along, segment
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction
+from .choice_words import flat_caption
 from .common import add_bar, angle_deg, best_index, gamma_min_of, is_valid, length, near_flag, pick
 from .theta_circle import add_theta_step, complement_turn, meet_lines, ray_from
 
@@ -87,7 +88,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
     names = ("AD", "CD", "psi", "gamma_min", "A_near")
     for name in names:
         sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False)
-    _draw_choice(sc, idx, A, C1, C2, cands, th, AB)
+    words = sc.add("choice_words", flat_caption, "D", idx, tuple(sc.label_of(c) for c in cands), *flat,
+                   visible=False) if sc.drawing else None
+    _draw_choice(sc, idx, A, C1, C2, cands, th, AB, words)
     answers = {name: f"chosen_{name}" for name in names}
     answers.update(AB="AB_given", BC="BC_given", theta="theta", K="K", C1_folded="one")
     points = {"A": "A", "D": "D", "C1": "C1", "C2": "C2", "B1": "B1", "B2": "B2"}
@@ -119,10 +122,13 @@ def _signed_complement(half_psi: float, a_side: int, s: int) -> float:
     return complement_turn(half_psi, a_side * s)
 
 
-def _draw_choice(sc: Scene, idx: Ref, A: Ref, C1: Ref, C2: Ref, cands: list, th: Ref, AB: float) -> None:
-    """The chosen design drawn in both extreme positions: D, B1, B2 and the rocker CD."""
+def _draw_choice(sc: Scene, idx: Ref, A: Ref, C1: Ref, C2: Ref, cands: list, th: Ref, AB: float,
+                 caption: Ref | None = None) -> None:
+    """The chosen design drawn in both extreme positions: D, B1, B2 and the rocker CD; ``caption`` names the
+    candidate chosen (a drawing's; a lean scene's step keeps a fixed one)."""
     D = sc.add("D", pick, idx, *cands, role=Role.RESULT, style="pivot", label="D",
-               caption=("The textbook's choice of D (the other valid point is a candidate)", "取 D(另一可行点为备选解)"))
+               caption=caption or ("The textbook's choice of D (the other valid point is a candidate)",
+                                   "取 D(另一可行点为备选解)"))
     drawing = sc.drawing                     # the ground symbol, links and marks only a drawing needs
     if drawing:
         sc.add("D_ground", marks.ground, D, -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)

@@ -8,7 +8,9 @@ diameter meets the circles of those radii about A at T1 and T2, the feet of A on
 on AT1, AT2 at the crank's length from A, and the guide lines through them are parallel to CT1, CT2. ψ is
 the angle between CT1 and CT2, θ the angle between AB2 and B1A extended (θ = ψ: the crank is perpendicular
 to the guide at both extremes). With the lever CD = L the ends D1, D2 lie on the bar's lines at L from C,
-and a ram driven from D moves H = D1D2 = 2·L·sin(ψ/2) (the shaper).
+and a ram driven from D moves H = D1D2 = 2·L·sin(ψ/2) (the shaper). The drawing shows each extreme bar as
+the textbook's rigid L: the arm of length e from C, perpendicular to the guide, to the guide's foot, then
+the guide itself.
 """
 from __future__ import annotations
 
@@ -106,8 +108,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
         if drawing:
             B = Bs[i - 1]
             G = sc.add(f"G{i}", _guide_end, C, T, B, reach, visible=False)
-            sc.add(f"guide{i}", segment, sc.add(f"G0{i}", _guide_end, C, T, B, 0.0, visible=False), G,
-                   style="link" if i == 1 else "link-alt", role=Role.RESULT)
+            F = sc.add(f"G0{i}", _guide_end, C, T, B, 0.0, visible=False)        # the foot of C on the guide
+            link = "link" if i == 1 else "link-alt"
+            if e > 0:                     # the arm CF ⊥ the guide, length e: with the guide a rigid L about C
+                sc.add(f"arm{i}", segment, C, F, style=link, role=Role.RESULT)
+            sc.add(f"guide{i}", segment, F, G, style=link, role=Role.RESULT)
             sc.add(f"CD{i}", segment, C, D, style="ghost", role=Role.CONSTRUCTION)
             sc.add(f"slider{i}", _block_along, B, C, T, role=Role.ANNOTATION, style="slider")   # B's block on the bar
     if L is not None:

@@ -364,8 +364,12 @@ class Scene:
                 self._upgrade(key)
             op, args, kwargs, _, branch, _, optional, _, meta = self._rec[key]
             caption, role, style, label, visible, unit = meta
+            computed = type(caption) is Ref          # computed when read (see :meth:`caption`): not kept
+            if computed:
+                caption = self.value(caption[0])
             step = Step(key, op, args, kwargs, caption, role, style, label, branch, visible, unit, optional)
-            self._step[key] = step
+            if not computed:
+                self._step[key] = step
         return step
 
     @property
@@ -445,10 +449,13 @@ class Scene:
         return (rec[8][3] or key) if rec else key
 
     def caption(self, key: str) -> tuple[str, str]:
-        """The step's caption with its branch rule appended, in English and Chinese."""
+        """The step's caption with its branch rule appended, in English and Chinese. A caption given as a
+        :class:`Ref` is that step's value, an (en, zh) pair computed from the construction (a choice's caption
+        naming the candidate chosen: computed when read, after a drawing of another solution fixed it)."""
         if self._stale:
             self.complete()
-        (en, zh), branch = self._rec[key][8][0], self._rec[key][4]
+        cap, branch = self._rec[key][8][0], self._rec[key][4]
+        en, zh = self.value(cap[0]) if type(cap) is Ref else cap
         if branch is not None:
             ben, bzh = branch.describe(self.label_of)
             en = f"{en} ({ben})" if en else ben
