@@ -115,3 +115,11 @@ def test_the_cycle_players_readout_prints_a_minus_sign():
     assert out.returncode == 0, out.stderr[-500:]
     readout = html.unescape(re.search(r'id="readout"[^>]*>([^<]*)<', out.stdout).group(1))
     assert "= −" in readout and not HYPHEN_MINUS.search(readout), readout
+
+
+def test_the_terminal_keeps_the_ascii_hyphen(capsys):
+    """The text ``geomcon solve`` prints is machine-readable (grep, a spreadsheet): "-", as the JSON."""
+    from geomcon.cli import main
+    assert main(["solve", str(ROOT / "problems" / "000-04_slotter_cam_psi0.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "ρa,min = -3.545 mm" in out and "textbook 13.59, -28.78 %" in out and "\u2212" not in out
