@@ -2,7 +2,8 @@
 
 A cell is a number with an optional unit — lengths ``mm cm m`` (converted to mm), angles ``° deg rad``
 (converted to degrees); a ratio takes no unit — or, for a point answer, two numbers as ``x, y`` or
-``(x; y)``. Full-width digits and signs (what a Chinese input method types) are read as ASCII (NFKC). A
+``(x; y)``. Full-width digits and signs (what a Chinese input method types) are read as ASCII (NFKC), the minus
+sign U+2212 (what the sheets print) as "-". A
 decimal comma is accepted where it cannot be a separator (``21,07``). An empty cell is a blank; anything
 else is unreadable, with the reason.
 
@@ -10,8 +11,8 @@ Examples
 --------
 >>> read_cell("21,07 mm", "mm"), read_cell(" 2.1cm", "mm").value, read_cell("0.5 rad", "deg").value
 (Cell(value=21.07, text='21.07', decimals=2), 21.0, 28.64788975654116)
->>> read_cell("(12,5; 3)", "point").value
-(12.5, 3.0)
+>>> read_cell("(12,5; 3)", "point").value, read_cell("(−12,5; −3)", "point").value, read_cell("−0.27°", "deg")
+((12.5, 3.0), (-12.5, -3.0), Cell(value=-0.27, text='-0.27', decimals=2))
 >>> read_cell("", "mm") is None
 True
 >>> read_cell("=1+1", "mm")
@@ -26,6 +27,9 @@ import re
 import unicodedata
 from dataclasses import dataclass
 
+MINUS = "\u2212"
+"""The minus sign (what the sheets print, and what a student copies from them or a word processor types): read as
+"-" (NFKC leaves it alone)."""
 MAX_CELL = 200
 """Characters in a cell: a longer cell is unreadable (and is not copied whole into any output)."""
 
@@ -76,7 +80,7 @@ def read_cell(raw: str, unit: str) -> Cell | None:
     """
     if len(raw) > MAX_CELL:
         raise Unreadable(f"longer than {MAX_CELL} characters")
-    s = unicodedata.normalize("NFKC", raw).strip()
+    s = unicodedata.normalize("NFKC", raw).replace(MINUS, "-").strip()
     if not s:
         return None
     if unit == "point":

@@ -145,6 +145,7 @@ SCRIPT = r"""
   const slider = document.getElementById('phi');
   slider.max = D.frames.length - 1;
   const readout = document.getElementById('readout');
+  const num = x => String(x).replace(/^-/, '\u2212');     // a negative number as the sheets print it: minus sign
   function show(k) {
     const f = D.frames[k];
     lines.forEach((l, i) => {
@@ -162,7 +163,7 @@ SCRIPT = r"""
     }
     slider.value = k;
     svg.setAttribute('data-frame', k);
-    readout.textContent = 'φ = ' + f.phi + '°' + D.columns.map((c, i) => '   ' + c + ' = ' + Number(f.v[i].toPrecision(6))).join('');
+    readout.textContent = 'φ = ' + num(f.phi) + '°' + D.columns.map((c, i) => '   ' + c + ' = ' + num(Number(f.v[i].toPrecision(6)))).join('');
   }
   let k = 0, playing = true;
   const m = /#frame=(\d+)/.exec(location.hash);

@@ -48,6 +48,21 @@ def _f(x: float) -> str:
     return f"{x:.3f}"
 
 
+def extreme_text(v: float, big: float, digits: int = 4) -> str:
+    """An extreme's value as a panel's note prints it: the decimals of ``digits`` significant digits of ``big``
+    (the panel's largest magnitude), the same for the panel's max and min, trailing zeros kept and never ``-0``
+    (002-01's notes printed "max 92.91°" beside "min -0.2698°", each to 4 significant digits of itself).
+
+    >>> extreme_text(92.9111, 92.9111), extreme_text(-0.26981, 92.9111), extreme_text(-0.001, 92.9)
+    ('92.91', '-0.27', '0.00')
+    >>> extreme_text(662.44, 1225.2), extreme_text(0.5, 0.0)
+    ('662', '0')
+    """
+    places = max(0, digits - 1 - math.floor(math.log10(big))) if big > 0 and math.isfinite(big) else 0
+    out = f"{v:.{places}f}"
+    return out[1:] if out.startswith("-") and float(out) == 0 else out
+
+
 def unit_words(q: str, factor: int = 1) -> str:
     """The unit of ``q`` as a heading prints it (° for degrees), after the axis factor when there is one."""
     u = unit_of(q)
@@ -133,6 +148,7 @@ def _panel(dwg, texts: Texts, r: CycleResult, q: str, y0: float, x0: float, x1: 
         vals = np.degrees(th - 2 * np.pi * np.round((th[0] - np.radians(vals[0])) / (2 * np.pi)))
     finite = vals[np.isfinite(vals)]
     lo, hi = (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
+    big = max(abs(lo), abs(hi))                 # the extremes' notes print its decimals (extreme_text)
     if hi - lo < 1e-12 * max(abs(lo), abs(hi), 1e-300):
         lo, hi = lo - 1.0, hi + 1.0
     pad = 0.06 * (hi - lo)
@@ -185,7 +201,7 @@ def _panel(dwg, texts: Texts, r: CycleResult, q: str, y0: float, x0: float, x1: 
             continue
         g.add(dwg.circle((round(X(at), 3), round(Y(v), 3)), r=0.8, fill=RED))
         if base == q:
-            note = f"{s.kind} {plain(v)}{'' if unit == '°' else ' '}{unit} at φ = {at:.3f}°"
+            note = f"{s.kind} {extreme_text(v, big)}{'' if unit == '°' else ' '}{unit} at φ = {at:.3f}°"
             tx, ty, a = _note_spot(texts, note, X(at), Y(v), (LEFT, y0, LEFT + PLOT_W, y0 + PANEL), xs, ys)
             g.add(text_el(note, tx, ty, NOTE, RED, anchor=a, cls="extreme"))
 

@@ -24,6 +24,7 @@ import functools
 import re
 from itertools import accumulate, chain
 
+from .serial import minus_signs
 from .zh_words import is_ideograph, words
 
 Runs = tuple[tuple[str, bool], ...]
@@ -159,7 +160,10 @@ def text_width(text: str | Runs, size: float) -> float:
 
 def _advances(s: str, size: float, sub: bool) -> list[float]:
     """Each character's term of :func:`text_width`, from a table by (size, subscript): each glyph's advance is
-    computed once (:func:`char_em`), then looked up."""
+    computed once (:func:`char_em`), then looked up. A negative number's hyphen is measured as the minus sign
+    the sheet prints (:func:`~.serial.minus_signs`: as wide as "+")."""
+    if "-" in s:
+        s = minus_signs(s)
     table = _ADVANCES.get((size, sub))
     if table is None:
         table = _ADVANCES[size, sub] = {}

@@ -34,6 +34,7 @@ True
 """
 from __future__ import annotations
 
+import re
 from typing import Any
 from xml.etree import ElementTree
 
@@ -55,13 +56,34 @@ that sets every text draws full-width, as a Japanese "・" (001-09's title read 
 project's texts is a product (ω·AB, 2·acos, pb3·μ); the JSON and the terminal keep it."""
 
 
-def typeset(text: str) -> str:
-    """A text as a sheet prints it (:data:`PRODUCT_DOT`).
+MINUS = "\u2212"
+"""A negative number's sign as a sheet prints it: U+2212 (the minus sign, as wide as "+"), not the ASCII hyphen
+(a short dash: "-3.545 mm"). The JSON, the CSV, the terminal and answer files keep the hyphen."""
 
-    >>> typeset("S = 2·CD")
-    'S = 2⋅CD'
+_MINUS = re.compile(r"(?<!\w)-(?=\.?\d)")
+"""A hyphen that is a minus: right before a number (a digit, or a point and a digit) and not right after a
+letter, digit or underscore (a word character, CJK included). So "= -3.5", "(-5.000, 15)", "-0.21 %" and a
+text (or a subscript's following run) that begins "-229.2" get the minus; "3-4-5", "4-5-6-7", "K-2",
+"000-02_slotter", "2026-11-26" and "5.1e-16" keep their hyphen."""
+
+
+def minus_signs(text: str) -> str:
+    """``text`` with every hyphen that is a negative number's sign (:data:`_MINUS`) printed as :data:`MINUS`.
+
+    >>> minus_signs("min -0.2698° (textbook -1.505, -.5); 3-4-5 rise, K-2, 5.1e-16")
+    'min −0.2698° (textbook −1.505, −.5); 3-4-5 rise, K-2, 5.1e-16'
     """
-    return text.replace(*PRODUCT_DOT)
+    return _MINUS.sub(MINUS, text) if "-" in text else text
+
+
+def typeset(text: str) -> str:
+    """A text as a sheet prints it: a product's dot (:data:`PRODUCT_DOT`), a negative number's sign
+    (:func:`minus_signs`).
+
+    >>> typeset("S = 2·CD"), typeset("ω3 = -3.351 rad/s")
+    ('S = 2⋅CD', 'ω3 = −3.351 rad/s')
+    """
+    return minus_signs(text.replace(*PRODUCT_DOT))
 
 
 def _cdata(text: str) -> str:
@@ -195,4 +217,4 @@ def _write_lean(el: Element, out: list[str]) -> None:
     out.append(f"</{tag}>")
 
 
-__all__ = ["Element", "PRODUCT_DOT", "svg_string", "typeset"]
+__all__ = ["Element", "MINUS", "PRODUCT_DOT", "minus_signs", "svg_string", "typeset"]
