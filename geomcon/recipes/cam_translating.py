@@ -366,9 +366,6 @@ def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr:
            style="guide")                           # the stem's guide: one symbol for every cam
     if follower == "roller":
         sc.add("roller_start", circle, B0, rr, style="link", role=Role.RESULT)
-    if follower == "flat":
-        w = 0.45 * r0
-        sc.add("face_start", segment, Point(e - w, s0), Point(e + w, s0), style="link", role=Role.RESULT)
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
@@ -431,6 +428,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("alpha_max_rise", float, 0.0, visible=False)
         sc.add("alpha_max_return", float, 0.0, visible=False)
         answers.update({k: k for k in ("face_width_left", "face_width_right", "face_width", "convex")})
+        if drawing:                         # the face drawn as wide as the Results say: lL left, lR right of the axis
+            sc.add("face_start", face_segment, B0, O, inv, 0.0, Ref("face_width_left"), Ref("face_width_right"),
+                   style="link", role=Role.RESULT,
+                   caption=("The face in its lowest position, lL left and lR right of the axis: just what the "
+                            "contact sweeps", "最低位置的平底:导路左侧 lL、右侧 lR,恰为接触点所扫过的范围"))
         for i, (B, dv) in enumerate(zip(Bs, divs)):
             sc.add(f"F{i + 1}", face_segment, B, O, inv, dv, 0.3 * r0, 0.3 * r0, style="path",
                    caption=("Draw the face in each inverted position, perpendicular to the axis",
