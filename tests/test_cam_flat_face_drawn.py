@@ -86,3 +86,21 @@ def test_eccentric_face_covers_the_contact_s_run_of_oa_each_side_of_o(pid, OA):
     O = _centre(svg, "O")
     assert abs((O.real - a.real) - scale.to_paper(OA)) <= TOL
     assert abs((b.real - O.real) - scale.to_paper(OA)) <= TOL
+
+
+@pytest.mark.parametrize("pid", ["200-02_cam_flat_face", "200-17_cam_table_law"])
+def test_every_inverted_face_reaches_the_envelope_it_touches(pid):
+    """200-02's dashed faces at 3′–6′ (0.3·r0 = 9 mm each side) stopped short of the profile, whose contact lies up
+    to lL = 19.3 mm left of the axis: the envelope touched their extensions. Each drawn face now meets the drawn
+    profile (within 0.05 paper mm)."""
+    import shapely
+
+    from test_drawing_defects import figure
+
+    fig = figure(pid)
+    profile = shapely.LineString([(p.x, p.y) for p in fig.values["profile_curve"].points])
+    faces = [k for k in fig.values if re.fullmatch(r"F\d+", k)]
+    assert len(faces) >= 12
+    for k in faces:
+        seg = fig.values[k]
+        assert shapely.LineString([(seg.a.x, seg.a.y), (seg.b.x, seg.b.y)]).distance(profile) <= TOL * fig.view.mu, k

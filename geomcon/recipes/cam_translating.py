@@ -357,6 +357,24 @@ def face_segment(B: Point, O: Point, inv: float, delta_deg: float, left: float, 
     return Segment(B - x * left, B + x * right)
 
 
+def contact_offset(fam: LineFamily, prog: Program, h: float, r0: float, e: float, inv: float, delta_deg: float) -> float:
+    """Where the face touches the envelope at cam angle ``delta_deg``: its place along the turned +x from the
+    follower's axis (negative: left of the axis)."""
+    d = math.radians(delta_deg)
+    x, y, _, _ = envelope(fam, np.array([d]))
+    s = float(prog.motion(h, np.array([d]), radians=True)[0][0])
+    c, sn = math.cos(inv * d), math.sin(inv * d)
+    return float((x[0] - (c * e - sn * (r0 + s))) * c + (y[0] - (sn * e + c * (r0 + s))) * sn)
+
+
+def inverted_face(B: Point, O: Point, fam: LineFamily, prog: Program, h: float, r0: float, e: float, inv: float,
+                  delta_deg: float) -> Segment:
+    """The face in its inverted position at ``delta_deg``: 0.3·r0 each side of the axis, and out past its contact
+    by 0.1·r0 where the contact lies farther (200-02's faces 3′–6′ stopped short of the envelope touching them)."""
+    c = contact_offset(fam, prog, h, r0, e, inv, delta_deg)
+    return face_segment(B, O, inv, delta_deg, max(0.3 * r0, 0.1 * r0 - c), max(0.3 * r0, c + 0.1 * r0))
+
+
 def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr: float, r0: float, B0) -> None:
     """The follower in its lowest position: stem, guide, roller or face."""
     top = Point(e, s0 + h + 0.55 * r0 + rr)
@@ -434,9 +452,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
                    caption=("The face in its lowest position, lL left and lR right of the axis: just what the "
                             "contact sweeps", "最低位置的平底:导路左侧 lL、右侧 lR,恰为接触点所扫过的范围"))
         for i, (B, dv) in enumerate(zip(Bs, divs)):
-            sc.add(f"F{i + 1}", face_segment, B, O, inv, dv, 0.3 * r0, 0.3 * r0, style="path",
-                   caption=("Draw the face in each inverted position, perpendicular to the axis",
-                            "过 1′, 2′, … 作各反转位置的平底(垂直于导路)") if i == 0 else ("", ""))
+            sc.add(f"F{i + 1}", inverted_face, B, O, fam, prog, h, r0, e, inv, dv, style="path",
+                   caption=("Draw the face in each inverted position, perpendicular to the axis (long enough to "
+                            "reach its contact with the envelope)",
+                            "过 1′, 2′, … 作各反转位置的平底(垂直于导路,长度足以到达其与包络线的切点)")
+                   if i == 0 else ("", ""))
         add_profile_steps(sc, flat_profile, (fam, tol),
                           ("Draw the envelope of the faces: the actual profile", "作各平底直线的包络线,即凸轮的实际廓线"))
         if at:
