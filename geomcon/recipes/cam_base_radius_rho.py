@@ -140,6 +140,11 @@ def _mm(y: float) -> str:
     return f"{y:.1f}".replace("-", "−")
 
 
+FACE_MARGIN = 3.0
+"""mm added each side of the contact's excursion on a drawn face: the textbooks' face length L = l′max + l″max +
+(5~7) mm (平底长度), its middle shared between the two ends."""
+
+
 def face_reach(fam, prog: Program, h: float, r0: float, inv: float) -> tuple[float, float]:
     """(left, right): how far the contact runs along the face each side of the axis over the turn
     (cam.translating's :func:`~geomcon.recipes.cam_translating.face_extents`, a centred follower)."""
@@ -148,15 +153,19 @@ def face_reach(fam, prog: Program, h: float, r0: float, inv: float) -> tuple[flo
 
 
 def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float, reach: Ref) -> None:
-    """The flat-faced follower at δ = 0 on the designed cam: the face at s(0) above the base circle, drawn to cover
-    the contact's excursion ``reach`` (left, right of the axis), its stem and guide."""
+    """The flat-faced follower at δ = 0 on the designed cam: the face at s(0) above the base circle, covering the
+    contact's excursion ``reach`` (left, right of the axis) with :data:`FACE_MARGIN` to spare at each end (the face
+    just covering it lay on 200-18's straight piece of profile, end to end, and could not be seen), its stem and
+    guide."""
     s_start = float(prog.motion1(h, 0.0)[0])
     K = sc.add("face_contact", lambda r: Point(0.0, r + s_start), r0, visible=False)
-    sc.add("face", lambda k, lr: Segment(k + Point(-lr[0], 0.0), k + Point(lr[1], 0.0)), K, reach,
-           role=Role.RESULT, style="link",
-           caption=("The flat-faced follower at δ = 0, its face just covering the contact's excursion along it over "
-                    "the turn (max |s′| each side of the axis)",
-                    "δ = 0 时的平底从动件:平底恰覆盖一周中接触点沿平底的移动范围(导路两侧各 max |s′|)"))
+    sc.add("face", lambda k, lr: Segment(k + Point(-lr[0] - FACE_MARGIN, 0.0), k + Point(lr[1] + FACE_MARGIN, 0.0)),
+           K, reach, role=Role.RESULT, style="link",
+           caption=(f"The flat-faced follower at δ = 0: its face covers the contact's excursion along it over the turn "
+                    f"(max |s′| each side of the axis) and {FACE_MARGIN:g} mm more at each end "
+                    f"(L = l′max + l″max + (5~7) mm)",
+                    f"δ = 0 时的平底从动件:平底覆盖一周中接触点沿平底的移动范围(导路两侧各 max |s′|),两端各再加 "
+                    f"{FACE_MARGIN:g} mm(L = l′max + l″max + (5~7) mm)"))
     sc.add("stem", lambda k, r: Segment(k, k + Point(0.0, 0.9 * r)), K, r0, role=Role.RESULT, style="link")
     sc.add("guide_mark", lambda k, r: marks.bearing(k + Point(0.0, 0.65 * r), Point(0.0, 1.0)), K, r0,
            role=Role.ANNOTATION, style="guide")      # the two bearing walls of every translating follower (a wall on one side was a slider's guide)
