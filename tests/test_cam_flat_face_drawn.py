@@ -66,6 +66,11 @@ def test_200_07_oscillating_face_runs_from_the_pivot_s_foot_to_l_max():
     assert abs(near - F) <= TOL
     assert abs(abs(far - F) - scale.to_paper(ans["face_max"])) <= TOL
     assert abs(abs(far - near) - scale.to_paper(ans["face_length"])) <= TOL
+    worst = re.findall(r'id="step-(wface_[a-z]+)"', svg)    # the face in the worst positions (K1, K2): as long
+    assert worst                                             # (they were 1.12·l_max too)
+    for key in worst:
+        a, b = _segment(svg, key)
+        assert abs(abs(b - a) - scale.to_paper(ans["face_length"])) <= TOL, key
 
 
 def test_200_18_face_covers_the_contact_s_excursion_of_8_pi_each_side():

@@ -364,7 +364,7 @@ def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O:
                    f"P{n}(在 OA0′ 上,A0′P{n} = a/(1 − εψ′)),K{n} 点速度 ⊥ A0′K{n},二者夹角即 α(tan α = |f|/l)")
         tag = "" if part == "far" else ("1" if part == "rise" else "2")
         A, _, D = inv_pos.position(f"w_{part}", where, caption=cap)
-        sc.add(f"wface_{part}", face_segment, A, D, O, f, Ref("face_reach"), style="link-alt")
+        sc.add(f"wface_{part}", face_span, A, D, O, f, Ref("face_min"), Ref("face_max"), style="link-alt")  # the face L long
         K = sc.add(f"K_{part}", envelope_point, fam, where, style="joint", label=f"K{tag}")
         k = sc.add(f"k_{part}", speed_ratio, cam, where, None if part == "far" else part, visible=False)
         P = sc.add(f"P_{part}", instant_centre, A, O, k, style="point", label=f"P{tag}")
