@@ -446,11 +446,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("alpha_max_rise", float, 0.0, visible=False)
         sc.add("alpha_max_return", float, 0.0, visible=False)
         answers.update({k: k for k in ("face_width_left", "face_width_right", "face_width", "convex")})
-        if drawing:                         # the face drawn as wide as the Results say: lL left, lR right of the axis
-            sc.add("face_start", face_segment, B0, O, inv, 0.0, Ref("face_width_left"), Ref("face_width_right"),
-                   style="link", role=Role.RESULT,
-                   caption=("The face in its lowest position, lL left and lR right of the axis: just what the "
-                            "contact sweeps", "最低位置的平底:导路左侧 lL、右侧 lR,恰为接触点所扫过的范围"))
         for i, (B, dv) in enumerate(zip(Bs, divs)):
             sc.add(f"F{i + 1}", inverted_face, B, O, fam, prog, h, r0, e, inv, dv, style="path",
                    caption=("Draw the face in each inverted position, perpendicular to the axis (long enough to "
@@ -459,6 +454,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
                    if i == 0 else ("", ""))
         add_profile_steps(sc, flat_profile, (fam, tol),
                           ("Draw the envelope of the faces: the actual profile", "作各平底直线的包络线,即凸轮的实际廓线"))
+        if drawing:                         # the face drawn as wide as the Results say: lL left, lR right of the axis
+            sc.add("face_start", face_segment, B0, O, inv, 0.0, Ref("face_width_left"), Ref("face_width_right"),
+                   style="link", role=Role.RESULT,
+                   caption=("The contact's farthest reach on the envelope, lL left and lR right of the axis: the "
+                            "face in its lowest position, drawn that wide", "在包络线上量得接触点距导路的最远距离:"
+                            "左侧 lL、右侧 lR;按此宽度画出最低位置的平底"))
         if at:
             sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
             sc.add("alpha", flat_alphas_at, fam, inv, at, visible=False)
