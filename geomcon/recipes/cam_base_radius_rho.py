@@ -198,13 +198,13 @@ def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
         sc.add("dim_r0", lambda o, r: marks.Dimension(o, o + Point(-r, -r) * math.sqrt(0.5), "r0", r, 0.0), O, r0,
                role=Role.ANNOTATION, style="dim")
     fam = sc.add("faces", faces, prog, h, r0, inv, visible=False)
-    if sc.drawing:
-        _flat_follower(sc, r0, prog, h, sc.add("face_reach", face_reach, fam, prog, h, r0, inv, visible=False))
     add_profile_steps(sc, flat_profile, (fam, 1e-5 * (size + h)),
                       ("The designed profile: the envelope of the faces", "所设计凸轮廓线:平底直线族的包络线"))
     rho = sc.add("rho_profile", envelope_rho_min, fam, visible=False)
     sc.add("rho_min_profile", extremum_value, rho, role=Role.MEASUREMENT, unit="mm",
            caption=("Its smallest radius of curvature, measured on the envelope", "在包络线上量得其最小曲率半径"))
+    if sc.drawing:                          # the follower on the designed cam, its face as wide as the contact runs
+        _flat_follower(sc, r0, prog, h, sc.add("face_reach", face_reach, fam, prog, h, r0, inv, visible=False))
     names = ("r0", "r0_rho", "rho_min_profile")
     return Construction(sc, {n: n for n in names}, {"O": "O"})
 
