@@ -140,13 +140,32 @@ def _mm(y: float) -> str:
     return f"{y:.1f}".replace("-", "−")
 
 
-def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float) -> None:
-    """The flat-faced follower at δ = 0 on the designed cam: the face at s(0) above the base circle, its stem
-    and guide."""
+FACE_MARGIN = 3.0
+"""mm added each side of the contact's excursion on a drawn face: the textbooks' face length L = l′max + l″max +
+(5~7) mm (平底长度), its middle shared between the two ends."""
+
+
+def face_reach(fam, prog: Program, h: float, r0: float, inv: float) -> tuple[float, float]:
+    """(left, right): how far the contact runs along the face each side of the axis over the turn
+    (cam.translating's :func:`~geomcon.recipes.cam_translating.face_extents`, a centred follower)."""
+    from .cam_translating import face_extents
+    return face_extents(fam, prog, h, r0, 0.0, inv)
+
+
+def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float, reach: Ref) -> None:
+    """The flat-faced follower at δ = 0 on the designed cam: the face at s(0) above the base circle, covering the
+    contact's excursion ``reach`` (left, right of the axis) with :data:`FACE_MARGIN` to spare at each end (the face
+    just covering it lay on 200-18's straight piece of profile, end to end, and could not be seen), its stem and
+    guide."""
     s_start = float(prog.motion1(h, 0.0)[0])
     K = sc.add("face_contact", lambda r: Point(0.0, r + s_start), r0, visible=False)
-    sc.add("face", lambda k, r: Segment(k + Point(-0.9 * r, 0.0), k + Point(0.9 * r, 0.0)), K, r0,
-           role=Role.RESULT, style="link", caption=("The flat-faced follower at δ = 0", "δ = 0 时的平底从动件"))
+    sc.add("face", lambda k, lr: Segment(k + Point(-lr[0] - FACE_MARGIN, 0.0), k + Point(lr[1] + FACE_MARGIN, 0.0)),
+           K, reach, role=Role.RESULT, style="link",
+           caption=(f"The flat-faced follower at δ = 0: its face covers the contact's excursion along it over the turn "
+                    f"(max |s′| each side of the axis) and {FACE_MARGIN:g} mm more at each end, as the textbooks' "
+                    f"L = l′max + l″max + 5~7 mm asks",
+                    f"δ = 0 时的平底从动件:平底覆盖一周中接触点沿平底的移动范围(导路两侧各 max |s′|),两端各再加 "
+                    f"{FACE_MARGIN:g} mm,即 L = l′max + l″max + 5~7 mm"))
     sc.add("stem", lambda k, r: Segment(k, k + Point(0.0, 0.9 * r)), K, r0, role=Role.RESULT, style="link")
     sc.add("guide_mark", lambda k, r: marks.bearing(k + Point(0.0, 0.65 * r), Point(0.0, 1.0)), K, r0,
            role=Role.ANNOTATION, style="guide")      # the two bearing walls of every translating follower (a wall on one side was a slider's guide)
@@ -178,13 +197,14 @@ def construct_flat_rho(g: Mapping[str, Any], prog: Program) -> Construction:
     if sc.drawing:
         sc.add("dim_r0", lambda o, r: marks.Dimension(o, o + Point(-r, -r) * math.sqrt(0.5), "r0", r, 0.0), O, r0,
                role=Role.ANNOTATION, style="dim")
-        _flat_follower(sc, r0, prog, h)
     fam = sc.add("faces", faces, prog, h, r0, inv, visible=False)
     add_profile_steps(sc, flat_profile, (fam, 1e-5 * (size + h)),
                       ("The designed profile: the envelope of the faces", "所设计凸轮廓线:平底直线族的包络线"))
     rho = sc.add("rho_profile", envelope_rho_min, fam, visible=False)
     sc.add("rho_min_profile", extremum_value, rho, role=Role.MEASUREMENT, unit="mm",
            caption=("Its smallest radius of curvature, measured on the envelope", "在包络线上量得其最小曲率半径"))
+    if sc.drawing:                          # the follower on the designed cam, its face as wide as the contact runs
+        _flat_follower(sc, r0, prog, h, sc.add("face_reach", face_reach, fam, prog, h, r0, inv, visible=False))
     names = ("r0", "r0_rho", "rho_min_profile")
     return Construction(sc, {n: n for n in names}, {"O": "O"})
 

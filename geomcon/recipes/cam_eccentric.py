@@ -47,7 +47,7 @@ from ..cam.eccentric_speeds import arm_maxima, arm_speeds, translating_maxima, t
 from ..cam.profile import maximise
 from ..errors import GeomconError, NotAMechanism
 from ..numeric import deg360
-from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, Upper, circle, circle_circle,
+from ..geometry import (Ahead, LeftOf, Leftmost, Line, Point, RightOf, Rightmost, Segment, Upper, circle, circle_circle,
                         line_circle, line_line, point_along,
                         line_through, rotate, segment, thales_circle)
 from ..geometry.measure import angle_at, signed_angle
@@ -484,6 +484,12 @@ def _alpha_extremes(sc: Scene, O: Ref, A: Ref, pitch: Ref, B0: Ref, B1: Ref, ref
                            "delta_alpha_max_return", "alpha_max")}
 
 
+def face_over_turn(O: Point, F: Point, E: float) -> Segment:
+    """The flat face through F (⊥ the vertical guide) as long as the contact's excursion over a turn: the contact
+    lies straight above the disc's centre A, whose abscissa runs O.x ± OA (and the face reaches the axis at F)."""
+    return Segment(Point(min(O.x - E, F.x), F.y), Point(max(O.x + E, F.x), F.y))
+
+
 def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: Ref, B0: Ref, B1: Ref,
                  sense: float) -> Construction:
     """The flat face: it touches the disc where the disc's radius is parallel to the guide (above A)."""
@@ -495,8 +501,9 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
     F = sc.add("F", lambda l1, l2: line_line(l1, l2)[0], axis, sc.add("face_line", Line, K, Point(1.0, 0.0), visible=False),
                style="point", label="F", caption=("The face through K ⊥ the guide meets the axis at F",
                                                   "过 K 作平底(⊥ 导路),交导路于 F"))
-    sc.add("face_seg", lambda k, f: segment(Point(min(k.x, f.x) - 0.3 * R, f.y), Point(max(k.x, f.x) + 0.3 * R, f.y)),
-           K, F, role=Role.RESULT, style="link", caption=("", ""))
+    sc.add("face_seg", face_over_turn, O, F, g["OA"], role=Role.RESULT, style="link",
+           caption=("The face long enough for every contact of the turn: K stays straight above A, so it runs OA "
+                    "either side of O", "平底长度覆盖一周中的所有接触点:K 始终在 A 的正上方,故在 O 两侧各移动 OA"))
     sc.add("stem", lambda f: segment(f, f + UP * (0.6 * R)), F, role=Role.RESULT, style="link", caption=("", ""))
     sc.add("guide_mark", lambda f: marks.bearing(f + UP * (0.4 * R), UP), F, role=Role.ANNOTATION, style="guide")
     rise = sc.add("rise_angle", turned_against, O, B0, B1, sense, role=Role.MEASUREMENT, unit="deg",

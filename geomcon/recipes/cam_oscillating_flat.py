@@ -163,6 +163,14 @@ def face_segment(A: Point, D: Point, O: Point, f: float, reach: float) -> Segmen
     return Segment(F, F + (D - A).unit() * reach)
 
 
+def face_span(A: Point, D: Point, O: Point, f: float, lo: float, hi: float) -> Segment:
+    """The face as long as :func:`face_length` says: from min(``lo``, 0) to max(``hi``, 0) along the arm's
+    direction A→D, measured from the pivot's foot F (the drawn face's length is the answer L)."""
+    F = face_foot(A, D, O, f)
+    u = (D - A).unit()
+    return Segment(F + u * min(lo, 0.0), F + u * max(hi, 0.0))
+
+
 def same_point(p: Point) -> Point:
     """The point itself (a labelled copy of a hidden step)."""
     return p
@@ -242,9 +250,9 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
            visible=False)
     if drawing:
         reach = sc.add("face_reach", grown, Ref("face_max"), 1.12, visible=False)
-        sc.add("face0", face_segment, A0, T1, O, f, reach, style="link", role=Role.RESULT,
-               caption=("The flat face in its lowest position, long enough for every contact (l_max)",
-                        "平底的最低位置(长度按最远接触点 l_max 取)"))
+        sc.add("face0", face_span, A0, T1, O, f, Ref("face_min"), Ref("face_max"), style="link", role=Role.RESULT,
+               caption=("The flat face in its lowest position, from the pivot's foot out to the farthest contact "
+                        "l_max: the face length L", "平底的最低位置:自摆杆垂足至最远接触点 l_max,即平底长度 L"))
         if f:
             sc.add("arm0", segment, A0, sc.add("F0", face_foot, A0, T1, O, f, visible=False), style="link")
         sc.add("kA", circle, O, a, style="construction",
@@ -356,7 +364,7 @@ def _mark_flat(sc: Scene, cam: FlatArmCam, fam: Ref, inv_pos: "ArmInversion", O:
                    f"P{n}(在 OA0′ 上,A0′P{n} = a/(1 − εψ′)),K{n} 点速度 ⊥ A0′K{n},二者夹角即 α(tan α = |f|/l)")
         tag = "" if part == "far" else ("1" if part == "rise" else "2")
         A, _, D = inv_pos.position(f"w_{part}", where, caption=cap)
-        sc.add(f"wface_{part}", face_segment, A, D, O, f, Ref("face_reach"), style="link-alt")
+        sc.add(f"wface_{part}", face_span, A, D, O, f, Ref("face_min"), Ref("face_max"), style="link-alt")  # the face L long
         K = sc.add(f"K_{part}", envelope_point, fam, where, style="joint", label=f"K{tag}")
         k = sc.add(f"k_{part}", speed_ratio, cam, where, None if part == "far" else part, visible=False)
         P = sc.add(f"P_{part}", instant_centre, A, O, k, style="point", label=f"P{tag}")

@@ -357,6 +357,24 @@ def face_segment(B: Point, O: Point, inv: float, delta_deg: float, left: float, 
     return Segment(B - x * left, B + x * right)
 
 
+def contact_offset(fam: LineFamily, prog: Program, h: float, r0: float, e: float, inv: float, delta_deg: float) -> float:
+    """Where the face touches the envelope at cam angle ``delta_deg``: its place along the turned +x from the
+    follower's axis (negative: left of the axis)."""
+    d = math.radians(delta_deg)
+    x, y, _, _ = envelope(fam, np.array([d]))
+    s = float(prog.motion(h, np.array([d]), radians=True)[0][0])
+    c, sn = math.cos(inv * d), math.sin(inv * d)
+    return float((x[0] - (c * e - sn * (r0 + s))) * c + (y[0] - (sn * e + c * (r0 + s))) * sn)
+
+
+def inverted_face(B: Point, O: Point, fam: LineFamily, prog: Program, h: float, r0: float, e: float, inv: float,
+                  delta_deg: float) -> Segment:
+    """The face in its inverted position at ``delta_deg``: 0.3·r0 each side of the axis, and out past its contact
+    by 0.1·r0 where the contact lies farther (200-02's faces 3′–6′ stopped short of the envelope touching them)."""
+    c = contact_offset(fam, prog, h, r0, e, inv, delta_deg)
+    return face_segment(B, O, inv, delta_deg, max(0.3 * r0, 0.1 * r0 - c), max(0.3 * r0, c + 0.1 * r0))
+
+
 def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr: float, r0: float, B0) -> None:
     """The follower in its lowest position: stem, guide, roller or face."""
     top = Point(e, s0 + h + 0.55 * r0 + rr)
@@ -366,9 +384,6 @@ def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr:
            style="guide")                           # the stem's guide: one symbol for every cam
     if follower == "roller":
         sc.add("roller_start", circle, B0, rr, style="link", role=Role.RESULT)
-    if follower == "flat":
-        w = 0.45 * r0
-        sc.add("face_start", segment, Point(e - w, s0), Point(e + w, s0), style="link", role=Role.RESULT)
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
@@ -432,11 +447,19 @@ def construct(g: Mapping[str, Any]) -> Construction:
         sc.add("alpha_max_return", float, 0.0, visible=False)
         answers.update({k: k for k in ("face_width_left", "face_width_right", "face_width", "convex")})
         for i, (B, dv) in enumerate(zip(Bs, divs)):
-            sc.add(f"F{i + 1}", face_segment, B, O, inv, dv, 0.3 * r0, 0.3 * r0, style="path",
-                   caption=("Draw the face in each inverted position, perpendicular to the axis",
-                            "过 1′, 2′, … 作各反转位置的平底(垂直于导路)") if i == 0 else ("", ""))
+            sc.add(f"F{i + 1}", inverted_face, B, O, fam, prog, h, r0, e, inv, dv, style="path",
+                   caption=("Draw the face in each inverted position, perpendicular to the axis (long enough to "
+                            "reach its contact with the envelope)",
+                            "过 1′, 2′, … 作各反转位置的平底(垂直于导路,长度足以到达其与包络线的切点)")
+                   if i == 0 else ("", ""))
         add_profile_steps(sc, flat_profile, (fam, tol),
                           ("Draw the envelope of the faces: the actual profile", "作各平底直线的包络线,即凸轮的实际廓线"))
+        if drawing:                         # the face drawn as wide as the Results say: lL left, lR right of the axis
+            sc.add("face_start", face_segment, B0, O, inv, 0.0, Ref("face_width_left"), Ref("face_width_right"),
+                   style="link", role=Role.RESULT,
+                   caption=("The contact's farthest reach on the envelope, lL left and lR right of the axis: the "
+                            "face in its lowest position, drawn that wide", "在包络线上量得接触点距导路的最远距离:"
+                            "左侧 lL、右侧 lR;按此宽度画出最低位置的平底"))
         if at:
             sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
             sc.add("alpha", flat_alphas_at, fam, inv, at, visible=False)
