@@ -163,9 +163,9 @@ def _flat_follower(sc: Scene, r0: Ref, prog: Program, h: float, reach: Ref) -> N
            K, reach, role=Role.RESULT, style="link",
            caption=(f"The flat-faced follower at δ = 0: its face covers the contact's excursion along it over the turn "
                     f"(max |s′| each side of the axis) and {FACE_MARGIN:g} mm more at each end, as the textbooks' "
-                    f"L = l′max + l″max + 5~7 mm asks",
+                    f"L = l′ + l″ + 5~7 mm asks (l′, l″ the contact's reach each side)",
                     f"δ = 0 时的平底从动件:平底覆盖一周中接触点沿平底的移动范围(导路两侧各 max |s′|),两端各再加 "
-                    f"{FACE_MARGIN:g} mm,即 L = l′max + l″max + 5~7 mm"))
+                    f"{FACE_MARGIN:g} mm,即 L = l′ + l″ + 5~7 mm(l′、l″ 为两侧接触点的最远距离)"))
     sc.add("stem", lambda k, r: Segment(k, k + Point(0.0, 0.9 * r)), K, r0, role=Role.RESULT, style="link")
     sc.add("guide_mark", lambda k, r: marks.bearing(k + Point(0.0, 0.65 * r), Point(0.0, 1.0)), K, r0,
            role=Role.ANNOTATION, style="guide")      # the two bearing walls of every translating follower (a wall on one side was a slider's guide)
