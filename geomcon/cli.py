@@ -74,12 +74,12 @@ def _summary(sol, lang: str = "en") -> str:
             lines.append(f"    {'解' if zh else 'solution'} {i}{'：' if zh else ': '}{shown}")
     if sol.warnings:                           # their rules are compiled when imported: only for a warning to say
         from .render.labels import plain_text
-        from .render.warning_words import printed_words, warning_zh
+        from .render.warning_words import english_words, printed_words, warning_zh
         from .render.zh import zh_brackets
     for w in sol.warnings:
         words = warning_zh(w) if lang != "en" else None
         if lang != "zh" or words is None:
-            lines.append(f"  warning: {plain_text(zh_brackets(printed_words(w)))}")
+            lines.append(f"  warning: {plain_text(zh_brackets(printed_words(english_words(w))))}")
         if words is not None:
             lines.append(f"  警告：{plain_text(printed_words(words, zh=True))}")
     st = sol.stats

@@ -24,7 +24,7 @@ import functools
 import re
 from itertools import accumulate, chain
 
-from .serial import minus_signs
+from .minus import minus_signs
 from .zh_words import is_ideograph, words
 
 Runs = tuple[tuple[str, bool], ...]

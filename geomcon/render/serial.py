@@ -34,7 +34,6 @@ True
 """
 from __future__ import annotations
 
-import re
 from typing import Any
 from xml.etree import ElementTree
 
@@ -47,6 +46,8 @@ from svgwrite.shapes import Polyline
 from svgwrite.text import TSpan
 from svgwrite.utils import strlist
 
+from .minus import MINUS, minus_signs
+
 _attrib = ElementTree._escape_attrib      # type: ignore[attr-defined]  # ElementTree's own escaping
 _escape_cdata = ElementTree._escape_cdata        # type: ignore[attr-defined]
 
@@ -54,27 +55,6 @@ PRODUCT_DOT = ("·", "⋅")
 """A product's dot as a sheet prints it: U+22C5 (the dot operator), not U+00B7 (the middle dot), which the CJK font
 that sets every text draws full-width, as a Japanese "・" (001-09's title read "S = 2・CD"). Every "·" of the
 project's texts is a product (ω·AB, 2·acos, pb3·μ); the JSON and the terminal keep it."""
-
-
-MINUS = "\u2212"
-"""A negative number's sign as a sheet prints it: U+2212 (the minus sign, as wide as "+"), not the ASCII hyphen
-(a short dash: "-3.545 mm"). The JSON, the CSV, the terminal and answer files keep the hyphen."""
-
-_MINUS = re.compile(r"(?<!\w)-(?=\.?\d)")
-"""A hyphen that is a minus: right before a number (a digit, or a point and a digit) and not right after a
-letter, digit or underscore (a word character, CJK included). So "= -3.5", "(-5.000, 15)", "-0.21 %" and a
-text (or a subscript's following run) that begins "-229.2" get the minus; "3-4-5", "4-5-6-7", "K-2",
-"000-02_slotter", "2026-11-26" and "5.1e-16" keep their hyphen."""
-
-
-def minus_signs(text: str) -> str:
-    """``text`` with every hyphen that is a negative number's sign (:data:`_MINUS`) printed as :data:`MINUS`.
-
-    >>> minus_signs("min -0.2698° (textbook -1.505, -.5); 3-4-5 rise, K-2, 5.1e-16")
-    'min −0.2698° (textbook −1.505, −.5); 3-4-5 rise, K-2, 5.1e-16'
-    """
-    return _MINUS.sub(MINUS, text) if "-" in text else text
-
 
 def typeset(text: str) -> str:
     """A text as a sheet prints it: a product's dot (:data:`PRODUCT_DOT`), a negative number's sign
@@ -85,14 +65,11 @@ def typeset(text: str) -> str:
     """
     return minus_signs(text.replace(*PRODUCT_DOT))
 
-
 def _cdata(text: str) -> str:
     return _escape_cdata(typeset(text))
 
-
 _PLAIN = BaseElement.get_xml
 _KNOWN = {Drawing.get_xml, Polyline.get_xml, Path.get_xml, TSpan.get_xml, Script.get_xml}
-
 
 class Element:
     """An SVG element as :func:`svg_string` writes it: ``tag``, character data ``text`` (a text or tspan's; ""
@@ -141,18 +118,15 @@ class Element:
             xml.append(child.get_xml())
         return xml
 
-
 _NAMES: dict[str, str] = {}
 """Keyword names as attribute names (``class_`` → ``class``, ``stroke_width`` → ``stroke-width``), as
 :class:`Element` met them."""
-
 
 def svg_string(element: Any) -> str:
     """The text of ``element.tostring()`` (an svgwrite element and everything in it)."""
     out: list[str] = []
     _write(element, out)
     return "".join(out)
-
 
 def _write(el: Any, out: list[str]) -> None:
     if type(el) is Element:
@@ -192,7 +166,6 @@ def _write(el: Any, out: list[str]) -> None:
         out.append(CDATA_TPL % content)
     out.append(f"</{tag}>")
 
-
 def _write_lean(el: Element, out: list[str]) -> None:
     """:func:`_write` of an :class:`Element`: as svgwrite's element (values through ``str``, the empty left out)."""
     tag = el.elementname
@@ -215,6 +188,5 @@ def _write_lean(el: Element, out: list[str]) -> None:
         else:
             _write(child, out)
     out.append(f"</{tag}>")
-
 
 __all__ = ["Element", "MINUS", "PRODUCT_DOT", "minus_signs", "svg_string", "typeset"]
