@@ -11,8 +11,8 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
 - 000-06, 000-07: the same six knots; the detail view at 2:1 finds room only with the results moved off, and then
   the results find none (sheet 1 is full: warnings, results, the s–δ note).
 - 100-01: B2 and B′ (the crank along the frame, 1.57 mm from B2 at 1:1); the sheet's one detail window is C2's
-  (C′ 0.95 mm from C2, apart at 5:1). 100-03: C2 and C′ 0.97 mm apart at 1:1; its window at 5:1 fits only with
-  the results moved, and then they find no room (at 2.5:1 it would; the detail is chosen before the results).
+  (C′ 0.95 mm from C2, apart at 5:1). 100-03's C2 and C′, 0.97 mm apart at 1:1, are read in a window at 2.5:1:
+  the layout offers every window (5:1, 2.5:1) in every free box until the results find room beside it.
 - 001-06b, 004-02: E lies 1.35 mm from B2 and within a block's width of C1 at 1:5 (the block shortens,
   :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to run on its guide); the mechanism's detail view
   at 1:2.5 shows C1, B2 and E (with C3) apart (:func:`geomcon.render.detail.crowding`), where the pins that meet
@@ -52,7 +52,6 @@ KNOWN = {
     "004-02_best_by_K_1_5": 1,
     "004-03_crank_rocker_best_by_K": 1,
     "100-01_four_bar_three_positions": 1,
-    "100-03_four_bar_fixed_pivots_coupler_point": 1,
     "100-07_rocker_slider_three_positions": 1,
     "200-16_cam_poly_4567": 1,
 }
@@ -172,10 +171,12 @@ def test_pins_that_meet_are_read_in_the_detail_view_that_sets_them_apart():
 
 
 @pytest.mark.parametrize("stem, scale", [("001-10b_crank_rocker_design_frame_and_swing", "5:1"),
-                                         ("200-13_cam_valve_speeds", "2:1"), ("000-04_slotter_cam_psi0", "2:1")])
+                                         ("200-13_cam_valve_speeds", "2:1"), ("000-04_slotter_cam_psi0", "2:1"),
+                                         ("100-03_four_bar_fixed_pivots_coupler_point", "2.5:1")])
 def test_a_construction_point_on_a_hinge_gets_a_detail_view(stem, scale):
     # issue 11: N 0.3 mm from B2's centre (001-10b, 1:2), the division 3′ 0.75 mm from B1* (200-13, 1:2), C1…C3, B1
-    # 0.7–2.1 mm from B0 (000-04, 1:2.5): a window at the smallest standard scale that sets them a label apart
+    # 0.7–2.1 mm from B0 (000-04, 1:2.5): a window at the smallest standard scale that sets them a label apart;
+    # C′ 0.97 mm from C2 (100-03, 1:1): its window at 5:1 left the results no room, the one at 2.5:1 does
     svg = (GALLERY / f"{stem}.svg").read_text(encoding="utf-8")
     assert f"局部放大  {scale}" in svg
     assert not [k for k in knots(svg) if k.figure == "detail-"]

@@ -198,13 +198,18 @@ def _keepouts(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale) -> lis
 
 def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
                      warnings: Sequence[str], scale: Scale, upto: int | None = None,
-                     asked: list[tuple[float, float]] | None = None) -> tuple[Figure, Scale, Box] | None:
+                     asked: list[tuple[float, float]] | None = None,
+                     accept: Callable[[tuple[float, float, float, float]], bool] | None = None
+                     ) -> tuple[Figure, Scale, Box] | None:
     """The detail view of the mechanism (:func:`geomcon.render.detail.detail_figure`) in a free box of sheet 1
     clear of the figure, the results and warnings, the title block, scale bar and captions; None when every
     link is long enough on paper or no free box holds it (``asked`` collects the sizes of the boxes looked for:
-    none when every link is long enough)."""
+    none when every link is long enough). ``accept``: whether a free box ``(x, y, w, h)`` will do (the results
+    still find room beside it, :func:`_detail_first`); up to :data:`PLACES` free boxes, each clear of the
+    ones refused, are offered to it before a window's size is given up (and the next window, at another scale,
+    is tried)."""
     from .detail import detail_figure
-    from .free_area import free_box
+    from .free_area import FreeRoom
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
     keep = _keepouts(fig, sl, page, scale)
     if sl.info_here and (info or warnings):
@@ -216,9 +221,20 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
     def free(w: float, h: float) -> tuple[float, float, float, float] | None:
         if asked is not None:
             asked.append((w, h))
-        return free_box(shapes, region, keep, [(w, h)])
+        room = FreeRoom(shapes, region, keep)
+        for _ in range(PLACES if accept is not None else 1):
+            spot = room.find([(w, h)])
+            if spot is None or accept is None or accept(spot):
+                return spot
+            room = room.without((spot[0], spot[1], spot[0] + spot[2], spot[1] + spot[3]))
+        return None
 
     return detail_figure(scene, fig, scale, free, upto)
+
+
+PLACES = 6
+"""The free boxes a detail window's size is offered in (each clear of those refused, nearest a corner first)
+before it is given up: 100-03's window at 5:1 took the top right corner, where the results then found no room."""
 
 
 def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
@@ -227,10 +243,20 @@ def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
                   ) -> tuple[SheetLayout, tuple[Figure, Scale, Box], Sequence[str], Sequence[str]] | None:
     """The detail view placed before the results, when placed after them it finds no room: its box, then the
     results and warnings (the first of ``blocks``, full or brief, that fits) in the drawing's free room left
-    (001-16's solution 4: a 77.9 × 100.6 mm detail view at 1:5 did not fit under the results' column). None when
-    either finds no room: the detail, the layout, the results' lines."""
+    (001-16's solution 4: a 77.9 × 100.6 mm detail view at 1:5 did not fit under the results' column). Every
+    window the detail offers (its scales, :func:`geomcon.render.detail.point_detail`) is tried in every free box
+    of its size (:data:`PLACES`) until the results find room beside it (100-03: C2 and C′ at 5:1 in the top right
+    corner left none; at 2.5:1 elsewhere they do). None when none does: the detail, the layout, the results'
+    lines."""
     bare = replace(sl, info_here=False, pieces=())
-    det = mechanism_detail(scene, fig, bare, page, (), (), scale, upto)
+
+    def leaves_room(spot: tuple[float, float, float, float]) -> bool:   # the results fit beside the window
+        x, y, w, h = spot
+        taken = [(x - INSET, y - INSET, x + w + INSET, y + h + INSET)]
+        return any(results_in_free_room(fig, bare, page, info, warnings, scale, steps, taken) is not None
+                   for info, warnings in blocks)
+
+    det = mechanism_detail(scene, fig, bare, page, (), (), scale, upto, accept=leaves_room)
     if det is None:
         return None
     x0, y0, x1, y1 = det[2]
