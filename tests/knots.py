@@ -42,7 +42,7 @@ from geomcon.render.coincident import LABEL_HEIGHT
 from geomcon.render.labels import text_width
 from geomcon.render.style import PAPER
 
-GROUP = re.compile(r'<g class="step([^"]*)" data-step="\d+" id="((?:detail-)?step-[^"]+)">(.*?)</g>', re.S)
+GROUP = re.compile(r'<g class="step([^"]*)" data-step="\d+" id="((?:detail-(?:\d+-)?)?step-[^"]+)">(.*?)</g>', re.S)
 AXIS = ("style-tick", "style-division", "style-row-start")
 """A chart's ticks and a cam's division numbers: labelled by a fixed rule (above the tick), not placed."""
 CIRCLE = re.compile(r'<circle class="ink[^"]*" cx="([-\d.]+)" cy="([-\d.]+)" fill="((?!none")[^"]*)" r="([\d.]+)"')
@@ -67,7 +67,8 @@ MARKER = 2.0
 
 @dataclass(frozen=True)
 class Knot:
-    """One crowding found: the figure (``""`` the main one, ``"detail-"`` the detail view) and what meets what."""
+    """One crowding found: the figure (``""`` the main one, ``"detail-"`` the detail view, ``"detail-2-"`` a second
+    window) and what meets what."""
 
     figure: str
     what: str
@@ -137,7 +138,7 @@ def knots(svg: str) -> list[Knot]:
     symbols: dict[str, list[tuple[str, list[list[tuple[float, float]]]]]] = {}
     dims: dict[str, list[tuple[str, shapely.MultiLineString]]] = {}
     for classes, gid, body in GROUP.findall(svg):
-        fig = "detail-" if gid.startswith("detail-") else ""
+        fig = gid.split("step-", 1)[0]                 # "", "detail-", a second window's "detail-2-"
         key = gid.split("step-", 1)[1]
         circles = CIRCLE.findall(body)
         texts = TEXT.findall(body)
@@ -195,19 +196,22 @@ def knots(svg: str) -> list[Knot]:
                 for key, line in dims.get(fig, []):
                     if apart.distance(line) < DIM_TOUCH:
                         out.append(Knot(fig, f"{what} meets dimension {key}"))
-    return _read_in_detail(out, {p.key for p in points.get("detail-", [])})
+    return _read_in_detail(out, {f: {p.key for p in pts} for f, pts in points.items() if f})
 
 
-def _read_in_detail(found: list[Knot], shown: set[str]) -> list[Knot]:
-    """``found`` less the main figure's pins that meet where the sheet's detail view (its points ``shown``) draws
-    both points and they meet no more: the reader reads that knot in the detail, the textbook's 局部放大图."""
+def _read_in_detail(found: list[Knot], shown: dict[str, set[str]]) -> list[Knot]:
+    """``found`` less the main figure's pins that meet where one of the sheet's detail views (its figure prefix →
+    its points, ``shown``) draws both points and they meet no more: the reader reads that knot in the detail, the
+    textbook's 局部放大图 (a sheet may have one per knot: 000-04's B0 at 2:1, its A0 at 1:1)."""
     apart = set()
     for k in found:
         m = re.fullmatch(r"pin (\S+) meets pin (\S+)", k.what)
-        if k.figure == "" and m and {m.group(1), m.group(2)} <= shown:
-            both = (k.what, f"pin {m.group(2)} meets pin {m.group(1)}")
-            if not any(Knot("detail-", w) in found for w in both):
-                apart.add(k)
+        if k.figure != "" or not m:
+            continue
+        both = (k.what, f"pin {m.group(2)} meets pin {m.group(1)}")
+        if any({m.group(1), m.group(2)} <= keys and not any(Knot(f, w) in found for w in both)
+               for f, keys in shown.items()):
+            apart.add(k)
     return [k for k in found if k not in apart]
 
 

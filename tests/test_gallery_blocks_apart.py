@@ -34,10 +34,10 @@ def _block(top: ET.Element, el: ET.Element, parents: dict[ET.Element, ET.Element
     name = top.get("id") or top.get("class") or "text"
     if name.startswith("info") or name == "warnings":
         return "Warnings" if (el.get("class") or "").startswith("warning") else "Results"
-    if name == "detail":
+    if name == "detail" or re.fullmatch(r"detail-\d+", name):         # a sheet's first window, its second …
         p = el
         while p is not top:
-            if (p.get("id") or "") == "detail-figure":
+            if (p.get("id") or "") == f"{name}-figure":
                 return "detail labels"
             p = parents[p]
         return "detail caption"

@@ -31,6 +31,7 @@ from .figure import Figure, build_figure, content_box, shown_steps
 from .labels import text_width
 from .shapes import Disc
 from .style import INFO_SIZE, PAPER, resolve_style
+from .draw import ANGLE_RADIUS
 from .view import FIG_MARGIN, Box, clip_interval, grow
 
 MIN_LINK = 10.0
@@ -149,15 +150,17 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
 
 
 def point_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], scale: Scale,
-                 free: Callable[[float, float], tuple | None], upto: int | None = None
+                 free: Callable[[float, float], tuple | None], upto: int | None = None, skip: Sequence[Box] = ()
                  ) -> tuple[Figure, Scale, Box] | None:
     """A window about a hinge and a point drawn closer than their markers (:func:`.coincident.tightest`: two
     distinct points, 001-10b's N 0.3 mm from B2's centre at 1:2), at the smallest standard scale that sets them
     apart and a label's height apart (a label each; where that finds no room, just apart), holding what lies
-    within that distance of them on the sheet; None when there is none, or no room."""
+    within that distance of them on the sheet; None when there is none, or no room. ``skip``: model boxes of
+    windows the sheet has already (:func:`next_point_detail`), whose points are read there."""
     from .coincident import LABEL_HEIGHT, tightest
     markers = [(fig.values[g.key], sh.c, sh.r, sh.fill == PAPER) for g in fig.groups if g.layer == "points"
                and isinstance(fig.values.get(g.key), Point) for sh in g.shapes[:1] if isinstance(sh, Disc)]
+    markers = [m for m in markers if not any(b[0] <= m[0].x <= b[2] and b[1] <= m[0].y <= b[3] for b in skip)]
     found = tightest(markers)
     if found is None:
         return None
@@ -167,11 +170,29 @@ def point_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], scale
         big = next((s for s in STANDARD if s.factor >= scale.factor * apart / d * (1 - 1e-12)), None)
         if big is not None and big not in scales:
             scales.append(big)
-    for big in scales:
-        got = knot_detail(scene, fig, steps, (d, ends), scale, big, free, upto, reach=need * fig.view.mu)
-        if got is not None:
-            return got
+    for margin in (FIG_MARGIN, TIGHT_MARGIN):              # a narrower margin where the usual one finds no room
+        for big in scales:
+            got = knot_detail(scene, fig, steps, (d, ends), scale, big, free, upto, reach=need * fig.view.mu,
+                              margin=margin)
+            if got is not None:
+                return got
     return None
+
+
+TIGHT_MARGIN = 6.0
+"""Paper mm about a point window's content when :data:`~geomcon.render.view.FIG_MARGIN` finds it no room: a label
+and a ground symbol still fit (000-05's A0 and 1′ at 1:1, 22 mm of room below the results for a window 26 mm
+tall)."""
+
+
+def next_point_detail(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float, float], tuple | None],
+                      shown: Sequence[Figure], upto: int | None = None) -> tuple[Figure, Scale, Box] | None:
+    """One more window of the sheet: about the tightest hinge and dot (:func:`point_detail`) outside the windows
+    ``shown`` already (their model boxes), where the knots lie far apart (000-04's B0 with C1…C3 and B1, read at
+    2:1, and A0 with the division 1′ by it, 0.04 mm closer than their markers at 1:2.5, at the arm's other end);
+    None when there is no other such knot, or no room."""
+    steps = [(n, s) for n, s in shown_steps(scene, upto)[0] if s.key in fig.values]
+    return point_detail(scene, fig, steps, scale, free, upto, skip=[d.view.box for d in shown])
 
 
 def crowding(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[str], mu: float) -> set[str]:
@@ -251,12 +272,13 @@ def knot(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[st
 
 def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found: tuple[float, tuple[Point, Point]],
                 scale: Scale, big: Scale, free: Callable[[float, float], tuple | None], upto: int | None = None,
-                reach: float | None = None) -> tuple[Figure, Scale, Box] | None:
+                reach: float | None = None, margin: float = FIG_MARGIN) -> tuple[Figure, Scale, Box] | None:
     """A window about the knot of the mechanism (:func:`knot`), drawn at the smallest standard scale that sets its
     joints :data:`MIN_KNOT` apart (and its links :data:`MIN_LINK` long, ``big``, when that is larger), with every
     point, line, ground, slider and angle mark there — the textbook's 局部放大图 of a crowded spot, where the
     mechanism as a whole finds no room at that scale (``found``: :func:`knot`'s answer; ``big``: the scale, which
-    :func:`detail_figure` chose for both). None when no free box holds it."""
+    :func:`detail_figure` chose for both; ``margin``: paper mm about what it holds). None when no free box holds
+    it."""
     values = fig.values
     _, ends = found
     reach = KNOT_REACH * MIN_KNOT * fig.view.mu if reach is None else reach      # model mm about the two
@@ -264,14 +286,14 @@ def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found:
             if isinstance(p, Point) and min(math.dist((p.x, p.y), (q.x, q.y)) for q in ends) <= reach]
     xs, ys = [p.x for p in near], [p.y for p in near]
     mu = big.real / big.paper
-    x0, y0, x1, y1 = grow((min(xs), min(ys), max(xs), max(ys)), FIG_MARGIN * mu)
+    x0, y0, x1, y1 = grow((min(xs), min(ys), max(xs), max(ys)), margin * mu)
     wide = (text_width(f"Detail 局部放大  {big}   μl = {mu:g} mm/mm", INFO_SIZE) + 3.0) * mu   # its caption
     if x1 - x0 < wide:
         x0, x1 = (x0 + x1 - wide) / 2, (x0 + x1 + wide) / 2
     box = (x0, y0, x1, y1)
 
     def inside(v: Any) -> bool:
-        pts = [p for x in _items(v) for p in _anchors(x)]
+        pts = [p for x in _items(v) for p in _anchors(x, ANGLE_RADIUS * mu)]
         return bool(pts) and all(box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3] for p in pts)
 
     def keep(s: Step) -> bool:
@@ -327,15 +349,17 @@ def _meets(x: Any, box: Box) -> bool:
     return clip_interval((p.x, p.y), (d.x, d.y), box, lo, hi) is not None
 
 
-def _anchors(x: Any) -> list[Point]:
+def _anchors(x: Any, arc: float = 0.0) -> list[Point]:
     """Where a drawn value stands: a point, a symbol's or mark's point, a dimension's or guide's ends; [] for a
-    value the window does not draw (a number, a curve of many points)."""
+    value the window does not draw (a number, a curve of many points). An angle mark stands as far as its arc
+    reaches: its radius, or ``arc`` (model mm: the paper radius it is drawn at) when it has none (100-03's γmin
+    at C′ hung its arc below a window with a narrow margin)."""
     if isinstance(x, Point):
         return [x]
     if isinstance(x, (Ground, Slider)):
         return [x.at]
     if isinstance(x, AngleMark):                  # an arc of a given radius (000-04's ψ0 about A0) kept whole
-        r = x.radius or 0.0
+        r = x.radius or arc
         return [x.vertex + Point(dx * r, dy * r) for dx, dy in ((0, 0), (-1, -1), (1, 1))]
     if isinstance(x, (Guide, Dimension)):
         return [x.a, x.b]
@@ -343,4 +367,4 @@ def _anchors(x: Any) -> list[Point]:
 
 
 __all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "crowding", "detail_figure", "detail_scale", "knot",
-           "knot_detail", "mechanism_steps", "point_detail"]
+           "knot_detail", "mechanism_steps", "next_point_detail", "point_detail"]

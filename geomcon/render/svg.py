@@ -199,16 +199,17 @@ def _keepouts(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale) -> lis
 def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
                      warnings: Sequence[str], scale: Scale, upto: int | None = None,
                      asked: list[tuple[float, float]] | None = None,
-                     accept: Callable[[tuple[float, float, float, float]], bool] | None = None
-                     ) -> tuple[Figure, Scale, Box] | None:
+                     accept: Callable[[tuple[float, float, float, float]], bool] | None = None,
+                     shown: Sequence[tuple[Figure, Scale, Box]] = ()) -> tuple[Figure, Scale, Box] | None:
     """The detail view of the mechanism (:func:`geomcon.render.detail.detail_figure`) in a free box of sheet 1
     clear of the figure, the results and warnings, the title block, scale bar and captions; None when every
     link is long enough on paper or no free box holds it (``asked`` collects the sizes of the boxes looked for:
     none when every link is long enough). ``accept``: whether a free box ``(x, y, w, h)`` will do (the results
     still find room beside it, :func:`_detail_first`); up to :data:`PLACES` free boxes, each clear of the
     ones refused, are offered to it before a window's size is given up (and the next window, at another scale,
-    is tried)."""
-    from .detail import detail_figure
+    is tried). ``shown``: the windows the sheet has already; then the next one, about a knot outside them
+    (:func:`geomcon.render.detail.next_point_detail`), clear of them too."""
+    from .detail import detail_figure, next_point_detail
     from .free_area import FreeRoom
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
     keep = _keepouts(fig, sl, page, scale)
@@ -216,6 +217,7 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
         x, y = sl.info_at
         keep.append((x - INSET, y, x + sl.info_w + INSET, y + sl.info_h + INSET))
         keep += [(pc.x - INSET, pc.y, pc.x + pc.w + INSET, pc.y + pc.h + INSET) for pc in sl.pieces]
+    keep += [(b[0] - INSET, b[1] - INSET, b[2] + INSET, b[3] + INSET) for _, _, b in shown]
     shapes = [s for g in fig.groups for s in g.shapes]
     region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
     def free(w: float, h: float) -> tuple[float, float, float, float] | None:
@@ -229,7 +231,28 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
             room = room.without((spot[0], spot[1], spot[0] + spot[2], spot[1] + spot[3]))
         return None
 
+    if shown:
+        return next_point_detail(scene, fig, scale, free, [d[0] for d in shown], upto)
     return detail_figure(scene, fig, scale, free, upto)
+
+
+WINDOWS = 3
+"""At most this many detail windows on a sheet (a textbook's 局部放大图 are one or two)."""
+
+
+def more_details(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
+                 warnings: Sequence[str], scale: Scale, upto: int | None, first: tuple[Figure, Scale, Box]
+                 ) -> list[tuple[Figure, Scale, Box]]:
+    """The sheet's detail windows: ``first`` and, up to :data:`WINDOWS`, one more about each knot of a hinge and a
+    point lying outside those (:func:`geomcon.render.detail.next_point_detail`) that finds a free box clear of
+    them (000-04, 000-05, 000-08: B0's knot and A0's, at the arm's two ends)."""
+    out = [first]
+    while len(out) < WINDOWS:
+        nxt = mechanism_detail(scene, fig, sl, page, info, warnings, scale, upto, shown=out)
+        if nxt is None:
+            break
+        out.append(nxt)
+    return out
 
 
 PLACES = 6
@@ -268,19 +291,21 @@ def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
     return None
 
 
-def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, lang: str) -> Any:
-    """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``)."""
+def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, lang: str, name: str = "detail"
+                  ) -> Any:
+    """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``;
+    a second window's ``detail-2-…``: ``name``)."""
     from .protocol import _line
-    g = dwg.g(id="detail")
+    g = dwg.g(id=name)
     first = str(min(sd.number for sd in fig.groups))      # frame and caption show from the detail's first step
     rect = dwg.rect(insert=(fmt(box[0]), fmt(box[1])), size=(fmt(box[2] - box[0]), fmt(box[3] - box[1])),
-                    fill="none", stroke=INK, stroke_width="0.25", id="detail-frame")
+                    fill="none", stroke=INK, stroke_width="0.25", id=f"{name}-frame")
     head = _line(dwg, f"{text('Detail', '局部放大', lang)}  {scale}   μl = {fig.view.mu:g} mm/mm", box[0] + 1.5,
                  box[1] + 4.5, INFO_SIZE, INK, "detail-head")
     for el in (rect, head):
         el.attribs["data-step"] = first
         g.add(el)
-    g.add(_figure_group(dwg, fig, "detail-"))
+    g.add(_figure_group(dwg, fig, f"{name}-"))
     return g
 
 
@@ -665,7 +690,8 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     if marks is not None:
         dwg.add(marks)
     if detail is not None:
-        dwg.add(_detail_group(dwg, *detail, lang))
+        for i, d in enumerate(more_details(scene, fig, sl, page, shown_info, shown_warnings, scale, upto, detail)):
+            dwg.add(_detail_group(dwg, *d, lang, "detail" if i == 0 else f"detail-{i + 1}"))
     if sl.info_here and sl.pieces:
         n_info, parts = 0, sum(bool(pc.rows) for pc in sl.pieces)
         for pc in sl.pieces:
