@@ -220,10 +220,14 @@ def mechanism_detail(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
     keep += [(b[0] - INSET, b[1] - INSET, b[2] + INSET, b[3] + INSET) for _, _, b in shown]
     shapes = [s for g in fig.groups for s in g.shapes]
     region = (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET)
+    rooms: list[Any] = []                       # rasterised once, at the first size asked
+
     def free(w: float, h: float) -> tuple[float, float, float, float] | None:
         if asked is not None:
             asked.append((w, h))
-        room = FreeRoom(shapes, region, keep)
+        if not rooms:
+            rooms.append(FreeRoom(shapes, region, keep))
+        room = rooms[0]
         for _ in range(PLACES if accept is not None else 1):
             spot = room.find([(w, h)])
             if spot is None or accept is None or accept(spot):
@@ -272,12 +276,15 @@ def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
     corner left none; at 2.5:1 elsewhere they do). None when none does: the detail, the layout, the results'
     lines."""
     bare = replace(sl, info_here=False, pieces=())
+    base = _free_room(fig, bare, page, scale)
+    sizes = [_info_sizes(info, warnings) for info, warnings in blocks]
 
     def leaves_room(spot: tuple[float, float, float, float]) -> bool:   # the results fit beside the window
         x, y, w, h = spot
-        taken = [(x - INSET, y - INSET, x + w + INSET, y + h + INSET)]
-        return any(results_in_free_room(fig, bare, page, info, warnings, scale, steps, taken) is not None
-                   for info, warnings in blocks)
+        room = base.without((x - INSET, y - INSET, x + w + INSET, y + h + INSET))
+        return any(room.find(one) is not None for one in sizes) or any(      # one box each first: quicker
+            results_in_free_room(fig, bare, page, info, warnings, scale, steps, room=room) is not None
+            for info, warnings in blocks)
 
     det = mechanism_detail(scene, fig, bare, page, (), (), scale, upto, accept=leaves_room)
     if det is None:
@@ -311,19 +318,17 @@ def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, la
 
 def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Sequence[str],
                          warnings: Sequence[str], scale: Scale, steps: Sequence[int] | None = None,
-                         avoid: Sequence[Box] = ()) -> SheetLayout | None:
+                         avoid: Sequence[Box] = (), room: Any = None) -> SheetLayout | None:
     """``sl`` with the results and warnings on sheet 1, in a box of the frame that meets no drawn element of
     ``fig``, the title block, the scale bar or the step captions (:class:`geomcon.render.free_area.FreeRoom`);
     None when there is no such box. The drawing keeps its scale: 001-13 is drawn at 1:5 with its results in
     the free top-left corner, where reserving a column for them would draw it at 1:10. When no one box holds
     them, they are set in up to :data:`MAX_PIECES` boxes (:func:`_pieces`): the results, then the warnings
     (000-04), or the results continued in a second box (``steps``: the frame of each result, which orders them).
-    ``avoid``: boxes placed before them (a detail view)."""
-    from .free_area import WIDTHS, FreeRoom
-    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
-    room = FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
-                    _keepouts(fig, sl, page, scale) + list(avoid))
-    spot = room.find([(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS])
+    ``avoid``: boxes placed before them (a detail view); ``room``: the free room of ``fig`` with them, when built
+    already (:func:`_free_room`)."""
+    room = room if room is not None else _free_room(fig, sl, page, scale, avoid)
+    spot = room.find(_info_sizes(info, warnings))
     if spot is not None:
         x, y, w, h = spot
         return replace(sl, info_at=(x, y - 4.0), info_w=w, info_h=h + 4.0, info_here=True)
@@ -335,6 +340,22 @@ def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Seq
     first = pieces[0]
     return replace(sl, info_at=(first.x, first.y), info_w=first.w, info_h=first.h, info_here=True,
                    pieces=tuple(pieces))
+
+
+def _free_room(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale, avoid: Sequence[Box] = ()) -> Any:
+    """The free room of sheet 1 about ``fig`` (:class:`~geomcon.render.free_area.FreeRoom`): clear of its drawn
+    elements, the title block, the scale bar, the step captions and the boxes ``avoid``."""
+    from .free_area import FreeRoom
+    fx0, fy0, fx1, fy1 = frame_box(page.sheet)
+    return FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
+                    _keepouts(fig, sl, page, scale) + list(avoid))
+
+
+def _info_sizes(info: Sequence[str], warnings: Sequence[str]) -> list[tuple[float, float]]:
+    """The boxes one block of the results and warnings may take: each width of
+    :data:`~geomcon.render.free_area.WIDTHS` and the height its lines wrap to."""
+    from .free_area import WIDTHS
+    return [(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS]
 
 
 MAX_PIECES = 2
