@@ -11,8 +11,8 @@ The rules, each over one figure of the sheet (the main figure, or its detail vie
 - no ground symbol touches a dimension's ink away from its hinge;
 - no point's label covers a slider block.
 
-Two pins that meet in the main figure and that the sheet's detail view draws apart (both there, meeting no more)
-are read there, as a textbook's 局部放大图 is read: no knot.
+Two pins that meet in the main figure, or a slider block and a pin, that one of the sheet's detail views draws
+apart (both there, meeting no more) are read there, as a textbook's 局部放大图 is read: no knot.
 
 Points are read from their markers: a marker is one point, however many steps reach it. Points that coincide
 (within :func:`geomcon.render.coincident.same_spot`) share the largest one's marker
@@ -196,16 +196,20 @@ def knots(svg: str) -> list[Knot]:
                 for key, line in dims.get(fig, []):
                     if apart.distance(line) < DIM_TOUCH:
                         out.append(Knot(fig, f"{what} meets dimension {key}"))
-    return _read_in_detail(out, {f: {p.key for p in pts} for f, pts in points.items() if f})
+    shown = {f: {p.key for p in pts} | {w.split(" ", 1)[1] for w, _ in symbols.get(f, [])}
+             for f, pts in points.items() if f}
+    return _read_in_detail(out, shown)
 
 
 def _read_in_detail(found: list[Knot], shown: dict[str, set[str]]) -> list[Knot]:
-    """``found`` less the main figure's pins that meet where one of the sheet's detail views (its figure prefix →
-    its points, ``shown``) draws both points and they meet no more: the reader reads that knot in the detail, the
-    textbook's 局部放大图 (a sheet may have one per knot: 000-04's B0 at 2:1, its A0 at 1:1)."""
+    """``found`` less the main figure's pins that meet, or slider block and pin, where one of the sheet's detail
+    views (its figure prefix → the keys of its points and symbols, ``shown``) draws both and they meet no more: the
+    reader reads that knot in the detail, the textbook's 局部放大图 (a sheet may have one per knot: 000-04's B0 at
+    2:1, its A0 at 1:1). A block is its joint's: 004-02's E, on C1's pin at 1:5 (1.85 mm from its centre), meets
+    C1's block as it meets the pin, and both are read apart in the mechanism's detail at 1:2.5."""
     apart = set()
     for k in found:
-        m = re.fullmatch(r"pin (\S+) meets pin (\S+)", k.what)
+        m = re.fullmatch(r"(?:pin|slider) (\S+) meets pin (\S+)", k.what)
         if k.figure != "" or not m:
             continue
         both = (k.what, f"pin {m.group(2)} meets pin {m.group(1)}")

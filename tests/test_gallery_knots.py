@@ -6,20 +6,19 @@ A knot of a hinge and a point is read in a detail window (:func:`geomcon.render.
 knot where knots lie far apart (:func:`geomcon.render.svg.more_details`): 000-04…000-08 read B0's knot (C1, C2,
 C3, B1 0.70–2.09 mm from B0 at 1:2.5) at 2:1 and A0 with the division 1′ (their markers 0.04 mm too close) at
 1:1; 100-03 reads C2 and C′ (0.97 mm apart at 1:1) at 5:1; 100-01 reads C2 and C′ (0.95 mm) at 5:1 and B2 and
-B′ (the crank along the frame, 1.57 mm from B2) at 2:1. The layout tries every window offered (its scales,
+B′ (the crank along the frame, 1.57 mm from B2) at 2:1; 200-16 reads B1* and B(75°), two hinges 2.5 mm apart on
+its cam at 1:2, at 1:1, with the cam profile they lie on; 001-06b and 004-02 (K 1.2) read E, 1.35 mm from B2 and
+on C1's pin and block at 1:5 (the block shortens, :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to
+run on its guide), in the mechanism's detail at 1:2.5, which draws C1, its block, B2 and E (with C3) apart
+(:func:`geomcon.render.detail.crowding`). The layout tries every window offered (its scales,
 a narrower margin, up to :data:`geomcon.render.svg.PLACES` free boxes) before it gives one up.
 
 The figures in :data:`KNOWN` are still crowded; their count of knots may only shrink. Why they stay:
 
-- 001-06b, 004-02: E lies 1.35 mm from B2 and within a block's width of C1 at 1:5 (the block shortens,
-  :data:`geomcon.render.symbols.PIN_CLEAR`, but keeps its width to run on its guide); the mechanism's detail view
-  at 1:2.5 shows C1, B2 and E (with C3) apart (:func:`geomcon.render.detail.crowding`), where the pins that meet
-  on the sheet are read (:mod:`tests.knots`); a block meeting a pin is not.
 - 004-03: B2's label, at 1:20, is nearer A* than B2 (text placement's choice); C1 and B2, 2 mm apart, are read in
   the mechanism's detail view at 1:5 (as 001-10c's, which came clear so).
-- 200-16: B1* and B(75°), two follower positions 2.5 mm apart on the cam (two hinges: not a construction point's
-  window). 004-02 (K = 1.5, at 1:2): "M" and "C4" found no clear place as one label and print apart (text placement's choices).
-- 004-02 (K 1.2): its detail view's C1 printed on its slider block, now below the guide with a leader (a point's
+- 004-02 (K = 1.5, at 1:2): "M" and "C4" found no clear place as one label and print apart (text placement's choices).
+- (cleared) 004-02 (K 1.2): its detail view's C1 printed on its slider block, now below the guide with a leader (a point's
   label across a link, block, ground or pin takes its leader form when that is clear of them: hacross11l); 001-21's
   N and 004-01's C1 were cleared when text placement came to weigh a block as a link (hplace11f).
 - 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
@@ -41,12 +40,9 @@ GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "-3", "-4", "-5", "_motion"))
                 and not f.name.startswith(("grading_", "bench_")))
 KNOWN = {
-    "001-06b_crank_slider_redesign_K": 2,
-    "004-02_best_by_K_1_2_offset_limit": 1,
     "004-02_best_by_K_1_5": 1,
     "004-03_crank_rocker_best_by_K": 1,
     "100-07_rocker_slider_three_positions": 1,
-    "200-16_cam_poly_4567": 1,
 }
 """Sheets still crowded, with the number of knots each may have at most (it may only shrink)."""
 
@@ -228,3 +224,34 @@ def test_a_detail_windows_ink_stays_in_its_frame(sheet):
     # issue 11: 100-03's window at 5:1 (a narrow margin) kept γmin's mark at C′, whose arc (drawn 9 mm on paper)
     # hung below the frame onto the sheet: a mark is kept when its arc fits
     assert not _ink_outside(sheet.read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize("stem, keys", [("200-16_cam_poly_4567", ("P_alpha_rise", "ask_B", "profile_curve")),
+                                        ("200-13_cam_valve_speeds", ("P_alpha_rise", "pitch_curve"))])
+def test_a_window_draws_the_curve_its_points_lie_on(stem, keys):
+    # issue 11: two hinges meeting (200-16's B1* and B(75°), 2.5 mm apart at 1:2) got no window (only a hinge and
+    # a dot did); and a window left out every sampled curve, so the points it showed apart floated beside the
+    # base circle, off the cam profile they lie on (draw.clip_polyline cuts a curve to the window)
+    svg = (GALLERY / f"{stem}.svg").read_text(encoding="utf-8")
+    assert all(f'id="detail-step-{k}"' in svg for k in keys)
+    assert knots(svg) == []
+
+
+def _block_and_pin(prefix: str, px: float) -> str:
+    """A slider block 4 × 5 mm about the origin and a pin at (``px``, −2), ids prefixed by ``prefix``."""
+    return (f'<g class="step style-slider" data-step="1" id="{prefix}step-s1"><path class="ink" '
+            f'd="M2 2.5L-2 2.5L-2 -2.5L2 -2.5Z" fill="#ffffff" /></g>'
+            f'<g class="step" data-step="2" id="{prefix}step-P"><circle class="ink" cx="{px}" cy="-2" '
+            f'fill="#ffffff" r="1.25" /></g>')
+
+
+def test_a_block_meeting_a_pin_is_read_in_the_detail_that_sets_them_apart():
+    # the rule of tests/knots.py: 004-02's E on C1's pin at 1:5 meets C1's block as it meets the pin; the detail
+    # at 1:2.5 draws block and pin apart, and the knot is read there; not so when the detail lacks the block
+    main = _block_and_pin("", 2.5)
+    assert [k.what for k in knots(main)] == ["slider s1 meets pin P"]
+    assert knots(main + _block_and_pin("detail-", 6.0)) == []
+    assert [k.figure + k.what for k in knots(main + _block_and_pin("detail-", 2.5))] == \
+        ["slider s1 meets pin P", "detail-slider s1 meets pin P"]
+    no_block = _block_and_pin("detail-", 6.0).replace("detail-step-s1", "detail-step-s2")
+    assert [k.what for k in knots(main + no_block)] == ["slider s1 meets pin P"]

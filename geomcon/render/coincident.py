@@ -149,19 +149,23 @@ def tightest(markers: list[tuple[Point, XY, float, bool]]) -> tuple[float, float
     """Of the point markers — (model point, centre on paper, radius, hollow) — the hinge and the dot (a construction
     point on a hinge) drawn closer than their radii and :data:`PIN_GAP`, two distinct points (the markers of points
     that coincide are one), that need the most enlarging to stand apart: (their distance on paper, the distance
-    they need, the two model points); None when every dot keeps :data:`PIN_GAP` from the hinges. Two hinges are
-    the mechanism's knot (:func:`.detail.knot`), not this one's.
+    they need, the two model points); None when every dot keeps :data:`PIN_GAP` from the hinges. Two hinges that
+    meet so are one too (200-16's follower positions B1* and B(75°), 2.5 mm apart at 1:2): the mechanism's
+    knot of hinges (:func:`.detail.knot`) is found first, where the mechanism has one.
 
     >>> m = [(Point(0, 0), (0.0, 0.0), 1.25, True), (Point(0.7, 0), (0.7, 0.0), 0.55, False),
     ...      (Point(9, 0), (9.0, 0.0), 0.55, False)]
     >>> d, need, (p, q) = tightest(m)
     >>> round(d, 9), round(need, 9), p, q
     (0.7, 2.1, Point(x=0.0, y=0.0), Point(x=0.7, y=0.0))
+    >>> d, need, _ = tightest([(Point(0, 0), (0.0, 0.0), 1.25, True), (Point(2.5, 0), (2.5, 0.0), 1.25, True)])
+    >>> round(d, 9), round(need, 9)
+    (2.5, 2.8)
     """
     best = None
-    dots = [m for m in markers if not m[3]]
-    for p, a, r, _ in (m for m in markers if m[3]):
-        for q, b, s, _ in dots:
+    hinges = [m for m in markers if m[3]]
+    for i, (p, a, r, _) in enumerate(hinges):
+        for q, b, s, _ in [m for m in markers if not m[3]] + hinges[i + 1:]:
             need = r + s + PIN_GAP
             if abs(a[0] - b[0]) < need and abs(a[1] - b[1]) < need:
                 d = math.dist(a, b)

@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Sequence
 
-from ..geometry.primitives import Arc, Circle, Line, Point, Ray, Segment
+from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..paper import STANDARD, Scale
 from ..scene import Role, Scene, Step
 from ..scene.marks import AngleMark, Dimension, Ground, Guide, Slider
@@ -319,8 +319,9 @@ def _pin(step: Step) -> bool:
     return style.marker == "hollow" and style.name != "candidate"
 
 
-_CLIPPED = (Segment, Line, Ray, Circle, Arc)
-"""What a detail's view clips to its box (a link, a construction line, a compass arc): drawn whatever its ends."""
+_CLIPPED = (Segment, Line, Ray, Circle, Arc, Polyline)
+"""What a detail's view clips to its box (a link, a construction line, a compass arc, a sampled curve: 200-16's
+cam profile, on which B1* and B(75°) lie): drawn whatever its ends."""
 
 
 def _meets(x: Any, box: Box) -> bool:
@@ -333,6 +334,10 @@ def _meets(x: Any, box: Box) -> bool:
     >>> _meets(Circle(Point(5, 5), 20.0), box), _meets(Circle(Point(5, 5), 6.0), box)
     (False, True)
     """
+    if isinstance(x, Polyline):
+        import shapely
+        pts = [(p.x, p.y) for p in x.points + (x.points[:1] if x.closed else ())]
+        return bool(shapely.intersects(shapely.LineString(pts), shapely.box(*box)))
     if isinstance(x, (Circle, Arc)):
         cx, cy = x.center.x, x.center.y
         near = math.hypot(cx - min(max(cx, box[0]), box[2]), cy - min(max(cy, box[1]), box[3]))

@@ -341,5 +341,43 @@ def draw_arc(a: Arc, style: Style, ctx: Context) -> Drawn:
 
 
 def draw_polyline(pl: Polyline, style: Style, ctx: Context) -> Drawn:
-    """A sampled curve (pitch curve, cam profile, path) as one SVG polyline (its points are part of the view's content box)."""
-    return Drawn([Poly(tuple(ctx.view.ps(pl.points)), pen(style), closed=pl.closed)])
+    """A sampled curve (pitch curve, cam profile, path) as one SVG polyline (its points are part of the view's
+    content box); in a detail window, which shows a part of it, the pieces within the view box
+    (:func:`clip_polyline`)."""
+    q = ctx.view.ps(pl.points)
+    x0, y0, x1, y1 = ctx.view.paper_box
+    xs, ys = zip(*q)
+    if x0 <= min(xs) and max(xs) <= x1 and y0 <= min(ys) and max(ys) <= y1:
+        return Drawn([Poly(tuple(q), pen(style), closed=pl.closed)])
+    return Drawn([Poly(piece, pen(style)) for piece in clip_polyline(q + q[:1] if pl.closed else q,
+                                                                    (x0, y0, x1, y1))])
+
+
+def clip_polyline(pts: list[tuple[float, float]], box: tuple[float, float, float, float]
+                  ) -> list[tuple[tuple[float, float], ...]]:
+    """The pieces of the chain ``pts`` inside ``box`` (each segment clipped, :func:`~.view.clip_interval`).
+
+    >>> clip_polyline([(-1.0, 1.0), (1.0, 1.0), (3.0, 1.0), (3.0, 5.0), (1.0, 5.0)], (0.0, 0.0, 2.0, 2.0))
+    [((0.0, 1.0), (1.0, 1.0), (2.0, 1.0))]
+    """
+    pieces: list[tuple[tuple[float, float], ...]] = []
+    cur: list[tuple[float, float]] = []
+    for a, b in zip(pts, pts[1:]):
+        d = (b[0] - a[0], b[1] - a[1])
+        got = clip_interval(a, d, box, 0.0, 1.0)
+        if got is None:
+            continue
+        t0, t1 = got
+        p0 = a if t0 == 0.0 else (a[0] + t0 * d[0], a[1] + t0 * d[1])
+        p1 = b if t1 == 1.0 else (a[0] + t1 * d[0], a[1] + t1 * d[1])
+        if not (cur and t0 == 0.0 and cur[-1] == p0):
+            if len(cur) > 1:
+                pieces.append(tuple(cur))
+            cur = [p0]
+        cur.append(p1)
+        if t1 < 1.0:
+            pieces.append(tuple(cur))
+            cur = []
+    if len(cur) > 1:
+        pieces.append(tuple(cur))
+    return pieces
