@@ -36,7 +36,7 @@ from pathlib import Path
 import pytest
 
 from geomcon.render.style import PAPER
-from knots import CIRCLE, GROUP, MARKER, SAME_SPOT, knots
+from knots import CIRCLE, GROUP, MARKER, SAME_SPOT, TEXT, _label, knots
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "-3", "-4", "-5", "_motion"))
@@ -201,7 +201,8 @@ _WINDOW = re.compile(r'<g id="(detail(?:-\d+)?)"><rect[^>]* height="([\d.]+)" id
 
 
 def _ink_outside(svg: str) -> list[tuple[str, float, float]]:
-    """The path vertices (and arc ends) of each detail window's figure lying outside its frame (0.3 mm slack)."""
+    """The path vertices (and arc ends) and label boxes of each detail window's figure lying outside its frame
+    (0.3 mm slack)."""
     out = []
     for name, h, w, x, y, body in _WINDOW.findall(svg):
         x0, y0, x1, y1 = float(x), float(y), float(x) + float(w), float(y) + float(h)
@@ -211,6 +212,11 @@ def _ink_outside(svg: str) -> list[tuple[str, float, float]]:
                 for px, py in [nums[5:7]] if cmd == "A" else [nums[i:i + 2] for i in range(0, len(nums) - 1, 2)]:
                     if not (x0 - 0.3 <= px <= x1 + 0.3 and y0 - 0.3 <= py <= y1 + 0.3):
                         out.append((name, px, py))
+        for cls, attrs, inner in TEXT.findall(body):              # a label's box (a narrow margin: 6 mm)
+            got = _label(cls, attrs, inner)
+            if got is not None and not (x0 - 0.3 <= got[1][0] and got[1][2] <= x1 + 0.3
+                                        and y0 - 0.3 <= got[1][1] and got[1][3] <= y1 + 0.3):
+                out.append((name, got[0], got[1][0]))
     return out
 
 
