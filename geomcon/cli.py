@@ -261,7 +261,7 @@ def cmd_recipes(args: argparse.Namespace) -> int:
 
 
 def cmd_gallery(args: argparse.Namespace) -> int:
-    from .fileio import changed, write_all
+    from .fileio import write_all
     from .gallery import build_gallery, problem_files, stale_files
 
     problems, out = Path(args.problems), Path(args.out)
@@ -276,10 +276,10 @@ def cmd_gallery(args: argparse.Namespace) -> int:
                 return EXIT_CHECK_FAILED
             print(f"gallery is up to date ({len(problem_files(problems))} problems)")
             return 0
-        files = build_gallery(problems, lang=args.lang, jobs=args.jobs)
+        files = build_gallery(problems, lang=args.lang, jobs=args.jobs, against=out)    # None: already as built
     except GeomconError as exc:
         return _fail(_current_file(exc, problems), str(exc))
-    new = changed({out / name: text for name, text in files.items()})      # a file already as built stays as it is
+    new = {out / name: text for name, text in files.items() if text is not None}   # a file already as built stays
     write_all(new)
     for stale in sorted(p for p in out.rglob("*") if p.is_file() and p.relative_to(out).as_posix() not in files):
         stale.unlink()

@@ -197,7 +197,41 @@ def _longest_first(jobs: list) -> list[int]:
     return sorted(range(len(jobs)), key=lambda i: -cost(jobs[i]))
 
 
-def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None = None) -> dict[str, str]:
+def holds(path: Path, text: str) -> bool:
+    """Whether ``path`` is a regular file holding exactly ``text``'s UTF-8 bytes (as
+    :func:`geomcon.fileio.changed` decides what to write): what ``geomcon gallery --check`` calls current.
+
+    >>> import tempfile
+    >>> d = Path(tempfile.mkdtemp())
+    >>> _ = (d / "a.svg").write_bytes("θ\\n".encode())
+    >>> holds(d / "a.svg", "θ\\n"), holds(d / "a.svg", "θ"), holds(d / "b.svg", "")
+    (True, False, False)
+    """
+    try:
+        with open(path, "rb") as fh:
+            return fh.read() == text.encode("utf-8")
+    except OSError:                  # missing, a directory, unreadable: not current
+        return False
+
+
+def _held(out, gallery_dir: Path):
+    """A job's output with the text of every file ``gallery_dir`` already :func:`holds` replaced by None (its
+    dictionaries are file name → text; rows and other values are kept)."""
+    if isinstance(out, dict):
+        return {name: None if isinstance(text, str) and holds(gallery_dir / name, text) else text
+                for name, text in out.items()}
+    if isinstance(out, (tuple, list)):
+        return type(out)(_held(x, gallery_dir) for x in out)
+    return out
+
+
+def _against(fn, args: tuple, gallery_dir: Path):
+    """``fn(*args)``, its files compared with ``gallery_dir`` in the worker that made them (:func:`_held`)."""
+    return _held(fn(*args), gallery_dir)
+
+
+def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None = None,
+                  against: Path | None = None) -> dict[str, str | None]:
     """Render every problem: ``{relative file name: text}`` for the JSON, the SVG sheets (``<id>.svg`` the
     drawing, ``<id>-2.svg`` … the protocol) and the HTML player of each, plus an index; and one worksheet with
     its key (:func:`worksheet_gallery`) when the sample spec is beside ``problems/``.
@@ -205,7 +239,11 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
     The problems and the other parts are independent jobs run on ``jobs`` processes (default: every core this
     process may use; :func:`geomcon.workers.run_ordered`) and put together in one fixed order: the files are the
     same bytes for any ``jobs``. The cyclic garbage collector is paused meanwhile
-    (:func:`geomcon.workers.collector_paused`: the build is a bounded batch)."""
+    (:func:`geomcon.workers.collector_paused`: the build is a bounded batch).
+
+    With ``against`` (a gallery folder), a file that folder already :func:`holds` maps to None instead of its
+    text: each worker compares the files it made, so the texts of unchanged files (most of the gallery's 17 MB)
+    are neither sent back to this process nor compared here (``geomcon gallery`` and ``--check``)."""
     from .workers import collector_paused, run_ordered
 
     paths = problem_files(problems_dir)
@@ -216,10 +254,11 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
     with collector_paused():
         if jobs != 1:
             _preload()
-        for i, result in zip(order, run_ordered([all_jobs[i] for i in order], jobs)):
+        run = [all_jobs[i] if against is None else (_against, (*all_jobs[i], Path(against))) for i in order]
+        for i, result in zip(order, run_ordered(run, jobs)):
             done[i] = result
     ((grading, sheet), (cycle_out, cycle_rows, bench), best, laws), problems = done[:len(parts)], done[len(parts):]
-    files: dict[str, str] = {}
+    files: dict[str, str | None] = {}
     rows = []
     for out, row in problems:
         files.update(out)
@@ -268,6 +307,8 @@ def build_gallery(problems_dir: Path, lang: str | None = None, jobs: int | None 
         *cycle_rows,
         "",
     ])
+    if against is not None and holds(Path(against) / "README.md", files["README.md"]):
+        files["README.md"] = None
     return files
 
 
@@ -347,12 +388,11 @@ def best_by_k_table(H: float = 100.0) -> str:
 
 
 def stale_files(problems_dir: Path, gallery_dir: Path, lang: str | None = None, jobs: int | None = None) -> list[str]:
-    """Names of gallery files that are missing, different, or no longer produced (``jobs``: as
-    :func:`build_gallery`)."""
-    want = build_gallery(problems_dir, lang, jobs)
+    """Names of gallery files that are missing, different (not byte for byte the text built: :func:`holds`), or
+    no longer produced (``jobs``: as :func:`build_gallery`)."""
     gallery_dir = Path(gallery_dir)
-    out = [name for name, text in want.items()
-           if not (gallery_dir / name).is_file() or (gallery_dir / name).read_text(encoding="utf-8") != text]
+    want = build_gallery(problems_dir, lang, jobs, against=gallery_dir)
+    out = [name for name, text in want.items() if text is not None]
     have = ({p.relative_to(gallery_dir).as_posix() for p in gallery_dir.rglob("*") if p.is_file()}
             if gallery_dir.is_dir() else set())
     out += sorted(f"{name} (not produced any more)" for name in have - set(want))

@@ -58,3 +58,29 @@ def test_a_refused_problem_is_one_line_with_workers(tmp_path):
         assert r.returncode == 2 and r.stdout == ""
         assert r.stderr.count("\n") == 1 and r.stderr.startswith(f"error: {tmp_path / 'zz_bad.toml'}: ")
         assert not (tmp_path / "out").exists()
+
+
+def test_files_compared_in_the_workers_are_none_when_the_folder_holds_their_bytes(tmp_path):
+    """``build_gallery(against=DIR)``: each worker compares the files it made with DIR's, so an unchanged file's
+    text never travels back (None); a changed, missing or CRLF copy keeps its text, for any number of workers,
+    and ``stale_files`` names exactly those (a file is current only byte for byte, as ``geomcon gallery``
+    writes it)."""
+    from geomcon.gallery import stale_files
+    problems, out = tmp_path / "p", tmp_path / "out"
+    problems.mkdir()
+    for pid in SOME[:2]:
+        shutil.copy(ROOT / "problems" / f"{pid}.toml", problems)
+    built = build_gallery(problems, jobs=1)
+    for name, text in built.items():
+        (out / name).parent.mkdir(parents=True, exist_ok=True)
+        (out / name).write_bytes(text.encode("utf-8"))
+    (out / "001-08_crank_rocker.svg").write_bytes(built["001-08_crank_rocker.svg"].encode() + b" ")
+    (out / "001-08_crank_rocker.json").write_bytes(built["001-08_crank_rocker.json"].replace("\n", "\r\n").encode())
+    (out / "README.md").unlink()
+    moved = {"001-08_crank_rocker.svg", "001-08_crank_rocker.json", "README.md"}
+    for jobs in (1, 2):
+        marked = build_gallery(problems, jobs=jobs, against=out)
+        assert list(marked) == list(built)
+        assert {n for n, t in marked.items() if t is not None} == moved
+        assert all(marked[n] == built[n] for n in moved)
+    assert stale_files(problems, out, jobs=2) == sorted(moved)
