@@ -43,16 +43,6 @@ KNOWN_ACROSS: dict[str, str] = {
     "004-02_best_by_K_1_2_offset_limit": "C1 and C3 a hair from the guide's hatch (C1 from A's ground too): the "
                                          "knot of 001-06b at 1:5, shown clear in the detail view at 1:2.5 (its C1 "
                                          "now below the guide with a leader)",
-    "004-02_best_by_K_1_5": "the subscript of \", C4\" on B2's pin: a joined label's box is measured as the plain "
-                            "text \"B2, C4\" (2.66 mm high, 0.76 mm short): its printed subscripts hang below it. Measured "
-                            "by its parts it comes clear, but 14 figures move and 004-03's \"C2, B2\" then sits "
-                            "over A* (a rival is measured against the group's centre, not each part against its "
-                            "point): left for a session that fixes both",
-    "004-03_crank_rocker_best_by_K": "A* on A's ground and \"C2, B2\" by C2's pin: at 1:20 C1, C2, B2 and A* lie "
-                                     "within 4 mm; A*'s places within 3 mm meet its ground, the pins or the joined "
-                                     "label placed before, its leader forms cross that label; the joined label's "
-                                     "subscripts hang below its box (see 004-02 K 1.5); the detail view at 1:5 "
-                                     "shows all four clear",
     "100-04_four_bar_fixed_pivots_coupler_angles": "B1 a hair from AB1 (below its pin, between AB1 and the given "
                                                    "AB1 drawn thin): at 1:2 (one results block) B1, K3, K2 and C″ lie "
                                                    "within 10 mm among 5 links and 14 construction lines",

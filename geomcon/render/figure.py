@@ -34,7 +34,8 @@ from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals
 from .clearance import ENOUGH, NEAR as HALO
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
 from .rows import SEP, Fan, clusters, fans, row_centre, thinned
-from .labels import text_width
+from .joined import reads_back, spans
+from .labels import label_extent, text_width
 from .shapes import ArcP, Disc, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, PAPER, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import dimension_lines, draw, guide_bands, kind_of, sector
@@ -460,10 +461,16 @@ def _joined(t: TextRequest, group: Together, ctx: Context) -> TextRequest:
     """The label of a group of points: about the group, clear of every marker, in parts (one per point's step);
     its rivals are the other points a box that wide may come near."""
     anchor, gap = group.anchor()
+    parts = group.parts()
+    runs = tuple(r for _, part in parts for r in part)      # measured as printed: its subscripts hang below
+    width, height = label_extent(runs, t.size)
     mates = set(group.at)
-    rivals = tuple(q for q in _rivals(anchor, ctx, RIVAL_REACH + t.request.width) if q not in mates)
-    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals, distances=label_distances(gap))   # within reach
-    return replace(t, request=req, fallback=None, parts=group.parts())
+    rivals = tuple(q for q in _rivals(anchor, ctx, RIVAL_REACH + width) if q not in mates)
+    own = tuple((text_width(part, t.size), p) for (_, part), p in zip(parts, (p for p, n in zip(group.at, group.names)
+                                                                               if n)))
+    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals, distances=label_distances(gap),   # within reach
+                  width=width, height=height, parts=own)
+    return replace(t, runs=runs, request=req, fallback=None, parts=parts)
 
 
 def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:
@@ -616,7 +623,8 @@ def _led(t: TextRequest) -> TextRequest:
     point), or a point's label that would cover a line there: tried all round at :data:`LED_DISTANCES`, to be
     joined to its point by a leader (which says whose it is, wherever it lands)."""
     r = t.request
-    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES, rivals=r.rivals, lead=r.gap)
+    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES, rivals=r.rivals, lead=r.gap,
+                  parts=r.parts)
     return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan", parts=t.parts)
 
 
@@ -708,7 +716,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
             return
         centre, score = placer.best(t.request, g.key)
-        if t.alone and score < 0.0 and _apart(placer, t.alone, score):
+        if t.alone and score < 0.0 and _apart(placer, t.alone, _final(placer, t, g.key, score)):
             for k, a in t.alone:                # near points' own labels instead, each placed as a label is
                 put(steps_of[k][0], steps_of[k][1], a)
             return
@@ -813,14 +821,27 @@ def _foresee(placer: Placer, texts: list[tuple[str, TextRequest]]) -> None:
         texts = later
 
 
+def _final(placer: Placer, t: TextRequest, key: str, score: float) -> float:
+    """The score a point's label scoring ``score`` by its point ends with: that of its leader form (:func:`_led`)
+    where ``put`` in :func:`_place_texts` would take that (better by more than 0.3 and clear, or by more than
+    :data:`LED_GAIN`), else ``score``. A joined label and its points' own labels are weighed so (:func:`_apart`):
+    001-06b's "C4" went across the link B2C2 (-7.3) where "M, C4" with a leader finds a clear place (-3.2: its
+    leader crosses a thin line), and 200-16's B(75°) and B1* each with its leader (-1.9, -0.1) stay apart."""
+    if t.cls != "label" or t.optional or t.request.candidates or score >= 0.0:
+        return score
+    _, alt = placer.best(_led(t).request, key)
+    return alt if alt > score + (0.3 if alt >= CROWDED else LED_GAIN) else score
+
+
 def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: float) -> bool:
     """Whether the own labels of near points (:attr:`TextRequest.alone`) do better than their joined label
-    scoring ``score``: each finds a place scoring more, nearer its own point than any of the others (or anywhere,
-    when the joined label itself lies nearer another point: 004-02 at 1:5, where no place is clear)."""
+    scoring ``score`` (:func:`_final`: by its points or with its leader): each finds a place scoring more (by its
+    point or with its leader, :func:`_final`), by its point nearer its own point than any of the others (or
+    anywhere, when the joined label itself lies nearer another point: 004-02 at 1:5, where no place is clear)."""
     points = [a.request.anchor for _, a in alone]
     for k, a in alone:
         (cx, cy), s = placer.best(a.request, k)
-        if s <= score:
+        if _final(placer, a, k, s) <= score:
             return False
         if score < ENOUGH - AMBIGUOUS:
             continue
@@ -887,17 +908,15 @@ def _parts_at(t: TextRequest, cx: float, cy: float) -> list[tuple[str, Text]]:
     the label reads backwards ("K0 = D" for "D = K0"), so that the first name, shown alone until the next point
     is drawn, is the one beside the points."""
     whole = _text_at(t, cx, cy, None)
-    x = whole.box[0] + 0.15                        # the box is the text's width + 0.3
     parts = list(t.parts)
-    if cx < t.request.anchor[0] - t.request.width / 4:          # mostly left of them
+    back = reads_back(cx, t.request.anchor[0], t.request.width)       # mostly left of them
+    if back:
         parts = [parts[0]] + [(key, runs[1:] + runs[:1]) for key, runs in parts[1:]]     # the sign after the name
-        parts.reverse()
-        x = whole.box[2] - 0.15 - sum(text_width(runs, t.size) for _, runs in parts)     # ending by the points
+    widths = [text_width(runs, t.size) for _, runs in parts]
     out = []
-    for key, runs in parts:
-        w = text_width(runs, t.size)
-        out.append((key, replace(whole, x=x, runs=runs, anchor="start", box=(x, whole.box[1], x + w, whole.box[3]))))
-        x += w
+    for (key, runs), (x, x1) in sorted(zip(parts, spans(whole.box[0], whole.box[2], widths, back)),
+                                       key=lambda p: p[1][0]):
+        out.append((key, replace(whole, x=x, runs=runs, anchor="start", box=(x, whole.box[1], x1, whole.box[3]))))
     return out
 
 
