@@ -15,14 +15,14 @@ a narrower margin, up to :data:`geomcon.render.svg.PLACES` free boxes) before it
 
 The figures in :data:`KNOWN` are still crowded; their count of knots may only shrink. Why they stay:
 
-- 004-03: B2's label, at 1:20, is nearer A* than B2 (text placement's choice); C1 and B2, 2 mm apart, are read in
-  the mechanism's detail view at 1:5 (as 001-10c's, which came clear so).
 - 004-02 (K = 1.5, at 1:2): "M" and "C4" found no clear place as one label and print apart (text placement's
   choices).
 - (cleared) 004-02 (K 1.2): its detail view's C1 printed on its slider block, now below the guide with a leader
   (a point's label across a link, block, ground or pin takes its leader form when that is clear of them:
   hacross11l); 001-21's N and 004-01's C1 were cleared when text placement came to weigh a block as a link
-  (hplace11f).
+  (hplace11f). (cleared) 004-03: B2's label, at 1:20 nearer A* than B2, came clear when a joined label's parts
+  were each held nearer their own point and weighed with their leader forms ("C2, B2" above the pair with a
+  leader: hjoin11).
 - 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
   K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
   placement's choice, hplace11f's).
@@ -43,7 +43,6 @@ SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "
                 and not f.name.startswith(("grading_", "bench_")))
 KNOWN = {
     "004-02_best_by_K_1_5": 1,
-    "004-03_crank_rocker_best_by_K": 1,
     "100-07_rocker_slider_three_positions": 1,
 }
 """Sheets still crowded, with the number of knots each may have at most (it may only shrink)."""

@@ -31,31 +31,17 @@ CLEAR = 0.2
 another step's pin: nearer, the text's white halo cuts into the line (200-05's α′max under O's ground)."""
 
 KNOWN_ACROSS: dict[str, str] = {
-    "001-06b_crank_slider_redesign_K": "C3 under the guide, a hair from its hatch: at 1:5 C1, E, B2, C3, M and C4 "
-                                       "lie within 6 mm along the guide, the links above it; its places farther "
-                                       "down, with a leader, are H=101.74's (placed first) and C1's; the detail "
-                                       "view at 1:2.5 shows C3 clear",
     "001-31_eccentric_oscillating_roller": "E0, the contact point, where the roller (r 5 mm at 1:2) touches the "
                                            "disc (r 20 mm): the gap between them is 1.1 mm 3 mm from E0, narrower "
                                            "than E0's 3.4 mm label, so every place within 3 mm of E0 is on the "
                                            "profile (best, score -3.1), on the roller or α's arc, or inside ω's "
                                            "arc below; its leader form finds none better within 10 mm",
-    "004-02_best_by_K_1_2_offset_limit": "C1 and C3 a hair from the guide's hatch (C1 from A's ground too): the "
-                                         "knot of 001-06b at 1:5, shown clear in the detail view at 1:2.5 (its C1 "
-                                         "now below the guide with a leader)",
-    "004-02_best_by_K_1_5": "the subscript of \", C4\" on B2's pin: a joined label's box is measured as the plain "
-                            "text \"B2, C4\" (2.66 mm high, 0.76 mm short): its printed subscripts hang below it. Measured "
-                            "by its parts it comes clear, but 14 figures move and 004-03's \"C2, B2\" then sits "
-                            "over A* (a rival is measured against the group's centre, not each part against its "
-                            "point): left for a session that fixes both",
-    "004-03_crank_rocker_best_by_K": "A* on A's ground and \"C2, B2\" by C2's pin: at 1:20 C1, C2, B2 and A* lie "
-                                     "within 4 mm; A*'s places within 3 mm meet its ground, the pins or the joined "
-                                     "label placed before, its leader forms cross that label; the joined label's "
-                                     "subscripts hang below its box (see 004-02 K 1.5); the detail view at 1:5 "
-                                     "shows all four clear",
-    "100-04_four_bar_fixed_pivots_coupler_angles": "B1 a hair from AB1 (below its pin, between AB1 and the given "
-                                                   "AB1 drawn thin): at 1:2 (one results block) B1, K3, K2 and C″ lie "
-                                                   "within 10 mm among 5 links and 14 construction lines",
+    "004-02_best_by_K_1_2_offset_limit": "C1, the pin in its slider block 6.5 mm right of A* at 1:5, on A's "
+                                         "ground hatch and the guide's (best score -10.8, its leader form's too): "
+                                         "right of it lie E, B2 and the block, above E's and A*'s labels; below the "
+                                         "guide with a leader (-20.5) its box lies nearer B4 than C1 and the leader "
+                                         "crosses the guide. The detail view at 1:2.5 shows C1 clear, below the "
+                                         "guide with a leader",
     "200-03_cam_roller_undercut": "B1* lies 0.47 mm inside the start roller (r 10 mm at 1:2, B1* 9.53 mm from "
                                   "B0), which runs through its pin: every place within 3 mm of it meets that roller "
                                   "or the divisions' dashed rollers (best score -7.6; its leader form -7.8)",

@@ -28,6 +28,7 @@ import numpy as np
 
 from .boxgeom import box_point
 from .clearance import Boxes, turn
+from .joined import parts_rivalled
 
 if TYPE_CHECKING:
     from .placement import Request
@@ -194,9 +195,10 @@ def _around(reqs: Sequence[Request], starts: np.ndarray, cx: np.ndarray, cy: np.
 
 def rivalled(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, boxes: Boxes) -> np.ndarray:
     """Whether each box lies nearer one of its request's ``rivals`` than its anchor (the distance from a box to
-    a point as :meth:`.Boxes.to_point` measures it)."""
-    out = np.zeros(len(boxes), dtype=bool)
-    which = [i for i, r in enumerate(reqs) if r.rivals]
+    a point as :meth:`.Boxes.to_point` measures it); a label naming several points, whether one of its parts
+    lies nearer a rival than its own point (:func:`.joined.parts_rivalled`)."""
+    out = parts_rivalled(reqs, starts, boxes)
+    which = [i for i, r in enumerate(reqs) if r.rivals and not r.parts]
     if not which:
         return out
     npts = np.array([1 + len(reqs[i].rivals) for i in which])                # the anchor, then the rivals

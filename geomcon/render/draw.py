@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
-from .labels import Runs, label_runs, text_width
+from .labels import Runs, label_extent, label_runs, text_width
 from .placement import Request, half_extent, label_distances
 from .shapes import Disc, ArcP, Pen, Poly, Shape
 from .style import LABEL_SIZE, PAPER, Style
@@ -154,10 +154,8 @@ def draw_point(p: Point, style: Style, ctx: Context, label: str | None) -> Drawn
     out = Drawn(shapes)
     if label:
         runs = label_runs(label)
-        sub = any(s for _, s in runs)
         size = style.label_size or LABEL_SIZE
-        h = size * (0.95 if sub else 0.74)
-        w, gap = text_width(runs, size) + 0.3, style.radius + 0.4
+        (w, h), gap = label_extent(runs, size), style.radius + 0.4
         if style.label_dir is not None:     # a fixed place (axis ticks): there, or a line further out
             u = (math.cos(style.label_dir), math.sin(style.label_dir))
             d = gap + half_extent(u[0], u[1], w, h)

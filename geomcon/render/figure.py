@@ -32,9 +32,11 @@ from .coincident import NEAR as NEAR_NAMES, Together, dots_above, groups_of, sam
 from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals, compass_half, compass_steps,
                    draw_compass)
 from .clearance import ENOUGH, NEAR as HALO
+from .candidates import LEADER_MAX
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
 from .rows import SEP, Fan, clusters, fans, row_centre, thinned
-from .labels import text_width
+from .joined import reads_back, spans
+from .labels import label_extent, text_width
 from .shapes import ArcP, Disc, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, PAPER, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
 from .symbols import dimension_lines, draw, guide_bands, kind_of, sector
@@ -460,10 +462,16 @@ def _joined(t: TextRequest, group: Together, ctx: Context) -> TextRequest:
     """The label of a group of points: about the group, clear of every marker, in parts (one per point's step);
     its rivals are the other points a box that wide may come near."""
     anchor, gap = group.anchor()
+    parts = group.parts()
+    runs = tuple(r for _, part in parts for r in part)      # measured as printed: its subscripts hang below
+    width, height = label_extent(runs, t.size)
     mates = set(group.at)
-    rivals = tuple(q for q in _rivals(anchor, ctx, RIVAL_REACH + t.request.width) if q not in mates)
-    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals, distances=label_distances(gap))   # within reach
-    return replace(t, request=req, fallback=None, parts=group.parts())
+    rivals = tuple(q for q in _rivals(anchor, ctx, RIVAL_REACH + width) if q not in mates)
+    own = tuple((text_width(part, t.size), p) for (_, part), p in zip(parts, (p for p, n in zip(group.at, group.names)
+                                                                               if n)))
+    req = replace(t.request, anchor=anchor, gap=gap, rivals=rivals, distances=label_distances(gap),   # within reach
+                  width=width, height=height, parts=own)
+    return replace(t, runs=runs, request=req, fallback=None, parts=parts)
 
 
 def _centre(view: View, pts: tuple[Point, ...]) -> tuple[float, float]:
@@ -616,7 +624,8 @@ def _led(t: TextRequest) -> TextRequest:
     point), or a point's label that would cover a line there: tried all round at :data:`LED_DISTANCES`, to be
     joined to its point by a leader (which says whose it is, wherever it lands)."""
     r = t.request
-    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES, rivals=r.rivals, lead=r.gap)
+    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, distances=LED_DISTANCES, rivals=r.rivals, lead=r.gap,
+                  parts=r.parts)
     return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan", parts=t.parts)
 
 
@@ -685,6 +694,16 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             return any(owners[i] != key for i in tree.query(box, predicate="intersects").tolist())
         found = tree.query(box, predicate="dwithin", distance=near).tolist()
         return any(owners[i] != key and (halo[i] or tree.geometries[i].intersects(box)) for i in found)
+    def away(box: Any, key: str) -> tuple[float, float]:
+        """The unit direction from the nearest link, ground, block or pin (not of step ``key``) to ``box``."""
+        meets_hard(box, key)                    # the tree, built
+        tree, owners, _ = hard[0]
+        near = [i for i in tree.query(box, predicate="dwithin", distance=HALO).tolist() if owners[i] != key]
+        i = min(near, key=lambda j: tree.geometries[j].distance(box))
+        p, q = shapely.ops.nearest_points(tree.geometries[i], box)
+        dx, dy = q.x - p.x, q.y - p.y
+        n = math.hypot(dx, dy)
+        return (dx / n, dy / n) if n > 1e-12 else (0.0, 1.0)
     _thin(groups, pending)                      # before measuring: it leaves out a crowded axis's numbers
     _outward(groups, pending)                   # before measuring: it replaces a row's requests
     _leading(pending)
@@ -708,7 +727,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             g.shapes.append(_text_at(t, *t.request.candidates[0], colour))
             return
         centre, score = placer.best(t.request, g.key)
-        if t.alone and score < 0.0 and _apart(placer, t.alone, score):
+        seen: dict[Any, tuple[tuple[float, float], float]] = {}     # its leader form's best, once
+        if t.alone and score < 0.0 and _apart(placer, t, g.key, score, seen):
             for k, a in t.alone:                # near points' own labels instead, each placed as a label is
                 put(steps_of[k][0], steps_of[k][1], a)
             return
@@ -724,11 +744,19 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                 t, centre, score = t.fallback, alt, alt_score
         if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
             led = _led(t)                       # a point's label that covers a line: farther, with a leader
-            alt, alt_score = placer.best(led.request, g.key)
+            alt, alt_score = seen.get((led.request, g.key)) or placer.best(led.request, g.key)
             if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN) or (
                     alt_score > score and meets_hard(t.request.box(*centre), g.key, 0.0)
                     and not meets_hard(led.request.box(*alt), g.key)):
                 t, centre, score = led, alt, alt_score
+        if (score < 0.0 and t.cls.startswith("label") and not t.optional and not t.request.candidates
+                and meets_hard(t.request.box(*centre), g.key) and not meets_hard(t.request.box(*centre), g.key, 0.0)):
+            near = _nudged(t.request, centre, away(t.request.box(*centre), g.key))     # a hair from (not on) a
+            # link, ground, block or pin: the slot beside it
+            if near is not None:
+                alt, alt_score = placer.best(near, g.key)
+                if alt_score > score + 1e-9 and not meets_hard(near.box(*alt), g.key):
+                    centre, score = alt, alt_score
         if (wide is not None and score < 0.0 and not t.optional and _reaches_out(t.request, view.paper_box, room)
                 and meets_hard(t.request.box(*centre), g.key)):
             alt, alt_score = wide.best(t.request, g.key)
@@ -764,6 +792,33 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     for x in every:
         if not (x[2].cls == "mark-text" and x[2].request.candidates):
             put(*x)
+
+
+NUDGES = (0.1, 0.2, 0.3, 0.4, 0.5)
+"""Paper mm a point's label found a hair from a link, a ground, a block or a pin is tried moved, each way and
+diagonally (:func:`_nudged`): its places lie a millimetre apart, and the free slot may be narrower."""
+
+
+def _nudged(r: Request, centre: tuple[float, float], away: tuple[float, float]) -> Request | None:
+    """``r`` with the places about ``centre`` (the best of its own, a hair from a link, ground, block or pin):
+    moved by :data:`NUDGES` along ``away`` (the unit direction from the nearest of them) and 45° either side,
+    nearest first, those that keep it as near its point as its own places may (a label within
+    :data:`.placement.LABEL_REACH`, a leader's text within its longest leader) and clear of its marker. 001-06b's
+    C3, under the guide with a leader, lay 0.18 mm from the hatch's foot and 0.28 mm from H=101.74's text: 0.1 mm
+    lower and aside it is clear of both. None when no such place is left."""
+    ux, uy = away
+    s = math.sqrt(0.5)
+    turns = ((ux, uy), (s * (ux - uy), s * (uy + ux)), (s * (ux + uy), s * (uy - ux)))
+    d = np.repeat(np.array(NUDGES), len(turns))
+    tx = np.tile([u[0] for u in turns], len(NUDGES))
+    ty = np.tile([u[1] for u in turns], len(NUDGES))
+    cx, cy = centre[0] + tx * d, centre[1] + ty * d
+    hw, hh = r.width / 2, r.height / 2
+    k = box_point(cx - hw, cy - hh, cx + hw, cy + hh, r.anchor[0], r.anchor[1])
+    hi = LEADER_MAX if r.lead < math.inf else r.gap + max(r.distances) + 1e-9
+    keep = (k >= r.gap - 1e-9) & (k <= hi)
+    spots = tuple(zip(cx[keep].tolist(), cy[keep].tolist()))
+    return replace(r, candidates=spots) if spots else None
 
 
 def _reaches_out(r: Request, inner: Box, outer: Box) -> bool:
@@ -813,14 +868,48 @@ def _foresee(placer: Placer, texts: list[tuple[str, TextRequest]]) -> None:
         texts = later
 
 
-def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: float) -> bool:
-    """Whether the own labels of near points (:attr:`TextRequest.alone`) do better than their joined label
-    scoring ``score``: each finds a place scoring more, nearer its own point than any of the others (or anywhere,
-    when the joined label itself lies nearer another point: 004-02 at 1:5, where no place is clear)."""
-    points = [a.request.anchor for _, a in alone]
-    for k, a in alone:
-        (cx, cy), s = placer.best(a.request, k)
-        if s <= score:
+def _final(placer: Placer, t: TextRequest, key: str, score: float,
+           seen: dict[Any, tuple[tuple[float, float], float]] | None = None) -> float:
+    """The score a point's label scoring ``score`` by its point ends with: that of its leader form (:func:`_led`)
+    where ``put`` in :func:`_place_texts` would take that (better by more than 0.3 and clear, or by more than
+    :data:`LED_GAIN`), else ``score``. A joined label and its points' own labels are weighed so (:func:`_apart`):
+    001-06b's "C4" went across the link B2C2 (-7.3) where "M, C4" with a leader finds a clear place (-3.2: its
+    leader crosses a thin line), and 200-16's B(75°) and B1* each with its leader (-1.9, -0.1) stay apart. The
+    leader form's best goes into ``seen`` (keyed by request and step), for ``put`` to take it from there."""
+    if not _leads(t) or score >= 0.0:
+        return score
+    led = _led(t).request
+    if placer.bound(led, key) <= score + 0.3:      # it cannot gain the least it must (what is placed only lowers)
+        return score
+    found = placer.best(led, key)
+    if seen is not None:                            # asked again by ``put`` before anything more is placed
+        seen[led, key] = found
+    alt = found[1]
+    return alt if alt > score + (0.3 if alt >= CROWDED else LED_GAIN) else score
+
+
+def _apart(placer: Placer, t: TextRequest, key: str, score: float,
+           seen: dict[Any, tuple[tuple[float, float], float]]) -> bool:
+    """Whether the own labels of near points (:attr:`TextRequest.alone`) do better than their joined label ``t``
+    (of step ``key``), scoring ``score`` by its points and in the end :func:`_final`'s (with its leader where it
+    takes that; asked only when it may matter): each finds a place scoring more (by its point or with its
+    leader, :func:`_final`), by its point nearer its own point than any of the others (or anywhere, when the
+    joined label itself lies nearer another point: 004-02 at 1:5, where no place is clear)."""
+    points = [a.request.anchor for _, a in t.alone]
+    found = []
+    for k, a in t.alone:
+        centre, s = placer.best(a.request, k)
+        tried = s <= score                      # its leader form asked for
+        last = _final(placer, a, k, s) if tried else s
+        if last <= score:
+            return False
+        found.append((k, a, centre, s, last, tried))
+    top = max(score, placer.bound(_led(t).request, key)) if _leads(t) else score     # the most it may end with
+    if top < min(f[4] for f in found) and top < ENOUGH - AMBIGUOUS:
+        return True                             # each beats it, whatever its leader form does
+    score = _final(placer, t, key, score, seen)
+    for k, a, (cx, cy), s, last, tried in found:
+        if last <= score and (tried or _final(placer, a, k, s) <= score):
             return False
         if score < ENOUGH - AMBIGUOUS:
             continue
@@ -829,6 +918,11 @@ def _apart(placer: Placer, alone: tuple[tuple[str, TextRequest], ...], score: fl
         if any(b.distance(shapely.Point(p)) <= own + 1e-9 for p in points if p != a.request.anchor):
             return False
     return True
+
+
+def _leads(t: TextRequest) -> bool:
+    """Whether ``t`` is a point's label that may take its leader form (:func:`_led`) in ``put``."""
+    return t.cls == "label" and not t.optional and not t.request.candidates
 
 
 def _weight(g: StepDrawing, sh: Shape) -> float:
@@ -887,17 +981,15 @@ def _parts_at(t: TextRequest, cx: float, cy: float) -> list[tuple[str, Text]]:
     the label reads backwards ("K0 = D" for "D = K0"), so that the first name, shown alone until the next point
     is drawn, is the one beside the points."""
     whole = _text_at(t, cx, cy, None)
-    x = whole.box[0] + 0.15                        # the box is the text's width + 0.3
     parts = list(t.parts)
-    if cx < t.request.anchor[0] - t.request.width / 4:          # mostly left of them
+    back = reads_back(cx, t.request.anchor[0], t.request.width)       # mostly left of them
+    if back:
         parts = [parts[0]] + [(key, runs[1:] + runs[:1]) for key, runs in parts[1:]]     # the sign after the name
-        parts.reverse()
-        x = whole.box[2] - 0.15 - sum(text_width(runs, t.size) for _, runs in parts)     # ending by the points
+    widths = [text_width(runs, t.size) for _, runs in parts]
     out = []
-    for key, runs in parts:
-        w = text_width(runs, t.size)
-        out.append((key, replace(whole, x=x, runs=runs, anchor="start", box=(x, whole.box[1], x + w, whole.box[3]))))
-        x += w
+    for (key, runs), (x, x1) in sorted(zip(parts, spans(whole.box[0], whole.box[2], widths, back)),
+                                       key=lambda p: p[1][0]):
+        out.append((key, replace(whole, x=x, runs=runs, anchor="start", box=(x, whole.box[1], x1, whole.box[3]))))
     return out
 
 

@@ -117,6 +117,10 @@ class Request:
     starts : tuple of (float, float)
         Where a leader may start (points along a mark's arc; the anchor when empty): the one nearest the box;
         ``lead`` is the distance from it.
+    parts : tuple of (float, (float, float))
+        A label naming several points (:mod:`.joined`): each printed part's width and its own point, in the
+        order of its names. The box is then rivalled when a part lies nearer one of ``rivals`` than its own
+        point (not the whole box nearer a rival than the anchor).
     """
 
     anchor: XY
@@ -131,6 +135,7 @@ class Request:
     rivals: tuple[XY, ...] = ()
     lead: float = math.inf
     starts: tuple[XY, ...] = ()
+    parts: tuple[tuple[float, XY], ...] = ()
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
