@@ -462,6 +462,35 @@ class Scene:
             return got
         return max((at(k) for k in keys), default=0) or default
 
+    def drawn_from(self, key: str) -> int | None:
+        """The first frame (1-based) that draws a step computed from the value ``key`` (through values that are
+        not drawn); None for a drawn step, or a value no drawn step is computed from. A result computed by a
+        value the drawing constructs later shows with it, not before (200-07's α_max at step 2, its worst
+        position drawn at step 17; 001-24's s at δ = 100° at step 1, laid off at step 15)."""
+        rec = self._rec
+        got = self.__dict__.get("_users")
+        if got is None or got[0] is not rec or got[1] != len(rec):
+            users: dict[str, list[str]] = {}
+            for k, r in rec.items():
+                for d in r[7]:
+                    users.setdefault(d, []).append(k)
+            frame = {s.key: i for i, group in enumerate(self.frames(), 1) for s in group}
+            got = self._users = (rec, len(rec), users, frame)        # remembered as the frames are
+        users, frame = got[2], got[3]
+        if key in frame:
+            return None
+        seen, todo, found = {key}, [key], []
+        while todo:
+            for u in users.get(todo.pop(), ()):
+                if u in seen:
+                    continue
+                seen.add(u)
+                if u in frame:
+                    found.append(frame[u])
+                else:
+                    todo.append(u)
+        return min(found, default=None)
+
     def number(self, key: str) -> int:
         """1-based protocol number of a visible step (the number of the frame it is drawn in)."""
         for i, group in enumerate(self.frames(), 1):
