@@ -752,12 +752,20 @@ class Solution:
     def info_steps(self) -> list[int]:
         """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
         several candidate solutions, the last of its candidates' steps: a result never shows early; an answer
-        no drawn step produces — computed from the givens alone — shows with the last frame)."""
+        no drawn step produces — computed from the givens alone — shows with the last frame; an answer the
+        drawing constructs later than its inputs are known shows with the first step drawn from it,
+        :meth:`~geomcon.scene.Scene.drawn_from`: 200-07 showed α_max at step 2, its worst position at 17)."""
         sc = self.drawing_scene
         last = len(sc.frames())
         maps = self.construction.solutions or (self.construction.answers,)
-        return [sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
-                for q in self.recipe.answers if q.name in self.answers]
+        drawn = self.construction.answers
+        out = []
+        for q in self.recipe.answers:
+            if q.name in self.answers:
+                k = sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
+                later = sc.drawn_from(drawn[q.name]) if q.name in drawn else None
+                out.append(k if later is None else max(k, later))
+        return out
 
     def title(self) -> str:
         """Title for drawings (a drawing of another valid solution says which: "— solution 2 of 4")."""

@@ -23,9 +23,8 @@ The figures in :data:`KNOWN` are still crowded; their count of knots may only sh
   (hplace11f). (cleared) 004-03: B2's label, at 1:20 nearer A* than B2, came clear when a joined label's parts
   were each held nearer their own point and weighed with their leader forms ("C2, B2" above the pair with a
   leader: hjoin11).
-- 100-07: drawn at 1:2 since its results go whole into a column (hsheet11g; at 1:1 they were split in two boxes),
-  K1, K2, K3 lie 3.5 mm apart on the three rocker positions: K2's label, above its dot, is nearer K3's (text
-  placement's choice, hplace11f's).
+- (cleared) 100-07: came clear at 1:1 (hsheet11k: the drawing set aside, its results in brief beside it), where
+  at 1:2 K1, K2, K3 lay 3.5 mm apart and K2's label, above its dot, was nearer K3's.
 """
 from __future__ import annotations
 
@@ -43,7 +42,6 @@ SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "
                 and not f.name.startswith(("grading_", "bench_")))
 KNOWN = {
     "004-02_best_by_K_1_5": 1,
-    "100-07_rocker_slider_three_positions": 1,
 }
 """Sheets still crowded, with the number of knots each may have at most (it may only shrink)."""
 

@@ -17,7 +17,7 @@ from geomcon.paper import Scale
 from geomcon.problems import load_problem
 from geomcon.render.free_area import CLEAR
 from geomcon.render.shapes import obstacle
-from geomcon.render.svg import (SPLIT_KEEP, _boxes, _layouts, _not_diagram, place_figure, results_in_free_room,
+from geomcon.render.svg import (_boxes, _layouts, _not_diagram, aside_views, place_figure, results_in_free_room,
                                  sheet_one, split)
 from geomcon.render.warning_words import warning_lines
 from geomcon.solve import solve
@@ -28,8 +28,8 @@ NO_ROOM: dict[str, str] = {}
 """Drawings whose free room holds no box for their results, not even for their brief lines (one per result, the
 doubtful printed answers in one warning: :func:`geomcon.render.results.brief_warnings`): they would keep a sheet of
 their own. Empty since 000-03, 000-05, 000-06, 000-07 and 100-07 print their results in brief on sheet 1 (their
-full lines 206, 106 + 8 warnings, 356, 338 and 60 mm tall found no box there; 100-07's now go whole into a band at
-1:2, and 200-15's go in brief); the list may only stay empty."""
+full lines 206, 106 + 8 warnings, 356, 338 and 60 mm tall found no box there; 100-07's went whole into a band at
+1:2, now in brief at 1:1; 200-15's went in brief, now whole beside it set aside); the list may only stay empty."""
 FREE_ROOM = ["000-04_slotter_cam_psi0", "001-01_crank_rocker_change_point", "001-04_guide_bar_offset",
              "001-06_crank_slider", "001-07_crank_slider_strokes", "001-13_radar_antenna_K1",
              "001-14_crank_rocker_K1_frame_angles", "001-15_crank_rocker_frame_and_position",
@@ -38,16 +38,23 @@ FREE_ROOM = ["000-04_slotter_cam_psi0", "001-01_crank_rocker_change_point", "001
              "200-20_oscillating_base_radius_rho", "400-05_crank_slider_instant_centres"]
 """The drawings that kept their results off sheet 1 before (hlook11 item A1) and now set them in free room at
 the scale they get with the frame to themselves (000-04: results and warnings apart)."""
-RESERVED = {"100-04_four_bar_fixed_pivots_coupler_angles": "1:2", "100-07_rocker_slider_three_positions": "1:2",
-            "300-01_four_bar_double_rocker_pressure_angle": "1:1"}
-"""Drawings whose results no one box of the free room holds (100-04 and 300-01 had them in three boxes, 300-01's
-third inside the four-bar; 100-07 in two): one block in room reserved for it (a column at the right, a band above
-the title block), the drawing at that layout's scale: 100-04 and 100-07 at 1:1 → 1:2 (SPLIT_KEEP: at least half);
-300-01 at 2.5:1 → 1:1, the last resort, since at 2.5:1 not even two boxes outside the figure hold them, nor one box
-their brief form."""
-BRIEF = {"200-15_cam_handbook_laws": "1:2"}
-"""Drawings whose results no one box holds at their scale, nor reserved room at half of it or more, nor two boxes
-outside the figure in reading order: their brief lines in one box of the free room at that scale,
+ASIDE = {"100-04_four_bar_fixed_pivots_coupler_angles": "1:1", "200-14_oscillating_arm_speeds": "1:2",
+         "200-15_cam_handbook_laws": "1:2"}
+"""Drawings whose results no one box of the free room holds with the drawing centred in its area: the drawing set
+against a side of it (:func:`geomcon.render.svg.aside_views`), one box holds them whole at the scale the drawing
+gets with the frame to itself. 100-04 was drawn at 1:2 with its results in a column reserved for them, half the
+sheet empty (at 1:1 centred it left 41 mm either side); 200-14 split them in two boxes; 200-15 printed them in
+brief, in full on a sheet of their own."""
+RESERVED = {"300-01_four_bar_double_rocker_pressure_angle": "1:1"}
+"""Drawings whose results no box of the free room holds at their scale, whole, in two boxes or in brief, the drawing
+centred or set aside: one block in room reserved for it (a column at the right, a band above the title block), the
+drawing at that layout's scale, the last resort: 300-01 at 2.5:1 → 1:1 (it had them in three boxes, the third
+inside the four-bar). 100-04 and 100-07 were here at 1:1 → 1:2 while a drawing kept half its scale to keep one
+block: the sheet half empty, 100-07's three rods EF one thick line; they keep 1:1 now (:data:`ASIDE`, :data:`BRIEF`)."""
+BRIEF = {"000-03_slotter_velocity_polygons": "1:5", "100-07_rocker_slider_three_positions": "1:1"}
+"""Drawings whose results no one box holds at their scale, centred or set aside, nor two boxes outside the figure
+in reading order: their brief lines in one box of the free room at that scale (100-07 set aside, at 1:1 where it was
+drawn at 1:2; 000-03 whole instead of split in two boxes),
 in full on the next sheet (200-15 set "Results" touching its s–δ chart's caption row)."""
 
 
@@ -101,7 +108,7 @@ def _sheet_one(pid: str):
     return sol, page, info, warnings, one, free_scale
 
 
-@pytest.mark.parametrize("pid", FREE_ROOM + sorted(BRIEF))
+@pytest.mark.parametrize("pid", FREE_ROOM + sorted(ASIDE) + sorted(BRIEF))
 def test_results_in_free_room_meet_no_drawn_element_and_cost_no_scale(pid):
     """The Results (and Warnings) box, grown by the clearance, meets none of the figure's strokes, marks,
     symbols or texts; the drawing is at the scale it gets with no room reserved for the results; the SVG sets the
@@ -148,12 +155,42 @@ def test_results_that_no_box_holds_whole_go_into_reserved_room(pid):
     assert one.layout in _layouts(page, info, warnings) and one.layout.info_here and not one.layout.pieces
     assert str(one.scale) == RESERVED[pid] and one.scale < free_scale
     assert one.info is info
-    if one.scale.factor < SPLIT_KEEP * free_scale.factor:        # the last resort: no two boxes, nor the brief lines
-        *args, avoid = _at_free_scale(pid)
-        assert results_in_free_room(*args, sol.info_steps(), avoid) is None
+    fig, sl, page, lines, warned, scale, avoid = _at_free_scale(pid)       # the last resort, the drawing centred or
+    for f in [fig] + _aside_figures(pid):                                  # set aside: no box, nor two, holds the
+        assert results_in_free_room(f, sl, page, info, warnings, scale, sol.info_steps(), avoid) is None   # results,
+        brief = results_in_free_room(f, sl, page, lines, warned, scale, sol.info_steps(), avoid)     # no one box
+        assert brief is None or split(brief)                                                             # the brief
     svg = sol.sheets(page)[0]
     assert _scale(svg) == one.scale
     assert [h for h in _heads(svg, "info-head")] == ["Results  结果"]
+
+
+@pytest.mark.parametrize("pid", sorted(ASIDE) + sorted(BRIEF))
+def test_a_drawing_is_set_aside_when_centred_it_leaves_no_box_for_its_results(pid):
+    """:data:`ASIDE`, :data:`BRIEF` (100-07): at the scale the drawing gets with the frame to itself (100-04 and
+    100-07 at 1:1, were 1:2), set against a side of its area, not centred; centred, no one box held the lines it
+    prints (the brief ones of :data:`BRIEF`)."""
+    sol, page, info, warnings, one, free_scale = _sheet_one(pid)
+    assert str(one.scale) == (ASIDE | BRIEF)[pid] and one.scale == free_scale
+    sl, scale, view = place_figure(sol.drawing_scene, page, info, warnings, keep=_not_diagram if one.apart else None)
+    assert one.view.mu == view.mu and one.view.box == view.box and one.view.origin != view.origin
+    assert one.view.origin in [v.origin for v in aside_views(view, sl.area)]
+    fig, sl, page, lines, warned, scale, avoid = _at_free_scale(pid)
+    if pid in ASIDE:
+        lines, warned = info, warnings
+    centred = results_in_free_room(fig, sl, page, lines, warned, scale, sol.info_steps(), avoid)
+    assert centred is None or split(centred)
+    assert _scale(sol.sheets(page)[0]) == one.scale
+
+
+def _aside_figures(pid: str):
+    """The figure of ``pid`` at the scale it gets with the frame to itself, set against each side of its area."""
+    from geomcon.render.figure import build_figure, text_room
+    sol, page, info, warnings, one, _ = _sheet_one(pid)
+    sc, keep = sol.drawing_scene, _not_diagram if one.apart else None
+    sl, _, view = place_figure(sc, page, info, warnings, keep=keep)
+    return [build_figure(sc, None, v.box, v.origin, mu=v.mu, keep=keep, room=text_room(v, sl.area))
+            for v in aside_views(view, sl.area)]
 
 
 def _at_free_scale(pid: str):
@@ -164,10 +201,10 @@ def _at_free_scale(pid: str):
     from geomcon.render.results import brief_warnings
     from geomcon.render.svg import _figure_and_marks
     sol, page, info, warnings, one, _ = _sheet_one(pid)
-    sc = sol.drawing_scene
-    sl, scale, view = place_figure(sc, page, info, warnings)
-    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, room=text_room(view, sl.area))
-    _, marks = _figure_and_marks(document(page.sheet), sc, fig, scale, True)
+    sc, keep = sol.drawing_scene, _not_diagram if one.apart else None
+    sl, scale, view = place_figure(sc, page, info, warnings, keep=keep)
+    fig = build_figure(sc, None, view.box, view.origin, mu=view.mu, keep=keep, room=text_room(view, sl.area))
+    _, marks = _figure_and_marks(document(page.sheet), sc, fig, scale, not one.apart)
     lines = [ln.replace("{sheet}", "2") for ln in sol.figure_lines(page.lang, brief=True)]
     warned = [ln.replace("{sheet}", "2") for ln in brief_warnings(sol.warnings, page.lang, "{sheet}")]
     return fig, sl, page, lines, warned, scale, _boxes(marks)
@@ -177,30 +214,52 @@ def _split_sheets() -> list[str]:
     return [svg.stem for _, svg in _drawings() if "Results (1/" in svg.read_text(encoding="utf-8")]
 
 
+SPLIT_CENTRED = ("000-03_slotter_velocity_polygons", "200-14_oscillating_arm_speeds")
+"""Drawings whose results (000-03's in brief) two boxes of the free room hold with the drawing centred: the
+gallery printed them so until the drawing was set aside (:data:`ASIDE`, :data:`BRIEF`), where one box holds them.
+The split is checked on these centred drawings, as no gallery sheet splits its results now."""
+
+
+def _centred_split(pid: str):
+    """The centred figure of ``pid`` at the scale it gets with the frame to itself and its results (in brief when
+    the full ones find no room) in the boxes of its free room."""
+    fig, sl, page, lines, warned, scale, avoid = _at_free_scale(pid)
+    sol, _, info, warnings, _, _ = _sheet_one(pid)
+    placed = results_in_free_room(fig, sl, page, info, warnings, scale, sol.info_steps(), avoid)
+    return fig, placed or results_in_free_room(fig, sl, page, lines, warned, scale, sol.info_steps(), avoid)
+
+
 def test_no_sheet_splits_its_results_in_more_than_two_boxes():
     """A reader reads one block; when the free room has no box for it, two at most (300-01 had three)."""
     for _, svg in _drawings():
         text = svg.read_text(encoding="utf-8")
         assert not re.search(r"Results \(\d+/([3-9]|\d\d)\)", text), svg.stem
-    assert len(_split_sheets()) >= 2
 
 
-@pytest.mark.parametrize("pid", _split_sheets())
+@pytest.mark.parametrize("pid", sorted(set(_split_sheets()) | set(SPLIT_CENTRED)))
 def test_a_piece_of_split_results_lies_outside_the_figure(pid):
     """No box of a split Results block meets the convex hull of the figure's drawn elements (300-01's third box
     lay inside the four-bar ABCD, between its links)."""
-    sol, page, _, _, one, _ = _sheet_one(pid)
-    sl = one.layout
-    if not sl.info_here:                       # the results in brief on sheet 1 (000-03), in full on a later sheet
-        from geomcon.render.results import brief_warnings
-        sheet = str(2 + one.apart)
-        lines = [ln.replace("{sheet}", sheet) for ln in sol.figure_lines(page.lang, brief=True)]
-        warned = [ln.replace("{sheet}", sheet) for ln in brief_warnings(sol.warnings, page.lang, "{sheet}")]
-        sl = results_in_free_room(one.fig, sl, page, lines, warned, one.scale, sol.info_steps(), _boxes(one.marks))
+    if pid in SPLIT_CENTRED:
+        fig, sl = _centred_split(pid)
+    else:
+        sol, page, _, _, one, _ = _sheet_one(pid)
+        fig, sl = one.fig, one.layout
     assert split(sl)
-    hull = shapely.convex_hull(shapely.GeometryCollection([obstacle(s) for g in one.fig.groups for s in g.shapes]))
+    hull = shapely.convex_hull(shapely.GeometryCollection([obstacle(s) for g in fig.groups for s in g.shapes]))
     for pc in sl.pieces:
         assert not hull.intersects(shapely.box(pc.x, pc.y + 4.0, pc.x + pc.w, pc.y + pc.h)), (pid, pc)
+
+
+@pytest.mark.parametrize("pid", SPLIT_CENTRED)
+def test_the_pieces_of_a_centred_split_read_in_order(pid):
+    """The results' pieces in reading order: the first piece's rows before the second's, and the first above the
+    second, or side by side to its left."""
+    _, sl = _centred_split(pid)
+    a, b = [pc for pc in sl.pieces if pc.rows]
+    assert max(a.rows) < min(b.rows) or not set(a.rows) & set(b.rows)
+    above = a.y + a.h <= b.y or b.y + b.h <= a.y
+    assert (a.y < b.y) if above else (a.x < b.x), (pid, a, b)
 
 
 def _parts(svg: str) -> dict[int, tuple[float, float, float]]:
@@ -229,4 +288,3 @@ def test_the_parts_of_a_split_results_block_read_in_order():
             (xa, ta, ba), (xb, tb, bb) = parts[k], parts[k + 1]
             above = ba <= tb or bb <= ta
             assert (ta < tb) if above else (xa < xb), (svg.stem, k, parts)
-    assert split >= 2

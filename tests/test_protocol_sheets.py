@@ -25,10 +25,10 @@ def _info_lines(svg: str) -> list[float]:
 
 def test_the_gallery_has_text_sheets_with_results_and_a_protocol():
     """The gap rules below are exercised: since the Results stand in a drawing's free room on sheet 1 (hsheet11c),
-    only a drawing with its results in brief there (200-15; 100-07 until its results went whole onto sheet 1 at
-    1:2) still carries Results and a protocol on one text sheet."""
+    only a drawing with its results in brief there (100-07 at 1:1, set aside; 200-15 until its results went whole
+    beside it) still carries Results and a protocol on one text sheet."""
     both = [p.stem for p in SHEETS if "proto-head" in p.read_text() and 'class="info-head"' in p.read_text()]
-    assert "200-15_cam_handbook_laws-2" in both
+    assert "100-07_rocker_slider_three_positions-2" in both
 
 
 @pytest.mark.parametrize("path", SHEETS, ids=lambda p: p.stem)

@@ -379,13 +379,6 @@ def outside_hull(room: Any, fig: Figure) -> Any:
     return FreeRoom((), room.region, (), grid)
 
 
-SPLIT_KEEP = 0.5
-"""Results that no one box of the drawing's free room holds go as one block into room reserved for them (a band
-above the title block, a column at the right: :func:`_layouts`) when the drawing keeps at least this share of its
-scale there (100-04, 100-07: 1:1 → 1:2); else they are split over two boxes (:func:`_pieces`): a reader reads one
-block, and a drawing at half its size is still one to construct on."""
-
-
 def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None
             ) -> list[Piece] | None:
     """The results (in their frames' order) and the warnings laid into free boxes of ``room``, greedily: all
@@ -574,12 +567,15 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
               brief: tuple[Sequence[str], Sequence[str]] | None = None) -> SheetOne:
     """Where sheet 1 puts the drawing and the results: the layout at the largest standard scale
     (:func:`place_figure`, :func:`diagram_apart`), and when that reserves no room for the results, a reader reads
-    one block: one box of the drawing's free room (:func:`results_in_free_room`); else room reserved for them if
-    the drawing keeps :data:`SPLIT_KEEP` of its scale there (:func:`_in_reserved_room`; 100-04 and 100-07: 1:1 →
-    1:2); else two boxes of the free room outside the figure; else the ``brief`` lines (results, warnings;
-    ``{sheet}`` in them the number of the sheet with the full ones) in the free room; else room reserved for them
-    at whatever scale (300-01: 2.5:1 → 1:1, in a band above the title block; else they had no place on sheet 1);
-    else on a sheet of their own (``layout.info_here`` False)."""
+    one block: one box of the drawing's free room (:func:`results_in_free_room`), the drawing centred, else set
+    aside against a side of its area (:func:`aside_views`: 100-04 at 1:1 with its results in a column at the
+    right, where centred it left 41 mm on either side); else two boxes of the free room outside the centred
+    figure; else the ``brief`` lines (results, warnings; ``{sheet}`` in them the number of the sheet with the full
+    ones) in one box of the free room, centred or set aside (100-07 at 1:1); else room reserved for them at whatever
+    scale (300-01: 2.5:1 → 1:1, in a band above the title block; else they had no place on sheet 1); else on a
+    sheet of their own (``layout.info_here`` False). The drawing keeps its scale before the results keep one
+    block: 100-04 and 100-07 were drawn at 1:2 with their results in one block in reserved room, half the sheet
+    empty and 100-07's three rods EF read as one thick line."""
     sl, scale, view = place_figure(scene, page, info, warnings, upto, viewbox)
     apart = None if viewbox is not None else diagram_apart(scene, page, info, warnings, scale)
     if apart is not None:                                  # the cam alone on sheet 1, its s–δ diagram on sheet 2
@@ -589,25 +585,71 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
     dwg = document(page.sheet)
     drawn, marks = _figure_and_marks(dwg, scene, fig, scale, apart is None)
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
-        placed = results_in_free_room(fig, sl, page, info, warnings, scale, info_steps, _boxes(marks))
-        found = None if placed is None or split(placed) else (placed, None)
-        if found is None:                                    # one block at no less than half the scale
-            found = _in_reserved_room(scene, dwg, page, info, warnings, upto, viewbox, keep,
-                                      Scale(SPLIT_KEEP * scale.paper, scale.real))
-        if found is None and placed is not None:             # else in two boxes
-            found = (placed, None)
+        drawings: list[Drawn] = [(scale, view, fig, (drawn, marks))]
+        from .free_area import WIDTHS
+        lines = min([(info, warnings)] + ([brief] if brief is not None else []),
+                    key=lambda b: info_height(b[0], max(WIDTHS), b[1]))
+        least = (min(WIDTHS) - 2 * FIG_MARGIN, info_height(lines[0], max(WIDTHS), lines[1]) - 4.0 - 2 * FIG_MARGIN)
+        fy0, fy1 = frame_box(page.sheet)[1::2]
+        tall = fy1 - fy0 - 2 * INSET                        # a block taller than the frame fits no placing
+        asides = iter(aside_views(view, sl.area, least))
+        tried: dict[tuple[int, int], SheetLayout | None] = {}        # (placing, lines) → the results placed
+
+        def placings() -> Any:
+            """The drawing centred, then set aside (each built once, when first asked for)."""
+            i = 0
+            while i < len(drawings) or (v := next(asides, None)) is not None:
+                if i == len(drawings):
+                    f = build_figure(scene, upto, v.box, v.origin, mu=v.mu, keep=keep, room=text_room(v, sl.area))
+                    drawings.append((scale, v, f, _figure_and_marks(dwg, scene, f, scale, apart is None)))
+                yield drawings[i]
+                i += 1
+
+        def first(lines: Sequence[str], warned: Sequence[str], boxes: int) -> tuple[SheetLayout, Drawn] | None:
+            centred = boxes > 1 or info_height(lines, max(WIDTHS), warned) - 4.0 > tall
+            for i, d in enumerate(drawings[:1] if centred else placings()):
+                if (i, id(lines)) not in tried:
+                    tried[i, id(lines)] = results_in_free_room(d[2], sl, page, lines, warned, scale, info_steps,
+                                                               _boxes(d[3][1]))
+                placed = tried[i, id(lines)]
+                if placed is not None and (boxes > 1 or not split(placed)):
+                    return placed, d
+            return None
+
+        found = first(info, warnings, 1) or first(info, warnings, 2)     # one box, else two (centred)
         if found is None and brief is not None:              # else in brief, in full on the results sheet
             short = tuple([ln.replace("{sheet}", str(2 + int(apart is not None))) for ln in lines] for lines in brief)
-            placed = results_in_free_room(fig, sl, page, short[0], short[1], scale, info_steps, _boxes(marks))
-            if placed is not None:
+            got = first(short[0], short[1], 1)
+            if got is not None:
+                placed, (_, view, fig, (drawn, marks)) = got
                 return SheetOne(placed, scale, view, fig, dwg, drawn, marks, apart is not None, *short)
         if found is None:                                    # else one block at whatever scale reserved room has
             found = _in_reserved_room(scene, dwg, page, info, warnings, upto, viewbox, keep, STANDARD[0])
         if found is not None:
             sl = found[0]
-            if found[1] is not None:
-                scale, view, fig, (drawn, marks) = found[1]
+            scale, view, fig, (drawn, marks) = found[1]
     return SheetOne(sl, scale, view, fig, dwg, drawn, marks, apart is not None, info, warnings)
+
+
+def aside_views(view: View, area: Box, least: tuple[float, float] = (1.0, 1.0)) -> list[View]:
+    """``view`` (centred in the drawing's ``area``) set against the area's left, right, top and bottom side, in
+    that order: where it moves by ``least`` (width, height; paper mm) or more. Centred, a drawing shares its free
+    room out on both sides; set aside it leaves one box as wide as both (100-04 at 1:1: 83 mm at the right, not
+    41 mm each side). :func:`sheet_one` asks for a move that frees room a results block can take: the block's
+    least width (height) less the view's margins, :data:`~geomcon.render.view.FIG_MARGIN`, on either side.
+
+    >>> v = View((0.0, 0.0, 100.0, 50.0), 1.0, (50.0, 10.0))
+    >>> [a.origin for a in aside_views(v, (0.0, 0.0, 200.0, 70.0))]
+    [(0.0, 10.0), (100.0, 10.0), (50.0, 0.0), (50.0, 20.0)]
+    >>> [a.origin for a in aside_views(v, (0.0, 0.0, 200.0, 70.0), (45.0, 30.0))]
+    [(0.0, 10.0), (100.0, 10.0)]
+    >>> aside_views(v, (50.0, 10.0, 150.0, 60.0))
+    []
+    """
+    (w, h), (x, y) = view.size, view.origin
+    wide, tall = area[2] - area[0] - w >= least[0], area[3] - area[1] - h >= least[1]
+    spots = [(area[0], y), (area[2] - w, y)] * wide + [(x, area[1]), (x, area[3] - h)] * tall
+    return [replace(view, origin=o) for o in spots if abs(o[0] - x) + abs(o[1] - y) >= 1.0]
 
 
 def rejoined(src: str, lines: Sequence[str]) -> str:

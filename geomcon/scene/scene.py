@@ -143,6 +143,19 @@ _ANNOTATION = Role.ANNOTATION
 _new_ref = tuple.__new__
 
 
+def _names(caption: str, label: str | None) -> bool:
+    """Whether ``caption`` names the point ``label`` (not as the start of a longer name: "B1" is not named by
+    "B12", "B1′" or "B1*"; "C1" is by "AC1").
+
+    >>> _names("B1, B2 on ee with B1B2 = 308", "B2"), _names("Draw AB1′", "B1"), _names("Plot s(δ)", None)
+    (True, False, False)
+    """
+    if not label:
+        return False
+    import re
+    return re.search(r"(?<![a-z])" + re.escape(label) + r"(?![0-9′″‴'*a-z])", caption) is not None
+
+
 def _remark_zh(zh: str, remark: str) -> str:
     """A Chinese caption with a remark (its branch rule) added: inside the caption's closing bracket remark when
     there is one (``交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)``, not two brackets in a row), else
@@ -389,7 +402,11 @@ class Scene:
         annotation that shows a measurement (an angle mark with its value): it is drawn with the last
         measurement it refers to, so that the mark appears with the step that measures it — but never before
         the drawn steps it stands on (θ = 180°(K − 1)/(K + 1), step 1 of a design by K, had its mark drawn at
-        step 1 about a vertex and lines not yet drawn: 21 players showed a floating arc).
+        step 1 about a vertex and lines not yet drawn: 21 players showed a floating arc). Unnumbered steps right
+        before a numbered one that is drawn from them all go with it (the circles of "circles … meet at B′", the
+        tick 1 of "divide the δ axis …", the end point vB of "the velocity vB …": 300-01 showed vB and the α
+        mark on it one step before the vector, 20 cams the tick 1 with "Plot s(δ)"), unless the step before
+        names one of them or draws the same kind of thing ("B1, B2 on ee" keeps B2; "lines … on either side").
 
         The grouping is remembered while the scene's records stay the same (a drawing, its protocol, its
         captions and its results' frames each ask for it); each call returns new lists."""
@@ -401,11 +418,23 @@ class Scene:
         out: list[list[Step]] = []
         where: dict[str, int] = {}
         visible = self.visible_steps()
+        run: list[Step] = []                   # the unnumbered non-annotation steps since the last numbered one
         for s in visible:
             if s.caption[0] or s.branch is not None or not out:
-                out.append([s])
-                where[s.key] = len(out) - 1
+                head = out[-1][0] if out else None
+                ahead = bool(run) and all(r.key in rec[s.key][7] for r in run) and not any(
+                    r.op is head.op or _names(head.caption[0], r.label) for r in run)
+                if ahead:
+                    del out[-1][-len(run):]
+                out.append([s] + run if ahead else [s])
+                for r in out[-1]:
+                    where[r.key] = len(out) - 1
+                run = []
                 continue
+            if s.role is Role.ANNOTATION:
+                run = []
+            else:
+                run.append(s)
             at = len(out) - 1
             if s.role is Role.ANNOTATION:
                 deps = rec[s.key][7]
@@ -432,6 +461,35 @@ class Scene:
                 memo[k] = got
             return got
         return max((at(k) for k in keys), default=0) or default
+
+    def drawn_from(self, key: str) -> int | None:
+        """The first frame (1-based) that draws a step computed from the value ``key`` (through values that are
+        not drawn); None for a drawn step, or a value no drawn step is computed from. A result computed by a
+        value the drawing constructs later shows with it, not before (200-07's α_max at step 2, its worst
+        position drawn at step 17; 001-24's s at δ = 100° at step 1, laid off at step 15)."""
+        rec = self._rec
+        got = self.__dict__.get("_users")
+        if got is None or got[0] is not rec or got[1] != len(rec):
+            users: dict[str, list[str]] = {}
+            for k, r in rec.items():
+                for d in r[7]:
+                    users.setdefault(d, []).append(k)
+            frame = {s.key: i for i, group in enumerate(self.frames(), 1) for s in group}
+            got = self._users = (rec, len(rec), users, frame)        # remembered as the frames are
+        users, frame = got[2], got[3]
+        if key in frame:
+            return None
+        seen, todo, found = {key}, [key], []
+        while todo:
+            for u in users.get(todo.pop(), ()):
+                if u in seen:
+                    continue
+                seen.add(u)
+                if u in frame:
+                    found.append(frame[u])
+                else:
+                    todo.append(u)
+        return min(found, default=None)
 
     def number(self, key: str) -> int:
         """1-based protocol number of a visible step (the number of the frame it is drawn in)."""
