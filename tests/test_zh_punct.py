@@ -84,3 +84,22 @@ def test_no_line_of_any_gallery_svg_begins_with_closing_punctuation():
             if line[:1] and line[0] in closing:
                 bad.append((p.name, line[:20]))
     assert not bad, bad[:5]
+
+
+def test_the_zh_remark_rule_lives_with_the_other_bracket_rules_and_a_text_solve_loads_no_svgwrite():
+    """A branch's remark joins a Chinese caption's bracket by a rule of Chinese text (``render/zh.zh_remark``,
+    beside ``zh_brackets``; it was ``scene._remark_zh``): the scene takes it from there, and a text solve still
+    loads no svgwrite."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    import geomcon.scene.scene as scene
+    from geomcon.render import zh
+    assert scene.zh_remark is zh.zh_remark and not hasattr(scene, "_remark_zh")
+    assert zh.zh_remark("交摇杆圆于 C1(曲柄与连杆重叠共线)", "较近的交点") == "交摇杆圆于 C1(曲柄与连杆重叠共线;较近的交点)"
+    code = ("import sys; from geomcon.cli import main; main(['solve', 'problems/001-08_crank_rocker.toml', '--lang', "
+            "'zh']); print('svgwrite' in sys.modules, 'geomcon.render.zh' in sys.modules)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       cwd=Path(__file__).resolve().parents[1])
+    assert r.stdout.strip().endswith("False True"), r.stdout[-200:]

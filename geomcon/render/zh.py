@@ -81,4 +81,25 @@ def zh_brackets(s: str) -> str:
     return re.sub(r" ?（", "（", re.sub(r"） ?", "）", "".join(out)))
 
 
-__all__ = ["zh_brackets", "zh_punct"]
+def zh_remark(zh: str, remark: str) -> str:
+    """A Chinese caption with a remark (its branch rule) added: inside the caption's closing bracket remark when
+    there is one (``交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)``, not two brackets in a row), else
+    in its own brackets. A closing bracket of a formula (no ideograph inside) is left alone.
+
+    >>> zh_remark("交摇杆圆于 C1(曲柄与连杆重叠共线)", "位于直线 AD 上方的交点")
+    '交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)'
+    >>> zh_remark("K = (180° + θ)/(180° − θ)", "较近的交点"), zh_remark("两线交于 P", "较近的交点")
+    ('K = (180° + θ)/(180° − θ)(较近的交点)', '两线交于 P(较近的交点)')
+    """
+    if zh.endswith((")", "）")):
+        depth = 0
+        for i in range(len(zh) - 1, -1, -1):
+            depth += (zh[i] in ")）") - (zh[i] in "(（")
+            if depth == 0:
+                if any("\u4e00" <= c <= "\u9fff" for c in zh[i + 1:-1]):
+                    return f"{zh[:-1]};{remark}{zh[-1]}"
+                break
+    return f"{zh}({remark})"
+
+
+__all__ = ["zh_brackets", "zh_punct", "zh_remark"]

@@ -31,6 +31,7 @@ from typing import Any, Callable, Iterable, Iterator
 from ..errors import GeomconError, NoIntersection, Unbuildable
 from ..geometry.branch import Branch
 from ..geometry.primitives import Circle, Line, Point
+from ..render.zh import zh_remark
 from .compiled import order_of
 from .step import Ref, Role, Step, collect_refs, constant as _constant
 
@@ -154,27 +155,6 @@ def _names(caption: str, label: str | None) -> bool:
         return False
     import re
     return re.search(r"(?<![a-z])" + re.escape(label) + r"(?![0-9′″‴'*a-z])", caption) is not None
-
-
-def _remark_zh(zh: str, remark: str) -> str:
-    """A Chinese caption with a remark (its branch rule) added: inside the caption's closing bracket remark when
-    there is one (``交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)``, not two brackets in a row), else
-    in its own brackets. A closing bracket of a formula (no ideograph inside) is left alone.
-
-    >>> _remark_zh("交摇杆圆于 C1(曲柄与连杆重叠共线)", "位于直线 AD 上方的交点")
-    '交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)'
-    >>> _remark_zh("K = (180° + θ)/(180° − θ)", "较近的交点"), _remark_zh("两线交于 P", "较近的交点")
-    ('K = (180° + θ)/(180° − θ)(较近的交点)', '两线交于 P(较近的交点)')
-    """
-    if zh.endswith((")", "）")):
-        depth = 0
-        for i in range(len(zh) - 1, -1, -1):
-            depth += (zh[i] in ")）") - (zh[i] in "(（")
-            if depth == 0:
-                if any("\u4e00" <= c <= "\u9fff" for c in zh[i + 1:-1]):
-                    return f"{zh[:-1]};{remark}{zh[-1]}"
-                break
-    return f"{zh}({remark})"
 
 
 class Scene:
@@ -517,7 +497,7 @@ class Scene:
         if branch is not None:
             ben, bzh = branch.describe(self.label_of)
             en = f"{en} ({ben})" if en else ben
-            zh = _remark_zh(zh, bzh) if zh else bzh
+            zh = zh_remark(zh, bzh) if zh else bzh
         return en, zh
 
     def closure(self, keys: Iterable[str]) -> list[str]:
