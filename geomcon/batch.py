@@ -202,7 +202,7 @@ def _problem(ident: str, recipe: str, given: dict[str, Any]) -> Problem:
     """
     p = _new(Problem)
     p.__dict__.update(id=ident, recipe=recipe, given=given, published={}, title="", source="", seed="", statement="",
-                      notes="", path=None)
+                      notes="", path=None, title_zh="")
     return p
 
 

@@ -54,7 +54,8 @@ def _summary(sol, lang: str = "en") -> str:
     (``published θ = 25``, not the file's ``theta``; ``警告：`` and the Chinese sentence for zh, both for ``both``) and the steps evaluated."""
     from .render.results import result_line
 
-    lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {sol.problem.title}" if sol.problem.title else "")]
+    title = sol.problem.title_in(lang).replace("\n", "  ")          # both: "English  中文", as the headings
+    lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {title}" if title else "")]
     lines += [f"  {line}" for line in sol.figure_lines(lang)]
     others = sol.solution_values[1:]
     numbers = sol.solution_numbers
@@ -148,6 +149,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
         return _fail(path, str(exc))
     except OSError as exc:
         return _fail_write(path, exc)
+    if args.lang == "zh" and sol.problem.title and not sol.problem.title_zh:
+        print(f"note: {one_line(path)}: no title_zh: the title stays in English", file=sys.stderr)
     sys.stdout.write(text)
     return 0 if sol.ok else EXIT_CHECK_FAILED
 

@@ -337,7 +337,7 @@ def problem_motion_svg(sol: Solution) -> str:
     g, p = sol.problem.given, sol.problem
     swings = p.recipe == "cam.oscillating" or g.get("motion") == "oscillating"     # an arm (200-12, 200-20 too)
     unit = "°" if swings else "mm"
-    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=p.title or p.id, unit=unit,
+    return motion_diagrams_svg(parse_program(g["program"]), g["h"], title=p.title_in("both") or p.id, unit=unit,
                                problem=p.id + ".toml" if p.path else p.id, recipe=p.recipe)
 
 

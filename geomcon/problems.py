@@ -4,6 +4,7 @@ A problem file looks like::
 
     recipe = "crank_slider.extremes"
     title = "Offset crank-slider: stroke, extreme positions, time ratio"
+    title_zh = "偏置曲柄滑块机构：行程、极限位置与行程速比系数"    # optional: the title of zh sheets
     source = "free text: where the data come from"
     [given]          # lengths in mm, angles in degrees
     AB = 30
@@ -42,13 +43,14 @@ from .errors import ProblemError
 from .values import Frozen, store
 from .recipes import Quantity, Recipe, get_recipe
 
-TOP_KEYS = ("recipe", "title", "source", "seed", "statement", "notes", "given", "published")
+TOP_KEYS = ("recipe", "title", "title_zh", "source", "seed", "statement", "notes", "given", "published")
 
 LIMITS = {
     "file_bytes": 1 << 20,       # a problem file is at most 1 MiB
     "list_items": 1000,          # elements of a list given or a published list
     "table_rows": 100,           # rows of a table given (a cam's motion program)
     "text_chars": 20000,         # characters of a text field (title, notes, …)
+    "title_zh_chars": 120,       # characters of the Chinese title (one line of a title block)
 }
 """Size limits of a problem file, checked before anything is computed."""
 
@@ -76,7 +78,8 @@ class Problem(Frozen):
     """A validated problem: recipe name, normalised givens, published answers (a new empty dict when not
     given) and provenance."""
 
-    _FIELDS = ("id", "recipe", "given", "published", "title", "source", "seed", "statement", "notes", "path")
+    _FIELDS = ("id", "recipe", "given", "published", "title", "source", "seed", "statement", "notes", "path",
+               "title_zh")
     id: str
     recipe: str
     given: Mapping[str, Any]
@@ -87,15 +90,48 @@ class Problem(Frozen):
     statement: str
     notes: str
     path: str | None
+    title_zh: str
 
     def __init__(self, id: str, recipe: str, given: Mapping[str, Any], published: Mapping[str, Any] = _NEW,
                  title: str = "", source: str = "", seed: str = "", statement: str = "", notes: str = "",
-                 path: str | None = None) -> None:
+                 path: str | None = None, title_zh: str = "") -> None:
         if published is _NEW:
             published = {}
         for name, value in zip(self._FIELDS, (id, recipe, given, published, title, source, seed, statement, notes,
-                                              path)):
+                                              path, title_zh)):
             store(self, name, value)
+
+    def title_in(self, lang: str) -> str:
+        """The title in ``lang`` (:func:`title_in`)."""
+        return title_in(self.title, self.title_zh, lang)
+
+
+def title_in(title: str, title_zh: str, lang: str) -> str:
+    r"""The title a sheet, a player or a worksheet prints in ``lang``: ``en`` the English ``title``; ``zh`` the
+    Chinese ``title_zh``, or the English one when there is none (a file without ``title_zh`` still draws, and
+    ``geomcon solve --lang zh`` says so in a note); ``both`` the two, English first, on two lines (joined by a
+    newline: a title block sets them as two lines, a one-line place joins them with :func:`one_line_title`).
+
+    >>> title_in("Crank-rocker", "曲柄摇杆机构", "zh"), title_in("Crank-rocker", "", "zh")
+    ('曲柄摇杆机构', 'Crank-rocker')
+    >>> title_in("Crank-rocker", "曲柄摇杆机构", "both"), title_in("", "曲柄摇杆机构", "en")
+    ('Crank-rocker\n曲柄摇杆机构', '')
+    """
+    if lang == "zh":
+        return title_zh or title
+    if lang == "both" and title_zh:
+        return f"{title}\n{title_zh}" if title else title_zh
+    return title
+
+
+def one_line_title(title: str) -> str:
+    r"""A title of :func:`title_in` on one line (an HTML page's ``<title>``, a text summary): its two languages
+    joined by two spaces, as the sheets' bilingual headings are ("Results  结果").
+
+    >>> one_line_title("Crank-rocker\n曲柄摇杆机构")
+    'Crank-rocker  曲柄摇杆机构'
+    """
+    return "  ".join(part for part in title.split("\n") if part)
 
 
 def _g(x: float) -> str:
@@ -352,7 +388,37 @@ def problem_from_dict(data: Mapping[str, Any], *, name: str, path: str | None = 
             raise ProblemError(f"published '{k}' is not an answer of {recipe.name} (answers: {', '.join(units)})")
         published[k] = _published(units[k], v, f"published '{k}'")
     texts = {k: _text(data.get(k, ""), k) for k in ("title", "source", "seed", "statement", "notes")}
-    return Problem(id=name, recipe=recipe.name, given=given, published=published, path=path, **texts)
+    return Problem(id=name, recipe=recipe.name, given=given, published=published, path=path,
+                   title_zh=title_zh(data.get("title_zh", "")), **texts)
+
+
+def title_zh(value: Any, key: str = "title_zh") -> str:
+    """The Chinese title of a problem file (or a worksheet spec): a string of at most
+    ``LIMITS['title_zh_chars']`` characters on one line, holding Chinese (an English title belongs in ``title``),
+    its punctuation full-width where it touches Chinese (as every Chinese text we print: ``：``, ``（…）``).
+
+    >>> title_zh("曲柄摇杆机构：极限位置、K 与 γmin")
+    '曲柄摇杆机构：极限位置、K 与 γmin'
+    >>> title_zh("曲柄摇杆机构: 极限位置")
+    Traceback (most recent call last):
+    ...
+    geomcon.errors.ProblemError: 'title_zh' uses half-width punctuation next to Chinese: write '曲柄摇杆机构：极限位置'
+    """
+    if value == "":
+        return ""
+    text = _text(value, key)
+    if len(text) > LIMITS["title_zh_chars"]:
+        raise ProblemError(f"'{key}' has {len(text)} characters; a title is at most {LIMITS['title_zh_chars']} "
+                           "(one line of the title block)")
+    if "\n" in text or "\t" in text:
+        raise ProblemError(f"'{key}' must be one line")
+    if not any("\u3400" <= ch <= "\u9fff" for ch in text):
+        raise ProblemError(f"'{key}' holds no Chinese character, got {_short(text)} (the English title is 'title')")
+    from .render.zh import zh_punct
+    fixed = zh_punct(text)
+    if fixed != text:
+        raise ProblemError(f"'{key}' uses half-width punctuation next to Chinese: write {_short(fixed)}")
+    return text
 
 
 def _published(unit: str, value: Any, where: str) -> Any:

@@ -661,6 +661,7 @@ class Solution:
             "problem": self.problem.id,
             "recipe": self.recipe.name,
             "title": self.problem.title,
+            **({"title_zh": self.problem.title_zh} if self.problem.title_zh else {}),
             "given": dict(self.problem.given),
             "answers": answers_json(self.answers),
             "points": {k: [rounded(x, self.length_scale), rounded(y, self.length_scale)]
@@ -767,9 +768,19 @@ class Solution:
                 out.append(k if later is None else max(k, later))
         return out
 
-    def title(self) -> str:
-        """Title for drawings (a drawing of another valid solution says which: "— solution 2 of 4")."""
-        return (self.problem.title or self.scene.title) + getattr(self, "_title_note", "")
+    def title(self, lang: str = "en") -> str:
+        """Title for drawings in ``lang`` (:func:`~geomcon.problems.title_in`: the problem's ``title_zh`` in
+        Chinese, both titles on two lines for ``both``; the scene's title when the problem has none); a drawing
+        of another valid solution says which on each line ("— solution 2 of 4", "——解 2（共 4 个）")."""
+        shown = self.problem.title_in(lang) or self.scene.title
+        note = getattr(self, "_title_note", None)
+        if note is None:
+            return shown
+        n, count = note
+        lines = shown.split("\n")
+        words = [f"——解 {n}（共 {count} 个）" if any("\u4e00" <= ch <= "\u9fff" for ch in line)
+                 else f" — solution {n} of {count}" for line in lines]
+        return "\n".join(line + w for line, w in zip(lines, words))
 
     def as_solution(self, n: int) -> Solution:
         """The problem drawn and reported as its valid solution ``n`` (1 = the textbook's choice, as listed
@@ -798,7 +809,7 @@ class Solution:
                                                                   c.no_solution), self._validation)
         cands = self._valid_candidates
         other.__dict__["_valid_candidates"] = [cands[n - 1]] + cands[:n - 1] + cands[n:]
-        other._title_note = f" — solution {n} of {count}"
+        other._title_note = (n, count)
         other.__dict__["_answered_by"] = self
         other.solution_numbers = [n] + [i for i in range(1, count + 1) if i != n]
         return other
@@ -831,7 +842,7 @@ class Solution:
         page = page or PageSpec()
         at = self.listed_at()
         brief = (self.figure_lines(page.lang, brief=True), brief_warnings(self.warnings, page.lang, "{sheet}", at))
-        return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(),
+        return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(page.lang),
                              info=self.figure_lines(page.lang), warnings=warning_lines(self.warnings, page.lang, at),
                              info_steps=self.info_steps(), brief=brief,
                              page=page, problem=self.problem.id + ".toml" if self.problem.path else self.problem.id,
@@ -846,7 +857,7 @@ class Solution:
         from .render import render_html
         from .render.page import PageSpec
         page = page or PageSpec()
-        return render_html(self.drawing_scene, title=self.title(), svg=sheets or self.sheets(page), page=page)
+        return render_html(self.drawing_scene, title=self.title(page.lang), svg=sheets or self.sheets(page), page=page)
 
     def frames(self, page=None, sheet: str | None = None) -> list[str]:
         """One SVG per numbered step: sheet 1 with later steps hidden and step k highlighted, exactly the step

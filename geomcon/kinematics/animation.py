@@ -210,7 +210,8 @@ def animation_html(r: CycleResult) -> str:
     """The page (deterministic: the data is rounded as every number geomcon writes)."""
     data = json.dumps(scene_data(r), ensure_ascii=False, separators=(",", ":"), sort_keys=True)
     data = data.replace("</", "<\\/")
-    title = html.escape(f"{r.problem.id}: {r.problem.title or 'whole cycle'}")
+    title = html.escape(f"{r.problem.id}: {r.problem.title or 'whole cycle'}"
+                        + (f"  {r.problem.title_zh}" if r.problem.title_zh else ""))
     return "\n".join([
         "<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">', f"<title>{title}</title>",
         f"<style>{STYLE}</style>", "</head>", "<body>", f"<h1>{title}</h1>", *_warnings_html(r),

@@ -253,8 +253,15 @@ def _typeset(line: str, names: Sequence[str]) -> Runs:
 
 
 def _heads(title: str, n: int, count: int) -> list[str]:
-    head = title if n == 0 else f"{title} (continued, {n + 1}/{count})"
-    return _wrap(head, AREA[2] - AREA[0], HEAD)                # never cut: a long title on a second line
+    """The chart's heading: the title (English above Chinese when it holds both), never cut: a long one wraps."""
+    width = AREA[2] - AREA[0]
+    first, *rest = title.split("\n")
+    lines = list(_wrap(first, width, HEAD))
+    if n:                                   # "(continued, 2/3)" whole: after the title, or on a line of its own
+        cont = f"(continued, {n + 1}/{count})"
+        joined = _wrap(f"{lines[-1]} {cont}", width, HEAD)
+        lines[-1:] = [f"{lines[-1]} {cont}"] if len(joined) == 1 else [lines[-1], cont]
+    return lines + [line for part in rest for line in _wrap(part, width, HEAD)]
 
 
 def _layout(r: CycleResult, title: str, block: list[str]) -> tuple[int, int]:
@@ -278,7 +285,8 @@ def cycle_plot_sheets(r: CycleResult) -> list[str]:
     cols = list(r.problem.columns)
     phi = r.cycle.phi_deg
     x0, x1 = float(phi[0]), float(phi[-1])
-    title = zh_brackets(r.problem.title or "Whole cycle")     # Slotting machine（插床）
+    p = r.problem               # the sheets are in both languages: the English title above the Chinese one
+    title = zh_brackets(p.title or "Whole cycle") + (f"\n{p.title_zh}" if p.title_zh else "")
     problem = r.problem.id + ".toml"
     block = warning_block(r)
     count, per = _layout(r, title, block)

@@ -64,7 +64,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from ..errors import ProblemError
-from ..problems import _text, check_number, parse_toml, read_limited
+from ..problems import _text, check_number, parse_toml, read_limited, title_zh
 from .chain import Mechanism, _makes, check_chain
 from .dyads import PRP, RPR, RRP, RRR, Crank, Element, Guide, OnLink
 from .quantities import check_name
@@ -75,7 +75,7 @@ LIMITS = {"fixed_points": 64, "chain": 64, "columns": 64, "names": 64, "position
 MIN_STEP = 1e-3
 """The smallest crank step (deg)."""
 
-TOP = ("kind", "seed", "title", "statement", "source", "notes", "mechanism", "cycle", "published")
+TOP = ("kind", "seed", "title", "title_zh", "statement", "source", "notes", "mechanism", "cycle", "published")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}$")
 _KEYS = {
     "RRR": ({"name", "p1", "p2", "l1", "l2", "branch", "link1", "link2"}, {"joint"}),
@@ -104,6 +104,9 @@ class CycleProblem:
     statement: str = ""
     source: str = ""
     notes: str = ""
+    title_zh: str = ""
+    """The Chinese title (:func:`geomcon.problems.title_zh`): the plot sheets, printed in both languages, set it
+    under the English one."""
 
 
 def _table(data: Any, where: str) -> Mapping[str, Any]:
@@ -286,7 +289,8 @@ def cycle_from_dict(data: Mapping[str, Any], *, name: str, path: str | None = No
             else _signed(v, "point", f"published.{k}")
     return CycleProblem(name, m, phi, lists["columns"], lists["extremes"], lists["strokes"], trace, at, published,
                         **{k: _text(data[k], k) if k in data else "" for k in
-                           ("title", "seed", "statement", "source", "notes")})
+                           ("title", "seed", "statement", "source", "notes")},
+                        title_zh=title_zh(data.get("title_zh", "")))
 
 
 def demo_problem(**cycle: Any) -> CycleProblem:

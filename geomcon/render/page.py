@@ -44,6 +44,7 @@ TB_ROWS = 4
 TB_H = TB_ROW * TB_ROWS
 TB_TEXT = 3.5           # title block text size (ISO 3098 series 2.5, 3.5, 5, 7)
 TB_TITLE = 5.0
+TB_TITLE_BOTH = 2.8     # each of the two titles (English above Chinese) of a sheet in both languages
 FRAME_WIDTH = 0.7       # the drawing frame's line
 INSET = 4.0             # free paper between the frame and what is drawn inside it
 MIN_TEXT = 2.5          # the smallest text on paper (ISO 3098), mm
@@ -118,8 +119,9 @@ def version() -> str:
 
 @dataclass(frozen=True)
 class TitleBlock:
-    """What the title block states: the title, the problem file, the recipe, the scale (None on a sheet
-    without a drawing), the paper, the sheet number and count. No date: outputs are byte-identical."""
+    """What the title block states: the title (a title of both languages is two lines, English then Chinese,
+    joined by a newline: :func:`geomcon.problems.title_in`), the problem file, the recipe, the scale (None on a
+    sheet without a drawing), the paper, the sheet number and count. No date: outputs are byte-identical."""
 
     title: str
     problem: str
@@ -154,8 +156,8 @@ def printable(text_: str) -> str:
 
 
 def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
-    """The title block group: four rows — title; problem file and recipe; scale, μl and paper; geomcon's
-    version and the sheet number."""
+    """The title block group: four rows — title (two lines of :data:`TB_TITLE_BOTH` when it holds two
+    languages); problem file and recipe; scale, μl and paper; geomcon's version and the sheet number."""
     x0, y0, x1, y1 = title_block_box(sheet)
     g = dwg.g(id="title-block", stroke=INK, fill="none")
     g.add(dwg.rect(insert=(fmt(x0), fmt(y0)), size=(fmt(x1 - x0), fmt(y1 - y0)), stroke_width="0.5"))
@@ -169,11 +171,23 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
         scale = [f"{text('Scale', '比例', lang)} {tb.scale}", f"μl = {mu:g} mm/mm"]
     else:
         scale = [text("Scale", "比例", lang) + " —", ""]
-    rows = [[printable(tb.title)],
+    titles = [printable(t) for t in tb.title.split("\n") if t] or [""]
+    rows = [[titles[0]],
             [f"{text('Problem', '题目', lang)} {printable(tb.problem)}", f"{text('Recipe', '作图法', lang)} {tb.recipe}"],
             scale + [f"{text('Paper', '图幅', lang)} {_paper_words(tb.paper, lang)}"],
             [f"geomcon {version()}", f"{text('Sheet', '第', lang)} {tb.sheet}/{tb.sheets}"
              + ("" if lang == "en" else " 张")]]
+    if len(titles) > 1:                 # both languages: the English title above the Chinese, each one line
+        for i, cell in enumerate(titles[:2]):
+            cell = fitted(cell, w - 3.0, TB_TITLE_BOTH, 1.12)
+            size = fit_size(cell, (w - 3.0) / 1.12, TB_TITLE_BOTH)
+            t = Element("text", class_="tb tb-0-0" + (" tb-title-zh" if i else ""), fill=INK, font_size=fmt(size),
+                        stroke="none", x=fmt(x0 + 1.5), y=fmt(y0 + (2.8 if i == 0 else 6.1)))
+            add_runs(t, rich_runs(cell), size, least=MIN_TEXT)
+            t.attribs["xml:space"] = "preserve"
+            t.attribs["font-weight"] = "bold"
+            g.add(t)
+        rows[0] = [""]
     for r, cells in enumerate(rows):
         cw = w / len(cells)
         for c, cell in enumerate(cells):

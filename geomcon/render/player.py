@@ -223,6 +223,6 @@ def render_html(scene: Scene, *, title: str | None = None, info: Sequence[str] =
     steps = json.dumps([[caption_html(s) for s in c] for c in step_captions(scene, page.lang)], ensure_ascii=False).replace("</", "<\\/").replace("]]>", "]]\\u003e")
     css = _CSS % {"font": ", ".join(f'"{f.strip()}"' if " " in f.strip() else f.strip()
                                     for f in FONT_FAMILY.split(","))}
-    return _PAGE % {"title": html.escape(typeset(title or scene.title)), "css": css, "print": print_css(page), "replay_print": _PRINT_CSS,
+    return _PAGE % {"title": html.escape(typeset((title or scene.title).replace("\n", "  "))), "css": css, "print": print_css(page), "replay_print": _PRINT_CSS,
                     "lang": "zh-Hans" if page.lang == "zh" else "en", "n": len(scene.frames()), "svg": body,
                     "script": _SCRIPT % {"steps": steps}}

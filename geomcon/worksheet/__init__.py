@@ -67,8 +67,8 @@ def make_worksheet(spec: Spec, students: Sequence[Student], *, paper: str = "A4"
     files = {"key.json": key_json(spec, a, paper=paper, lang=lang, seed=seed),
              "variants.csv": variants_csv(spec, a)}
     pages = make_pages(spec, a, lang)
-    files.update(sheet_files(pages, spec.title, lang))
-    files.update(key_files(pages, spec.title, lang))
+    files.update(sheet_files(pages, spec.title_in(lang), lang))
+    files.update(key_files(pages, spec.title_in(lang), lang))
     return Worksheet(files, tuple(st.line() for st in a.stats), a)
 
 

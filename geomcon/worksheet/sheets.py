@@ -156,7 +156,7 @@ def make_pages(spec: Spec, a: Assignment, lang: str) -> list[Page]:
                                    "shorten the statement or ask fewer answers") from None
             placed, _ = place_labels(items, lay.to_paper)
             page = Page(page_name(s.id, ex.n), s, code, ex, len(spec.exercises), v, sol, items, tuple(placed),
-                        paragraphs, lay, spec.title, lang=lang)
+                        paragraphs, lay, spec.title_in(lang), lang=lang)
             out.append(page)
             if has_diagram(sol) and lay.diagram is None:        # no free strip at the figure's scale
                 x0, y0, x1, _ = lay.frame

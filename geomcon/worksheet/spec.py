@@ -47,7 +47,7 @@ from typing import Any, Mapping
 
 from ..errors import ProblemError
 from ..paper import STANDARD, Scale
-from ..problems import parse_toml, read_limited
+from ..problems import parse_toml, read_limited, title_in, title_zh
 from ..recipes import Quantity, Recipe, get_recipe
 
 LIMITS = {
@@ -63,7 +63,7 @@ LIMITS = {
 }
 """Size limits of a worksheet spec, checked before anything is solved."""
 
-TOP_KEYS = ("title", "seed", "exercise")
+TOP_KEYS = ("title", "title_zh", "seed", "exercise")
 EXERCISE_KEYS = ("recipe", "ask", "points", "statement", "given", "require", "tol", "scale", "max_tol_rel", "diagnose")
 LANGS = ("en", "zh")
 MAX_TOL_REL = 0.05
@@ -250,6 +250,17 @@ class Spec:
     seed: int | str | None
     exercises: tuple[Exercise, ...]
     sha256: str
+    title_zh: str = ""
+    """The Chinese title (as a problem file's ``title_zh``): the header of a zh page prints it, of a page in
+    both languages after the English one."""
+
+    def title_in(self, lang: str) -> str:
+        """The title in the page's language, on one line (``both``: English, two spaces, Chinese).
+
+        >>> Spec("s", "Guide bar", None, (), "", "导杆机构").title_in("both")
+        'Guide bar  导杆机构'
+        """
+        return title_in(self.title, self.title_zh, lang).replace("\n", "  ")
 
 
 def _copy(v: Any) -> Any:
@@ -293,7 +304,8 @@ def parse_spec(text: str, *, name: str = "spec.toml") -> Spec:
     if len(exercises) > LIMITS["exercises"]:
         raise ProblemError(f"{len(exercises)} exercises; at most {LIMITS['exercises']}")
     parsed = tuple(_exercise(e, i + 1) for i, e in enumerate(exercises))
-    return Spec(name, title, seed, parsed, hashlib.sha256(text.encode("utf-8")).hexdigest())
+    return Spec(name, title, seed, parsed, hashlib.sha256(text.encode("utf-8")).hexdigest(),
+                title_zh(data.get("title_zh", "")))
 
 
 def _exercise(data: Mapping[str, Any], n: int) -> Exercise:
