@@ -342,22 +342,24 @@ def problem_motion_svg(sol: Solution) -> str:
 
 
 def law_diagrams() -> dict[str, str]:
-    """One s–v–a sheet per motion law: rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm."""
-    from .cam.diagrams import motion_diagrams_svg
+    """One s–v–a sheet per motion law: rise 90°, dwell 90°, return 90°, dwell 90°, h = 20 mm. Titled as a
+    textbook heads a law's diagrams, in both languages ("Cosine acceleration (simple harmonic) motion law",
+    "余弦加速度（简谐）运动规律"), the follower's motion stated in words under the heading (there is no problem file)."""
+    from .cam.diagrams import follower_motion, motion_diagrams_svg
     from .cam.custom_laws import HANDBOOK_LAWS
     from .cam.laws import LAWS
     from .cam.program import parse_program
     from .render.zh import zh_punct
+    from .worksheet.statements import LAWS as LAW_WORDS
 
     out = {}
     for name, lw in {**LAWS, **HANDBOOK_LAWS}.items():
         prog = parse_program([{"kind": "rise", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90},
                               {"kind": "return", "angle": 90, "law": name}, {"kind": "dwell", "angle": 90}])
-        # the Chinese name in its own words with full-width brackets (正弦加速度（摆线）运动规律), as the headings
-        # print two languages ("Results  结果")
+        en = LAW_WORDS[name][0]
         out[f"law_{name}.svg"] = motion_diagrams_svg(
-            prog, 20.0, title=f"{name.replace('_', ' ')} law  {zh_punct(lw.zh)}, impact: {lw.impact}",
-            problem="h = 20 mm, 90° each", recipe="cam motion law")
+            prog, 20.0, title=f"{en[0].upper()}{en[1:]} motion law\n{zh_punct(lw.zh)}", problem="—",
+            recipe="cam motion law", motion=follower_motion(prog, 20.0))
     return out
 
 

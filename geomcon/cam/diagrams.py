@@ -21,6 +21,7 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 
@@ -34,6 +35,7 @@ AREA = chart_area()                                            # (24, 14, 196, 2
 LEFT = AREA[0] + 18.0                                          # the vertical axes
 PLOT_W = AREA[2] - 16.0 - LEFT                                 # δ = 0 … span
 TOP, PANEL, GAP = AREA[1] + 14.0, 50.0, 24.0                   # first panel's top, a panel's height, between
+MOTION_LINE = 4.5                                              # a line of the follower's motion under the heading
 INK, GREY, RED = "#1a1a1a", "#8f959c", "#c92a2a"
 LABEL, TICK, NOTE = 3.5, 2.5, 3.0                              # text sizes (mm on paper, ISO 3098 ≥ 2.5)
 
@@ -106,10 +108,12 @@ def clusters(impacts: list[Impact], x_of, width_of) -> list[list[Impact]]:
 
 
 def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: str = "mm", symbol: str | None = None,
-                        problem: str = "", recipe: str = "") -> str:
+                        problem: str = "", recipe: str = "", motion: Sequence[str] = ()) -> str:
     """The s–δ, v–δ and a–δ diagrams of ``program`` with stroke ``h`` (``unit``: "mm", or "°" for an
     oscillating follower, whose symbol is then ψ), impacts marked, as an A4 portrait SVG sheet whose title block
-    holds ``title`` (the problem's), ``problem`` (its file) and ``recipe``."""
+    holds ``title`` (the problem's; English above Chinese when it holds both, on two lines), ``problem`` (its
+    file) and ``recipe``; ``motion``: lines under the heading that say the follower's motion in words
+    (:func:`follower_motion`), the three panels each a little lower to make room."""
     symbol = symbol or ("ψ" if unit == "°" else "s")
     pieces = _pieces(program, h)
     span = program.segments[-1].end
@@ -118,6 +122,11 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
     head = f"Motion diagrams {symbol}–δ, d{symbol}/dδ–δ, d²{symbol}/dδ²–δ  运动线图"
     dwg.add(text_el(head, AREA[0], AREA[1] + 4.0, LABEL, INK, bold=True, cls="chart-head"))
     texts.take(box_of(AREA[0], AREA[1] + 4.0, LABEL, text_width(head, LABEL) * 1.12))
+    top, panel = TOP + MOTION_LINE * len(motion), PANEL - MOTION_LINE * len(motion) / 3.0
+    for i, line in enumerate(motion):
+        y = AREA[1] + 4.0 + MOTION_LINE * (i + 1)
+        dwg.add(text_el(line, AREA[0], y, NOTE, INK, cls="chart-motion"))
+        texts.take(box_of(AREA[0], y, NOTE, text_width(line, NOTE)))
     impacts = program.impacts(h)
 
     def X(d):
@@ -125,7 +134,7 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
 
     for k, runs in enumerate(names(symbol, unit)):
         key = "sva"[k]
-        y0 = TOP + k * (PANEL + GAP)
+        y0 = top + k * (panel + GAP)
         vals = np.concatenate([p[1][k] for p in pieces])
         lo, hi = float(min(vals.min(), 0.0)), float(max(vals.max(), 0.0))
         flat = hi - lo <= 1e-12 * max(1.0, abs(h))          # zero but for its impacts: no value ticks
@@ -135,10 +144,10 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
         lo, hi = lo - pad, hi + pad
 
         def Y(v, y0=y0, lo=lo, hi=hi):
-            return y0 + PANEL * (hi - v) / (hi - lo)
+            return y0 + panel * (hi - v) / (hi - lo)
 
         g = dwg.add(dwg.g(id=f"panel-{key}"))
-        g.add(dwg.line((_f(LEFT), _f(y0)), (_f(LEFT), _f(y0 + PANEL)), stroke=INK, stroke_width=0.3))
+        g.add(dwg.line((_f(LEFT), _f(y0)), (_f(LEFT), _f(y0 + panel)), stroke=INK, stroke_width=0.3))
         g.add(dwg.line((_f(LEFT), _f(Y(0.0))), (_f(LEFT + PLOT_W + 4), _f(Y(0.0))), stroke=INK, stroke_width=0.3))
         g.add(text_el(runs, AREA[0], y0 - 3.0, LABEL, INK, cls="panel-head"))
         texts.take(box_of(AREA[0], y0 - 3.0, LABEL, runs_width(runs, LABEL)))
@@ -154,17 +163,17 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
         # δ ticks: 0 and every segment's end, a label that would run into the one before on a lower row
         for d in [0.0] + [seg.end for seg in program.segments]:
             if d > 0:
-                g.add(dwg.line((_f(X(d)), _f(y0)), (_f(X(d)), _f(y0 + PANEL)), stroke=GREY,
+                g.add(dwg.line((_f(X(d)), _f(y0)), (_f(X(d)), _f(y0 + panel)), stroke=GREY,
                                stroke_width=0.15, stroke_dasharray="1,1"))
             s = f"{d:g}"
-            spots = [(X(d), y0 + PANEL + 3.4 + 3.0 * r, "middle") for r in range(4)]
+            spots = [(X(d), y0 + panel + 3.4 + 3.0 * r, "middle") for r in range(4)]
             x, y, a = texts.place(text_width(s, TICK), TICK, spots)
             g.add(text_el(s, x, y, TICK, GREY, anchor=a))
         prev = None
         for d, m in pieces:
             # X and Y of every sample at once: the same operations in the same order, element by element
             pts = [f"{a:.3f},{b:.3f}" for a, b in zip((LEFT + PLOT_W * d / span).tolist(),
-                                                       (y0 + PANEL * (hi - m[k]) / (hi - lo)).tolist())]
+                                                       (y0 + panel * (hi - m[k]) / (hi - lo)).tolist())]
             first = tuple(pts[0].split(","))
             if prev is not None and prev[1] != first[1]:
                 g.add(dwg.line(prev, first, stroke=INK, stroke_width=0.25, stroke_dasharray="0.8,0.6"))
@@ -172,12 +181,12 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
             prev = tuple(pts[-1].split(","))
         if key != "a":
             continue
-        limits = (AREA[0], y0 - 1.0, AREA[2], y0 + PANEL + 1.0)
+        limits = (AREA[0], y0 - 1.0, AREA[2], y0 + panel + 1.0)
         for imp in impacts:
             x = X(imp.angle)
             if imp.kind == "rigid":
                 up = imp.jump > 0
-                tip = y0 + (0.0 if up else PANEL)
+                tip = y0 + (0.0 if up else panel)
                 g.add(dwg.line((_f(x), _f(Y(0.0))), (_f(x), _f(tip)), stroke=RED, stroke_width=0.4))
                 s = -1 if up else 1
                 g.add(dwg.polygon([(_f(x), _f(tip)), (_f(x - 1.0), _f(tip - 2.2 * s)),
@@ -194,7 +203,7 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
             x = X(run[-1].angle)                      # right of the last circle: the text covers none
             if first.kind == "rigid":
                 up = first.jump > 0
-                base = y0 + (1.8 if up else PANEL - 1.0)
+                base = y0 + (1.8 if up else panel - 1.0)
                 step = 3.2 if up else -3.2
             else:
                 base, step = Y(0.0) + 3.2, 3.2
@@ -207,8 +216,42 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
     lines = ([f"impacts: {k} ({'刚性冲击' if k == 'rigid' else '柔性冲击'}) at "
               + ", ".join(f"{i.angle:g}°" for i in impacts if i.kind == k) for k in kinds] if kinds
              else ["impacts: none (无冲击)"])
-    y = TOP + 3 * PANEL + 2 * GAP + 15.0
+    y = top + 3 * panel + 2 * GAP + 15.0
     for line in lines:
         dwg.add(text_el(zh_brackets(line), AREA[0], y, NOTE, INK, cls="impacts"))
         y += 5.0
     return svg_string(dwg)
+
+
+_DWELL_ZH = ("近休止角", "远休止角")
+
+
+def follower_motion(program: Program, h: float, unit: str = "mm") -> tuple[str, str]:
+    """The follower's motion in words, English and Chinese, as a textbook's heading states a cam's program: each
+    segment's kind and angle, the stroke with the rise (a dwell after a rise is the outer dwell, 远休止角).
+
+    >>> from geomcon.cam.program import parse_program
+    >>> en, zh = follower_motion(parse_program([{"kind": "rise", "angle": 90, "law": "cosine"},
+    ...     {"kind": "dwell", "angle": 90}, {"kind": "return", "angle": 90, "law": "cosine"},
+    ...     {"kind": "dwell", "angle": 90}]), 20.0)
+    >>> en
+    'Follower motion: rise h = 20 mm over 90°, dwell 90°, return over 90°, dwell 90°'
+    >>> zh
+    '从动件运动：推程运动角 90°，升程 h = 20 mm；远休止角 90°；回程运动角 90°；近休止角 90°'
+    """
+    stroke = f"h = {h:g} mm" if unit == "mm" else f"ψmax = {h:g}°"
+    en, zh, up = [], [], False
+    for seg in program.segments:
+        a = f"{seg.angle:g}°"
+        if seg.kind == "rise":
+            en.append(f"rise {stroke} over {a}")
+            zh.append(f"推程运动角 {a}，{'升程' if unit == 'mm' else '摆幅'} {stroke}")
+            up = True
+        elif seg.kind == "return":
+            en.append(f"return over {a}")
+            zh.append(f"回程运动角 {a}")
+            up = False
+        else:
+            en.append(f"dwell {a}")
+            zh.append(f"{_DWELL_ZH[up]} {a}")
+    return "Follower motion: " + ", ".join(en), "从动件运动：" + "；".join(zh)
