@@ -86,3 +86,39 @@ def test_the_best_design_names_its_arc_and_gamma():
     assert en.startswith(f"{sc['A'].label} on the admissible arc {'on D' if near else 'on the far side'}"), en
     assert f"{sol.answers['gamma_min']:.2f}°" in en and f"γmin = {sol.answers['gamma_min']:.2f}°" in zh
     assert "（D 所在一侧，" in zh if near else "（远离 D 的一侧，" in zh
+
+
+@pytest.mark.parametrize("name", ["001-15_crank_rocker_frame_and_position", "001-22_crank_rocker_frame_and_position_b"])
+def test_the_frame_given_design_names_the_c2_chosen_and_why(name):
+    """The frame given (001-15, 001-22): A is fixed and the candidates are C2,1 … C2,4 where the θ-lines meet the
+    rocker circle. The choice's step said "The textbook's choice of A (the other valid points are candidates)"
+    and each candidate's "It meets the rocker circle at a candidate C2"; they name the C2,k chosen and why, and
+    each candidate by its label (or that its line misses the circle: the figure has no C2,1, C2,2 there)."""
+    sol = solve(load_problem(PROBLEMS / f"{name}.toml"))
+    sc = sol.scene.complete()
+    chosen = sc.value("P2c")
+    at = [f"C2,{n}" for n in range(1, 5)
+          if isinstance(v := sc.value(f"C2_{n}"), Point) and abs(v - chosen) <= 1e-9 * max(1.0, abs(chosen))]
+    assert len(at) == 1
+    en, zh = sc.caption("A")
+    assert en.startswith(f"The textbook's choice: C2 = {at[0]} (C1 folded") and "another solution" in en, en
+    assert zh.startswith(f"教材取 C2 = {at[0]}（C1 为重叠共线位置") and "为另一解" in zh, zh
+    for n in range(1, 5):               # 001-15, 001-22: the counter-clockwise θ-line misses the rocker circle
+        cen, czh = sc.caption(f"C2_{n}")
+        if sc.value(f"C2_{n}") is None:
+            assert cen.startswith(f"The line misses the rocker circle: no candidate C2,{n} ("), cen
+            assert czh.startswith(f"该直线与摇杆圆不相交：无候选点 C2,{n}("), czh
+        else:
+            assert cen.startswith(f"It meets the rocker circle at the candidate C2,{n} ("), cen
+            assert czh.startswith(f"交摇杆圆于候选点 C2,{n}("), czh
+        assert "a candidate C2" not in cen
+    other = sol.as_solution(2).scene.complete()
+    assert other.caption("A")[0].startswith("The solution drawn: C2 = ")
+
+
+def test_a_candidate_s_two_indices_print_as_one_subscript():
+    from geomcon.render.labels import label_runs, rich_runs
+    assert rich_runs("at the candidate C2,4 (the intersection") == (
+        ("at the candidate C", False), ("2,4", True), (" (the intersection", False))     # not C₂ ",4"
+    assert label_runs("C2,4")[1] == ("2,4", True)
+    assert rich_runs("K = 1.4, H = 100") == (("K = 1.4, H = 100", False),)        # a list of values is not one

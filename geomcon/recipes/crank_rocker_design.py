@@ -239,10 +239,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
                      "A_near": f"A_near_{i}", "_valid": f"valid_{i}"})
         flat += [Ref(f"valid_{i}"), Ref(f"C1_folded_{i}"), Ref(f"A_near_{i}"), Ref(f"AD_{i}")]
     idx = sc.add("choice", best_index, *flat, visible=False)
-    # the frame given keeps its fixed words: its candidates C2,1… print as "C2,4" in a protocol's text
-    named = sc.drawing and family == "positions"
-    words = sc.add("choice_words", flat_caption, "A", idx, tuple(sc.label_of(c[0]) for c in cands), *flat,
-                   visible=False) if named else None
+    # the caption names the candidate chosen and why: A = A1 (positions given) or, the frame given (001-15,
+    # 001-22: A is fixed, the θ-lines meet the rocker circle at C2,1 … C2,4), C2 = C2,k
+    labels = (tuple(sc.label_of(c[0]) for c in cands) if family == "positions"
+              else tuple(f"C2,{i}" for i in range(1, len(cands) + 1)))
+    words = sc.add("choice_words", flat_caption, "A" if family == "positions" else "C2", idx, labels, *flat,
+                   visible=False) if sc.drawing else None
     _draw_choice(sc, idx, cands, th, words)
     if sc.drawing and family == "positions":
         _mark_given_angles(sc, g)
@@ -474,13 +476,31 @@ def _frame_candidates(sc: Scene, g: Mapping[str, Any], th: Ref) -> list:
         # K = 1: the line is AC1 itself and meets the rocker circle at C1 and at C2 (a candidate C2 = C1 would
         # be a crank of length 0 and no swing; rounding made it a "design" whose C1_folded was a coin toss)
         rules = (OtherThan(C1),) if g["K"] == 1.0 else (NearestTo(A), FarthestFrom(A))
-        for rule in rules:
+        for rule in rules:              # the branch's words follow: "(the intersection nearer to A)"
             n += 1
+            words = (sc.add(f"C2_words_{n}", candidate_words, line, kD, n, visible=False) if drawing
+                     else candidate_words(None, None, n))
             Cn = sc.add(f"C2_{n}", line_circle, line, kD, branch=rule, label=f"C2,{n}", optional=True, style="candidate",
-                        caption=("It meets the rocker circle at a candidate C2", "交摇杆圆得 C2 的候选位置"))
+                        caption=words)
             ok = sc.add(f"ahead_{n}", _ahead, A, r, Cn, optional=True, visible=False)
             out.append((A, C1, ok, one))
     return out
+
+
+def candidate_words(line: Line | None, circle: Any, n: int) -> tuple[str, str]:
+    """The step of candidate C2,n (the frame given): where the θ-line meets the rocker circle, or that it misses
+    it (001-15's counter-clockwise line passes the circle: "meets … at C2,1" named a point the figure lacks);
+    ``line`` None: the words of a step that meets it (a lean scene's).
+
+    >>> from geomcon.geometry import Circle
+    >>> candidate_words(Line(Point(0, 5), Point(1, 0)), Circle(Point(0, 0), 1.0), 1)
+    ('The line misses the rocker circle: no candidate C2,1', '该直线与摇杆圆不相交：无候选点 C2,1')
+    >>> candidate_words(Line(Point(0, 0), Point(1, 0)), Circle(Point(0, 0), 1.0), 2)[0]
+    'It meets the rocker circle at the candidate C2,2'
+    """
+    if line is None or line_circle(line, circle):
+        return f"It meets the rocker circle at the candidate C2,{n}", f"交摇杆圆于候选点 C2,{n}"
+    return f"The line misses the rocker circle: no candidate C2,{n}", f"该直线与摇杆圆不相交：无候选点 C2,{n}"
 
 
 def _ahead(A: Point, r, C: Point) -> Point | None:

@@ -37,7 +37,7 @@ _SUB = re.compile(r"(?=[A-Za-z_\d])(?:"           # every subscript begins so: a
                   r"|(?<=(?<![A-Za-z0-9])[xy])[pa](?![A-Za-z])|(?<=(?<![A-Za-z0-9])l)face\b"
                   r"|(?<=(?<![A-Za-z0-9])[valn])[A-Z][A-Z0-9]*|(?<=(?<![A-Za-z0-9])[va][ⁿᵗʳᵏ])[A-Z][A-Z0-9]*"
                   r"|(?<=μ)[val](?![A-Za-z])|(?<=(?<![A-Za-z_])[a-z])\d+(?![\d.])|(?<=[A-Z])d\d+(?![\d.])"
-                  r"|(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
+                  r"|(?<=[A-Z])\d+,\d+(?![\d.,])|(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
                   r"|(?<=[A-Zα-ω])i(?![a-z])"
                   r"|(?<=[A-Za-zα-ωΑ-Ω′])_([a-z0-9]+))")
 """What a caption prints as a subscript: a follower's or a roller's bound (vmax, amax, lmin, rr,max: the comma
@@ -96,6 +96,8 @@ def rich_runs(text: str) -> Runs:
     file and recipe names (:data:`_CODE`) are left as they are. Remembered (runs are tuples): two of three
     lines a gallery writes were written before (step numbers, headings, the same caption in another figure).
 
+    >>> rich_runs("C2 = C2,3 (C1 folded)")[:4]          # a candidate's two indices, as its label prints them
+    (('C', False), ('2', True), (' = C', False), ('2,3', True))
     >>> rich_runs("φ_slow/φ_quick in 000-04_slotter_cam_psi0.toml")
     (('φ', False), ('slow', True), ('/φ', False), ('quick', True), (' in 000-04_slotter_cam_psi0.toml', False))
     """
