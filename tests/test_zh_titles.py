@@ -178,3 +178,25 @@ def test_no_title_line_of_a_sheet_in_both_languages_is_below_the_smallest_text()
     sizes = [float(t.get("font-size")) for t in ET.fromstring(svg).iter(f"{SVG}text")
              if "tb-0-0" in (t.get("class") or "")]
     assert len(sizes) == 2 and min(sizes) >= MIN_TEXT
+
+
+def test_a_worksheet_header_s_title_never_runs_into_its_exercise_line():
+    """The gallery's worksheet (both languages: "Linkages and cams — worksheet 3  连杆机构与凸轮机构——练习 3") and
+    a longer title: the title is set smaller or cut, and ends before "Exercise 题 1/3 · scale …" begins (it ran
+    over it once the Chinese title was added)."""
+    from geomcon.render.charts import text_boxes
+    from geomcon.worksheet import make_worksheet
+    from geomcon.worksheet.roster import numbered
+    from geomcon.worksheet.spec import load_spec
+
+    def overlaps(svg: str) -> bool:
+        head = re.search(r'<g id="header">.*?</g>', svg, re.S).group(0)
+        (tx0, _, tx1, _), (ex0, _, _, _) = text_boxes(head)[:2]
+        return tx0 + (tx1 - tx0) * 1.12 > ex0                      # the title is bold: 1.12 times as wide
+
+    pages = sorted((GALLERY / "worksheet").rglob("*.svg"))
+    assert pages and not [p.name for p in pages if overlaps(p.read_text(encoding="utf-8"))]
+    spec = load_spec(ROOT / "tests" / "data" / "worksheet_class.toml")
+    long = type(spec)(spec.name, spec.title * 3, spec.seed, spec.exercises, spec.sha256, spec.title_zh * 2)
+    files = make_worksheet(long, numbered(1), lang="both").files
+    assert not [k for k, v in files.items() if k.endswith(".svg") and overlaps(v)]

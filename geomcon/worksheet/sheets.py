@@ -239,13 +239,34 @@ def header_lines(p: Page, key: bool = False) -> tuple[str, str, str]:
     return title, exercise, who
 
 
+TITLE_SIZE = 4.5
+"""The header's title text size (mm); a long title is set smaller, down to 2.5 mm, then cut with …"""
+
+
+def title_fit(title: str, width: float) -> tuple[str, float]:
+    """The header's title and its size so that it fits ``width`` mm left of the exercise line (bold: 1.12 times
+    the regular estimate): :data:`TITLE_SIZE`, smaller down to 2.5 mm, then cut (a title in both languages ran
+    into "Exercise 题 1/3 · scale …").
+
+    >>> title_fit("Guide bar", 100.0)
+    ('Guide bar', 4.5)
+    >>> t, size = title_fit("Linkages and cams — worksheet 3  连杆机构与凸轮机构——练习 3", 95.0); size < 4.5
+    True
+    """
+    from ..render.page import fit_size, fitted
+    title = fitted(title, width, TITLE_SIZE, 1.12)
+    return title, fit_size(title, width / 1.12, TITLE_SIZE)
+
+
 def header(dwg: svgwrite.Drawing, p: Page, key: bool = False) -> Any:
     """Title, exercise, scale, name, id and variant code (in the page's language: :func:`header_lines`), and the
     statement."""
     x0, y0, x1, _ = p.lay.frame
     g = dwg.g(id="header")
     title, exercise, who = header_lines(p, key)
-    g.add(svg_text(dwg, title, x0 + 3, y0 + 6.5, 4.5, bold=True))
+    room = (x1 - 3) - text_width(exercise, 3.0) - 4.0 - (x0 + 3)       # the title ends 4 mm before the exercise line
+    title, size = title_fit(title, room)
+    g.add(svg_text(dwg, title, x0 + 3, y0 + 6.5, size, bold=True))
     g.add(svg_text(dwg, exercise, x1 - 3, y0 + 6.5, 3.0, anchor="end"))
     g.add(svg_text(dwg, who, x0 + 3, y0 + 12.5, 3.2))
     g.add(dwg.line((u(x0), u(y0 + HEADER_H - 1.5)), (u(x1), u(y0 + HEADER_H - 1.5)), stroke=INK,
