@@ -1,7 +1,8 @@
 """A worksheet spec: TOML, untrusted; parsed into small frozen value objects, or refused in one line.
 
-A spec holds a title, an optional seed and one ``[[exercise]]`` table per exercise (recipe, ``ask``, optional
-``points``, ``statement``, ``[exercise.given]``, ``[exercise.require]``). Each given is
+A spec holds a title (and optionally ``title_zh``, the Chinese title of zh pages), an optional seed and one
+``[[exercise]]`` table per exercise (recipe, ``ask``, optional ``points``, ``statement``, ``[exercise.given]``,
+``[exercise.require]``). Each given is
 
 - a **value** (fixed): ``psi = 40``, ``follower = "roller"``, ``program = [{kind = "rise", …}, …]``;
 - a **list** (one of): ``K = [1.2, 1.25, 1.4]``, ``follower = ["knife", "roller"]``; for a given that is itself a
