@@ -718,9 +718,7 @@ class Solution:
         pub = {r["quantity"]: r for r in self.published}
         zh = lang == "zh"
         lines = []
-        for q in self.recipe.answers:
-            if q.name not in self.answers:
-                continue
+        for q in self.sheet_answers():
             parts = _pairs(q.name, self.answers[q.name], self.answers[q.name])
             rows = [r for r in self.checks if any(r["quantity"] == name for name, _, _ in parts)]
             printed = []
@@ -744,6 +742,17 @@ class Solution:
                                      at=tuple(at or ()), given=self.problem.given))
         return lines
 
+    def sheet_answers(self) -> list[Any]:
+        """The answers (:class:`~geomcon.recipes.base.Quantity`) a figure prints, in the recipe's order: those
+        computed, less what :func:`~geomcon.render.results.on_sheet` leaves off (a knife edge's ρa,min and
+        undercut: its actual profile is the pitch curve) unless the textbook printed it. The JSON keeps them all."""
+        from .render.results import on_sheet
+
+        printed = {r["quantity"].split("[")[0] for r in self.published}
+        name, given = self.recipe.name, self.problem.given
+        return [q for q in self.recipe.answers
+                if q.name in self.answers and on_sheet(q.name, name, given, q.name in printed)]
+
     def listed_at(self) -> dict[str, tuple[float, ...]]:
         """The cam angles ``at`` of each list answer given at them (as :meth:`figure_lines` prints it: ``ψ(2°, 4°)``),
         by answer: a warning names a list's entry the same way (``ψ(6°)``, not ``psi[2]``)."""
@@ -751,7 +760,7 @@ class Solution:
         return {q.name: at for q in self.recipe.answers if at and "`at`" in q.doc}
 
     def info_steps(self) -> list[int]:
-        """The frame that produces each line of :meth:`info_lines` (an answer's step, or, for a problem with
+        """The frame that produces each line of :meth:`figure_lines` (an answer's step, or, for a problem with
         several candidate solutions, the last of its candidates' steps: a result never shows early; an answer
         no drawn step produces — computed from the givens alone — shows with the last frame; an answer the
         drawing constructs later than its inputs are known shows with the first step drawn from it,
@@ -761,11 +770,10 @@ class Solution:
         maps = self.construction.solutions or (self.construction.answers,)
         drawn = self.construction.answers
         out = []
-        for q in self.recipe.answers:
-            if q.name in self.answers:
-                k = sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
-                later = sc.drawn_from(drawn[q.name]) if q.name in drawn else None
-                out.append(k if later is None else max(k, later))
+        for q in self.sheet_answers():
+            k = sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
+            later = sc.drawn_from(drawn[q.name]) if q.name in drawn else None
+            out.append(k if later is None else max(k, later))
         return out
 
     def title(self, lang: str = "en") -> str:

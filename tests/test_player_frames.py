@@ -111,8 +111,8 @@ def test_a_result_shows_from_the_step_that_produces_it_and_a_warning_from_the_la
     sc = sol.drawing_scene
     n = len(sc.frames())
     maps = sol.construction.solutions or (sol.construction.answers,)
-    answers = [q.name for q in sol.recipe.answers if q.name in sol.answers]
-    for name, step in zip(answers, sol.info_steps()):
+    answers = [q.name for q in sol.sheet_answers()]          # a knife edge's ρa,min and undercut: not on it
+    for name, step in zip(answers, sol.info_steps(), strict=True):
         keys = [m[name] for m in maps if name in m]
         drawn = sc.drawn_from(sol.construction.answers[name]) if name in sol.construction.answers else None
         assert step == n or step == drawn or any(_depends_on_frame(sc, k, step) for k in keys), (pid, name, step)

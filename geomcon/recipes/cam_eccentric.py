@@ -92,7 +92,8 @@ GIVENS = (
 )
 ANSWERS = (
     Quantity("r0", "mm", "base circle radius of the pitch curve (knife, roller); of the profile (flat)"),
-    Quantity("r0_actual", "mm", "base circle radius of the actual profile (the disc), R − OA"),
+    Quantity("r0_actual", "mm", "base circle radius of the actual profile (the disc), R − OA; a knife edge's is r0 "
+             "(its figure prints r0 only)"),
     Quantity("h", "mm", "stroke of a translating follower"),
     Quantity("psi0", "deg", "oscillating: the arm's initial angle ∠OQ0B0"),
     Quantity("psi_max", "deg", "oscillating: angular stroke"),

@@ -240,6 +240,41 @@ def unit_text(unit: str) -> str:
     return UNITS[u] if u in UNITS else f" {u}"
 
 
+KNIFE_OFF_SHEET: dict[str, frozenset[str]] = {
+    "cam.translating": frozenset({"rho_min_actual", "undercut"}),
+    "cam.oscillating": frozenset({"rho_min_actual", "undercut"}),
+    "cam.eccentric": frozenset({"r0_actual"}),
+}
+"""The answers a knife-edge cam's figure does not print, by recipe: a knife edge has no roller, so its actual
+profile IS the pitch curve — ρa,min is ρmin (printed once, as the profile's), r0′ is r0, and it cannot undercut
+(``undercut`` is always false). The JSON keeps these answers (a public contract) with those values; a figure
+prints one that a problem's textbook printed (:func:`on_sheet`)."""
+
+KNIFE_NAMES: dict[str, AnswerName] = {
+    "rho_min_pitch": _n("ρmin", "profile (the pitch curve), least radius of curvature", "凸轮廓线最小曲率半径"),
+}
+"""A knife edge's printed names: its profile is the pitch curve (001-23a printed ρmin as the "pitch curve's" and
+ρa,min as the "actual profile's", the same number twice)."""
+
+
+def knife(given: Mapping[str, Any] | None) -> bool:
+    """Whether ``given`` describe a cam with a knife-edge follower."""
+    return given is not None and given.get("follower") == "knife"
+
+
+def on_sheet(answer: str, recipe: str, given: Mapping[str, Any] | None, printed: bool = False) -> bool:
+    """Whether a figure (its Results block, the player, the terminal's summary) prints ``answer``: not a knife
+    edge's ρa,min, r0′ or undercut (:data:`KNIFE_OFF_SHEET`), unless the textbook ``printed`` it.
+
+    >>> on_sheet("undercut", "cam.translating", {"follower": "knife"}), on_sheet("undercut", "cam.translating",
+    ...                                                                          {"follower": "roller"})
+    (False, True)
+    >>> on_sheet("rho_min_actual", "cam.oscillating", {"follower": "knife"}, printed=True)
+    True
+    """
+    return printed or not (knife(given) and answer in KNIFE_OFF_SHEET.get(recipe, ()))
+
+
 def name_of(answer: str, recipe: str = "", given: Mapping[str, Any] | None = None) -> AnswerName:
     """The printed name of ``answer`` (of ``recipe`` when it names it its own way: :data:`RECIPE_NAMES`; a
     fallback for a name not in :data:`NAMES`). With the problem's ``given``, a four-bar analysis names the link
@@ -253,6 +288,8 @@ def name_of(answer: str, recipe: str = "", given: Mapping[str, Any] | None = Non
     if recipe == "four_bar.analysis" and answer in ("input_crank", "output_crank") and given is not None:
         link = pivot_links(str(given.get("frame") or "AD"))[answer == "output_crank"]
         return _b(f"{link} is a crank", f"{link} 为曲柄")
+    if answer in KNIFE_NAMES and knife(given):
+        return KNIFE_NAMES[answer]
     return RECIPE_NAMES.get((recipe, answer)) or NAMES.get(answer) or AnswerName(answer.replace("_", " "), "", "")
 
 
@@ -500,5 +537,5 @@ def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[s
     return [f"{len(printed)} 个中 {n} 个存疑" if zh else f"{n} of {len(printed)} doubtful"]
 
 
-__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "NAMES", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed",
+__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "KNIFE_NAMES", "KNIFE_OFF_SHEET", "knife", "NAMES", "on_sheet", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed",
            "shown_value", "unit_text"]
