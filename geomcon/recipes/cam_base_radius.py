@@ -502,6 +502,20 @@ def same_point(p: Point) -> Point:
     return p
 
 
+def binding_words(binds: tuple) -> tuple[str, str]:
+    """The caption of the binding arms: what they are, and the key of their starred points K1* (K2*).
+
+    >>> binding_words((("rise", 10.0),))[0]
+    "The binding position of the arm, where the region's boundary passes through O: its point K1* (* marks a binding position)"
+    >>> binding_words((("rise", 10.0), ("return", 200.0)))[1]
+    '起作用的摆杆位置：可行域边界在该处通过 O，其 K 点为 K1*、K2*（* 标记起作用的位置）'
+    """
+    two = len(binds) > 1
+    return (f"The binding position{'s' if two else ''} of the arm, where the region's boundary passes through O: "
+            f"{'their points K1*, K2*' if two else 'its point K1*'} (* marks a binding position)",
+            f"起作用的摆杆位置：可行域边界在该处通过 O，其 K 点为 {'K1*、K2*' if two else 'K1*'}（* 标记起作用的位置）")
+
+
 def pick_position(binds: tuple[tuple[str, float], ...], j: int) -> tuple[str, float] | None:
     """The j-th binding position, or None."""
     return binds[j] if j < len(binds) else None
@@ -592,11 +606,12 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
     a = sc.add("a", length, O, A0, role=Role.MEASUREMENT, unit="mm", caption=("a = OA0", "中心距 a = OA0"))
     sc.add("OA0", segment, O, A0, style="frame")
     binds = sc.add("binding", binding_positions, prog, g, a, visible=False)
+    if sc.drawing:                              # the caption names the starred points there are (K1*, or K1*, K2*)
+        sc.add("bind_words", binding_words, binds, visible=False)
     for j in range(2):
         pos = sc.add(f"bind{j}", pick_position, binds, j, visible=False)
         sc.add(f"bind_arm{j}", binding_arm, A0, B0, motion, pos, style="link-alt", optional=True,
-               caption=("The binding position(s) of the arm, where the region's boundary passes through O",
-                        "起作用的摆杆位置:可行域边界在该处通过 O") if j == 0 else ("", ""))
+               caption=(Ref("bind_words") if sc.drawing else binding_words(((), ()))) if j == 0 else ("", ""))
         K = sc.add(f"bind_K{j}", binding_image, A0, B0, motion, pos, style="joint", label=f"K{j + 1}*", optional=True)
         sc.add(f"bind_line{j}", beyond, K, O, 0.25, style="admissible", optional=True)
         sc.add(f"bind_mark{j}", binding_mark, A0, B0, motion, pos, K, O, role=Role.ANNOTATION, style="angle",

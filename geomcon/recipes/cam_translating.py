@@ -539,8 +539,8 @@ def _mark_worst(sc: Scene, O, prog: Program, h: float, e: float, s0: float, inv:
         symbol = "αmax" if part == "rise" else "α′max"
         w = sc_ref(f"worst_{part}")
         P = sc.add(f"P_alpha_{part}", worst_point, O, prog, h, e, s0, inv, w, style="joint", label=name,
-                   caption=(f"The {part}'s largest pressure angle {symbol}: position {name}",
-                            f"{zh}最大压力角 {symbol} 的位置 {name}"))
+                   caption=(f"The {part}'s largest pressure angle {symbol}: position {name} (* marks the position of "
+                            "the largest α)", f"{zh}最大压力角 {symbol} 的位置 {name}(* 标记压力角最大的位置)"))
         n = sc.add(f"n_alpha_{part}", worst_normal, curve, w, visible=False)
         u = sc.add(f"u_alpha_{part}", worst_axis, inv, w, visible=False)
         size = 0.35 * r0

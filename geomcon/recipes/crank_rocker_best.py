@@ -76,8 +76,8 @@ def best_words(A: Point, D: Point, C1: Point, C2: Point) -> tuple[str, str]:
     near = near_flag(A, C1, C2, D)
     side = ("on D's side", "D 所在一侧") if near else ("on the far side", "远离 D 的一侧")
     g = gamma_min_of(A, D, C1, C2)
-    return (f"A* on the admissible arc {side[0]} of C1C2 where γmin is largest, {g:.2f}° (searched along the arcs)",
-            f"在可行弧段上搜索使 γmin 最大的 A*（{side[1]}，γmin = {g:.2f}°）")
+    return (f"A* on the admissible arc {side[0]} of C1C2 where γmin is largest, {g:.2f}° (searched along the arcs; "
+            f"* marks the best pivot)", f"在可行弧段上搜索使 γmin 最大的 A*（{side[1]}，γmin = {g:.2f}°；* 标记最佳的固定铰链）")
 
 
 def _ratio(AD: float, A: Point, D: Point) -> float:
@@ -102,8 +102,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
         arcs.append(sc.add(f"{pre}arcs", admissible_arcs, kT, C1, C2, D, AD, None, style="admissible",
                            caption=(f"Admissible arcs {en}: a crank, C1 and C2 on one side of AD",
                                     f"A 的可行弧段({zh})")))
-    words = ("A* on the admissible arcs where γmin is largest (searched along the arcs)",
-             "在可行弧段上搜索使 γmin 最大的 A*")
+    words = ("A* on the admissible arcs where γmin is largest (searched along the arcs; * marks the best pivot)",
+             "在可行弧段上搜索使 γmin 最大的 A*(* 标记最佳的固定铰链)")
     A = sc.add("A", best_on_arcs, D, C1, C2, *arcs, role=Role.RESULT, style="pivot", label="A*",
                caption=Ref("A_words") if sc.drawing else words)
     if sc.drawing:                           # which arc A* lies on and its γmin: computed once A* is found

@@ -130,9 +130,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
                caption=("Admissible arc QC1: every A on it gives K and H", "A 的可行弧 QC1:其上任一点均满足 K、H"))
     A = sc.add("A", best_on_arc, kT, Q, C1, C2, g.get("e_min") or 0.0, g.get("e_max"), role=Role.RESULT,
                style="pivot", label="A*",
-               caption=("A* on QC1 with the largest working-stroke γmin (golden-section search; the crank turns "
-                        "counter-clockwise so that C1 → C2 is the slow working stroke)",
-                        "在弧 QC1 上求工作行程最小传动角最大的点 A*(曲柄逆时针转,C1→C2 为慢速工作行程)"))
+               caption=("A* on QC1 with the largest working-stroke γmin (golden-section search; * marks the best "
+                        "pivot; the crank turns counter-clockwise so that C1 → C2 is the slow working stroke)",
+                        "在弧 QC1 上求工作行程最小传动角最大的点 A*(* 标记最佳的固定铰链;曲柄逆时针转,C1→C2 为慢速工作行程)"))
     finish_from_A(sc, A, C1, C2, gl, th, H)
     names = {q.name: q.name for q in ANSWERS}
     names["gamma_w_min"] = "gamma_min_slow"
