@@ -251,6 +251,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 caption=("It meets the base circle at B0: the arm's lowest position A0B0",
                          "交基圆于 B0,得摆杆起始位置 A0B0"))
     add_bar(sc, "arm0", A0, B0)
+    if roller and drawing:                  # the roller belongs to the follower: drawn with its arm (200-05 had none)
+        sc.add("roller_start", circle, B0, rr, style="link", role=Role.RESULT)
     psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
                   caption=("Measure ψ0 = ∠OA0B0", "量得初始摆角 ψ0 = ∠OA0B0"))
     add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0, 0.55 * L)   # clear of the inverted arms at A0 (000-04)

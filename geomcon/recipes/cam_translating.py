@@ -377,15 +377,25 @@ def inverted_face(B: Point, O: Point, fam: LineFamily, prog: Program, h: float, 
     return face_segment(B, O, inv, delta_deg, max(0.3 * r0, 0.1 * r0 - c), max(0.3 * r0, c + 0.1 * r0))
 
 
-def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr: float, r0: float, B0) -> None:
-    """The follower in its lowest position: stem, guide, roller or face."""
+def _start_follower(sc: Scene, follower: str, e: float, s0: float, h: float, rr: float, r0: float, B0,
+                    O=None, inv: float = 1.0, ext=None) -> None:
+    """The follower in its lowest position, all its parts in one step: stem, guide, and its roller or its face
+    (``ext``: the face's reach left and right of the axis, :func:`face_extents` — 200-02's face appeared at step
+    13, eight steps after its stem)."""
     top = Point(e, s0 + h + 0.55 * r0 + rr)
+    face = ("The follower in its lowest position, its face as wide as the contact reaches (lL left, lR right of "
+            "the axis: measured on the profile at the end)", "从动件处于最低位置,平底宽度取接触点的最远位置"
+            "(导路左侧 lL、右侧 lR,作出廓线后量得)")
     sc.add("stem", segment, B0 if follower != "roller" else Point(e, s0 + rr), top, style="link", role=Role.RESULT,
-           caption=("The follower in its lowest position", "从动件处于最低位置"))
+           caption=face if follower == "flat" else ("The follower in its lowest position", "从动件处于最低位置"))
     sc.add("guide", marks.bearing, Point(e, s0 + h + 0.35 * r0 + rr), Point(0.0, 1.0), role=Role.ANNOTATION,
            style="guide")                           # the stem's guide: one symbol for every cam
     if follower == "roller":
         sc.add("roller_start", circle, B0, rr, style="link", role=Role.RESULT)
+    if follower == "flat":                  # drawn as wide as the Results will say (lL, lR), with its stem
+        left = sc.add("face_left_drawn", pick, ext, 0, visible=False)
+        right = sc.add("face_right_drawn", pick, ext, 1, visible=False)
+        sc.add("face_start", face_segment, B0, O, inv, 0.0, left, right, style="link", role=Role.RESULT)
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
@@ -407,8 +417,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
                   caption=(f"B0: the follower's lowest point, on its axis x = e = {e:g}",
                            f"B0:从动件最低位置,导路 x = e = {e:g}"))
     drawing = sc.drawing                    # the follower, the s–δ diagram and the turned axes: drawing only
+    if flat:                                # the face's family and reach: the follower's face is drawn with it
+        fam = sc.given("faces", _face_family(prog, h, r0, inv), visible=False)
+        ext = sc.add("face_ext", face_extents, fam, prog, h, r0, e, inv, visible=False)
     if drawing:
-        _start_follower(sc, follower, e, s0, h, rr, r0, B0)
+        _start_follower(sc, follower, e, s0, h, rr, r0, B0, O, inv, ext if flat else None)
     divs = division_angles(prog)
     R = r0 + h + rr
     add_motion_diagram(sc, prog, h, Point(R + 0.45 * R, s0), 3.0 * R, 1.0, divs)
@@ -436,11 +449,6 @@ def construct(g: Mapping[str, Any]) -> Construction:
                "alpha_max_rise": "alpha_max_rise", "alpha_max_return": "alpha_max_return"}
     ret = prog.ret
     if flat:
-        fam = sc.given("faces", _face_family(prog, h, r0, inv), visible=False)
-        ext = sc.add("face_ext", face_extents, fam, prog, h, r0, e, inv, visible=False)
-        sc.add("face_width_left", pick, ext, 0, role=Role.MEASUREMENT, unit="mm", visible=False)
-        sc.add("face_width_right", pick, ext, 1, role=Role.MEASUREMENT, unit="mm", visible=False)
-        sc.add("face_width", sum, ext, role=Role.MEASUREMENT, unit="mm", visible=False)
         rho = sc.add("rho_flat", envelope_rho_min, fam, visible=False)
         sc.add("rho_min_actual", extremum_value, rho, role=Role.MEASUREMENT, unit="mm", visible=False)
         sc.add("convex", flat_convex, fam, rho, visible=False)
@@ -456,12 +464,15 @@ def construct(g: Mapping[str, Any]) -> Construction:
                    if i == 0 else ("", ""))
         add_profile_steps(sc, flat_profile, (fam, tol),
                           ("Draw the envelope of the faces: the actual profile", "作各平底直线的包络线,即凸轮的实际廓线"))
-        if drawing:                         # the face drawn as wide as the Results say: lL left, lR right of the axis
-            sc.add("face_start", face_segment, B0, O, inv, 0.0, Ref("face_width_left"), Ref("face_width_right"),
-                   style="link", role=Role.RESULT,
-                   caption=("The contact's farthest reach on the envelope, lL left and lR right of the axis: the "
-                            "face in its lowest position, drawn that wide", "在包络线上量得接触点距导路的最远距离:"
-                            "左侧 lL、右侧 lR;按此宽度画出最低位置的平底"))
+        # measured once the envelope is drawn (the face drawn with its stem is that wide): shown at this step
+        sc.add("face_width_left", pick, ext, 0, role=Role.MEASUREMENT, unit="mm",
+               caption=("lL: the contact's farthest reach left of the axis, measured on the envelope",
+                        "在包络线上量得接触点在导路左侧的最远距离 lL"))
+        sc.add("face_width_right", pick, ext, 1, role=Role.MEASUREMENT, unit="mm",
+               caption=("lR: its farthest reach right of the axis", "接触点在导路右侧的最远距离 lR"))
+        sc.add("face_width", sum, ext, role=Role.MEASUREMENT, unit="mm",
+               caption=("L = lL + lR: the face's width, as drawn in the lowest position",
+                        "平底宽度 L = lL + lR(最低位置的平底按此宽度画出)"))
         if at:
             sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
             sc.add("alpha", flat_alphas_at, fam, inv, at, visible=False)
