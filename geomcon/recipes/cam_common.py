@@ -200,6 +200,34 @@ def pressure_mark(P: Point, normal: Point, velocity: Point, value: float, size: 
     return marks.AngleMark(P, P + n * size, P + velocity.unit() * size, symbol, value, None)
 
 
+def pressure_mark_clear(P: Point, normal: Point, velocity: Point, value: float, size: float, symbol: str,
+                        centre: Point, r0: float, gap: float) -> marks.AngleMark:
+    """:func:`pressure_mark`, its arc kept ``gap`` (model mm) off the base circle (``centre``, ``r0``): where the arc
+    the renderer would draw (about 0.6·``size`` from P) runs along the base circle within ``gap`` — 200-06's α′max
+    arc ran nearly tangent to it, 0.2 mm inside — it is drawn at the nearest radius from 0.6 to 1.4·``size`` that
+    keeps ``gap`` off it all along (within the drawn normal and velocity lines); else as the renderer chooses.
+
+    >>> B, n, v = Point(53.48, 7.0), Point(-17.78, -16.12), Point(-23.47, -5.01)        # 200-06's return
+    >>> round(pressure_mark_clear(B, n, v, 30.15, 24.0, "α′max", Point(0.0, 0.0), 40.0, 4.0).radius, 1)
+    26.4
+    >>> pressure_mark_clear(B, n, v, 30.15, 24.0, "α′max", Point(0.0, 0.0), 20.0, 4.0).radius is None   # clear
+    True
+    """
+    m = pressure_mark(P, normal, velocity, value, size, symbol)
+    a0 = math.atan2(m.a.y - P.y, m.a.x - P.x)
+    sweep = (math.atan2(m.b.y - P.y, m.b.x - P.x) - a0 + math.pi) % (2 * math.pi) - math.pi
+    t = a0 + sweep * np.linspace(0.0, 1.0, 33)
+
+    def clearance(rho: float) -> float:
+        return float(np.min(np.abs(np.hypot(P.x + rho * np.cos(t) - centre.x, P.y + rho * np.sin(t) - centre.y) - r0)))
+    if clearance(0.6 * size) >= gap:
+        return m
+    for k in sorted((0.6 + 0.1 * i for i in range(9)), key=lambda k: abs(k - 0.6)):
+        if clearance(k * size) >= gap:
+            return marks.AngleMark(m.vertex, m.a, m.b, symbol, value, k * size)
+    return m
+
+
 def normal_segment(P: Point, normal: Point, size: float) -> Segment:
     """The common normal through P, ``size`` either side."""
     n = normal.unit() * size

@@ -33,7 +33,7 @@ from .cam_common import (ARM_SPEED_ANSWERS, OMEGA, PRESSURE_ANSWERS, add_speed_s
                          add_cam_centre, add_motion_diagram, add_profile_steps, add_roller_circles, arm_division_angles,
                          arm_at, arm_contacts, arm_pressures, arm_velocity, at_least, collect, column,
                          extremum_value, laid_off, minus, normal_segment, pick, place_deg,
-                         pitch_polyline, pressure_mark, profile_tolerance, program_of, speed_ratio, turned,
+                         pitch_polyline, pressure_mark_clear, profile_tolerance, program_of, speed_ratio, turned,
                          velocity_segment)
 from .cam_oscillating_flat import advise_flat, analytic_flat, construct_flat, validate_flat
 from .common import add_angle_mark, add_bar, add_pivot, angle_deg
@@ -327,8 +327,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
                              + ("α_max" if part == "rise" else "α′_max"),
                              f"法线与 B 点速度方向(⊥ A0′B)之夹角:{zh}最大压力角"))
         if drawing:
-            sc.add(f"mark_alpha_{part}", pressure_mark, B, n, v, al, 0.3 * L, "αmax" if part == "rise" else "α′max",
-                   role=Role.ANNOTATION, style="angle")
+            sc.add(f"mark_alpha_{part}", pressure_mark_clear, B, n, v, al, 0.3 * L,
+                   "αmax" if part == "rise" else "α′max", O, r0, 0.05 * L, role=Role.ANNOTATION, style="angle")
         answers[f"alpha_max_{part}"] = f"alpha_max_{part}"
         answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
     at = tuple(g.get("at") or ())
