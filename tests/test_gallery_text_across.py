@@ -32,10 +32,14 @@ another step's pin: nearer, the text's white halo cuts into the line (200-05's �
 
 KNOWN_ACROSS: dict[str, str] = {
     "001-31_eccentric_oscillating_roller": "E0, the contact point, where the roller (r 5 mm at 1:2) touches the "
-                                           "disc (r 20 mm): the gap between them is 1.1 mm 3 mm from E0, narrower "
-                                           "than E0's 3.4 mm label, so every place within 3 mm of E0 is on the "
-                                           "profile (best, score -3.1), on the roller or α's arc, or inside ω's "
-                                           "arc below; its leader form finds none better within 10 mm",
+                                           "disc (r 20 mm), 10 mm from O: E0's box (3.8 × 3.3 mm) meets the disc "
+                                           "it lies on. Every place within 3 mm of E0 is on the profile (best, "
+                                           "score -3.1), on the roller or α's arc, or in ω's arc (drawn above O by "
+                                           "rule, 6.5 mm); the nearest box clear of every link and of ω's arc is 5 "
+                                           "mm below E0 inside the disc (hcam11k, with this file's shapes), which "
+                                           "the leader form does not take. 1:2 is the largest standard scale on A4 "
+                                           "(either way); on A3 at 1:1 E0 comes clear (α=33.20° then touches the "
+                                           "roller): left for the placer's leaders",
     "004-02_best_by_K_1_2_offset_limit": "C1, the pin in its slider block 6.5 mm right of A* at 1:5, on A's "
                                          "ground hatch and the guide's (best score -10.8, its leader form's too): "
                                          "right of it lie E, B2 and the block, above E's and A*'s labels; below the "
@@ -43,8 +47,13 @@ KNOWN_ACROSS: dict[str, str] = {
                                          "crosses the guide. The detail view at 1:2.5 shows C1 clear, below the "
                                          "guide with a leader",
     "200-03_cam_roller_undercut": "B1* lies 0.47 mm inside the start roller (r 10 mm at 1:2, B1* 9.53 mm from "
-                                  "B0), which runs through its pin: every place within 3 mm of it meets that roller "
-                                  "or the divisions' dashed rollers (best score -7.6; its leader form -7.8)",
+                                  "B0), which runs through its pin: B1*'s box touches the roller's outline. Every "
+                                  "place within 3 mm of it meets that roller or the divisions' dashed rollers "
+                                  "(best score -7.6; its leader form -7.8); the nearest box clear of every link is 4 "
+                                  "mm down-left, inside the start roller among B0, 1′ and the dashed rollers "
+                                  "(hcam11k). Drawn alone (its diagram on sheet 2) the cam does not fit A4 at 1:1, so "
+                                  "1:2 stays (its s–δ diagram on sheet 1); on A3 it draws at 1:1 and B1* is clear "
+                                  "(`geomcon solve … --paper A3`)",
 }
 """Sheet-1 figures (by name) where a text still meets a link, block, ground or pin, and why: the list may only
 shrink (a listed figure that is clean fails, so that it leaves the list)."""
