@@ -25,7 +25,7 @@ def _solution(stem: str):
 
 def _row_steps(stem: str) -> dict[str, int]:
     sol = _solution(stem)
-    return dict(zip([q.name for q in sol.recipe.answers if q.name in sol.answers], sol.info_steps()))
+    return dict(zip([q.name for q in sol.sheet_answers()], sol.info_steps()))
 
 
 def _step_of(stem: str, start: str) -> int:
