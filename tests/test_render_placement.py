@@ -12,13 +12,16 @@ import pytest
 import shapely
 from shapely import affinity
 
+from geomcon.render.boxdisc import disc_gap, discs
 from geomcon.render.symbols import MARK_DISTANCES
 from geomcon.render.clearance import CROSS, NEAR, NEAR_WEIGHT
 from geomcon.render.placement import AMBIGUOUS, DISTANCES, ENOUGH, LABEL_DISTANCES, FAR_PENALTY, Placer, Request, directions, half_extent
 
 
 class ReferencePlacer:
-    """Every candidate scored by its own shapely calls, in order (the placer before vectorisation)."""
+    """Every candidate scored by its own shapely calls, in order (the placer before vectorisation); a marker's
+    disc (GEOS's 32-gon) measured as the circle it stands for, by its centre's distance and the area shared
+    (:func:`.boxdisc.disc_gap`, checked against a fine polygon by GEOS below)."""
 
     def __init__(self, obstacles, frame):
         self._geoms = np.array([o[0] for o in obstacles], dtype=object)
@@ -28,8 +31,25 @@ class ReferencePlacer:
         self._own = np.array([o[4] if len(o) > 4 else w for o, w in zip(obstacles, self._weight)], dtype=float)
         self._halo = np.array([o[5] if len(o) > 5 else w >= NEAR_WEIGHT for o, w in zip(obstacles, self._weight)])
         self._tree = shapely.STRtree(self._geoms) if len(self._geoms) else None
+        i, cx, cy, r = discs(self._geoms)
+        self._discs = dict(zip(i.tolist(), zip(cx.tolist(), cy.tolist(), r.tolist())))
         self._placed = []
         self._frame = frame
+
+    def _apart(self, box, i):
+        """Distance from ``box`` to obstacle ``i`` (a disc's: to its circle, negative inside)."""
+        return disc_gap(box, *self._discs[i])[0] if i in self._discs else box.distance(self._geoms[i])
+
+    def _meets(self, box, i):
+        return self._apart(box, i) <= 0.0 if i in self._discs else box.intersects(self._geoms[i])
+
+    def _disc_gaps(self, box, idx):
+        out = self._gaps(box, self._geoms[idx])
+        for j, i in enumerate(idx.tolist()):
+            if i in self._discs:
+                apart, area = disc_gap(box, *self._discs[i])
+                out[j] = apart if apart > 0.0 else -min(2.0, 0.3 * (2.0 * math.sqrt(area)))
+        return out
 
     @staticmethod
     def _gaps(box, geoms):
@@ -50,13 +70,13 @@ class ReferencePlacer:
             idx = self._tree.query(near)
             idx = np.sort(idx[self._owners[idx] != owner])
             if len(idx):
-                best = min(best, float(np.min(self._gaps(box, self._geoms[idx]) + self._allow[idx])))
+                best = min(best, float(np.min(self._disc_gaps(box, idx) + self._allow[idx])))
         if self._placed:
             best = min(best, float(np.min(self._gaps(box, np.array(self._placed, dtype=object)))))
-        crossed = [m if o == owner else w for g, o, w, m in zip(self._geoms, self._owners, self._weight, self._own)
-                   if (m if o == owner else w) > 0.0 and box.intersects(g)]
-        halo = [w for g, o, w, h in zip(self._geoms, self._owners, self._weight, self._halo)
-                if h and o != owner and not box.intersects(g) and box.distance(g) <= NEAR]
+        crossed = [m if o == owner else w for i, (o, w, m) in enumerate(zip(self._owners, self._weight, self._own))
+                   if (m if o == owner else w) > 0.0 and self._meets(box, i)]
+        halo = [w for i, (o, w, h) in enumerate(zip(self._owners, self._weight, self._halo))
+                if h and o != owner and not self._meets(box, i) and self._apart(box, i) <= NEAR]
         return best - CROSS * (sum(crossed) + max(halo, default=0.0))  # every line it crosses, its own step's
         # too, and the heaviest link, pin or ground of another step it comes within NEAR of (its halo into it)
 

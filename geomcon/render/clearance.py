@@ -30,6 +30,7 @@ from typing import Sequence
 import numpy as np
 import shapely
 
+from .boxdisc import box_disc, disc_gap, discs
 from .boxgeom import box_point, box_segment, inside_length
 
 ENOUGH = 1.6
@@ -317,12 +318,20 @@ class Layer:
         self.codes: dict[str, int] = {}
         self._parts: list[tuple[np.ndarray, ...]] = []
         self._arrays: tuple[np.ndarray, ...] | None = None
+        self._disc_parts: list[tuple[np.ndarray, ...]] = []
+        self._discs: tuple[np.ndarray, ...] | None = None
+        self._round: dict[int, tuple[float, float, float]] = {}     # a disc's centre and radius, by geometry
         self._simple: dict[int, bool] = {}
         self._rects: dict[int, tuple[float, ...] | None] = {}      # :meth:`_rect`
         self.extend(geoms, owners, allow, weight, own, halo)
         self.tree = None
-        if index and len(self.arrays()[0]):
-            self.tree = shapely.STRtree(_diagonals(*self.arrays()[:4]))
+        self._indexed = 0                                       # segments in the tree (the discs follow)
+        if index and len(self.arrays()[0]) + len(self.discs()[0]):
+            ax, ay, bx, by = self.arrays()[:4]
+            cx, cy, r, _ = self.discs()
+            self._indexed = len(ax)
+            self.tree = shapely.STRtree(_diagonals(np.concatenate([ax, cx - r]), np.concatenate([ay, cy - r]),
+                                                   np.concatenate([bx, cx + r]), np.concatenate([by, cy + r])))
 
     def code(self, owner: str | None) -> int:
         """The code of an owner's name (-1 for none or one that drew nothing here)."""
@@ -347,7 +356,18 @@ class Layer:
         weighed = np.array(weight, dtype=float) if weight is not None else np.zeros(n)
         mine = np.array(own, dtype=float) if own is not None else weighed
         haloed = np.array(halo, dtype=bool) if halo is not None else weighed >= NEAR_WEIGHT
-        parts, whole = shapely.get_parts(g, return_index=True)
+        round_, cx, cy, r = discs(g)                            # a marker: measured whole, as a circle
+        if len(round_):
+            self._disc_parts.append((cx, cy, r, round_ + n0))
+            self._discs = None
+            self._round.update(zip((round_ + n0).tolist(), zip(cx.tolist(), cy.tolist(), r.tolist())))
+            g_parts = np.delete(g, round_)
+            whole_of = np.delete(np.arange(n), round_)
+        else:
+            g_parts, whole_of = g, None
+        parts, whole = shapely.get_parts(g_parts, return_index=True)
+        if whole_of is not None:
+            whole = whole_of[whole]
         areal = shapely.get_dimensions(parts) == 2
         lines, owner = parts, whole
         if areal.any():                                         # an area by its rings
@@ -364,10 +384,12 @@ class Layer:
         simple = np.where((types == 0) | ((types == 1) & (shapely.get_num_coordinates(g) <= 2)), 1, -1)
         simple[shapely.get_dimensions(g) == 2] = 0              # an area: what a box covers of it by GEOS
         simple[(types > 1) & (types != 3)] = 0
+        simple[round_] = 1                                      # a disc: what a box covers of it in closed form
+        ringed = shapely.get_dimensions(g) == 2
+        ringed[round_] = False
         self._parts.append((a[:, 0].copy(), a[:, 1].copy(), b[:, 0].copy(), b[:, 1].copy(), parent,
                             np.array(codes, dtype=np.intp), allowed, shapely.bounds(g).reshape(-1, 4),
-                            shapely.get_dimensions(g) == 2, simple.astype(np.int8), weighed, mine,
-                            haloed))
+                            ringed, simple.astype(np.int8), weighed, mine, haloed))
         self._arrays = None
 
     def arrays(self) -> tuple[np.ndarray, ...]:
@@ -385,6 +407,17 @@ class Layer:
                 self._parts = [self._arrays]
         return self._arrays
 
+    def discs(self) -> tuple[np.ndarray, ...]:
+        """The discs' (:func:`.boxdisc.discs`) centres (cx, cy), radii and geometry."""
+        if self._discs is None:
+            if not self._disc_parts:
+                z = np.zeros(0)
+                self._discs = (z, z, z, _NONE)
+            else:
+                self._discs = tuple(np.concatenate(c) for c in zip(*self._disc_parts))
+                self._disc_parts = [self._discs]
+        return self._discs
+
     def _simple_of(self, parents: np.ndarray) -> np.ndarray:
         """Whether each geometry of ``parents`` is simple (what a box covers of it is the sum of what it covers of
         its segments): points and line strings that do not overlap themselves."""
@@ -398,42 +431,94 @@ class Layer:
             of = simple[parents]
         return of == 1
 
-    def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(box, segment) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by the
-        tree, or each box's bounds against those of the segments of the geometries near all the boxes: a pair
-        farther apart cannot lower a clearance below :data:`ENOUGH`, nor meet), not of a box's own step unless counted
-        (a crossing weight); and whether each pair is of the box's own step."""
+    def pairs(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(box, segment or disc) pairs, sorted by box, whose bounds come within :data:`REACH` of each other (by
+        the tree, or each box's bounds against those of the segments and discs of the geometries near all the
+        boxes: a pair farther apart cannot lower a clearance below :data:`ENOUGH`, nor meet), not of a box's own
+        step unless counted (a crossing weight): box ``k``, segment ``s`` (a disc's number where ``disc``:
+        :meth:`discs`), the geometry of each and whether it is of the box's own step."""
         ax, ay, bx, by, parent, owner, _, bounds, _, _, _, own, _ = self.arrays()
-        if not len(ax) or not len(boxes):
-            return _NONE, _NONE, _NO
+        cx, cy, r, cparent = self.discs()
+        if not len(ax) + len(cx) or not len(boxes):
+            return _NONE, _NONE, _NONE, _NO, _NO
         if self.tree is not None:
             k, s = self.tree.query(_diagonals(boxes.x0 - REACH, boxes.y0 - REACH, boxes.x1 + REACH, boxes.y1 + REACH))
+            disc = s >= self._indexed
+            s = np.where(disc, s - self._indexed, s)
         else:
             x0, y0 = boxes.x0.min() - REACH, boxes.y0.min() - REACH
             x1, y1 = boxes.x1.max() + REACH, boxes.y1.max() + REACH
             near = (bounds[:, 0] <= x1) & (x0 <= bounds[:, 2]) & (bounds[:, 1] <= y1) & (y0 <= bounds[:, 3])
-            s1 = np.flatnonzero(near[parent])
-            if not len(s1):
-                return _NONE, _NONE, _NO
-            sx0, sx1 = np.minimum(ax[s1], bx[s1]), np.maximum(ax[s1], bx[s1])      # each box, the segments near it
-            sy0, sy1 = np.minimum(ay[s1], by[s1]), np.maximum(ay[s1], by[s1])
-            close = ((sx0 <= (boxes.x1 + REACH)[:, None]) & ((boxes.x0 - REACH)[:, None] <= sx1)
-                     & (sy0 <= (boxes.y1 + REACH)[:, None]) & ((boxes.y0 - REACH)[:, None] <= sy1))
-            k, j = np.nonzero(close)
-            s = s1[j]
-        p = parent[s]
+            found = []
+            for sx0, sy0, sx1, sy1, of in ((np.minimum(ax, bx), np.minimum(ay, by), np.maximum(ax, bx),
+                                            np.maximum(ay, by), parent), (cx - r, cy - r, cx + r, cy + r, cparent)):
+                s1 = np.flatnonzero(near[of])               # each box, the segments (discs) near it
+                if not len(s1):
+                    found.append((_NONE, _NONE))
+                    continue
+                close = ((sx0[s1] <= (boxes.x1 + REACH)[:, None]) & ((boxes.x0 - REACH)[:, None] <= sx1[s1])
+                         & (sy0[s1] <= (boxes.y1 + REACH)[:, None]) & ((boxes.y0 - REACH)[:, None] <= sy1[s1]))
+                k, j = np.nonzero(close)
+                found.append((k, s1[j]))
+            (k, s), (kd, sd) = found
+            disc = np.zeros(len(k) + len(kd), dtype=bool)
+            if len(kd):
+                disc[len(k):] = True
+                order = np.argsort(np.concatenate([k, kd]), kind="stable")
+                k, s, disc = np.concatenate([k, kd])[order], np.concatenate([s, sd])[order], disc[order]
+            if not len(k):
+                return _NONE, _NONE, _NONE, _NO, _NO
+        if disc.any():
+            p = np.empty(len(s), dtype=np.intp)
+            p[disc], p[~disc] = cparent[s[disc]], parent[s[~disc]]
+        else:
+            p = parent[s]
         o = owner[p]
         mine = (o == boxes.owner[k]) & (o >= 0)
         keep = ~mine | (own[p] > 0.0)
-        return k[keep], s[keep], mine[keep]
+        return k[keep], s[keep], p[keep], mine[keep], disc[keep]
+
+    def _distances(self, boxes: Boxes, k: np.ndarray, s: np.ndarray, disc: np.ndarray, wanted: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """For each pair (:meth:`pairs`): the distance between its box and its segment or disc, whether they
+        meet, and what the box covers of it where ``wanted`` (the length of a segment inside it; of a disc, twice
+        the root of the area they share: :func:`covering`'s measure of an area)."""
+        ax, ay, bx, by = self.arrays()[:4]
+        if not disc.any():
+            return pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s], wanted)
+        cx, cy, r, _ = self.discs()
+        n = len(k)
+        d, hit, inside = np.empty(n), np.empty(n, dtype=bool), np.empty(n)
+        seg = np.flatnonzero(~disc)
+        if len(seg):
+            ss = s[seg]
+            d[seg], hit[seg], inside[seg] = pair_distance(boxes, k[seg], ax[ss], ay[ss], bx[ss], by[ss],
+                                                          wanted[seg])
+        round_ = np.flatnonzero(disc)
+        kd, sd = k[round_], s[round_]
+        px, py = cx[sd], cy[sd]
+        x0, y0, x1, y1 = boxes.x0[kd], boxes.y0[kd], boxes.x1[kd], boxes.y1[kd]
+        turned = boxes.sin[kd] != 0.0
+        if turned.any():                                # a turned box in its own frame: the centre turned back
+            t = np.flatnonzero(turned)
+            kt = kd[t]
+            c, sn = boxes.cos[kt], boxes.sin[kt]
+            ux, uy = px[t] - boxes.cx[kt], py[t] - boxes.cy[kt]
+            px, py = px.copy(), py.copy()
+            px[t], py[t] = ux * c + uy * sn, uy * c - ux * sn
+            x0, y0, x1, y1 = x0.copy(), y0.copy(), x1.copy(), y1.copy()
+            x0[t], y0[t], x1[t], y1[t] = -boxes.hw[kt], -boxes.hh[kt], boxes.hw[kt], boxes.hh[kt]
+        dd, area = box_disc(x0, y0, x1, y1, px, py, r[sd])
+        d[round_], hit[round_] = dd, dd == 0.0
+        inside[round_] = np.where(wanted[round_], 2.0 * np.sqrt(area), 0.0)
+        return d, hit, inside
 
     def measure(self, boxes: Boxes) -> Measured:
         """The clearances of ``boxes`` from this layer's geometries (not those of a box's own step)."""
-        ax, ay, bx, by, parent, _, allow, _, _, simple, weight, own, halo = self.arrays()
+        _, _, _, _, _, _, allow, _, _, simple, weight, own, halo = self.arrays()
         n = len(boxes)
-        k, s, mine = self.pairs(boxes)
-        p = parent[s]               # what a box covers is summed for other steps' geometries not known complex
-        d, hit, inside = pair_distance(boxes, k, ax[s], ay[s], bx[s], by[s], ~mine & (simple[p] != 0))
+        k, s, p, mine, disc = self.pairs(boxes)     # what a box covers: of other steps' geometries not known complex
+        d, hit, inside = self._distances(boxes, k, s, disc, ~mine & (simple[p] != 0))
         known = np.full(n, ENOUGH)
         cross = np.zeros(n)
         if mine.any():                                          # its own step's: crossings only
@@ -484,8 +569,28 @@ class Layer:
         geoms = np.empty(len(idx), dtype=object)
         geoms[:] = [self.geoms[i] for i in idx.tolist()]
         met = shapely.intersects(box, geoms)
-        near = ~met & ~mine[idx] & halo[idx] & shapely.dwithin(box, geoms, NEAR)
+        within = shapely.dwithin(box, geoms, NEAR)
+        for j, i in enumerate(idx.tolist()):                # a disc: as the circle it stands for
+            if i in self._round:
+                apart = disc_gap(box, *self._round[i])[0]
+                met[j], within[j] = apart <= 0.0, apart <= NEAR
+        near = ~met & ~mine[idx] & halo[idx] & within
         return CROSS * (float(w[idx][met].sum()) + float(w[idx][near].max(initial=0.0)))
+
+    def gaps(self, box: shapely.Geometry, idx: np.ndarray) -> np.ndarray:
+        """:func:`gaps` of ``box`` and the geometries ``idx``, a disc as the circle it stands for
+        (:func:`.boxdisc.disc_gap`): the definition :meth:`measure` follows."""
+        out = np.empty(len(idx))
+        rest = [j for j, i in enumerate(idx.tolist()) if i not in self._round]
+        if rest:
+            geoms = np.empty(len(rest), dtype=object)
+            geoms[:] = [self.geoms[i] for i in idx[rest].tolist()]
+            out[rest] = gaps(box, geoms)
+        for j, i in enumerate(idx.tolist()):
+            if i in self._round:
+                apart, area = disc_gap(box, *self._round[i])
+                out[j] = apart if apart > 0.0 else -min(2.0, 0.3 * (2.0 * math.sqrt(area)))
+        return out
 
     def _contained(self, boxes: Boxes) -> tuple[np.ndarray, np.ndarray]:
         """(box, area) pairs, sorted by box, where the box lies within the area's bounds and meets the area (by

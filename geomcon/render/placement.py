@@ -395,11 +395,12 @@ class Placer:
         best = ENOUGH
         codes, allow = self._fixed.arrays()[5:7]
         keep = np.flatnonzero(codes != self._fixed.code(owner))
-        for geoms, plus in (([self._fixed.geoms[i] for i in keep.tolist()], allow[keep]), (self._placed.geoms, 0.0)):
-            if geoms:
-                g = np.empty(len(geoms), dtype=object)
-                g[:] = geoms
-                best = min(best, float(np.min(gaps(box, g) + plus)))
+        if len(keep):                                   # a marker's disc as the circle it stands for
+            best = min(best, float(np.min(self._fixed.gaps(box, keep) + allow[keep])))
+        if self._placed.geoms:
+            g = np.empty(len(self._placed.geoms), dtype=object)
+            g[:] = self._placed.geoms
+            best = min(best, float(np.min(gaps(box, g))))
         return best - self._fixed.crossing(box, owner)
 
     def best(self, req: Request, owner: str) -> tuple[XY, float]:
