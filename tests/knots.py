@@ -100,9 +100,11 @@ def _label(cls: str, attrs: str, body: str) -> tuple[str, tuple[float, float, fl
     w, h = text_width(tuple(runs), size) + 0.3, size * (0.95 if sub else 0.74)
     anchor = _attr(attrs, "text-anchor", "start")
     x0 = x - w / 2 if anchor == "middle" else x - w if anchor == "end" else x - 0.15
-    if runs[0][0] in JOINS:                              # ", C4": the name begins after its sign
-        x0 += text_width(runs[0][0], size)
-        runs = runs[1:]
+    if runs[0][0] in JOINS:                              # ", C4": the name begins after its sign (the box
+        sign = text_width(runs[0][0], size)              # shifted by it, it ran the sign's width past the name)
+        x0, w, runs = x0 + sign, w - sign, runs[1:]
+    elif runs[-1][0] in JOINS:                           # read backwards, "C4, ": the name ends before it
+        w, runs = w - text_width(runs[-1][0], size), runs[:-1]
     cy = y - h / 2 + (0.24 * size if sub else 0.0)
     return "".join(t for t, _ in runs), (x0, cy - h / 2, x0 + w, cy + h / 2)
 

@@ -13,10 +13,11 @@ run on its guide), in the mechanism's detail at 1:2.5, which draws C1, its block
 (:func:`geomcon.render.detail.crowding`). The layout tries every window offered (its scales,
 a narrower margin, up to :data:`geomcon.render.svg.PLACES` free boxes) before it gives one up.
 
-The figures in :data:`KNOWN` are still crowded; their count of knots may only shrink. Why they stay:
+The figures in :data:`KNOWN` are still crowded; their count of knots may only shrink. Why they stay (none now):
 
-- 004-02 (K = 1.5, at 1:2): "M" and "C4" found no clear place as one label and print apart (text placement's
-  choices).
+- (cleared) 004-02 (K = 1.5, at 1:2): "B2, C4" above C4's pin, M's own label beside M, 7.3 mm right: ", C4" lies
+  3.97 mm from C4 and 4.48 mm from M, but the rule measured a joined part's name shifted right by its sign's width
+  (2.0 mm past its ink) instead of without it, 2.7 mm from M (hlast11: :func:`knots._label`).
 - (cleared) 004-02 (K 1.2): its detail view's C1 printed on its slider block, now below the guide with a leader
   (a point's label across a link, block, ground or pin takes its leader form when that is clear of them:
   hacross11l); 001-21's N and 004-01's C1 were cleared when text placement came to weigh a block as a link
@@ -40,9 +41,7 @@ from knots import CIRCLE, GROUP, MARKER, SAME_SPOT, TEXT, _label, knots
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 SHEETS = sorted(f for f in GALLERY.glob("*.svg") if not f.stem.endswith(("-2", "-3", "-4", "-5", "_motion"))
                 and not f.name.startswith(("grading_", "bench_")))
-KNOWN = {
-    "004-02_best_by_K_1_5": 1,
-}
+KNOWN: dict[str, int] = {}
 """Sheets still crowded, with the number of knots each may have at most (it may only shrink)."""
 
 
@@ -260,3 +259,15 @@ def test_a_block_meeting_a_pin_is_read_in_the_detail_that_sets_them_apart():
         ["slider s1 meets pin P", "detail-slider s1 meets pin P"]
     no_block = _block_and_pin("detail-", 6.0).replace("detail-step-s1", "detail-step-s2")
     assert [k.what for k in knots(main + no_block)] == ["slider s1 meets pin P"]
+
+
+def test_a_joined_parts_name_is_measured_without_its_sign():
+    # ", C4" (a part of "B2, C4"): its name's box is the name's ink, not shifted right by the sign's width; so
+    # measured, 004-02 (K 1.5)'s C4 lay 2.7 mm from M (its own point 3.97 mm) where its ink lies 4.48 mm off
+    size = 3.6
+    attrs = f'font-size="{size}" x="97.974" y="110.627"'
+    name, box = _label("label", attrs, '<tspan>, </tspan><tspan>C</tspan><tspan dy="0.792" font-size="2.592">4</tspan>')
+    whole = _label("label", attrs, '<tspan>C</tspan><tspan dy="0.792" font-size="2.592">4</tspan>')[1]
+    assert name == "C4" and box[2] - box[0] == pytest.approx(whole[2] - whole[0], abs=0.05)
+    back = _label("label", attrs, '<tspan>C</tspan><tspan dy="0.792" font-size="2.592">4</tspan><tspan>, </tspan>')
+    assert back == ("C4", whole)
