@@ -31,15 +31,6 @@ CLEAR = 0.2
 another step's pin: nearer, the text's white halo cuts into the line (200-05's α′max under O's ground)."""
 
 KNOWN_ACROSS: dict[str, str] = {
-    "001-31_eccentric_oscillating_roller": "E0, the contact point, where the roller (r 5 mm at 1:2) touches the "
-                                           "disc (r 20 mm), 10 mm from O: E0's box (3.8 × 3.3 mm) meets the disc "
-                                           "it lies on. Every place within 3 mm of E0 is on the profile (best, "
-                                           "score -3.1), on the roller or α's arc, or in ω's arc (drawn above O by "
-                                           "rule, 6.5 mm); the nearest box clear of every link and of ω's arc is 5 "
-                                           "mm below E0 inside the disc (hcam11k, with this file's shapes), which "
-                                           "the leader form does not take. 1:2 is the largest standard scale on A4 "
-                                           "(either way); on A3 at 1:1 E0 comes clear (α=33.20° then touches the "
-                                           "roller): left for the placer's leaders",
     "004-02_best_by_K_1_2_offset_limit": "C1, the pin in its slider block 6.5 mm right of A* at 1:5, on A's "
                                          "ground hatch and the guide's (best score -10.8, its leader form's too): "
                                          "right of it lie E, B2 and the block, above E's and A*'s labels; below the "

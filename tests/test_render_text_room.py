@@ -52,3 +52,12 @@ def test_a_label_across_a_link_takes_its_leader_when_that_is_clear(stem, names):
 def test_a_label_on_its_slider_block_in_a_detail_view_takes_its_leader():
     found = [k.figure + k.what for k in knots(sheet_one("004-02_best_by_K_1_2_offset_limit"))]
     assert not [k for k in found if "covers slider" in k], found
+
+
+def test_a_label_still_on_a_link_with_its_leader_looks_between_its_sixteen_directions():
+    # 001-31's E0, the contact point on the cam's profile, printed across the profile (by its point and in its
+    # leader form's 16 directions alike); the slot below it inside the disc, between the profile and ω's arc,
+    # lies 11° off straight down, between two of them: the halfway directions find it (hlast11)
+    svg = sheet_one("001-31_eccentric_oscillating_roller")
+    assert "E0" not in {t for t, _, _ in across(svg)}
+    assert '<text class="label fan"' in svg.split('id="step-E0"', 1)[1].split("</g>", 1)[0]

@@ -58,6 +58,27 @@ def directions(prefer: float, n: int = 16) -> list[float]:
     return [math.atan2(math.sin((base + k) * step), math.cos((base + k) * step)) for k in ks]
 
 
+def between(prefer: float, n: int = 16) -> list[float]:
+    """The ``n`` directions halfway between those of :func:`directions`, nearest to ``prefer`` first; of two
+    equally near, the one counter-clockwise as seen (upwards on paper) first, as there.
+
+    Examples
+    --------
+    >>> [round(math.degrees(a)) for a in between(0.0, 4)]
+    [-45, 45, -135, 135]
+    >>> [round(math.degrees(a), 2) for a in between(math.radians(100.0))][:3]
+    [101.25, 78.75, 123.75]
+    """
+    step = 2 * math.pi / n
+    out = [math.atan2(math.sin((k + 0.5) * step), math.cos((k + 0.5) * step)) for k in range(n)]
+
+    def off(a: float) -> tuple[float, float]:
+        d = math.remainder(a - prefer, 2 * math.pi)
+        return round(abs(d), 9), d
+
+    return sorted(out, key=off)
+
+
 @functools.lru_cache(maxsize=1024)
 def _units(prefer: float) -> tuple[np.ndarray, np.ndarray]:
     """The unit vectors of :func:`directions` around ``prefer``, nearest first."""
@@ -154,7 +175,7 @@ def _shape(r: Request) -> tuple[float, float, float, float, float, float]:
 
 def _explicit(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, cx: np.ndarray, cy: np.ndarray,
               cost: np.ndarray) -> None:
-    """Fill in the explicit candidates: their centres, ``spread`` per rank."""
+    """Fill in the explicit candidates: their centres, ``spread`` per rank (a request's ``costs`` when given)."""
     which = [i for i, r in enumerate(reqs) if r.candidates]
     if not which:
         return
@@ -165,6 +186,10 @@ def _explicit(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, c
     at = np.repeat(starts[which], lens) + rank
     cx[at], cy[at] = xy[:, 0], xy[:, 1]
     cost[at] = np.repeat([reqs[i].spread for i in which], lens) * rank
+    given = [i for i in which if reqs[i].costs]
+    if given:
+        rows = np.concatenate([np.arange(starts[i], starts[i] + counts[i]) for i in given])
+        cost[rows] = np.array([c for i in given for c in reqs[i].costs], dtype=float)
 
 
 def _around(reqs: Sequence[Request], starts: np.ndarray, cx: np.ndarray, cy: np.ndarray, cost: np.ndarray) -> None:
@@ -224,4 +249,4 @@ def rivalled(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, bo
     return out
 
 
-__all__ = ["FAR_PENALTY", "LEADER_MAX", "Candidates", "candidates", "directions", "leaders", "rivalled"]
+__all__ = ["FAR_PENALTY", "LEADER_MAX", "Candidates", "between", "candidates", "directions", "leaders", "rivalled"]

@@ -32,8 +32,8 @@ from .coincident import NEAR as NEAR_NAMES, Together, dots_above, groups_of, sam
 from .draw import (RIVAL_REACH, Context, Drawn, TextRequest, _paper_dir, _rivals, compass_half, compass_steps,
                    draw_compass)
 from .clearance import ENOUGH, NEAR as HALO
-from .candidates import LEADER_MAX
-from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances
+from .candidates import FAR_PENALTY, LEADER_MAX, between
+from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances, nearer_rival
 from .rows import SEP, Fan, clusters, fans, row_centre, thinned
 from .joined import reads_back, spans
 from .labels import label_extent, text_width
@@ -629,6 +629,35 @@ def _led(t: TextRequest) -> TextRequest:
     return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan", parts=t.parts)
 
 
+def _between(t: TextRequest, free: Callable[[np.ndarray], np.ndarray]) -> TextRequest | None:
+    """The leader form (:func:`_led`) of a point's label ``t`` that still meets a link, ground, block or pin
+    with it, tried in the sixteen directions halfway between those (:func:`.candidates.between`), at
+    :data:`LED_DISTANCES`, each place with the penalty it would have among the others
+    (:data:`.candidates.FAR_PENALTY` per distance, the request's spread per direction): only those a reader can
+    take for its own, clear, nearer its point than any other and kept by ``free`` (clear of the links, grounds,
+    blocks and pins, in the frame, off the texts placed before). A slot narrower than 22.5° seen from the point
+    lies between two of the usual directions: 001-31's E0, the contact point on the cam's profile, finds one 11°
+    off straight below, inside the disc between the profile and ω's arc. None when no such place is left."""
+    r = t.request
+    a = np.array(between(r.prefer))
+    ux, uy = np.cos(a), np.sin(a)
+    hw, hh = r.width / 2, r.height / 2
+    with np.errstate(divide="ignore"):
+        edge = np.minimum(np.where(np.abs(ux) > 1e-12, hw / np.abs(ux), math.inf),
+                          np.where(np.abs(uy) > 1e-12, hh / np.abs(uy), math.inf))
+    reach = (r.gap + np.array(LED_DISTANCES))[:, None] + edge[None, :]            # distance × direction
+    cx, cy = (r.anchor[0] + ux * reach).ravel(), (r.anchor[1] + uy * reach).ravel()
+    cost = (FAR_PENALTY * np.arange(len(LED_DISTANCES))[:, None] + r.spread * np.arange(len(a))[None, :]).ravel()
+    keep = np.flatnonzero(~np.array(nearer_rival(r, list(zip(cx.tolist(), cy.tolist()))), dtype=bool))
+    if len(keep):
+        keep = keep[free(shapely.box(cx[keep] - hw, cy[keep] - hh, cx[keep] + hw, cy[keep] + hh))]
+    if not len(keep):
+        return None
+    req = Request(r.anchor, r.width, r.height, r.gap, r.prefer, rivals=r.rivals, lead=r.gap, parts=r.parts,
+                  candidates=tuple(zip(cx[keep].tolist(), cy[keep].tolist())), costs=tuple(cost[keep].tolist()))
+    return TextRequest(t.runs, t.size, req, italic=t.italic, cls="label fan", parts=t.parts)
+
+
 def _led_outward(t: TextRequest) -> TextRequest:
     """A division's number with no room by its point outside the profile (:func:`_outward`): tried along its ray
     and up to 50° either side at :data:`LED_DISTANCES`, joined to its point by a leader."""
@@ -694,6 +723,27 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             return any(owners[i] != key for i in tree.query(box, predicate="intersects").tolist())
         found = tree.query(box, predicate="dwithin", distance=near).tolist()
         return any(owners[i] != key and (halo[i] or tree.geometries[i].intersects(box)) for i in found)
+    def free(boxes: np.ndarray, key: str) -> np.ndarray:
+        """Whether each of ``boxes`` (axis-parallel, of step ``key``'s text) lies in the frame, off the texts
+        placed so far and off every other step's link, ground, block and pin, as :func:`meets_hard` reads them
+        (within ``HALO``)."""
+        x0, y0, x1, y1 = shapely.bounds(boxes).T
+        f = view.paper_box
+        out = (f[0] <= x0) & (f[1] <= y0) & (x1 <= f[2]) & (y1 <= f[3])
+        if texts:
+            tb = shapely.bounds(np.array(texts, dtype=object))
+            i, j = np.nonzero((x0[:, None] <= tb[None, :, 2]) & (tb[None, :, 0] <= x1[:, None])
+                              & (y0[:, None] <= tb[None, :, 3]) & (tb[None, :, 1] <= y1[:, None]))
+            on = shapely.intersects(boxes[i], np.array(texts, dtype=object)[j])
+            out[i[on]] = False
+        meets_hard(boxes[0], key)               # the tree, built
+        tree, owners, halo = hard[0]
+        i, j = tree.query(shapely.box(x0 - HALO, y0 - HALO, x1 + HALO, y1 + HALO))     # bounds that come so near
+        mine = out[i] & np.array([owners[k] != key for k in j.tolist()], dtype=bool)
+        i, j = i[mine], j[mine]
+        gap = shapely.distance(tree.geometries[j], boxes[i])
+        out[i[((gap <= HALO) & np.array(halo, dtype=bool)[j]) | (gap <= 0.0)]] = False
+        return out
     def away(box: Any, key: str) -> tuple[float, float]:
         """The unit direction from the nearest link, ground, block or pin (not of step ``key``) to ``box``."""
         meets_hard(box, key)                    # the tree, built
@@ -745,10 +795,17 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
         if t.cls == "label" and not t.optional and not t.request.candidates and score < 0.0:
             led = _led(t)                       # a point's label that covers a line: farther, with a leader
             alt, alt_score = seen.get((led.request, g.key)) or placer.best(led.request, g.key)
+            own = t
             if alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN) or (
                     alt_score > score and meets_hard(t.request.box(*centre), g.key, 0.0)
                     and not meets_hard(led.request.box(*alt), g.key)):
                 t, centre, score = led, alt, alt_score
+            if score < 0.0 and meets_hard(t.request.box(*centre), g.key):
+                half = _between(own, lambda boxes: free(boxes, g.key))   # still on a link, ground,
+                if half is not None:            # block or pin: the slots between its leader form's directions
+                    alt, alt_score = placer.best(half.request, g.key)
+                    if alt_score > score:
+                        t, centre, score = half, alt, alt_score
         if (score < 0.0 and t.cls.startswith("label") and not t.optional and not t.request.candidates
                 and meets_hard(t.request.box(*centre), g.key) and not meets_hard(t.request.box(*centre), g.key, 0.0)):
             near = _nudged(t.request, centre, away(t.request.box(*centre), g.key))     # a hair from (not on) a

@@ -121,6 +121,9 @@ class Request:
         A label naming several points (:mod:`.joined`): each printed part's width and its own point, in the
         order of its names. The box is then rivalled when a part lies nearer one of ``rivals`` than its own
         point (not the whole box nearer a rival than the anchor).
+    costs : tuple of float
+        The penalty of each explicit candidate, when given (instead of ``spread`` per rank): places laid out as
+        those around the anchor are, some left out (:func:`.figure._between`).
     """
 
     anchor: XY
@@ -136,6 +139,7 @@ class Request:
     lead: float = math.inf
     starts: tuple[XY, ...] = ()
     parts: tuple[tuple[float, XY], ...] = ()
+    costs: tuple[float, ...] = ()
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
