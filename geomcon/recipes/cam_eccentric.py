@@ -286,10 +286,13 @@ def arm_angle(q: Point, o: Point, b: Point) -> float:
     return angle_deg(q, o, b)
 
 
-def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool, far: str = "B1") -> tuple[Ref, Ref]:
+def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool, far: str = "B1",
+                    called: str = "") -> tuple[Ref, Ref]:
     """The line of centres AO meets the pitch circle at B0 (nearest O: r0 = OB0, the base circle) and B1
-    (farthest, labelled ``far``: empty when the contact point, labelled itself, lies there); for a roller, the
+    (farthest, labelled ``far``: empty when the contact point, labelled itself, lies there; the captions call
+    it ``called``, else ``far``, else B1: 001-25's sheet labels it C, the statement's name); for a roller, the
     disc at E0 (r0_actual = OE0). Returns (B0, B1)."""
+    name = called or far or "B1"
     lineAO = sc.add("lineAO", line_through, A, O, style="construction", caption=("Draw the line of centres AO", "作中心线 AO"))
     # B0, E0 and B1 are laid off from O along the line of centres (|OB0| = Rp − OA …): the same points as the
     # line meeting the circles, but their direction from O is exact even when OB0 ≪ R (OA → R), where an
@@ -312,8 +315,8 @@ def add_base_circle(sc: Scene, O: Ref, A: Ref, pitch: Ref, roller: bool, far: st
     else:
         sc.add("r0_actual", length, O, B0, role=Role.MEASUREMENT, unit="mm", visible=False)
     B1 = sc.add("B1", point_along, O, A, sc.add("OB1_len", lambda r, d: r + d, Rp, OA, visible=False), style="point",
-                label=far, caption=("OA extended meets it at B1, its farthest point (OB1 = Rp + OA)",
-                                     "OA 延长交理论廓线于 B1(离 O 最远,OB1 = Rp + OA)"))
+                label=far, caption=(f"OA extended meets it at {name}, its farthest point (O{name} = Rp + OA)",
+                                     f"OA 延长交理论廓线于 {name}(离 O 最远,O{name} = Rp + OA)"))
     return B0, B1
 
 
@@ -346,15 +349,20 @@ def construct(g: Mapping[str, Any]) -> Construction:
                    caption=(f"Pitch curve: the circle about A with radius R + rr = {Rp:g}",
                             f"理论廓线:以 A 为圆心、R + rr = {Rp:g} 的圆")) if follower == "roller" else Ref("disc")
     contact = g.get("contact_name") or "B"
-    D = sc.given("D", Point(e, 0.0), style="point", label="D" if e and contact != "D" else "",
-                 caption=(f"Foot D of the follower's axis, OD = e = {e:g}", f"导路垂足 D,OD = e = {e:g}"))
+    ft = "D" if contact != "D" else "F"              # the offset's foot: D unless the statement names the contact D
+    D = sc.given("D", Point(e, 0.0), style="point", label=ft if e else "",
+                 caption=(f"Foot {ft} of the follower's axis, O{ft} = e = {e:g}", f"导路垂足 {ft},O{ft} = e = {e:g}")
+                 if e else ("", ""))                  # centred: the axis passes O (001-25 named a foot D at O)
     axis = sc.add("axis", Line, D, UP, role=Role.GIVEN, style="frame",
-                  caption=("The follower's guide through D, perpendicular to OD", "过 D 作导路(垂直于 OD)"))
+                  caption=(f"The follower's guide through {ft}, perpendicular to O{ft}", f"过 {ft} 作导路(垂直于 O{ft})")
+                  if e else ("The follower's guide through O (centred: e = 0)", "过 O 作导路(对心:e = 0)"))
     if e:
         sc.add("offset_circle", circle, O, abs(e), style="construction",
                caption=(f"Offset circle about O with radius |e| = {abs(e):g}", f"以 O 为圆心、|e| = {abs(e):g} 为半径作偏距圆"))
     at_far = st == "contact_angle" and (g.get("contact_angle") or 0.0) % 360.0 == 0.0 and not flat and not e
-    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller", "" if at_far else g.get("far_name") or "B1")
+    far = "" if at_far else g.get("far_name") or "B1"
+    fb = far or contact                              # the farthest point's name in the captions (h, the rise angle)
+    B0, B1 = add_base_circle(sc, O, A, pitch, follower == "roller", far, fb)
     if flat:
         return _finish_flat(sc, g, O, A, D, axis, B0, B1, sense)
     if e:
@@ -363,7 +371,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                     caption=("The follower through B0 tangent to the offset circle at K0: its lowest position, turned back",
                              "过 B0 作偏距圆切线,切点 K0:从动件最低位置(反转后)"))
         K1 = sc.add("K1", tangent_foot, O, B1, abs(e), side, style="point", label="K1",
-                    caption=("…and through B1, foot K1: its highest position", "过 B1 作切线,切点 K1:最高位置"))
+                    caption=(f"…and through {fb}, foot K1: its highest position", f"过 {fb} 作切线,切点 K1:最高位置"))
         ref0, ref1 = K0, K1
         low = sc.add("low_len", length, K0, B0, visible=False, unit="mm")
         high = sc.add("high_len", length, K1, B1, visible=False, unit="mm")
@@ -374,10 +382,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("K0B0", segment, ref0 if e else O, B0, style="ghost", caption=("", ""))
     sc.add("K1B1", segment, ref1 if e else O, B1, style="ghost", caption=("", ""))
     sc.add("h", difference, high, low, role=Role.MEASUREMENT, unit="mm",
-           caption=("h = K1B1 − K0B0" if e else "h = OB1 − OB0", "行程 h = K1B1 − K0B0" if e else "行程 h = OB1 − OB0"))
+           caption=(f"h = K1{fb} − K0B0" if e else f"h = O{fb} − OB0", f"行程 h = K1{fb} − K0B0" if e else f"行程 h = O{fb} − OB0"))
     rise = sc.add("rise_angle", turned_against, O, ref0, ref1, sense, role=Role.MEASUREMENT, unit="deg",
-                  caption=("Rise angle: ∠K0OK1 against ω" if e else "Rise angle: ∠B0OB1 against ω",
-                           "推程运动角:逆 ω 方向量 ∠K0OK1" if e else "推程运动角 ∠B0OB1(逆 ω)"))
+                  caption=("Rise angle: ∠K0OK1 against ω" if e else f"Rise angle: ∠B0O{fb} against ω",
+                           "推程运动角:逆 ω 方向量 ∠K0OK1" if e else f"推程运动角 ∠B0O{fb}(逆 ω)"))
     sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
     B = sc.add("B", line_circle, axis, pitch, branch=Upper(), role=Role.RESULT, style="joint",
                label=contact, caption=(f"The follower meets the pitch curve at {contact}",
@@ -389,14 +397,16 @@ def construct(g: Mapping[str, Any]) -> Construction:
     sc.add("guide_mark", lambda b: marks.bearing(b + UP * (0.45 * R), UP), B, role=Role.ANNOTATION,  # clear of
            style="guide")                                                       # α's arc above B (_alpha_mark)
     sc.add("delta", turned_against, O, ref0, D if e else B, sense, role=Role.MEASUREMENT, unit="deg",
-           caption=("Cam angle from the lowest position: δ = ∠K0OD against ω" if e else "δ = ∠B0OB against ω",
-                    "自最低位置的凸轮转角 δ = ∠K0OD(逆 ω)" if e else "凸轮转角 δ = ∠B0OB(逆 ω)"))
+           caption=(f"Cam angle from the lowest position: δ = ∠K0O{ft} against ω" if e else f"δ = ∠B0O{contact} against ω",
+                    f"自最低位置的凸轮转角 δ = ∠K0O{ft}(逆 ω)" if e else f"凸轮转角 δ = ∠B0O{contact}(逆 ω)"))
     DB = sc.add("DB", length, D if e else O, B, visible=False, unit="mm")
     s = sc.add("s", difference, DB, low, role=Role.MEASUREMENT, unit="mm",
-               caption=("Displacement s = DB − K0B0" if e else "s = OB − OB0", "位移 s = DB − K0B0" if e else "位移 s = OB − OB0"))
-    sc.add("normal", line_through, A, B, style="construction", caption=("The normal at B passes the centre A", "B 点法线过圆心 A"))
+               caption=(f"Displacement s = {ft}{contact} − K0B0" if e else f"s = O{contact} − OB0",
+                        f"位移 s = {ft}{contact} − K0B0" if e else f"位移 s = O{contact} − OB0"))
+    sc.add("normal", line_through, A, B, style="construction",
+           caption=(f"The normal at {contact} passes the centre A", f"{contact} 点法线过圆心 A"))
     al = sc.add("alpha", guide_pressure, A, B, UP, role=Role.MEASUREMENT, unit="deg",
-                caption=("Pressure angle α between the normal AB and the guide", "压力角 α:法线 AB 与导路所夹锐角"))
+                caption=(f"Pressure angle α between the normal A{contact} and the guide", f"压力角 α:法线 A{contact} 与导路所夹锐角"))
     sc.add("mark_alpha", _alpha_mark, B, A, O, al, follower == "roller", role=Role.ANNOTATION, style="angle")
     sc.add("dim_s", lambda b, v, lo: marks.Dimension(b - UP * v, b, "s", v, 0.35 * R), B, s, low,
            role=Role.ANNOTATION, style="dim", caption=("Dimension s from the lowest position", "标注位移 s"))
