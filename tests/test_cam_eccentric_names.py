@@ -41,3 +41,17 @@ def test_a_centred_follower_names_no_foot():
     text, labels = _captions_and_labels("001-25_eccentric_knife_centred")
     assert "Foot" not in text and "guide through O (centred" in text
     assert "B1" not in text and "OB −" not in text
+
+
+def test_no_hidden_step_carries_a_caption():
+    """A caption on a step that is not drawn never prints (hsheet11k's review: 000-03's and 400-01…03's
+    velocity and acceleration scales, 200-07's "Divide the circle of radius a …"): every problem's captions
+    are on drawn steps."""
+    lost = []
+    for path in sorted((ROOT / "problems").glob("*.toml")):
+        sc = solve(load_problem(path)).drawing_scene
+        drawn = {s.key for s in sc.visible_steps()}
+        for s in sc.steps:
+            if s.key not in drawn and isinstance(s.caption, tuple) and s.caption and s.caption[0]:
+                lost.append((path.stem, s.key, s.caption[0][:40]))
+    assert not lost

@@ -263,19 +263,21 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
     R = a
     add_motion_diagram(sc, prog, h, Point(1.25 * R, -0.6 * R), 2.4 * R, 0.4 * R / h, divs, symbol="ψ", unit="°")
     n = len(divs)
+    ends = []                   # the pivots 1′ … n′ all at the step that divides the circle, then the faces
     for i, d in enumerate(divs, 1):
-        first = i == 1
-        A, _, D = inv_pos.position(f"d{i}", d, label=f"{i}′", visible=False, caption=(
+        A, _, D = inv_pos.position(f"d{i}", d, visible=False)
+        sc.add(f"pivot_d{i}", same_point, A, style="division", label=f"{i}′", caption=(
             f"Divide the circle of radius a {back[0]} (−ω) from A0 as the cam angles of the divisions: 1′ … {n}′; "
             "turn A0T′ with them and lay off ψ1, ψ2, … of the ψ–δ diagram at 1′, 2′, … (the arm's directions)",
             f"自 A0 沿 −ω 方向({back[1]})按各分点的凸轮转角等分半径为 a 的圆,得 1′ … {n}′;A0T′ 随之反转,"
-            "并在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …(摆杆方向)") if first else ("", ""))
-        sc.add(f"pivot_d{i}", same_point, A, style="division", label=f"{i}′")
+            "并在 1′, 2′, … 处量取 ψ–δ 线图中的摆角 ψ1, ψ2, …(摆杆方向)") if i == 1 else ("", ""))
+        ends.append((A, D))
+    for i, (A, D) in enumerate(ends, 1):
         sc.add(f"face_d{i}", face_segment, A, D, O, f, reach, style="path", caption=(
             f"Draw the face in each inverted position, {abs(f):g} from 1′, 2′, … along the arm's direction"
             if f else "Draw the face along the arm's direction from 1′, 2′, …: the inverted face lines",
             "在各反转位置作平底直线" + (f"(距 1′, 2′, … 为 f = {abs(f):g})" if f else "(过 1′, 2′, …,沿摆杆方向)"))
-            if first else ("", ""))
+            if i == 1 else ("", ""))
     top = prog.rise.end
     At, Ct, Dt = inv_pos.position("top", top, visible=False)
     sc.add("psi_max", angle_deg, At, Ct, Dt, role=Role.MEASUREMENT, unit="deg",

@@ -116,11 +116,11 @@ def add_crank_velocity(sc: Scene, A: Ref, B: Ref, AB: Any, omega: Any, gap: Any,
                        label: str = "b") -> tuple[Ref, Ref, Ref]:
     """The velocity polygon's start: its scale μv = |ω| (so that pb is as long as AB), the pole p to the right of
     ``beside`` and b with pb ⊥ AB in the sense of ω. Returns (μv, p, b)."""
-    mu_v = sc.add("mu_v", abs, omega, role=Role.MEASUREMENT, unit="(mm/s)/mm", visible=False,
-                  caption=(f"Velocity scale μv = |ω| = {abs(omega):g} (mm/s)/mm: pb as long as AB",
-                           f"速度比例尺 μv = |ω| = {abs(omega):g} (mm/s)/mm,使 pb 与 AB 等长"))
-    p = sc.add("p", pole_beside, gap, 0.0, *beside, style="given", label="p",
-               caption=("Velocity pole p beside the linkage", "在机构旁取速度极点 p"))
+    mu_v = sc.add("mu_v", abs, omega, role=Role.MEASUREMENT, unit="(mm/s)/mm", visible=False)
+    p = sc.add("p", pole_beside, gap, 0.0, *beside, style="given", label="p",    # the scale's caption here: a
+               caption=(f"Velocity scale μv = |ω| = {abs(omega):g} (mm/s)/mm (pb as long as AB); "  # hidden step's
+                        "velocity pole p beside the linkage",                                  # never printed
+                        f"取速度比例尺 μv = |ω| = {abs(omega):g} (mm/s)/mm(使 pb 与 AB 等长),在机构旁取速度极点 p"))
     b = sc.add("b", turned, p, A, B, 1.0, 1.0 if omega > 0 else -1.0, style="point", label=label,
                caption=(f"p{label} ⊥ AB in the sense of ω: vB = ω·AB = {abs(omega) * AB:g} mm/s",
                         f"作 p{label} ⊥ AB(指向与 ω 转向一致):vB = ω·lAB = {abs(omega) * AB:g} mm/s"))
@@ -135,11 +135,11 @@ def add_crank_acceleration(sc: Scene, A: Ref, B: Ref, omega: Any, epsilon: Any, 
     """The acceleration polygon's start: its scale μa = |aB|/AB (p′b′ as long as AB), the pole p′ to the right of
     ``beside`` (the velocity polygon), the normal component ω²·AB along B→A and, when the crank accelerates, the
     tangential ε·AB ⊥ AB. Returns (μa, p′, b′)."""
-    mu_a = sc.add("mu_a", accel_scale, omega, epsilon, role=Role.MEASUREMENT, unit="(mm/s²)/mm",
-                  visible=False, caption=("Acceleration scale μa = |aB|/AB: p′b′ as long as AB",
-                                          "加速度比例尺 μa = aB/lAB,使 p′b′ 与 AB 等长"))
+    mu_a = sc.add("mu_a", accel_scale, omega, epsilon, role=Role.MEASUREMENT, unit="(mm/s²)/mm", visible=False)
     p2 = sc.add("p2", pole_beside, gap, 0.0, *beside, style="given", label="p′",
-                caption=("Acceleration pole p′ beside the velocity polygon", "在速度多边形旁取加速度极点 p′"))
+                caption=("Acceleration scale μa = |aB|/AB (p′b′ as long as AB); acceleration pole p′ beside the "
+                         "velocity polygon",
+                         "取加速度比例尺 μa = aB/lAB(使 p′b′ 与 AB 等长),在速度多边形旁取加速度极点 p′"))
     k_n = sc.add("k_nB", normal_length, omega, mu_a, visible=False)
     plain = epsilon == 0
     nB = sc.add("nB", turned, p2, B, A, k_n, 0.0, style="point", label=label if plain else "nB",
