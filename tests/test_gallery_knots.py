@@ -56,10 +56,11 @@ def test_no_crowded_knot_on_sheet_1(sheet):
     assert len(found) <= KNOWN.get(sheet.stem, 0), [k.figure + k.what for k in found]
 
 
-@pytest.mark.parametrize("stem", sorted(KNOWN))
-def test_a_known_crowded_sheet_is_listed_with_its_count_as_measured(stem):
-    # the list stays honest: a sheet that came clear, or lost a knot, is struck off or its count lowered
-    assert len(knots((GALLERY / f"{stem}.svg").read_text(encoding="utf-8"))) == KNOWN[stem]
+def test_a_known_crowded_sheet_is_listed_with_its_count_as_measured():
+    # the list stays honest: a sheet that came clear, or lost a knot, is struck off or its count lowered (one
+    # test over the list, not one per entry: the list is empty now, and an empty parameter set reads as a skip)
+    measured = {stem: len(knots((GALLERY / f"{stem}.svg").read_text(encoding="utf-8"))) for stem in KNOWN}
+    assert measured == KNOWN
 
 
 @pytest.mark.parametrize("stem", ["200-09_base_radius_cycloidal", "200-18_base_radius_flat_gate2020",
