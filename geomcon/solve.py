@@ -764,7 +764,9 @@ class Solution:
         several candidate solutions, the last of its candidates' steps: a result never shows early; an answer
         no drawn step produces — computed from the givens alone — shows with the last frame; an answer the
         drawing constructs later than its inputs are known shows with the first step drawn from it,
-        :meth:`~geomcon.scene.Scene.drawn_from`: 200-07 showed α_max at step 2, its worst position at 17)."""
+        :meth:`~geomcon.scene.Scene.drawn_from`: 200-07 showed α_max at step 2, its worst position at 17; an answer
+        the recipe says is read off a later step shows with that step, :meth:`~geomcon.scene.Scene.read_off`:
+        001-10 showed AB, BC at step 23, measured at 27 "AB = NM, BC = AM")."""
         sc = self.drawing_scene
         last = len(sc.frames())
         maps = self.construction.solutions or (self.construction.answers,)
@@ -773,7 +775,8 @@ class Solution:
         for q in self.sheet_answers():
             k = sc.available_at([m[q.name] for m in maps if q.name in m], default=last)
             later = sc.drawn_from(drawn[q.name]) if q.name in drawn else None
-            out.append(k if later is None else max(k, later))
+            read = sc.read_at(drawn[q.name]) if q.name in drawn else None
+            out.append(max(x for x in (k, later, read) if x is not None))
         return out
 
     def title(self, lang: str = "en") -> str:

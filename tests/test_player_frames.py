@@ -104,7 +104,8 @@ def _depends_on_frame(sc, key: str, k: int) -> bool:
 @pytest.mark.parametrize("pid", PROBLEMS)
 def test_a_result_shows_from_the_step_that_produces_it_and_a_warning_from_the_last(pid):
     """Each result line is tagged with a frame whose visible step it depends on, or the first frame that draws a
-    step computed from it (200-07's α_max with its worst position, step 17, no longer step 2: hsheet11k) (an
+    step computed from it (200-07's α_max with its worst position, step 17, no longer step 2: hsheet11k), or the
+    step the recipe reads it off (:meth:`~geomcon.scene.Scene.read_off`: 001-10's AB at "AB = NM", step 27) (an
     answer no drawn step makes — 200-05's δ(α_max), computed from the givens — is tagged with the last frame,
     never frame 1), and each warning, with its heading, with the last frame: 200-05 showed both at step 1."""
     sol = _solution(pid)
@@ -115,7 +116,8 @@ def test_a_result_shows_from_the_step_that_produces_it_and_a_warning_from_the_la
     for name, step in zip(answers, sol.info_steps(), strict=True):
         keys = [m[name] for m in maps if name in m]
         drawn = sc.drawn_from(sol.construction.answers[name]) if name in sol.construction.answers else None
-        assert step == n or step == drawn or any(_depends_on_frame(sc, k, step) for k in keys), (pid, name, step)
+        read = sc.read_at(sol.construction.answers[name]) if name in sol.construction.answers else None
+        assert step == n or step in (drawn, read) or any(_depends_on_frame(sc, k, step) for k in keys), (pid, name, step)
     rows = _info_rows(_sheet(pid))
     assert all(step is not None for _, step, _ in rows), pid
     assert {step for kind, step, _ in rows if kind == "info"} == set(sol.info_steps()), pid

@@ -63,3 +63,94 @@ def test_no_result_shows_before_a_step_drawn_from_it():
         for (name, k) in _row_steps(path.stem).items():
             first = sc.drawn_from(sol.construction.answers[name]) if name in sol.construction.answers else None
             assert first is None or k >= first, (path.stem, name, k, first)
+
+
+# ------------------------------------------------------------------ a result read off a later step (issue 11)
+def _caption_steps(stem: str) -> list[str]:
+    sc = _solution(stem).drawing_scene
+    return [sc.caption(g[0].key)[0] for g in sc.frames()]
+
+
+def _shown_at(stem: str, symbol: str) -> int | None:
+    """The first step that shows the quantity ``symbol``: its caption names it with "=" (``AB = NM``, ``r0 =
+    OB0``, ``AD = 100``: not a formula's ``tan α = …`` nor a condition ``where a = 0``), or, for a length named
+    by two labelled points (``AD``), it draws the segment between them."""
+    from geomcon.geometry import Point
+    from geomcon.geometry.primitives import Segment
+
+    pat = re.compile(r"(?<!tan )(?<!sin )(?<!cos )(?<![A-Za-z0-9′·])" + re.escape(symbol)
+                     + r"(?![A-Za-z0-9′″*,_])\s*=(?!\s*0(?![\d.]))")
+    steps = [i for i, c in enumerate(_caption_steps(stem), 1) if pat.search(c)]
+    two = re.fullmatch(r"([A-Z][0-9]?)([A-Z][0-9]?)", symbol)
+    if two:
+        sc = _solution(stem).drawing_scene
+        frames = sc.frames()
+        labelled: dict[str, Point] = {}
+        for g in frames:
+            for s in g:
+                if s.label and isinstance(v := sc.value(s.key), Point):
+                    labelled.setdefault(s.label, v)
+        if two[1] in labelled and two[2] in labelled:
+            ends = {labelled[two[1]], labelled[two[2]]}
+            steps += [i for i, g in enumerate(frames, 1) for s in g
+                      if isinstance(v := sc.value(s.key), Segment) and {v.a, v.b} == ends]
+    return min(steps, default=None)
+
+
+@pytest.mark.parametrize("stem", [p.stem for p in sorted((ROOT / "problems").glob("*.toml"))])
+def test_no_result_shows_before_the_step_that_reads_it_off(stem):
+    """Audit of every problem: a Results row appears no earlier than the first step that shows its quantity
+    (:func:`_shown_at`). On the base 34 rows of 15 problems showed early: AB, BC of the θ-circle designs with the
+    last candidate (001-10 at 23, "AB = NM, BC = AM" is 27), their AD before "The frame AD", AC1, AC2 of the
+    crank-slider designs by K (001-06b, 001-18, 004-01) before they are joined."""
+    from geomcon.render.results import name_of
+
+    sol = _solution(stem)
+    early = []
+    for name, k in _row_steps(stem).items():
+        symbol = name_of(name, sol.recipe.name, sol.problem.given).symbol
+        at = _shown_at(stem, symbol) if symbol else None
+        if at is not None and k < at:
+            early.append((name, k, at))
+    assert not early, early
+
+
+THETA_DESIGNS = ["001-10_crank_rocker_design_coupler", "001-10b_crank_rocker_design_frame_and_swing",
+                 "001-11_jaw_crusher_design", "001-12_crank_rocker_frame_line", "001-13_radar_antenna_K1",
+                 "001-14_crank_rocker_K1_frame_angles", "001-15_crank_rocker_frame_and_position",
+                 "001-16_jaw_crusher_AC1", "001-21_cutter_drive_K1", "001-22_crank_rocker_frame_and_position_b"]
+
+
+@pytest.mark.parametrize("stem", THETA_DESIGNS)
+def test_a_theta_circle_design_shows_its_links_where_it_measures_them(stem):
+    """AB and BC at "Bisect N … at M: AB = NM, BC = AM", the frame (when not given) at "The frame AD", the flags
+    and γmin of the design at the step that chooses it — not with the last candidate (001-10: step 23)."""
+    steps, given = _row_steps(stem), _solution(stem).problem.given
+    assert steps["AB"] == steps["BC"] == _step_of(stem, "Bisect N and the extended position at M")
+    choice = _step_of(stem, "The textbook's choice")
+    assert steps["gamma_min"] == steps["C1_folded"] == steps["A_near"] == choice
+    if given.get("AD") is None:
+        assert steps["AD"] == _step_of(stem, "The frame AD")
+    else:                                   # a given frame shows where it is laid off, not later
+        assert steps["AD"] < choice
+
+
+def test_the_other_design_forms_show_their_links_where_they_are_drawn():
+    """001-10c (crank and frame given): AB, BC with the crank pins, the design's other values at its choice;
+    001-17b (links given): D chosen, then its frame AD."""
+    steps = _row_steps("001-10c_crank_rocker_design_crank_and_frame")
+    pins = _step_of("001-10c_crank_rocker_design_crank_and_frame", "The crank pins B1")
+    choice = _step_of("001-10c_crank_rocker_design_crank_and_frame", "The textbook's choice")
+    assert steps["AB"] == steps["BC"] == pins and steps["CD"] == steps["gamma_min"] == choice
+    steps = _row_steps("001-17b_crank_rocker_redesign_swing")
+    assert steps["AD"] == _step_of("001-17b_crank_rocker_redesign_swing", "The frame AD")
+    assert steps["CD"] == steps["gamma_min"] == _step_of("001-17b_crank_rocker_redesign_swing", "The textbook's choice")
+
+
+def test_a_given_frame_is_not_drawn_twice():
+    """001-15 and 001-22 (the frame given) drew "The frame AD" at step 4 and again after the choice. No step
+    repeats the caption of another, but 200-11's "…and the one on the other side" (of the rise's tangent, then
+    of the return's)."""
+    for path in sorted((ROOT / "problems").glob("*.toml")):
+        caps = [c for c in _caption_steps(path.stem) if c != "…and the one on the other side"]
+        assert len(caps) == len(set(caps)), (path.stem, sorted(c for c in caps if caps.count(c) > 1))

@@ -163,6 +163,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
                    *(Ref(f"{k}_{i}") for i in range(SLOTS) for k in ("valid", "C1_folded", "A_near", "AD")),
                    visible=False) if sc.drawing else ("The frame AD", "机架 AD")
     add_unit_linkage(sc, Ref("A_1"), D, C1, C2, optional=True, labels=("B1", None), caption=words)
+    # the design drawn is chosen at its frame's step, its crank and coupler measured with the crank pins (001-10c
+    # showed them with the candidates, step 14, issue 11)
+    sc.read_off("AD_design", "CD_0", "gamma_min_0", "C1_folded_0", "A_near_0")
+    sc.read_off("B1", "AB_0", "BC_0")
     if sc.drawing:                          # the designed linkage's crank pivot is a fixed pivot, not only a candidate
         sc.add("A_ground", marks.ground, Ref("A_1"), -math.pi / 2, role=Role.ANNOTATION, style="ground", optional=True)
         # θ and ψ are answers: marked where they are measured, θ at A between the extreme positions, ψ at D

@@ -245,7 +245,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
               else tuple(f"C2,{i}" for i in range(1, len(cands) + 1)))
     words = sc.add("choice_words", flat_caption, "A" if family == "positions" else "C2", idx, labels, *flat,
                    visible=False) if sc.drawing else None
-    _draw_choice(sc, idx, cands, th, words)
+    _draw_choice(sc, idx, cands, th, words, frame_given=family == "frame")
     if sc.drawing and family == "positions":
         _mark_given_angles(sc, g)
     elif sc.drawing:                         # the frame given (001-15, 001-22): ψ is an answer, marked at D too
@@ -261,6 +261,14 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sol["DE"] = answers["DE"]
     for name in ("AB", "BC", "AD", "psi", "gamma_min", "C1_folded", "A_near"):
         sc.add(f"chosen_{name}", pick, idx, *(Ref(s[name]) for s in sols), visible=False)
+    # the values come from the candidates, the drawing reads them off later (issue 11: 001-10 showed AB, BC
+    # and AD with the last candidate A2, step 23): the design chosen at its step, AB and BC at "AB = NM,
+    # BC = AM", a frame not given where it is drawn
+    sc.read_off("A", "chosen_gamma_min", "chosen_C1_folded", "chosen_A_near",
+                *(("chosen_psi",) if family == "frame" else ()))     # the frame given: ψ is C2's (001-15)
+    sc.read_off("Mchoice", "chosen_AB", "chosen_BC")
+    if g.get("AD") is None:
+        sc.read_off("AD_link", "chosen_AD")
     points = {"D": "D", "A": "A", "C1": "Cf", "C2": "Ce", "B1": "B1", "B2": "B2"}
     return Construction(sc, answers, points, solutions=tuple(sols),
                         no_solution=_no_solution_message(g, closing))
@@ -508,9 +516,11 @@ def _ahead(A: Point, r, C: Point) -> Point | None:
     return C if (C - A).dot(r.direction) > 0 else None
 
 
-def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref, caption: Ref | None = None) -> None:
+def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref, caption: Ref | None = None, *,
+                 frame_given: bool = False) -> None:
     """The textbook's choice drawn as the result: A, B1, B2 and both extreme positions of the linkage;
-    ``caption`` the step naming the candidate chosen (a drawing's; a lean scene's step keeps fixed words)."""
+    ``caption`` the step naming the candidate chosen (a drawing's; a lean scene's step keeps fixed words);
+    ``frame_given``: the frame AD is drawn already (not drawn again)."""
     fixed_A = len({c[0].key for c in cands}) == 1          # frame given: A is a given point, labelled already
     A = sc.add("A", pick, idx, *(c[0] for c in cands), role=Role.RESULT, style="pivot", label=None if fixed_A else "A",
                caption=caption or ("The textbook's choice of A (the other valid points are candidates)",
@@ -531,7 +541,7 @@ def _draw_choice(sc: Scene, idx: Ref, cands: list, th: Ref, caption: Ref | None 
     M = sc.add("Mchoice", midpoint, E, Ce, style="point", label="M", optional=True,
                caption=("Bisect N and the extended position at M: AB = NM, BC = AM", "平分得 M:AB = NM,BC = AM"))
     AB = sc.add("AB_draw", length, E, M, visible=False, optional=True)
-    if drawing:
+    if drawing and not frame_given:          # the frame given (001-15, 001-22) is drawn already: not twice
         sc.add("AD_link", segment, A, Ref("D"), style="frame", optional=True, caption=("The frame AD", "机架 AD"))
     mAB = sc.add("mAB", _times, AB, -1.0, visible=False, optional=True)
     B1 = sc.add("B1", point_along, A, Cf, mAB, role=Role.RESULT, style="joint", label="B1", optional=True,

@@ -91,6 +91,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
     words = sc.add("choice_words", flat_caption, "D", idx, tuple(sc.label_of(c) for c in cands), *flat,
                    visible=False) if sc.drawing else None
     _draw_choice(sc, idx, A, C1, C2, cands, th, AB, words)
+    # the design is chosen at D's step and its frame drawn after it (001-17b showed AD, CD, γmin with the last
+    # candidate D2, issue 11)
+    sc.read_off("D", "chosen_CD", "chosen_gamma_min", "chosen_A_near")
+    sc.read_off("AD_link", "chosen_AD")
     answers = {name: f"chosen_{name}" for name in names}
     answers.update(AB="AB_given", BC="BC_given", theta="theta", K="K", C1_folded="one")
     points = {"A": "A", "D": "D", "C1": "C1", "C2": "C2", "B1": "B1", "B2": "B2"}

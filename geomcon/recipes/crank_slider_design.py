@@ -186,6 +186,8 @@ def finish_from_A(sc: Scene, A: Ref, C1: Ref, C2: Ref, gl: Ref, th: Ref, H: floa
     sc.add("e", length, A, Fa, role=Role.MEASUREMENT, unit="mm", caption=("e = distance of A from the guide", "偏距 e = A 到导路的距离"))
     sc.add("AC1_out", length, A, C1, role=Role.MEASUREMENT, unit="mm", visible=False)
     sc.add("AC2_out", length, A, C2, role=Role.MEASUREMENT, unit="mm", visible=False)
+    sc.read_off("AC1", "AC1_out")                # shown where they are joined, not with A (issue 11)
+    sc.read_off("AC2s", "AC2_out")
     B1 = sc.add("B1", point_along, A, C1, _neg(sc, AB), role=Role.RESULT, style="joint", label="B1",
                 caption=("B1 on C1A extended, AB1 = AB", "在 C1A 延长线上取 AB1 = AB"))
     B2 = sc.add("B2", point_along, A, C2, AB, role=Role.RESULT, style="joint", label="B2",

@@ -247,6 +247,8 @@ class Scene:
         if full.title != self.title or full.lean:
             raise AssertionError(f"rebuilding scene {self.title!r} gave {full.title!r}")
         self._rec, self._skip, self._sig, self._step = full._rec, full._skip, full._sig, {}
+        if "_read" in full.__dict__:
+            self._read = full._read
         self._learn = self._learn if self._keep is None else self._keep
         self.lean, self._keep, self._rebuild = False, None, None
         if self._stale:                      # the tape's own steps are not the recipe's
@@ -470,6 +472,35 @@ class Scene:
                 else:
                     todo.append(u)
         return min(found, default=None)
+
+    def read_off(self, at: str | Ref, *keys: str | Ref) -> None:
+        """Record that the values ``keys`` (answers) are read off the drawing at step ``at``, a step their values
+        do not depend on: a result then shows no earlier than that step (:meth:`read_at`). The θ-circle designs
+        compute AB = (AC2 − AC1)/2 from the candidate A; the drawing measures it at "Bisect N … at M: AB = NM,
+        BC = AM", several steps later (001-10 showed AB, BC at step 23, measured at 27, and AD at 23, the frame
+        drawn at 28). A step named here that the scene lacks (a drawing-only step of a lean scene) is passed over.
+
+        >>> from geomcon.geometry import Point
+        >>> sc = Scene()
+        >>> A = sc.given("A", Point(0, 0), caption=("Pivot A", "铰链 A"))
+        >>> D = sc.given("D", Point(3, 4), caption=("Pivot D", "铰链 D"))
+        >>> ad = sc.add("AD", abs, 5.0, visible=False)
+        >>> _ = sc.add("frame", repr, A, D, caption=("The frame AD", "机架 AD"))
+        >>> sc.read_off("frame", ad)
+        >>> sc.available_at(["AD"]), sc.read_at("AD"), sc.read_at("A")
+        (1, 3, None)
+        """
+        at = at[0] if type(at) is Ref else at
+        read = self.__dict__.setdefault("_read", {})
+        for k in keys:
+            k = k[0] if type(k) is Ref else k
+            read[k] = (*read.get(k, ()), at)
+
+    def read_at(self, key: str) -> int | None:
+        """The frame (1-based) of the latest step at which the value ``key`` is read off the drawing
+        (:meth:`read_off`); None when no step reads it off."""
+        ats = [a for a in self.__dict__.get("_read", {}).get(key, ()) if a in self._rec]
+        return self.available_at(ats) if ats else None
 
     def number(self, key: str) -> int:
         """1-based protocol number of a visible step (the number of the frame it is drawn in)."""
