@@ -103,3 +103,24 @@ def test_the_player_shows_vB_and_its_alpha_mark_with_the_vector(tmp_path):
     assert 'id="count">step 23 / ' in before and 'id="count">step 24 / ' in at
     for group in ("step-v_end", "step-mark_alpha", "step-v_line"):
         assert _hidden(before, group) and not _hidden(at, group), group
+
+
+@pytest.mark.parametrize("stem", ["200-12_oscillating_base_radius", "200-20_oscillating_base_radius_rho"])
+@pytest.mark.parametrize("part", ["rise", "return"])
+def test_the_arm_positions_and_their_points_K_appear_with_the_steps_that_construct_them(stem, part):
+    """The oscillating follower's base radius: the arm positions 1–6 at "Turn the arm … positions", their points
+    K (and the curve through them) at "lay off BiKi", the lines at α_allow after them. On the base positions 1–6
+    and their K came with the wedges, one and two steps late, and the return's had no step of their own."""
+    sc = _scene(stem)
+    turn = _step_of(sc, f"Turn the arm about A0 to its {part} positions")
+    lay = _step_of(sc, f"On each A0Bi lay off BiKi = L·|ψ′i| (ψ′ = dψ/dδ) {'away' if part == 'rise' else 'towards'}")
+    wedge = sc.number(f"wedge_{part}0_a")
+    assert sc.caption(f"wedge_{part}0_a")[0].startswith("Through every Ki draw the two lines")
+    assert sc.caption(f"wedge_{part}0_a")[0].endswith(f"({part})") and sc.caption(f"K_{part}0")[0].endswith(f"in the {part})")
+    assert turn + 1 == lay == wedge - 1
+    for i in range(7):
+        assert sc.number(f"B_{part}{i}") == sc.number(f"arm_{part}{i}") == turn
+        assert sc.number(f"K_{part}{i}") == lay
+        assert sc.number(f"wedge_{part}{i}_a") == sc.number(f"wedge_{part}{i}_b") == wedge
+    assert sc.number(f"K_curve_{part}") == lay
+

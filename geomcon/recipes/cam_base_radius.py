@@ -573,28 +573,35 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
         zh = "推程" if part == "rise" else "回程"
         divs = [seg.start + seg.angle * i / 6 for i in range(7)]
         divs[-1] = float(np.nextafter(seg.end, seg.start))
+        # the steps in the order the captions tell them, each part at its own steps: every arm position, then
+        # every point K and their curve, then every wedge (200-12 and 200-20 drew positions 1–6 and their K with the wedges, one
+        # step after "Turn the arm …" and "lay off BiKi …", and the return's without a step of their own)
+        away = same == (part == "return")    # K beyond B: the arm swings against the cam's sense in this part
+        Bs, Ks = [], []
         for i, d in enumerate(divs):
             m = part_motion(motion, part, d)
-            psi, k = math.degrees(float(m.psi[0])), eps * float(m.d1[0])
-            first = i == 0
-            B = sc.add(f"B_{part}{i}", arm_position, B0, A0, tau, psi, style="point", caption=(
+            psi = math.degrees(float(m.psi[0]))
+            Bs.append(sc.add(f"B_{part}{i}", arm_position, B0, A0, tau, psi, style="point", caption=(
                 f"Turn the arm about A0 to its {part} positions A0B1, A0B2, … (ψ at every sixth of the {part})",
-                f"将摆杆绕 A0 转到{zh}各位置 A0B1、A0B2 …(按{zh}角六等分取 ψ)") if first and part == "rise" else
-                ("", ""))
-            sc.add(f"arm_{part}{i}", segment, A0, B, style="ghost")
-            K = sc.add(f"K_{part}{i}", velocity_image, A0, B, k, style="point", caption=(
-                "On each A0Bi lay off BiKi = L·ψ′i (ψ′ = dψ/dδ) " + ("towards A0 (the arm swings with the cam's sense "
-                "in the rise)" if same else "away from A0 (the arm swings against the cam's sense in the rise)"),
-                "在各 A0Bi 上截取 BiKi = L·ψ′i(ψ′ = dψ/dδ)," + ("向 A0 方向(推程中摆杆与凸轮同向转动)" if same else
-                                                              "背离 A0(推程中摆杆与凸轮反向转动)")) if first and part == "rise"
-                else ("", ""))
+                f"将摆杆绕 A0 转到{zh}各位置 A0B1、A0B2 …(按{zh}角六等分取 ψ)") if i == 0 else ("", "")))
+            sc.add(f"arm_{part}{i}", segment, A0, Bs[-1], style="ghost")
+        for i, (d, B) in enumerate(zip(divs, Bs)):
+            k = eps * float(part_motion(motion, part, d).d1[0])
+            Ks.append(sc.add(f"K_{part}{i}", velocity_image, A0, B, k, style="point", caption=(
+                "On each A0Bi lay off BiKi = L·|ψ′i| (ψ′ = dψ/dδ) " + (
+                    f"away from A0 (the arm swings against the cam's sense in the {part})" if away else
+                    f"towards A0 (the arm swings with the cam's sense in the {part})"),
+                "在各 A0Bi 上截取 BiKi = L·|ψ′i|(ψ′ = dψ/dδ)," + (
+                    f"背离 A0({zh}中摆杆与凸轮反向转动)" if away else f"向 A0 方向({zh}中摆杆与凸轮同向转动)"))
+                if i == 0 else ("", "")))
+        sc.add(f"K_curve_{part}", image_curve, motion, A0, B0, seg.start, seg.end, style="path")
+        for i, (B, K) in enumerate(zip(Bs, Ks)):
             for side in (1.0, -1.0):
                 sc.add(f"wedge_{part}{i}_{'ab'[side < 0]}", wedge_ray, A0, B, K, allow, side, tau, O,
                        style="construction", caption=(
                            f"Through every Ki draw the two lines at α_allow = {allow:g}° to the arm's normal: O must lie "
                            f"between them ({part})", f"过各 Ki 作与摆杆法线成 [α] = {allow:g}° 的两直线,O 须在其间({zh})")
-                       if first and side > 0 else ("", ""))
-        sc.add(f"K_curve_{part}", image_curve, motion, A0, B0, seg.start, seg.end, style="path")
+                       if i == 0 and side > 0 else ("", ""))
     O = sc.add("O", same_point, O, role=Role.RESULT, style="pivot", label="O", caption=(
         ("The admissible point nearest B0 is the best centre O" if g.get("a") is None else
          f"The admissible point of the circle of radius a = {g['a']:g} about A0 nearest B0: the centre O"),
