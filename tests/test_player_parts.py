@@ -124,3 +124,13 @@ def test_the_arm_positions_and_their_points_K_appear_with_the_steps_that_constru
         assert sc.number(f"wedge_{part}{i}_a") == sc.number(f"wedge_{part}{i}_b") == wedge
     assert sc.number(f"K_curve_{part}") == lay
 
+
+def test_both_lines_of_001_19b_appear_with_the_step_that_draws_them():
+    """001-19b: "Lines through A at 90° − θ/2 to the vertical on either side" drew one line; the other came two
+    steps later with "B2 on it". Both lines now at their step; B1 and B2 each say on which line they lie."""
+    sc = _scene("001-19b_slotter_whitworth_crank_given")
+    lines = _step_of(sc, "Lines through A at 90° − θ/2")
+    assert sc.number("rB1") == sc.number("rB2") == lines
+    assert sc.number("B1") == _step_of(sc, "B1 on the left line") == lines + 1
+    assert sc.number("B2") == _step_of(sc, "B2 on the right line") == lines + 2
+    assert sc.value("B1").x < sc.value("A").x < sc.value("B2").x

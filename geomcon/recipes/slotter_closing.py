@@ -25,6 +25,17 @@ def _half_turn(K: float, sign: float) -> float:
     return sign * math.radians(90.0 - theta_from_k(K) / 2.0)
 
 
+def _frame(sc: Scene, A: Any, C: Any) -> None:
+    """The frame AC and A's ground symbol (a drawing's)."""
+    if sc.drawing:
+        sc.add("A_ground", marks.ground, A, math.pi, role=Role.ANNOTATION, style="ground")
+        sc.add("AC_frame", segment, A, C, style="frame", role=Role.GIVEN)
+
+
+SIDES = (("left", "左"), ("right", "右"))
+"""Where the lines of B1 and B2 lie (A above ee: B1 turned clockwise from A→C, to the left)."""
+
+
 def _first(points: tuple[Point, ...]) -> Point:
     return points[0]
 
@@ -41,36 +52,35 @@ def construct(g: Mapping[str, Any]) -> Construction:
         C = add_pivot(sc, "C", Point(0.0, 0.0), ("Guide-bar pivot C on the slider's path ee", "导杆转动中心 C 位于滑块导路 ee 上"))
         A = sc.given_at("A", 0.0, AC, style="pivot", caption=(f"Crank pivot A above C, AC = {AC:g}",
                                                                f"在 C 上方取曲柄转动中心 A,AC = {AC:g}"))
+        _frame(sc, A, C)                     # with A (it was drawn with B2)
         ee = sc.add("ee", Line, C, Point(1.0, 0.0), role=Role.GIVEN, style="given", caption=("The slider's path ee", "滑块导路 ee"))
-        Bs = []
-        for i, t in enumerate(turns, 1):
-            r = sc.add(f"rB{i}", ray_at_angle, A, C, t, caption=(
+        # both lines first, then where each meets ee: a line drawn at the step whose caption draws it (issue 11)
+        rays = [sc.add(f"rB{i}", ray_at_angle, A, C, t, caption=(
                 (f"Lines through A at 90° − θ/2 to AC on either side", "过 A 作与 AC 成 90° − θ/2 的两直线") if i == 1 else ("", "")))
-            Bs.append(sc.add(f"B{i}", _first, sc.add(f"meet{i}", line_line, sc.add(f"lB{i}", ray_line, r, visible=False), ee,
-                                                    visible=False),
-                             role=Role.RESULT, style="joint", label=f"B{i}",
-                             caption=(f"They meet ee at B{i}", f"交 ee 于 B{i}")))
+                for i, t in enumerate(turns, 1)]
+        Bs = [sc.add(f"B{i}", _first, sc.add(f"meet{i}", line_line, sc.add(f"lB{i}", ray_line, r, visible=False), ee,
+                                             visible=False),
+                     role=Role.RESULT, style="joint", label=f"B{i}",
+                     caption=(f"The {side[0]} line meets ee at B{i}", f"{side[1]}侧直线交 ee 于 B{i}"))
+              for i, (r, side) in enumerate(zip(rays, SIDES), 1)]
     else:
         AB = g["AB"]
         A = sc.given("A", Point(0.0, 0.0), style="pivot", caption=("Crank pivot A", "曲柄转动中心 A"))
         down = sc.given("down", Point(0.0, -1.0), visible=False)
-        Bs = []
-        for i, t in enumerate(turns, 1):
-            r = sc.add(f"rB{i}", ray_at_angle, A, down, t, caption=(
+        rays = [sc.add(f"rB{i}", ray_at_angle, A, down, t, caption=(
                 (f"Lines through A at 90° − θ/2 to the vertical on either side", "过 A 作与铅垂线成 90° − θ/2 的两直线")
-                if i == 1 else ("", "")))
-            Bs.append(sc.add(f"B{i}", point_on_ray, r, AB, role=Role.RESULT, style="joint", label=f"B{i}",
-                             caption=(f"B{i} on it at AB = {AB:g} from A", f"在其上截取 AB = {AB:g} 得 B{i}")))
+                if i == 1 else ("", ""))) for i, t in enumerate(turns, 1)]
+        Bs = [sc.add(f"B{i}", point_on_ray, r, AB, role=Role.RESULT, style="joint", label=f"B{i}",
+                     caption=(f"B{i} on the {side[0]} line at AB = {AB:g} from A", f"在{side[1]}侧直线上截取 AB = {AB:g} 得 B{i}"))
+              for i, (r, side) in enumerate(zip(rays, SIDES), 1)]
         ee = sc.add("ee", line_through, Bs[0], Bs[1], role=Role.CONSTRUCTION, style="given",
                     caption=("The slider's path ee: the line B1B2", "滑块导路 ee:直线 B1B2"))
         C = sc.add("C", foot, ee, A, role=Role.RESULT, style="pivot", label="C",
                    caption=("The foot of A on ee: the guide-bar pivot C", "A 在 ee 上的垂足即导杆转动中心 C"))
         if drawing:
             sc.add("C_ground", marks.ground, C, -math.pi / 2, role=Role.ANNOTATION, style="ground")
+        _frame(sc, A, C)
     B1, B2 = Bs
-    if drawing:
-        sc.add("A_ground", marks.ground, A, math.pi, role=Role.ANNOTATION, style="ground")
-        sc.add("AC_frame", segment, A, C, style="frame", role=Role.GIVEN)
     measure_design(sc, A, C, B1, B2, S, beyond="", b1b2=True)
     return Construction(sc, {}, {n: n for n in ("A", "C", "B1", "B2", "D1")})
 
