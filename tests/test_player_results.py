@@ -154,3 +154,32 @@ def test_a_given_frame_is_not_drawn_twice():
     for path in sorted((ROOT / "problems").glob("*.toml")):
         caps = [c for c in _caption_steps(path.stem) if c != "…and the one on the other side"]
         assert len(caps) == len(set(caps)), (path.stem, sorted(c for c in caps if caps.count(c) > 1))
+
+
+READ_OFF_CURVES = {"s": "sd_curve", "psi": "sd_curve", "pitch_x": "pitch_curve", "pitch_y": "pitch_curve",
+                   "profile_x": "profile_curve", "profile_y": "profile_curve"}
+
+
+@pytest.mark.parametrize("stem", [p.stem for p in sorted((ROOT / "problems").glob("*.toml"))
+                                  if "at = [" in p.read_text(encoding="utf-8")])
+def test_a_cam_s_list_at_given_angles_shows_with_the_curve_it_is_read_off(stem):
+    """s (or ψ) at the cam angles of ``at`` is read off the s–δ (ψ–δ) curve, the pitch points off the pitch
+    curve, the profile's off the profile. On the base 15 cams failed: 8 showed s at step 1 (with the cam centre),
+    6 ψ, α, the pitch and profile points at step 5 (with the arm's pivot), before any diagram or curve was drawn,
+    200-07 ψ and α at step 6, its face contacts at step 2. A single asked position drawn later keeps its own,
+    later step (001-24: 15)."""
+    sol = _solution(stem)
+    sc, steps = sol.drawing_scene, _row_steps(stem)
+    listed = [n for n in sol.listed_at() if n in steps]
+    assert listed
+    for name in listed:
+        curve = READ_OFF_CURVES.get(name) or ("profile_curve" if sol.recipe.name == "cam.oscillating"
+                                              and sol.problem.given.get("follower") == "flat" else None)
+        if curve is None and name == "alpha":
+            curve = "pitch_curve" if "pitch_curve" in sc else "profile_curve"
+        if curve is None:                       # v, a, ω2, ε2: with the last step
+            assert steps[name] == len(sc.frames()), name
+            continue
+        assert steps[name] >= sc.number(curve), (name, steps[name], curve)
+        if len(sol.listed_at()[name]) > 1:
+            assert steps[name] == sc.number(curve) or name == "alpha", (name, steps[name], curve)

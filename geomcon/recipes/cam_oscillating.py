@@ -344,6 +344,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add(name, column if key else collect_all, ref, *((key,) if key else ()), role=Role.MEASUREMENT,
                    visible=False)
             answers[name] = name
+        # read off the ψ–δ curve, the pitch curve and the profile, not shown with the arm's pivot (issue 11)
+        sc.read_off("sd_curve", "psi")
+        sc.read_off("pitch_curve", "alpha", "pitch_x", "pitch_y")
+        sc.read_off("profile_curve", "profile_x", "profile_y")
     add_speed_steps(sc, answers, g, prog, h, angular=True)
     return Construction(sc, answers, {p: p for p in POINTS})
 

@@ -308,6 +308,8 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
         sc.add("alpha", face_pressures_at, fam, pos, role=Role.MEASUREMENT, visible=False)
         sc.add("face_contact", face_places_at, fam, A0, inv, tau, at, role=Role.MEASUREMENT, visible=False)
         answers.update({k: k for k in ("psi", "alpha", "face_contact")})
+        sc.read_off("sd_curve", "psi")       # read off the ψ–δ curve and the envelope (issue 11: step 6, 2)
+        sc.read_off("profile_curve", "alpha", "face_contact")
     add_speed_steps(sc, answers, g, prog, h, angular=True)
     return Construction(sc, answers, {"O": "O", "A0": "A0", "T0": "T0"})
 

@@ -510,6 +510,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add("alpha", alphas_at, curve, inv, at, visible=False)
     if at:
         answers.update({"s": "s", "alpha": "alpha"})
+        sc.read_off("sd_curve", "s")         # read off the s–δ curve, not shown with the cam centre (issue 11)
         if drawing and len(at) == 1:
             _mark_asked(sc, O, prog, h, e, s0, inv, at[0], Point(R + 0.45 * R, s0), 3.0 * R / 360.0)
     add_speed_steps(sc, answers, g, prog, h, angular=False)
