@@ -574,8 +574,8 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
         divs = [seg.start + seg.angle * i / 6 for i in range(7)]
         divs[-1] = float(np.nextafter(seg.end, seg.start))
         # the steps in the order the captions tell them, each part at its own steps: every arm position, then
-        # every point K and their curve, then every wedge (200-12 and 200-20 drew positions 1–6 and their K with the wedges, one
-        # step after "Turn the arm …" and "lay off BiKi …", and the return's without a step of their own)
+        # every point K and their curve, then every wedge (200-12 and 200-20 drew positions 1–6 and their K with
+        # the wedges, after "Turn the arm …" and "lay off BiKi …", and the return's without steps of their own)
         away = same == (part == "return")    # K beyond B: the arm swings against the cam's sense in this part
         Bs, Ks = [], []
         for i, d in enumerate(divs):
