@@ -38,7 +38,7 @@ def _step_of(stem: str, start: str) -> int:
 @pytest.mark.parametrize("stem, names, start", [
     ("200-07_oscillating_flat_face", ("alpha_max_rise", "delta_alpha_max_rise"), "The rise's worst position"),
     ("200-07_oscillating_flat_face", ("alpha_max_return", "delta_alpha_max_return"), "The return's worst position"),
-    ("200-07_oscillating_flat_face", ("face_min", "face_max"), "The flat face in its lowest position"),
+    ("200-07_oscillating_flat_face", ("face_min", "face_max", "face_length"), "The flat face in its lowest position"),
     ("001-24_cam_displacement_at_100", ("s",), "The asked position δ = 100°"),
     ("200-16_cam_poly_4567", ("s",), "The asked position δ = 75°"),
     ("001-21_cutter_drive_K1", ("DE",), "Output arm")])

@@ -248,6 +248,7 @@ def construct_flat(g: Mapping[str, Any]) -> Construction:
            unit="mm", visible=False)
     sc.add("face_length", face_length, Ref("face_lo"), Ref("face_hi"), role=Role.MEASUREMENT, unit="mm",
            visible=False)
+    sc.read_off("face0", "face_length")      # "… the face length L": with it, not with A0 at step 2 (issue 11)
     if drawing:
         reach = sc.add("face_reach", grown, Ref("face_max"), 1.12, visible=False)
         sc.add("face0", face_span, A0, T1, O, f, Ref("face_min"), Ref("face_max"), style="link", role=Role.RESULT,
