@@ -40,7 +40,7 @@ import numpy as np
 from ..cam.arm_twin import ArmTwin, arm_rho_min
 from ..cam.base_radius import RR_FACTOR, S0_MIN, ArmProgram, arm_best, arm_psi0, arm_reach, best_base, limits, part_motion
 from ..cam.oscillating import OscillatingCam
-from ..cam.profile import PitchCurve, inverted, maximise, rho_min
+from ..cam.profile import PitchCurve, inverted, inverted1, maximise, rho_min
 from ..cam.program import Program, parse_program
 from ..cam.translating import TranslatingCam
 from ..errors import NotAMechanism
@@ -205,7 +205,11 @@ def support_line(prog: Program, h: float, k: float, lo: float, hi: float, t: flo
     def g(d):
         s, v, _ = prog.motion(h, d, radians=True)
         return -(s - side * (-k * v) / t)
-    top = maximise(g, [(lo, hi)], dense=2048)
+
+    def g1(d: float) -> float:                  # g on one float (the same bits): Brent refines the peak
+        s, v, _ = prog.motion1(h, d, True)
+        return -(s - side * (-k * v) / t)
+    top = maximise(g, [(lo, hi)], dense=2048, g1=g1)
     s, v, _ = prog.motion(h, top.delta, radians=True)
     return Line(Point(-k * float(v), float(s)), Point(side * t, 1.0))
 
@@ -236,17 +240,24 @@ def nearest_admissible(origin: Point, lines: tuple[Line, ...], e: float | None, 
 
 
 def pitch_rho_min(prog: Program, h: float, rotation: str, e: float, s0: float) -> float:
-    """ρmin of the designed pitch curve (convex parts), from the inversion with exact derivatives."""
+    """ρmin of the designed pitch curve (convex parts), from the inversion with exact derivatives; refined on
+    the scalar path (``fn1``: the same operations on one float, so the same bits as ``fn``)."""
     def fn(d):
         s, v, a = prog.motion(h, d, radians=True)
         z = np.zeros_like(s)
         return inverted(d, rotation, (z + e, s0 + s), (z, v), (z, a))
+
+    motion1, ex = prog.motion1, e + 0.0          # e + 0 as z + e
+
+    def fn1(d):
+        s, v, a = motion1(h, d, True)
+        return inverted1(d, rotation, (ex, s0 + s), (0.0, v), (0.0, a))
     breaks = []
     for seg in prog.segments:
         breaks.append(math.radians(seg.end))
         if seg.law is not None and seg.law.name == "parabolic":
             breaks.append(math.radians(seg.start + seg.angle / 2))
-    return rho_min(PitchCurve(fn, tuple(b for b in breaks if 0 < b < 2 * math.pi))).value
+    return rho_min(PitchCurve(fn, tuple(b for b in breaks if 0 < b < 2 * math.pi), fn1=fn1)).value
 
 
 def height_above(O: Point, h: float, alpha_allow: float) -> float:
@@ -629,7 +640,7 @@ def construct_arm(g: Mapping[str, Any]) -> Construction:
     psi0 = sc.add("psi0", angle_deg, A0, O, B0, role=Role.MEASUREMENT, unit="deg",
                   caption=("ψ0 = ∠OA0B0", "初始摆角 ψ0 = ∠OA0B0"))
     add_angle_mark(sc, "mark_psi0", A0, O, B0, "ψ0", psi0)
-    rho = sc.add("rho_min_pitch", lambda o_a, r, p: rho_min(arm_cam(g, o_a, r, p).pitch_curve()).value, a, r0, psi0,
+    rho = sc.add("rho_min_pitch", lambda o_a, r, p: rho_min(arm_cam(g, o_a, r, p).pitch_curve(scalar=True)).value, a, r0, psi0,
                  role=Role.MEASUREMENT, unit="mm", caption=("ρmin of the pitch curve of the designed cam",
                                                             "所得凸轮理论廓线的最小曲率半径 ρmin"))
     sc.add("rr_max", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm",
@@ -662,7 +673,7 @@ def _add_arm_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any],
     psi0 = sc.add("psi0_design", angle_deg, A0, Od, B0, role=Role.MEASUREMENT, unit="deg",
                   caption=("ψ0 = ∠O′A0B0", "初始摆角 ψ0 = ∠O′A0B0"))
     add_angle_mark(sc, "mark_psi0_design", A0, Od, B0, "ψ0′", psi0)
-    rho = sc.add("rho_design", lambda o_a, r, p: rho_min(arm_cam(g, o_a, r, p).pitch_curve()).value, a, r0, psi0,
+    rho = sc.add("rho_design", lambda o_a, r, p: rho_min(arm_cam(g, o_a, r, p).pitch_curve(scalar=True)).value, a, r0, psi0,
                  role=Role.MEASUREMENT, unit="mm", caption=("ρmin of the designed pitch curve", "所设计理论廓线的 ρmin"))
     sc.add("rr_max_design", lambda r: RR_FACTOR * r, rho, role=Role.MEASUREMENT, unit="mm", visible=False)
     answers.update({"r0": "r0_design", "a": "a_design", "psi0": "psi0_design", "rho_min_pitch": "rho_design",

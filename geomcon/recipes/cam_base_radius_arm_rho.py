@@ -87,7 +87,7 @@ def grow_arm_centre(g: Mapping[str, Any], O: Point, A0: Point, B0: Point) -> Poi
         P = O + n * t
         return arm_cam(g, abs(P - A0), abs(P - B0), angle_deg(A0, P, B0))
 
-    t = _first_root(lambda t: rho_min(cam_at(t).pitch_curve()).value - g["rho_allow"], abs(O - B0), SCAN, "illinois")
+    t = _first_root(lambda t: rho_min(cam_at(t).pitch_curve(scalar=True)).value - g["rho_allow"], abs(O - B0), SCAN, "illinois")
     _check_alpha(g, cam_at(t), abs(O + n * t - B0))
     return O + n * t
 
