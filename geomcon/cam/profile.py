@@ -1196,8 +1196,7 @@ def trim_loops(raw: np.ndarray, delta: np.ndarray) -> tuple[np.ndarray, np.ndarr
     faces = list(shapely.polygonize([shapely.unary_union(LineString(np.vstack([raw, raw[:1]])))]).geoms)
     body = max(faces, key=lambda f: f.area)
     pts = np.asarray(body.exterior.coords)[:-1]
-    index = {tuple(p): i for i, p in enumerate(raw.tolist())}
-    idx = np.array([index.get(tuple(p), -1) for p in pts.tolist()], dtype=float)
+    idx = _row_index(raw, pts).astype(float)
     known = idx >= 0
     if known.sum() < 3:
         raise NotAMechanism("the cam profile collapses: its loops leave no body (roller far too large)")
@@ -1209,6 +1208,24 @@ def trim_loops(raw: np.ndarray, delta: np.ndarray) -> tuple[np.ndarray, np.ndarr
     start = int(np.argmin(idx))
     pts, idx = np.roll(pts, -start, axis=0), np.roll(idx, -start)
     return pts, np.interp(idx, np.arange(len(raw)), delta), True
+
+
+def _row_index(table: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """For each point of ``rows`` (k, 2) the index of an equal point of ``table`` (n, 2), −1 where there is
+    none; of several equal points the last, as a dictionary of the points' tuples keeps it (equal as floats:
+    −0.0 is 0.0, nan is nothing). One sort and one binary search, not n + k tuples.
+
+    >>> _row_index(np.array([[0.0, 1.0], [2.0, 3.0], [0.0, 1.0]]), np.array([[-0.0, 1.0], [2.0, 3.0], [5.0, 5.0]]))
+    array([ 2,  1, -1])
+    """
+    keys = np.ascontiguousarray(table, dtype=float).view(np.complex128).ravel()   # x + iy: sorted by x, then y
+    want = np.ascontiguousarray(rows, dtype=float).view(np.complex128).ravel()
+    order = np.argsort(keys, kind="stable")                                  # equal points in index order
+    ranked = keys[order]
+    at = np.searchsorted(ranked, want, side="right") - 1                     # the last of the equal ones
+    hit = at >= 0
+    hit[hit] = ranked[at[hit]] == want[hit]
+    return np.where(hit, order[np.maximum(at, 0)], -1)
 
 
 def validate_roller(profile: Profile, curve: PitchCurve, rr: float, *, count: int = 720) -> dict:
