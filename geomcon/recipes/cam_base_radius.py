@@ -196,7 +196,7 @@ def diagram_points(prog: Program, h: float, k: float, lo: float, hi: float, n: i
     d = np.linspace(lo, hi, n + 1)
     d[-1] = np.nextafter(hi, lo)
     s, v, _ = prog.motion(h, d, radians=True)
-    return Polyline(tuple(Point(-k * float(x), float(y)) for x, y in zip(v, s)))
+    return Polyline(tuple(Point(-k * x, y) for x, y in zip(v.tolist(), s.tolist())))
 
 
 def support_line(prog: Program, h: float, k: float, lo: float, hi: float, t: float, side: float) -> Line:
@@ -468,7 +468,7 @@ def image_curve(motion: ArmProgram, A0: Point, B0: Point, lo: float, hi: float, 
     d[-1] = np.nextafter(hi, lo)
     m = motion.motion(d)
     return Polyline(tuple(velocity_image(A0, arm_position(B0, A0, motion.tau, math.degrees(p)), motion.eps * v)
-                          for p, v in zip(m.psi, m.d1)))
+                          for p, v in zip(m.psi.tolist(), m.d1.tolist())))
 
 
 def wedge_ray(A0: Point, B: Point, K: Point, alpha: float, side: float, tau: float, O: Point) -> Segment:

@@ -82,8 +82,8 @@ def floor_curve(prog: Program, h: float, origin: Point, width: float, n: int = 7
     d = np.linspace(0.0, 2.0 * math.pi, n + 1)
     d[-1] = np.nextafter(2.0 * math.pi, 0.0)
     s, _, a = prog.motion(h, d, radians=True)
-    return Polyline(tuple(Point(origin.x + width * float(x) / (2 * math.pi), origin.y + float(y))
-                          for x, y in zip(d, s + a)))
+    return Polyline(tuple(Point(origin.x + width * x / (2 * math.pi), origin.y + y)
+                          for x, y in zip(d.tolist(), (s + a).tolist())))
 
 
 def floor_of(prog: Program, h: float) -> tuple[float, float]:

@@ -149,13 +149,14 @@ def pitch_polyline(curve: PitchCurve, n: int = 720) -> Polyline:
     """The pitch curve drawn through ``n`` exact points."""
     d = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
     x, y = curve.eval(d)[:2]
-    return Polyline(tuple(Point(a, b) for a, b in zip(x, y)), closed=True)
+    return Polyline(tuple(map(Point, x.tolist(), y.tolist())), closed=True)      # floats, not numpy scalars
 
 
 def profile_polyline(profile: Profile) -> Polyline:
     """The profile as drawn (at most :data:`DRAW_POINTS` of its points)."""
     step = max(1, len(profile.xy) // DRAW_POINTS)
-    return Polyline(tuple(Point(x, y) for x, y in profile.xy[::step]), closed=True)
+    xy = profile.xy[::step]
+    return Polyline(tuple(map(Point, xy[:, 0].tolist(), xy[:, 1].tolist())), closed=True)   # not row by row
 
 
 def extremum_value(e: Extremum) -> float:
@@ -312,7 +313,8 @@ def diagram_curve(program: Program, h: float, origin: Point, per_deg: float, sca
     """
     d = np.linspace(0.0, 360.0, 721)
     s = program.motion(h, d)[0]
-    return Polyline(tuple(Point(origin.x + a * per_deg, origin.y + b * scale) for a, b in zip(d, s)))
+    ox, oy = origin.x, origin.y
+    return Polyline(tuple(Point(ox + a * per_deg, oy + b * scale) for a, b in zip(d.tolist(), s.tolist())))
 
 
 def add_profile_steps(sc: Scene, make: Callable[..., Profile], args: tuple, caption: tuple[str, str],
