@@ -228,8 +228,10 @@ def _max_by_parabola(g: Callable, a: float, b: float, g1: Callable[[float], floa
     d = _grid(a, b)
     v = g(d)
     best = float(np.max(v))
-    w = v.tolist()
-    for i in sorted(_peaks(v), key=lambda j: -w[j])[:4]:
+    peaks = np.array(_peaks(v), dtype=np.intp)
+    # the four highest, ties by place: sorted(peaks, key=lambda j: -v[j])[:4] without a key call per peak (a
+    # dwell's flat samples are all peaks: 512 of them)
+    for i in peaks[np.argsort(-v[peaks], kind="stable")[:4]].tolist():
         best = max(best, _parabola(g, d, v, i, g1))
     if v[0] > v[1]:                               # a peak between the first two samples
         m = np.array([d[0], 0.5 * (d[0] + d[1]), d[1]])
