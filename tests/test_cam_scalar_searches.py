@@ -67,3 +67,21 @@ def test_pitch_rho_min_is_the_array_search_value():
     dense = 1.0 / float(k.max())
     assert rho <= dense * (1 + 1e-12)
     assert math.isclose(rho, dense, rel_tol=1e-8)
+
+
+def test_equal_cams_share_one_profile_and_a_curve_one_rho_min(monkeypatch):
+    """The slotter's problems draw one cam: its actual profile is made once in a process (cam.oscillating keeps
+    it per cam, roller and tolerance), and a pitch curve's ρmin is searched once (the recipe's ρmin step, then
+    the roller profile, read it)."""
+    from geomcon.recipes.cam_common import PROFILE_KEY
+
+    a = solve(load_problem(PROBLEMS / "000-06_slotter_cam_pitch_points.toml")).drawing_scene.value(PROFILE_KEY)
+    b = solve(load_problem(PROBLEMS / "000-07_slotter_cam_actual_profile.toml")).drawing_scene.value(PROFILE_KEY)
+    assert a is b and a.trimmed
+    searches = []
+    real = profile.maximise
+    monkeypatch.setattr(profile, "maximise", lambda *args, **kw: searches.append(1) or real(*args, **kw))
+    curve = transl._pitch_curve(parse_program([{"kind": "rise", "angle": 180, "law": "cosine"},
+                                               {"kind": "return", "angle": 180, "law": "cosine"}]), 10.0, 0.0, 40.0, -1.0)
+    first = profile.rho_min(curve)
+    assert profile.rho_min(curve) is first and len(searches) == 1

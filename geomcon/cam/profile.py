@@ -906,11 +906,15 @@ def rho_min(curve: PitchCurve) -> Extremum:
     >>> round(rho_min(PitchCurve(ellipse)).value, 12)     # b²/a
     18.0
     """
+    known = curve.__dict__.get("_rho_min")       # a curve's own: computed once (a recipe's ρmin step, then its
+    if known is not None:                        # roller profile, read it; the curve is frozen, the search pure)
+        return known
     fn1 = curve.fn1
     if fn1 is None:
         sigma = curve.orientation
         top = maximise(lambda d: sigma * curvature(curve.eval(d)), curve.pieces())
-        return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+        out = curve.__dict__["_rho_min"] = Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+        return out
     sense: list[int] = []
 
     def g(d):                   # the first call samples the whole turn: its points also give the orientation
@@ -920,7 +924,8 @@ def rho_min(curve: PitchCurve) -> Extremum:
         return sense[0] * curvature(c6)
 
     top = maximise(g, curve.pieces(), g1=lambda d: sense[0] * curvature1(fn1(d)), still=curve.still)
-    return Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+    out = curve.__dict__["_rho_min"] = Extremum(1.0 / top.value if top.value > 0.0 else math.inf, top.delta)
+    return out
 
 
 @lru_cache(maxsize=256)

@@ -218,6 +218,14 @@ def pitch_rho_min(curve, cam: OscillatingCam):
     return _keep(cam, "rho", rho_min(curve))
 
 
+def cam_profile(curve, rr: float, tol: float, cam: OscillatingCam):
+    """The actual profile (:func:`~geomcon.cam.profile.roller_profile` of ``curve``, the pitch curve of ``cam``)
+    for this cam, roller and tolerance, made once in a process: equal cams have equal pitch curves, so equal
+    profiles (the slotter's five problems 000-04 … 000-08 draw one cam). A pure function of its arguments,
+    read and never changed by its users."""
+    return _shared(cam, ("profile", rr, tol), lambda: roller_profile(curve, rr, tol))
+
+
 def coord(p: Point, axis: int) -> float:
     """x (axis 0) or y (axis 1) of a point."""
     return p.x if axis == 0 else p.y
@@ -301,11 +309,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
     tol = profile_tolerance(g, max(a, r0 + rr))
     if roller:
         add_roller_circles(sc, Bs, rr)
-        add_profile_steps(sc, roller_profile, (curve, rr, tol),
+        add_profile_steps(sc, cam_profile, (curve, rr, tol, cam),
                           ("Draw the inner envelope of the roller circles: the actual profile",
                            "作滚子圆族的内包络线,即凸轮的实际廓线"))
     else:
-        add_profile_steps(sc, roller_profile, (curve, 0.0, tol), ("", ""), style="link")
+        add_profile_steps(sc, cam_profile, (curve, 0.0, tol, cam), ("", ""), style="link")
     answers = {q: q for q in ("psi_max", "psi0", "rho_min_pitch", "rho_min_actual", "undercut")}
     for part, zh in (("rise", "推程"), ("return", "回程")):
         w = sc.add(f"worst_{part}", worst, cam, part, visible=False)
