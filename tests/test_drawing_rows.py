@@ -35,9 +35,10 @@ def printed(name: str) -> tuple[tuple[Figure, dict[str, str | None]], ...]:
     out = []
     real = svg_module.build_figure
 
-    def capture(sc, upto=None, viewbox=None, origin=(0.0, 0.0), target=None, mu=None, keep=None, room=None):
+    def capture(sc, upto=None, viewbox=None, origin=(0.0, 0.0), target=None, mu=None, keep=None, room=None,
+                sketch=None):
         fig = real(sc, upto, viewbox, origin, **({} if target is None else {"target": target}), mu=mu, keep=keep,
-                   room=room)
+                   room=room, sketch=sketch)
         steps, _ = shown_steps(sc, upto, keep)
         labels = {s.key: s.label for _, s in steps}
         labels.update(merged_labels(steps, fig.values, fig.view.box))

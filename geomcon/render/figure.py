@@ -181,13 +181,45 @@ def fit_view(content: Box, target: float = FIG_TARGET) -> Box:
 def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
                  origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET,
                  mu: float | None = None, keep: Callable[[Step], bool] | None = None,
-                 room: Box | None = None) -> Figure:
+                 room: Box | None = None, sketch: Sketch | None = None) -> Figure:
     """Evaluate frames 1…upto and draw them; the current frame (``upto``, when given) is highlighted;
     ``target`` is the paper width aimed at, unless the scale ``mu`` (model mm per paper mm) is given: then the
     view is ``viewbox``, or the content with :data:`FIG_MARGIN` paper mm around it, drawn at exactly ``mu``;
     ``keep`` draws only the steps it keeps (a cam on one sheet, its s–δ diagram on another); ``room`` is the
     paper box about the view where a text that would meet a link, a ground, a block or a pin in the view may go
-    instead (:func:`text_room`)."""
+    instead (:func:`text_room`). ``sketch``: the figure's strokes drawn already (:func:`sketch_figure` of the same
+    arguments), whose texts are placed now."""
+    if sketch is None:
+        sketch = sketch_figure(scene, upto, viewbox, origin, target, mu, keep)
+    _place_texts(sketch.view, sketch.groups, sketch.pending, sketch.apart, room)
+    return Figure(sketch.view, sketch.groups, sketch.values, sketch.shown)
+
+
+@dataclass
+class Sketch:
+    """A figure before its texts are placed (:func:`sketch_figure`): the view, the step drawings with every stroke,
+    marker and symbol (placing the texts only adds texts and leaders to them), what each step's texts ask for, the
+    ids of the shapes its own step's text keeps clear of too (an angle's rays), the values and the frames shown.
+    A layout search asks it whether the sheet's free room may hold the results before it places the texts
+    (:func:`geomcon.render.svg.sheet_one`)."""
+
+    view: View
+    groups: list[StepDrawing]
+    pending: list[tuple[Drawn, bool]]
+    apart: set[int]
+    values: dict[str, Any]
+    shown: int
+
+    @property
+    def shapes(self) -> list[Shape]:
+        """Every shape drawn so far (a subset of the finished figure's)."""
+        return [s for g in self.groups for s in g.shapes]
+
+
+def sketch_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = None,
+                  origin: tuple[float, float] = (0.0, 0.0), target: float = FIG_TARGET,
+                  mu: float | None = None, keep: Callable[[Step], bool] | None = None) -> Sketch:
+    """:func:`build_figure` up to placing the texts: the strokes, markers and symbols drawn, the texts asked for."""
     steps, n = shown_steps(scene, upto, keep)
     values = scene.evaluate([s.key for _, s in steps])
     if mu is None:
@@ -252,8 +284,7 @@ def build_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = No
     for drawn, _ in pending:                    # a mark's text follows its arc drawn smaller
         drawn.texts[:] = [replace(t, request=replace(t.request, anchor=moved[t.request.anchor]))
                           if t.request.anchor in moved else t for t in drawn.texts]
-    _place_texts(view, groups, pending, {id(r) for r in rays}, room)
-    return Figure(view, groups, values, n)
+    return Sketch(view, groups, pending, {id(r) for r in rays}, values, n)
 
 
 def text_room(view: View, area: Box) -> Box:
@@ -1055,5 +1086,5 @@ def label_positions(fig: Figure) -> dict[str, list[Text]]:
     return {g.key: g.texts for g in fig.groups if g.texts}
 
 
-__all__ = ["Figure", "StepDrawing", "build_figure", "content_box", "fit_view", "label_positions",
-           "shown_steps"]
+__all__ = ["Figure", "Sketch", "StepDrawing", "build_figure", "content_box", "fit_view", "label_positions",
+           "shown_steps", "sketch_figure"]

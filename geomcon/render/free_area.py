@@ -199,20 +199,42 @@ class FreeRoom:
         return int(_counts(self.table, self.grown, a([x - CLEAR]), a([y - CLEAR]), a([x + w + CLEAR]),
                            a([y + h + CLEAR]))[0]) == 0
 
+    def _free(self, w: float, h: float) -> tuple[np.ndarray, np.ndarray] | None:
+        """The corners (x, y) of every free box ``w`` × ``h`` at the grid's positions, row by row (top-left
+        first); None when there is none."""
+        x0, y0, x1, y1 = self.region
+        xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
+        if not (len(xs) and len(ys)):
+            return None
+        n = _grid_counts(self.table, self.grown, xs - CLEAR, ys - CLEAR, xs + w + CLEAR, ys + h + CLEAR)
+        free = np.flatnonzero(n == 0)
+        if not len(free):
+            return None
+        return xs[free % len(xs)], ys[free // len(xs)]
+
+    def span(self, w: float, h: float) -> tuple[float, float, float, float] | None:
+        """The least and greatest x, then y, of the corners of the free boxes ``w`` × ``h`` (:meth:`find`'s
+        positions); None when there is none.
+
+        >>> FreeRoom([], (0.0, 0.0, 50.0, 50.0), [(0.0, 0.0, 25.0, 30.0)]).span(20.0, 10.0)
+        (0.0, 30.0, 0.0, 40.0)
+        """
+        free = self._free(w, h)
+        if free is None:
+            return None
+        gx, gy = free
+        return float(gx.min()), float(gx.max()), float(gy.min()), float(gy.max())
+
     def find(self, sizes: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
         """The free box ``(x, y, w, h)`` nearest a corner of the region among ``sizes`` (tried in order: the
         first size wins a tie), clear of every shape by :data:`CLEAR`; None when no size fits anywhere."""
         x0, y0, x1, y1 = self.region
         best: tuple[float, int, tuple[float, float, float, float]] | None = None
         for rank, (w, h) in enumerate(sizes):
-            xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
-            if not (len(xs) and len(ys)):
+            free = self._free(w, h)
+            if free is None:
                 continue
-            n = _grid_counts(self.table, self.grown, xs - CLEAR, ys - CLEAR, xs + w + CLEAR, ys + h + CLEAR)
-            free = np.flatnonzero(n == 0)
-            if not len(free):
-                continue
-            gx, gy = xs[free % len(xs)], ys[free // len(xs)]       # row by row: top-left first
+            gx, gy = free                                           # row by row: top-left first
             # distance of the box to the nearest corner of the region: the larger of its x and y gaps to it
             d = np.maximum(np.minimum(gx - x0, x1 - (gx + w)), np.minimum(gy - y0, y1 - (gy + h)))
             k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie

@@ -32,7 +32,7 @@ import svgwrite
 
 from ..paper import STANDARD, Scale, Sheet, choose_scale
 from ..scene import Scene
-from .figure import Figure, build_figure, content_box, shown_steps, text_room
+from .figure import Figure, Sketch, build_figure, content_box, shown_steps, sketch_figure, text_room
 from .page import (INSET, TB_H, PageSpec, TitleBlock, centred, document, frame_box, text, title_block,
                    title_block_box)
 from .serial import Element, svg_string
@@ -186,7 +186,7 @@ def place_figure(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] 
     return sl, scale, View(box, mu, centred(((box[2] - box[0]) / mu, (box[3] - box[1]) / mu), sl.area))
 
 
-def _keepouts(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale) -> list[Box]:
+def _keepouts(fig: Figure | Sketch, sl: SheetLayout, page: PageSpec, scale: Scale) -> list[Box]:
     """What a box set into the drawing's free room must not meet besides the figure: the title block, the scale
     bar and the step captions' box."""
     tb = title_block_box(page.sheet)
@@ -342,13 +342,42 @@ def results_in_free_room(fig: Figure, sl: SheetLayout, page: PageSpec, info: Seq
                    pieces=tuple(pieces))
 
 
-def _free_room(fig: Figure, sl: SheetLayout, page: PageSpec, scale: Scale, avoid: Sequence[Box] = ()) -> Any:
+def _free_room(fig: Figure | Sketch, sl: SheetLayout, page: PageSpec, scale: Scale, avoid: Sequence[Box] = ()
+               ) -> Any:
     """The free room of sheet 1 about ``fig`` (:class:`~geomcon.render.free_area.FreeRoom`): clear of its drawn
-    elements, the title block, the scale bar, the step captions and the boxes ``avoid``."""
+    elements, the title block, the scale bar, the step captions and the boxes ``avoid`` (of a sketch, its strokes:
+    a room holding the finished figure's)."""
     from .free_area import FreeRoom
     fx0, fy0, fx1, fy1 = frame_box(page.sheet)
     return FreeRoom([s for g in fig.groups for s in g.shapes], (fx0 + INSET, fy0 + INSET, fx1 - INSET, fy1 - INSET),
                     _keepouts(fig, sl, page, scale) + list(avoid))
+
+
+def may_hold_results(room: Any, info: Sequence[str], warnings: Sequence[str]) -> bool:
+    """Whether :func:`results_in_free_room` may set ``info`` and ``warnings`` in ``room`` without splitting the
+    results (a piece of warnings apart is allowed), where ``room`` holds at least the free room it will be given:
+    False only where it surely cannot. It finds them one box, or the results one box and the warnings another
+    clear of it (:func:`_pieces`); those boxes take free places of ``room`` too, two boxes that do not overlap
+    lie apart along x or along y, so some result box's and some warnings box's places must lie so. A room with
+    less taken (the strokes of a figure whose texts are not placed yet) answers for one with more.
+
+    >>> from geomcon.render.free_area import FreeRoom
+    >>> room = FreeRoom([], (0.0, 0.0, 130.0, 100.0), [(0.0, 0.0, 30.0, 100.0)])     # 95 mm × 100 mm free
+    >>> info, warned = ["s = 1 mm"] * 12, ["check it"] * 8        # 95 × 60.2 mm and 95 × 42 mm: each alone fits
+    >>> may_hold_results(room, info, warned), may_hold_results(room, info, warned[:2])
+    (False, True)
+    """
+    from .free_area import WIDTHS
+    if room.find(_info_sizes(info, warnings)) is not None:
+        return True
+    if not (info and warnings):
+        return False
+    rs = [(w, h, sp) for w in WIDTHS for h in [info_height(info, w) - 4.0] if (sp := room.span(w, h)) is not None]
+    ws = [(w, h, sp) for w in WIDTHS for h in [info_height((), w, warnings) - 4.0]
+          if (sp := room.span(w, h)) is not None]
+    # warnings left of, right of, above or below the results: (least x, greatest x, least y, greatest y) of each
+    return any(q[0] + qw <= r[1] or r[0] + rw <= q[1] or q[2] + qh <= r[3] or r[2] + rh <= q[3]
+               for rw, rh, r in rs for qw, qh, q in ws)
 
 
 def _info_sizes(info: Sequence[str], warnings: Sequence[str]) -> list[tuple[float, float]]:
@@ -592,28 +621,46 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
         least = (min(WIDTHS) - 2 * FIG_MARGIN, info_height(lines[0], max(WIDTHS), lines[1]) - 4.0 - 2 * FIG_MARGIN)
         fy0, fy1 = frame_box(page.sheet)[1::2]
         tall = fy1 - fy0 - 2 * INSET                        # a block taller than the frame fits no placing
-        asides = iter(aside_views(view, sl.area, least))
+        views = [view] + aside_views(view, sl.area, least)
+        built: dict[int, Drawn] = {0: drawings[0]}                  # each placing's drawing, once drawn
+        sketches: dict[int, tuple[Sketch, Any]] = {}                 # its strokes and their free room, before
         tried: dict[tuple[int, int], SheetLayout | None] = {}        # (placing, lines) → the results placed
 
-        def placings() -> Any:
-            """The drawing centred, then set aside (each built once, when first asked for)."""
-            i = 0
-            while i < len(drawings) or (v := next(asides, None)) is not None:
-                if i == len(drawings):
-                    f = build_figure(scene, upto, v.box, v.origin, mu=v.mu, keep=keep, room=text_room(v, sl.area))
-                    drawings.append((scale, v, f, _figure_and_marks(dwg, scene, f, scale, apart is None)))
-                yield drawings[i]
-                i += 1
+        def drawing(i: int) -> Drawn:
+            """Placing ``i``'s drawing (0 centred, then set aside), its texts placed once, when first asked for."""
+            if i not in built:
+                v = views[i]
+                sk = sketches.pop(i, (None, None))[0]
+                f = build_figure(scene, upto, v.box, v.origin, mu=v.mu, keep=keep, room=text_room(v, sl.area),
+                                 sketch=sk)
+                built[i] = (scale, v, f, _figure_and_marks(dwg, scene, f, scale, apart is None))
+            return built[i]
+
+        def may_hold(i: int, lines: Sequence[str], warned: Sequence[str]) -> bool:
+            """Whether the lines may find one box about placing ``i`` (a drawing set aside, not yet drawn): its
+            texts only take room, so where its strokes alone leave none (:func:`may_hold_results`) they will
+            not be placed at all (000-03's four placings aside, 100-07's two)."""
+            if i in built:
+                return True
+            if i not in sketches:
+                v = views[i]
+                sk = sketch_figure(scene, upto, v.box, v.origin, mu=v.mu, keep=keep)
+                sketches[i] = (sk, _free_room(sk, sl, page, scale))
+            return may_hold_results(sketches[i][1], lines, warned)
 
         def first(lines: Sequence[str], warned: Sequence[str], boxes: int) -> tuple[SheetLayout, Drawn] | None:
             centred = boxes > 1 or info_height(lines, max(WIDTHS), warned) - 4.0 > tall
-            for i, d in enumerate(drawings[:1] if centred else placings()):
+            for i in range(1 if centred else len(views)):
                 if (i, id(lines)) not in tried:
+                    if boxes == 1 and not may_hold(i, lines, warned):
+                        tried[i, id(lines)] = None
+                        continue
+                    d = drawing(i)
                     tried[i, id(lines)] = results_in_free_room(d[2], sl, page, lines, warned, scale, info_steps,
                                                                _boxes(d[3][1]))
                 placed = tried[i, id(lines)]
                 if placed is not None and (boxes > 1 or not split(placed)):
-                    return placed, d
+                    return placed, built[i]
             return None
 
         found = first(info, warnings, 1) or first(info, warnings, 2)     # one box, else two (centred)
