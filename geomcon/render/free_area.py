@@ -177,6 +177,7 @@ class FreeRoom:
             _grid = raster([obstacle(s) for s in shapes] + [shapely.box(*k) for k in keepouts], self.grown)
         self.grid = _grid
         self.table = _table(_grid)
+        self._nearest: dict[tuple[float, float], tuple[float, float, float] | None] = {}     # :meth:`find`'s, by size
 
     def without(self, box: Box) -> FreeRoom:
         """This room with ``box`` (paper mm) taken."""
@@ -228,20 +229,31 @@ class FreeRoom:
     def find(self, sizes: Sequence[tuple[float, float]]) -> tuple[float, float, float, float] | None:
         """The free box ``(x, y, w, h)`` nearest a corner of the region among ``sizes`` (tried in order: the
         first size wins a tie), clear of every shape by :data:`CLEAR`; None when no size fits anywhere."""
-        x0, y0, x1, y1 = self.region
         best: tuple[float, int, tuple[float, float, float, float]] | None = None
         for rank, (w, h) in enumerate(sizes):
-            free = self._free(w, h)
-            if free is None:
+            near = self._nearest.get((w, h), False)
+            if near is False:
+                near = self._nearest[w, h] = self._near(w, h)
+            if near is None:
                 continue
-            gx, gy = free                                           # row by row: top-left first
-            # distance of the box to the nearest corner of the region: the larger of its x and y gaps to it
-            d = np.maximum(np.minimum(gx - x0, x1 - (gx + w)), np.minimum(gy - y0, y1 - (gy + h)))
-            k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie
-            cand = (float(d[k]), rank, (float(gx[k]), float(gy[k]), w, h))
+            cand = (near[0], rank, (near[1], near[2], w, h))
             if best is None or cand[:2] < best[:2]:
                 best = cand
         return None if best is None else best[2]
+
+    def _near(self, w: float, h: float) -> tuple[float, float, float] | None:
+        """The free box ``w`` × ``h`` nearest a corner of the region: its distance to that corner and its corner
+        (x, y); None when there is none. Remembered by :meth:`find` (a room is never changed: :meth:`without`
+        makes another), which a layout search asks the same sizes again and again."""
+        free = self._free(w, h)
+        if free is None:
+            return None
+        x0, y0, x1, y1 = self.region
+        gx, gy = free                                           # row by row: top-left first
+        # distance of the box to the nearest corner of the region: the larger of its x and y gaps to it
+        d = np.maximum(np.minimum(gx - x0, x1 - (gx + w)), np.minimum(gy - y0, y1 - (gy + h)))
+        k = int(np.argmin(d))                      # the first (row-major: top-left first) on a tie
+        return float(d[k]), float(gx[k]), float(gy[k])
 
 
 def free_box(shapes: Iterable[Shape], region: Box, keepouts: Sequence[Box], sizes: Sequence[tuple[float, float]]

@@ -23,6 +23,7 @@ True
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -372,8 +373,9 @@ def may_hold_results(room: Any, info: Sequence[str], warnings: Sequence[str]) ->
         return True
     if not (info and warnings):
         return False
-    rs = [(w, h, sp) for w in WIDTHS for h in [info_height(info, w) - 4.0] if (sp := room.span(w, h)) is not None]
-    ws = [(w, h, sp) for w in WIDTHS for h in [info_height((), w, warnings) - 4.0]
+    rs = [(w, h, sp) for w in WIDTHS for h in [_height(tuple(info), w, ()) - 4.0]
+          if (sp := room.span(w, h)) is not None]
+    ws = [(w, h, sp) for w in WIDTHS for h in [_height((), w, tuple(warnings)) - 4.0]
           if (sp := room.span(w, h)) is not None]
     # warnings left of, right of, above or below the results: (least x, greatest x, least y, greatest y) of each
     return any(q[0] + qw <= r[1] or r[0] + rw <= q[1] or q[2] + qh <= r[3] or r[2] + rh <= q[3]
@@ -384,7 +386,16 @@ def _info_sizes(info: Sequence[str], warnings: Sequence[str]) -> list[tuple[floa
     """The boxes one block of the results and warnings may take: each width of
     :data:`~geomcon.render.free_area.WIDTHS` and the height its lines wrap to."""
     from .free_area import WIDTHS
-    return [(w, info_height(info, w, warnings) - 4.0) for w in WIDTHS]
+    info, warnings = tuple(info), tuple(warnings)
+    return [(w, _height(info, w, warnings) - 4.0) for w in WIDTHS]
+
+
+@functools.lru_cache(maxsize=4096)
+def _height(info: tuple[str, ...], width: float, warnings: tuple[str, ...]) -> float:
+    """:func:`~geomcon.render.protocol.info_height`, remembered (a function of the lines and the width alone): a
+    layout search asks the height of the same lines in every free room it tries (000-06's detail window tried in
+    seven places, the results split two ways in each)."""
+    return info_height(info, width, warnings)
 
 
 MAX_PIECES = 2
@@ -419,7 +430,7 @@ def _pieces(room: Any, info: Sequence[str], warnings: Sequence[str], steps: Sequ
     order = sorted(range(len(info)), key=lambda i: (steps[i] if steps is not None else None) or 0)
 
     def height(rows: Sequence[int], w: float, warn: bool) -> float:
-        return info_height([info[i] for i in rows], w, warnings if warn else ()) - 4.0
+        return _height(tuple([info[i] for i in rows]), w, tuple(warnings) if warn else ()) - 4.0
 
     def piece(spot: tuple[float, float, float, float], rows: Sequence[int], warn: bool) -> Piece:
         x, y, w, h = spot
