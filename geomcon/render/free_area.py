@@ -158,6 +158,24 @@ def _grid_counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarra
     return (a[:, j1] - b[:, j1] - a[:, j0] + b[:, j0]).ravel()
 
 
+_DRAWN: dict[tuple[Box, tuple[int, ...]], tuple[tuple[Shape, ...], np.ndarray]] = {}
+_DRAWN_MAX = 8
+
+
+def _drawn(shapes: tuple[Shape, ...], region: Box) -> np.ndarray:
+    """:func:`raster` of the shapes' obstacles, remembered for the last few sets of shapes (the same objects: shapes
+    are frozen, and kept here while remembered so that no other takes their ids): a sheet's layout search makes the
+    free room of one figure again and again, with other boxes kept out (results_in_free_room for each block of
+    lines, each detail window). Not to be changed: a room copies it."""
+    key = (region, tuple(map(id, shapes)))
+    hit = _DRAWN.get(key)
+    if hit is None:
+        if len(_DRAWN) >= _DRAWN_MAX:
+            _DRAWN.clear()
+        hit = _DRAWN[key] = (shapes, raster([obstacle(s) for s in shapes], region))
+    return hit[1]
+
+
 class FreeRoom:
     """The free room of ``region`` (paper mm) around ``shapes`` and ``keepouts``, rasterised once
     (:func:`raster`): :meth:`find` places boxes in it, :meth:`without` takes a placed box out of it.
@@ -174,7 +192,9 @@ class FreeRoom:
         x0, y0, x1, y1 = region
         self.grown = (x0 - 2 * CLEAR, y0 - 2 * CLEAR, x1 + 2 * CLEAR, y1 + 2 * CLEAR)
         if _grid is None:
-            _grid = raster([obstacle(s) for s in shapes] + [shapely.box(*k) for k in keepouts], self.grown)
+            _grid = _drawn(tuple(shapes), self.grown).copy()
+            if len(keepouts):                   # a raster marks each geometry's cells: of all, the union of each's
+                np.maximum(_grid, raster([shapely.box(*k) for k in keepouts], self.grown), out=_grid)
         self.grid = _grid
         self.table = _table(_grid)
         self._nearest: dict[tuple[float, float], tuple[float, float, float] | None] = {}     # :meth:`find`'s, by size
