@@ -22,6 +22,7 @@ True
 """
 from __future__ import annotations
 
+import functools
 from typing import Iterable, Sequence
 
 import numpy as np
@@ -138,6 +139,18 @@ def _counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx
     return table[i1, j1] - table[i0, j1] - table[i1, j0] + table[i0, j0]
 
 
+def _cells(b0: np.ndarray, b1: np.ndarray, lo: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The first and past-the-last cell (of ``n`` from ``lo``) along one axis of boxes from ``b0`` to ``b1``, one
+    cell of slack around (:func:`_counts`'s arithmetic)."""
+    c0 = ((b0 - lo) // CELL).astype(np.int64) - 1
+    c1 = ((b1 - lo) // CELL).astype(np.int64) + 2
+    np.maximum(c0, 0, out=c0)                   # np.clip's numbers, without its overhead
+    np.minimum(c0, n, out=c0)
+    np.maximum(c1, 0, out=c1)
+    np.minimum(c1, n, out=c1)
+    return c0, c1
+
+
 def _grid_counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarray, bx1: np.ndarray, by1: np.ndarray
                  ) -> np.ndarray:
     """:func:`_counts` of every box of a grid: the boxes ``(bx0[j], by0[i], bx1[j], by1[i])`` (paper mm), their
@@ -150,12 +163,25 @@ def _grid_counts(table: np.ndarray, region: Box, bx0: np.ndarray, by0: np.ndarra
     [0, 0]
     """
     ny, nx = table.shape[0] - 1, table.shape[1] - 1
-    j0 = np.clip((((bx0 - region[0]) // CELL).astype(np.int64) - 1), 0, nx)
-    i0 = np.clip((((by0 - region[1]) // CELL).astype(np.int64) - 1), 0, ny)
-    j1 = np.clip((((bx1 - region[0]) // CELL).astype(np.int64) + 2), 0, nx)
-    i1 = np.clip((((by1 - region[1]) // CELL).astype(np.int64) + 2), 0, ny)
+    j0, j1 = _cells(bx0, bx1, region[0], nx)
+    i0, i1 = _cells(by0, by1, region[1], ny)
+    return _read(table, i0, i1, j0, j1)
+
+
+def _read(table: np.ndarray, i0: np.ndarray, i1: np.ndarray, j0: np.ndarray, j1: np.ndarray) -> np.ndarray:
+    """The counts of the cells ``i0:i1`` × ``j0:j1`` for every row range and column range, raveled row by row."""
     a, b = table[i1], table[i0]
     return (a[:, j1] - b[:, j1] - a[:, j0] + b[:, j0]).ravel()
+
+
+@functools.lru_cache(maxsize=1024)
+def _axis(lo: float, hi: float, size: float, origin: float, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The grid positions of a box ``size`` long from ``lo`` to ``hi`` (:func:`_positions`) and the cells each
+    covers grown by :data:`CLEAR` (:func:`_cells` of a raster of ``n`` cells from ``origin``): a function of its
+    arguments alone, remembered (a sheet's rooms share their region and are asked the same sizes). Not to be
+    changed."""
+    pos = _positions(lo, hi - size)
+    return (pos, *_cells(pos - CLEAR, pos + size + CLEAR, origin, n))
 
 
 _DRAWN: dict[tuple[Box, tuple[int, ...]], tuple[tuple[Shape, ...], np.ndarray]] = {}
@@ -224,10 +250,12 @@ class FreeRoom:
         """The corners (x, y) of every free box ``w`` × ``h`` at the grid's positions, row by row (top-left
         first); None when there is none."""
         x0, y0, x1, y1 = self.region
-        xs, ys = _positions(x0, x1 - w), _positions(y0, y1 - h)
+        ny, nx = self.table.shape[0] - 1, self.table.shape[1] - 1
+        xs, j0, j1 = _axis(x0, x1, w, self.grown[0], nx)
+        ys, i0, i1 = _axis(y0, y1, h, self.grown[1], ny)
         if not (len(xs) and len(ys)):
             return None
-        n = _grid_counts(self.table, self.grown, xs - CLEAR, ys - CLEAR, xs + w + CLEAR, ys + h + CLEAR)
+        n = _read(self.table, i0, i1, j0, j1)          # :func:`_grid_counts` of the boxes at those positions
         free = np.flatnonzero(n == 0)
         if not len(free):
             return None
