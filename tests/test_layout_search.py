@@ -87,3 +87,35 @@ def test_may_hold_results_turns_placings_down() -> None:
     finally:
         svg_module.may_hold_results = real
     assert calls.count(False) >= 4
+
+
+def test_a_figure_rastered_after_its_sketch_is_rastered_the_same() -> None:
+    """A room of a finished figure whose strokes (its sketch) were rasterised before adds only the texts to that
+    raster (:func:`geomcon.render.free_area._drawn`): the same cells as the figure rasterised whole."""
+    from geomcon.render import free_area
+    from geomcon.render.figure import build_figure, sketch_figure
+    from geomcon.render.shapes import obstacle
+    path = next(iter(sorted(PROBLEMS.glob("100-04_*.toml"))))
+    sc = solve(load_problem(path)).drawing_scene
+    sketch = sketch_figure(sc)
+    strokes = tuple(sketch.shapes)
+    fig = build_figure(sc, sketch=sketch)
+    shapes = tuple(s for g in fig.groups for s in g.shapes)
+    assert len(shapes) > len(strokes)
+    region = (0.0, 0.0, 300.0, 220.0)
+    free_area._DRAWN.clear()
+    free_area._drawn(strokes, region)
+    sizes, real = [], free_area.raster
+
+    def counted(geoms, at):
+        sizes.append(len(geoms))
+        return real(geoms, at)
+
+    free_area.raster = counted
+    try:
+        added = free_area._drawn(shapes, region)
+    finally:
+        free_area.raster = real
+    assert sizes == [len(shapes) - len(strokes)]            # only the texts and leaders rasterised
+    whole = free_area.raster([obstacle(s) for s in shapes], region)
+    assert added.any() and (added == whole).all()

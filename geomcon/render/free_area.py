@@ -192,13 +192,24 @@ def _drawn(shapes: tuple[Shape, ...], region: Box) -> np.ndarray:
     """:func:`raster` of the shapes' obstacles, remembered for the last few sets of shapes (the same objects: shapes
     are frozen, and kept here while remembered so that no other takes their ids): a sheet's layout search makes the
     free room of one figure again and again, with other boxes kept out (results_in_free_room for each block of
-    lines, each detail window). Not to be changed: a room copies it."""
+    lines, each detail window). A raster marks each geometry's cells, so that of shapes holding a remembered set is
+    that set's with the others' added (a figure whose strokes were asked before its texts were placed,
+    :func:`geomcon.render.svg.may_hold_results`). Not to be changed: a room copies it."""
     key = (region, tuple(map(id, shapes)))
     hit = _DRAWN.get(key)
     if hit is None:
+        grid = None
+        ids = set(key[1])
+        for (at, some), (_, part) in _DRAWN.items():      # a figure rasterised before its texts were placed
+            if at == region and len(some) < len(ids) and ids.issuperset(some):     # (a sketch): the rest added
+                had = set(some)
+                grid = np.maximum(part, raster([obstacle(s) for s in shapes if id(s) not in had], region))
+                break
+        if grid is None:
+            grid = raster([obstacle(s) for s in shapes], region)
         if len(_DRAWN) >= _DRAWN_MAX:
             _DRAWN.clear()
-        hit = _DRAWN[key] = (shapes, raster([obstacle(s) for s in shapes], region))
+        hit = _DRAWN[key] = (shapes, grid)
     return hit[1]
 
 
