@@ -625,7 +625,6 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
     dwg = document(page.sheet)
     drawn, marks = _figure_and_marks(dwg, scene, fig, scale, apart is None)
     if not sl.info_here and (info or warnings):            # the drawing's free room, before a sheet of their own
-        drawings: list[Drawn] = [(scale, view, fig, (drawn, marks))]
         from .free_area import WIDTHS
         lines = min([(info, warnings)] + ([brief] if brief is not None else []),
                     key=lambda b: info_height(b[0], max(WIDTHS), b[1]))
@@ -633,7 +632,7 @@ def sheet_one(scene: Scene, page: PageSpec = PageSpec(), info: Sequence[str] = (
         fy0, fy1 = frame_box(page.sheet)[1::2]
         tall = fy1 - fy0 - 2 * INSET                        # a block taller than the frame fits no placing
         views = [view] + aside_views(view, sl.area, least)
-        built: dict[int, Drawn] = {0: drawings[0]}                  # each placing's drawing, once drawn
+        built: dict[int, Drawn] = {0: (scale, view, fig, (drawn, marks))}      # each placing's drawing, once drawn
         sketches: dict[int, tuple[Sketch, Any]] = {}                 # its strokes and their free room, before
         tried: dict[tuple[int, int], SheetLayout | None] = {}        # (placing, lines) → the results placed
 
