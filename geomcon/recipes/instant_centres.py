@@ -168,7 +168,8 @@ def slider_construct(g: Mapping[str, Any]) -> Construction:
                caption=("P34 lies at infinity perpendicular to the guide: the arrow points to it",
                         "P34 位于垂直于导路的无穷远处(箭头所指方向)"))
     sc.add("vC_w1", slider_rate, P13, A, role=Role.MEASUREMENT, unit="mm",
-           caption=("vC = ω1·P14P13: the slider moves as the crank's point P13", "vC = ω1·P14P13(滑块与曲柄上 P13 点速度相同)"))
+           caption=("The slider moves as the crank's point P13 (signed along +x): vC/ω1 = ±P14P13",
+                    "滑块与曲柄上 P13 点速度相同(沿 +x 为正):vC/ω1 = ±P14P13"))
     sc.add("w2_w1", ratio_along, B, A, P24, role=Role.MEASUREMENT,
            caption=("ω2/ω1 = P14P12/P24P12", "ω2/ω1 = P14P12/P24P12"))
     sc.add("P13_xy", xy, P13, visible=False)

@@ -222,6 +222,8 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
     ("shaper.design_by_K", "h"): _n("h", "distance of the ram's guide from C", "滑枕导路至 C 的距离"),
     ("guide_bar.design_by_K", "CD"): _n("CD", "guide bar, C to D", "导杆"),
     ("guide_bar.design_by_K", "DE"): _n("DE", "coupler to the ram", "连杆"),
+    # a crank-slider has no rocker: its link 3 is the slider (400-05 printed "P13 … 曲柄与摇杆的瞬心")
+    ("crank_slider.instant_centres", "P13"): _n("P13", "instant centre of crank and slider", "曲柄与滑块的瞬心"),
 }
 """Printed names that differ by recipe (an arm's ω2 is not a coupler's; a cam follower's a is not a centre
 distance): looked up before :data:`NAMES`."""
