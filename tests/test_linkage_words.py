@@ -7,9 +7,13 @@ Each test here failed on the gallery before the fix it guards:
   a crank-slider has no rocker, its link 3 is the slider (the recipe's own answer says so).
 - 400-05's protocol step said "vC = ω1·P14P13 … = −116.862 mm", a velocity in mm: the value is vC/ω1, as the
   Results print it.
+- 001-03c and 300-01 (four_bar.analysis) hid the coupler's other joint at each dead point: the two links in line
+  read as one link (001-03c's A_d1–C as "AC", B nowhere) and "γ=0° (collinear)" pointed at the middle of a line;
+  their protocols named the radius of the dead-point circle "Z + e" and "|Z − e|", the code's names.
 """
 from __future__ import annotations
 
+import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -56,3 +60,40 @@ def test_slider_rate_step_names_its_quantity():
         assert "vC/ω1 = " in text and "vC = " not in text and text.endswith("P14P13"), (en, zh)
     protocol = " ".join(_texts(GALLERY / "400-05_crank_slider_instant_centres-2.svg"))
     assert "vC = ω1" not in protocol.replace("₁", "1")
+
+
+ANALYSIS = sorted(p for p in (ROOT / "problems").glob("*.toml")
+                  if 'recipe = "four_bar.analysis"' in p.read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize("path", ANALYSIS, ids=lambda p: p.stem)
+def test_dead_point_joint_drawn_and_named(path):
+    """At each dead point the coupler's other joint is drawn, labelled and lies on the line of the two links:
+    hidden, 001-03c's A_d1–C read as one link "AC" (B nowhere) and "γ=0° (collinear)" pointed at mid-line."""
+    sc = solve(load_problem(path)).scene
+    dead = [k for k in ("Bdead1", "Bdead2") if k in sc]
+    for key in dead:
+        other = key.replace("Bdead", "Cdead")
+        step = sc[other]
+        assert step.visible and step.label and step.label.endswith(f"d{key[-1]}"), (other, step.label)
+        assert step.caption[0] and step.caption[1], other
+        # on the line through the dead point and the driven link's pivot
+        mark = sc[f"mark_gamma_dead{key[-1]}"]
+        pe = mark.args[2]
+        P, Q, R = (sc.value(getattr(x, "key", x)) for x in (key, other, pe))
+        cross = (Q.x - P.x) * (R.y - P.y) - (Q.y - P.y) * (R.x - P.x)
+        assert abs(cross) <= 1e-9 * max(1.0, abs(P.x - R.x) + abs(P.y - R.y)) ** 2, (other, cross)
+    svg = " ".join(_texts(GALLERY / f"{path.stem}.svg"))
+    for key in dead:
+        assert sc[key.replace("Bdead", "Cdead")].label in svg
+
+
+@pytest.mark.parametrize("path", ANALYSIS, ids=lambda p: p.stem)
+def test_radii_named_by_links(path):
+    """A caption names a radius by the links that make it (AB + BC), never by the code's Z and e."""
+    sc = solve(load_problem(path)).scene
+    for step in sc.visible_steps():
+        en, zh = sc.caption(step.key)
+        for text in (en, zh):
+            assert not re.search(r"(?<![A-Za-z])[Ze](?![A-Za-z0-9])\s*[+−-]|[+−-]\s*e(?![A-Za-z0-9])", text), \
+                (step.key, text)

@@ -94,13 +94,15 @@ def _hidden(dom: str, group_id: str) -> bool:
 
 @pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium not installed (apt-get install chromium)")
 def test_the_player_shows_vB_and_its_alpha_mark_with_the_vector(tmp_path):
-    """300-01's gallery player in headless Chromium: at step 23 ("Pressure angle α = 90° − γ") neither the end
-    point vB nor the α mark shows (the vector is not drawn yet); at step 24 all three do."""
+    """300-01's gallery player in headless Chromium: at the step "Pressure angle α = 90° − γ" (23, 24 since the
+    dead point's joint Bd1 is a step) neither the end point vB nor the α mark shows (the vector is not drawn
+    yet); at the next step all three do."""
     page = tmp_path / "300-01.html"
     page.write_text((ROOT / "gallery" / "300-01_four_bar_double_rocker_pressure_angle.html").read_text(encoding="utf-8"),
                     encoding="utf-8")
-    before, at = _dom(page, "#step=23"), _dom(page, "#step=24")
-    assert 'id="count">step 23 / ' in before and 'id="count">step 24 / ' in at
+    k = _step_of(_scene("300-01_four_bar_double_rocker_pressure_angle"), "Pressure angle α = 90° − γ")
+    before, at = _dom(page, f"#step={k}"), _dom(page, f"#step={k + 1}")
+    assert f'id="count">step {k} / ' in before and f'id="count">step {k + 1} / ' in at
     for group in ("step-v_end", "step-mark_alpha", "step-v_line"):
         assert _hidden(before, group) and not _hidden(at, group), group
 

@@ -220,20 +220,34 @@ def construct(g: Mapping[str, Any]) -> Construction:
         if drawing:
             sc.add(f"mark_gamma_{i}", transmission_mark, Cg, Bg, Pe, f"γ{i}", gk, role=Role.ANNOTATION, style="angle")
     if not d_full:
+        zname, ename = link_name(jd1, je1), link_name(je, je1)      # the coupler and the driven link, by name
         for i, (r, over) in enumerate(((Z + e, False), (abs(Z - e), Z > e)), 1):
             if r == 0 or not abs(F - d) - REL_TOL * scale <= r <= F + d + REL_TOL * scale:
                 continue
+            # the radius named by the links it adds (001-03c, 300-01 printed "radius Z + e", the code's names)
+            rname = f"{zname} + {ename}" if i == 1 else (f"{zname} − {ename}" if Z > e else f"{ename} − {zname}")
             kr = sc.add(f"kdead{i}", circle, Pe, sc.add(f"rdead{i}", total if i == 1 else _abs_diff, Z, e,
                                                          visible=False, unit="mm"),
-                        caption=(f"Circle about {je} with radius {'Z + e' if i == 1 else '|Z − e|'} = {r:g}: "
-                                 f"coupler and {link_name(je, je1)} collinear",
-                                 f"以 {je} 为圆心、{r:g} 为半径作圆(连杆与 {link_name(je, je1)} 共线)"))
+                        caption=(f"Circle about {je} with radius {rname} = {r:g}: coupler {zname} and {ename} "
+                                 "collinear",
+                                 f"以 {je} 为圆心、{rname} = {r:g} 为半径作圆(连杆 {zname} 与 {ename} 共线)"))
             Bd = sc.add(f"Bdead{i}", circle_circle, sc.add(f"kd{i}", circle, Pd, d, visible=False), kr, branch=side,
                         style="joint", label=f"{jd1}d{i}",
                         caption=(f"It meets the path of {jd1} at the dead point {jd1}d{i}",
                                  f"交 {jd1} 点轨迹于死点位置 {jd1}d{i}"))
-            Cd = (sc.add(f"Cdead{i}", point_along, Bd, Pe, Z, visible=False) if over else
-                  sc.add(f"Cdead{i}", point_along, Pe, Bd, e, visible=False))
+            # the coupler's other joint at the dead point, drawn and named: hidden, the links in line read as one
+            # link {jd1}d{i}–{je} and "γ = 0° (collinear)" pointed at the middle of a line (001-03c, 300-01)
+            if i == 1:                                          # folded out: between the two
+                where = (f"on {jd1}d{i}{je}", f"在 {jd1}d{i}{je} 上")
+            elif over:                                          # the coupler reaches past the pivot
+                where = (f"on {jd1}d{i}{je} extended beyond {je}", f"在 {jd1}d{i}{je} 的延长线上({je} 之外)")
+            else:                                               # the driven link reaches past the dead point
+                where = (f"on {je}{jd1}d{i} extended beyond {jd1}d{i}", f"在 {je}{jd1}d{i} 的延长线上({jd1}d{i} 之外)")
+            cap = (f"{je1}d{i} {where[0]}, {zname} = {Z:g} from {jd1}d{i}",
+                   f"{where[1]}取 {je1}d{i},使 {zname} = {Z:g}")
+            Cd = (sc.add(f"Cdead{i}", point_along, Bd, Pe, Z, style="joint", label=f"{je1}d{i}", caption=cap)
+                  if over else
+                  sc.add(f"Cdead{i}", point_along, Pe, Bd, e, style="joint", label=f"{je1}d{i}", caption=cap))
             for a, b, nm in ((Pd, Bd, "d"), (Bd, Cd, "c"), (Cd, Pe, "e")) if drawing else ():
                 add_bar(sc, f"dead{i}_{nm}", a, b, style="link-alt", role=Role.CONSTRUCTION)
             gammas.append(sc.add(f"gamma_dead{i}", transmission_deg, Bd, Cd, Pe, role=Role.MEASUREMENT, unit="deg",
