@@ -8,7 +8,8 @@ The rules, each over one figure of the sheet (the main figure, or its detail vie
   ", C4" is measured from its name, not its comma; points closer than a label's height share one label);
 - no pin (a hinge's hollow circle) comes within :data:`PIN_GAP` of another point's marker, and no ground symbol or
   slider block overlaps one (a symbol meets the points at its own hinge only);
-- no ground symbol touches a dimension's ink away from its hinge;
+- no ground symbol touches a dimension's ink away from its hinge, nor a right angle's square (100-02's A hung its
+  legs and hatch over the squares of two perpendicular bisectors' feet: one tangle);
 - no point's label covers a slider block.
 
 Two pins that meet in the main figure, or a slider block and a pin, that one of the sheet's detail views draws
@@ -139,6 +140,7 @@ def knots(svg: str) -> list[Knot]:
     labels: dict[str, list[tuple[_Point, str, tuple[float, float, float, float]]]] = {}
     symbols: dict[str, list[tuple[str, list[list[tuple[float, float]]]]]] = {}
     dims: dict[str, list[tuple[str, shapely.MultiLineString]]] = {}
+    squares: dict[str, list[tuple[str, shapely.MultiLineString]]] = {}
     for classes, gid, body in GROUP.findall(svg):
         fig = gid.split("step-", 1)[0]                 # "", "detail-", a second window's "detail-2-"
         key = gid.split("step-", 1)[1]
@@ -159,6 +161,8 @@ def knots(svg: str) -> list[Knot]:
                 symbols.setdefault(fig, []).append((f"{kind} {key}", paths))
             if kind == "dim" and paths:
                 dims.setdefault(fig, []).append((key, shapely.MultiLineString(paths)))
+            if kind == "right-angle" and paths:
+                squares.setdefault(fig, []).append((key, shapely.MultiLineString(paths)))
     out: list[Knot] = []
     for fig in sorted(points, key=lambda f: (f != "", f)):
         pts = points[fig]
@@ -198,6 +202,9 @@ def knots(svg: str) -> list[Knot]:
                 for key, line in dims.get(fig, []):
                     if apart.distance(line) < DIM_TOUCH:
                         out.append(Knot(fig, f"{what} meets dimension {key}"))
+                for key, line in squares.get(fig, []):
+                    if apart.distance(line) < DIM_TOUCH:
+                        out.append(Knot(fig, f"{what} meets right angle {key}"))
     shown = {f: {p.key for p in pts} | {w.split(" ", 1)[1] for w, _ in symbols.get(f, [])}
              for f, pts in points.items() if f}
     return _read_in_detail(out, shown)
@@ -222,8 +229,9 @@ def _read_in_detail(found: list[Knot], shown: dict[str, set[str]]) -> list[Knot]
 
 
 def _kind(gid: str, svg: str) -> str | None:
-    """``"ground"``, ``"slider"`` or ``"dim"`` for a step group drawing that symbol, else None."""
-    m = re.search(rf'<g class="step[^"]*style-(ground|slider|dim)\b[^"]*" data-step="\d+" id="{re.escape(gid)}"', svg)
+    """``"ground"``, ``"slider"``, ``"dim"`` or ``"right-angle"`` for a step group drawing that symbol, else None."""
+    m = re.search(rf'<g class="step[^"]*style-(ground|slider|dim|right-angle)\b[^"]*" data-step="\d+" id="{re.escape(gid)}"',
+                  svg)
     return m.group(1) if m else None
 
 

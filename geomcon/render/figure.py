@@ -39,7 +39,7 @@ from .joined import reads_back, spans
 from .labels import label_extent, text_width
 from .shapes import ArcP, Disc, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, PAPER, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
-from .symbols import dimension_lines, draw, guide_bands, kind_of, sector
+from .symbols import dimension_lines, draw, guide_bands, kind_of, right_angle_square, sector
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
@@ -436,13 +436,17 @@ def _sliders(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) 
 
 def _sectors(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, ...], ...]:
     """The angle marks of the frame on paper as polygons: the vertex and its arc, at the largest radius the
-    mark may take (:func:`geomcon.render.symbols.sector`)."""
+    mark may take (:func:`geomcon.render.symbols.sector`), then the right angles' squares
+    (:func:`geomcon.render.symbols.right_angle_square`)."""
     marks = [m for _, s in steps for m in _all(values[s.key]) if isinstance(m, AngleMark)]
     at: dict[tuple[float, float], int] = {}
     for m in marks:
         key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
         at[key] = at.get(key, 0) + 1
-    return tuple(p for m in marks for p in [sector(m, view, at[(round(m.vertex.x, 9), round(m.vertex.y, 9))])] if p)
+    squares = [q for _, s in steps for m in _all(values[s.key]) if isinstance(m, RightAngleMark)
+               for q in [right_angle_square(m, view, 1.0)] if q]      # a right angle's square, 1 mm beyond
+    return tuple(p for m in marks for p in [sector(m, view, at[(round(m.vertex.x, 9), round(m.vertex.y, 9))])]
+                 if p) + tuple(squares)
 
 
 def _all(v: Any) -> list[Any]:
