@@ -10,6 +10,9 @@ Each test here failed on the gallery before the fix it guards:
 - 001-03c and 300-01 (four_bar.analysis) hid the coupler's other joint at each dead point: the two links in line
   read as one link (001-03c's A_d1–C as "AC", B nowhere) and "γ=0° (collinear)" pointed at the middle of a line;
   their protocols named the radius of the dead-point circle "Z + e" and "|Z − e|", the code's names.
+- 001-05c (H = 400), 001-09 (S = 160) and 300-02 (S = 300) asked for a ram's stroke and printed it only in the
+  Results: their drawings joined D1D2 with a thin line or nothing, with no dimension (000-02 and the
+  crank-sliders dimension theirs).
 """
 from __future__ import annotations
 
@@ -97,3 +100,25 @@ def test_radii_named_by_links(path):
         for text in (en, zh):
             assert not re.search(r"(?<![A-Za-z])[Ze](?![A-Za-z0-9])\s*[+−-]|[+−-]\s*e(?![A-Za-z0-9])", text), \
                 (step.key, text)
+
+
+def _json(path: Path) -> dict:
+    import json
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+STROKES = sorted(p for p in GALLERY.glob("*.json")
+                 if isinstance(_json(p).get("answers"), dict)
+                 and any(isinstance(_json(p)["answers"].get(k), (int, float)) for k in ("H", "S")))
+
+
+@pytest.mark.parametrize("path", STROKES, ids=lambda p: p.stem)
+def test_an_asked_stroke_is_dimensioned(path):
+    """A stroke H or S that a problem asks for is dimensioned on its drawing, with the value of its answer."""
+    answers = _json(path)["answers"]
+    svg = path.with_suffix(".svg").read_text(encoding="utf-8")
+    dims = ["".join(ET.fromstring(g).itertext()) for g in
+            re.findall(r'<g class="step[^"]*style-dim[^"]*"[^>]*>.*?</g>', svg, re.S)]
+    for k in ("H", "S"):
+        if isinstance(answers.get(k), (int, float)):
+            assert f"{k}={answers[k]:.2f}" in dims, (k, answers[k], dims)

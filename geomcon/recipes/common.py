@@ -497,3 +497,21 @@ for _op, _kinds, _out, _k in ((length, "PP", "x", length_k), (pressure_deg, "PPL
                               (half_sum, "PPP", "x", half_sum_k), (folded_flag, "PPP", "x", folded_flag_k),
                               (near_flag, "PPPP", "x", near_flag_k)):
     register(_op, _kinds, _out, _k, pure=True)                  # none decides by the tolerance
+
+
+STROKE_STAND_OFF = 0.12
+"""How far a stroke's dimension line stands off the line of its ends, a fraction of the stroke."""
+
+
+def stroke_dimension(a: Point, b: Point, away: Point, symbol: str, value: float) -> marks.Dimension:
+    """The stroke ``symbol`` = ``value`` dimensioned between its ends ``a`` and ``b``, standing off on the side away
+    from ``away`` (the crank's pivot: the mechanism lies there): 001-05c printed H = 400 and 001-09, 300-02
+    S = 160, 300 without a dimension on the drawing, where 000-02 and the crank-sliders dimension theirs.
+
+    >>> d = stroke_dimension(Point(-50.0, 10.0), Point(50.0, 10.0), Point(0.0, 0.0), "S", 100.0)
+    >>> d.offset, (d.b - d.a).unit().perp().y * d.offset > 0          # above the ends, away from the pivot below
+    (12.0, True)
+    """
+    n = (b - a).unit().perp()
+    side = 1.0 if n.dot(a - away) >= 0.0 else -1.0
+    return marks.dimension(a, b, symbol, value, side * STROKE_STAND_OFF * abs(b - a))

@@ -22,7 +22,7 @@ from ..errors import NotAMechanism
 from ..geometry import Point, ToLeftOf, ToRightOf, circle, circle_circle, point_along, rotate, segment, thales_circle
 from ..scene import Role, Scene, marks
 from .base import Construction, Quantity
-from .common import add_angle_mark, add_bar, add_pivot, angle_deg, k_ratio, length, total
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg, k_ratio, length, stroke_dimension, total
 
 GIVENS = (
     Quantity("e", "mm", "offset of the guide line from the guide bar's pivot C (0: the guide passes through C)",
@@ -120,8 +120,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add("D1D2", segment, Ds[0], Ds[1], style="construction", caption=("Join D1D2", "连接 D1D2"))
             for i, D in enumerate(Ds, 1):        # the ram's block at the lever's end, moving along D1D2
                 sc.add(f"ram{i}", _ram_block, D, Ds[0], Ds[1], role=Role.ANNOTATION, style="slider")
-        sc.add("H", length, Ds[0], Ds[1], role=Role.MEASUREMENT, unit="mm",
-               caption=("The ram's stroke H = D1D2", "滑枕行程 H = D1D2"))
+        H = sc.add("H", length, Ds[0], Ds[1], role=Role.MEASUREMENT, unit="mm",
+                   caption=("The ram's stroke H = D1D2", "滑枕行程 H = D1D2"))
+        if drawing:
+            sc.add("dim_H", stroke_dimension, Ds[0], Ds[1], A, "H", H, role=Role.ANNOTATION, style="dim",
+                   caption=("Dimension the stroke H", "标注行程 H"))
         answers["H"] = "H"
         points |= {"D1": "D1", "D2": "D2"}
     if drawing:

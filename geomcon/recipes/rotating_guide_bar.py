@@ -17,7 +17,7 @@ from ..errors import NotAMechanism
 from ..geometry import Leftmost, Point, Rightmost, circle, line_circle, line_through, point_along, segment
 from ..scene import Role, Scene, marks
 from .base import Construction, Quantity, Recipe
-from .common import add_angle_mark, add_bar, add_pivot, angle_deg, difference, length
+from .common import add_angle_mark, add_bar, add_pivot, angle_deg, difference, length, stroke_dimension
 
 GIVENS = (
     Quantity("AB", "mm", "crank (longer than the frame: the guide bar turns fully)"),
@@ -106,8 +106,11 @@ def construct(g: Mapping[str, Any]) -> Construction:
                 sc.add(f"ram{i}", _block, D, C, Cr, role=Role.ANNOTATION, style="slider", caption=(
                     "The ram at its ends of stroke at D1 and D2 (there the coupler DE lies along the stroke line, so E "
                     "moves by D1D2)", "滑枕位于行程两端 D1、D2 处(此时连杆 DE 沿导路,E 的行程等于 D1D2)") if i == 1 else ("", ""))
-        sc.add("S", length, Ds[0], Ds[1], role=Role.MEASUREMENT, unit="mm",
-               caption=("The ram's stroke S = D1D2", "滑枕行程 S = D1D2"))
+        S = sc.add("S", length, Ds[0], Ds[1], role=Role.MEASUREMENT, unit="mm",
+                   caption=("The ram's stroke S = D1D2", "滑枕行程 S = D1D2"))
+        if drawing:
+            sc.add("dim_S", stroke_dimension, Ds[0], Ds[1], A, "S", S, role=Role.ANNOTATION, style="dim",
+                   caption=("Dimension the stroke S", "标注行程 S"))
         answers["S"] = "S"
         points |= {"D1": "D1", "D2": "D2"}
     if drawing:
