@@ -13,6 +13,8 @@ Each test here failed on the gallery before the fix it guards:
 - 001-05c (H = 400), 001-09 (S = 160) and 300-02 (S = 300) asked for a ram's stroke and printed it only in the
   Results: their drawings joined D1D2 with a thin line or nothing, with no dimension (000-02 and the
   crank-sliders dimension theirs).
+- 100-03's warning printed the drafted lengths each to its own digits, B1K1 = 24.9977319, B2K2 = 24.999784,
+  B3K3 = 25.000244: now to one number of decimals that shows their spread (24.9977, 24.9998, 25.0002).
 """
 from __future__ import annotations
 
@@ -122,3 +124,15 @@ def test_an_asked_stroke_is_dimensioned(path):
     for k in ("H", "S"):
         if isinstance(answers.get(k), (int, float)):
             assert f"{k}={answers[k]:.2f}" in dims, (k, answers[k], dims)
+
+
+def test_drafted_lengths_print_alike():
+    """The lengths a drafted-data warning compares carry one number of decimals, enough to show they differ."""
+    warnings = _json(GALLERY / "100-03_four_bar_fixed_pivots_coupler_point.json")["warnings"]
+    text = next(w if isinstance(w, str) else " ".join(map(str, w.values())) for w in warnings
+                if "rigid coupler" in (w if isinstance(w, str) else " ".join(map(str, w.values()))))
+    values = re.findall(r"B\dK\d = (-?\d+\.?(\d*))", text)
+    assert len(values) == 3, text
+    decimals = {len(d) for _, d in values}
+    assert len(decimals) == 1 and 3 <= decimals.pop() <= 6, values
+    assert len({v for v, _ in values}) == 3, values           # still seen to differ

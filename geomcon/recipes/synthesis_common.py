@@ -86,6 +86,17 @@ def require_distinct_noncollinear(names: Sequence[str], pts: Sequence[Point], wh
     return []
 
 
+def spread_decimals(spread: float) -> int:
+    """Decimals that print lengths ``spread`` mm apart alike and show that they differ: two significant digits of
+    the spread, at least 3 (the sheet's). 100-03 printed B1K1 = 24.9977319, B2K2 = 24.999784, B3K3 = 25.000244
+    (``:.10g``, each its own length); now 24.9977, 24.9998, 25.0002.
+
+    >>> spread_decimals(0.00251), spread_decimals(0.01), spread_decimals(1e-5), spread_decimals(2.0)
+    (4, 3, 6, 3)
+    """
+    return max(3, 1 - math.floor(math.log10(spread))) if spread > 0 else 3
+
+
 def require_equal(what: str, named: Mapping[str, float], *, refuse_rel: float = CHECK_REL, why: str = "") -> list[str]:
     """Refuse when the lengths differ by more than ``refuse_rel`` relative; warn (``why`` says what is used
     instead) when they differ by more than 1e-9 relative (the twin-check tolerance)."""
@@ -93,7 +104,7 @@ def require_equal(what: str, named: Mapping[str, float], *, refuse_rel: float = 
     spread = max(vals) - min(vals)
     if spread <= CHECK_REL * max(vals):
         return []
-    seq = ", ".join(f"{k} = {v:.10g}" for k, v in named.items())
+    seq = ", ".join(f"{k} = {v:.{spread_decimals(spread)}f}" for k, v in named.items())
     if spread > refuse_rel * max(vals):
         raise NotAMechanism(f"{what}: {seq} differ by {spread:.3g} mm (more than {refuse_rel:g} = "
                             f"{100 * refuse_rel:g} % of the longest, the limit of drafting error)")
