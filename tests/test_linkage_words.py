@@ -13,6 +13,7 @@ Each test here failed on the gallery before the fix it guards:
 - 001-05c (H = 400), 001-09 (S = 160) and 300-02 (S = 300) asked for a ram's stroke and printed it only in the
   Results: their drawings joined D1D2 with a thin line or nothing, with no dimension (000-02 and the
   crank-sliders dimension theirs).
+- 001-02's protocol said "双曲柄：BC 取 无" ("BC takes: none"); now "BC 无取值范围".
 - 100-03's warning printed the drafted lengths each to its own digits, B1K1 = 24.9977319, B2K2 = 24.999784,
   B3K3 = 25.000244: now to one number of decimals that shows their spread (24.9977, 24.9998, 25.0002).
 """
@@ -136,3 +137,8 @@ def test_drafted_lengths_print_alike():
     decimals = {len(d) for _, d in values}
     assert len(decimals) == 1 and 3 <= decimals.pop() <= 6, values
     assert len({v for v, _ in values}) == 3, values           # still seen to differ
+
+
+def test_an_empty_range_reads_as_chinese():
+    protocol = " ".join(_texts(GALLERY / "001-02_four_bar_link_ranges-2.svg"))
+    assert "取 无" not in protocol and "双曲柄：BC 无取值范围" in protocol

@@ -169,7 +169,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
         flat = [v for iv in runs[name] for v in iv]
         sc.add(name, _intervals, *flat, role=Role.MEASUREMENT,
                caption=(f"{en}: {x} in " + (", ".join(interval_text(*iv) for iv in runs[name]) or "no range"),
-                        f"{zh}:{x} 取 " + ("、".join(interval_text(*iv) for iv in runs[name]) or "无")))
+                        f"{zh}:" + (f"{x} 取 " + "、".join(interval_text(*iv) for iv in runs[name]) if runs[name]
+                                    else f"{x} 无取值范围")))         # not "BC 取 无" (BC takes: none)
         answers[name] = name
         y = -row * i
         if sc.drawing:
