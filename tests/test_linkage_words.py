@@ -13,6 +13,8 @@ Each test here failed on the gallery before the fix it guards:
 - 001-05c (H = 400), 001-09 (S = 160) and 300-02 (S = 300) asked for a ram's stroke and printed it only in the
   Results: their drawings joined D1D2 with a thin line or nothing, with no dimension (000-02 and the
   crank-sliders dimension theirs).
+- 001-04 (offset guide bar, no lever) drew two dots at the far ends of the dashed lines CT1, CT2, unnamed: a
+  student looks for two points the problem never names.
 - 001-02's protocol said "双曲柄：BC 取 无" ("BC takes: none"); now "BC 无取值范围".
 - 100-03's warning printed the drafted lengths each to its own digits, B1K1 = 24.9977319, B2K2 = 24.999784,
   B3K3 = 25.000244: now to one number of decimals that shows their spread (24.9977, 24.9998, 25.0002).
@@ -142,3 +144,15 @@ def test_drafted_lengths_print_alike():
 def test_an_empty_range_reads_as_chinese():
     protocol = " ".join(_texts(GALLERY / "001-02_four_bar_link_ranges-2.svg"))
     assert "取 无" not in protocol and "双曲柄：BC 无取值范围" in protocol
+
+
+def test_no_unnamed_dot_on_the_offset_guide_bar():
+    """Every point 001-04's sheet draws (a marker of a step) carries a label."""
+    import sys
+    sys.path.insert(0, str(Path(__file__).parent))
+    from knots import CIRCLE, GROUP, MARKER, TEXT
+    svg = (GALLERY / "001-04_guide_bar_offset.svg").read_text(encoding="utf-8")
+    unnamed = [gid for cls, gid, body in GROUP.findall(svg)
+               if (c := CIRCLE.findall(body)) and body.startswith("<circle") and float(c[0][3]) <= MARKER
+               and not TEXT.findall(body)]
+    assert not unnamed, unnamed

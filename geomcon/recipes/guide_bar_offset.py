@@ -101,7 +101,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     for i, T in enumerate((T1, T2), 1):
         D = sc.add(f"D{i}", point_along, C, T, reach, role=Role.RESULT if L is not None else Role.CONSTRUCTION,
                    style="joint" if L is not None else "point", label=f"D{i}" if L is not None else None,
-                   visible=L is not None or drawing,
+                   visible=L is not None,          # without a lever only the dashed line CT's far end: no point
                    caption=((f"The lever's end D{i} at L = {L:g} from C along CT{i}", f"在 CT{i} 上截取 CD{i} = L = {L:g}")
                             if L is not None else ("", "")))
         Ds.append(D)
