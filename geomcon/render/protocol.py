@@ -29,7 +29,7 @@ from .labels import rich_runs, text_width, wrap
 from .page import text, zh_punct
 from .serial import Element
 from .shapes import add_runs
-from .zh import zh_remark
+from .zh import en_remark, zh_remark
 from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
 from .view import fmt
 
@@ -104,7 +104,8 @@ def _raw(scene: Scene, lang: str, notes: Mapping[str, tuple[str, str]] | None = 
         s = group[0]
         en, zh = scene.caption(s.key)
         if notes and s.key in notes:
-            en, zh = en + notes[s.key][0], zh_remark(zh, notes[s.key][1].strip("（）")) if zh else zh  # one bracket
+            note_en, note_zh = (n.strip().strip("()（）") for n in notes[s.key])   # one bracket each side
+            en, zh = en_remark(en, note_en), zh_remark(zh, note_zh) if zh else zh
         zh = zh_punct(zh) if zh else zh
         measured = s.role == Role.MEASUREMENT or s.unit in ("mm", "deg")
         first = (zh or en or s.key) if lang == "zh" else (en or s.key)
