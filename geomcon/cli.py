@@ -433,7 +433,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         files = {out / "grades.csv": grades_csv(book), out / "grades.json": grades_json(book),
                  out / "report.html": report_html(book)}
         for r, name in zip(book.rows, file_names([r.id or f"line-{r.line}" for r in book.rows])):
-            files[out / "feedback" / name] = feedback_text(r, book.key.title, book.key.lang)
+            files[out / "feedback" / name] = feedback_text(r, book.key.title, book.key.lang, book.key.title_zh)
         write_all(files)
     except GeomconError as exc:
         return _fail(args.file, str(exc))
