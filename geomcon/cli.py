@@ -49,12 +49,19 @@ def _fail_write(where: str, exc: OSError) -> int:
 
 
 def _summary(sol, lang: str = "en") -> str:
-    """The text a solve prints: the header, the results as the figure prints them (``θ = 12.506° (= analytic;
+    """The text a solve prints: the header (with "— solution N of M" when the problem has several valid
+    solutions, as the sheet of solution N says it), the results as the figure prints them (``θ = 12.506° (= analytic;
     textbook 12.5, -0.04 %)``, in ``lang``), the other valid solutions, the warnings as the figure words them
     (``published θ = 25``, not the file's ``theta``; ``警告：`` and the Chinese sentence for zh, both for ``both``) and the steps evaluated."""
     from .render.results import result_line
 
-    title = sol.problem.title_in(lang).replace("\n", "  ")          # both: "English  中文", as the headings
+    from .solve import solution_note
+
+    title = sol.problem.title_in(lang)
+    count = len(sol.solution_values)
+    if title and count > 1:                       # which solution this is, as a drawing of solution N titles it
+        title = solution_note(title, sol.solution_numbers[0], count)
+    title = title.replace("\n", "  ")                               # both: "English  中文", as the headings
     lines = [f"{sol.problem.id}: {sol.recipe.name}" + (f" — {title}" if title else "")]
     lines += [f"  {line}" for line in sol.figure_lines(lang)]
     others = sol.solution_values[1:]
@@ -426,7 +433,7 @@ def cmd_check(args: argparse.Namespace) -> int:
         files = {out / "grades.csv": grades_csv(book), out / "grades.json": grades_json(book),
                  out / "report.html": report_html(book)}
         for r, name in zip(book.rows, file_names([r.id or f"line-{r.line}" for r in book.rows])):
-            files[out / "feedback" / name] = feedback_text(r, book.key.title, book.key.lang)
+            files[out / "feedback" / name] = feedback_text(r, book.key.title, book.key.lang, book.key.title_zh)
         write_all(files)
     except GeomconError as exc:
         return _fail(args.file, str(exc))

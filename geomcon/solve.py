@@ -787,11 +787,7 @@ class Solution:
         note = getattr(self, "_title_note", None)
         if note is None:
             return shown
-        n, count = note
-        lines = shown.split("\n")
-        words = [f"——解 {n}（共 {count} 个）" if any("\u4e00" <= ch <= "\u9fff" for ch in line)
-                 else f" — solution {n} of {count}" for line in lines]
-        return "\n".join(line + w for line, w in zip(lines, words))
+        return solution_note(shown, *note)
 
     def as_solution(self, n: int) -> Solution:
         """The problem drawn and reported as its valid solution ``n`` (1 = the textbook's choice, as listed
@@ -876,6 +872,19 @@ class Solution:
         from .render.svg import frame_of
         full = sheet or self.svg(page=page)
         return [frame_of(full, k) for k in range(1, len(self.drawing_scene.frames()) + 1)]
+
+
+def solution_note(title: str, n: int, count: int) -> str:
+    """``title`` with which of ``count`` valid solutions is shown said on each of its lines, in the line's
+    language: the drawing of another solution (:meth:`Solution.title`) and the terminal's header.
+
+    >>> solution_note("Jaw crusher\\n颚式破碎机", 2, 4)
+    'Jaw crusher — solution 2 of 4\\n颚式破碎机——解 2（共 4 个）'
+    """
+    lines = title.split("\n")
+    words = [f"——解 {n}（共 {count} 个）" if any("\u4e00" <= ch <= "\u9fff" for ch in line)
+             else f" — solution {n} of {count}" for line in lines]
+    return "\n".join(line + w for line, w in zip(lines, words))
 
 
 def solve(problem: Problem) -> Solution:

@@ -21,6 +21,7 @@ from .keyfile import Answer, Key
 
 CLASS_SPEC = '''# A worksheet spec for the grading tests and the gallery's graded example: design by K, extremes, a cam.
 title = "Grading example — linkages and a cam"
+title_zh = "评分示例——连杆机构与凸轮"
 seed = 13
 
 [[exercise]]
@@ -163,7 +164,7 @@ def gallery_files(students: int = 8) -> dict[str, str]:
     book = grade(key, read_answers(answers.encode()), cache=prepared)
     return {"grading_key.json": key_text, "grading_answers.csv": answers, "grading_grades.csv": grades_csv(book),
             "grading_grades.json": grades_json(book), "grading_report.html": report_html(book),
-            "grading_feedback_2.txt": feedback_text(book.rows[1], key.title, key.lang),
+            "grading_feedback_2.txt": feedback_text(book.rows[1], key.title, key.lang, key.title_zh),
             "grading_bank.xml": moodle_xml(key, cache=prepared)}
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 
+from ..problems import title_in
 from .credit import GradedRow
 from .tables import num
 
@@ -67,10 +68,11 @@ def _one(r: GradedRow, title: str, lang: str) -> str:
     return "\n".join(lines)
 
 
-def feedback_text(r: GradedRow, title: str, lang: str) -> str:
-    """One student's feedback text in ``lang`` (``en``, ``zh`` or ``both``)."""
+def feedback_text(r: GradedRow, title: str, lang: str, title_zh: str = "") -> str:
+    """One student's feedback text in ``lang`` (``en``, ``zh`` or ``both``), each language's part headed by the
+    title in that language (``title_zh``, when there is one, for Chinese)."""
     langs = ("en", "zh") if lang == "both" else (lang,)
-    return "\n".join(_one(r, title, lg) for lg in langs)
+    return "\n".join(_one(r, title_in(title, title_zh, lg), lg) for lg in langs)
 
 
 __all__ = ["feedback_text", "file_names"]

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any, Mapping
 
 from ..errors import GeomconError, ProblemError
+from ..problems import one_line_title, title_in
 from ..recipes import get_recipe
 from ..worksheet.spec import AnswerRef, _answer_ref
 
@@ -79,13 +80,26 @@ class StudentKey:
 @dataclass(frozen=True)
 class Key:
     """A loaded key: title, language of the sheet, the columns in key order, the students by id (a problem
-    file's one variant under the id ``*``, used for every row)."""
+    file's one variant under the id ``*``, used for every row), where it came from and the Chinese title (the
+    spec's or problem's ``title_zh``; "" when it has none)."""
 
     title: str
     lang: str
     columns: tuple[str, ...]
     students: Mapping[str, StudentKey]
     source: str
+    title_zh: str = ""
+
+    def heading(self, lang: str | None = None) -> str:
+        """The title in ``lang`` (the key's own language by default) on one line, as the pages made from the key
+        print it (:func:`~geomcon.problems.title_in`: ``both`` is English, two spaces, Chinese; ``zh`` falls
+        back to the English title when there is no Chinese one).
+
+        >>> k = Key("Guide bar", "both", (), {}, "key", "导杆机构")
+        >>> k.heading(), k.heading("zh"), k.heading("en")
+        ('Guide bar  导杆机构', '导杆机构', 'Guide bar')
+        """
+        return one_line_title(title_in(self.title, self.title_zh, self.lang if lang is None else lang))
 
     def variant_of(self, ident: str) -> StudentKey | None:
         """The variant a row with id ``ident`` is graded against."""
@@ -186,7 +200,8 @@ def key_from_json(text: str) -> Key:
             raise _bad(f"{where}: the id {s['id'][:40]!r} appears twice")
         students[s["id"]] = StudentKey(s["id"], str(s.get("name", ""))[:200], str(s.get("variant", ""))[:64], tuple(exs))
     title = data.get("title") if isinstance(data.get("title"), str) else ""
-    return Key(title, lang, tuple(columns), students, "key")
+    zh = data.get("title_zh") if isinstance(data.get("title_zh"), str) else ""
+    return Key(title, lang, tuple(columns), students, "key", zh)
 
 
 def key_from_problem(path: str | Path) -> Key:
@@ -235,7 +250,7 @@ def key_from_problem(path: str | Path) -> Key:
         out.append(Answer(r.name, 1, r, float(exact), exact, float(t), t, 1.0))
     ex = ExerciseKey(1, recipe.name, given, tuple(out), {}, problem.statement if isinstance(problem.statement, str) else "")
     return Key(problem.title or problem.id, "en", tuple(a.column for a in out),
-               {"*": StudentKey("*", "", "", (ex,))}, "problem")
+               {"*": StudentKey("*", "", "", (ex,))}, "problem", problem.title_zh)
 
 
 def load_key(path: str | Path) -> Key:

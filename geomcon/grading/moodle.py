@@ -118,7 +118,7 @@ def _cloze_field(a: Answer, p) -> str:
 
 
 def _question(key: Key, sid: str, variant: str, ex: ExerciseKey, figure: bool, p: Prepared) -> str:
-    name = f"{key.title} — {ex.n} — {variant or sid}"
+    name = f"{key.heading()} — {ex.n} — {variant or sid}"
     fname = f"ex{ex.n}-{(variant or sid).replace('/', '_')}.svg"
     text = f"<p>{escape(ex.statement)}</p>"
     files = ""
@@ -156,7 +156,7 @@ def moodle_xml(key: Key, *, figures: bool = True, ids: Iterable[str] | None = No
     chosen = list(ids) if ids is not None else list(key.students)
     numbers = sorted({ex.n for s in key.students.values() for ex in s.exercises})
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
-    title = key.title.replace("/", "-") or "geomcon"
+    title = key.heading().replace("/", "-") or "geomcon"
     for n in numbers:
         out.append(f'<question type="category"><category><text>{xml_escape(f"$course$/top/{title}/Exercise {n}")}'
                    "</text></category><info format=\"html\"><text></text></info></question>")

@@ -98,7 +98,7 @@ def report_html(book: Gradebook) -> str:
         for g in r.answers:
             if g.diagnosis and g.diagnosis not in seen:
                 seen[g.diagnosis] = g.en
-    title = escape(book.key.title or "Class report")
+    title = escape(book.key.heading() or "Class report")          # in the key's language (both: "English  中文")
     mean = sum(r.score for r in graded) / len(graded) if graded else 0.0
     lang = "zh" if book.key.lang == "zh" else "en"
     out = ["<!DOCTYPE html>", f'<html lang="{lang}"><head><meta charset="utf-8">', f"<title>{title} — grades</title>",

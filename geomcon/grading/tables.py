@@ -101,7 +101,8 @@ def grades_data(book: Gradebook) -> dict[str, Any]:
         rows.append({"line": r.line, "id": r.id, "name": r.name, "score": rounded(r.score, 1.0),
                      "max_score": rounded(r.max_score, 1.0), "duplicate_id": r.duplicate,
                      "problem": r.problem, "answers": answers})
-    return {"title": book.key.title, "source": book.key.source, "columns": list(book.columns), "rows": rows,
+    return {"title": book.key.title, **({"title_zh": book.key.title_zh} if book.key.title_zh else {}),
+            "source": book.key.source, "columns": list(book.columns), "rows": rows,
             "notes": list(book.notes)}
 
 

@@ -201,12 +201,19 @@ def pressure_mark(P: Point, normal: Point, velocity: Point, value: float, size: 
     return marks.AngleMark(P, P + n * size, P + velocity.unit() * size, symbol, value, None)
 
 
+RENDERED_BAND = (0.6, 0.55, 0.5, 0.45, 0.4)
+"""The radii (parts of the mark's ``size``) the renderer may draw a pressure-angle arc at: about 0.6·size, drawn
+smaller to clear a point of the figure inside the angle (000-04…08's α′max: 0.49·size, 1.99 mm of paper off the base
+circle where 0.6·size kept 2.46 mm)."""
+
+
 def pressure_mark_clear(P: Point, normal: Point, velocity: Point, value: float, size: float, symbol: str,
                         centre: Point, r0: float, gap: float) -> marks.AngleMark:
     """:func:`pressure_mark`, its arc kept ``gap`` (model mm) off the base circle (``centre``, ``r0``): where the arc
     the renderer would draw (about 0.6·``size`` from P) runs along the base circle within ``gap`` — 200-06's α′max
-    arc ran nearly tangent to it, 0.2 mm inside — it is drawn at the nearest radius from 0.6 to 1.4·``size`` that
-    keeps ``gap`` off it all along (within the drawn normal and velocity lines); else as the renderer chooses.
+    arc ran nearly tangent to it, 0.2 mm inside; 000-04's, shrunk by the renderer off a point, 1.99 mm of paper — it
+    is drawn at the nearest radius from 0.6 to 1.4·``size`` that keeps ``gap`` off it all along (within the drawn
+    normal and velocity lines), else at 0.5, 0.4 or 0.3·``size``; else as the renderer chooses.
 
     >>> B, n, v = Point(53.48, 7.0), Point(-17.78, -16.12), Point(-23.47, -5.01)        # 200-06's return
     >>> round(pressure_mark_clear(B, n, v, 30.15, 24.0, "α′max", Point(0.0, 0.0), 40.0, 4.0).radius, 1)
@@ -221,9 +228,9 @@ def pressure_mark_clear(P: Point, normal: Point, velocity: Point, value: float, 
 
     def clearance(rho: float) -> float:
         return float(np.min(np.abs(np.hypot(P.x + rho * np.cos(t) - centre.x, P.y + rho * np.sin(t) - centre.y) - r0)))
-    if clearance(0.6 * size) >= gap:
+    if min(clearance(k * size) for k in RENDERED_BAND) >= gap:
         return m
-    for k in sorted((0.6 + 0.1 * i for i in range(9)), key=lambda k: abs(k - 0.6)):
+    for k in (*(0.6 + 0.1 * i for i in range(9)), 0.5, 0.4, 0.3):         # larger first: a small arc may be clamped
         if clearance(k * size) >= gap:
             return marks.AngleMark(m.vertex, m.a, m.b, symbol, value, k * size)
     return m

@@ -412,7 +412,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
            role=Role.ANNOTATION, style="dim", caption=("Dimension s from the lowest position", "标注位移 s"))
     answers = {n: n for n in ("r0", "r0_actual", "h", "rise_angle", "return_angle", "delta", "s", "alpha")}
     if g.get("omega") is not None:
-        sc.add("v", velocity, A, B, sense, g["omega"], Ref("delta"), Ref("rise_angle"), role=Role.MEASUREMENT, unit="",
+        sc.add("v", velocity, A, B, sense, g["omega"], Ref("delta"), Ref("rise_angle"), role=Role.MEASUREMENT, unit="mm/s",
                caption=("Instant centre P: AB meets the line through O ⊥ the guide; v = ω·OP",
                         "瞬心 P:AB 与过 O 垂直于导路的直线之交点;v = ω·OP"))
         answers["v"] = "v"
@@ -538,7 +538,7 @@ def _finish_flat(sc: Scene, g: Mapping[str, Any], O: Ref, A: Ref, D: Ref, axis: 
     answers.update({"alpha_max_rise": "alpha", "alpha_max_return": "alpha", "alpha_min_rise": "alpha",
                     "alpha_max": "alpha"})
     if g.get("omega") is not None:
-        sc.add("v", velocity, A, K, sense, g["omega"], Ref("delta"), Ref("rise_angle"), role=Role.MEASUREMENT, unit="",
+        sc.add("v", velocity, A, K, sense, g["omega"], Ref("delta"), Ref("rise_angle"), role=Role.MEASUREMENT, unit="mm/s",
                caption=("Instant centre P below A on the line through O ⊥ the guide; v = ω·OP",
                         "瞬心 P(法线与过 O 垂直导路之线的交点);v = ω·OP"))
         answers["v"] = "v"

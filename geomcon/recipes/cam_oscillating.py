@@ -69,7 +69,8 @@ ANSWERS = (
     Quantity("rho_min_actual", "mm", "of the actual profile: ρmin − rr (roller; ≤ 0 when undercut); a knife edge's "
              "profile is the pitch curve: ρmin itself (its figure prints ρmin only)"),
     Quantity("undercut", "bool", "rr ≥ ρmin: the roller cannot reproduce the motion (profile trimmed); always false "
-             "for a knife edge (no roller: its figure does not print it)"),
+             "for a knife edge (no roller: its figure does not print it); flat face: not `convex` (its figure prints "
+             "`convex` only)"),
     Quantity("psi", "deg[]", "arm angle ψ at the cam angles of `at`"),
     Quantity("alpha", "deg[]", "pressure angle α at the cam angles of `at`"),
     Quantity("pitch_x", "mm[]", "x of the pitch point (cam frame) at the cam angles of `at`"),

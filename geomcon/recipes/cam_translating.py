@@ -60,7 +60,8 @@ ANSWERS = (
     Quantity("rho_min_actual", "mm", "of the actual profile: ρmin − rr (roller), min(r0 + s + s″) (flat); a knife "
              "edge's profile is the pitch curve: ρmin itself (its figure prints ρmin only)"),
     Quantity("undercut", "bool", "the profile cannot reproduce the motion (rr ≥ ρmin; flat face not convex); always "
-             "false for a knife edge (no roller: its figure does not print it)"),
+             "false for a knife edge (no roller: its figure does not print it); a flat face's figure prints `convex` "
+             "instead (the same condition)"),
     Quantity("convex", "bool", "flat face: r0 + s + s″ > 0 everywhere and no velocity drop"),
     Quantity("face_width_left", "mm", "flat face: reach of the contact left of the axis, max(e − k·s′)"),
     Quantity("face_width_right", "mm", "flat face: reach of the contact right of the axis, max(k·s′ − e)"),

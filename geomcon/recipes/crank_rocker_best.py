@@ -111,7 +111,8 @@ def construct(g: Mapping[str, Any]) -> Construction:
     if sc.drawing:
         sc.add("A_ground", marks.ground, A, -math.pi / 2, role=Role.ANNOTATION, style="ground")
     lam = sc.add("scale", _ratio, AD, A, D, role=Role.MEASUREMENT,
-                 caption=(f"Scale the design by AD/A*D so that the frame is AD = {AD:g}", f"按 AD/A*D 缩放,使机架长为 {AD:g}"))
+                 caption=(f"The frame is AD = {AD:g}: scale the design by the ratio AD/A*D",   # the value is the ratio's
+                          f"使机架长为 {AD:g}:按比例 AD/A*D 缩放"))
     for name, op, args, words in (("AB", half_difference, (A, C1, C2), ("AB = (A*C_extended − A*C_folded)/2, scaled", "AB,按比例")),
                                   ("BC", half_sum, (A, C1, C2), ("BC = (A*C1 + A*C2)/2, scaled", "BC,按比例"))):
         raw = sc.add(f"{name}_unit", op, *args, visible=False, unit="mm")

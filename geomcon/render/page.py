@@ -29,7 +29,7 @@ from typing import Any, Literal
 import svgwrite
 
 from ..paper import PAPERS, Orientation, Scale, Sheet
-from .labels import rich_runs, text_width
+from .labels import rich_runs, text_width, wrap
 from .serial import Element
 from .shapes import add_runs
 from .style import FONT_FAMILY, INK
@@ -39,12 +39,14 @@ Lang = Literal["en", "zh", "both"]
 LANGS: tuple[str, ...] = ("en", "zh", "both")
 
 TB_W = 180.0            # title block width (ISO 7200: at most 180 mm)
-TB_ROW = 7.0            # height of one title block row
 TB_ROWS = 4
-TB_H = TB_ROW * TB_ROWS
+TB_H = 28.0             # title block height: the title field and three rows of data
+TB_TITLE_H = 11.0       # the title field: one title of 5 mm, or two lines of 3.5 mm (both languages, a long title)
+TB_ROW = (TB_H - TB_TITLE_H) / (TB_ROWS - 1)    # height of each data row (5.67 mm for 3.5 mm text)
 TB_TEXT = 3.5           # title block text size (ISO 3098 series 2.5, 3.5, 5, 7)
-TB_TITLE = 5.0
-TB_TITLE_BOTH = 2.8     # each of the two titles (English above Chinese) of a sheet in both languages
+TB_TITLE = 5.0          # a title that fits one line
+TB_TITLE_BOTH = 3.5     # each line of two: the English and the Chinese title, or a long title wrapped
+TB_PITCH = 5.0          # baseline to baseline of two title lines
 FRAME_WIDTH = 0.7       # the drawing frame's line
 INSET = 4.0             # free paper between the frame and what is drawn inside it
 MIN_TEXT = 2.5          # the smallest text on paper (ISO 3098), mm
@@ -155,14 +157,52 @@ def printable(text_: str) -> str:
                    for ch in text_)
 
 
+def title_lines(title: str, width: float) -> tuple[tuple[str, ...], float]:
+    """The lines of the title field (at most two) and their size: a title of one language on one line of
+    :data:`TB_TITLE` (5 mm) when it fits ``width``, else wrapped to two of :data:`TB_TITLE_BOTH` (3.5 mm); two
+    titles (English above Chinese: both languages) one line each of 3.5 mm. A line still too wide is set smaller
+    by :func:`title_block` (never under :data:`MIN_TEXT`) — not, as before, both titles at 2.8 mm in a 7 mm row
+    and a long title shrunk towards 2.5 mm in one line (88 of the 186 titles are wider than 177 mm at 5 mm).
+
+    >>> title_lines("Crank-rocker", 177.0)
+    (('Crank-rocker',), 5.0)
+    >>> title_lines("Crank-rocker\\n曲柄摇杆机构", 177.0)
+    (('Crank-rocker', '曲柄摇杆机构'), 3.5)
+    >>> lines, size = title_lines("Eccentric-circle cam, offset roller follower, turning cw: rise and return angles", 100)
+    >>> lines
+    ('Eccentric-circle cam, offset roller ', 'follower, turning cw: rise and return angles')
+    """
+    parts = [t for t in title.split("\n") if t] or [""]
+    if len(parts) > 1:
+        return tuple(parts[:2]), TB_TITLE_BOTH
+    one = parts[0]
+    if text_width(rich_runs(one), TB_TITLE) * TITLE_WEIGHT <= width:
+        return (one,), TB_TITLE
+    limit = width / TITLE_WEIGHT
+    room = min(limit, text_width(rich_runs(one), TB_TITLE_BOTH) / 2)      # two lines of about equal length
+    lines = wrap(one, room, TB_TITLE_BOTH)
+    while len(lines) > 2 and room < limit:
+        room = min(limit, room + 2.0)
+        lines = wrap(one, room, TB_TITLE_BOTH)
+    cut = len(lines[0])                 # the rest on the second line (set smaller should it need a third)
+    while cut < len(one) and one[cut] == " ":
+        cut += 1                        # the break's space ends the first line: the two lines read as the title
+    return ((one[:cut], one[cut:]) if one[cut:] else (one,)), TB_TITLE_BOTH
+
+
+TITLE_WEIGHT = 1.12
+"""How much wider the bold title is than the regular estimate of :func:`~geomcon.render.labels.text_width`."""
+
+
 def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
-    """The title block group: four rows — title (two lines of :data:`TB_TITLE_BOTH` when it holds two
-    languages); problem file and recipe; scale, μl and paper; geomcon's version and the sheet number."""
+    """The title block group: the title field (:func:`title_lines`: one line of 5 mm, or two of 3.5 mm — both
+    languages, a long title wrapped), then three rows: problem file and recipe; scale, μl and paper; geomcon's
+    version and the sheet number."""
     x0, y0, x1, y1 = title_block_box(sheet)
     g = dwg.g(id="title-block", stroke=INK, fill="none")
     g.add(dwg.rect(insert=(fmt(x0), fmt(y0)), size=(fmt(x1 - x0), fmt(y1 - y0)), stroke_width="0.5"))
-    for r in range(1, TB_ROWS):
-        y = y0 + r * TB_ROW
+    tops = [y0] + [y0 + TB_TITLE_H + r * TB_ROW for r in range(TB_ROWS - 1)]
+    for y in tops[1:]:
         g.add(dwg.line((fmt(x0), fmt(y)), (fmt(x1), fmt(y)), stroke_width="0.25"))
     w = x1 - x0
     lang = tb.lang
@@ -171,44 +211,43 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
         scale = [f"{text('Scale', '比例', lang)} {tb.scale}", f"μl = {mu:g} mm/mm"]
     else:
         scale = [text("Scale", "比例", lang) + " —", ""]
-    titles = [printable(t) for t in tb.title.split("\n") if t] or [""]
-    rows = [[titles[0]],
+    titles, title_size = title_lines("\n".join(printable(t) for t in tb.title.split("\n")), w - 3.0)
+    rows = [[""],
             [f"{text('Problem', '题目', lang)} {printable(tb.problem)}", f"{text('Recipe', '作图法', lang)} {tb.recipe}"],
             scale + [f"{text('Paper', '图幅', lang)} {_paper_words(tb.paper, lang)}"],
             [f"geomcon {version()}", f"{text('Sheet', '第', lang)} {tb.sheet}/{tb.sheets}"
              + ("" if lang == "en" else " 张")]]
-    if len(titles) > 1:                 # both languages: the English title above the Chinese, each one line
-        for i, cell in enumerate(titles[:2]):
-            cell = fitted(cell, w - 3.0, TB_TITLE_BOTH, 1.12)
-            size = fit_size(cell, (w - 3.0) / 1.12, TB_TITLE_BOTH)
-            t = Element("text", class_="tb tb-0-0" + (" tb-title-zh" if i else ""), fill=INK, font_size=fmt(size),
-                        stroke="none", x=fmt(x0 + 1.5), y=fmt(y0 + (2.8 if i == 0 else 6.1)))
-            add_runs(t, rich_runs(cell), size, least=MIN_TEXT)
-            t.attribs["xml:space"] = "preserve"
-            t.attribs["font-weight"] = "bold"
-            g.add(t)
-        rows[0] = [""]
+    mid = y0 + TB_TITLE_H / 2
+    for i, cell in enumerate(titles):   # one line centred in the field, or two TB_PITCH apart about its middle
+        cell = fitted(cell, w - 3.0, title_size, TITLE_WEIGHT)
+        size = fit_size(cell, (w - 3.0) / TITLE_WEIGHT, title_size)
+        base = mid + 0.36 * size + (TB_PITCH * (i - 0.5) if len(titles) == 2 else 0.0)
+        zh = len(titles) == 2 and i == 1 and "\n" in tb.title
+        t = Element("text", class_="tb tb-0-0" + (" tb-title-zh" if zh else ""), fill=INK, font_size=fmt(size),
+                    stroke="none", x=fmt(x0 + 1.5), y=fmt(base))
+        add_runs(t, rich_runs(cell), size, least=MIN_TEXT)
+        t.attribs["xml:space"] = "preserve"
+        t.attribs["font-weight"] = "bold"
+        g.add(t)
     for r, cells in enumerate(rows):
         cw = w / len(cells)
         for c, cell in enumerate(cells):
             if not cell:
                 continue
             if c:
-                g.add(dwg.line((fmt(x0 + c * cw), fmt(y0 + r * TB_ROW)), (fmt(x0 + c * cw), fmt(y0 + (r + 1) * TB_ROW)),
+                g.add(dwg.line((fmt(x0 + c * cw), fmt(tops[r])), (fmt(x0 + c * cw), fmt(tops[r] + TB_ROW)),
                                stroke_width="0.25"))
-            size = TB_TITLE if r == 0 else TB_TEXT
-            cell = fitted(cell, cw - 3.0, size, 1.12 if r == 0 else 1.0)
-            size = fit_size(cell, (cw - 3.0) / (1.12 if r == 0 else 1.0), size)
-            at = (fmt(x0 + c * cw + 1.5), fmt(y0 + r * TB_ROW + TB_ROW / 2 + 0.36 * size))
-            if r == 0 or cell.startswith("μl"):         # the title and μl: subscripts as the textbook prints them
+            size = TB_TEXT
+            cell = fitted(cell, cw - 3.0, size)
+            size = fit_size(cell, cw - 3.0, size)
+            at = (fmt(x0 + c * cw + 1.5), fmt(tops[r] + TB_ROW / 2 + 0.36 * size))
+            if cell.startswith("μl"):                     # μl: its subscript as the textbook prints it
                 t = Element("text", class_=f"tb tb-{r}-{c}", fill=INK, font_size=fmt(size), stroke="none",
                             x=at[0], y=at[1])
                 add_runs(t, rich_runs(cell), size, least=MIN_TEXT)
                 t.attribs["xml:space"] = "preserve"
             else:
                 t = dwg.text(cell, insert=at, font_size=fmt(size), fill=INK, stroke="none", class_=f"tb tb-{r}-{c}")
-            if r == 0:
-                t.attribs["font-weight"] = "bold"
             g.add(t)
     return g
 

@@ -27,9 +27,10 @@ import svgwrite
 from ..scene import Role, Scene
 from .labels import rich_runs, text_width, wrap
 from .page import text, zh_punct
+from .results import unit_text
 from .serial import Element
 from .shapes import add_runs
-from .zh import zh_remark
+from .zh import en_remark, zh_remark
 from .style import GREY_TEXT, HIGHLIGHT, INFO_SIZE, INK, PROTO_SIZE, PROTO_ZH_SIZE
 from .view import fmt
 
@@ -48,14 +49,25 @@ VALUE_RESERVE = text_width(" = -000.000 mm", PROTO_SIZE)
 
 
 def format_value(value: Any, unit: str) -> str:
-    """A measured value as appended to its caption (`` = 12.506°``); "" for anything but a number."""
+    """A measured value as appended to its caption, with its unit as the Results print it (`` = 12.506°``,
+    `` = 269.795 mm/s``; a ratio, unit "", none); "" for anything but a number.
+
+    >>> format_value(269.7951, "mm/s"), format_value(-4.4852, "rad/s"), format_value(True, "")
+    (' = 269.795 mm/s', ' = -4.485 rad/s', '')
+    """
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         return ""
-    if unit == "deg":
-        return f" = {value:.3f}°"
-    if unit == "mm":
-        return f" = {value:.3f} mm"
-    return f" = {value:.3f}"
+    return f" = {value:.3f}{unit_text(unit)}"
+
+
+@functools.lru_cache(maxsize=64)
+def value_reserve(unit: str) -> float:
+    """The room kept at the end of a measured step's last line for its value: :data:`VALUE_RESERVE` (a length
+    or an angle of up to three digits), wider for a unit longer than " mm", with room for four digits
+    (`` = -2026.255 mm/s²``, 000-03)."""
+    if unit in ("", "mm", "deg"):
+        return VALUE_RESERVE
+    return max(VALUE_RESERVE, text_width(f" = -0000.000{unit_text(unit)}", PROTO_SIZE))
 
 
 @dataclass(frozen=True)
@@ -104,14 +116,29 @@ def _raw(scene: Scene, lang: str, notes: Mapping[str, tuple[str, str]] | None = 
         s = group[0]
         en, zh = scene.caption(s.key)
         if notes and s.key in notes:
-            en, zh = en + notes[s.key][0], zh_remark(zh, notes[s.key][1].strip("（）")) if zh else zh  # one bracket
+            note_en, note_zh = (n.strip().strip("()（）") for n in notes[s.key])   # one bracket each side
+            en, zh = en_remark(en, note_en), zh_remark(zh, note_zh) if zh else zh
         zh = zh_punct(zh) if zh else zh
         measured = s.role == Role.MEASUREMENT or s.unit in ("mm", "deg")
         first = (zh or en or s.key) if lang == "zh" else (en or s.key)
-        first_lines = wrap(first, COL_W - NUM_W, PROTO_SIZE, last_reserve=VALUE_RESERVE if measured else 0.0)
+        first_lines = wrap(first, COL_W - NUM_W, PROTO_SIZE, last_reserve=value_reserve(s.unit) if measured else 0.0)
+        if measured and len(first_lines) > 1 and not first_lines[-1]:
+            first_lines[-1] = _lhs(first_lines[-2])
         zh_lines = wrap(zh, COL_W - NUM_W, PROTO_ZH_SIZE) if zh and lang == "both" else []
         raw.append((i, s.key, s.unit, measured, first_lines, zh_lines))
     return raw
+
+
+def _lhs(formula: str) -> str:
+    """What a formula line equates (``ε_3`` of ``ε_3 = a^t_B3/CB = n_3b_3′⋅μ_a/CB``), to start the line its value
+    goes on when the formula leaves no room for it: "ε3 = 14.993 rad/s²", not a line that begins with "=" (000-03's
+    ε3 and ε4, 400-01's ε2). "" when the line is no formula.
+
+    >>> _lhs("ε_3 = a^t_B3/CB = n_3b_3′⋅μ_a/CB"), _lhs("Measure the angle")
+    ('ε_3', '')
+    """
+    head, eq, _ = formula.partition(" = ")
+    return head if eq and " " not in head.strip() else ""
 
 
 def layout(scene: Scene, fig_height: float, lang: str = "both") -> Layout:
@@ -253,7 +280,7 @@ def render_protocol(dwg: svgwrite.Drawing, lay: Layout, x: float, y: float, valu
         for j, ln in enumerate(e.en):
             el = _line(dwg, ln, x0 + NUM_W, yy, PROTO_SIZE, ink, "en")
             if value and j == len(e.en) - 1:
-                el.add(_value_run(el, value))
+                el.add(_value_run(el, value if ln else value.lstrip()))     # on a line of its own: "= 14.993 …"
             g.add(el)
             yy += EN_LH
         yy += ZH_LH - EN_LH

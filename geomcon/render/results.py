@@ -259,22 +259,42 @@ KNIFE_NAMES: dict[str, AnswerName] = {
 ρa,min as the "actual profile's", the same number twice)."""
 
 
+FLAT_OFF_SHEET: dict[str, frozenset[str]] = {
+    "cam.translating": frozenset({"undercut"}),
+    "cam.oscillating": frozenset({"undercut"}),
+}
+"""The answers a flat-faced cam's figure does not print, by recipe: a flat face's profile condition is convexity
+(ρ > 0 everywhere), and its ``undercut`` is only ``not convex`` — the sheet printed "undercut: no" beside
+"profile convex: yes", one idea twice. It prints "profile convex" (``convex``) alone; the JSON keeps ``undercut``
+(a public contract, = not ``convex``)."""
+
+
 def knife(given: Mapping[str, Any] | None) -> bool:
     """Whether ``given`` describe a cam with a knife-edge follower."""
     return given is not None and given.get("follower") == "knife"
 
 
+def flat(given: Mapping[str, Any] | None) -> bool:
+    """Whether ``given`` describe a cam with a flat-faced follower."""
+    return given is not None and given.get("follower") == "flat"
+
+
 def on_sheet(answer: str, recipe: str, given: Mapping[str, Any] | None, printed: bool = False) -> bool:
     """Whether a figure (its Results block, the player, the terminal's summary) prints ``answer``: not a knife
-    edge's ρa,min, r0′ or undercut (:data:`KNIFE_OFF_SHEET`), unless the textbook ``printed`` it.
+    edge's ρa,min, r0′ or undercut (:data:`KNIFE_OFF_SHEET`), nor a flat face's undercut (:data:`FLAT_OFF_SHEET`:
+    its convexity says it), unless the textbook ``printed`` it.
 
     >>> on_sheet("undercut", "cam.translating", {"follower": "knife"}), on_sheet("undercut", "cam.translating",
     ...                                                                          {"follower": "roller"})
     (False, True)
     >>> on_sheet("rho_min_actual", "cam.oscillating", {"follower": "knife"}, printed=True)
     True
+    >>> on_sheet("undercut", "cam.translating", {"follower": "flat"}), on_sheet("convex", "cam.translating",
+    ...                                                                         {"follower": "flat"})
+    (False, True)
     """
-    return printed or not (knife(given) and answer in KNIFE_OFF_SHEET.get(recipe, ()))
+    off = KNIFE_OFF_SHEET if knife(given) else FLAT_OFF_SHEET if flat(given) else {}
+    return printed or answer not in off.get(recipe, ())
 
 
 def name_of(answer: str, recipe: str = "", given: Mapping[str, Any] | None = None) -> AnswerName:
@@ -539,5 +559,5 @@ def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[s
     return [f"{len(printed)} 个中 {n} 个存疑" if zh else f"{n} of {len(printed)} doubtful"]
 
 
-__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "KNIFE_NAMES", "KNIFE_OFF_SHEET", "knife", "NAMES", "on_sheet", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed",
+__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "flat", "FLAT_OFF_SHEET", "KNIFE_NAMES", "KNIFE_OFF_SHEET", "knife", "NAMES", "on_sheet", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed",
            "shown_value", "unit_text"]

@@ -81,6 +81,18 @@ def zh_brackets(s: str) -> str:
     return re.sub(r" ?（", "（", re.sub(r"） ?", "）", "".join(out)))
 
 
+def _last_bracket(text: str) -> str | None:
+    """What the bracket that closes ``text`` holds (``None`` when ``text`` does not end in one)."""
+    if not text.endswith((")", "）")):
+        return None
+    depth = 0
+    for i in range(len(text) - 1, -1, -1):
+        depth += (text[i] in ")）") - (text[i] in "(（")
+        if depth == 0:
+            return text[i + 1:-1]
+    return None
+
+
 def zh_remark(zh: str, remark: str) -> str:
     """A Chinese caption with a remark (its branch rule) added: inside the caption's closing bracket remark when
     there is one (``交摇杆圆于 C1(曲柄与连杆重叠共线;位于直线 AD 上方的交点)``, not two brackets in a row), else
@@ -91,15 +103,27 @@ def zh_remark(zh: str, remark: str) -> str:
     >>> zh_remark("K = (180° + θ)/(180° − θ)", "较近的交点"), zh_remark("两线交于 P", "较近的交点")
     ('K = (180° + θ)/(180° − θ)(较近的交点)', '两线交于 P(较近的交点)')
     """
-    if zh.endswith((")", "）")):
-        depth = 0
-        for i in range(len(zh) - 1, -1, -1):
-            depth += (zh[i] in ")）") - (zh[i] in "(（")
-            if depth == 0:
-                if any("\u4e00" <= c <= "\u9fff" for c in zh[i + 1:-1]):
-                    return f"{zh[:-1]};{remark}{zh[-1]}"
-                break
+    inside = _last_bracket(zh)
+    if inside is not None and any("\u4e00" <= c <= "\u9fff" for c in inside):
+        return f"{zh[:-1]};{remark}{zh[-1]}"
     return f"{zh}({remark})"
 
 
-__all__ = ["zh_brackets", "zh_punct", "zh_remark"]
+def en_remark(en: str, remark: str) -> str:
+    """An English caption with a remark (its branch rule, the sheet its diagram is on) added, the twin of
+    :func:`zh_remark`: inside the caption's closing bracket remark when there is one (``(the arm's directions;
+    diagram on sheet 2)``, not ``(the arm's directions) (diagram on sheet 2)``), else in its own brackets after a
+    space. A closing bracket of a formula (no word of three letters inside: ``(A0′P = a/(1 − εψ′))``) is left alone.
+
+    >>> en_remark("Draw the arm (the arm's directions)", "diagram on sheet 2")
+    "Draw the arm (the arm's directions; diagram on sheet 2)"
+    >>> en_remark("on OA0′ (A0′P = a/(1 − εψ′))", "nearer"), en_remark("They meet at P", "the nearer")
+    ('on OA0′ (A0′P = a/(1 − εψ′)) (nearer)', 'They meet at P (the nearer)')
+    """
+    inside = _last_bracket(en)
+    if inside is not None and re.search(r"[A-Za-z]{3}", inside):
+        return f"{en[:-1]}; {remark}{en[-1]}"
+    return f"{en} ({remark})"
+
+
+__all__ = ["en_remark", "zh_brackets", "zh_punct", "zh_remark"]

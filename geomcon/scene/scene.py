@@ -31,7 +31,7 @@ from typing import Any, Callable, Iterable, Iterator
 from ..errors import GeomconError, NoIntersection, Unbuildable
 from ..geometry.branch import Branch
 from ..geometry.primitives import Circle, Line, Point
-from ..render.zh import zh_remark
+from ..render.zh import en_remark, zh_remark
 from .compiled import order_of
 from .step import Ref, Role, Step, collect_refs, constant as _constant
 
@@ -527,7 +527,7 @@ class Scene:
         en, zh = self.value(cap[0]) if type(cap) is Ref else cap
         if branch is not None:
             ben, bzh = branch.describe(self.label_of)
-            en = f"{en} ({ben})" if en else ben
+            en = en_remark(en, ben) if en else ben
             zh = zh_remark(zh, bzh) if zh else bzh
         return en, zh
 

@@ -136,7 +136,7 @@ def key_data(spec: Spec, a: Assignment, *, paper: str, lang: str, seed: int | st
         students.append({"id": s.id, "name": s.name, "variant": variant_code([v.index for v in variants]),
                          "exercises": exercises})
     return {
-        "title": spec.title, "seed": used, "geomcon": version(), "spec_sha256": spec.sha256,
+        "title": spec.title, **({"title_zh": spec.title_zh} if spec.title_zh else {}), "seed": used, "geomcon": version(), "spec_sha256": spec.sha256,
         "paper": paper, "lang": lang, "tolerance": TOLERANCE_MODEL,
         "exercises": [{"n": ex.n, "recipe": ex.recipe, "ask": [r.text for r in ex.ask], "points": plain(list(ex.points)),
                        "pool": st.pool, "judged": st.tried, "accepted": st.accepted,
