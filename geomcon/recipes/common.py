@@ -333,7 +333,16 @@ def is_valid(A: Point, P1: Point, P2: Point, D: Point, CD: float, arc_side: int 
     >>> is_valid(Point(0, 0), Point(20, 60), Point(100, 79.37), Point(90, 0), 80.0, -1)
     True
     """
-    ax, ay = A.x, A.y
+    return valid_xy(A.x, A.y, P1, P2, D, CD, arc_side)
+
+
+def valid_xy(ax: float, ay: float, P1: Point, P2: Point, D: Point, CD: float, arc_side: int = 0) -> bool:
+    """:func:`is_valid` of A = (``ax``, ``ay``), without making the point (a θ-circle's admissible arcs test
+    ~900 points of it: :func:`geomcon.recipes.crank_rocker_design.admissible_arcs`).
+
+    >>> valid_xy(0.0, 0.0, Point(20, 60), Point(100, 79.37), Point(90, 0), 80.0, -1)
+    True
+    """
     ux, uy = D.x - ax, D.y - ay                            # u = D − A
     AD = math.hypot(ux, uy)
     if AD == 0.0:

@@ -37,7 +37,7 @@ from . import crank_rocker_links
 from .base import Construction, Quantity, Recipe
 from .choice_words import flat_caption
 from .common import (add_bar, angle_deg, best_index, folded_flag, gamma_min_of, half_difference, half_sum, is_valid,
-                     length, near_flag, one, pick, preference, rebuilt_values)
+                     length, near_flag, one, pick, preference, rebuilt_values, valid_xy)
 from .theta_circle import K_MAX_OBTUSE, add_theta_step, ray_line, refuse_tiny_theta, add_seeing_circle, add_theta_circle, ray_from
 
 GIVENS = (
@@ -155,13 +155,16 @@ def admissible_arcs(k, C1: Point, C2: Point, D: Point, CD: float, gamma_allow: f
     given): the circle is sampled at 720 points and each boundary refined by bisection to 1e-12 of a turn."""
     from ..geometry import Arc
 
+    cx, cy, r = k.center.x, k.center.y, k.r
+    cos, sin = math.cos, math.sin
+
     def ok(t: float) -> bool:
-        A = k.at(t)
-        if not is_valid(A, C1, C2, D, CD):
+        ax, ay = cx + r * cos(t), cy + r * sin(t)          # k.at(t), the same floats
+        if not valid_xy(ax, ay, C1, C2, D, CD):
             return False
         if gamma_allow is None:
             return True
-        return gamma_min_of(A, D, C1, C2) >= gamma_allow
+        return gamma_min_of(Point(ax, ay), D, C1, C2) >= gamma_allow
 
     n = 720
     ts = [2 * math.pi * i / n for i in range(n)]
