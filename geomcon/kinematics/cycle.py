@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 
@@ -236,9 +237,12 @@ def _unwrapped_values(m: Mechanism, name: str, pts: list[Stationary]) -> list[fl
     return [ref + ((t - ref + 180.0) % 360.0 - 180.0) for t in th]
 
 
-def stroke(m: Mechanism, name: str) -> Stroke:
-    """The output's stroke over a full crank turn and, with one maximum and one minimum, the time ratio."""
-    pts = [p for p in stationary_points(m, name) if p.kind in ("max", "min")]
+def stroke(m: Mechanism, name: str, found: Sequence[Stationary] | None = None) -> Stroke:
+    """The output's stroke over a full crank turn and, with one maximum and one minimum, the time ratio.
+    ``found``: ``stationary_points(m, name)`` when the caller has it already (the same turn: the same points)."""
+    if found is None:
+        found = stationary_points(m, name)
+    pts = [p for p in found if p.kind in ("max", "min")]
     if not pts:
         raise ProblemError(f"'{name}' has no extreme over the crank turn (it does not move back and forth)")
     vals = _unwrapped_values(m, name, pts)

@@ -72,12 +72,22 @@ def solve_cycle(p: CycleProblem) -> CycleResult:
     warnings = [f"change point of dyad '{c.dyad}' at crank angle {c.phi_deg:.6f}°: its links fall collinear; "
                 f"the named branch is kept through it" for c in cyc.changes]
     lo, hi = math.radians(float(p.phi_deg[0])), math.radians(float(p.phi_deg[-1]))
+    known: dict[tuple[str, float, float], list[Stationary]] = {}
+
+    def points(q: str, start: float = 0.0, stop: float = 2 * math.pi) -> list[Stationary]:
+        """stationary_points of ``m``, each (output, range) searched once per problem (an output listed in
+        extremes and strokes, a stroke's warning: the same search, the same points)."""
+        k = (q, start, stop)
+        if k not in known:
+            known[k] = stationary_points(m, q, start, stop)
+        return known[k]
+
     for q in p.extremes:
         base = position_name(q)
         if base != q:
             raise ProblemError(f"cycle.extremes: '{q}' is not a position (extremes of {base} are found as the roots "
                                f"of its velocity; list '{base}')")
-        pts = stationary_points(m, q, lo, hi)
+        pts = points(q, lo, hi)
         found += pts
         vals = [s.value for s in pts]
         ends = [float(x) for x in value(cyc.state, q)[[0, -1]]]
@@ -88,14 +98,14 @@ def solve_cycle(p: CycleProblem) -> CycleResult:
         else:
             answers[f"max({q})"] = max(vals + ends)
     for q in p.strokes:
-        s = stroke(m, q)
+        s = stroke(m, q, points(q))
         answers[f"stroke({q})"] = s.stroke
         answers[f"at_max({q})"], answers[f"at_min({q})"] = s.at_max, s.at_min
         if s.K is not None:
             answers[f"increasing({q})"], answers[f"decreasing({q})"] = s.increasing, s.decreasing
             answers[f"K({q})"], answers[f"theta({q})"] = s.K, s.theta
         else:
-            warnings.append(f"'{q}' has {sum(1 for x in stationary_points(m, q) if x.kind != 'flat')} extremes per "
+            warnings.append(f"'{q}' has {sum(1 for x in points(q) if x.kind != 'flat')} extremes per "
                             "turn: K is not defined (stroke = largest maximum − smallest minimum)")
     answers = {k: rounded(v, scale_of(k, m)) for k, v in answers.items()}
     audit = []
