@@ -194,6 +194,34 @@ def _pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> Pi
     return _TranslatingPitch(fn, program_breaks(prog), relative, fn1, relative1, axis_slope=axis_slope)
 
 
+_CURVES: dict = {}
+"""(program, h, e, s0, inv and their signs) → the pitch curve :func:`shared_pitch_curve` made for them."""
+
+
+def shared_pitch_curve(prog: Program, h: float, e: float, s0: float, inv: float) -> PitchCurve:
+    """:func:`_pitch_curve`, one object per cam in a process: the pitch curve of equal program, h, e, s0 and
+    turn is the same curve (a roller's radius is not in it), so the searches kept on it (:func:`rho_min`,
+    :func:`curve_worst_alpha`) are made once — a worksheet's drafting ends rr ± δ and its nominal variant, a
+    variant graded again. The curve is frozen and its searches pure; its closures' one-entry memos are keyed by
+    their input. Signed zeros are told apart (e = −0.0 is not e = 0.0 to the bit)."""
+    key = (prog, h, e, s0, inv, tuple(math.copysign(1.0, x) for x in (h, e, s0, inv)))
+    curve = _CURVES.get(key)
+    if curve is None:
+        if len(_CURVES) >= 256:
+            _CURVES.clear()
+        curve = _CURVES[key] = _pitch_curve(prog, h, e, s0, inv)
+    return curve
+
+
+def curve_worst_alpha(curve: PitchCurve, inv: float, start_deg: float, end_deg: float) -> Extremum:
+    """:func:`worst_alpha`, kept on the curve (a pure search of a frozen curve): made once per curve and range."""
+    memo = curve.__dict__.setdefault("_worst_alpha", {})
+    key = (inv, start_deg, end_deg)
+    if key not in memo:
+        memo[key] = worst_alpha(curve, inv, start_deg, end_deg)
+    return memo[key]
+
+
 @dataclass(frozen=True)
 class _TranslatingPitch(PitchCurve):
     """A translating follower's pitch curve with ``axis_slope``: the pressure angle's slope against the
@@ -478,7 +506,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
             sc.add("s", displacements, O, prog, h, e, s0, inv, at, visible=False)
             sc.add("alpha", flat_alphas_at, fam, inv, at, visible=False)
     else:
-        curve = sc.given("pitch", _pitch_curve(prog, h, e, s0, inv), visible=False)
+        curve = sc.given("pitch", shared_pitch_curve(prog, h, e, s0, inv), visible=False)
         sc.add("pitch_curve", pitch_polyline, curve, style="frame" if follower == "roller" else "link",
                role=Role.RESULT,
                caption=("Join 1′, 2′, … by a smooth curve: the pitch curve" +
@@ -494,7 +522,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
             if seg is None:
                 sc.add(f"alpha_max_{part}", float, 0.0, visible=False)
                 continue
-            w = sc.add(f"worst_{part}", worst_alpha, curve, inv, seg.start, seg.end, visible=False)
+            w = sc.add(f"worst_{part}", curve_worst_alpha, curve, inv, seg.start, seg.end, visible=False)
             sc.add(f"alpha_max_{part}", extremum_value, w, role=Role.MEASUREMENT, unit="deg", visible=False)
             sc.add(f"delta_alpha_max_{part}", extremum_deg, w, role=Role.MEASUREMENT, unit="deg", visible=False)
             answers[f"delta_alpha_max_{part}"] = f"delta_alpha_max_{part}"
