@@ -12,6 +12,7 @@ True
 from __future__ import annotations
 
 import math
+from typing import Callable
 
 from .tolerance import CHECK_REL
 
@@ -70,6 +71,30 @@ def rounded(x: float, scale: float) -> float:
         return round(x, decimals) + 0.0                 # never -0.0
     out = float(f"{x:.{decimals}f}") if decimals >= 0 else float(f"{x:.{DIGITS}g}")
     return out + 0.0                                    # never -0.0
+
+
+def rounder(scale: float) -> Callable[[float], float]:
+    """``x ↦ rounded(x, scale)`` for many x at one scale: the digits kept are fixed by ``scale`` alone for
+    every |x| ≤ |scale| (a table column, a plot's curve), worked out once here; a larger x goes through
+    :func:`rounded`. The same floats as :func:`rounded`.
+
+    >>> r = rounder(100.0)
+    >>> [r(x) for x in (1.0 / 3.0, -0.0, 123456.789012345678)] == [rounded(x, 100.0) for x in (1.0 / 3.0, -0.0, 123456.789012345678)]
+    True
+    """
+    s = abs(scale)
+    if not (0.0 < s < math.inf):
+        return lambda x: rounded(x, scale)
+    decimals = DIGITS - 1 - math.floor(math.log10(s))
+    if not 0 <= decimals <= 300:
+        return lambda x: rounded(x, scale)
+
+    def one(x: float) -> float:
+        if -s <= x <= s:                    # max(|x|, |scale|) is |scale|: its decimals (0 and -0.0 give 0.0)
+            return round(x, decimals) + 0.0
+        return rounded(x, scale)
+
+    return one
 
 
 def error_text(err: float, magnitude: float) -> float:

@@ -16,13 +16,14 @@ from __future__ import annotations
 import html
 import json
 import math
+from typing import Callable
 
 import numpy as np
 
 from .dyads import PRP, RPR, RRP, RRR, OnLink
 from .quantities import value
 from .result import CycleResult, scale_of, unit_of
-from ..check import rounded
+from ..check import rounded, rounder
 from ..render.labels import plain_text
 from ..render.warning_words import warning_lines
 
@@ -32,6 +33,11 @@ MAX_FRAMES = 360
 
 def _r(x: float, scale: float) -> float:
     return rounded(float(x), scale) if math.isfinite(x) else 0.0
+
+
+def _finite(rnd: Callable[[float], float]) -> Callable[[float], float]:
+    """:func:`_r` at one scale, with that scale's rounder (:func:`geomcon.check.rounder`)."""
+    return lambda x: rnd(x) if math.isfinite(x) else 0.0
 
 
 def scene_data(r: CycleResult) -> dict:
@@ -84,11 +90,17 @@ def scene_data(r: CycleResult) -> dict:
     cols = list(r.problem.columns)
     colvals = [(value(st, q), scale_of(q, m)) for q in cols]      # each column's scale once, not per frame
     points, turns = sorted(allp.items()), sorted(angles.items())
-    for i in idx:
-        frames.append({"phi": _r(r.cycle.phi_deg[i], 360.0),
-                       "p": {k: [_r(z[i].real, L), _r(z[i].imag, L)] for k, z in points},
-                       "a": {k: _r(math.degrees(t[i]), 360.0) for k, t in turns},
-                       "v": [_r(v[i], sc) for v, sc in colvals]})
+    # each column as floats once (not a numpy scalar per frame) and its rounding's digits once: the same numbers
+    at_l, at_360 = _finite(rounder(L)), _finite(rounder(360.0))
+    phis = r.cycle.phi_deg.tolist()
+    xy = [(k, z.real.tolist(), z.imag.tolist()) for k, z in points]
+    degs = [(k, [math.degrees(x) for x in t.tolist()]) for k, t in turns]
+    cols_r = [(v.tolist(), _finite(rounder(sc))) for v, sc in colvals]
+    for i in idx.tolist():
+        frames.append({"phi": at_360(phis[i]),
+                       "p": {k: [at_l(xs[i]), at_l(ys[i])] for k, xs, ys in xy},
+                       "a": {k: at_360(d[i]) for k, d in degs},
+                       "v": [rnd(v[i]) for v, rnd in cols_r]})
     traces = {t: [[_r(z.real, L), _r(z.imag, L)] for z in pts[t].p if np.isfinite(z)] for t in r.problem.trace}
     fixed = {k: [_r(z.real, L), _r(z.imag, L)] for k, z in sorted(m.fixed.items())
              if k in {s for seg in segs for s in seg}}

@@ -24,7 +24,7 @@ from typing import Sequence
 import numpy as np
 
 from .quantities import parse_name, position_name, value
-from ..check import rounded
+from ..check import rounded, rounder
 from ..render.charts import Texts, axis_factor, box_of, chart_area, chart_sheet, factor_text, plain, runs_width, text_el
 from ..render.labels import rich_runs, text_width, wrap
 from ..render.warning_words import warning_lines
@@ -142,7 +142,8 @@ def _note_spot(texts: Texts, s: str, px: float, py: float, frame: tuple[float, f
 def _panel(dwg, texts: Texts, r: CycleResult, q: str, y0: float, x0: float, x1: float) -> None:
     phi = r.cycle.phi_deg
     sc = scale_of(q, r.problem.mechanism)      # numbers as the files hold them: no last-bit SIMD noise
-    vals = np.array([rounded(float(x), sc) if math.isfinite(x) else math.nan for x in value(r.cycle.state, q)])
+    rnd = rounder(sc)
+    vals = np.array([rnd(x) if math.isfinite(x) else math.nan for x in value(r.cycle.state, q).tolist()])
     if q.endswith(".angle"):        # drawn continuous: a link through ±180° does not jump
         th = np.unwrap(np.radians(vals))
         vals = np.degrees(th - 2 * np.pi * np.round((th[0] - np.radians(vals[0])) / (2 * np.pi)))
