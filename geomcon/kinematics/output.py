@@ -18,32 +18,35 @@ from __future__ import annotations
 
 import json
 import math
+from typing import Callable
 
 import numpy as np
 
-from ..check import rounded
+from ..check import rounded, rounder
 from .result import CycleResult, scale_of, unit_of
 from .quantities import value
-
-
-def _num(x: float, scale: float) -> str:
-    """A number for a file: 12 significant digits at ``scale``, integers without a decimal point."""
-    if not math.isfinite(x):
-        return "nan"
-    r = rounded(float(x), scale)
-    return str(int(r)) if r == int(r) and abs(r) < 1e15 else repr(r)
 
 
 def table_csv(r: CycleResult) -> str:
     """The table: one row per crank angle, a column per quantity (header: the quantity names; units in
     :func:`units_line`)."""
     m = r.problem.mechanism
-    cols = [value(r.cycle.state, q) for q in r.problem.columns]
-    scales = [scale_of(q, m) for q in r.problem.columns]
+    # each column as floats, and its rounding's digits, once (:func:`geomcon.check.rounder`): the same text
+    cols = [(value(r.cycle.state, q).tolist(), rounder(scale_of(q, m))) for q in r.problem.columns]
+    at_360 = rounder(360.0)
     lines = [",".join(("phi_deg", *r.problem.columns))]
-    for i, phi in enumerate(r.cycle.phi_deg):
-        lines.append(",".join([_num(phi, 360.0)] + [_num(c[i], s) for c, s in zip(cols, scales)]))
+    for i, phi in enumerate(r.cycle.phi_deg.tolist()):
+        lines.append(",".join([_text(phi, at_360)] + [_text(c[i], rnd) for c, rnd in cols]))
     return "\n".join(lines) + "\n"
+
+
+def _text(x: float, rnd: Callable[[float], float]) -> str:
+    """A number for a file: 12 significant digits at its column's scale (``rnd``, the scale's
+    :func:`geomcon.check.rounder`), integers without a decimal point."""
+    if not math.isfinite(x):
+        return "nan"
+    r = rnd(x)
+    return str(int(r)) if r == int(r) and abs(r) < 1e15 else repr(r)
 
 
 def units_line(r: CycleResult) -> str:
