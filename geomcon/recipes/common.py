@@ -88,7 +88,10 @@ def rebuilt(recipe: str, given: Mapping[str, Any]) -> Scene:
     tape when it has one): a design's back-substitution through the analysis recipe."""
     from ..taped import construct_taped
     from . import get_recipe
-    return construct_taped(get_recipe(recipe), given).scene
+    r = get_recipe(recipe)
+    sc = construct_taped(r, given).scene
+    sc.rebuild_with(lambda: r.construct(given).scene)   # a step the learned plan left out completes the scene
+    return sc
 
 
 _RECIPES: dict[str, Any] = {}
