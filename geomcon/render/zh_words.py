@@ -44,7 +44,7 @@ WORDS = frozenset("""
 分别 同理 如图 已知 精确 正确 慢速 工作 居中 比较 外凸 活动 固定 箭头 顺序 休止 详见 任何
 唯一 其他 覆盖 始终 足以
 各种 颚式 破碎机 颚板 保留 改为 升程 等速 等加速 等减速 余弦 偏心 偏心圆 多项式 相反 表格 给出 实测 斜率 给定 三次 样条
-驱动 图示
+驱动 图示 急回 惠特沃斯
 """.split())
 """Words of two characters or more (at most :data:`_LONGEST`) that a line never breaks inside."""
 
