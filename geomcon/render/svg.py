@@ -1073,13 +1073,14 @@ def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float, scale: Sc
     L = length / mu
     g = dwg.g(id="scale", stroke=INK, stroke_width="0.3")
     g.attribs["data-length-mm"] = fmt(L)
-    g.add(dwg.path(d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
-                     f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
-                   fill="none", id="scale-bar"))
+    g.add(Element("path", d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
+                            f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
+                  fill="none", id="scale-bar"))
     size = fmt(INFO_SIZE)
-    g.add(dwg.text("0", insert=(fmt(x), fmt(y + 4.5)), font_size=size, text_anchor="middle", stroke="none", fill=INK))
-    g.add(dwg.text(f"{length:g} mm", insert=(fmt(x + L), fmt(y + 4.5)), font_size=size, text_anchor="middle",
-                   stroke="none", fill=INK))
+    g.add(Element("text", "0", x=fmt(x), y=fmt(y + 4.5), font_size=size, text_anchor="middle", stroke="none",
+                  fill=INK))
+    g.add(Element("text", f"{length:g} mm", x=fmt(x + L), y=fmt(y + 4.5), font_size=size, text_anchor="middle",
+                  stroke="none", fill=INK))
     t = Element("text", fill=INK, font_size=size, stroke="none", x=fmt(x + L + 10.0), y=fmt(y + 1.2))
     add_runs(t, rich_runs(f"{scale}   μl = {mu:g} mm/mm"), INFO_SIZE)        # μ with subscript l
     t.attribs["xml:space"] = "preserve"
