@@ -100,6 +100,22 @@ class Element:
             self.attribs = {names[k]: v for k, v in attribs.items()}
         self.elements: list[Any] = []
 
+    @classmethod
+    def named(cls, tag: str, attribs: dict[str, str | None], text: str = "") -> Element:
+        """The element of ``tag`` with ``attribs`` named as written (``class``, ``stroke-width``: no keyword names
+        to translate; the dict is the element's own) and character data ``text``: what the renderer makes
+        ~80 000 times a gallery, a fifth of the cost of keywords translated one by one.
+
+        >>> Element.named("text", {"class": "en", "font-size": "3"}, "C").tostring()
+        '<text class="en" font-size="3">C</text>'
+        """
+        el = cls.__new__(cls)
+        el.elementname = tag
+        el.text = text
+        el.attribs = attribs
+        el.elements = []
+        return el
+
     def add(self, element: Any) -> Any:
         """Append a child; returns it."""
         self.elements.append(element)

@@ -1048,11 +1048,11 @@ def _figure_group(dwg: svgwrite.Drawing, fig: Figure, prefix: str = "") -> Any:
     """The figure's layers, each step a group (ids prefixed by ``prefix``: a detail view draws steps again)."""
     root = dwg.g(id=f"{prefix}figure")
     for name, groups in fig.layers():
-        layer = Element("g", id=f"{prefix}layer-{name}")
+        layer = Element.named("g", {"id": f"{prefix}layer-{name}"})
         for sd in groups:
-            g = Element("g", id=prefix + (f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key)),
-                        class_=sd.classes)
-            g.attribs["data-step"] = str(sd.number)
+            g = Element.named("g", {"id": prefix + (f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc
+                                                    else step_id(sd.key)),
+                                    "class": sd.classes, "data-step": str(sd.number)})
             for shape in sd.shapes:
                 g.add(to_svg(shape))
             layer.add(g)
