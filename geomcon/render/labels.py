@@ -234,23 +234,29 @@ def _tokens(s: str) -> list[str]:
         return _glued(out)
     out = []
     word = ""
-    for unit in _units(s):
-        cjk = _wide(unit[0])
-        if cjk and unit in _CLOSING:
-            word += unit
-        elif cjk:
-            if word and word[-1] not in _OPENING:       # an opening mark stays with the character after it
+    for m in _PIECES.finditer(s):             # as the units of _units(s), but a run of Latin ones at once
+        kind = m.lastindex
+        if kind == 1:                                   # Chinese words
+            for unit in words(m.group(1)):
+                if word and word[-1] not in _OPENING:   # an opening mark stays with the character after it
+                    out.append(word)
+                    word = ""
+                word += unit
+        elif kind == 2:                                 # another CJK character
+            unit = m.group(2)
+            if unit not in _CLOSING and word and word[-1] not in _OPENING:
                 out.append(word)
                 word = ""
             word += unit
-        elif unit == " ":
+        elif kind == 3:
             out.append(word + " ")
             word = ""
-        else:
-            if word and _wide(word[-1]) and word[-1] not in _CLOSING + _OPENING and unit not in _CLOSING:
+        else:                                   # Latin: only its first character may start a new piece
+            run = m.group(4)
+            if word and word[-1] not in _CLOSING_OPENING and _wide(word[-1]) and run[0] not in _CLOSING:
                 out.append(word)
                 word = ""
-            word += unit
+            word += run
     if word:
         out.append(word)
     return _glued(out)
@@ -260,6 +266,10 @@ _HAN = re.compile("([\u3400-\u9fff\uf900-\ufaff]+)|[^\u3400-\u9fff\uf900-\ufaff]
 """A run of Chinese ideographs (group 1), or a run of other characters."""
 _ANY_WIDE = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef]")
 """A CJK character (:func:`_wide`: 1 em wide)."""
+_PIECES = re.compile("([\u3400-\u9fff\uf900-\ufaff]+)|([\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef])|( )"
+                     "|([^ \u2e80-\u9fff\uf900-\ufaff\uff00-\uffef]+)")
+"""What :func:`_tokens` takes one at a time: a run of Chinese ideographs (group 1, cut into words), another CJK
+character (group 2), a space (group 3), a run of other characters (group 4: within it no piece begins)."""
 
 
 def _units(s: str) -> list[str]:
@@ -408,6 +418,7 @@ _OPENING = "（「『《【“‘"
 _CLOSING = "，。、；：）」』！？》】”’…,;:)!?"
 """Punctuation that never begins a line: it stays with the character before it (full-width forms, which Chinese
 text uses, the ellipsis, and their ASCII twins)."""
+_CLOSING_OPENING = _CLOSING + _OPENING
 _NO_START = _CLOSING + "%‰"
 """What never begins a line, even after a space: closing punctuation and the per cent signs ("0.00 %）")."""
 

@@ -153,6 +153,8 @@ def printable(text_: str) -> str:
     >>> printable("001-08_crank_rocker"), printable("a\x01b\nc")
     ('001-08_crank_rocker', 'a\\x01b\\nc')
     """
+    if text_.isprintable():                 # every character as it is (a space is printable)
+        return text_
     return "".join(ch if ch.isprintable() or ch == " " else ch.encode("unicode_escape").decode("ascii")
                    for ch in text_)
 
