@@ -892,7 +892,7 @@ def _figure_and_marks(dwg: svgwrite.Drawing, scene: Scene, fig: Figure, scale: S
     axes = scene.evaluate(["sd_axes"])["sd_axes"]
     ax, ay = fig.view.xy(*axes.at(0.0, 0.0))
     return drawn, diagram_axes_marks(dwg, fig.view, axes, scale, ax, ay + 15.0, _step_number(fig, "sd_delta_axis"),
-                                     text_boxes(svg_string(drawn)))
+                                     text_boxes(drawn))
 
 
 CAPTION_GAP = 1.0
@@ -908,7 +908,7 @@ def _boxes(group: Any) -> list[Box]:
     from .charts import text_boxes
     from .free_area import CLEAR
     d = CLEAR - CAPTION_GAP
-    return [(b[0] + d, b[1] + d, max(b[0] + d, b[2] - d), max(b[1] + d, b[3] - d)) for b in text_boxes(svg_string(group))]
+    return [(b[0] + d, b[1] + d, max(b[0] + d, b[2] - d), max(b[1] + d, b[3] - d)) for b in text_boxes(group)]
 
 
 def info_pages(info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None, width: float,
@@ -1015,7 +1015,7 @@ def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | 
     if axes is not None:        # δ ticked in degrees, h on the ordinate, what a printed mm is on each axis
         from .charts import diagram_axes_marks, text_boxes
         d.add(diagram_axes_marks(d, fig.view, axes, scale, origin[0], below + (12.0 if length else 0.0),
-                                 _step_number(fig, "sd_delta_axis"), text_boxes(svg_string(drawn))))
+                                 _step_number(fig, "sd_delta_axis"), text_boxes(drawn)))
     if length:
         d.add(_scale_bar(d, fig, origin[0], below, scale))
     return svg_string(d)
@@ -1046,7 +1046,7 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
 
 def _figure_group(dwg: svgwrite.Drawing, fig: Figure, prefix: str = "") -> Any:
     """The figure's layers, each step a group (ids prefixed by ``prefix``: a detail view draws steps again)."""
-    root = dwg.g(id=f"{prefix}figure")
+    root = Element.named("g", {"id": f"{prefix}figure"})
     for name, groups in fig.layers():
         layer = Element.named("g", {"id": f"{prefix}layer-{name}"})
         for sd in groups:
