@@ -226,7 +226,10 @@ def stacked_runs(runs: tuple[tuple[str, bool], ...], size: float, least: float =
     >>> stacked_runs((("C", False), ("1", True)), 3.5)
     [('C', False, False, 0.0), ('1', True, False, 0.0)]
     """
-    if not any(s and (s[0] in SUPERSCRIPTS or s[-1] in SUPERSCRIPTS) for s, _ in runs):
+    for s, _ in runs:
+        if s and (s[0] in SUPERSCRIPTS or s[-1] in SUPERSCRIPTS):
+            break
+    else:
         return [(s, sub, False, 0.0) for s, sub in runs]   # nothing to stack (all but ~1 % of a gallery's texts)
     from .labels import text_width
     small = max(size * SUB_SCALE, least) / size            # what text_width's 0.72 is here
