@@ -74,6 +74,12 @@ def _f(x: float) -> str:
     return f"{x:.3f}"
 
 
+def _line(x1: str, y1: str, x2: str, y2: str, **attribs: str) -> Element:
+    """A line as svgwrite's ``dwg.line((x1, y1), (x2, y2), **attribs)`` is written (:class:`Element`: without
+    svgwrite's set-up of an element, about ten times as costly to make)."""
+    return Element("line", x1=x1, y1=y1, x2=x2, y2=y2, **attribs)
+
+
 def _pieces(program: Program, h: float, n: int = 240) -> list[tuple[np.ndarray, tuple[np.ndarray, ...]]]:
     """(δ in degrees, (s, v, a)) on each segment, ends one-sided."""
     out = []
@@ -147,8 +153,8 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
             return y0 + panel * (hi - v) / (hi - lo)
 
         g = dwg.add(dwg.g(id=f"panel-{key}"))
-        g.add(dwg.line((_f(LEFT), _f(y0)), (_f(LEFT), _f(y0 + panel)), stroke=INK, stroke_width=0.3))
-        g.add(dwg.line((_f(LEFT), _f(Y(0.0))), (_f(LEFT + PLOT_W + 4), _f(Y(0.0))), stroke=INK, stroke_width=0.3))
+        g.add(_line(_f(LEFT), _f(y0), _f(LEFT), _f(y0 + panel), stroke=INK, stroke_width="0.3"))
+        g.add(_line(_f(LEFT), _f(Y(0.0)), _f(LEFT + PLOT_W + 4), _f(Y(0.0)), stroke=INK, stroke_width="0.3"))
         g.add(text_el(runs, AREA[0], y0 - 3.0, LABEL, INK, cls="panel-head"))
         texts.take(box_of(AREA[0], y0 - 3.0, LABEL, runs_width(runs, LABEL)))
         dl = "δ (°)"
@@ -156,15 +162,15 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
         texts.take(box_of(LEFT + PLOT_W + 1.0, Y(0.0) - 1.5, NOTE, text_width(dl, NOTE)))
         for v in (hi - pad, lo + pad):
             if abs(v) > 1e-12 and not flat:
-                g.add(dwg.line((_f(LEFT - 1.2), _f(Y(v))), (_f(LEFT), _f(Y(v))), stroke=INK, stroke_width=0.25))
+                g.add(_line(_f(LEFT - 1.2), _f(Y(v)), _f(LEFT), _f(Y(v)), stroke=INK, stroke_width="0.25"))
                 s = plain(v)
                 x, y, a = texts.place(text_width(s, TICK), TICK, [(LEFT - 2.0, Y(v) + 0.9, "end")])
                 g.add(text_el(s, x, y, TICK, INK, anchor=a))
         # δ ticks: 0 and every segment's end, a label that would run into the one before on a lower row
         for d in [0.0] + [seg.end for seg in program.segments]:
             if d > 0:
-                g.add(dwg.line((_f(X(d)), _f(y0)), (_f(X(d)), _f(y0 + panel)), stroke=GREY,
-                               stroke_width=0.15, stroke_dasharray="1,1"))
+                g.add(_line(_f(X(d)), _f(y0), _f(X(d)), _f(y0 + panel), stroke=GREY, stroke_width="0.15",
+                            stroke_dasharray="1,1"))
             s = f"{d:g}"
             spots = [(X(d), y0 + panel + 3.4 + 3.0 * r, "middle") for r in range(4)]
             x, y, a = texts.place(text_width(s, TICK), TICK, spots)
@@ -176,7 +182,7 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
                                                        (y0 + panel * (hi - m[k]) / (hi - lo)).tolist())]
             first = tuple(pts[0].split(","))
             if prev is not None and prev[1] != first[1]:
-                g.add(dwg.line(prev, first, stroke=INK, stroke_width=0.25, stroke_dasharray="0.8,0.6"))
+                g.add(_line(*prev, *first, stroke=INK, stroke_width="0.25", stroke_dasharray="0.8,0.6"))
             g.add(Element("polyline", points=" ".join(pts), fill="none", stroke=INK, stroke_width="0.5"))
             prev = tuple(pts[-1].split(","))
         if key != "a":
@@ -187,7 +193,7 @@ def motion_diagrams_svg(program: Program, h: float, *, title: str = "", unit: st
             if imp.kind == "rigid":
                 up = imp.jump > 0
                 tip = y0 + (0.0 if up else panel)
-                g.add(dwg.line((_f(x), _f(Y(0.0))), (_f(x), _f(tip)), stroke=RED, stroke_width=0.4))
+                g.add(_line(_f(x), _f(Y(0.0)), _f(x), _f(tip), stroke=RED, stroke_width="0.4"))
                 s = -1 if up else 1
                 g.add(dwg.polygon([(_f(x), _f(tip)), (_f(x - 1.0), _f(tip - 2.2 * s)),
                                    (_f(x + 1.0), _f(tip - 2.2 * s))], fill=RED))

@@ -141,26 +141,55 @@ __all__ = ["SHEET", "SPEC", "Texts", "axis_factor", "box_of", "chart_area", "cha
            "runs_width", "text_boxes", "text_el", "diagram_axes_marks"]
 
 
-def text_boxes(svg: str) -> list[Box]:
+def text_boxes(svg: str | Element) -> list[Box]:
     """The paper box of every text element of an SVG document or fragment (each tspan measured at its own size),
-    as :func:`box_of` estimates it.
+    as :func:`box_of` estimates it. The fragment may be given as a tree of :class:`~.serial.Element`: its texts
+    are read as the written fragment would be parsed (the text typeset, an attribute's None or "" absent),
+    without writing and parsing it.
 
     >>> text_boxes('<g><text x="10" y="20" font-size="2.5" text-anchor="middle">90°</text></g>')
     [(7.85, 18.0, 12.15, 20.625)]
+    >>> g = Element("g")
+    >>> _ = g.add(Element("text", "90°", x="10", y="20", font_size="2.5", text_anchor="middle"))
+    >>> text_boxes(g)
+    [(7.85, 18.0, 12.15, 20.625)]
     """
-    import xml.etree.ElementTree as ET
+    if isinstance(svg, str):
+        import xml.etree.ElementTree as ET
+        texts = [(t.get, t.text or "", [(u.text or "", u.get) for u in t if u.tag.endswith("tspan")])
+                 for t in ET.fromstring(svg).iter() if t.tag.endswith("text")]
+    else:
+        texts = _texts_of(svg)
+        if texts is None:                       # an svgwrite element inside: read the fragment as written
+            from .serial import svg_string
+            return text_boxes(svg_string(svg))
     out = []
-    for t in ET.fromstring(svg).iter():
-        if not t.tag.endswith("text"):
-            continue
-        size = float(t.get("font-size") or 3.0)
-        parts = [(t.text or "", size)] + [(u.text or "", float(u.get("font-size") or size)) for u in t
-                                          if u.tag.endswith("tspan")]
+    for get, text, spans in texts:
+        size = float(get("font-size") or 3.0)
+        parts = [(text, size)] + [(s, float(sget("font-size") or size)) for s, sget in spans]
         if not "".join(p for p, _ in parts).strip():
             continue
         width = sum(text_width(p, z) for p, z in parts)
-        out.append(box_of(float(t.get("x") or 0.0), float(t.get("y") or 0.0), size, width,
-                          t.get("text-anchor") or "start"))
+        out.append(box_of(float(get("x") or 0.0), float(get("y") or 0.0), size, width, get("text-anchor") or "start"))
+    return out
+
+
+def _texts_of(root: Any) -> list[tuple[Any, str, list[tuple[str, Any]]]] | None:
+    """The text elements of a tree of :class:`~.serial.Element` in document order, as :func:`text_boxes` reads
+    them: each with its attribute getter, its typeset text and its tspans' (typeset text, getter). None when the
+    tree holds another kind of element."""
+    from .serial import typeset
+    out = []
+    stack = [root]
+    while stack:
+        el = stack.pop()
+        if type(el) is not Element:
+            return None
+        if el.elementname.endswith("text"):
+            spans = [(typeset(u.text) if u.text else "", u.attribs.get) for u in el.elements
+                     if type(u) is Element and u.elementname.endswith("tspan")]
+            out.append((el.attribs.get, typeset(el.text) if el.text else "", spans))
+        stack.extend(reversed(el.elements))
     return out
 
 
@@ -178,7 +207,7 @@ def diagram_axes_marks(dwg: svgwrite.Drawing, view: Any, axes: Any, scale: Any, 
     left out, and the statement moves down until it covers none."""
     placed = Texts(list(avoid))
     from .labels import rich_runs
-    g = dwg.g(id="diagram-axes", class_="diagram-axes")
+    g = Element.named("g", {"id": "diagram-axes", "class": "diagram-axes"})
     if step is not None:
         g.attribs["data-step"] = str(step)
     ax, ay = view.xy(*axes.at(0.0, 0.0))

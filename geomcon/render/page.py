@@ -102,10 +102,10 @@ def document(sheet: Sheet) -> svgwrite.Drawing:
     w, h = fmt(sheet.width), fmt(sheet.height)
     dwg = svgwrite.Drawing(size=(f"{w}mm", f"{h}mm"), viewBox=f"0 0 {w} {h}", profile="full", debug=False)
     dwg.attribs["font-family"] = FONT_FAMILY
-    dwg.add(dwg.rect(insert=(0, 0), size=(w, h), fill="#ffffff", id="paper"))
+    dwg.add(Element("rect", x="0", y="0", width=w, height=h, fill="#ffffff", id="paper"))
     x0, y0, x1, y1 = frame_box(sheet)
-    dwg.add(dwg.rect(insert=(fmt(x0), fmt(y0)), size=(fmt(x1 - x0), fmt(y1 - y0)), fill="none", stroke=INK,
-                     stroke_width=fmt(FRAME_WIDTH), id="frame"))
+    dwg.add(Element("rect", x=fmt(x0), y=fmt(y0), width=fmt(x1 - x0), height=fmt(y1 - y0), fill="none", stroke=INK,
+                    stroke_width=fmt(FRAME_WIDTH), id="frame"))
     return dwg
 
 
@@ -153,6 +153,8 @@ def printable(text_: str) -> str:
     >>> printable("001-08_crank_rocker"), printable("a\x01b\nc")
     ('001-08_crank_rocker', 'a\\x01b\\nc')
     """
+    if text_.isprintable():                 # every character as it is (a space is printable)
+        return text_
     return "".join(ch if ch.isprintable() or ch == " " else ch.encode("unicode_escape").decode("ascii")
                    for ch in text_)
 
@@ -200,10 +202,10 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
     version and the sheet number."""
     x0, y0, x1, y1 = title_block_box(sheet)
     g = dwg.g(id="title-block", stroke=INK, fill="none")
-    g.add(dwg.rect(insert=(fmt(x0), fmt(y0)), size=(fmt(x1 - x0), fmt(y1 - y0)), stroke_width="0.5"))
+    g.add(Element("rect", x=fmt(x0), y=fmt(y0), width=fmt(x1 - x0), height=fmt(y1 - y0), stroke_width="0.5"))
     tops = [y0] + [y0 + TB_TITLE_H + r * TB_ROW for r in range(TB_ROWS - 1)]
     for y in tops[1:]:
-        g.add(dwg.line((fmt(x0), fmt(y)), (fmt(x1), fmt(y)), stroke_width="0.25"))
+        g.add(Element("line", x1=fmt(x0), y1=fmt(y), x2=fmt(x1), y2=fmt(y), stroke_width="0.25"))
     w = x1 - x0
     lang = tb.lang
     if tb.scale is not None:
@@ -235,8 +237,8 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
             if not cell:
                 continue
             if c:
-                g.add(dwg.line((fmt(x0 + c * cw), fmt(tops[r])), (fmt(x0 + c * cw), fmt(tops[r] + TB_ROW)),
-                               stroke_width="0.25"))
+                x = fmt(x0 + c * cw)
+                g.add(Element("line", x1=x, y1=fmt(tops[r]), x2=x, y2=fmt(tops[r] + TB_ROW), stroke_width="0.25"))
             size = TB_TEXT
             cell = fitted(cell, cw - 3.0, size)
             size = fit_size(cell, cw - 3.0, size)
@@ -247,7 +249,8 @@ def title_block(dwg: svgwrite.Drawing, sheet: Sheet, tb: TitleBlock) -> Any:
                 add_runs(t, rich_runs(cell), size, least=MIN_TEXT)
                 t.attribs["xml:space"] = "preserve"
             else:
-                t = dwg.text(cell, insert=at, font_size=fmt(size), fill=INK, stroke="none", class_=f"tb tb-{r}-{c}")
+                t = Element("text", cell, x=at[0], y=at[1], font_size=fmt(size), fill=INK, stroke="none",
+                            class_=f"tb tb-{r}-{c}")
             g.add(t)
     return g
 

@@ -234,8 +234,8 @@ def _column_heights(heights: Sequence[float], starts: Sequence[int]) -> list[flo
 
 def _line(dwg: svgwrite.Drawing, text: str, x: float, y: float, size: float, fill: str, cls: str) -> Element:
     """A line of text with its subscript runs (``dwg``, the document it goes into, is not needed to make it)."""
-    el = Element("text", x=fmt(x), y=fmt(y), font_size=fmt(size), fill=fill, class_=cls)
-    el.attribs["xml:space"] = "preserve"            # keep the spaces around subscript runs
+    el = Element.named("text", {"x": fmt(x), "y": fmt(y), "font-size": fmt(size), "fill": fill, "class": cls,
+                                "xml:space": "preserve"})            # keep the spaces around subscript runs
     add_runs(el, rich_runs(text), size)
     return el
 

@@ -112,15 +112,26 @@ def recolour(shape: Shape, colour: str = HIGHLIGHT) -> Shape:
 
 
 # ---------------------------------------------------------------------------------------------- SVG
-def _pen_attrs(pen: Pen | None) -> dict[str, Any]:
-    if pen is None:
-        return {"stroke": "none"}
-    out: dict[str, Any] = {"stroke": pen.stroke, "stroke_width": fmt(pen.width)}
-    if pen.dash:
-        out["stroke_dasharray"] = " ".join(fmt(d) for d in pen.dash)
-    if pen.opacity != 1.0:
-        out["stroke_opacity"] = fmt(pen.opacity)
+def _pen_attrs(pen: Pen | None) -> dict[str, str]:
+    """A pen's attributes as written (``stroke-width``…), remembered by pen (pens are frozen and few: ~40 a
+    gallery job); the caller copies them."""
+    out = _PENS.get(pen)
+    if out is None:
+        if pen is None:
+            out = {"stroke": "none"}
+        else:
+            out = {"stroke": pen.stroke, "stroke-width": fmt(pen.width)}
+            if pen.dash:
+                out["stroke-dasharray"] = " ".join(fmt(d) for d in pen.dash)
+            if pen.opacity != 1.0:
+                out["stroke-opacity"] = fmt(pen.opacity)
+        if len(_PENS) >= 4096:
+            _PENS.clear()
+        _PENS[pen] = out
     return out
+
+
+_PENS: dict[Pen | None, dict[str, str]] = {}
 
 
 def arc_d(a: ArcP) -> str:
@@ -140,30 +151,32 @@ def arc_d(a: ArcP) -> str:
 def to_svg(shape: Shape) -> Element:
     """The SVG element of a shape (:class:`~geomcon.render.serial.Element`: written as svgwrite writes it)."""
     if isinstance(shape, Poly):
-        d = "M" + "L".join(f"{fmt(x)} {fmt(y)}" for x, y in shape.pts) + ("Z" if shape.closed else "")
-        return Element("path", d=d, fill=shape.fill, stroke_linecap="round", stroke_linejoin="round",
-                       class_="ink", **_pen_attrs(shape.pen))
+        f = fmt
+        d = "M" + "L".join([f"{f(x)} {f(y)}" for x, y in shape.pts]) + ("Z" if shape.closed else "")
+        return Element.named("path", {"d": d, "fill": shape.fill, "stroke-linecap": "round",
+                                      "stroke-linejoin": "round", "class": "ink", **_pen_attrs(shape.pen)})
     if isinstance(shape, ArcP):
-        return Element("path", d=arc_d(shape), fill="none", stroke_linecap="round", class_="ink",
-                       **_pen_attrs(shape.pen))
+        return Element.named("path", {"d": arc_d(shape), "fill": "none", "stroke-linecap": "round", "class": "ink",
+                                      **_pen_attrs(shape.pen)})
     if isinstance(shape, Disc):
         cls = "ink" if shape.fill in ("none", PAPER) else "ink dot"
-        return Element("circle", cx=fmt(shape.c[0]), cy=fmt(shape.c[1]), r=fmt(shape.r), fill=shape.fill, class_=cls,
-                       **_pen_attrs(shape.pen))
+        return Element.named("circle", {"cx": fmt(shape.c[0]), "cy": fmt(shape.c[1]), "r": fmt(shape.r),
+                                        "fill": shape.fill, "class": cls, **_pen_attrs(shape.pen)})
     return _text(shape)
 
 
 def _text(t: Text) -> Element:
-    attrs: dict[str, Any] = {"font_size": fmt(t.size), "fill": t.fill, "stroke": PAPER, "stroke_width": fmt(HALO),
-                             "stroke_linejoin": "round", "paint_order": "stroke", "class_": t.cls}
+    attrs: dict[str, str | None] = {"x": fmt(t.x), "y": fmt(t.y), "font-size": fmt(t.size), "fill": t.fill,
+                                    "stroke": PAPER, "stroke-width": fmt(HALO), "stroke-linejoin": "round",
+                                    "paint-order": "stroke", "class": t.cls}
     if t.anchor != "start":
-        attrs["text_anchor"] = t.anchor
+        attrs["text-anchor"] = t.anchor
     if t.italic:
-        attrs["font_style"] = "italic"
+        attrs["font-style"] = "italic"
     if t.rotate:
         cx, cy = (t.box[0] + t.box[2]) / 2, (t.box[1] + t.box[3]) / 2
         attrs["transform"] = f"rotate({fmt(t.rotate)} {fmt(cx)} {fmt(cy)})"
-    el = Element("text", x=fmt(t.x), y=fmt(t.y), **attrs)
+    el = Element.named("text", attrs)
     add_runs(el, t.runs, t.size)
     el.attribs["xml:space"] = "preserve"
     return el
@@ -177,17 +190,18 @@ def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float, least: fl
     letter as a small raised tspan, the subscript shifted back under it with ``dx`` (:func:`stacked_runs`)."""
     shift = 0.0
     small = fmt(max(size * SUB_SCALE, least))
+    named = Element.named
     for s, sub, sup, dx in stacked_runs(runs, size, least):
         target = SUB_DROP * size if sub else (-SUP_RISE * size if sup else 0.0)
-        attrs: dict[str, Any] = {}
+        attrs: dict[str, str | None] = {}
         if dx:
             attrs["dx"] = fmt(dx)
         if target != shift:
             attrs["dy"] = fmt(target - shift)
             shift = target
         if sub or sup:
-            attrs["font_size"] = small
-        el.add(Element("tspan", s, **attrs))
+            attrs["font-size"] = small
+        el.add(named("tspan", attrs, s))
 
 
 SUPERSCRIPTS = {"ʳ": "r", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t"}
@@ -212,7 +226,10 @@ def stacked_runs(runs: tuple[tuple[str, bool], ...], size: float, least: float =
     >>> stacked_runs((("C", False), ("1", True)), 3.5)
     [('C', False, False, 0.0), ('1', True, False, 0.0)]
     """
-    if not any(s and (s[0] in SUPERSCRIPTS or s[-1] in SUPERSCRIPTS) for s, _ in runs):
+    for s, _ in runs:
+        if s and (s[0] in SUPERSCRIPTS or s[-1] in SUPERSCRIPTS):
+            break
+    else:
         return [(s, sub, False, 0.0) for s, sub in runs]   # nothing to stack (all but ~1 % of a gallery's texts)
     from .labels import text_width
     small = max(size * SUB_SCALE, least) / size            # what text_width's 0.72 is here

@@ -892,7 +892,7 @@ def _figure_and_marks(dwg: svgwrite.Drawing, scene: Scene, fig: Figure, scale: S
     axes = scene.evaluate(["sd_axes"])["sd_axes"]
     ax, ay = fig.view.xy(*axes.at(0.0, 0.0))
     return drawn, diagram_axes_marks(dwg, fig.view, axes, scale, ax, ay + 15.0, _step_number(fig, "sd_delta_axis"),
-                                     text_boxes(svg_string(drawn)))
+                                     text_boxes(drawn))
 
 
 CAPTION_GAP = 1.0
@@ -908,7 +908,7 @@ def _boxes(group: Any) -> list[Box]:
     from .charts import text_boxes
     from .free_area import CLEAR
     d = CLEAR - CAPTION_GAP
-    return [(b[0] + d, b[1] + d, max(b[0] + d, b[2] - d), max(b[1] + d, b[3] - d)) for b in text_boxes(svg_string(group))]
+    return [(b[0] + d, b[1] + d, max(b[0] + d, b[2] - d), max(b[1] + d, b[3] - d)) for b in text_boxes(group)]
 
 
 def info_pages(info: Sequence[str], warnings: Sequence[str], steps: Sequence[int] | None, width: float,
@@ -1015,7 +1015,7 @@ def _diagram_sheet(scene: Scene, page: PageSpec, block: TitleBlock, upto: int | 
     if axes is not None:        # δ ticked in degrees, h on the ordinate, what a printed mm is on each axis
         from .charts import diagram_axes_marks, text_boxes
         d.add(diagram_axes_marks(d, fig.view, axes, scale, origin[0], below + (12.0 if length else 0.0),
-                                 _step_number(fig, "sd_delta_axis"), text_boxes(svg_string(drawn))))
+                                 _step_number(fig, "sd_delta_axis"), text_boxes(drawn)))
     if length:
         d.add(_scale_bar(d, fig, origin[0], below, scale))
     return svg_string(d)
@@ -1046,13 +1046,13 @@ def render_svg(scene: Scene, *, upto: int | None = None, viewbox: Box | None = N
 
 def _figure_group(dwg: svgwrite.Drawing, fig: Figure, prefix: str = "") -> Any:
     """The figure's layers, each step a group (ids prefixed by ``prefix``: a detail view draws steps again)."""
-    root = dwg.g(id=f"{prefix}figure")
+    root = Element.named("g", {"id": f"{prefix}figure"})
     for name, groups in fig.layers():
-        layer = Element("g", id=f"{prefix}layer-{name}")
+        layer = Element.named("g", {"id": f"{prefix}layer-{name}"})
         for sd in groups:
-            g = Element("g", id=prefix + (f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc else step_id(sd.key)),
-                        class_=sd.classes)
-            g.attribs["data-step"] = str(sd.number)
+            g = Element.named("g", {"id": prefix + (f"arc-{step_id(sd.key)[5:]}-{sd.number}" if sd.arc
+                                                    else step_id(sd.key)),
+                                    "class": sd.classes, "data-step": str(sd.number)})
             for shape in sd.shapes:
                 g.add(to_svg(shape))
             layer.add(g)
@@ -1073,13 +1073,14 @@ def _scale_bar(dwg: svgwrite.Drawing, fig: Figure, x: float, y: float, scale: Sc
     L = length / mu
     g = dwg.g(id="scale", stroke=INK, stroke_width="0.3")
     g.attribs["data-length-mm"] = fmt(L)
-    g.add(dwg.path(d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
-                     f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
-                   fill="none", id="scale-bar"))
+    g.add(Element("path", d=f"M{fmt(x)} {fmt(y)}H{fmt(x + L)}M{fmt(x)} {fmt(y - 1)}V{fmt(y + 1)}"
+                            f"M{fmt(x + L / 2)} {fmt(y - 0.6)}V{fmt(y + 0.6)}M{fmt(x + L)} {fmt(y - 1)}V{fmt(y + 1)}",
+                  fill="none", id="scale-bar"))
     size = fmt(INFO_SIZE)
-    g.add(dwg.text("0", insert=(fmt(x), fmt(y + 4.5)), font_size=size, text_anchor="middle", stroke="none", fill=INK))
-    g.add(dwg.text(f"{length:g} mm", insert=(fmt(x + L), fmt(y + 4.5)), font_size=size, text_anchor="middle",
-                   stroke="none", fill=INK))
+    g.add(Element("text", "0", x=fmt(x), y=fmt(y + 4.5), font_size=size, text_anchor="middle", stroke="none",
+                  fill=INK))
+    g.add(Element("text", f"{length:g} mm", x=fmt(x + L), y=fmt(y + 4.5), font_size=size, text_anchor="middle",
+                  stroke="none", fill=INK))
     t = Element("text", fill=INK, font_size=size, stroke="none", x=fmt(x + L + 10.0), y=fmt(y + 1.2))
     add_runs(t, rich_runs(f"{scale}   μl = {mu:g} mm/mm"), INFO_SIZE)        # μ with subscript l
     t.attribs["xml:space"] = "preserve"

@@ -36,9 +36,35 @@ FIG_MAX_H = 185.0
 
 
 def fmt(x: float) -> str:
-    """A coordinate as printed in the SVG: three decimals, no trailing zeros, never ``-0``."""
-    s = f"{x:.3f}".rstrip("0").rstrip(".")
+    """A coordinate as printed in the SVG: three decimals, no trailing zeros, never ``-0``.
+
+    Remembered by value (:data:`_FMT`): two of three numbers a gallery prints were printed before (font sizes,
+    a subscript's shift, a column's x). Equal numbers print alike (0.0 and -0.0 both as ``0``), so a number
+    found under an equal key of another type (1 and 1.0, a numpy float) prints as it would itself."""
+    try:
+        s = _FMT.get(x)
+    except TypeError:                     # unhashable (a 0-d array): not remembered
+        return _fmt(x)
+    if s is None:
+        s = _fmt(x)
+        if len(_FMT) >= _FMT_MAX:
+            _FMT.clear()
+        _FMT[x] = s
+    return s
+
+
+def _fmt(x: float) -> str:
+    """:func:`fmt`, computed."""
+    s = f"{x:.3f}"
+    if s[-1] != "0":
+        return s
+    s = s.rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
+
+
+_FMT: dict[float, str] = {}
+""":func:`fmt` of the numbers met (cleared when it holds :data:`_FMT_MAX`; a gallery job meets some 10 000)."""
+_FMT_MAX = 1 << 16
 
 
 def nice_values(lo: float, hi: float) -> Iterator[float]:
