@@ -217,7 +217,9 @@ def construct(g: Mapping[str, Any]) -> Construction:
                     caption=(f"Transmission angle γ{i} = ∠{jd1}{mark}{je1}{mark}{je} (acute form)",
                              f"传动角 γ{i} = ∠{jd1}{mark}{je1}{mark}{je}(取锐角)"))
         gammas.append(gk)
-        if drawing:
+        # γ{i} marked only where γmin is read from it: a driver that cannot turn fully meets dead points, γmin = 0
+        # is marked there, and a γ1 = 73.74° printed at B′ was in no Results row (300-01, hlook11m's review)
+        if drawing and d_full:
             sc.add(f"mark_gamma_{i}", transmission_mark, Cg, Bg, Pe, f"γ{i}", gk, role=Role.ANNOTATION, style="angle")
     if not d_full:
         zname, ename = link_name(jd1, je1), link_name(je, je1)      # the coupler and the driven link, by name

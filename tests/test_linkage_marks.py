@@ -1,0 +1,38 @@
+"""A linkage drawing's marks are readable and each names a result (issue 11, session l, hlook11m's review).
+
+Each test here failed on the gallery before the fix it guards:
+
+- 300-01 (four_bar.analysis, the rocker CD drives) marked γ1 = 73.74° at B′, the driver along the frame line,
+  but no Results row printed it: γmin = 0 is read at the dead points, where the driver that cannot turn fully
+  stops. A γi mark at a frame-line position is drawn only where γmin is read from it.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+
+from geomcon.problems import load_problem
+from geomcon.solve import solve
+
+ROOT = Path(__file__).resolve().parents[1]
+FOUR_BAR = sorted(p.stem for p in (ROOT / "problems").glob("*.toml")
+                  if 'recipe = "four_bar.analysis"' in p.read_text(encoding="utf-8"))
+
+
+@lru_cache(maxsize=None)
+def _scene(stem: str):
+    return solve(load_problem(ROOT / "problems" / f"{stem}.toml")).drawing_scene
+
+
+@pytest.mark.parametrize("stem", FOUR_BAR)
+def test_a_frame_line_gamma_is_marked_only_where_gamma_min_is_read(stem):
+    sc = _scene(stem)
+    marked = [float(sc.value(f"gamma_{i}")) for i in (1, 2) if f"mark_gamma_{i}" in sc]
+    if marked:
+        assert min(marked) == pytest.approx(float(sc.value("gamma_min"))), (stem, marked)
+
+
+def test_four_bar_problems_found():
+    assert "300-01_four_bar_double_rocker_pressure_angle" in FOUR_BAR
