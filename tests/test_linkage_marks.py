@@ -7,6 +7,8 @@ Each test here failed on the gallery before the fix it guards:
   stops. A γi mark at a frame-line position is drawn only where γmin is read from it.
 - 001-20 (shaper by K, DE given) drew the ram at E1 only, while h, f and αmax are read over the whole stroke:
   D2's coupler and block E2 were missing.
+- 001-03b (four_bar.analysis, frame AB, a double-crank) drew its linkage solid with the crank BC′ along the frame
+  line over BA: one line B–C′, crank and frame not told apart. The solid position is the one turned away.
 """
 from __future__ import annotations
 
@@ -53,3 +55,19 @@ def test_a_shaper_with_its_coupler_draws_the_ram_at_both_ends_of_stroke(stem):
     u = (guide.b - guide.a).unit()
     for E in (E1, E2):                                            # both blocks lie on the drawn guide
         assert 0 < (E - guide.a).dot(u) < abs(guide.b - guide.a)
+
+
+@pytest.mark.parametrize("stem", FOUR_BAR)
+def test_no_solid_link_lies_on_the_frame(stem):
+    sc = _scene(stem)
+    frame = sc.value("frame")
+    u = (frame.b - frame.a).unit()
+    span = abs(frame.b - frame.a)
+    for st in sc.steps:
+        if st.style != "link" or not st.key.startswith(("g1_", "g2_")):
+            continue
+        seg = sc.value(st.key)
+        ends = [p - frame.a for p in (seg.a, seg.b)]
+        if all(abs(u.cross(q)) < 1e-6 * span for q in ends):             # along the frame line: must not overlap it
+            lo, hi = sorted(q.dot(u) for q in ends)
+            assert min(hi, span) - max(lo, 0.0) < 1e-6 * span, (stem, st.key)
