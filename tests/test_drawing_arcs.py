@@ -1,7 +1,7 @@
 """Issue 11 review (hlook11c): an angle mark's arc reads as an arc, over every gallery figure as its sheet 1 draws
 it — long enough not to read as a tick (001-08's θ = 12.5° was a 2 mm stroke at 9 mm; 35 of 148 arcs were under
 3 mm), and never drawn on a circle about its own vertex (200-01's αmax arc at B0 lay on the roller circle, 5 mm
-both at 1:2, so no arc showed)."""
+both at 1:2, so no arc showed); arcs about one vertex lie apart (hlook11m: 001-21's φ1, φ2 arcs on its ψ arc)."""
 from __future__ import annotations
 
 import math
@@ -11,6 +11,7 @@ import pytest
 from geomcon.render.draw import ARC_LENGTH, MIN_ANGLE_RADIUS, SMALL_ANGLE_RADIUS, least_arc_radius
 from geomcon.geometry.primitives import Point
 from geomcon.render.symbols import ARC_GAIN, POINT_CLEAR, SMALL_ANGLE_REACH
+from geomcon.render.symbols import ARC_APART
 from geomcon.render.shapes import ArcP, Disc
 
 from test_drawing_defects import NAMES, angle_marks, figure
@@ -94,3 +95,14 @@ def test_the_slotter_s_arm_cd_prime_is_drawn_as_the_link_d_prime_e_prime_hangs_f
     fig = figure("001-19_slotter_rotating_guide_bar")
     styles = {g.key: g.classes for g in fig.groups}
     assert "style-link" in styles["CDt"].split() and "style-joint" in styles["Dt"].split()
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_the_angle_arcs_about_one_vertex_lie_apart(name):
+    """001-21 drew its φ1 and φ2 arcs (made smaller to end on the 10 mm frame line through D) at 8.5 mm, on its ψ
+    arc at 9 mm: one double line, which arc named ψ unclear. Arcs of marks about one vertex keep ARC_APART (2 mm)."""
+    arcs = _mark_arcs(figure(name))
+    for i, (k1, a1) in enumerate(arcs):
+        for k2, a2 in arcs[i + 1:]:
+            if math.dist(a1.c, a2.c) < 1e-6:
+                assert abs(a1.r - a2.r) >= ARC_APART - 1e-6, (k1, k2, round(a1.r, 3), round(a2.r, 3))

@@ -196,11 +196,15 @@ def construct(g: Mapping[str, Any]) -> Construction:
     Pe, je, e, je1 = (P3, j[3], Y, j[2]) if drives_input else (P0, j[0], X, j[1])
     d_full = in_crank if drives_input else out_crank
     gammas = []
-    solid = in_crank == out_crank and g.get("phi") is None     # no extreme and no given position: the first
-    for i, sign in enumerate((1.0, -1.0), 1):                  # γ position is the linkage drawn solid
-        diag = abs(F - d) if sign > 0 else F + d
-        if not abs(Z - e) - REL_TOL * scale <= diag <= Z + e + REL_TOL * scale:
+    # no extreme and no given position: a γ position is the linkage drawn solid, the one with the driver turned
+    # away from the frame where it exists — along it, the driver lies on the frame (001-03b's crank BC′ over BA)
+    reach = [i for i, diag in enumerate((abs(F - d), F + d), 1)
+             if abs(Z - e) - REL_TOL * scale <= diag <= Z + e + REL_TOL * scale]
+    solid_at = reach[-1] if in_crank == out_crank and g.get("phi") is None and reach else None
+    for i, sign in enumerate((1.0, -1.0), 1):
+        if i not in reach:
             continue
+        solid = i == solid_at
         mark = "′" * i
         Bg = sc.add(f"Bg{i}", point_along, Pd, Pe, sign * d, style="point", label=f"{jd1}{mark}",
                     caption=(f"Driver {link_name(jd, jd1)} along the frame line: {jd1}{mark}",
@@ -212,12 +216,13 @@ def construct(g: Mapping[str, Any]) -> Construction:
         for a, b, nm in ((Pd, Bg, "d"), (Bg, Cg, "c"), (Cg, Pe, "e")) if drawing else ():
             add_bar(sc, f"g{i}_{nm}", a, b, **(dict(style="link", role=Role.RESULT) if solid else
                                                dict(style="ghost", role=Role.CONSTRUCTION)))
-        solid = False
         gk = sc.add(f"gamma_{i}", transmission_deg, Bg, Cg, Pe, role=Role.MEASUREMENT, unit="deg",
                     caption=(f"Transmission angle γ{i} = ∠{jd1}{mark}{je1}{mark}{je} (acute form)",
                              f"传动角 γ{i} = ∠{jd1}{mark}{je1}{mark}{je}(取锐角)"))
         gammas.append(gk)
-        if drawing:
+        # γ{i} marked only where γmin is read from it: a driver that cannot turn fully meets dead points, γmin = 0
+        # is marked there, and a γ1 = 73.74° printed at B′ was in no Results row (300-01, hlook11m's review)
+        if drawing and d_full:
             sc.add(f"mark_gamma_{i}", transmission_mark, Cg, Bg, Pe, f"γ{i}", gk, role=Role.ANNOTATION, style="angle")
     if not d_full:
         zname, ename = link_name(jd1, je1), link_name(je, je1)      # the coupler and the driven link, by name

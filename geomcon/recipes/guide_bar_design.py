@@ -33,7 +33,7 @@ from typing import Any, Mapping
 from ..analytic.design_by_k import guide_bar_design, shaper_design
 from ..analytic.linkages import theta_from_k
 from ..errors import NotAMechanism
-from ..geometry import (Ahead, Arc, Line, NearestTo, Point, circle, foot, line_circle, line_through, midpoint, perpendicular,
+from ..geometry import (Ahead, Arc, FarthestFrom, Line, NearestTo, Point, circle, foot, line_circle, line_through, midpoint, perpendicular,
                         point_on_ray, reflect)
 from ..scene import Ref, Role, Scene, marks
 from .base import Construction, Quantity, Recipe
@@ -183,13 +183,16 @@ def _arc_of_d(C: Point, D1: Point, D2: Point) -> Arc:
     return Arc(C, abs(D1 - C), t2 - over, sweep + 2 * over)
 
 
-def _ram_guide(guide: Line, D1: Point, D2: Point) -> marks.Guide:
-    """The ram's guide drawn (hatched on the side away from the coupler) over the feet of D1 and D2 on it,
-    a fifth of the stroke beyond each."""
+def _ram_guide(guide: Line, D1: Point, D2: Point, E1: Point, E2: Point) -> marks.Guide:
+    """The ram's guide drawn (hatched on the side away from the coupler) over the feet of D1 and D2 and the
+    ram's ends of stroke E1, E2 on it, a fifth of the stroke beyond the outermost: E2 lies beyond D2's foot by
+    as much as E1 lies inside D1's, and a guide over the feet only left the block E2 off its end (001-20)."""
     a, b = foot(guide, D1), foot(guide, D2)
-    extra = (b - a) * 0.2
+    u = (b - a).unit()
+    ts = [(p - a).dot(u) for p in (a, b, E1, E2)]
+    extra = abs(b - a) * 0.2
     side = 1 if (b - a).cross(D1 - a) < 0 else -1
-    return marks.guide(a - extra, b + extra, side)
+    return marks.guide(a + u * (min(ts) - extra), a + u * (max(ts) + extra), side)
 
 
 STROKE_OFFSET = 0.12
@@ -279,9 +282,6 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
     dev = sc.add("deviation", length, G, M, role=Role.MEASUREMENT, unit="mm",
                  caption=("Largest deviation of D from the guide: GM = GT", "D 偏离导路的最大距离 GM = GT"))
     chosen = g.get("alpha_allow") is not None or g.get("DE") is not None     # DE known: the ram's block E1 drawn
-    if drawing and chosen:
-        sc.add("ram_guide_mark", _ram_guide, guide, D1, D2, role=Role.ANNOTATION, style="guide",
-               caption=("The ram's guide over the stroke", "滑枕(刨头)导路"))
     if drawing and not chosen:                  # E's place unknown: the guide's line and the stroke on it
         sc.add("dim_H", _stroke_on_guide, guide, D1, D2, H, role=Role.ANNOTATION, style="dim", caption=(
             "The ram's stroke H on its guide, between the feet of D1 and D2 (whatever the coupler DE, the ram's ends "
@@ -304,6 +304,16 @@ def shaper_construct(g: Mapping[str, Any]) -> Construction:
                         caption=("E1 on the guide at DE from D1", "以 D1 为圆心、DE 为半径画弧交导路于 E1"))
             add_bar(sc, "D1E1", D1, E1, ("Coupler D1E1", "连杆 D1E1"))
             sc.add("slider_E1", marks.slider, E1, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+            # the ram's other end of stroke: D2's position drawn with its coupler and block, as D1's (001-20 drew
+            # the ram at E1 only while h, f and αmax are read over the whole stroke E1E2)
+            kE2 = sc.add("kE2", circle, D2, DE, visible=False)
+            E2 = sc.add("E2", line_circle, guide, kE2, branch=FarthestFrom(G), role=Role.RESULT, style="joint",
+                        label="E2", caption=("E2 on the guide at DE from D2: E1E2 = D1D2 = H",
+                                             "以 D2 为圆心、DE 为半径画弧交导路于 E2,E1E2 = D1D2 = H"))
+            add_bar(sc, "D2E2", D2, E2, style="link-alt")
+            sc.add("slider_E2", marks.slider, E2, Point(1.0, 0.0), role=Role.ANNOTATION, style="slider")
+            sc.add("ram_guide_mark", _ram_guide, guide, D1, D2, E1, E2, role=Role.ANNOTATION, style="guide",
+                   caption=("The ram's guide over the stroke", "滑枕(刨头)导路"))
     names = [q.name for q in SHAPER_ANSWERS if DE is not None or q.name not in ("DE", "alpha_max")]
     return Construction(sc, {n: n for n in names}, {n: n for n in ("A", "C", "B1", "B2", "D1", "D2")})
 

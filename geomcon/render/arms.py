@@ -20,6 +20,7 @@ from typing import Any, Iterable
 
 from ..scene.marks import AngleMark
 from .draw import MIN_ANGLE_RADIUS, least_arc_radius
+from .symbols import ARC_APART
 from .shapes import ArcP, Pen, Poly
 
 ARM_BEYOND = 1.5
@@ -55,11 +56,13 @@ def _reach(segs: list[Any], c: tuple[float, float], u: tuple[float, float], r: f
     return out
 
 
-def fitted(arc: ArcP, strokes: Iterable[Poly]) -> tuple[ArcP, list[Poly]]:
+def fitted(arc: ArcP, strokes: Iterable[Poly], others: Iterable[float] = ()) -> tuple[ArcP, list[Poly]]:
     """The arc of an angle made to end on lines: as it is when both ends lie on drawn straight strokes along their
     rays; else drawn smaller, :data:`ARM_BEYOND` inside the shorter line, when that keeps it
-    :data:`~geomcon.render.draw.MIN_ANGLE_RADIUS` or more (200-03's α arcs); else as it is, with the rays it
-    lacks drawn on past it (thin, dashed, in the arc's ink)."""
+    :data:`~geomcon.render.draw.MIN_ANGLE_RADIUS` or more (200-03's α arcs) and
+    :data:`~geomcon.render.symbols.ARC_APART` off the radii ``others`` of the other arcs about its vertex (001-21's
+    φ1, φ2 arcs, drawn smaller onto its ψ arc); else as it is (the layout set the marks at one vertex apart), with
+    the rays it lacks drawn on past it (thin, dashed, in the arc's ink)."""
     segs = [s.pts for s in strokes if len(s.pts) == 2 and not s.closed]
     ends = []
     for t in (0.0, 1.0):
@@ -68,12 +71,22 @@ def fitted(arc: ArcP, strokes: Iterable[Poly]) -> tuple[ArcP, list[Poly]]:
     bare = [u for u in ends if not any(_covers(s, arc.c, u, arc.r) for s in segs)]
     if not bare:
         return arc, []
+    floor = max(MIN_ANGLE_RADIUS, min(least_arc_radius(arc.sweep), arc.r))
     r = min(_reach(segs, arc.c, u, arc.r) for u in ends) - ARM_BEYOND
-    if r >= max(MIN_ANGLE_RADIUS, min(least_arc_radius(arc.sweep), arc.r)) and all(any(_covers(s, arc.c, u, r) for s in segs) for u in ends):
+    if r >= floor and _clear(r, others) and all(any(_covers(s, arc.c, u, r) for s in segs) for u in ends):
         return replace(arc, r=r), []
     k = arc.r + ARM_BEYOND
     return arc, [Poly((arc.c, (arc.c[0] + u[0] * k, arc.c[1] + u[1] * k)), Pen(arc.pen.stroke, 0.18, (1.2, 0.8)))
                  for u in bare]
+
+
+def _clear(r: float, others: Iterable[float]) -> bool:
+    """Whether an arc of radius ``r`` lies :data:`ARC_APART` or more off every radius of ``others``.
+
+    >>> _clear(8.5, [9.0]), _clear(8.5, [12.5, 16.0]), _clear(7.0, [9.0])
+    (False, True, True)
+    """
+    return all(abs(x - r) >= ARC_APART - 1e-9 for x in others)
 
 
 def arms(arc: ArcP, strokes: Iterable[Poly]) -> list[Poly]:
@@ -103,17 +116,18 @@ def add_arms(groups: list[Any], values: dict[str, Any]) -> tuple[list[Poly], dic
     smaller, its old middle (where its text was anchored) and the new one."""
     strokes = [sh for g in groups for sh in g.shapes if isinstance(sh, Poly) and len(sh.pts) == 2]
     rays, moved = [], {}
-    for g in groups:
-        if not _marks(values[g.key]):
-            continue
-        for i, arc in enumerate(g.shapes):
-            if isinstance(arc, ArcP) and abs(arc.sweep) > math.radians(0.2):
-                new, more = fitted(arc, strokes)
-                if new is not arc:
-                    g.shapes[i] = new
-                    moved[arc.at(0.5)] = new.at(0.5)
-                g.shapes += more
-                rays += more
+    found = [(g, i, arc) for g in groups if _marks(values[g.key]) for i, arc in enumerate(g.shapes)
+             if isinstance(arc, ArcP) and abs(arc.sweep) > math.radians(0.2)]
+    radii = {id(arc): arc.r for _, _, arc in found}       # each arc's radius, its final one once fitted
+    for g, i, arc in found:
+        others = [radii[id(a)] for _, _, a in found if a is not arc and math.dist(a.c, arc.c) < 1e-6]
+        new, more = fitted(arc, strokes, others)
+        if new is not arc:
+            g.shapes[i] = new
+            radii[id(arc)] = new.r
+            moved[arc.at(0.5)] = new.at(0.5)
+        g.shapes += more
+        rays += more
     return rays, moved
 
 

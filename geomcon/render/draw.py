@@ -102,7 +102,8 @@ class Context:
     view: View
     points: tuple[Point, ...] = ()
     centre: XY = (0.0, 0.0)
-    marks_at: dict[tuple[float, float], int] = field(default_factory=dict)
+    marks_at: dict[tuple[float, float], list[float]] = field(default_factory=dict)
+    """The paper radii of the angle marks' arcs drawn so far about each vertex (model point, rounded)."""
     links: tuple[tuple[XY, XY], ...] = ()
     frames: tuple[tuple[XY, XY], ...] = ()
     """The fixed links drawn dash-dot (AD): a ground symbol's hatch keeps off them too."""

@@ -520,7 +520,7 @@ def arc_radius(m: AngleMark, vb: Point, phi: float, view: Any, nested: int = 0) 
     for x in lengths:
         if abs(r - x) < OFF_RAY_END:
             r = x + OFF_RAY_END
-    return r + 3.5 * nested
+    return r + NEST_STEP * nested
 
 
 ARC_GAIN = 0.5
@@ -540,13 +540,28 @@ def _radius(m: AngleMark, va: Point, vb: Point, phi: float, ctx: Context) -> flo
     """:func:`arc_radius` of ``m`` (its arc from ray ``va`` over ``phi`` radians to ``vb``), counting it among the
     marks drawn at its vertex; drawn smaller where it would run through a point of the figure
     (:func:`_off_points`)."""
-    key = (round(m.vertex.x, 9), round(m.vertex.y, 9))
-    nested = 0
-    if not m.radius:
-        nested = ctx.marks_at.get(key, 0)
-        ctx.marks_at[key] = nested + 1
-    r = arc_radius(m, vb, phi, ctx.view, nested)
-    return r if m.radius else _off_points(r, m.vertex, va, phi, ctx)
+    if m.radius:
+        return arc_radius(m, vb, phi, ctx.view)
+    drawn = ctx.marks_at.setdefault((round(m.vertex.x, 9), round(m.vertex.y, 9)), [])
+    r = _off_points(arc_radius(m, vb, phi, ctx.view, len(drawn)), m.vertex, va, phi, ctx)
+    for _ in range(len(drawn)):            # nested by count, a small angle's grown arc may still meet an earlier
+        near = [x for x in drawn if abs(x - r) < ARC_APART]        # one (200-20's ψ0′ at 18.5 mm, ψ0 at 20)
+        if not near:
+            break
+        inner = min(near) - NEST_STEP
+        r = inner if inner >= least_arc_radius(phi) and not [x for x in drawn if abs(x - inner) < ARC_APART] \
+            else max(near) + NEST_STEP
+    drawn.append(r)
+    return r
+
+
+NEST_STEP = 3.5
+"""Paper mm between the arcs of angle marks nested about one vertex (:func:`arc_radius`)."""
+
+ARC_APART = 2.0
+"""Paper mm the arcs of two angle marks about one vertex keep apart at least (as an arc keeps :data:`POINT_CLEAR`
+from a point): nearer, they read as one double line and which arc names which angle is unclear (001-21's φ1, φ2
+arcs on its ψ arc, 200-20's ψ0′ arc 1.5 mm inside its ψ0 arc)."""
 
 
 POINT_CLEAR = 2.0
