@@ -520,8 +520,9 @@ class Scene:
     def caption(self, key: str) -> tuple[str, str]:
         """The step's caption with its branch rule appended, in English and Chinese. A caption given as a
         :class:`Ref` is that step's value, an (en, zh) pair computed from the construction (a choice's caption
-        naming the candidate chosen: computed when read, after a drawing of another solution fixed it)."""
-        if self._stale:
+        naming the candidate chosen: computed when read, after a drawing of another solution fixed it). A
+        step a lean or planned scene skipped is read after the scene completes itself."""
+        if self._stale or (key not in self._rec and (self.lean or self._keep is not None)):
             self.complete()
         cap, branch = self._rec[key][8][0], self._rec[key][4]
         en, zh = self.value(cap[0]) if type(cap) is Ref else cap
