@@ -741,7 +741,8 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
     obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT, False)
                   for g, (drawn, _) in zip(groups, pending) for area in drawn.keep_out]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
-    placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box)
+    outlines = [g.layer == "links" for g in groups for _ in g.shapes]     # a value's leader may cross (cheaper)
+    placer = Placer([(g,) + o[1:] for g, o in zip(thin, obstacles)], view.paper_box, outlines)
     wide = placer.widened(room) if room is not None and room != view.paper_box else None
     hard: list[Any] = []                        # a tree of the links, grounds, blocks and pins, when asked
 

@@ -67,6 +67,15 @@ LEADER_CROSSING = 3.0
 """Score lost by a box whose leader would cross a link or a pivot symbol: another place is taken where there is
 one (worse than an ambiguous label, better than a box outside the frame)."""
 
+VALUE_LEADER_CROSSING = 1.5
+"""What a mark's value (a request with leader ``starts``: an angle's value) loses instead of
+:data:`LEADER_CROSSING` when its leader would cross a link or a pivot symbol: less than a value crossed by a thin
+line loses (its crossing weight, and what it covers), for a value is not to be crossed by any line (ISO 129-1),
+while a leader may cross an outline (001-28's α printed across the normal through B, 001-07's αmax on the
+construction arc through C3): a link's line, a cam's profile, a roller (the placer's ``outlines``), not a pin,
+a ground or a block, which a leader across reads as naming (004-03's θ led through D's ground). A point's label keeps :data:`LEADER_CROSSING`: it stays by its point, across a
+ray, rather than go off with a leader (001-24's O among the division rays)."""
+
 TOO_LONG = 12.0
 """Score lost by a box whose leader would be longer than :data:`.candidates.LEADER_MAX`: worse than a leader
 across a link, better than a box outside the frame or on a text placed before (which cannot be read)."""
@@ -194,10 +203,13 @@ class _Batch:
     the drawing of those measured so far (NaN for the others; ``pending``: what GEOS is left to compute, by
     candidate). A text's are a slice of these arrays."""
 
-    def __init__(self, c: Candidates, barred: np.ndarray):
+    def __init__(self, c: Candidates, barred: np.ndarray, values: np.ndarray | None = None):
         self.c, self.boxes = c, c.boxes
         self.leading = np.where(c.far, TOO_LONG, 0.0)
-        self.leading[c.led[barred]] += LEADER_CROSSING
+        crossing = np.full(len(c.cost), LEADER_CROSSING)
+        if values is not None:          # a mark's value (per candidate): :data:`VALUE_LEADER_CROSSING`
+            crossing[values] = VALUE_LEADER_CROSSING
+        self.leading[c.led[barred]] += crossing[c.led[barred]]
         self.outside = np.where(c.framed, 0.0, 50.0) + np.where(c.rivalled, AMBIGUOUS, 0.0) + self.leading
         self.static = (ENOUGH - c.cost) - self.outside
         self.static_list: list[float] = self.static.tolist()
@@ -306,7 +318,7 @@ class Placer:
     """
 
     def __init__(self, obstacles: Sequence[tuple[shapely.Geometry, str, float]],
-                 frame: tuple[float, float, float, float]):
+                 frame: tuple[float, float, float, float], outlines: Sequence[bool] = ()):
         self._fixed = Layer([o[0] for o in obstacles], [o[1] for o in obstacles], [o[2] for o in obstacles],
                             index=True, weight=[o[3] if len(o) > 3 else 0.0 for o in obstacles],
                             own=[o[4] if len(o) > 4 else (o[3] if len(o) > 3 else 0.0) for o in obstacles],
@@ -315,7 +327,8 @@ class Placer:
         self._placed = Placed()
         self._frame = frame
         self._ready: dict[tuple[Request, str], _Text] = {}
-        self._bars: tuple[shapely.STRtree, np.ndarray, np.ndarray] | None = None
+        self._bars: tuple[shapely.STRtree, np.ndarray, np.ndarray, np.ndarray] | None = None
+        self._outlines = np.array([bool(o) for o in outlines] + [False] * (len(obstacles) - len(outlines)), dtype=bool)
 
     def widened(self, frame: tuple[float, float, float, float]) -> Placer:
         """A placer whose texts may take ``frame``, sharing this one's obstacles and what is placed (what either
@@ -331,7 +344,9 @@ class Placer:
         if not todo:
             return
         c = candidates([r for r, _ in todo], [self._fixed.code(o) for _, o in todo], self._frame)
-        batch = _Batch(c, self._barred(c))
+        values = np.repeat([bool(r.starts) for r, _ in todo], np.diff(c.starts))
+        barred, hard = self._barred(c)
+        batch = _Batch(c, barred, values & ~np.isin(np.arange(len(c.cost)), c.led[hard]))
         texts = [_Text(batch, i) for i in range(len(todo))]
         self._ready.update(zip(todo, texts))
         while texts:
@@ -349,14 +364,16 @@ class Placer:
         t = self._ready[req, owner]
         return t._best + 1e-12 if t.n else -math.inf
 
-    def _barred(self, c: Candidates) -> np.ndarray:
+    def _barred(self, c: Candidates) -> tuple[np.ndarray, np.ndarray]:
         """Whether the leader of each led candidate of ``c`` crosses a link or a pivot symbol (an obstacle of
         weight :data:`HARD`) not of its text's own step, nor a part drawn round its start (an area holding it: a
         slider block on its joint; a closed curve centred within :data:`ROUND_JOINT` of it: a roller round its
-        centre): one query of a tree of them for all."""
+        centre): one query of a tree of them for all. Also whether it crosses one that is not an outline (a pin, a
+        ground, a block: not one of ``outlines``), which a mark's value's leader may not cross more cheaply
+        (:data:`VALUE_LEADER_CROSSING`)."""
         out = np.zeros(len(c.led), dtype=bool)
         if not len(c.led):
-            return out
+            return out, out
         if self._bars is None:
             weight, codes = self._fixed.arrays()[10], self._fixed.arrays()[5]
             idx = np.flatnonzero(weight >= HARD)
@@ -367,8 +384,8 @@ class Placer:
             if rings.any():
                 centres[rings] = [shapely.Polygon(g.coords).centroid.coords[0] for g in geoms[rings]]
             shapely.prepare(geoms)          # a cam's profile indexed once, not walked for each leader
-            self._bars = (shapely.STRtree(geoms), codes[idx], centres)
-        tree, codes, centres = self._bars
+            self._bars = (shapely.STRtree(geoms), codes[idx], centres, self._outlines[idx])
+        tree, codes, centres, outline = self._bars
         lines = shapely.linestrings(nudged(c.leader).reshape(-1, 2, 2))
         k, j = tree.query(lines)                            # bounds that meet; then the prepared bar meets it
         met = shapely.intersects(tree.geometries[j], lines[k])
@@ -380,7 +397,9 @@ class Placer:
             mine |= shapely.contains_xy(tree.geometries[j], ax, ay)
             mine |= np.hypot(centres[j, 0] - ax, centres[j, 1] - ay) <= ROUND_JOINT
         out[k[~mine]] = True
-        return out
+        hard = np.zeros(len(c.led), dtype=bool)
+        hard[k[~mine & ~outline[j]]] = True
+        return out, hard
 
     def _measure(self, batch: _Batch, wave: list[tuple[_Text, np.ndarray]]) -> None:
         """Measure the candidates ``rows`` of each text of ``wave`` (all of ``batch``) against the drawing, in one
