@@ -136,13 +136,18 @@ def test_leaders_across_bars_are_those_geos_finds_unprepared():
     reqs = [Request((float(x), float(y)), 4.0, 2.0, 0.5, float(a), lead=1.0)
             for x, y, a in zip(rng.uniform(10, 50, 30), rng.uniform(10, 50, 30), rng.uniform(-3, 3, 30))]
     c = candidates(reqs, [-1] * len(reqs), (0.0, 0.0, 60.0, 60.0))
-    barred = placer._barred(c)
+    barred, hard = placer._barred(c)
+    assert hard.tolist() == barred.tolist()                 # no outlines given: every bar crossed is hard
     lines = shapely.linestrings(nudged(c.leader).reshape(-1, 2, 2))
     bars = np.array([o[0] for o in obstacles], dtype=object)
     meets = shapely.intersects(lines[:, None], bars[None, :])               # unprepared, pair by pair
     starts = shapely.contains_xy(bars[None, :], c.leader[:, :1], c.leader[:, 1:2])
     want = (meets & ~starts).any(axis=1)
     assert len(c.led) and want.any() and barred.tolist() == want.tolist()
+    outlined = Placer(obstacles, (0.0, 0.0, 60.0, 60.0), [True, True, False])      # the block is no outline
+    barred2, hard2 = outlined._barred(c)
+    mine = shapely.contains_xy(bars[2], c.leader[:, 0], c.leader[:, 1])
+    assert barred2.tolist() == barred.tolist() and hard2.tolist() == (meets[:, 2] & ~mine).tolist()
 
 
 def test_layer_exact_takes_drawn_rectangles_in_closed_form_and_the_rest_by_geos():
