@@ -62,3 +62,32 @@ def test_gallery_values_are_off_the_construction_lines_that_crossed_them():
         steps = [line] if line else [g.get("id")[5:] for g in layer if g.tag == f"{NS}g"]
         crossed = [s for s in steps for ln in _lines(root, s) if ln.intersects(box)]
         assert not crossed, (name, crossed)
+
+
+LABELS_ON_THIN_LINES = 118
+"""Points' labels whose box crosses another step's given or construction line (a guide, a base circle, a grey
+construction line or arc), over the gallery's sheet-1 figures, 2026-11-27 l: no rule counted them before (the
+gallery's text-across rule reads links, blocks, grounds and pins; the marks' values are counted in
+tests/test_drawing_defects.py). 000-02's "G" on the guide is one: every place clear of the guide within 3 mm of G
+lies nearer T or M (2 mm away) than G. The allowance may only shrink."""
+
+LABEL_THIN_CROSSINGS = 160
+"""The (label, step) pairs of :data:`LABELS_ON_THIN_LINES`."""
+
+
+def test_labels_crossing_given_and_construction_lines_do_not_grow():
+    from tests.test_drawing_defects import NAMES, box, figure
+    from geomcon.render.shapes import Text, obstacle
+    labels = crossings = 0
+    for name in NAMES:
+        fig = figure(name)
+        lines = [(g.key, obstacle(sh)) for g in fig.groups if g.layer in ("given", "construction")
+                 for sh in g.shapes if not isinstance(sh, Text)]
+        for g in fig.groups:
+            for t in g.texts:
+                if t.cls.startswith("label"):
+                    crossed = {k for k, o in lines if k != g.key and o.intersects(box(t))}
+                    labels += bool(crossed)
+                    crossings += len(crossed)
+    assert labels <= LABELS_ON_THIN_LINES and crossings <= LABEL_THIN_CROSSINGS, (labels, crossings)
+    assert labels > 50                                  # the rule sees them
