@@ -259,13 +259,13 @@ def test_pages_reuse_what_judging_solved_with_the_same_numbers(spec, six):
     ends the answers' tolerances solved (lean scenes): the same box, given items and radii, to the last bit,
     as solving the variant and every drafting end afresh in full."""
     from geomcon.worksheet.overlay import position_tolerances
-    from geomcon.worksheet.readability import extent
+    from geomcon.worksheet.key_extent import figure_box
     from geomcon.worksheet.givens_figure import given_items
     from geomcon.worksheet.solving import solve_given
     for ex, v in zip(spec.exercises, six.assignment.variants[0]):
         assert v.solved is not None
         fresh = solve_given(ex.recipe, v.given)
-        assert v.solved.box == extent(fresh, [r.name for r in ex.ask])
+        assert v.solved.box == figure_box(fresh, [r.name for r in ex.ask], v.scale.factor)
         assert v.solved.items == tuple(given_items(fresh))
         radii = position_tolerances(fresh, v.given, v.scale.factor)
         assert radii and v.solved.radii == radii, ex.recipe

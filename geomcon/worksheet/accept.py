@@ -11,7 +11,8 @@ A variant is judged by these checks, cheapest first; the first that fails is its
                        a spec's own statement must hold ``{choice}``);
 ``require``            a ``[require]`` bound fails;
 ``borderline``         the construction warns (Grashof equality, a rod perpendicular to its guide …);
-``fit``                the construction does not fit the sheet at a standard scale (or at the spec's ``scale``);
+``fit``                the key's whole construction does not fit the sheet at a standard scale (or at the spec's
+                       ``scale``): :func:`fit_construction`;
 ``crossing``           an intersection the student constructs crosses at less than 20°;
 ``crowded``            two labelled points (of the construction, or of the givens the sheet draws) lie closer
                        than 4 mm on paper;
@@ -22,7 +23,8 @@ A variant is judged by these checks, cheapest first; the first that fails is its
 ``twin``               the construction disagrees with the analytic twin (last: it never happens on a sound
                        recipe, and a cam's twin costs more than the rest).
 
-The figure of each exercise is drawn at the largest standard scale at which its extent, with
+The figure of each exercise is drawn at the largest standard scale at which its extent (what the student draws
+and everything the key draws of the solution: θ-circle, construction lines, compass arcs), with
 :data:`FIGURE_MARGIN` around it, fits the sheet (either orientation) below a band of :data:`TEXT_BAND` mm for
 the statement and the answer boxes. A cam's s–δ axes take a free strip of :data:`DIAGRAM_MIN` beside or below
 its figure when there is one (:func:`diagram_strip`), else a page of their own: they never lower the scale.
@@ -53,9 +55,10 @@ from dataclasses import dataclass, field
 from typing import Any, Mapping
 
 from ..errors import GeomconError, ProblemError
-from ..paper import Paper, Scale, Sheet, best_fit, choose_scale
+from ..paper import STANDARD, Paper, Scale, Sheet, best_fit, choose_scale
 from ..solve import Solution
 from .drafting import Undeterminable, tolerances
+from .key_extent import drawn_box, figure_box, key_content
 from .givens_figure import Item, given_gap, given_items, place_labels
 from .overlay import position_tolerances
 from .readability import MIN_CROSSING, MIN_POINT_GAP, closest_points, crossings, extent
@@ -176,6 +179,40 @@ def fit(ex: Exercise, box: tuple[float, float, float, float], paper: Paper) -> t
     raise ValueError(f"a figure of {size[0]:.4g} × {size[1]:.4g} mm does not fit {paper.name} at {ex.scale}")
 
 
+def fit_construction(ex: Exercise, sol: Solution, names: list[str], paper: Paper
+                     ) -> tuple[Scale, Sheet, tuple[float, float, float, float]]:
+    """The scale, sheet and model box of a variant's figure: the box holds what the student draws
+    (:func:`~.readability.extent`) and the key's whole construction at that scale (its
+    content and compass arcs: :func:`~.key_extent.figure_box`), so that the sheet leaves room for every part of the solution. The
+    largest standard scale (or the spec's ``scale``) at which that box fits the sheet, either orientation,
+    portrait first. ValueError when it fits at none: the variant is ill-posed (``fit``), never cut."""
+    content = key_content(sol)
+    drawn = drawn_box(sol, names, content)
+    series = STANDARD if ex.scale is None else (ex.scale,)
+    def fits(b: tuple[float, float, float, float], scale: Scale) -> Sheet | None:
+        for orientation in ("portrait", "landscape"):
+            sheet = paper.sheet(orientation)
+            aw, ah = sheet.area
+            try:
+                choose_scale((b[2] - b[0], b[3] - b[1]), (aw, ah - TEXT_BAND), margin=FIGURE_MARGIN, series=(scale,))
+                return sheet
+            except ValueError:
+                continue
+        return None
+
+    box = drawn
+    for scale in reversed(series):
+        if fits(drawn, scale) is None:          # the compass arcs only add to it: no need to sample them
+            continue
+        box = figure_box(sol, names, scale.factor, content, drawn)
+        sheet = fits(box, scale)
+        if sheet is not None:
+            return scale, sheet, box
+    size = (box[2] - box[0], box[3] - box[1])
+    raise ValueError(f"the key's construction of {size[0]:.4g} × {size[1]:.4g} mm does not fit {paper.name} "
+                     f"even at {series[0]}")
+
+
 def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
     """Judge variant ``index`` of exercise ``ex`` on ``paper`` (see the module for the checks)."""
     given = ex.given_of(index)
@@ -204,9 +241,8 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
         if warned:
             return Rejected(index, "borderline", warned[0])
         names = [r.name for r in ex.ask]
-        box = extent(sol, names)
         try:
-            scale, sheet = fit(ex, box, paper)
+            scale, sheet, box = fit_construction(ex, sol, names, paper)
         except ValueError as exc:
             return Rejected(index, "fit", str(exc))
         flat = [(k, cap, a) for k, cap, a in crossings(sol, names) if a < MIN_CROSSING - 1e-9]
@@ -257,4 +293,4 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
 
 
 __all__ = ["Accepted", "AnswerKey", "DIAGRAM_MIN", "FIGURE_MARGIN", "REASONS", "Rejected", "Solved", "TEXT_BAND",
-           "diagram_strip", "fit", "judge", "names_choice"]
+           "diagram_strip", "fit", "fit_construction", "judge", "names_choice"]

@@ -21,21 +21,17 @@ from typing import Any, Callable
 
 import svgwrite
 
-from ..geometry.primitives import Circle, Point
-from ..render.draw import COMPASS_HALF, compass_parts
-from ..render.style import CSS, resolve_style
-from ..render.figure import Figure, build_figure, content_box, shown_steps
+from ..render.style import CSS
+from ..render.figure import Figure, build_figure
 from ..render.view import grow
-from ..scene import Role, Step
-from ..solve import Solution
+from ..scene import Step
 from ..render.serial import svg_string
 from ..render.shapes import to_svg
 from .accept import FIGURE_MARGIN
+from .key_extent import compass_extent, key_box, key_content, key_keep, other_solutions
 from .overlay import constructed_points, point_keys, position_tolerances
 from .pages import ANSWER_H, Rect, u
-from .readability import DIAGRAM_PREFIX
 from .sheets import U, Page, answer_boxes, circle_room, frame, header, page_drawing, pages_html
-from .solving import chosen_map
 
 OVERLAY = "#d0021b"
 """Colour of the tolerance circles."""
@@ -58,42 +54,6 @@ def shown(value: float, tol: float) -> str:
     return f"{value:.{d}f} ± {tol:.{d}f}"
 
 
-def other_solutions(sol: Solution) -> frozenset[str]:
-    """The steps only another solution than the textbook's choice needs (its candidate points, θ-circle,
-    lines …), and every construction or annotation step drawn from one of them (their admissible arcs, the
-    ghost of the other designs). The student constructs the chosen solution alone (the sheet's model box,
-    :func:`~.readability.extent`, leaves the others out), so the key draws it alone. A given or result step
-    (the chosen pivot ``A`` picked among the candidates) is never one of them.
-
-    >>> from geomcon.worksheet.solving import solve_given
-    >>> sol = solve_given("crank_rocker.design_by_K", {"K": 1.4, "CD": 100, "psi": 40, "BC": 100})
-    >>> sorted(k for k in other_solutions(sol) if k.startswith(("A", "F", "f")))
-    ['AB_2', 'AD_2', 'A_2', 'A_near_2', 'F_2', 'fP', 'farcs_ok', 'fcompl', 'fhalf', 'fkF', 'fkTheta', 'frP']
-    >>> other_solutions(solve_given("crank_rocker.extremes", {"AB": 50, "BC": 70, "CD": 80, "AD": 90}))
-    frozenset()
-    """
-    c = sol.construction
-    if not c.solutions:
-        return frozenset()
-    sc = sol.drawing_scene
-    chosen = chosen_map(sol)
-    mine = set(sc.closure([k for n, k in chosen.items() if n != "_valid"]))
-    out = {k for m in c.solutions if m is not chosen
-           for k in sc.closure([k for n, k in m.items() if n != "_valid"])} - mine
-    for s in sc.visible_steps():                   # in evaluation order: a step's arguments come first
-        if s.key not in mine and s.role not in (Role.GIVEN, Role.RESULT) and any(k in out for k in s.deps()):
-            out.add(s.key)
-    return frozenset(out)
-
-
-def key_keep(sol: Solution) -> Callable[[Step], bool]:
-    """Which steps the key's figure draws: every step but a cam's s–δ diagram (``sd_…``, drawn beside the cam
-    at a scale of its own, outside the sheet's model box) and another solution's construction
-    (:func:`other_solutions`)."""
-    drop = other_solutions(sol)
-    return lambda step: not step.key.startswith(DIAGRAM_PREFIX) and step.key not in drop
-
-
 def key_room(p: Page) -> Rect:
     """Where the key's construction may run (paper mm): the drawing frame below the answer boxes, left of (or
     above) a cam's s–δ strip beside the figure. A circle too large for the sheet (a θ-circle reaching past the
@@ -108,44 +68,12 @@ def key_view(p: Page, keep: Callable[[Step], bool]) -> tuple[float, float, float
     and its compass arcs (:func:`compass_extent`: an arc through a point at the content's edge reaches beyond
     it) with :data:`~.accept.FIGURE_MARGIN` paper mm around them, cut to :func:`key_room` (in model mm, through
     the sheet's own mapping :meth:`~.pages.Layout.to_paper`)."""
-    sc = p.sol.drawing_scene
-    steps, _ = shown_steps(sc, None, keep)
-    values = sc.evaluate([s.key for _, s in steps])
     f = p.lay.scale.factor
-    cb = content_box(sc, steps, values)
-    arcs = compass_extent(steps, values, 1.0 / f)
-    if arcs is not None:
-        cb = (min(cb[0], arcs[0]), min(cb[1], arcs[1]), max(cb[2], arcs[2]), max(cb[3], arcs[3]))
+    cb = key_box(key_content(p.sol, keep), 1.0 / f)
     cb = grow(cb, FIGURE_MARGIN / f)
     rx0, ry0, rx1, ry1 = key_room(p)
     (mx0, my1), (mx1, my0) = to_model(p, rx0, ry0), to_model(p, rx1, ry1)
     return (max(cb[0], mx0), max(cb[1], my0), min(cb[2], mx1), min(cb[3], my1))
-
-
-def compass_extent(steps: list[tuple[int, Step]], values: dict[str, Any], mu: float
-                   ) -> tuple[float, float, float, float] | None:
-    """The model box of the compass arcs drawn at scale ``mu`` (model mm per paper mm): the short arcs of each
-    compass-style circle through the drawn points on it (:func:`~geomcon.render.draw.compass_parts`, as
-    :func:`~geomcon.render.draw.draw_circle` draws them), sampled every 1/16 of their sweep; None for none.
-
-    >>> steps = [(1, Step("kC", print)), (2, Step("P", print))]        # a construction circle, a point on it
-    >>> box = compass_extent(steps, {"kC": Circle(Point(0, 0), 100.0), "P": Point(100.0, 0.0)}, 1.0)
-    >>> [round(x, 3) for x in box]
-    [99.396, -10.978, 100.0, 10.978]
-    """
-    pts = tuple(v for v in values.values() if isinstance(v, Point))
-    out: list[Point] = []
-    for _, s in steps:
-        c = values[s.key]
-        if not isinstance(c, Circle) or c.r <= 0 or not resolve_style(s.style, s.role, "curve").compass:
-            continue
-        half = max(math.radians(6.0), min(math.pi, COMPASS_HALF / (c.r / mu)))
-        for start, sweep in compass_parts(c, pts, half):
-            out += [c.center + Point(math.cos(a), math.sin(a)) * c.r
-                    for a in (start + sweep * i / 16 for i in range(17))]
-    if not out:
-        return None
-    return (min(p.x for p in out), min(p.y for p in out), max(p.x for p in out), max(p.y for p in out))
 
 
 def to_model(p: Page, x: float, y: float) -> tuple[float, float]:

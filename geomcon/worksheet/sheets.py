@@ -46,8 +46,8 @@ from .accept import Accepted
 from .assign import Assignment
 from .givens_figure import DOT, LABEL_SIZE, Item, Placed, given_items, has_diagram, place_labels
 from .key import statement, variant_code
+from .key_extent import figure_box
 from .pages import ANSWER_FONT, ANSWER_H, BOX_W, HEADER_H, LINE, Layout, Rect, U, layout, u
-from .readability import extent
 from .roster import Student
 from .solving import solve_given
 from .spec import AnswerRef, Exercise, Spec
@@ -147,7 +147,8 @@ def make_pages(spec: Spec, a: Assignment, lang: str) -> list[Page]:
                 sol, box, items = v.solved.sol, v.solved.box, v.solved.items
             else:
                 sol = solve_given(ex.recipe, v.given)
-                box, items = extent(sol, [r.name for r in ex.ask]), tuple(given_items(sol))
+                box = figure_box(sol, [r.name for r in ex.ask], v.scale.factor)
+                items = tuple(given_items(sol))
             paragraphs = tuple(statement(ex, v, lg) for lg in langs(lang))
             try:
                 lay = layout(v.sheet, v.scale, box, paragraphs, slot_labels(ex, v, lang), diagram=has_diagram(sol))
