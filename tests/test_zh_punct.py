@@ -103,3 +103,19 @@ def test_the_zh_remark_rule_lives_with_the_other_bracket_rules_and_a_text_solve_
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                        cwd=Path(__file__).resolve().parents[1])
     assert r.stdout.strip().endswith("False True"), r.stdout[-200:]
+
+
+def test_a_subscripts_comma_stays_ascii():
+    """hlook11m: 001-31b's step 31 printed "ω2，max：取 ε2 = 0 处" (sheet 1, protocol, player): zh_punct took the comma
+    inside the subscript ω2,max for punctuation; the statements wrote ρa，min, ω2，max, ε2，max. A comma of a
+    subscript (…,min / …,max / max,turn / r0,ρ) is kept, in every gallery text, so rich_runs prints it subscripted."""
+    assert zh_punct("ω2,max:取 ε2 = 0 处") == "ω2,max：取 ε2 = 0 处"
+    assert zh_punct("压力角 αmax,turn,摆杆 r0,α") == "压力角 αmax,turn，摆杆 r0,α"
+    assert zh_punct("在机架线上取 D,OD = e") == "在机架线上取 D，OD = e"      # punctuation still full-width
+    from pathlib import Path
+    gallery = Path(__file__).parent.parent / "gallery"
+    bad = re.compile(r"[A-Za-z0-9](?:</tspan><tspan[^>]*>)?，(?:</tspan><tspan[^>]*>)?(?:min|max|turn)(?![A-Za-z])"
+                     r"|r(?:</tspan><tspan[^>]*>)?0，[αρ]")
+    hits = [p.name for p in sorted(gallery.rglob("*")) if p.suffix in (".svg", ".html", ".json", ".xml", ".md")
+            and bad.search(p.read_text(encoding="utf-8"))]
+    assert not hits, hits

@@ -17,6 +17,11 @@ def _cjk(ch: str) -> bool:
     return 0x2E80 <= o <= 0x9FFF or 0xF900 <= o <= 0xFAFF or 0x3000 <= o <= 0x303F or 0xFF00 <= o <= 0xFFEF
 
 
+_SUB_COMMA = re.compile(r"(?<=[A-Za-z0-9]),(?=(?:min|max|turn)(?![A-Za-z]))|(?<=r0),(?=[αρ])")
+"""A comma inside a subscript, as :func:`.labels.rich_runs` prints it (ω2,max, ρa,min, rr,max, αmax,turn, r0,ρ):
+no punctuation, kept in a Chinese text (hlook11m: 001-31b's "ω2，max：取 ε2 = 0 处")."""
+
+
 _FULL = {",": "，", ";": "；", ":": "：", "(": "（", ")": "）", "?": "？", "!": "！"}
 
 
@@ -25,7 +30,8 @@ def zh_punct(s: str) -> str:
     """Chinese text with full-width punctuation: a comma, semicolon, colon, question or exclamation mark next to
     a Chinese character becomes ，；：？！ (in a text holding Chinese, a comma, semicolon or colon followed by
     neither a space nor a digit too: ``s–δ:δ 轴``), brackets around Chinese text or opened right after a
-    Chinese ideograph （）; a formula keeps its ASCII signs (``K = (180° + θ)/(180° − θ)``, ``1:2``, ``[1, 2]``).
+    Chinese ideograph （）; a formula keeps its ASCII signs (``K = (180° + θ)/(180° − θ)``, ``1:2``, ``[1, 2]``), a subscript its comma
+    (:data:`_SUB_COMMA`: ``ω2,max``).
     Remembered: a caption is set in the protocol, the step captions and the player, in every layout tried.
 
     >>> zh_punct("在机架线上取 D,使 AD = 90")
@@ -36,10 +42,13 @@ def zh_punct(s: str) -> str:
     '验证 AB 为曲柄（AC > AB + e），何时不能成为机构？位移线图 s–δ：δ 轴，比例 1:2'
     >>> zh_punct("曲柄销 B1(重叠共线)与 B2(拉直共线),AB = (AC远 − AC近)/2")
     '曲柄销 B1（重叠共线）与 B2（拉直共线），AB = (AC远 − AC近)/2'
+    >>> zh_punct("ω2,max:取 ε2 = 0 处;ρa,min,rr,max 与 r0,ρ")         # a subscript's comma is no punctuation
+    'ω2,max：取 ε2 = 0 处；ρa,min，rr,max 与 r0,ρ'
     """
     out = list(s)
     stack: list[int] = []
     chinese = any(_cjk(c) for c in s)
+    keep = {m.start() for m in _SUB_COMMA.finditer(s)} if "," in s else ()
     for i, ch in enumerate(s):
         if ch == "(":
             stack.append(i)
@@ -49,6 +58,8 @@ def zh_punct(s: str) -> str:
             if not formula and (any(_cjk(c) for c in s[j + 1:i]) or (j > 0 and "\u4e00" <= s[j - 1] <= "\u9fff")):
                 out[j], out[i] = _FULL["("], _FULL[")"]
         elif ch in ",;:?!":
+            if ch == "," and i in keep:
+                continue
             before = "".join(out[:i]).rstrip()[-1:]
             after = s[i + 1:].lstrip()[:1]
             nxt = s[i + 1:i + 2]

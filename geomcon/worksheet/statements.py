@@ -624,7 +624,7 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "alpha_max_return": ("the largest pressure angle of the return α′max", "回程最大压力角 α′max"),
     "delta_alpha_max_return": ("the cam angle δ where it occurs", "其所在凸轮转角 δ"),
     "rho_min_pitch": ("the smallest radius of curvature of the pitch curve ρmin", "理论廓线最小曲率半径 ρmin"),
-    "rho_min_actual": ("the smallest radius of curvature of the profile ρa,min", "实际廓线最小曲率半径 ρa，min"),
+    "rho_min_actual": ("the smallest radius of curvature of the profile ρa,min", "实际廓线最小曲率半径 ρa,min"),
     "omega2": ("the coupler's angular velocity ω2", "连杆的角速度 ω2"),
     "omega3": ("the rocker's angular velocity ω3", "摇杆的角速度 ω3"),
     "epsilon2": ("the coupler's angular acceleration ε2", "连杆的角加速度 ε2"),
@@ -643,8 +643,8 @@ ANSWER_WORDS: dict[str, tuple[str, str]] = {
     "vC_w1": ("the slider's velocity per unit crank speed vC/ω1", "滑块速度与曲柄角速度之比 vC/ω1"),
     "v_max": ("the follower's largest speed vmax", "从动件最大速度 vmax"),
     "a_max": ("the follower's largest acceleration amax", "从动件最大加速度 amax"),
-    "omega2_max": ("the arm's largest angular speed ω2,max", "摆杆最大角速度 ω2，max"),
-    "epsilon2_max": ("the arm's largest angular acceleration ε2,max", "摆杆最大角加速度 ε2，max"),
+    "omega2_max": ("the arm's largest angular speed ω2,max", "摆杆最大角速度 ω2,max"),
+    "epsilon2_max": ("the arm's largest angular acceleration ε2,max", "摆杆最大角加速度 ε2,max"),
     "r0": ("the smallest base circle r0", "最小基圆半径 r0"),
 }
 """How a statement names an asked answer (English, Chinese); others are named by their answer name."""
