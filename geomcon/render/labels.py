@@ -13,6 +13,8 @@ Examples
 (('α′', False), ('max', True), (', ρ', False), ('a,min', True))
 >>> rich_runs("vmax, rr,max, r0,ρ, ω2,max, φslow")
 (('v', False), ('max', True), (', r', False), ('r,max', True), (', r', False), ('0,ρ', True), (', ω', False), ('2,max', True), (', φ', False), ('slow', True))
+>>> rich_runs("sin αallow, ρallow = 40, allowance")
+(('sin α', False), ('allow', True), (', ρ', False), ('allow', True), (' = 40, allowance', False))
 >>> rich_runs("the rise's α_max, B_iK_i")
 (("the rise's α", False), ('max', True), (', B', False), ('i', True), ('K', False), ('i', True))
 >>> wrap("one two three", 8 * 2.7 * 0.55, 2.7)
@@ -37,14 +39,15 @@ _SUB = re.compile(r"(?=[A-Za-z_\d])(?<=[A-Za-zα-ωΑ-Ω′ⁿᵗʳᵏ])(?:(?<![
                   r"|(?<=(?<![A-Za-z0-9])[xy])[pa](?![A-Za-z])|(?<=(?<![A-Za-z0-9])l)face\b"
                   r"|(?<=(?<![A-Za-z0-9])[valn])[A-Z][A-Z0-9]*|(?<=(?<![A-Za-z0-9])[va][ⁿᵗʳᵏ])[A-Z][A-Z0-9]*"
                   r"|(?<=μ)[val](?![A-Za-z])|(?<=(?<![A-Za-z_])[a-z])\d+(?![\d.])|(?<=[A-Z])d\d+(?![\d.])"
-                  r"|(?<=[A-Z])\d+,\d+(?![\d.,])|(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
+                  r"|(?<=[A-Z])\d+,\d+(?![\d.,])|(?<=[A-Zα-ωΑ-Ω′])(\d+)(?![\d.])|(?<=[α-ω])(min|max|allow|[a-z],min|[a-z],max)\b|(?<=[α-ω]′)(?:min|max)\b"
                   r"|(?<=[A-Zα-ω])i(?![a-z])"
                   r"|(?<=[A-Za-zα-ωΑ-Ω′])_([a-z0-9]+))")
 """What a caption prints as a subscript: a follower's or a roller's bound (vmax, amax, lmin, rr,max: the comma
 inside the subscript), a base circle of one limit (r0,α, r0,ρ), an arm's bound (ω2,max), the crank angles of the
 two strokes (φslow, φquick), a pin's place (sE1), friction and normal forces (Ff, Fn), a pitch and an actual
 profile's coordinates (xp, ya), a flat face's length (lface); digits after a capital or Greek letter (C1, γ1), min/max after a Greek
-letter, a prime between or a profile's letter before included (γmin, α′max, ρa,min), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
+letter, a prime between or a profile's letter before included (γmin, α′max, ρa,min), an allowed bound (αallow,
+ρallow), a lone i after one (Ci, ψi), and a name written with an underscore (α_max, φ_quick, B_i: the
 underscore dropped, as the textbook prints αmax), the points after a velocity, acceleration, length or
 polygon normal's letter (vC, aCBᵗ, aʳB2B3, lAB, nB: v with subscript C …), a scale's letter (μv, μa, μl), the
 digits after a lone small letter (r0, s0, i13, the polygon points b2, n3 as the figure labels them) and a dead
