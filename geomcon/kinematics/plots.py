@@ -254,15 +254,23 @@ def _typeset(line: str, names: Sequence[str]) -> Runs:
 
 
 def _heads(title: str, n: int, count: int) -> list[str]:
-    """The chart's heading: the title (English above Chinese when it holds both), never cut: a long one wraps."""
+    """The chart's heading: the title (English above Chinese when it holds both), never cut: a long one wraps.
+    A later sheet's title says so in each language: "(continued, 2/3)" after the English, "（续，2/3）" after the
+    Chinese (hlook11m: 000-09's sheet 2 said it in English only)."""
     width = AREA[2] - AREA[0]
     first, *rest = title.split("\n")
-    lines = list(_wrap(first, width, HEAD))
-    if n:                                   # "(continued, 2/3)" whole: after the title, or on a line of its own
-        cont = f"(continued, {n + 1}/{count})"
-        joined = _wrap(f"{lines[-1]} {cont}", width, HEAD)
-        lines[-1:] = [f"{lines[-1]} {cont}"] if len(joined) == 1 else [lines[-1], cont]
-    return lines + [line for part in rest for line in _wrap(part, width, HEAD)]
+    lines = _continued(list(_wrap(first, width, HEAD)), f" (continued, {n + 1}/{count})", width) if n else \
+        list(_wrap(first, width, HEAD))
+    for part in rest:
+        wrapped = list(_wrap(part, width, HEAD))
+        lines += _continued(wrapped, f"（续，{n + 1}/{count}）", width) if n else wrapped
+    return lines
+
+
+def _continued(lines: list[str], cont: str, width: float) -> list[str]:
+    """``lines`` with ``cont`` whole after the last: on it when it fits, else on a line of its own."""
+    joined = f"{lines[-1]}{cont}"
+    return lines[:-1] + ([joined] if len(_wrap(joined, width, HEAD)) == 1 else [lines[-1], cont.strip()])
 
 
 def _layout(r: CycleResult, title: str, block: list[str]) -> tuple[int, int]:
