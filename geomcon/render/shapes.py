@@ -191,14 +191,16 @@ def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float, least: fl
     shift = 0.0
     small = fmt(max(size * SUB_SCALE, least))
     named = Element.named
-    items = stacked_runs(runs, size, least)
-    last = len(items) - 1
-    for i, (s, sub, sup, dx) in enumerate(items):
-        if sub:                                    # lower still under (or before) a stacked letter: a visible gap
-            stacked = (i and items[i - 1][2]) or (i < last and items[i + 1][2])
-            target = (STACK_DROP if stacked else SUB_DROP) * size
-        else:
-            target = -SUP_RISE * size if sup else 0.0
+    drop = SUB_DROP * size
+    for s, _ in runs:
+        if s and (s[0] in SUPERSCRIPTS or s[-1] in SUPERSCRIPTS):
+            items = stacked_runs(runs, size, least)
+            targets = _stacked_targets(items, size)
+            break
+    else:                                         # nothing to stack (all but ~1 % of a gallery's texts)
+        items = [(s, sub, False, 0.0) for s, sub in runs]
+        targets = [drop if sub else 0.0 for _, sub in runs]
+    for (s, sub, sup, dx), target in zip(items, targets):
         attrs: dict[str, str | None] = {}
         if dx:
             attrs["dx"] = fmt(dx)
@@ -208,6 +210,20 @@ def add_runs(el: Any, runs: tuple[tuple[str, bool], ...], size: float, least: fl
         if sub or sup:
             attrs["font-size"] = small
         el.add(named("tspan", attrs, s))
+
+
+def _stacked_targets(items: list[tuple[str, bool, bool, float]], size: float) -> list[float]:
+    """Each run's shift below the baseline (paper mm) in a text with a stacked letter: the letter raised
+    :data:`SUP_RISE`, the subscript under (or before) it lowered :data:`STACK_DROP` (a visible gap), any other
+    subscript :data:`SUB_DROP`."""
+    out = []
+    for i, (_, sub, sup, _) in enumerate(items):
+        if sub:
+            stacked = (i and items[i - 1][2]) or (i + 1 < len(items) and items[i + 1][2])
+            out.append((STACK_DROP if stacked else SUB_DROP) * size)
+        else:
+            out.append(-SUP_RISE * size if sup else 0.0)
+    return out
 
 
 SUPERSCRIPTS = {"ʳ": "r", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t"}
