@@ -5,33 +5,14 @@ convex" alone; the JSON keeps ``undercut`` (a public contract, = not ``convex``)
 from __future__ import annotations
 
 import json
-import re
-import tomllib
-from pathlib import Path
 
 import pytest
-
-ROOT = Path(__file__).resolve().parents[1]
-GALLERY, PROBLEMS = ROOT / "gallery", ROOT / "problems"
+from cam_sheets import GALLERY, PROBLEMS, printed_off_sheet, text as _text, with_follower
 
 OFF_SHEET = ("undercut", "运动失真", "根切")
 """What no flat-face figure prints (text as read with the SVG's markup stripped)."""
 
-
-def _flats() -> list[str]:
-    out = []
-    for p in sorted(PROBLEMS.glob("*.toml")):
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-        if data.get("given", {}).get("follower") == "flat" and (GALLERY / f"{p.stem}.json").exists():
-            out.append(p.stem)
-    return out
-
-
-FLATS = _flats()
-
-
-def _text(path: Path) -> str:
-    return re.sub(r"<[^>]*>", "", path.read_text(encoding="utf-8"))
+FLATS = with_follower("flat")
 
 
 def _convex_stems() -> list[str]:
@@ -44,13 +25,7 @@ def test_the_flat_face_figures_that_print_convexity_are_all_found():
 
 @pytest.mark.parametrize("stem", FLATS)
 def test_no_flat_face_sheet_prints_undercut(stem: str):
-    files = [f for f in sorted(GALLERY.glob(f"{stem}*")) if f.suffix in (".svg", ".html")
-             and re.fullmatch(re.escape(stem) + r"(-\d+|_motion(-\d+)?)?", f.stem)]
-    assert files
-    for f in files:
-        text = _text(f)
-        bad = [w for w in OFF_SHEET if w in text]
-        assert not bad, f"{f.name} prints {bad}"
+    assert not printed_off_sheet(stem, OFF_SHEET)
 
 
 @pytest.mark.parametrize("stem", _convex_stems())

@@ -5,34 +5,14 @@ with). The JSON keeps every answer (a public contract): ρa,min = ρmin, r0′ =
 from __future__ import annotations
 
 import json
-import re
-import tomllib
-from pathlib import Path
 
 import pytest
-
-ROOT = Path(__file__).resolve().parents[1]
-GALLERY, PROBLEMS = ROOT / "gallery", ROOT / "problems"
+from cam_sheets import GALLERY, printed_off_sheet, text as _text, with_follower
 
 OFF_SHEET = ("ρa,min", "ρₐ", "r0′", "undercut", "运动失真", "根切", "实际廓线最小曲率半径", "实际廓线基圆半径")
 """What no knife-edge figure prints (text as read with the SVG's markup stripped: subscripts join their base)."""
 
-
-def _knives() -> list[str]:
-    out = []
-    for p in sorted(PROBLEMS.glob("*.toml")):
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-        if data.get("given", {}).get("follower") == "knife" and (GALLERY / f"{p.stem}.json").exists():
-            out.append(p.stem)
-    return out
-
-
-KNIVES = _knives()
-
-
-def _text(path: Path) -> str:
-    raw = path.read_text(encoding="utf-8")
-    return re.sub(r"<[^>]*>", "", raw)
+KNIVES = with_follower("knife")
 
 
 def test_the_review_s_knife_figures_are_all_found():
@@ -43,13 +23,7 @@ def test_the_review_s_knife_figures_are_all_found():
 
 @pytest.mark.parametrize("stem", KNIVES)
 def test_no_knife_edge_sheet_prints_the_actual_profile_or_undercut(stem: str):
-    files = [f for f in sorted(GALLERY.glob(f"{stem}*")) if f.suffix in (".svg", ".html")
-             and re.fullmatch(re.escape(stem) + r"(-\d+|_motion(-\d+)?)?", f.stem)]
-    assert files
-    for f in files:
-        text = _text(f)
-        bad = [w for w in OFF_SHEET if w in text]
-        assert not bad, f"{f.name} prints {bad}"
+    assert not printed_off_sheet(stem, OFF_SHEET)
 
 
 @pytest.mark.parametrize("stem", KNIVES)
