@@ -5,6 +5,7 @@ Every text from the answers file or the key is HTML-escaped; the page loads noth
 """
 from __future__ import annotations
 
+import re
 from collections import Counter
 from html import escape
 
@@ -67,15 +68,40 @@ def histogram_svg(scores: list[float], max_score: float) -> str:
     return "".join(out)
 
 
-def rates_svg(rates: list[tuple[str, float]]) -> str:
-    """A horizontal bar per answer column: the share of the class that got it right."""
+def column_label(key, column: str) -> str:
+    """An answer column as a sheet prints its quantity: ``2.gamma_min`` → ``2. γmin``, ``1.AB`` → ``1. AB``,
+    a yes/no answer by its words in the key's language (the column's code stays the answers file's contract;
+    the report shows it on hover). A column of no known exercise keeps its code.
+
+    >>> from types import SimpleNamespace as N
+    >>> key = N(lang="en", students={"1": N(exercises=(N(n=2, recipe="crank_rocker.extremes"),))})
+    >>> column_label(key, "2.gamma_min"), column_label(key, "2.xs[1]"), column_label(key, "7.AB")
+    ('2. γmin', '2. xs[1]', '7.AB')
+    """
+    from ..render.results import name_of
+
+    m = re.fullmatch(r"(\d+)\.(\w+)(\[\d+\])?", column)
+    if m is None:
+        return column
+    n, name, index = int(m.group(1)), m.group(2), m.group(3) or ""
+    recipe = next((e.recipe for s in key.students.values() for e in s.exercises if e.n == n), None)
+    if recipe is None:
+        return column
+    nm = name_of(name, recipe)
+    words = nm.symbol or (nm.zh if key.lang == "zh" else nm.en) or name
+    return f"{n}. {words}{index}"
+
+
+def rates_svg(rates: list[tuple[str, float]], labels: dict[str, str] | None = None) -> str:
+    """A horizontal bar per answer column: the share of the class that got it right (each column named by
+    ``labels`` when given: :func:`column_label`)."""
     w, row = 480, 20
     h = row * len(rates) + 10
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" id="rates" width="{w}" height="{h}" viewBox="0 0 {w} {h}" '
            'role="img" aria-label="correct rate per answer">']
     for i, (col, r) in enumerate(rates):
         y = 5 + i * row
-        out.append(f'<text x="0" y="{y + 13}">{escape(col)}</text>')
+        out.append(f'<text x="0" y="{y + 13}"><title>{escape(col)}</title>{escape((labels or {}).get(col, col))}</text>')
         out.append(f'<rect x="120" y="{y}" width="{round(300 * r, 2)}" height="{row - 4}" fill="#1a7f37" '
                    f'data-rate="{r:.4f}"/>')
         out.append(f'<text x="{126 + 300 * r:.2f}" y="{y + 13}">{100 * r:.0f} %</text>')
@@ -94,6 +120,7 @@ def report_html(book: Gradebook) -> str:
         rates.append((c, sum(g.verdict == "correct" for g in gs) / len(gs) if gs else 0.0))
     codes = Counter(g.diagnosis for r in graded for g in r.answers if g.diagnosis)
     seen: dict[str, str] = {}
+    labels = {c: column_label(book.key, c) for c in book.columns}
     for r in graded:
         for g in r.answers:
             if g.diagnosis and g.diagnosis not in seen:
@@ -106,7 +133,7 @@ def report_html(book: Gradebook) -> str:
            f'<p id="summary">{len(rows)} rows, {len(graded)} graded; mean score {num(round(mean, 2))} of '
            f"{num(max_score)}.</p>",
            "<h2>Scores</h2>", histogram_svg([r.score for r in graded], max_score),
-           "<h2>Correct rate per answer</h2>", rates_svg(rates),
+           "<h2>Correct rate per answer</h2>", rates_svg(rates, labels),
            "<h2>Most common mistakes</h2>"]
     if codes:
         out.append('<table id="diagnoses"><thead><tr><th>diagnosis</th><th>count</th><th>what it means</th></tr></thead><tbody>')
@@ -120,7 +147,8 @@ def report_html(book: Gradebook) -> str:
                    + (f"<li>… {len(book.notes) - 200} more</li>" if len(book.notes) > 200 else "") + "</ul>")
     out.append("<h2>Students</h2>")
     out.append('<table id="students" class="sortable"><thead><tr><th>line</th><th>id</th><th>name</th><th>score</th>'
-               + "".join(f"<th>{escape(c)}</th>" for c in book.columns) + "</tr></thead><tbody>")
+               + "".join(f'<th title="{escape(c)}">{escape(labels[c])}</th>' for c in book.columns)
+               + "</tr></thead><tbody>")
     for r in rows:
         by = {g.column: g for g in r.answers}
         cls = ' class="bad"' if r.problem or r.duplicate else ""
@@ -139,4 +167,4 @@ def report_html(book: Gradebook) -> str:
     return "\n".join(out) + "\n"
 
 
-__all__ = ["histogram_svg", "rates_svg", "report_html"]
+__all__ = ["column_label", "histogram_svg", "rates_svg", "report_html"]
