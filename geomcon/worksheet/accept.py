@@ -55,7 +55,7 @@ from dataclasses import dataclass, field
 from typing import Any, Mapping
 
 from ..errors import GeomconError, ProblemError
-from ..paper import STANDARD, Paper, Scale, Sheet, best_fit, choose_scale
+from ..paper import STANDARD, Paper, Scale, Sheet, choose_scale
 from ..solve import Solution
 from .drafting import Undeterminable, tolerances
 from .key_extent import drawn_box, figure_box, key_content
@@ -162,21 +162,18 @@ def diagram_strip(area: tuple[float, float], fig: tuple[float, float]) -> str | 
     return "right" if right > below else "below"
 
 
-def fit(ex: Exercise, box: tuple[float, float, float, float], paper: Paper) -> tuple[Scale, Sheet]:
-    """The scale and sheet of a figure of model ``box``: the spec's scale on the first orientation it fits,
-    else the largest standard scale (:func:`geomcon.paper.best_fit`). ValueError when it does not fit."""
-    size = (box[2] - box[0], box[3] - box[1])
-    if ex.scale is None:
-        return best_fit(size, paper, TEXT_BAND, margin=FIGURE_MARGIN)
+def sheet_at(size: tuple[float, float], scale: Scale, paper: Paper) -> Sheet | None:
+    """The first orientation of ``paper``, portrait first, on which a figure of model ``size`` fits at ``scale``
+    below the :data:`TEXT_BAND` with :data:`FIGURE_MARGIN` around it; None when it fits neither."""
     for orientation in ("portrait", "landscape"):
         sheet = paper.sheet(orientation)
         aw, ah = sheet.area
         try:
-            choose_scale(size, (aw, ah - TEXT_BAND), margin=FIGURE_MARGIN, series=(ex.scale,))
-            return ex.scale, sheet
+            choose_scale(size, (aw, ah - TEXT_BAND), margin=FIGURE_MARGIN, series=(scale,))
+            return sheet
         except ValueError:
             continue
-    raise ValueError(f"a figure of {size[0]:.4g} × {size[1]:.4g} mm does not fit {paper.name} at {ex.scale}")
+    return None
 
 
 def fit_construction(ex: Exercise, sol: Solution, names: list[str], paper: Paper
@@ -189,27 +186,20 @@ def fit_construction(ex: Exercise, sol: Solution, names: list[str], paper: Paper
     content = key_content(sol)
     drawn = drawn_box(sol, names, content)
     series = STANDARD if ex.scale is None else (ex.scale,)
-    def fits(b: tuple[float, float, float, float], scale: Scale) -> Sheet | None:
-        for orientation in ("portrait", "landscape"):
-            sheet = paper.sheet(orientation)
-            aw, ah = sheet.area
-            try:
-                choose_scale((b[2] - b[0], b[3] - b[1]), (aw, ah - TEXT_BAND), margin=FIGURE_MARGIN, series=(scale,))
-                return sheet
-            except ValueError:
-                continue
-        return None
+
+    def size(b: tuple[float, float, float, float]) -> tuple[float, float]:
+        return (b[2] - b[0], b[3] - b[1])
 
     box = drawn
     for scale in reversed(series):
-        if fits(drawn, scale) is None:          # the compass arcs only add to it: no need to sample them
+        if sheet_at(size(drawn), scale, paper) is None:   # the compass arcs only add to it: no need to sample them
             continue
         box = figure_box(sol, names, scale.factor, content, drawn)
-        sheet = fits(box, scale)
+        sheet = sheet_at(size(box), scale, paper)
         if sheet is not None:
             return scale, sheet, box
-    size = (box[2] - box[0], box[3] - box[1])
-    raise ValueError(f"the key's construction of {size[0]:.4g} × {size[1]:.4g} mm does not fit {paper.name} "
+    w, h = size(box)
+    raise ValueError(f"the key's construction of {w:.4g} × {h:.4g} mm does not fit {paper.name} "
                      f"even at {series[0]}")
 
 
@@ -293,4 +283,4 @@ def judge(ex: Exercise, index: int, paper: Paper) -> Accepted | Rejected:
 
 
 __all__ = ["Accepted", "AnswerKey", "DIAGRAM_MIN", "FIGURE_MARGIN", "REASONS", "Rejected", "Solved", "TEXT_BAND",
-           "diagram_strip", "fit", "fit_construction", "judge", "names_choice"]
+           "diagram_strip", "fit_construction", "judge", "names_choice", "sheet_at"]
