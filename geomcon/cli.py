@@ -131,8 +131,12 @@ def cmd_solve(args: argparse.Namespace) -> int:
             files: dict[Path, str] = {}
             if args.svg or args.html or args.steps:
                 from .render.page import PageSpec, sheet_names
-                page = PageSpec(args.paper, args.orientation, args.lang)
-                sheets = sol.sheets(page)
+                page = PageSpec(args.paper, args.orientation or "landscape", args.lang)
+                if args.orientation is None:          # the way the figure draws larger, as the gallery prints it
+                    from .render.orient import larger_page
+                    page, sheets = larger_page(sol, page)
+                else:
+                    sheets = sol.sheets(page)
                 if args.svg:
                     names = sheet_names(args.svg, len(sheets))
                     check_targets({f"--svg (sheet {i})": n for i, n in enumerate(names[1:], 2)})
@@ -478,9 +482,10 @@ def _page_arguments(s: argparse.ArgumentParser) -> None:
     s.add_argument("--paper", choices=("A4", "A3"), default="A4", help="paper of the sheets (default A4)")
     o = s.add_mutually_exclusive_group()
     o.add_argument("--landscape", dest="orientation", action="store_const", const="landscape",
-                   help="landscape sheets (the default)")
+                   help="landscape sheets (default: landscape, or portrait when that draws the figure at a larger "
+                   "scale, as most cams)")
     o.add_argument("--portrait", dest="orientation", action="store_const", const="portrait", help="portrait sheets")
-    s.set_defaults(orientation="landscape")
+    s.set_defaults(orientation=None)
     s.add_argument("--lang", choices=("en", "zh", "both"), default="both",
                    help="language of captions, results and headings: en, zh (full-width punctuation) or both "
                    "(default)")

@@ -842,18 +842,28 @@ class Solution:
         results, warnings (in the page's language: :mod:`geomcon.render.warning_words`) and title block, then the
         construction protocol; ``page`` a
         :class:`~geomcon.render.page.PageSpec` (default A4 landscape, both languages)."""
+        return self.fitted_sheets(page, upto=upto, viewbox=viewbox)[0]
+
+    def fitted_sheets(self, page=None, *, upto: int | None = None, viewbox=None):
+        """:meth:`sheets` and how sheet 1 holds the figure: its scale, whether it prints the results
+        (:func:`geomcon.render.svg.fitted_sheets`)."""
         from .render.page import PageSpec
-        from .render.svg import render_sheets
-        from .render.results import brief_warnings
-        from .render.warning_words import warning_lines
+        from .render.svg import fitted_sheets
         page = page or PageSpec()
-        at = self.listed_at()
-        brief = (self.figure_lines(page.lang, brief=True), brief_warnings(self.warnings, page.lang, "{sheet}", at))
-        return render_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(page.lang),
-                             info=self.figure_lines(page.lang), warnings=warning_lines(self.warnings, page.lang, at),
-                             info_steps=self.info_steps(), brief=brief,
+        info, warned, brief = self.sheet_lines(page.lang)
+        return fitted_sheets(self.drawing_scene, upto=upto, viewbox=viewbox, title=self.title(page.lang),
+                             info=info, warnings=warned, info_steps=self.info_steps(), brief=brief,
                              page=page, problem=self.problem.id + ".toml" if self.problem.path else self.problem.id,
                              recipe=self.recipe.name)
+
+    def sheet_lines(self, lang: str = "both"):
+        """What sheet 1 prints beside the drawing, in ``lang``: the result lines, the warning lines, and their
+        brief forms (one line per result; ``{sheet}`` the number of the sheet with the full ones)."""
+        from .render.results import brief_warnings
+        from .render.warning_words import warning_lines
+        at = self.listed_at()
+        return (self.figure_lines(lang), warning_lines(self.warnings, lang, at),
+                (self.figure_lines(lang, brief=True), brief_warnings(self.warnings, lang, "{sheet}", at)))
 
     def svg(self, *, upto: int | None = None, viewbox=None, page=None) -> str:
         """Sheet 1 of the drawing (frame ``upto`` when given)."""

@@ -15,7 +15,7 @@ from shapely import affinity
 
 import geomcon.render.svg as svg_module
 from geomcon.geometry.primitives import Point
-from geomcon.gallery import gallery_page
+from gallery_pages import page_of
 from geomcon.problems import load_problem
 from geomcon.render.figure import Figure, merged_labels, shown_steps
 from geomcon.render.placement import LABEL_REACH
@@ -47,7 +47,7 @@ def printed(name: str) -> tuple[tuple[Figure, dict[str, str | None]], ...]:
 
     svg_module.build_figure = capture
     try:
-        sol.sheets(gallery_page())
+        sol.sheets(page_of(name))
     finally:
         svg_module.build_figure = real
     return tuple(out)

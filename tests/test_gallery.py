@@ -6,7 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from geomcon.gallery import gallery_page, player_page
+from gallery_pages import page_of
+from geomcon.gallery import problem_gallery
 from geomcon.problems import load_problem
 from geomcon.solve import solve
 
@@ -15,5 +16,6 @@ ROOT = Path(__file__).resolve().parents[1]
 
 @pytest.mark.parametrize("pid", ["001-08_crank_rocker", "000-02_slotter_design_by_K", "200-01_cam_roller_offset"])
 def test_the_player_page_around_the_drawing_is_the_solutions_page(pid):
-    sol = solve(load_problem(ROOT / "problems" / f"{pid}.toml"))
-    assert player_page(sol, sol.sheets(gallery_page())) == sol.html(gallery_page())
+    path = ROOT / "problems" / f"{pid}.toml"
+    files, _ = problem_gallery(path)
+    assert files[f"{pid}.html"] == solve(load_problem(path)).html(page_of(pid))   # on its own page (200-01: portrait)

@@ -17,7 +17,8 @@ from pathlib import Path
 
 import pytest
 
-from geomcon.gallery import gallery_page, problem_files
+from gallery_pages import page_of
+from geomcon.gallery import problem_files
 from geomcon.paper import Scale
 from geomcon.problems import load_problem
 from geomcon.render.detail import MIN_LINK, mechanism_steps
@@ -34,7 +35,7 @@ def _sheet1(pid: str):
     lines, the sheet layout, scale and view, and the figure's keep filter (None, or the diagram's when the s–δ
     diagram stands apart)."""
     sol = solve(load_problem(ROOT / "problems" / f"{pid}.toml"))
-    page = gallery_page()
+    page = page_of(pid)
     sc = sol.drawing_scene
     info, warnings = sol.figure_lines(page.lang), warning_lines(sol.warnings, page.lang)
     from geomcon.render.results import brief_warnings

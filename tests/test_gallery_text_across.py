@@ -31,26 +31,6 @@ CLEAR = 0.2
 another step's pin: nearer, the text's white halo cuts into the line (200-05's α′max under O's ground)."""
 
 KNOWN_ACROSS: dict[str, str] = {
-    "004-02_best_by_K_1_2_offset_limit": "C1, the pin in its slider block 6.5 mm right of A* at 1:5, on A's "
-                                         "ground hatch and the guide's (best score -10.8, its leader form's too): "
-                                         "right of it lie E, B2 and the block, above E's and A*'s labels; below the "
-                                         "guide with a leader (-20.5) its box lies nearer B4 than C1 and the leader "
-                                         "crosses the guide. The detail view at 1:2.5 shows C1 clear, below the "
-                                         "guide with a leader. Between its leader form's directions (hlast11) "
-                                         "the one clear place nearer C1 than any other point lies on a text "
-                                         "placed before; every box clear of the links within 8 mm of it scores "
-                                         "-17 or less (a grid of 0.5 mm)",
-    "200-03_cam_roller_undercut": "B1* lies 0.47 mm inside the start roller (r 10 mm at 1:2, B1* 9.53 mm from "
-                                  "B0), which runs through its pin: B1*'s box touches the roller's outline. Every "
-                                  "place within 3 mm of it meets that roller or the divisions' dashed rollers "
-                                  "(best score -7.6; its leader form -7.8); the nearest box clear of every link is 4 "
-                                  "mm down-left, inside the start roller among B0, 1′ and the dashed rollers "
-                                  "(hcam11k). Drawn alone (its diagram on sheet 2) the cam does not fit A4 at 1:1, so "
-                                  "1:2 stays (its s–δ diagram on sheet 1); on A3 it draws at 1:1 and B1* is clear "
-                                  "(`geomcon solve … --paper A3`). Between its leader form's directions "
-                                  "(hlast11) the best clear place scores -9.2; within 8 mm every clear box "
-                                  "scores -8.7 or less (a grid of 0.5 mm), the down-left ones about -20, "
-                                  "as a box nearer another point scores",
 }
 """Sheet-1 figures (by name) where a text still meets a link, block, ground or pin, and why: the list may only
 shrink (a listed figure that is clean fails, so that it leaves the list)."""

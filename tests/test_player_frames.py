@@ -11,7 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from geomcon.gallery import gallery_page, problem_files
+from gallery_pages import page_of
+from geomcon.gallery import problem_files
 from geomcon.geometry import Point
 from geomcon.problems import load_problem
 from geomcon.render.draw import COMPASS_HALF
@@ -32,7 +33,7 @@ def _solution(pid: str):
 @lru_cache(maxsize=None)
 def _sheet(pid: str) -> str:
     """The sheet holding the Results (sheet 1, or the first text sheet when they do not fit beside the figure)."""
-    sheets = _solution(pid).sheets(gallery_page())
+    sheets = _solution(pid).sheets(page_of(pid))
     return next((s for s in sheets if '<g id="info">' in s or '<g id="warnings">' in s), sheets[0])
 
 
@@ -48,7 +49,7 @@ def test_no_compass_arc_is_drawn_before_the_point_it_is_swung_for(pid):
     """Every compass arc shown at frame m passes through a point drawn by frame m — or through the first point a
     later step constructs on its circle (the arc the draftsman swings where the next intersection will be)."""
     sc = _solution(pid).drawing_scene
-    _, _, view = place_figure(sc, gallery_page())
+    _, _, view = place_figure(sc, page_of(pid))
     fig = build_figure(sc, None, view.box, view.origin, mu=view.mu)
     points = [(g.number, sh.c) for g in fig.groups if g.layer == "points" for sh in g.shapes if isinstance(sh, Disc)]
     points += [(g.number, fig.view.p(fig.values[g.key])) for g in fig.groups      # a point sharing another's marker

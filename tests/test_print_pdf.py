@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from geomcon.gallery import problem_sheets
 from geomcon.problems import load_problem
 from geomcon.render.page import PageSpec
 from geomcon.solve import solve
@@ -27,9 +28,14 @@ DPI = 600
 TOL = 0.2               # mm on paper
 
 
-def _print(tmp: Path, page: PageSpec, problem: str = "001-08_crank_rocker") -> tuple[Path, list[str]]:
+def _print(tmp: Path, page: PageSpec | None, problem: str = "001-08_crank_rocker") -> tuple[Path, list[str]]:
+    """The player page of ``problem`` on ``page`` (None: the gallery's, :func:`geomcon.gallery.problem_sheets`)
+    printed to PDF, and its sheets."""
     sol = solve(load_problem(ROOT / "problems" / f"{problem}.toml"))
-    sheets = sol.sheets(page)
+    if page is None:
+        page, sheets = problem_sheets(sol)
+    else:
+        sheets = sol.sheets(page)
     html = tmp / f"{problem}.html"
     html.write_text(sol.html(page, sheets), encoding="utf-8")
     pdf = tmp / f"{problem}.pdf"
@@ -119,10 +125,10 @@ def _dark_run(img: np.ndarray, x_mm: float, y0_mm: float, y1_mm: float) -> float
 
 @pytest.mark.skipif(PDFTOPPM is None, reason="pdftoppm not installed (apt-get install poppler-utils)")
 def test_a_cam_is_printed_at_a_scale_to_construct_on(tmp_path):
-    """200-01 (r0 = 40 mm) on A4 portrait: the cam alone on sheet 1 at 1:1 — its base circle measured on the
-    printed page is 80.0 mm across (it was 40 mm at 1:2 when the s–δ diagram shared the sheet) — and the s–δ
+    """200-01 (r0 = 40 mm) as the gallery prints it, on A4 portrait: the cam alone on sheet 1 at 1:1 — its base
+    circle measured on the printed page is 80.0 mm across (it was 40 mm at 1:2 on landscape) — and the s–δ
     diagram on sheet 2 at its own stated scale, whose scale bar measures true."""
-    pdf, sheets = _print(tmp_path, PageSpec("A4", "portrait", "en"), "200-01_cam_roller_offset")
+    pdf, sheets = _print(tmp_path, None, "200-01_cam_roller_offset")
     boxes = _media_boxes(pdf)
     assert len(boxes) == len(sheets) >= 3 and all(abs(w - 210.0) <= TOL and abs(h - 297.0) <= TOL for w, h in boxes)
     one = _raster(pdf, tmp_path, 1)

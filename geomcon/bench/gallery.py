@@ -143,14 +143,14 @@ def _problem_file(pid: str) -> Path | None:
 def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> list[FigureRow]:
     """The shortest CPU time of sheet 1 of each of ``figures`` over ``samples`` fresh solutions (see the
     module); a problem not bundled is left out."""
-    from ..gallery import gallery_page
+    from ..gallery import problem_sheets
     from ..problems import load_problem
     from ..solve import solve
 
     from ..render import svg as render_svg
 
     problems = [(pid, load_problem(p)) for pid in figures if (p := _problem_file(pid)) is not None]
-    page = gallery_page()
+    pages = {pid: problem_sheets(solve(problem))[0] for pid, problem in problems}     # the gallery's paper
     best = {pid: float("inf") for pid, _ in problems}
     first = {pid: float("inf") for pid, _ in problems}
     recipe = {}
@@ -175,7 +175,7 @@ def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> li
                 gc.collect()
                 gc.disable()
                 t0 = clock()
-                sol.sheets(page)
+                sol.sheets(pages[pid])
                 t = clock() - t0
                 gc.enable()
                 best[pid] = min(best[pid], t)
@@ -192,12 +192,11 @@ def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> li
 def measure_all_figures(samples: int = 1, only: tuple[str, ...] | None = None) -> SpreadRow | None:
     """Sheet 1's figure of every bundled problem (of ``only``'s ids when given), the shortest CPU time of
     ``samples`` (see the module); None without problems."""
-    from ..gallery import gallery_page, problem_files
+    from ..gallery import problem_files, problem_sheets
     from ..problems import load_problem
     from ..render import svg as render_svg
     from ..solve import solve
 
-    page = gallery_page()
     build = render_svg.build_figure
     calls: list[tuple[tuple, dict]] = []
 
@@ -212,8 +211,10 @@ def measure_all_figures(samples: int = 1, only: tuple[str, ...] | None = None) -
             pid = path.stem.split("_")[0]
             if only is not None and pid not in only:
                 continue
+            sol = solve(load_problem(path))
+            page = problem_sheets(sol)[0]                   # the gallery's paper, then its sheet 1's figure
             calls.clear()
-            solve(load_problem(path)).sheets(page)
+            sol.sheets(page)
             if calls:
                 figures[path.stem] = calls[0]
     finally:

@@ -728,10 +728,30 @@ def rejoined(src: str, lines: Sequence[str]) -> str:
     return out
 
 
-def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
+@dataclass(frozen=True)
+class Fit:
+    """How sheet 1 holds a figure: the standard ``scale`` it draws at and whether it prints the results
+    (``results``: in full or in brief; True when there are none) — what :func:`geomcon.render.orient.larger_page`
+    weighs when it turns the paper.
+
+    >>> Fit(Scale(1.0, 1.0), False).beats(Fit(Scale(1.0, 2.0), True)), Fit(Scale(1.0, 1.0), True).beats(
+    ...     Fit(Scale(1.0, 2.0), True))
+    (False, True)
+    """
+
+    scale: Scale
+    results: bool
+
+    def beats(self, other: Fit) -> bool:
+        """Whether this sheet 1 draws larger than ``other`` and keeps the results if ``other`` does."""
+        return self.scale > other.scale and (self.results or not other.results)
+
+
+def fitted_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
                   info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
                   info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
-                  recipe: str = "", brief: tuple[Sequence[str], Sequence[str]] | None = None) -> list[str]:
+                  recipe: str = "", brief: tuple[Sequence[str], Sequence[str]] | None = None
+                  ) -> tuple[list[str], Fit]:
     """The printed sheets of the scene (or of its frame ``upto``): sheet 1 the drawing at a standard scale
     with its scale bar, results, warnings and title block; a cam's s–δ diagram on sheet 2 at its own scale when
     that draws the cam larger (:func:`diagram_apart`); then the construction protocol's sheets.
@@ -769,6 +789,9 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     -------
     list of str
         The SVG documents, one per sheet (UTF-8 text; width and height in mm of paper, 1 user unit = 1 mm).
+    Fit
+        The standard scale sheet 1 draws at and whether it prints the results (what
+        :func:`geomcon.render.orient.larger_page` compares).
     """
     sheet, lang = page.sheet, page.lang
     last = len(scene.frames())             # the warnings show with the last frame
@@ -844,7 +867,23 @@ def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
             d.add(render_protocol(d, pages[k], fx0 + INSET, top, values, shown,
                                   shown if upto is not None else None, lang))
         out.append(svg_string(d))
-    return out
+    return out, Fit(scale, sl.info_here or not (info or warnings))
+
+
+def render_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None = None, title: str | None = None,
+                  info: Sequence[str] = (), protocol: bool = True, warnings: Sequence[str] = (),
+                  info_steps: Sequence[int] | None = None, page: PageSpec = PageSpec(), problem: str = "",
+                  recipe: str = "", brief: tuple[Sequence[str], Sequence[str]] | None = None) -> list[str]:
+    """:func:`fitted_sheets` without the fit: the printed sheets of the scene.
+
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+    >>> render_sheets(sc) == fitted_sheets(sc)[0]
+    True
+    """
+    return fitted_sheets(scene, upto=upto, viewbox=viewbox, title=title, info=info, protocol=protocol,
+                         warnings=warnings, info_steps=info_steps, page=page, problem=problem, recipe=recipe,
+                         brief=brief)[0]
 
 
 def split(sl: SheetLayout) -> bool:
