@@ -146,4 +146,5 @@ RECIPE = Recipe(
     analytic=analytic,
     validate=_validate,
     back_check=back_check,
+    rigid=(tuple((f"B{i}", f"C{i}") for i in (1, 2, 3)),),        # the coupler BC in its three positions
 )
