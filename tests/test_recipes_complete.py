@@ -139,10 +139,9 @@ def test_every_answer_has_a_printed_name_and_unit(recipe):
 NOT_A_KEY = {
     "001-01_crank_rocker_change_point.toml": "a change-point chain: AB ± its drafting error leaves the crank "
                                              "condition, so the drawing cannot determine the answers",
-    "100-03_four_bar_fixed_pivots_coupler_point.toml": "the givens are tied (B1, B2, B3 at one distance from A): "
-                                                       "A drafted alone leaves the domain",
-    "100-04_four_bar_fixed_pivots_coupler_angles.toml": "as 100-03",
 }
+"""(100-03 and 100-04 were here, 'A drafted alone leaves the domain': their givens B1, B2, B3 lie at one distance
+from A; a rigid body's points are drafted as a body since, tests/test_worksheet_rigid.py.)"""
 NO_SCALAR = {"001-02_four_bar_link_ranges.toml": "its answers are lists; a problem file's key grades scalars only "
                                                  "(a worksheet asks boundaries[i])"}
 

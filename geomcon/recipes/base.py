@@ -136,10 +136,16 @@ class Recipe(Frozen):
         ``advise(given) -> [str, ...]``: the warnings that cost a computation of their own (a cam's ρmin and
         largest pressure angle against the allowance), made only when the warnings are asked for, never for
         answers alone; they are listed right after ``validate``'s.
+    rigid : tuple of tuple of (str, str)
+        Rigid links among the point givens, in groups: a link ``(anchor, point)`` draws ``point`` at the
+        link's length from ``anchor``, and the links of one group are one link in its several positions (their
+        lengths equal, as ``validate`` requires within its drafting limit): ``(("B1", "C1"), ("B2", "C2"),
+        ("B3", "C3"))`` for a coupler BC given in three positions. A worksheet's drafting error moves such a
+        point only as its link lets it (:mod:`geomcon.worksheet.drafting`). Each point has at most one anchor.
     """
 
     _FIELDS = ("name", "title", "givens", "answers", "points", "construct", "analytic", "validate", "back_check",
-               "order", "advise")
+               "order", "advise", "rigid")
     name: str
     title: str
     givens: tuple[Quantity, ...]
@@ -151,6 +157,7 @@ class Recipe(Frozen):
     back_check: Callable[[Mapping[str, Any], Mapping[str, float]], list[tuple[str, float, float, str]]] | None
     order: Callable[[Mapping[str, float]], Any] | None
     advise: Callable[[Mapping[str, Any]], list[str]] | None
+    rigid: tuple[tuple[tuple[str, str], ...], ...]
 
     def __init__(self, name: str, title: str, givens: tuple[Quantity, ...], answers: tuple[Quantity, ...],
                  points: tuple[str, ...], construct: Callable[[Mapping[str, Any]], Construction],
@@ -159,9 +166,10 @@ class Recipe(Frozen):
                  back_check: Callable[[Mapping[str, Any], Mapping[str, float]],
                                       list[tuple[str, float, float, str]]] | None = None,
                  order: Callable[[Mapping[str, float]], Any] | None = None,
-                 advise: Callable[[Mapping[str, Any]], list[str]] | None = None) -> None:
+                 advise: Callable[[Mapping[str, Any]], list[str]] | None = None,
+                 rigid: tuple[tuple[tuple[str, str], ...], ...] = ()) -> None:
         for field, value in zip(self._FIELDS, (name, title, givens, answers, points, construct, analytic, validate,
-                                               back_check, order, advise)):
+                                               back_check, order, advise, rigid)):
             store(self, field, value)
 
     def given_names(self) -> tuple[str, ...]:

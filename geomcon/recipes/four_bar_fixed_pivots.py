@@ -321,4 +321,6 @@ RECIPE = Recipe(
     analytic=analytic,
     validate=_validate,
     back_check=back_check,
+    rigid=(tuple(("A", f"B{i}") for i in (1, 2, 3)),                # the input link AB in its three positions
+           tuple((f"B{i}", f"K{i}") for i in (1, 2, 3))),           # the coupler's point K, carried by B
 )

@@ -35,6 +35,7 @@ from ..analytic.synthesis import three_positions as twin
 from ..errors import NotAMechanism
 from ..geometry import Point, circle, perpendicular_bisector, segment
 from ..scene import Role, Scene
+from ..tolerance import tol
 from .base import Construction, Quantity, Recipe
 from .common import length
 from .synthesis_common import (DRAFT_REFUSE_REL, add_bisector_centre, add_positions, add_report, centre_sensitivity,
@@ -85,7 +86,13 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
                          why=f" (drafted data?): each C_i is slid along B_iC_i to the mean BC = {sum(lens.values()) / 3:.10g} mm")
     p = _points(g)
     warn += require_distinct_noncollinear(NAMES[:3], [p[n] for n in NAMES[:3]], "the fixed pivot A")
-    return warn + require_distinct_noncollinear(NAMES[3:], [p[n] for n in NAMES[3:]], "the fixed pivot D")
+    warn += require_distinct_noncollinear(NAMES[3:], [p[n] for n in NAMES[3:]], "the fixed pivot D")
+    A, D = (meet(perpendicular_bisector(p[f"{X}1"], p[f"{X}2"]), perpendicular_bisector(p[f"{X}2"], p[f"{X}3"]))
+            for X in "BC")
+    if abs(A - D) <= tol(*(abs(q) for q in p.values()), abs(A)):
+        raise NotAMechanism(f"A = D = ({A.x:.6g}, {A.y:.6g}): the three positions are turns of the coupler about one "
+                            "point, the frame AD has no length")
+    return warn
 
 
 def construct(g: Mapping[str, Any]) -> Construction:
@@ -146,4 +153,5 @@ RECIPE = Recipe(
     analytic=analytic,
     validate=_validate,
     back_check=back_check,
+    rigid=(tuple((f"B{i}", f"C{i}") for i in (1, 2, 3)),),        # the coupler BC in its three positions
 )

@@ -10,6 +10,18 @@ off the drawing with ±0.5 mm on paper (a length) or ±0.5° (an angle); K is re
 not drawn is not perturbed: a length of 0 (a centric follower's offset, nothing to lay off), K = 1 (θ = 0), a
 choice, a count, and the sampling ``tolerance`` of a cam profile.
 
+Rigid bodies. Points given as one body in several positions (:attr:`~geomcon.recipes.base.Recipe.rigid`: a
+coupler B_iC_i in three positions, an input link AB_i and the coupler's point K_i) are drafted as bodies, not
+point by point: the data must stay one rigid body (the recipe refuses links that differ by more than 1 %, and
+one point moved 0.5 mm on paper at 1:2 made a 50 mm coupler differ by 2 %). A free point (B_i, A, D) is drafted
+in x and in y and carries what rides on it (C_i rides on B_i, B_i and K_i on A): the whole position moves; a
+link's point is turned about its anchor so that it moves ±0.5 mm on paper across the link ("C1 ⊥ B1C1"), what
+rides on it moving with it; and each group's common length is drafted once, ±0.5 mm on paper along every link
+("BC (length)"). That is one drafted quantity per degree of freedom of the data (three coupler positions: 10),
+and every drafted end is as rigid as the givens. A point's error along its own link in one position alone
+would make the body not rigid; below the recipe's limit the recipe fits it away (each point slid to the mean
+length), so it does not move the answer.
+
 Propagation. For each drafted quantity i the answer's shift is the central difference of the solve over
 the drafting interval itself, d_i = (a(g_i + δ_i) − a(g_i − δ_i)) / 2: the secant over the interval the
 student can actually land in, so a strongly curved answer is not judged by a derivative at one point, and
@@ -35,6 +47,11 @@ Examples
 0.03
 >>> round(tolerances("crank_rocker.design_by_K", g, (ab,), far, 0.5)["AB"], 3)
 1.149
+>>> pos = {"B1": [0, 0], "C1": [0, 50], "B2": [-20, 35], "C2": [10, 75], "B3": [-20, 85], "C3": [30, 85]}
+>>> [d.name for d in drafted("four_bar.three_positions", pos, 0.5)][4:]
+['B3.x', 'B3.y', 'C1 ⊥ B1C1', 'C2 ⊥ B2C2', 'C3 ⊥ B3C3', 'BC (length)']
+>>> {k: v for k, v in drafted("four_bar.three_positions", pos, 0.5)[1].plus.items() if v != pos[k]}
+{'B1': [0.0, 1.0], 'C1': [0.0, 51.0]}
 """
 from __future__ import annotations
 
@@ -45,6 +62,7 @@ from typing import Any, Callable, Iterator, Mapping, Sequence
 from ..errors import GeomconError
 from ..recipes import get_recipe
 from ..recipes.base import unit_in
+from .bodies import Bodies, is_point, point_drafts
 from .solving import read, solve_given
 from .spec import AnswerRef
 
@@ -95,6 +113,7 @@ def drafted(recipe: str, given: Mapping[str, Any], factor: float) -> list[Drafte
     """
     rec = get_recipe(recipe)
     length = PAPER_MM / factor
+    bodies = Bodies.of(rec.rigid, given)
     out: list[Drafted] = []
 
     def with_value(name: str, value: Any) -> dict[str, Any]:
@@ -116,11 +135,8 @@ def drafted(recipe: str, given: Mapping[str, Any], factor: float) -> list[Drafte
             th = theta_of_k(float(v))
             out.append(Drafted("K (θ)", with_value("K", k_of_theta(th + DEGREES)),
                                with_value("K", k_of_theta(th - DEGREES))))
-        elif q.unit == "point" and isinstance(v, (list, tuple)) and len(v) == 2:
-            for axis, name in ((0, "x"), (1, "y")):
-                p, m = list(v), list(v)
-                p[axis], m[axis] = float(v[axis]) + length, float(v[axis]) - length
-                out.append(Drafted(f"{q.name}.{name}", with_value(q.name, p), with_value(q.name, m)))
+        elif q.unit == "point" and is_point(v):
+            out.extend(Drafted(*d) for d in point_drafts(bodies, q.name, given, length))
         elif q.unit in ("mm[]", "deg[]") and isinstance(v, (list, tuple)):
             d = length if q.unit == "mm[]" else DEGREES
             for i, x in enumerate(v):

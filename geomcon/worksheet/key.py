@@ -39,7 +39,8 @@ from .statements import CHOICE, answer_words, default_template, fill, find_sente
 
 _DIGITS36 = "0123456789abcdefghijklmnopqrstuvwxyz"
 TOLERANCE_MODEL = (f"drafting: each given laid off with ±{PAPER_MM:g} mm on paper (a length, at the exercise's scale) "
-                   f"or ±{DEGREES:g}° (an angle; K through θ), each answer read with the same; the answer's shifts "
+                   f"or ±{DEGREES:g}° (an angle; K through θ), a rigid body's given points (a coupler's positions) "
+                   "moved and turned as a body, each answer read with the same; the answer's shifts "
                    "(central differences of the solve over each drafting interval) combined root-sum-square")
 
 
@@ -94,7 +95,7 @@ def statement(ex: Exercise, v: Accepted, lang: str) -> str:
     if own is not None:
         return zh_punct(fill(own, values)) if lang == "zh" else fill(own, values)
     template = default_template(ex.recipe, given, get_recipe(ex.recipe).title)[k]
-    words = [answer_words(r.name, r.index, given, lang) for r in ex.ask]
+    words = [answer_words(r.name, r.index, given, lang, ex.recipe) for r in ex.ask]
     parts = [fill(template, values), find_sentence(words, lang)] + ([choice] if choice else [])
     return zh_punct("".join(parts)) if lang == "zh" else " ".join(parts)
 

@@ -15,7 +15,9 @@ Inside a motion program (a list of tables) each row's fields take the same three
 360°, and combinations that do not are rejected as invalid variants (counted in the statistics).
 
 The variant pool of an exercise is the product of its choices (each a *slot*); a variant is one index into it
-(mixed radix, slots in the order of the spec).
+(mixed radix, slots in the order of the spec). ``together = [["B2", "C2"], …]`` chooses the listed givens by one
+index (their lists are as long as one another): the k-th B2 goes with the k-th C2, as the two points of one
+position of a rigid coupler must (a product of their lists would mostly pull the coupler apart).
 
 Examples
 --------
@@ -65,7 +67,8 @@ LIMITS = {
 """Size limits of a worksheet spec, checked before anything is solved."""
 
 TOP_KEYS = ("title", "title_zh", "seed", "exercise")
-EXERCISE_KEYS = ("recipe", "ask", "points", "statement", "given", "require", "tol", "scale", "max_tol_rel", "diagnose")
+EXERCISE_KEYS = ("recipe", "ask", "points", "statement", "given", "require", "tol", "scale", "max_tol_rel", "diagnose",
+                 "together")
 LANGS = ("en", "zh")
 MAX_TOL_REL = 0.05
 """A variant whose drafting tolerance of an asked answer exceeds this fraction of the answer is rejected
@@ -103,25 +106,44 @@ class Slot:
     """One choice of an exercise: where it goes in the givens and what it may take.
 
     ``path`` is ``(given,)`` or ``(given, row, field)`` for a field of a table given (a motion program);
-    ``choices`` holds the values of a list, ``grid`` those of a range (exactly one of them is set).
+    ``choices`` holds the values of a list, ``grid`` those of a range (exactly one of them is set); ``parts``,
+    the slots of givens chosen ``together`` (then ``path`` is the first one's and ``value`` a tuple of theirs).
     """
 
     path: tuple
     choices: tuple = ()
     grid: Grid | None = None
+    parts: tuple["Slot", ...] = ()
 
     @property
     def count(self) -> int:
         """How many values the slot may take."""
+        if self.parts:
+            return self.parts[0].count
         return self.grid.count if self.grid is not None else len(self.choices)
 
     def value(self, k: int) -> Any:
         """The slot's ``k``-th value (a float for numbers; a string, bool, list or table as written)."""
+        if self.parts:
+            return tuple(s.value(k) for s in self.parts)
         return self.grid.value(k) if self.grid is not None else self.choices[k]
+
+    def put(self, given: dict[str, Any], k: int) -> None:
+        """Write the slot's ``k``-th value into ``given`` (each part's, for givens chosen together)."""
+        if self.parts:
+            for s in self.parts:
+                s.put(given, k)
+        elif len(self.path) == 1:
+            given[self.path[0]] = _copy(self.value(k))
+        else:
+            name, row, field = self.path
+            given[name][row][field] = self.value(k)
 
     @property
     def name(self) -> str:
-        """The slot as a spec names it: ``CD``, ``program[0].angle``."""
+        """The slot as a spec names it: ``CD``, ``program[0].angle``, ``B2+C2`` (chosen together)."""
+        if self.parts:
+            return "+".join(s.name for s in self.parts)
         return self.path[0] if len(self.path) == 1 else f"{self.path[0]}[{self.path[1]}].{self.path[2]}"
 
 
@@ -234,11 +256,7 @@ class Exercise:
         ``[given]`` table would hold them."""
         out = {k: _copy(v) for k, v in self.given.items()}
         for s, k in zip(self.slots, self.digits(index)):
-            if len(s.path) == 1:
-                out[s.path[0]] = _copy(s.value(k))
-            else:
-                name, row, field = s.path
-                out[name][row][field] = s.value(k)
+            s.put(out, k)
         return out
 
 
@@ -329,11 +347,14 @@ def _exercise(data: Mapping[str, Any], n: int) -> Exercise:
     units = {q.name: q for q in recipe.givens}
     fixed: dict[str, Any] = {}
     slots: list[Slot] = []
+    together = data.get("together")
+    joint = {n for g in together for n in g if isinstance(n, str)} if isinstance(together, list) and all(
+        isinstance(g, list) for g in together) else set()
     for key, value in given_in.items():
         if key not in units:
             raise ProblemError(f"{where}: unknown given {_quote(key)} for recipe {recipe.name} "
                                f"(it takes {', '.join(names)})")
-        _given(units[key], value, f"{where}: given '{key}'", fixed, slots)
+        _given(units[key], value, f"{where}: given '{key}'", fixed, slots, key in joint)
     ask = _ask(recipe, data.get("ask"), where)
     points = _points(data.get("points"), len(ask), where)
     require = _require(recipe, data.get("require", {}), where)
@@ -343,15 +364,18 @@ def _exercise(data: Mapping[str, Any], n: int) -> Exercise:
     if isinstance(max_rel, bool) or not isinstance(max_rel, (int, float)) or not 0 < max_rel <= 1:
         raise ProblemError(f"{where}: 'max_tol_rel' must be a number in (0, 1], got {_short(max_rel)}")
     statement = _statement(data.get("statement"), where, set(given_in))
-    digest = hashlib.sha256(json.dumps({"recipe": recipe.name, "given": given_in}, sort_keys=True,
-                                       ensure_ascii=True, separators=(",", ":")).encode()).hexdigest()
+    slots = _together(together, slots, where)
+    drawn = {"recipe": recipe.name, "given": given_in} | ({"together": data["together"]} if "together" in data else {})
+    digest = hashlib.sha256(json.dumps(drawn, sort_keys=True, ensure_ascii=True,
+                                       separators=(",", ":")).encode()).hexdigest()
     diagnose = _diagnoses(recipe, data.get("diagnose", {}), ask, where)
     return Exercise(n, recipe.name, fixed, tuple(slots), ask, points, statement, require, tol, scale,
                     float(max_rel), digest, diagnose)
 
 
-def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: list[Slot]) -> None:
-    """Sort one given into a fixed value or a slot (list or range), refusing any other form."""
+def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: list[Slot], joint: bool = False) -> None:
+    """Sort one given into a fixed value or a slot (list or range), refusing any other form; a ``joint`` given
+    (chosen ``together`` with others) may repeat a value: its group's combinations must differ instead."""
     form = (f"{where} must be {_forms(q)}, got {_short(value)}")
     fixed[q.name] = None                   # its place in the spec's order; a slot fills it in each variant
     if isinstance(value, dict):
@@ -361,7 +385,7 @@ def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: li
         return
     if q.unit in _SCALAR:
         if isinstance(value, list):
-            slots.append(Slot((q.name,), choices=_choices(value, where, _is_number, "numbers")))
+            slots.append(Slot((q.name,), choices=_choices(value, where, _is_number, "numbers", repeats=joint)))
             return
         if not _is_number(value):
             raise ProblemError(form)
@@ -370,7 +394,7 @@ def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: li
     if q.unit in _WORDS:
         ok, words = _WORDS[q.unit]
         if isinstance(value, list):
-            slots.append(Slot((q.name,), choices=_choices(value, where, ok, words)))
+            slots.append(Slot((q.name,), choices=_choices(value, where, ok, words, repeats=joint)))
         elif ok(value):
             fixed[q.name] = value
         else:
@@ -388,7 +412,7 @@ def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: li
                     for field, x in row.items():
                         if not (_is_number(x) or isinstance(x, str)):
                             raise ProblemError(f"{where}[{i}][{j}].{field} must be a number or a word, got {_short(x)}")
-            slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: True, "programs")))
+            slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: True, "programs", repeats=joint)))
         else:
             raise ProblemError(form)
         return
@@ -397,11 +421,48 @@ def _given(q: Quantity, value: Any, where: str, fixed: dict[str, Any], slots: li
         for i, v in enumerate(value):
             if not v or not all(_is_number(x) for x in v) or len(v) > LIMITS["list_items"]:
                 raise ProblemError(f"{where}[{i}] must be a non-empty list of numbers, got {_short(v)}")
-        slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: True, "lists")))
+        slots.append(Slot((q.name,), choices=_choices(value, where, lambda v: True, "lists", repeats=joint)))
     elif isinstance(value, list) and value and all(_is_number(x) for x in value):
         fixed[q.name] = value
     else:
         raise ProblemError(form)
+
+
+def _together(value: Any, slots: list[Slot], where: str) -> list[Slot]:
+    """The slots with each group of ``together`` (a list of lists of given names) merged into one slot, at the
+    place of the group's first given; the groups' givens must be lists or ranges of one length."""
+    if value is None:
+        return slots
+    if not isinstance(value, list) or not all(isinstance(g, list) and len(g) >= 2 and all(isinstance(n, str) for n in g)
+                                              for g in value):
+        raise ProblemError(f"{where}: 'together' must be a list of lists of two or more given names, e.g. "
+                           f"[[\"B2\", \"C2\"]], got {_short(value)}")
+    by_name = {s.path[0]: s for s in slots if len(s.path) == 1}
+    merged: dict[str, Slot] = {}
+    gone: set[str] = set()
+    for i, group in enumerate(value):
+        for n in group:
+            if n not in by_name:
+                raise ProblemError(f"{where}: together[{i}] names {_quote(n)}, not a given of this exercise with "
+                                   "choices (a list or a range)")
+            if n in gone:
+                raise ProblemError(f"{where}: together[{i}] names {_quote(n)} again (a given goes in one group)")
+            gone.add(n)
+        counts = [by_name[n].count for n in group]
+        if len(set(counts)) > 1:
+            listed = ", ".join(f"{n} {c}" for n, c in zip(group, counts))
+            raise ProblemError(f"{where}: together[{i}]: givens chosen together need as many choices each, got {listed}")
+        slot = Slot(by_name[group[0]].path, parts=tuple(by_name[n] for n in group))
+        seen: set[str] = set()
+        for k in range(slot.count):
+            v = json.dumps(slot.value(k), sort_keys=True)
+            if v in seen:
+                raise ProblemError(f"{where}: together[{i}]: choice {k} of {', '.join(group)} repeats an earlier one, "
+                                   f"{_short(list(slot.value(k)))}")
+            seen.add(v)
+        merged[group[0]] = slot
+    return [merged.get(s.path[0], s) if len(s.path) == 1 else s for s in slots
+            if len(s.path) != 1 or s.path[0] in merged or s.path[0] not in gone]
 
 
 def _forms(q: Quantity) -> str:
@@ -457,7 +518,7 @@ def _is_number(v: Any) -> bool:
             and (math.isfinite(v) if isinstance(v, float) else abs(v) <= 10 ** 300))
 
 
-def _choices(values: list, where: str, ok, what: str) -> tuple:
+def _choices(values: list, where: str, ok, what: str, repeats: bool = False) -> tuple:
     if not values:
         raise ProblemError(f"{where} is an empty list: give at least one value")
     if len(values) > LIMITS["list_items"]:
@@ -467,7 +528,7 @@ def _choices(values: list, where: str, ok, what: str) -> tuple:
         if not ok(v):
             raise ProblemError(f"{where}[{i}] must be one of the {what} to choose from, got {_short(v)}")
         k = json.dumps(v, sort_keys=True)
-        if k in seen:
+        if k in seen and not repeats:
             raise ProblemError(f"{where} lists {_short(v)} twice")
         seen.add(k)
     return tuple(values)

@@ -656,8 +656,16 @@ AT_WORDS = {"v": ("the follower's velocity v", "从动件速度 v"), "a": ("the 
 """How a statement names a list answer at a cam angle of ``at`` (besides s and α)."""
 
 
-def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: str) -> str:
-    """How the statement names an asked answer; ``s[i]`` and ``alpha[i]`` name the cam angle ``at[i]``.
+_POSITION_WORDS = {"AB": ("the input link AB", "输入杆长 AB"), "CD": ("the output link CD", "输出杆长 CD")}
+RECIPE_WORDS: dict[str, dict[str, tuple[str, str]]] = {
+    "four_bar.three_positions": _POSITION_WORDS, "four_bar.three_positions_fixed_pivots": _POSITION_WORDS}
+"""A recipe's own words for an answer, before :data:`ANSWER_WORDS`: a linkage designed through given positions
+is not known to be a crank-rocker (100-01's AB is a rocker), so its AB and CD are the input and output links."""
+
+
+def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: str, recipe: str = "") -> str:
+    """How the statement names an asked answer; ``s[i]`` and ``alpha[i]`` name the cam angle ``at[i]``; a
+    ``recipe``'s own words (:data:`RECIPE_WORDS`) come first.
 
     >>> answer_words("s", 1, {"at": [30, 60]}, "en"), answer_words("alpha", 0, {"at": [30]}, "zh")
     ('the displacement s at δ = 60°', 'δ = 30° 时的压力角 α')
@@ -679,7 +687,7 @@ def answer_words(name: str, index: int | None, given: Mapping[str, Any], lang: s
             en, zh = AT_WORDS[name]
             return (f"{en} at {where}", f"{where} 时的{zh}")[k]
         return f"{name} ({where})"
-    return ANSWER_WORDS.get(name, (name, name))[k]
+    return (RECIPE_WORDS.get(recipe, {}).get(name) or ANSWER_WORDS.get(name, (name, name)))[k]
 
 
 def _ordinal(n: int) -> str:
@@ -705,5 +713,5 @@ def find_sentence(words: list[str], lang: str) -> str:
     return "Find " + ", ".join(words[:-1]) + f" and {words[-1]}."
 
 
-__all__ = ["ANSWER_WORDS", "CHOICE", "CLAUSES", "TEMPLATES", "answer_words", "default_template", "fill", "find_sentence",
+__all__ = ["ANSWER_WORDS", "CHOICE", "CLAUSES", "RECIPE_WORDS", "TEMPLATES", "answer_words", "default_template", "fill", "find_sentence",
            "generic_template", "number", "program_words", "shown_givens", "template_form", "CAM_DRAW", "ROLLER"]
