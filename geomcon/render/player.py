@@ -41,7 +41,7 @@ body { font-family: %(font)s; margin: 1em 1.5em; color: #1a1a1a; background: #fa
 #slider { flex: 1 1 16em; max-width: 40em; }
 #count { font-variant-numeric: tabular-nums; min-width: 6em; }
 #drawing { background: #fff; border: 1px solid #ddd; overflow: auto; }
-#drawing svg { display: block; width: 100%%; height: auto; }
+#drawing svg { display: block; width: 100%%; height: auto; max-height: calc(100vh - 4.5em); margin: 0 auto; }
 #drawing .page + .page { border-top: 1px solid #ddd; }
 .future { display: none; }
 """
