@@ -58,7 +58,9 @@ def mechanism_steps(steps: Sequence[tuple[int, Step]], values: dict[str, Any]
                     ) -> tuple[set[str], set[str], list[float]]:
     """The keys of the steps that draw the mechanism — links (the links layer and the dash-dot frame), the points
     at their ends, grounds and sliders there —, those of the guides its sliders run on, and the model lengths of
-    the links.
+    the links that end in a point drawn (a joint: two of them, their labels pile up on a short link). A flat face
+    drawn about its follower's foot ends in no point (200-17's face, 7.7 mm at 1:2, asked for a window at 1:1
+    that held only the stem and the face, resolving nothing): its length is no link's.
 
     >>> from geomcon.recipes.crank_rocker import construct
     >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
@@ -69,14 +71,17 @@ def mechanism_steps(steps: Sequence[tuple[int, Step]], values: dict[str, Any]
     """
     keys: set[str] = set()
     ends: list[Point] = []
-    lengths: list[float] = []
+    links: list[Segment] = []
     for _, s in steps:
         segs = [x for x in _items(values[s.key]) if isinstance(x, Segment) and x.a != x.b]
         if segs and _is_link(s):
             keys.add(s.key)
             ends += [p for x in segs for p in (x.a, x.b)]
-            lengths += [math.dist((x.a.x, x.a.y), (x.b.x, x.b.y)) for x in segs]
+            links += segs
     tol = 1e-6 * max((abs(c) for p in ends for c in (p.x, p.y)), default=1.0)
+    drawn = [p for _, s in steps for p in _items(values[s.key]) if isinstance(p, Point)]
+    lengths = [math.dist((x.a.x, x.a.y), (x.b.x, x.b.y)) for x in links         # a link that ends in a joint
+               if any(abs(p.x - e.x) <= tol and abs(p.y - e.y) <= tol for e in (x.a, x.b) for p in drawn)]
 
     def at_end(p: Point) -> bool:
         return any(abs(p.x - e.x) <= tol and abs(p.y - e.y) <= tol for e in ends)
@@ -126,10 +131,9 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
     values = fig.values
     steps = [(n, s) for n, s in shown_steps(scene, upto)[0] if s.key in values]     # those the figure draws
     keys, guides, lengths = mechanism_steps(steps, values)
-    if not lengths:
+    if not keys:                                      # no link drawn
         return None
-    shortest = min(lengths) / fig.view.mu
-    big = detail_scale(shortest, scale)
+    big = detail_scale(min(lengths) / fig.view.mu, scale) if lengths else None
     found = knot(steps, values, keys, fig.view)
     apart = None if found is None else detail_scale(found[0] * MIN_LINK / MIN_KNOT, scale)
     if apart is not None and (big is None or apart.factor > big.factor):
@@ -220,7 +224,9 @@ def crowding(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: se
 def _placed(scene: Scene, upto: int | None, box: Box, mu: float, big: Scale,
             free: Callable[[float, float], tuple | None], keep: Callable[[Step], bool]
             ) -> tuple[Figure, Scale, Box] | None:
-    """The detail figure of model ``box`` at ``mu`` in the free box ``free`` finds for it (caption above), or None."""
+    """The detail figure of model ``box`` at ``mu`` in the free box ``free`` finds for it (caption above), or None.
+    The box is widened about its middle to its caption's width (:func:`_captioned`)."""
+    box = _captioned(box, big, mu)
     w, h = (box[2] - box[0]) / mu, (box[3] - box[1]) / mu
     spot = free(w, h + CAPTION_H)
     if spot is None:
@@ -228,6 +234,21 @@ def _placed(scene: Scene, upto: int | None, box: Box, mu: float, big: Scale,
     x, y = spot[0], spot[1]
     detail = build_figure(scene, upto, box, (x, y + CAPTION_H), mu=mu, keep=keep)
     return detail, big, (x, y, x + w, y + h + CAPTION_H)
+
+
+def _captioned(box: Box, big: Scale, mu: float) -> Box:
+    """Model ``box`` widened about its middle, where narrower, to hold the window's caption (its text in both
+    languages at ``big``, 1.5 mm in from the frame each side): 200-17's window, 35 mm wide, cut its caption
+    between "1:1" and "μl".
+
+    >>> _captioned((0.0, 0.0, 10.0, 5.0), Scale(1.0, 1.0), 1.0)[0] < -20.0, _captioned((0.0, 0.0, 90.0, 5.0), Scale(1.0, 1.0), 1.0)
+    (True, (0.0, 0.0, 90.0, 5.0))
+    """
+    x0, y0, x1, y1 = box
+    wide = (text_width(f"Detail 局部放大  {big}   μl = {mu:g} mm/mm", INFO_SIZE) + 3.0) * mu
+    if x1 - x0 < wide:
+        x0, x1 = (x0 + x1 - wide) / 2, (x0 + x1 + wide) / 2
+    return (x0, y0, x1, y1)
 
 
 MIN_KNOT = 6.0
@@ -287,10 +308,7 @@ def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found:
     xs, ys = [p.x for p in near], [p.y for p in near]
     mu = big.real / big.paper
     x0, y0, x1, y1 = grow((min(xs), min(ys), max(xs), max(ys)), margin * mu)
-    wide = (text_width(f"Detail 局部放大  {big}   μl = {mu:g} mm/mm", INFO_SIZE) + 3.0) * mu   # its caption
-    if x1 - x0 < wide:
-        x0, x1 = (x0 + x1 - wide) / 2, (x0 + x1 + wide) / 2
-    box = (x0, y0, x1, y1)
+    box = _captioned((x0, y0, x1, y1), big, mu)
 
     def inside(v: Any) -> bool:
         pts = [p for x in _items(v) for p in _anchors(x, ANGLE_RADIUS * mu)]

@@ -302,14 +302,17 @@ def _detail_first(scene: Scene, fig: Figure, sl: SheetLayout, page: PageSpec,
 def _detail_group(dwg: svgwrite.Drawing, fig: Figure, scale: Scale, box: Box, lang: str, name: str = "detail"
                   ) -> Any:
     """The detail view: a thin frame, its caption with the scale, and the mechanism's steps (ids ``detail-…``;
-    a second window's ``detail-2-…``: ``name``)."""
+    a second window's ``detail-2-…``: ``name``). The caption's baseline lies 4 mm below the frame's top: its
+    letters 1.5 mm in from the frame, as from its left side, and 1.5 mm clear above the drawing's texts, which may
+    reach :data:`~geomcon.render.detail.CAPTION_H` below the frame's top (200-13's αmax value touched a caption
+    set 0.5 mm lower)."""
     from .protocol import _line
     g = dwg.g(id=name)
     first = str(min(sd.number for sd in fig.groups))      # frame and caption show from the detail's first step
     rect = dwg.rect(insert=(fmt(box[0]), fmt(box[1])), size=(fmt(box[2] - box[0]), fmt(box[3] - box[1])),
                     fill="none", stroke=INK, stroke_width="0.25", id=f"{name}-frame")
     head = _line(dwg, f"{text('Detail', '局部放大', lang)}  {scale}   μl = {fig.view.mu:g} mm/mm", box[0] + 1.5,
-                 box[1] + 4.5, INFO_SIZE, INK, "detail-head")
+                 box[1] + 4.0, INFO_SIZE, INK, "detail-head")
     for el in (rect, head):
         el.attribs["data-step"] = first
         g.add(el)
