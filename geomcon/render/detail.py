@@ -142,9 +142,11 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
         mu = big.real / big.paper
         crowd = crowding(steps, values, keys, fig.view.mu)
         own = content_box(scene, [(n, s) for n, s in steps if s.key in keys], values)   # the mechanism's extent:
+        box = grow(own, FIG_MARGIN * mu)
+        named = within(steps, values, own, _captioned(box, big, mu), mu)
         for drawn in ((keys | guides, keys) if guides else (keys,)):     # its sliders' guides cut to it, when they fit
-            drawn = drawn | {k for k in crowd if own[0] <= values[k].x <= own[2] and own[1] <= values[k].y <= own[3]}
-            box = grow(own, FIG_MARGIN * mu)
+            drawn = drawn | named | {k for k in crowd
+                                     if own[0] <= values[k].x <= own[2] and own[1] <= values[k].y <= own[3]}
             got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
             if got is not None:
                 return got
@@ -219,6 +221,51 @@ def crowding(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: se
     reach = MIN_KNOT * mu
     return {s.key for _, s in steps if s.key not in keys and isinstance(values[s.key], Point) and not _grey(s)
             and any(1e-9 * reach < math.dist((values[s.key].x, values[s.key].y), j) < reach for j in joints)}
+
+
+def within(steps: Sequence[tuple[int, Step]], values: dict[str, Any], own: Box, box: Box, mu: float) -> set[str]:
+    """The keys of the named points (a label: a grey candidate's too) lying in model box ``own`` (the mechanism's
+    extent), and of the angle marks and dimensions lying wholly in model ``box`` (the window) drawn at ``mu`` model
+    mm a paper mm (an angle mark as far as its arc reaches, a dimension as far as its value beyond its line): the
+    mechanism's detail view draws them, as a window shows what lies in it (001-06b's and 004-02's M, C4, αmax and
+    004-02's H lay in the window at 1:2.5 and were left out, the main view's knot they are part of left untied).
+    A point in the window's margin is left out, as the lines it lies on are (001-16's P and candidates A2, A4
+    would float by the frame, alone).
+
+    >>> from geomcon.recipes.crank_rocker import construct
+    >>> sc = construct({"AB": 50, "BC": 70, "CD": 80, "AD": 90}).scene
+    >>> steps, _ = shown_steps(sc, None)
+    >>> values = sc.evaluate([s.key for _, s in steps])
+    >>> box = (-1.0, -1.0, 1.0, 1.0)
+    >>> sorted(within(steps, values, box, box, 0.5 / ANGLE_RADIUS)), sorted(within(steps, values, box, box, 0.2))
+    (['A', 'mark_theta'], ['A'])
+    >>> sorted(within(steps, values, (-1.0, -1.0, -0.5, -0.5), box, 0.5 / ANGLE_RADIUS))
+    ['mark_theta']
+    >>> {"B1", "mark_psi"} <= within(steps, values, (-1e3, -1e3, 1e3, 1e3), (-1e3, -1e3, 1e3, 1e3), 1.0)
+    True
+    """
+    out = set()
+    for _, s in steps:
+        xs = _items(values[s.key])
+        if all(isinstance(x, Point) for x in xs) and not s.label:
+            continue
+        if not all(isinstance(x, (Point, AngleMark, Dimension)) for x in xs):
+            continue
+        if all(isinstance(x, Point) for x in xs):
+            if all(own[0] <= p.x <= own[2] and own[1] <= p.y <= own[3] for p in xs):
+                out.add(s.key)
+            continue
+        pts = [p for x in xs for p in _anchors(x, ANGLE_RADIUS * mu)]
+        for d in (x for x in xs if isinstance(x, Dimension) and x.a != x.b):    # its line and value
+            out_ = (d.b - d.a).unit().perp() * (d.offset + math.copysign(DIM_TEXT * mu, d.offset))
+            pts += [d.a + out_, d.b + out_]
+        if pts and all(box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3] for p in pts):
+            out.add(s.key)
+    return out
+
+
+DIM_TEXT = 5.0
+"""Paper mm a dimension's value takes beyond its line."""
 
 
 def _placed(scene: Scene, upto: int | None, box: Box, mu: float, big: Scale,
@@ -390,4 +437,4 @@ def _anchors(x: Any, arc: float = 0.0) -> list[Point]:
 
 
 __all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "crowding", "detail_figure", "detail_scale", "knot",
-           "knot_detail", "mechanism_steps", "next_point_detail", "point_detail"]
+           "knot_detail", "mechanism_steps", "next_point_detail", "point_detail", "within"]
