@@ -136,3 +136,17 @@ def test_the_mechanisms_window_carries_the_marks_in_it(pid, marks):
     (_, _, _, texts), = windows(svg)
     written = ["".join(t.itertext()) for t in texts]
     assert all(m in written for m in marks), written
+
+
+def test_a_hinge_by_another_hinges_block_is_a_knot_read_in_a_window():
+    # 004-02 (K = 1.5) at 1:2: A* 2 mm off C1's block, θ's and αmax's arcs cut by the block, E's label on it, and
+    # no window (A* and C1 6.6 mm apart, two hinges no nearer than a knot's 6 mm): a window at 1:1 now
+    from geomcon.render.detail import BLOCK_KNOT, _off_block
+    from geomcon.scene.marks import Slider
+    from geomcon.geometry.primitives import Point
+    assert _off_block(Point(6.0, 3.0), Slider(Point(0, 0), Point(1, 0)), 1.0) == pytest.approx(math.hypot(2.0, 0.5))
+    assert abs(_off_block(Point(-12.0, 4.0), Slider(Point(0, 0), Point(1, 0)), 2.0) - 2.0) < 1e-9 and 2.0 < BLOCK_KNOT
+    svg = (GALLERY / "004-02_best_by_K_1_5.svg").read_text(encoding="utf-8")
+    (name, _, head, texts), = windows(svg)
+    assert "1:1" in "".join(head.itertext())
+    assert {"A*", "C1", "E", "C3", "θ=36.00°", "αmax=67.68°"} <= {"".join(t.itertext()) for t in texts}

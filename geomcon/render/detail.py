@@ -31,7 +31,7 @@ from .figure import Figure, build_figure, content_box, shown_steps
 from .labels import text_width
 from .shapes import Disc
 from .style import INFO_SIZE, PAPER, resolve_style
-from .draw import ANGLE_RADIUS
+from .draw import ANGLE_RADIUS, SLIDER
 from .view import FIG_MARGIN, Box, clip_interval, grow
 
 MIN_LINK = 10.0
@@ -313,7 +313,9 @@ def knot(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[st
     """The two joints of the mechanism (points among the steps ``keys`` drawn as a hinge's hollow circle: not a
     dot, not a grey candidate) drawn closest but apart on paper, as their distance on paper and the two points;
     None when every two are :data:`MIN_KNOT` apart or more (000-04's A0 beside its arm's pitch points, drawn as
-    dots, is no knot of hinges).
+    dots, is no knot of hinges). A hinge less than :data:`BLOCK_KNOT` off another's slider block is a knot too,
+    its distance given as the one that asks for the scale setting it :data:`BLOCK_KNOT` off (the block keeps its
+    size on paper): 004-02 (K = 1.5)'s A* and C1.
 
     >>> from geomcon.recipes.crank_rocker import construct
     >>> from geomcon.render.view import View
@@ -335,7 +337,34 @@ def knot(steps: Sequence[tuple[int, Step]], values: dict[str, Any], keys: set[st
             d = math.dist(a, b) / view.mu
             if 1e-3 < d < MIN_KNOT and (best is None or d < best[0]):
                 best = (d, (Point(*a), Point(*b)))
+    for blk in (x for _, s in steps if s.key in keys for x in _items(values[s.key]) if isinstance(x, Slider)):
+        for a in pts:                                   # a hinge by another's slider block
+            d = math.dist(a, (blk.at.x, blk.at.y)) / view.mu
+            gap = _off_block(Point(*a), blk, view.mu)
+            if d > 1e-3 and gap < BLOCK_KNOT:
+                eq = MIN_KNOT * d / (BLOCK_KNOT + d - gap)          # the scale that sets it BLOCK_KNOT off
+                if best is None or eq < best[0]:
+                    best = (eq, (Point(*a), blk.at))
     return best
+
+
+BLOCK_KNOT = 2.5
+"""Paper mm a hinge should lie off another hinge's slider block (8 × 5 mm at any scale): nearer, its pin, the block
+and their labels knot (004-02's A* 2 mm off C1's block at 1:2, the θ and αmax arcs there cut by the block)."""
+
+
+def _off_block(p: Point, blk: Slider, mu: float) -> float:
+    """Paper mm from ``p`` to the slider block ``blk`` drawn at full size (:data:`~.draw.SLIDER`), ``mu`` model mm
+    a paper mm.
+
+    >>> round(_off_block(Point(10.0, 0.0), Slider(Point(0, 0), Point(1, 0)), 1.0), 6)
+    6.0
+    """
+    n = math.hypot(blk.direction.x, blk.direction.y)
+    ux, uy = blk.direction.x / n, blk.direction.y / n
+    dx, dy = (p.x - blk.at.x) / mu, (p.y - blk.at.y) / mu
+    along, across = abs(dx * ux + dy * uy) - SLIDER[0] / 2, abs(-dx * uy + dy * ux) - SLIDER[1] / 2
+    return math.hypot(max(along, 0.0), max(across, 0.0))
 
 
 def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found: tuple[float, tuple[Point, Point]],
@@ -368,6 +397,8 @@ def knot_detail(scene: Scene, fig: Figure, steps: list[tuple[int, Step]], found:
         xs = _items(v)
         if all(isinstance(x, _CLIPPED) for x in xs):
             return any(_meets(x, box) for x in xs)
+        if all(isinstance(x, Guide) for x in xs):          # the guide a block runs on, cut to the window
+            return any(_meets(Segment(x.a, x.b), box) for x in xs)
         return inside(v)
 
     return _placed(scene, upto, box, mu, big, free, keep)
@@ -436,5 +467,5 @@ def _anchors(x: Any, arc: float = 0.0) -> list[Point]:
     return []
 
 
-__all__ = ["CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "crowding", "detail_figure", "detail_scale", "knot",
+__all__ = ["BLOCK_KNOT", "CAPTION_H", "KNOT_REACH", "MIN_KNOT", "MIN_LINK", "crowding", "detail_figure", "detail_scale", "knot",
            "knot_detail", "mechanism_steps", "next_point_detail", "point_detail", "within"]

@@ -29,6 +29,7 @@ from .labels import rich_runs, text_width
 from .placement import Request
 from .shapes import ArcP, Pen, Poly
 from .style import MARK_TEXT_SIZE, PAPER, Style
+from .view import clip_interval
 
 HATCH = 0.2     # width of hatch strokes
 MARK_DISTANCES = (0.0, 2.0, 4.5, 8.0, 12.0, 16.0, 22.0, 30.0)
@@ -406,10 +407,17 @@ still runs on its guide's hatched line."""
 
 def draw_guide(g: Guide, style: Style, ctx: Context) -> Drawn:
     """A guide: the surface the slider blocks run on (half a block below the line a–b on its ``side``),
-    hatched on that side."""
+    hatched on that side; cut to the view's paper box (less the hatch's depth)."""
     if g.a == g.b:
         return Drawn()
     a2, b2, n, u = _guide_surface(g, ctx.view)
+    x0, y0, x1, y1 = ctx.view.paper_box           # cut to the view, its hatch too (a detail window's at 1:1:
+    m = GUIDE_HATCH_DEPTH                         # 004-02's guide runs on far beyond the window about A*, C1)
+    cut = clip_interval(a2, (b2[0] - a2[0], b2[1] - a2[1]), (x0 + m, y0 + m, x1 - m, y1 - m), 0.0, 1.0)
+    if cut is None:
+        return Drawn()
+    if cut != (0.0, 1.0):
+        a2, b2 = (_add(a2, (b2[0] - a2[0], b2[1] - a2[1]), cut[0]), _add(a2, (b2[0] - a2[0], b2[1] - a2[1]), cut[1]))
     out = Drawn([Poly((a2, b2), pen(style))])
     length = math.hypot(b2[0] - a2[0], b2[1] - a2[1])
     slant = _unit(n[0] - u[0], n[1] - u[1])
