@@ -128,10 +128,11 @@ def test_every_named_point_in_a_window_is_drawn_and_labelled_there(pid):
                 assert labels[key] in written, (name, key, labels[key])
 
 
-@pytest.mark.parametrize("pid, marks", [("001-06b_crank_slider_redesign_K", ("αmax=49.08°",)),
+@pytest.mark.parametrize("pid, marks", [("001-06b_crank_slider_redesign_K", ("αmax=49.08°", "H=101.74")),
                                         ("004-02_best_by_K_1_2_offset_limit", ("αmax=48.45°", "H=100.00"))])
 def test_the_mechanisms_window_carries_the_marks_in_it(pid, marks):
-    # the main view's knot at 1:5 held αmax (at C3) and H (C1–C2): the window at 1:2.5 left both out
+    # the main view's knot at 1:5 held αmax (at C3) and H (C1–C2): the window at 1:2.5 left both out (001-06b's
+    # window grows to hold H's line and value)
     svg = (GALLERY / f"{pid}.svg").read_text(encoding="utf-8")
     (_, _, _, texts), = windows(svg)
     written = ["".join(t.itertext()) for t in texts]

@@ -142,14 +142,15 @@ def detail_figure(scene: Scene, fig: Figure, scale: Scale, free: Callable[[float
         mu = big.real / big.paper
         crowd = crowding(steps, values, keys, fig.view.mu)
         own = content_box(scene, [(n, s) for n, s in steps if s.key in keys], values)   # the mechanism's extent:
-        box = grow(own, FIG_MARGIN * mu)
-        named = within(steps, values, own, _captioned(box, big, mu), mu)
-        for drawn in ((keys | guides, keys) if guides else (keys,)):     # its sliders' guides cut to it, when they fit
-            drawn = drawn | named | {k for k in crowd
-                                     if own[0] <= values[k].x <= own[2] and own[1] <= values[k].y <= own[3]}
-            got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
-            if got is not None:
-                return got
+        plain = grow(own, FIG_MARGIN * mu)
+        near = {k for k in crowd if own[0] <= values[k].x <= own[2] and own[1] <= values[k].y <= own[3]}
+        for box in dict.fromkeys((_dimensioned(steps, values, own, plain, mu), plain)):   # its dimensions, if room
+            named = within(steps, values, own, _captioned(box, big, mu), mu)
+            for drawn in ((keys | guides, keys) if guides else (keys,)):  # its sliders' guides cut to it, when they fit
+                drawn = drawn | named | near
+                got = _placed(scene, upto, box, mu, big, free, lambda s, drawn=drawn: s.key in drawn)
+                if got is not None:
+                    return got
     if found is not None and big is not None:
         return knot_detail(scene, fig, steps, found, scale, big, free, upto)
     return point_detail(scene, fig, steps, scale, free, upto)
@@ -262,6 +263,26 @@ def within(steps: Sequence[tuple[int, Step]], values: dict[str, Any], own: Box, 
         if pts and all(box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3] for p in pts):
             out.add(s.key)
     return out
+
+
+def _dimensioned(steps: Sequence[tuple[int, Step]], values: dict[str, Any], own: Box, box: Box, mu: float) -> Box:
+    """Model ``box`` grown to hold, with a 4 mm margin (room for a mark's value below it), the line and value of
+    each dimension whose ends lie in the mechanism's extent ``own`` and which ``box`` does not hold yet (001-06b's
+    stroke H = C1C2, its value 10 mm below the guide at 1:2.5)."""
+    x0, y0, x1, y1 = box
+    for _, s in steps:
+        for d in _items(values[s.key]):
+            if isinstance(d, Dimension) and d.a != d.b and all(
+                    own[0] <= p.x <= own[2] and own[1] <= p.y <= own[3] for p in (d.a, d.b)):
+                n = (d.b - d.a).unit().perp()
+                if all(box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3]
+                       for p in (d.a + n * (d.offset + math.copysign(DIM_TEXT * mu, d.offset)),
+                                 d.b + n * (d.offset + math.copysign(DIM_TEXT * mu, d.offset)))):
+                    continue                                  # it fits already
+                out = n * (d.offset + math.copysign((DIM_TEXT + 4.0) * mu, d.offset))
+                for p in (d.a + out, d.b + out):
+                    x0, y0, x1, y1 = min(x0, p.x), min(y0, p.y), max(x1, p.x), max(y1, p.y)
+    return (x0, y0, x1, y1)
 
 
 DIM_TEXT = 5.0
