@@ -375,7 +375,7 @@ def _diagram_axes(sc: Scene, prog: Program, h: float, k: float, B0: Ref, O: Ref,
         if abs(x) > 1e-9 * scale:
             sc.given(f"tick_ds_{side}", Point(x, 0.0), label=f"{abs(x):.1f}", style="tick")
     F = sc.add("O_foot", foot_on_axis, O, visible=False)
-    sc.add("dim_e", lambda o, f, v: marks.Dimension(f, o, "e", abs(v), 0.06 * scale) if abs(v) > 1e-9 * scale
+    sc.add("dim_e", lambda o, f, v: marks.Dimension(f, o, "e", v, 0.06 * scale) if abs(v) > 1e-9 * scale
            else None, O, F, e, role=Role.ANNOTATION, style="dim", optional=True,
            caption=("e: O's distance from the follower's axis (O left of the axis: e > 0)",
                     "偏距 e:O 到导路的距离(O 在导路左侧为正)"))

@@ -228,6 +228,27 @@ RECIPE_NAMES: dict[tuple[str, str], AnswerName] = {
 """Printed names that differ by recipe (an arm's ω2 is not a coupler's; a cam follower's a is not a centre
 distance): looked up before :data:`NAMES`."""
 
+SIDES: dict[tuple[str, str], tuple[tuple[str, str], tuple[str, str]]] = {
+    ("cam.base_radius", "e"): (("axis right of O", "导路在 O 右侧"), ("axis left of O", "导路在 O 左侧")),
+}
+"""Signed answers whose Results line says the side in words, by recipe: (the words of a positive value, of a
+negative one), English and Chinese. 200-11 printed "e = −5.657 mm" under a dimension "e=5.66" with the side only in
+the Chinese convention "正值：导路在 O 右侧"; the line now reads "e = −5.657 mm, axis left of O", the dimension
+"e=−5.66" (signed as the recipe defines e)."""
+
+
+def side_words(answer: str, recipe: str, value: Any) -> tuple[str, str] | None:
+    """The side a signed ``answer`` of ``recipe`` lies on in words (English, Chinese); None for an answer without
+    a side (:data:`SIDES`) and for a value that prints as zero.
+
+    >>> side_words("e", "cam.base_radius", -5.657), side_words("e", "cam.base_radius", 0.0)
+    (('axis left of O', '导路在 O 左侧'), None)
+    """
+    sides = SIDES.get((recipe, answer))
+    if sides is None or isinstance(value, (bool, str, tuple, list)) or fixed(float(value)) == "0.000":
+        return None
+    return sides[float(value) < 0]
+
 UNITS = {"deg": "°", "": "", "bool": "", "point": "", "choice": "", "table": "", "interval": " mm"}
 """How a unit follows a number (any other unit: a space and the unit as the recipe names it, e.g. ``rad/s²``)."""
 
@@ -456,8 +477,13 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     'φ1 = -137.015°, φ2 = 163.500°'
     >>> result_line("double_crank", [], "interval[]", lang="both")
     'double-crank: none  双曲柄机构的杆长范围：无'
+    >>> result_line("e", -5.657, "mm", twin=True, lang="both", recipe="cam.base_radius")
+    'e = -5.657 mm, axis left of O (= analytic)  偏距（导路在 O 左侧）'
     """
     nm = name_of(answer, recipe, given)
+    side = side_words(answer, recipe, value)
+    if side is not None:                            # the words of a signed answer say its side, not the rule
+        nm = _n(nm.symbol, nm.en, f"{nm.zh.split('（')[0]}（{side[1]}）")
     is_bool = isinstance(value, bool) or unit == "bool" or (not nm.symbol and unit == "")
     if is_bool:
         value = bool(value)
@@ -475,6 +501,7 @@ def result_line(answer: str, value: Any, unit: str, *, twin: bool | None = None,
     else:
         head = f"{nm.en or nm.symbol}: {shown}" if is_bool else (
             f"{nm.symbol}: {shown}" if empty else _head(nm, value, unit, lang, answer, at))
+        head += f", {side[0]}" if side is not None else ""
     return head + _remarks(twin, printed, lang)
 
 
@@ -559,5 +586,5 @@ def brief_printed(printed: Sequence[tuple[str, str, bool]], lang: str) -> list[s
     return [f"{len(printed)} 个中 {n} 个存疑" if zh else f"{n} of {len(printed)} doubtful"]
 
 
-__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "flat", "FLAT_OFF_SHEET", "KNIFE_NAMES", "KNIFE_OFF_SHEET", "knife", "NAMES", "on_sheet", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed",
+__all__ = ["AnswerName", "brief_printed", "brief_warnings", "entries", "flat", "FLAT_OFF_SHEET", "KNIFE_NAMES", "KNIFE_OFF_SHEET", "knife", "NAMES", "on_sheet", "POINTS", "fixed", "RECIPE_NAMES", "name_of", "percent", "pivot_links", "result_line", "shown_printed", "side_words", "SIDES",
            "shown_value", "unit_text"]
