@@ -12,6 +12,7 @@ import shapely
 
 from geomcon.geometry.primitives import Point, Segment
 from geomcon.problems import load_problem
+from geomcon.render.draw import ANGLE_RADIUS
 from geomcon.render.shapes import ArcP, Poly
 from geomcon.render.symbols import HATCH
 from geomcon.scene.marks import AngleMark, Bearing, Ground, Guide, Rotation, Slider
@@ -103,9 +104,13 @@ def test_the_rotating_guide_bar_marks_theta(name):
     assert [runs(t) for g in fig.groups if g.key == "mark_theta" for t in g.texts] == [f"θ={m.value:.2f}°"]
 
 
-def _pie(arc: ArcP) -> shapely.Polygon:
-    """The sector an angle mark's arc marks: its vertex and the arc."""
+def _pie(arc: ArcP, own: bool = False) -> shapely.Polygon:
+    """The sector an angle mark's arc marks: its vertex and the arc; of an arc of the mark's ``own`` radius beyond
+    ANGLE_RADIUS, the band 1 mm either side of it (001-29's δ0 and δ0′ make up the whole turn about O inside the
+    offset circle: O's ground stands well inside their arcs, on none of them)."""
     n = max(4, int(abs(arc.sweep) / math.radians(10.0)) + 1)
+    if own and arc.r > ANGLE_RADIUS:
+        return shapely.LineString([arc.at(i / n) for i in range(n + 1)]).buffer(1.0)
     return shapely.Polygon([arc.c] + [arc.at(i / n) for i in range(n + 1)])
 
 
@@ -142,7 +147,8 @@ def test_no_ground_symbol_lies_in_an_angle_or_across_the_frame_line(name):
     line AD: away from its hinge a ground symbol meets no angle mark's sector (vertex to arc) and no frame
     line (links: :func:`test_drawing_defects.test_no_ground_symbol_crosses_a_link`)."""
     fig = figure(name)
-    pies = [_pie(sh) for g in fig.groups if any(isinstance(m, AngleMark) for m in _members(fig.values[g.key]))
+    pies = [_pie(sh, any(m.radius for m in ms)) for g in fig.groups
+            for ms in [[m for m in _members(fig.values[g.key]) if isinstance(m, AngleMark)]] if ms
             for sh in g.shapes if isinstance(sh, ArcP)]
     frames = [shapely.LineString(sh.pts) for g in fig.groups if " style-frame" in g.classes      # the frame AD,
               and isinstance(fig.values[g.key], Segment) for sh in g.shapes      # not a centre line through A

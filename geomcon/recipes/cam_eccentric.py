@@ -60,6 +60,11 @@ from .common import add_angle_mark, add_pivot, angle_deg, difference, length, ve
 
 UP = Point(0.0, 1.0)
 STATES = ("delta", "A_angle", "contact_angle")
+MARK_IN = 0.85
+"""The radius of the rise and return angles' arcs about O (δ0 from K0 to K1 against ω, δ0′ back), a part of the
+offset circle's: just inside it, their values find room outside the arcs (on the offset circle itself 001-29's
+values sat on their arcs, the cam's profile 5 mm beyond). Drawn on the sheet of the lowest position only (no state
+given: 001-29 asks the rise and return angles); a sheet of a given position is about its s and α (001-26, 001-27)."""
 
 GIVENS = (
     Quantity("R", "mm", "radius of the disc"),
@@ -386,7 +391,12 @@ def construct(g: Mapping[str, Any]) -> Construction:
     rise = sc.add("rise_angle", turned_against, O, ref0, ref1, sense, role=Role.MEASUREMENT, unit="deg",
                   caption=("Rise angle: ∠K0OK1 against ω" if e else f"Rise angle: ∠B0O{fb} against ω",
                            "推程运动角:逆 ω 方向量 ∠K0OK1" if e else f"推程运动角 ∠B0O{fb}(逆 ω)"))
-    sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
+    back = sc.add("return_angle", complement_turn, rise, role=Role.MEASUREMENT, unit="deg", visible=False)
+    if e and st is None:            # the cam's own angles on the sheet of its lowest position (no state asked)
+        sc.add("OK0", segment, O, ref0, style="construction", caption=("", ""))      # the rays the arcs end on
+        sc.add("OK1", segment, O, ref1, style="construction", caption=("", ""))
+        for key, a, b, sym, v in (("mark_rise", ref0, ref1, "δ0", rise), ("mark_return", ref1, ref0, "δ0′", back)):
+            add_angle_mark(sc, key, O, a, b, sym, v, MARK_IN * abs(e))
     B = sc.add("B", line_circle, axis, pitch, branch=Upper(), role=Role.RESULT, style="joint",
                label=contact, caption=(f"The follower meets the pitch curve at {contact}",
                                        f"导路交理论廓线于 {contact}(从动件位置)"))

@@ -304,14 +304,17 @@ def sector(m: AngleMark, view: Any, nested: int = 1) -> tuple[XY, ...]:
         return ()
     va, vb, _ = angle_rays(m)
     a0 = math.atan2(va.y, va.x)
-    phi = math.atan2(va.cross(vb), va.dot(vb))
+    phi = sweep(m, va, vb)
     if abs(phi) <= math.radians(0.2):
         return ()
     r = arc_radius(m, vb, phi, view, nested - 1)
     c = view.p(m.vertex)
     arc = ArcP(c, r + 1.0, -a0, -phi, Pen("#000", 0.1))
     n = max(4, int(abs(phi) / math.radians(10.0)) + 1)
-    return (c,) + tuple(arc.at(i / n) for i in range(n + 1))
+    if m.radius and r > ANGLE_RADIUS:           # a far arc of its own radius: the band along it, not the pie
+        inner = ArcP(c, r - 1.0, -a0, -phi, Pen("#000", 0.1))     # (001-29's δ0, δ0′ on the offset circle,
+        return tuple(arc.at(i / n) for i in range(n + 1)) + tuple(inner.at(1 - i / n) for i in range(n + 1))
+    return (c,) + tuple(arc.at(i / n) for i in range(n + 1))         # 15 mm about O, left O's ground no room)
 
 
 def _ground_at(c: XY, angle: float, style: Style, size: float = 1.0, half: float = 4.2) -> Drawn:
@@ -497,6 +500,22 @@ def angle_rays(m: AngleMark) -> tuple[Point, Point, bool]:
     return (-va if flip else va), vb, flip
 
 
+def sweep(m: AngleMark, va: Point, vb: Point) -> float:
+    """The turn (radians, counter-clockwise positive) the arc of ``m`` makes from ray ``va`` to ray ``vb``: the
+    smaller one, or the larger one the other way round when the mark's value is that reflex angle (> 180°,
+    360° less the angle between its rays: 001-29's rise angle δ0 = 197.40° from K0 to K1).
+
+    >>> reflex, plain = (AngleMark(Point(0, 0), Point(1, 0), Point(0, 1), "δ", v) for v in (270.0, 90.0))
+    >>> round(math.degrees(sweep(reflex, reflex.a, reflex.b)), 6), round(math.degrees(sweep(plain, plain.a, plain.b)), 6)
+    (-270.0, 90.0)
+    """
+    phi = math.atan2(va.cross(vb), va.dot(vb))
+    value = m.value if isinstance(m.value, (int, float)) else None
+    if value is not None and value > 180.0 and abs(360.0 - value - math.degrees(abs(phi))) < 1e-6 * value:
+        return phi - math.copysign(math.tau, phi)
+    return phi
+
+
 def arc_radius(m: AngleMark, vb: Point, phi: float, view: Any, nested: int = 0) -> float:
     """Arc radius on paper of mark ``m`` spanning ``phi`` radians towards ray ``vb``: the mark's own, else
     :data:`ANGLE_RADIUS`, shortened for short rays (rays shorter than 4 mm of paper only give a direction), enlarged
@@ -605,7 +624,7 @@ def draw_angle(m: AngleMark, style: Style, ctx: Context) -> Drawn:
         return Drawn()
     va, vb, flip = angle_rays(m)
     a0 = math.atan2(va.y, va.x)
-    phi = math.atan2(va.cross(vb), va.dot(vb))           # model, counter-clockwise positive
+    phi = sweep(m, va, vb)                               # model, counter-clockwise positive
     r = _radius(m, va, vb, phi, ctx)
     c = ctx.view.p(m.vertex)
     out = Drawn()
