@@ -63,6 +63,8 @@ EXAMPLES = [
     "along B_iC_i to the mean BC = 50.0033 mm",
     "'F.x' has 4 extremes per turn: K is not defined (stroke = largest maximum − smallest minimum)",
     "printed H = 100 is off the exact 99.8",
+    "offset on the wrong side: e = -10 puts the follower's axis left of O on a ccw cam, which makes the rise's "
+    "pressure angles larger (a ccw cam wants the axis right of O, a cw cam left)",
 ]
 HALF = re.compile(r"[\u4e00-\u9fff][,;:?!()]|[,;:?!()][\u4e00-\u9fff]")
 

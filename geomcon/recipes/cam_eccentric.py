@@ -162,7 +162,26 @@ def _validate(g: Mapping[str, Any]) -> list[str]:
     check_disc(g["R"], g["OA"])
     _state(g)
     twin_cam(g)
-    return []
+    return wrong_offset(g)
+
+
+def wrong_offset(g: Mapping[str, Any]) -> list[str]:
+    """The warning of a translating knife or roller whose offset lies on the wrong side for the cam's sense
+    (逆转右偏，顺转左偏: :func:`offset_correct`), a design fault the Results only answered "offset on the correct
+    side: no" (001-26, 001-29 cw); none for a centred, flat-faced or oscillating follower.
+
+    >>> wrong_offset({"e": -10, "rotation": "ccw", "follower": "knife"})
+    ["offset on the wrong side: e = -10 puts the follower's axis left of O on a ccw cam, which makes the rise's \
+pressure angles larger (a ccw cam wants the axis right of O, a cw cam left)"]
+    >>> wrong_offset({"e": 15, "rotation": "ccw", "follower": "roller"}), wrong_offset({"e": 0, "rotation": "cw"})
+    ([], [])
+    """
+    e, rot = g.get("e") or 0.0, g.get("rotation") or "ccw"
+    if not e or g.get("follower") == "flat" or g.get("a") is not None or offset_correct(e, 1.0 if rot == "ccw" else -1.0):
+        return []
+    return [f"offset on the wrong side: e = {e:g} puts the follower's axis {'right' if e > 0 else 'left'} of O on a "
+            f"{rot} cam, which makes the rise's pressure angles larger (a ccw cam wants the axis right of O, a cw cam "
+            "left)"]
 
 
 # ---------------------------------------------------------------------------- step operations

@@ -156,6 +156,10 @@ RULES: tuple[Rule, ...] = (
     (r"'(?P<q>.+?)' has (?P<n>\d+) extremes per turn: K is not defined \(stroke = largest maximum − smallest "
      r"minimum\)", "{q} 每转有 {n} 个极值：K 无定义（行程 = 最大的极大值 − 最小的极小值）", {}),
     (r"printed (?P<k>\S+) = (?P<v>\S+) is off the exact (?P<x>\S+)", "教材答案 {k} = {v} 与精确值 {x} 不符", {}),
+    (r"offset on the wrong side: e = (?P<e>\S+) puts the follower's axis (?P<side>left|right) of O on a (?P<rot>ccw|cw) "
+     r"cam, which makes the rise's pressure angles larger \(a ccw cam wants the axis right of O, a cw cam left\)",
+     "偏置方位错误：e = {e}，凸轮{rot}转动时导路在 O {side}，推程压力角因而增大（应逆转右偏、顺转左偏）",
+     {"side": {"left": "左侧", "right": "右侧"}.get, "rot": {"ccw": "逆时针", "cw": "顺时针"}.get}),
     (r"(?P<what>the coupler is not rigid|the input link does not keep its length|K is not one point of a rigid "
      r"coupler): (?P<seq>.+?) differ by (?P<s>\S+) mm(?P<why> .*)?",
      "{what}：{seq} 相差 {s} mm{why}", {"what": _what, "why": lambda s: _why(s.strip()) if s else ""}),
