@@ -328,7 +328,7 @@ def info_height(info: Sequence[str], width: float, warnings: Sequence[str] = ())
 def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, width: float,
                 warnings: Sequence[str] = (), steps: Sequence[int] | None = None, upto: int | None = None,
                 lang: str = "both", last: int | None = None, id_: str = "info",
-                part: tuple[int, int] | None = None) -> Any:
+                part: tuple[int, int] | None = None, see: int | None = None) -> Any:
     """The result lines (answers, checks) under the protocol, then the warnings (a printed answer that is
     doubtful, α beyond its allowance, a branch defect, an undercut …) under their own heading.
 
@@ -339,7 +339,10 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
     ``upto`` leaves out the lines of later steps, keeping their room so that every frame has the same page.
     ``id_`` names the group (``warnings`` for the warnings set apart from the results on sheet 1, ``info-2`` for
     results continued in a second box); ``part`` = (k, n) numbers the heading "Results (k/n)" when the results
-    are split over n boxes.
+    are split over n boxes. ``see``: the sheet whose results carry the Chinese words that brief lines leave off
+    (sheet 1's brief results in both languages, :meth:`geomcon.solve.Solution.figure_lines`): the Chinese heading
+    says so, "结果（释义见第 3 张）" (000-05, 100-07 printed English lines under "结果" with no word of where their
+    meanings were).
 
     Examples
     --------
@@ -351,8 +354,9 @@ def render_info(dwg: svgwrite.Drawing, info: Sequence[str], x: float, y: float, 
     g = dwg.g(id=id_)
     rows = list(zip(info, steps)) if steps is not None else [(s, None) for s in info]
     rows.sort(key=lambda r: r[1] or 0)
-    head = text("Results", "结果", lang) if part is None else text(f"Results ({part[0]}/{part[1]})",
-                                                                     f"结果（{part[0]}/{part[1]}）", lang)
+    where = "" if see is None else f"释义见第 {see} 张"
+    head = text("Results", f"结果（{where}）" if where else "结果", lang) if part is None else text(
+        f"Results ({part[0]}/{part[1]})", f"结果（{part[0]}/{part[1]}{'；' + where if where else ''}）", lang)
     blocks = ((rows, head, INK, "info"),
               ([(s, last) for s in warnings], text("Warnings", "警告", lang), HIGHLIGHT, "warning"))
     for block, heading, colour, cls in blocks:

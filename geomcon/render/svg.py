@@ -838,6 +838,7 @@ def fitted_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
     if detail is not None:
         for i, d in enumerate(more_details(scene, fig, sl, page, shown_info, shown_warnings, scale, upto, detail)):
             dwg.add(_detail_group(dwg, *d, lang, "detail" if i == 0 else f"detail-{i + 1}"))
+    see = 2 + int(apart) if shown_info is not info and lang == "both" else None    # brief: the words are there
     if sl.info_here and sl.pieces:
         n_info, parts = 0, sum(bool(pc.rows) for pc in sl.pieces)
         for pc in sl.pieces:
@@ -846,9 +847,10 @@ def fitted_sheets(scene: Scene, *, upto: int | None = None, viewbox: Box | None 
             n_info += bool(rows)
             name = "warnings" if not rows else "info" if n_info == 1 else f"info-{n_info}"
             dwg.add(render_info(dwg, rows, pc.x, pc.y, pc.w, shown_warnings if pc.warnings else (), at, upto, lang, last,
-                                id_=name, part=(n_info, parts) if rows and parts > 1 else None))
+                                id_=name, part=(n_info, parts) if rows and parts > 1 else None, see=see))
     elif sl.info_here and (info or warnings):
-        dwg.add(render_info(dwg, shown_info, *sl.info_at, sl.info_w, shown_warnings, info_steps, upto, lang, last))
+        dwg.add(render_info(dwg, shown_info, *sl.info_at, sl.info_w, shown_warnings, info_steps, upto, lang, last,
+                            see=see))
     dwg.add(title_block(dwg, sheet, block))
     out = [svg_string(dwg)]
     if apart:
