@@ -93,7 +93,7 @@ def test_json_keeps_the_ascii_hyphen():
 def test_the_cycle_notes_print_max_and_min_with_the_same_decimals():
     """002-01's φDC panel said "max 92.91°" beside "min -0.2698°" (each to 4 significant digits of itself)."""
     texts = _texts((GALLERY / "002-01_conveyor_cycle_motion.svg").read_text(encoding="utf-8"))
-    assert "max 92.91° at φ = 231.650°" in texts and "min −0.27° at φ = 348.743°" in texts
+    assert "max 92.91° at φ = 231.65°" in texts and "min −0.27° at φ = 348.74°" in texts
 
 
 @pytest.mark.parametrize("raw, unit, value", [("−3.545 mm", "mm", -3.545), ("−0.27°", "deg", -0.27),
@@ -123,3 +123,18 @@ def test_the_terminal_keeps_the_ascii_hyphen(capsys):
     assert main(["solve", str(ROOT / "problems" / "000-04_slotter_cam_psi0.toml")]) == 0
     out = capsys.readouterr().out
     assert "ρa,min = -3.545 mm" in out and "textbook 13.59, -28.78 %" in out and "\u2212" not in out
+
+
+def test_an_extreme_s_note_gives_value_and_angle_with_the_same_decimals():
+    """000-09 printed "min −5.55 mm at φ = 115.771°" (hlook11m's review): a note's crank angle has 2 decimals, as
+    every angle a drawing marks, and so has a value of the usual size beside it."""
+    import re
+    from pathlib import Path
+    gallery = Path(__file__).resolve().parents[1] / "gallery"
+    notes = [re.sub(r"<[^>]*>", "", t) for f in sorted(gallery.glob("*_cycle_motion*.svg"))
+             for t in re.findall(r'<text class="extreme"[^>]*>(.*?)</text>', f.read_text(encoding="utf-8"), re.S)]
+    assert len(notes) >= 8
+    for n in notes:
+        m = re.fullmatch(r"(?:max|min) \S+ ?\S* at φ = \d+\.(\d+)°", n)
+        assert m and len(m[1]) == 2, n
+    assert any(re.fullmatch(r"min −5\.55 mm at φ = 115\.77°", n) for n in notes)

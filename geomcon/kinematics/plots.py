@@ -202,10 +202,14 @@ def _panel(dwg, texts: Texts, r: CycleResult, q: str, y0: float, x0: float, x1: 
             continue
         g.add(dwg.circle((round(X(at), 3), round(Y(v), 3)), r=0.8, fill=RED))
         if base == q:
-            note = f"{s.kind} {extreme_text(v, big)}{'' if unit == '°' else ' '}{unit} at φ = {at:.3f}°"
+            note = f"{s.kind} {extreme_text(v, big)}{'' if unit == '°' else ' '}{unit} at φ = {at:.{PHI_PLACES}f}°"
             tx, ty, a = _note_spot(texts, note, X(at), Y(v), (LEFT, y0, LEFT + PLOT_W, y0 + PANEL), xs, ys)
             g.add(text_el(note, tx, ty, NOTE, RED, anchor=a, cls="extreme"))
 
+
+PHI_PLACES = 2
+"""Decimals of the crank angle an extreme's note gives, as a drawing's angle marks print an angle (θ=12.51°): 000-09
+printed "min −5.55 mm at φ = 115.771°", the value to 2 decimals and its angle to 3."""
 
 WARN_LINE = 1.4 * NOTE
 """From one warning line to the next (mm on paper)."""
