@@ -19,6 +19,7 @@ from ..errors import NotAMechanism, ProblemError
 from ..geometry import Point, segment
 from ..scene import Role, Scene
 from ..tolerance import REL_TOL
+from ..render.results import name_of
 from .base import Construction, Quantity, Recipe
 
 KIND_NAMES = {"crank_rocker": ("crank-rocker", "曲柄摇杆"), "double_crank": ("double-crank", "双曲柄"),
@@ -174,7 +175,10 @@ def construct(g: Mapping[str, Any]) -> Construction:
         answers[name] = name
         y = -row * i
         if sc.drawing:
-            sc.add(f"row{i}", segment, sc.add(f"row{i}_0", Point, 0.0, y, label=en, style="row-start",
+            # named as the Results name it, in both languages (001-02 printed "not a mechanism" beside
+            # "immovable 不能运动的杆长范围", English only on a bilingual sheet)
+            sc.add(f"row{i}", segment, sc.add(f"row{i}_0", Point, 0.0, y, label=f"{name_of(name).symbol} {zh}",
+                                              style="row-start",
                                               role=Role.ANNOTATION), sc.add(f"row{i}_1", Point, top, y, visible=False),
                    style="given", role=Role.ANNOTATION)     # a number line, not a fixed link: drawn dash-dot
             # ("frame"), the green range bars along it were cut away as construction over a frame line
@@ -185,7 +189,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
                            label="∞" if hi_ == math.inf else f"{hi_:g}")
                 sc.add(f"{name}_{k}", segment, p, q, style="admissible", role=Role.RESULT)
     if sc.drawing:                           # the number lines' quantity, at the top row's end
-        sc.add("axis_name", Point, top, 0.0, label=f"{x} (mm)", style="row-end", role=Role.ANNOTATION)
+        sc.add("axis_name", Point, top, 0.0, label=f"{x} (mm) 杆长", style="row-end", role=Role.ANNOTATION)
     ends = ends_of(edges, runs)
     named = [(e, _kind({**known, x: e}, frame)[0]) for e in ends]
     sc.add("boundaries", boundaries_of, frame, x, na, a, nb, b, nc, c, *case_refs, role=Role.MEASUREMENT, unit="mm",
