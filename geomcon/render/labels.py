@@ -126,6 +126,20 @@ def rich_runs(text: str) -> Runs:
     return tuple(out)
 
 
+def subscript_commas(text: str) -> frozenset[int]:
+    """Where ``text`` holds a comma inside a subscript, as :func:`rich_runs` prints it (ω2,max, ρa,min, rr,max,
+    αmax,turn, r0,ρ, a candidate's C2,3): no punctuation, kept ASCII in a Chinese text
+    (:func:`geomcon.render.zh.zh_punct`), one rule with the typesetting's.
+
+    >>> sorted(subscript_commas("ω2,max, r0,ρ 与 C2,4")), subscript_commas("B1, B2")
+    ([2, 10, 17], frozenset())
+    """
+    if "," not in text:
+        return frozenset()
+    return frozenset(i for m in _SUB.finditer(text) if "," in m.group(0)
+                     for i in range(m.start(), m.end()) if text[i] == ",")
+
+
 def plain_text(text: str) -> str:
     """A caption as plain text (a terminal's): its runs joined, subscripts inline as the Results lines print
     them (``γmin``).

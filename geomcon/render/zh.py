@@ -11,15 +11,14 @@ from __future__ import annotations
 import functools
 import re
 
+from .labels import subscript_commas
+
 
 def _cjk(ch: str) -> bool:
     o = ord(ch)
     return 0x2E80 <= o <= 0x9FFF or 0xF900 <= o <= 0xFAFF or 0x3000 <= o <= 0x303F or 0xFF00 <= o <= 0xFFEF
 
 
-_SUB_COMMA = re.compile(r"(?<=[A-Za-z0-9]),(?=(?:min|max|turn)(?![A-Za-z]))|(?<=r0),(?=[αρ])")
-"""A comma inside a subscript, as :func:`.labels.rich_runs` prints it (ω2,max, ρa,min, rr,max, αmax,turn, r0,ρ):
-no punctuation, kept in a Chinese text (hlook11m: 001-31b's "ω2，max：取 ε2 = 0 处")."""
 
 
 _FULL = {",": "，", ";": "；", ":": "：", "(": "（", ")": "）", "?": "？", "!": "！"}
@@ -31,7 +30,8 @@ def zh_punct(s: str) -> str:
     a Chinese character becomes ，；：？！ (in a text holding Chinese, a comma, semicolon or colon followed by
     neither a space nor a digit too: ``s–δ:δ 轴``), brackets around Chinese text or opened right after a
     Chinese ideograph （）; a formula keeps its ASCII signs (``K = (180° + θ)/(180° − θ)``, ``1:2``, ``[1, 2]``), a subscript its comma
-    (:data:`_SUB_COMMA`: ``ω2,max``).
+    (``ω2,max``, a candidate's ``C2,4``: where :func:`.labels.rich_runs` sets it in a subscript,
+    :func:`.labels.subscript_commas`; hlook11m: 001-31b printed "ω2，max：取 ε2 = 0 处").
     Remembered: a caption is set in the protocol, the step captions and the player, in every layout tried.
 
     >>> zh_punct("在机架线上取 D,使 AD = 90")
@@ -44,11 +44,13 @@ def zh_punct(s: str) -> str:
     '曲柄销 B1（重叠共线）与 B2（拉直共线），AB = (AC远 − AC近)/2'
     >>> zh_punct("ω2,max:取 ε2 = 0 处;ρa,min,rr,max 与 r0,ρ")         # a subscript's comma is no punctuation
     'ω2,max：取 ε2 = 0 处；ρa,min，rr,max 与 r0,ρ'
+    >>> zh_punct("取 C2,4 为解,B1,B2 为铰链")        # a candidate's two indices too (C2,4 as its label prints)
+    '取 C2,4 为解，B1，B2 为铰链'
     """
     out = list(s)
     stack: list[int] = []
     chinese = any(_cjk(c) for c in s)
-    keep = {m.start() for m in _SUB_COMMA.finditer(s)} if "," in s else ()
+    keep = subscript_commas(s)
     for i, ch in enumerate(s):
         if ch == "(":
             stack.append(i)
