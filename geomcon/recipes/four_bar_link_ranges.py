@@ -168,7 +168,7 @@ def construct(g: Mapping[str, Any]) -> Construction:
     top = 1.15 * edges[-1]
     for i, (name, (en, zh)) in enumerate(list(KIND_NAMES.items()) + [("grashof_ranges", ("Grashof", "满足杆长条件"))]):
         flat = [v for iv in runs[name] for v in iv]
-        sc.add(name, _intervals, *flat, role=Role.MEASUREMENT,
+        sc.add(name, _intervals, *flat, role=Role.MEASUREMENT, unit="interval[]",
                caption=(f"{en}: {x} in " + (", ".join(interval_text(*iv) for iv in runs[name]) or "no range"),
                         f"{zh}:" + (f"{x} 取 " + "、".join(interval_text(*iv) for iv in runs[name]) if runs[name]
                                     else f"{x} 无取值范围")))         # not "BC 取 无" (BC takes: none)

@@ -303,6 +303,9 @@ def _units(s: str) -> list[str]:
 
 _OPERATORS = frozenset("=+−×÷≤≥<>≈≠") | {"-", "/"}
 """Operators set between spaces: one never starts or ends a line ("δ = 5°", "K + 1" stay together)."""
+_FUNCTION_END = re.compile(r"(?<![A-Za-z])(?:arc)?(?:cos|sin|tan|cot) $")
+"""A token ending in a function's name: it stays with its argument ("cos α", 001-06b's Chinese step 32 broke as
+"…：cos" / "α = √(g(2BC − g))/BC")."""
 
 
 def _glued(tokens: list[str]) -> list[str]:
@@ -321,6 +324,8 @@ def _glued(tokens: list[str]) -> list[str]:
     (['360° = 450 mm ', '(on sheet ', '2)'], ['（δ = 5° 处）'])
     >>> _glued(["见", "第 ", "2 ", "张）"])                   # an ordinal stays with its number
     ['见', '第 2 张）']
+    >>> _glued(["最大）：cos ", "α ", "= ", "1"]), _glued(["across ", "α"])     # a function with its argument
+    (['最大）：cos α = 1'], ['across ', 'α'])
     """
     out: list[str] = []
     glue = False
@@ -329,6 +334,7 @@ def _glued(tokens: list[str]) -> list[str]:
             out[-1] += t
             glue = True
         elif glue or (out and (t[:1] in _NO_START                  # each test behind a test of one character
+                               or (out[-1][-2:] in _FUNCTION_TAILS and _FUNCTION_END.search(out[-1]))
                                or (not _OPEN_SET.isdisjoint(out[-1]) and _opens_short(out[-1]))
                                or ("）" in t and _closes_short(t))
                                or (not _CLOSE_SET.isdisjoint(t) and _closes_pair(out[-1], t))
@@ -364,6 +370,8 @@ def _unit_after_number(before: str, tok: str) -> bool:
     return word.rstrip(_TRAIL) in _UNITS
 
 
+_FUNCTION_TAILS = frozenset(("s ", "n ", "t "))
+"""The last two characters of a token :data:`_FUNCTION_END` may match (a cheap test first)."""
 _OPEN_ANY = "([（［【「『《“‘"
 _OPEN_SET = frozenset(_OPEN_ANY)
 _CLOSE_ANY = ")]）］】」』》”’"

@@ -60,6 +60,17 @@ def format_value(value: Any, unit: str) -> str:
     return f" = {value:.3f}{unit_text(unit)}"
 
 
+def prints_value(unit: str) -> bool:
+    """Whether a measured step of ``unit`` has its value appended (:func:`format_value`: a number): not a list, an
+    interval, a point, a yes/no or a word — 001-02's "crank-rocker: BC in [190, 290]" kept room for a value it
+    never printed and broke as "BC in" / "[190, 290]".
+
+    >>> prints_value("mm"), prints_value(""), prints_value("interval[]"), prints_value("deg[]"), prints_value("bool")
+    (True, True, False, False, False)
+    """
+    return not unit.endswith("[]") and unit not in ("bool", "choice", "point", "table")
+
+
 @functools.lru_cache(maxsize=64)
 def value_reserve(unit: str) -> float:
     """The room kept at the end of a measured step's last line for its value: :data:`VALUE_RESERVE` (a length
@@ -121,7 +132,8 @@ def _raw(scene: Scene, lang: str, notes: Mapping[str, tuple[str, str]] | None = 
         zh = zh_punct(zh) if zh else zh
         measured = s.role == Role.MEASUREMENT or s.unit in ("mm", "deg")
         first = (zh or en or s.key) if lang == "zh" else (en or s.key)
-        first_lines = wrap(first, COL_W - NUM_W, PROTO_SIZE, last_reserve=value_reserve(s.unit) if measured else 0.0)
+        reserve = value_reserve(s.unit) if measured and prints_value(s.unit) else 0.0
+        first_lines = wrap(first, COL_W - NUM_W, PROTO_SIZE, last_reserve=reserve)
         if measured and len(first_lines) > 1 and not first_lines[-1]:
             first_lines[-1] = _lhs(first_lines[-2])
         zh_lines = wrap(zh, COL_W - NUM_W, PROTO_ZH_SIZE) if zh and lang == "both" else []
