@@ -82,7 +82,8 @@ def test_link_range_rows_are_headed_by_their_names_like_a_table():
     svg = (GALLERY / "001-02_four_bar_link_ranges.svg").read_text(encoding="utf-8")
     rows = [(float(x0), float(y)) for x0, y in re.findall(r'id="step-row\d+"><path class="ink" d="M([\d.]+) ([\d.]+)L[\d.]+ \2"', svg)]
     assert len(rows) == 5                  # the rows are number lines (style given), no longer dash-dot frames
-    names = ("crank-rocker", "double-crank", "double-rocker", "not a mechanism", "Grashof")
+    names = ("crank-rocker 曲柄摇杆", "double-crank 双曲柄", "double-rocker 双摇杆", "immovable 不能运动",
+             "Grashof 满足杆长条件")               # as the Results name them, in both languages (session m)
     rights = []
     for name in names:
         m = re.search(r'font-size="([\d.]+)"[^>]*text-anchor="middle" x="([\d.]+)"[^>]*y="([\d.]+)"><tspan>'
