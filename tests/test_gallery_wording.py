@@ -170,4 +170,4 @@ def test_every_full_size_run_sits_on_its_line_s_baseline():
 def test_the_link_range_chart_names_its_quantity(sheets):
     """001-02's number lines named no variable (the title says "coupler length BC"; the chart did not): the top
     row's end reads "BC (mm)", as an s–δ chart names its δ axis."""
-    assert "BC (mm)" in sheets["001-02_four_bar_link_ranges.svg"]
+    assert "BC (mm) 杆长" in sheets["001-02_four_bar_link_ranges.svg"]
