@@ -19,19 +19,20 @@ from geomcon.render.labels import rich_runs
 from geomcon.render.placement import LABEL_REACH
 from geomcon.render.symbols import angle_rays
 from geomcon.render.shapes import ArcP, Disc, Poly, Text, obstacle
-from geomcon.render.page import PageSpec
 from geomcon.render.svg import _not_diagram, diagram_apart, place_figure
 from geomcon.scene.marks import AngleMark, Dimension, Ground, Guide, Rotation, Slider
 from geomcon.solve import solve
+from gallery_pages import page_of
 
 PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
 
 
 @functools.lru_cache(maxsize=None)
 def figure(name: str) -> Figure:
-    """The full figure of a bundled problem, drawn as its sheet 1 draws it (default page: A4 landscape)."""
+    """The full figure of a bundled problem, drawn as its gallery sheet 1 draws it (on the gallery's page: A4,
+    landscape or portrait, :mod:`gallery_pages`)."""
     sol = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml"))
-    sc, page = sol.drawing_scene, PageSpec()
+    sc, page = sol.drawing_scene, page_of(name)
     info, warnings = sol.figure_lines(page.lang), sol.warnings
     sl, scale, view = place_figure(sc, page, info, warnings)
     apart = diagram_apart(sc, page, info, warnings, scale)      # a cam alone, its s–δ diagram on sheet 2
@@ -459,6 +460,9 @@ MARK_LEADERS_ACROSS = {
              "is reached without crossing the profile",
     "200-0": "α′max or αmax at the contact point: the value outside the cam is reached across the profile",
     "200-1": "α′max or αmax at the contact point: the value outside the cam is reached across the profile",
+    "001-24": "αmax at the contact point B1* (the cam at 1:1 on the gallery's portrait sheet): as 200-0's",
+    "001-31_": "α at the roller's centre B (at 1:1 on the gallery's portrait sheet): the value outside the roller is "
+               "reached across its circle",
     "200-20": "ψ0 between the two binding arms: any place clear of the construction wedge is across an arm",
     "001-18": "αmax between B2C2 and the guide: the one clear place is across B2C2",
     "001-06": "αmax between B2C2 and the guide at C3: its 20 mm value has no room under B2C2 (it covered C1's "

@@ -23,9 +23,10 @@ from geomcon.render.joined import parts_rivalled, reads_back, spans  # noqa: E40
 from geomcon.render.placement import LABEL_REACH, Request, nearer_rival  # noqa: E402
 from geomcon.render.shapes import SUB_DROP, Text  # noqa: E402
 
-JOINED = ["004-02_best_by_K_1_5", "004-03_crank_rocker_best_by_K", "001-06b_crank_slider_redesign_K",
-          "001-29_eccentric_roller_offset_cw", "001-05c_shaper_stroke_from_lever", "100-01_four_bar_three_positions"]
-"""Figures with labels naming several points, near (", ") and coinciding (" = "), subscripts in them."""
+JOINED = ["004-02_best_by_K_1_5", "001-29_eccentric_roller_offset_cw", "001-05c_shaper_stroke_from_lever",
+          "100-01_four_bar_three_positions"]
+"""Figures with labels naming several points, near (", ") and coinciding (" = "), subscripts in them (004-03 and
+001-06b printed "C1, C2", "M, C4" until the gallery drew them larger on A4 portrait, where each point has its own)."""
 
 
 def _parts(fig) -> list[list[tuple[str, Text]]]:

@@ -10,10 +10,10 @@ import pytest
 
 from geomcon.problems import load_problem
 from geomcon.render.figure import Figure, build_figure
-from geomcon.render.page import PageSpec
 from geomcon.render.shapes import Poly
 from geomcon.render.svg import place_figure
 from geomcon.solve import solve
+from gallery_pages import page_of
 
 PROBLEMS = sorted((Path(__file__).parent.parent / "problems").glob("*.toml"))
 TOL = 0.05
@@ -23,7 +23,7 @@ TOL = 0.05
 @functools.lru_cache(maxsize=None)
 def figure(name: str) -> Figure:
     sol = solve(load_problem(Path(__file__).parent.parent / "problems" / f"{name}.toml"))
-    sc, page = sol.drawing_scene, PageSpec()
+    sc, page = sol.drawing_scene, page_of(name)          # the gallery's page (A4, landscape or portrait)
     _, _, view = place_figure(sc, page, sol.figure_lines(page.lang), sol.warnings)
     return build_figure(sc, None, view.box, view.origin, mu=view.mu)
 
