@@ -64,19 +64,21 @@ def test_gallery_values_are_off_the_construction_lines_that_crossed_them():
         assert not crossed, (name, crossed)
 
 
-LABELS_ON_THIN_LINES = 120
+LABELS_ON_THIN_LINES = 92
 """Points' labels whose box crosses another step's given or construction line (a guide, a base circle, a grey
 construction line or arc), over the gallery's sheet-1 figures, 2026-11-27 l: no rule counted them before (the
 gallery's text-across rule reads links, blocks, grounds and pins; the marks' values are counted in
-tests/test_drawing_defects.py). 000-02's "G" on the guide is one: every place clear of the guide within 3 mm of G
-lies nearer T or M (2 mm away) than G. The allowance may only shrink; it grew once, by 2 (session m, hnit11o):
+tests/test_drawing_defects.py). The allowance may only shrink; it grew once, by 2 (session m, hnit11o):
 001-29's rise and return angles, asked and now marked about O inside the offset circle, took the place of its
 "D = K0" label above K0 (ccw and cw); "D" now crosses the offset circle's grey arc below K0 (the arcs' radius
 between A's hinge, 10 mm from O, and the offset circle, 15 mm, leaves it no clear place; the radii tried from 0.8 to
-1.2 of e each cost the same or more)."""
+1.2 of e each cost the same or more). 120 then, read on A4 landscape; 95 on each figure's gallery page (19 of them
+portrait, drawn larger). 92 (session m, hlab11o): a label still on such a line with its leader goes farther off,
+past its near points, to a clear place (tests/test_render_far_labels.py: 000-02's G off the ram's guide, 001-03's
+C″, 200-12's K1*)."""
 
-LABEL_THIN_CROSSINGS = 162
-"""The (label, step) pairs of :data:`LABELS_ON_THIN_LINES`."""
+LABEL_THIN_CROSSINGS = 125
+"""The (label, step) pairs of :data:`LABELS_ON_THIN_LINES` (162 allowed before, 128 found on the gallery's pages)."""
 
 
 def test_labels_crossing_given_and_construction_lines_do_not_grow():

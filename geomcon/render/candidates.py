@@ -245,7 +245,13 @@ def rivalled(reqs: Sequence[Request], starts: np.ndarray, counts: np.ndarray, bo
     first = np.flatnonzero(local % k == 0)                                  # each box's own anchor
     own = d[first]
     d[first] = math.inf
-    out[box[first]] = np.minimum.reduceat(d, first) < own
+    rival = np.minimum.reduceat(d, first)
+    near = rival < own
+    reach = [reqs[i].rival_reach for i in which]
+    if any(r < math.inf for r in reach):        # a led box rivalled only by a point this near it
+        reach, lead = np.array(reach)[text[first]], np.array([reqs[i].lead for i in which])[text[first]]
+        near &= (own <= lead) | (rival <= reach)
+    out[box[first]] = near
     return out
 
 

@@ -650,6 +650,14 @@ LED_GAIN = 1.5
 """How much better (score) a point's label must be farther off, with a leader, to leave its point when it is not
 clear there either: more than one thin line fewer crossed."""
 
+LED_RIVAL_REACH = 5.0
+"""A point's label still on a given or construction line by its point and with its leader (:func:`_led`) is tried
+once more farther off with a leader (:meth:`.placement.Placer.past_rivals`), where only a point within this (paper
+mm) of its box rivals it, not any nearer it than its own: there the leader says whose it is. 000-02's G sat on the
+ram's guide, 2 mm from T and M: every clear place with a leader lay nearer M than G (6 mm from M and more). Not a
+label's reach (:data:`.placement.LABEL_REACH`, 3 mm): at 3, 100-04's C1 went beside C′'s label, 3.8 mm from C′, and
+read as a pair with it."""
+
 LED_DISTANCES = (0.0, 1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0)
 """Distances beyond its gap at which a row's number with no room by its point is tried (it gets a leader)."""
 
@@ -738,6 +746,7 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                   SOFT if g.layer == "construction" else 0.0, w, w, w >= 2.0 and g.layer != "points")
                  for g in groups for sh in g.shapes for w in (_weight(g, sh),)]
     mech = [g.layer in HARD for g in groups for _ in g.shapes]      # the mechanism's: links, pins, grounds, blocks
+    drawn_lines = [g.layer in ("given", "construction") for g in groups for _ in g.shapes]
     obstacles += [(shapely.Polygon(area), g.key, 0.0, KEEP_OUT, KEEP_OUT, False)
                   for g, (drawn, _) in zip(groups, pending) for area in drawn.keep_out]
     thin = lean([o[0] for o in obstacles])      # a cam's long curves by a tenth of their segments
@@ -759,6 +768,23 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
             return any(owners[i] != key for i in tree.query(box, predicate="intersects").tolist())
         found = tree.query(box, predicate="dwithin", distance=near).tolist()
         return any(owners[i] != key and (halo[i] or tree.geometries[i].intersects(box)) for i in found)
+    lines: list[Any] = []                       # a tree of the given and construction lines, when asked
+
+    def on_lines(boxes: np.ndarray, key: str) -> np.ndarray:
+        """Whether each of ``boxes`` (of step ``key``'s text) crosses another step's given or construction line."""
+        if not lines:
+            keep = [o for o, m in zip(obstacles, drawn_lines) if m and o[3] > 0.0]
+            geoms = np.empty(len(keep), dtype=object)
+            geoms[:] = [o[0] for o in keep]
+            lines.append((shapely.STRtree(geoms), np.array([o[1] for o in keep] + [""], dtype=object)[:-1]))
+        tree, owners = lines[0]
+        i, j = tree.query(boxes, predicate="intersects")
+        out = np.zeros(len(boxes), dtype=bool)
+        out[i[owners[j] != key]] = True
+        return out
+    def on_line(box: Any, key: str) -> bool:
+        """Whether ``box`` (of step ``key``'s text) crosses another step's given or construction line."""
+        return bool(on_lines(np.array([box], dtype=object), key)[0])
     def free(boxes: np.ndarray, key: str) -> np.ndarray:
         """Whether each of ``boxes`` (axis-parallel, of step ``key``'s text) lies in the frame, off the texts
         placed so far and off every other step's link, ground, block and pin, as :func:`meets_hard` reads them
@@ -836,6 +862,14 @@ def _place_texts(view: View, groups: list[StepDrawing], pending: list[tuple[Draw
                     alt_score > score and meets_hard(t.request.box(*centre), g.key, 0.0)
                     and not meets_hard(led.request.box(*alt), g.key)):
                 t, centre, score = led, alt, alt_score
+            if (score < 0.0 and own.request.rivals and not own.request.parts
+                    and on_line(t.request.box(*centre), g.key)):
+                # still on a given or construction line: farther off, past the near points
+                far = _clear(placer.past_rivals(led.request, g.key, LED_RIVAL_REACH, max(0.0, score + 0.3)),
+                             lambda boxes: free(boxes, g.key) & ~on_lines(boxes, g.key))
+                alt, alt_score = placer.best(far, g.key) if far is not None else (centre, -math.inf)
+                if alt_score >= 0.0 and alt_score > score + (0.3 if alt_score >= CROWDED else LED_GAIN):
+                    t, centre, score = replace(led, request=far), alt, alt_score    # only a place clear of every line
             if score < 0.0 and meets_hard(t.request.box(*centre), g.key):
                 half = _between(own, lambda boxes: free(boxes, g.key))   # still on a link, ground,
                 if half is not None:            # block or pin: the slots between its leader form's directions
@@ -912,6 +946,21 @@ def _nudged(r: Request, centre: tuple[float, float], away: tuple[float, float]) 
     keep = (k >= r.gap - 1e-9) & (k <= hi)
     spots = tuple(zip(cx[keep].tolist(), cy[keep].tolist()))
     return replace(r, candidates=spots) if spots else None
+
+
+def _clear(r: Request | None, clear: Callable[[np.ndarray], np.ndarray]) -> Request | None:
+    """``r`` (explicit candidates with their penalties, or None) with only the places ``clear`` keeps (a box of
+    them touching a link, a ground, a block, a pin, a text placed or a thin line scores below 0), None when none is
+    left: what :meth:`.placement.Placer.best` need not measure."""
+    if r is None:
+        return None
+    boxes = np.empty(len(r.candidates), dtype=object)
+    boxes[:] = [r.box(*c) for c in r.candidates]
+    keep = clear(boxes).tolist()
+    if not any(keep):
+        return None
+    return replace(r, candidates=tuple(c for c, k in zip(r.candidates, keep) if k),
+                   costs=tuple(c for c, k in zip(r.costs, keep) if k))
 
 
 def _reaches_out(r: Request, inner: Box, outer: Box) -> bool:

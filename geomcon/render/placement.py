@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import copy
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Sequence
 
 import numpy as np
@@ -133,6 +133,9 @@ class Request:
     costs : tuple of float
         The penalty of each explicit candidate, when given (instead of ``spread`` per rank): places laid out as
         those around the anchor are, some left out (:func:`.figure._between`).
+    rival_reach : float
+        A box beyond ``lead`` (joined to its point by a leader) is rivalled only by a point of ``rivals`` within
+        this (paper mm) of it (inf: by any nearer than the anchor); nearer its anchor, by any.
     """
 
     anchor: XY
@@ -149,6 +152,7 @@ class Request:
     starts: tuple[XY, ...] = ()
     parts: tuple[tuple[float, XY], ...] = ()
     costs: tuple[float, ...] = ()
+    rival_reach: float = math.inf
 
     def box(self, cx: float, cy: float) -> shapely.Geometry:
         """The box centred at (cx, cy), rotated as the text will be."""
@@ -476,6 +480,26 @@ class Placer:
             else:
                 break
         return (t.centre(best) if best is not None else req.anchor), best_score
+
+    def past_rivals(self, req: Request, owner: str, reach: float, floor: float = -math.inf) -> Request | None:
+        """``req`` (a point's label with a leader, prepared if need be) with only its candidates that lie nearer
+        another point than its own but farther than ``reach`` from it, and may still score more than ``floor``,
+        as explicit candidates with their penalties and ``rival_reach`` ``reach`` (:attr:`Request.rival_reach`);
+        None when there are none. Its other candidates score as they do for ``req``: only these can do better,
+        and only these are measured."""
+        self.prepare([(req, owner)])
+        t = self._ready[req, owner]
+        k = np.flatnonzero(t.rivalled & (t.static + AMBIGUOUS > floor + 1e-12))
+        if not len(k):
+            return None
+        c = t.batch.c
+        spots = np.stack([c.cx[t.offset + k], c.cy[t.offset + k]], axis=1)
+        wide = replace(req, rival_reach=reach)
+        keep = ~np.array(nearer_rival(wide, [tuple(p) for p in spots.tolist()]), dtype=bool)
+        if not keep.any():
+            return None
+        return replace(wide, candidates=tuple(map(tuple, spots[keep].tolist())),
+                       costs=tuple(t.cost[k[keep]].tolist()))
 
     def rivalled(self, req: Request, owner: str, centre: XY) -> bool:
         """:func:`nearer_rival` of the box of ``req`` at ``centre``, read from the candidates already laid out
