@@ -33,9 +33,10 @@ KNOWN: dict[str, str] = {
     "200-05_oscillating_roller_cam": "α′max=40.12°: its '°' on the base circle under O's ground" + _TRIED,
     "200-06_oscillating_knife_same_sense": "α′max=30.15°: below its arc with a leader, across the base circle "
                                            "(the review's)" + _TRIED,
-    **{stem: what + ": not examined further (issue 11, hsmall11m ran out of time)"
-       for stem, what in (("001-24_cam_displacement_at_100", "B(100°)"),
-                          ("200-14_oscillating_arm_speeds", "α′max=33.23°"))},
+    "001-24_cam_displacement_at_100": "αmax=13.56° (on its portrait sheet at 1:1; B(100°) crossed it at 1:2 on "
+                                      "landscape): inside the base circle by its contact point B1*, not examined "
+                                      "further",
+    "200-14_oscillating_arm_speeds": "α′max=33.23°: not examined further (issue 11, hsmall11m ran out of time)",
 }
 """Figures whose text still crosses the base circle, with why it stays."""
 
