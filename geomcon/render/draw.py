@@ -129,6 +129,8 @@ class Context:
     ground_at: dict[tuple[XY, float], tuple[Any, Any]] = field(default_factory=dict)
     """Ground symbols already chosen (style, drawing), by paper hinge and model direction
     (:func:`.figure.rotation_turns`)."""
+    memo: dict[str, Any] = field(default_factory=dict)
+    """What a ground symbol's search makes once a figure (the links, frames and curves as shapely lines)."""
     strokes: tuple[tuple[Any, float], ...] = ()
     """The circles, arcs and wide bands drawn (paper shape, half its pen width) a ground symbol and a rotation
     arrow keep off (:mod:`geomcon.render.keepoff`)."""

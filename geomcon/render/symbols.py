@@ -58,19 +58,23 @@ def ground_choice(g: Ground, style: Style, ctx: Context) -> tuple[float, Drawn]:
     near = _near(c, ctx)
     away = _link_directions(c, ctx) + (near.strokes.ways if near.strokes is not None else [])
     best = None
-    for i, turn in enumerate(GROUND_TURNS):
+    tried = []                                       # (index, room, drawing): measured the first alone, then
+    for i, turn in enumerate(GROUND_TURNS):          # the other multiples of 45°, then the 15° turns together
         angle = g.angle + turn
         room = _angular_room((math.cos(angle), -math.sin(angle)), away)
         if i >= 8 and room < GROUND_ROOM - 1e-9:     # a 15° turn is taken only when clear: not measured
             continue
-        out = _ground_at(c, angle, style)
-        hit = _collision(c, out, near)
-        if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
-            return 0.0, out
-        if i >= 8:                                   # a 15° turn is taken only when clear
+        tried.append((i, room, _ground_at(c, angle, style)))
+    for batch in (tried[:1], [t for t in tried[1:] if t[0] < 8], [t for t in tried if t[0] >= 8]):
+        if not batch:
             continue
-        if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
-            best = (hit, room, out)
+        for hit, (i, room, out) in zip(_collisions(c, [t[2] for t in batch], near).tolist(), batch):
+            if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
+                return 0.0, out
+            if i >= 8:                               # a 15° turn is taken only when clear
+                continue
+            if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
+                best = (hit, room, out)
     hit, compact = _compact_ground(g, c, style, away, near)
     return (hit, compact) if compact is not None and hit < best[0] - 1e-9 else (best[0], best[2])
 
@@ -197,7 +201,9 @@ class Near(NamedTuple):
     spots: Any
     """``pts`` as one shapely MultiPoint (None without points)."""
     strokes: Any = None
-    """The kept-off circles, arcs and bands within reach (:func:`.keepoff.near_strokes`): (lines, gaps), or None."""
+    """The kept-off circles, arcs and bands within reach (:func:`.keepoff.near_strokes`), or None."""
+    framed: Any = None
+    """Which of ``links`` are fixed links drawn dash-dot (an arrow ω may cross them)."""
 
 
 def _lines(polylines: Any) -> np.ndarray:
@@ -217,10 +223,17 @@ def _near(c: XY, ctx: Context) -> Near:
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
     spot = shapely.Point(c)
     lines = ctx.links + ctx.frames + ctx.curves    # a hatch across the frame AD or a cam's profile reads as wrong
-    links = _lines(lines) if lines else None                                     # as across a link
+    made = ctx.memo.get("lines")                                                 # as across a link
+    if made is None or any(a is not b for a, b in zip(made[0], (ctx.links, ctx.frames, ctx.curves))):
+        made = ctx.memo["lines"] = ((ctx.links, ctx.frames, ctx.curves), _lines(lines) if lines else None)
+    links = made[1]                                # made once a figure (a cam's profile: 1 900 points)
     pies = np.array([shapely.Polygon(p) for p in ctx.sectors], dtype=object) if ctx.sectors else None
+    framed = None
     if links is not None:
-        links = links[shapely.dwithin(links, spot, GROUND_REACH)]
+        reach = shapely.dwithin(links, spot, GROUND_REACH)
+        links = links[reach]
+        framed = (np.arange(len(lines)) >= len(ctx.links)) & (np.arange(len(lines)) < len(ctx.links) + len(ctx.frames))
+        framed = framed[reach]
     if pies is not None:
         pies = pies[shapely.dwithin(pies, spot, GROUND_REACH)]
     pts = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
@@ -232,7 +245,7 @@ def _near(c: XY, ctx: Context) -> Near:
         bands = bands[shapely.dwithin(bands, spot, GROUND_REACH + GUIDE_GAP)]
     apart = ~shapely.dwithin(links, spot, 0.5) if links is not None and len(links) else None
     return Near(links, pies, pts, dims, bands, apart, shapely.MultiPoint(pts) if pts else None,
-                near_strokes(c, ctx.strokes, GROUND_REACH) if ctx.strokes else None)
+                near_strokes(c, ctx.strokes, GROUND_REACH) if ctx.strokes else None, framed)
 
 
 def dimension_lines(values: list[Any], view: Any) -> tuple[tuple[XY, XY], ...]:
@@ -720,8 +733,7 @@ def rotation_arcs(m: Rotation, ctx: Context) -> list[ArcP]:
     first that leaves it a clear place, :func:`geomcon.render.figure.rotation_turns`)."""
     c = ctx.view.p(m.at)
     near = _near(c, ctx)
-    links = [q for q in ctx.links + ctx.curves
-             if shapely.dwithin(shapely.LineString(q), shapely.Point(c), ROTATION_RADIUS + 1.0)]
+    links = near.links[~near.framed] if near.links is not None else None
     least, out = math.inf, []
     for mid in ROTATION_SIDES:
         lo, hi = mid - ROTATION_SWEEP / 2, mid + ROTATION_SWEEP / 2
@@ -737,14 +749,14 @@ def rotation_arcs(m: Rotation, ctx: Context) -> list[ArcP]:
     return out
 
 
-def _rotation_hit(arc: ArcP, near: Near, links: list[Any]) -> float:
+def _rotation_hit(arc: ArcP, near: Near, links: Any) -> float:
     """What the arrow's ``arc`` meets (:data:`ROTATION_WEIGHTS`), ``near`` from :func:`_near` of its centre,
     ``links`` the links and curves drawn as links (not the frame lines) near it."""
     geo = shapely.LineString([arc.at(k / 24) for k in range(25)])
     w_link, w_dim, w_stroke, w_pt = ROTATION_WEIGHTS
     hit = 0.0
-    if links:
-        hit += w_link * int(shapely.dwithin(geo, _lines(links), ROTATION_GAP).sum())
+    if links is not None and len(links):
+        hit += w_link * int(shapely.dwithin(geo, links, ROTATION_GAP).sum())
     if near.dims is not None and len(near.dims):
         hit += w_dim * int(shapely.dwithin(geo, near.dims, ROTATION_GAP).sum())
     if near.strokes is not None:
