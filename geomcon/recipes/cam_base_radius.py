@@ -351,6 +351,17 @@ def r0_dimension(O: Point, B0: Point, r0: float, symbol: str, offset: float, wit
     return marks.Dimension(O, B0, symbol, r0, offset)
 
 
+def away_from(O: Point) -> float:
+    """The sign of the offset that dimensions a height along the follower's axis (x = 0, upwards) on the side of
+    the axis away from O: O's side held its dimension lines and the arrow ω (200-09's s0 ended by O, under ω;
+    200-19's s0 ran through O). O on the axis: its left, as before.
+
+    >>> away_from(Point(-7.0, -12.0)), away_from(Point(5.0, -3.0)), away_from(Point(0.0, -20.0))
+    (-1.0, 1.0, 1.0)
+    """
+    return -1.0 if O.x < 0.0 else 1.0
+
+
 def foot_on_axis(O: Point) -> Point:
     """The foot of the perpendicular from O to the follower's axis x = 0."""
     return Point(0.0, O.y)
@@ -380,7 +391,7 @@ def _diagram_axes(sc: Scene, prog: Program, h: float, k: float, B0: Ref, O: Ref,
            caption=("e: O's distance from the follower's axis (O left of the axis: e > 0)",
                     "偏距 e:O 到导路的距离(O 在导路左侧为正)"))
     if s0 is not None:                   # a curvature limit moves the centre: s0 is dimensioned at O′ instead
-        sc.add("dim_s0", lambda f, b, v: marks.Dimension(f, b, "s0", v, 0.1 * scale), F, B0, s0,
+        sc.add("dim_s0", lambda f, b, v, o: marks.Dimension(f, b, "s0", v, 0.1 * scale * away_from(o)), F, B0, s0, O,
                role=Role.ANNOTATION, style="dim")
 
 

@@ -260,7 +260,7 @@ def grow_for_rho(prog: Program, h: float, rotation: str, e: float, r0_alpha: flo
 def add_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any], prog: Program) -> None:
     """After the pressure angle's construction (steps O, r0, e): r0 grown for the curvature limit, the final
     centre and base circle, s0, ρmin and rr_max of the designed cam."""
-    from .cam_base_radius import RR_FACTOR, pitch_rho_min
+    from .cam_base_radius import RR_FACTOR, away_from, pitch_rho_min
     h, rot, rho_allow = g["h"], g.get("rotation", "ccw"), g["rho_allow"]
     B0 = Ref("B0")
     sc.add("r0_alpha", float, Ref("r0"), role=Role.MEASUREMENT, unit="mm", visible=False)
@@ -279,7 +279,7 @@ def add_rho_steps(sc: Scene, answers: dict[str, str], g: Mapping[str, Any], prog
            role=Role.ANNOTATION, style="dim", caption=("The answer r0 = O′B0 (the curvature limit decides)",
                                                        "所求基圆半径 r0 = O′B0(由曲率半径限制决定)"))
     F = sc.add("O_design_foot", lambda o: Point(0.0, o.y), O, visible=False)
-    sc.add("dim_s0_design", lambda f, b, v: marks.Dimension(f, b, "s0", v, 0.3 * v), F, B0, s0,
+    sc.add("dim_s0_design", lambda f, b, v, o: marks.Dimension(f, b, "s0", v, 0.3 * v * away_from(o)), F, B0, s0, O,
            role=Role.ANNOTATION, style="dim")
     rho = sc.add("rho_design", pitch_rho_min, prog, h, rot, Ref("e"), s0, role=Role.MEASUREMENT, unit="mm",
                  caption=("ρmin of the designed pitch curve", "所设计理论廓线的 ρmin"))

@@ -17,6 +17,7 @@ Examples
 from __future__ import annotations
 
 import math
+from typing import Any
 from dataclasses import dataclass, field, replace
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
@@ -123,6 +124,16 @@ class Context:
     guides: tuple[tuple[XY, ...], ...] = ()
     """The guides' hatched bands on paper, as polygons (the surface and its hatch strokes): a ground symbol keeps
     off them (:func:`geomcon.render.symbols.guide_bands`)."""
+    turns: dict[XY, Any] = field(default_factory=dict)
+    """The arc chosen for the arrow of a sense of rotation about each paper point (:func:`.figure.rotation_turns`)."""
+    ground_at: dict[tuple[XY, float], tuple[Any, Any]] = field(default_factory=dict)
+    """Ground symbols already chosen (style, drawing), by paper hinge and model direction
+    (:func:`.figure.rotation_turns`)."""
+    memo: dict[str, Any] = field(default_factory=dict)
+    """What a ground symbol's search makes once a figure (the links, frames and curves as shapely lines)."""
+    strokes: tuple[tuple[Any, float], ...] = ()
+    """The circles, arcs and wide bands drawn (paper shape, half its pen width) a ground symbol and a rotation
+    arrow keep off (:mod:`geomcon.render.keepoff`)."""
 
 
 def pen(style: Style) -> Pen:

@@ -25,7 +25,7 @@ import shapely.ops
 
 from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segment
 from ..scene import Scene, Step
-from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Slider
+from ..scene.marks import AngleMark, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider
 from .arms import add_arms
 from .boxgeom import box_point
 from .coincident import NEAR as NEAR_NAMES, Together, dots_above, groups_of, same_spot, shared_markers
@@ -36,10 +36,12 @@ from .candidates import FAR_PENALTY, LEADER_MAX, between
 from .placement import AMBIGUOUS, Placer, Request, half_extent, label_distances, nearer_rival
 from .rows import SEP, Fan, clusters, fans, row_centre, thinned
 from .joined import reads_back, spans
+from .keepoff import BAND_WIDTH, RING_WIDTH, kept_off
 from .labels import label_extent, text_width
 from .shapes import ArcP, Disc, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, PAPER, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
-from .symbols import dimension_lines, draw, guide_bands, kind_of, right_angle_square, sector
+from .symbols import (dimension_lines, draw, ground_choice, guide_bands, kind_of, right_angle_square, rotation_arcs,
+                      rotation_inside, sector)
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
@@ -236,6 +238,9 @@ def sketch_figure(scene: Scene, upto: int | None = None, viewbox: Box | None = N
                   curves=_curves(steps, values, view),
                   dims=dimension_lines([m for _, s in steps for m in _all(values[s.key])], view),
                   guides=guide_bands([m for _, s in steps for m in _all(values[s.key])], view))
+    ctx.strokes = _strokes(steps, values, ctx)
+    ctx.turns = rotation_turns([m for _, s in steps for m in _all(values[s.key])], ctx)
+    ctx.sectors += tuple(rotation_inside(a) for a in ctx.turns.values())     # a ground keeps off ω (200-10's O)
     current = n if upto is not None else None
     frame_lines = _frame_lines(steps, values, view)
     labels = merged_labels(steps, values, box)
@@ -421,6 +426,51 @@ def _curves(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -
         if lines and resolve_style(s.style, s.role, "curve").layer == "links":
             out += [tuple(view.ps(x.points + (x.points[:1] if x.closed else ()))) for x in lines]
     return tuple(out)
+
+
+def _strokes(steps: list[tuple[int, Step]], values: dict[str, Any], ctx: Context) -> tuple[tuple[Any, float], ...]:
+    """The circles, arcs and wide bands of the frame on paper that a ground symbol and a rotation arrow keep off
+    (:func:`.keepoff.kept_off`), as (shape, half its pen width); none without a ground or a rotation to draw."""
+    if not any(isinstance(m, (Ground, Rotation)) for _, s in steps for m in _all(values[s.key])):
+        return ()
+    out = []
+    for _, s in steps:
+        v = values[s.key]
+        if kind_of(v) != "curve":
+            continue
+        style = resolve_style(s.style, s.role, "curve")
+        if style.width < RING_WIDTH - 1e-9 or (style.compass and style.width < BAND_WIDTH - 1e-9):
+            continue
+        out += [(sh, style.width / 2.0) for sh in draw(v, style, ctx).shapes if kept_off(style, sh)]
+    return tuple(out)
+
+
+def rotation_turns(marks: list[Any], ctx: Context) -> dict[tuple[float, float], ArcP]:
+    """The arc of the arrow of each sense of rotation among ``marks``, by its paper centre: the first that meets
+    least (:func:`.symbols.rotation_arcs`) that the ground at its centre, drawn as if no arrow were there, keeps
+    clear of (200-09's O: ω above to the right, as likely as below to the left, left O's ground no room between
+    r0's dimension and the limit bands), else the first. Such a ground stays where it is once the arrow is drawn
+    (an obstacle more only makes its earlier turns meet more): it is kept in ``ctx.ground_at``."""
+    out = {}
+    for m in marks:
+        if not isinstance(m, Rotation):
+            continue
+        c = ctx.view.p(m.at)
+        arcs = rotation_arcs(m, ctx)
+        out[c] = arcs[0]
+        grounds = [g for g in marks if isinstance(g, Ground) and ctx.view.p(g.at) == c]
+        if len(arcs) < 2 or len(grounds) != 1:
+            continue
+        hit, drawn = ground_choice(grounds[0], STYLES["ground"], ctx)
+        if hit != 0.0:
+            continue
+        geo = shapely.MultiLineString([list(sh.pts) for sh in drawn.shapes]).difference(shapely.Point(c).buffer(1.7, 8))
+        for arc in arcs:
+            if shapely.intersection(geo, shapely.Polygon(rotation_inside(arc))).length == 0.0:
+                out[c] = arc
+                ctx.ground_at[(c, grounds[0].angle)] = (STYLES["ground"], drawn)
+                break
+    return out
 
 
 def _sliders(steps: list[tuple[int, Step]], values: dict[str, Any], view: View) -> tuple[tuple[Any, Any], ...]:

@@ -25,6 +25,7 @@ from ..geometry.primitives import Arc, Circle, Line, Point, Polyline, Ray, Segme
 from ..scene.marks import AngleMark, Bearing, Dimension, Ground, Guide, RightAngleMark, Rotation, Slider, Vector
 from .draw import (SLIDER, ANGLE_RADIUS, MIN_ANGLE_RADIUS, least_arc_radius, Context, Drawn, TextRequest, XY, _add, _paper_dir, _unit,
                    draw_arc, draw_circle, draw_line, draw_point, draw_polyline, draw_segment, pen)
+from .keepoff import near_strokes, strokes_hit
 from .labels import rich_runs, text_width
 from .placement import Request
 from .shapes import ArcP, Pen, Poly
@@ -45,25 +46,37 @@ def draw_ground(g: Ground, style: Style, ctx: Context) -> Drawn:
     angle; one by a guide's hatch reads as one frame with it) and :data:`GROUND_ROOM` away from every link and fixed
     link leaving the hinge (the hatch points away from them, not into the corner between two); else the
     multiple of 45° that meets least, then the one with the most room."""
+    known = ctx.ground_at.get((ctx.view.p(g.at), g.angle))
+    if known is not None and known[0] == style:                  # drawn in that style already
+        return Drawn(list(known[1].shapes))
+    return ground_choice(g, style, ctx)[1]
+
+
+def ground_choice(g: Ground, style: Style, ctx: Context) -> tuple[float, Drawn]:
+    """The ground symbol :func:`draw_ground` draws, and what it meets (:func:`_collision`; 0: clear)."""
     c = ctx.view.p(g.at)
-    away = _link_directions(c, ctx)
     near = _near(c, ctx)
+    away = _link_directions(c, ctx) + (near.strokes.ways if near.strokes is not None else [])
     best = None
-    for i, turn in enumerate(GROUND_TURNS):
+    tried = []                                       # (index, room, drawing): measured the first alone, then
+    for i, turn in enumerate(GROUND_TURNS):          # the other multiples of 45°, then the 15° turns together
         angle = g.angle + turn
         room = _angular_room((math.cos(angle), -math.sin(angle)), away)
         if i >= 8 and room < GROUND_ROOM - 1e-9:     # a 15° turn is taken only when clear: not measured
             continue
-        out = _ground_at(c, angle, style)
-        hit = _collision(c, out, near)
-        if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
-            return out
-        if i >= 8:                                   # a 15° turn is taken only when clear
+        tried.append((i, room, _ground_at(c, angle, style)))
+    for batch in (tried[:1], [t for t in tried[1:] if t[0] < 8], [t for t in tried if t[0] >= 8]):
+        if not batch:
             continue
-        if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
-            best = (hit, room, out)
-    compact = _compact_ground(g, c, style, away, near)
-    return compact if compact is not None else best[2]
+        for hit, (i, room, out) in zip(_collisions(c, [t[2] for t in batch], near).tolist(), batch):
+            if hit == 0.0 and room >= GROUND_ROOM - 1e-9:
+                return 0.0, out
+            if i >= 8:                               # a 15° turn is taken only when clear
+                continue
+            if best is None or hit < best[0] - 1e-9 or (abs(hit - best[0]) <= 1e-9 and room > best[1] + 1e-9):
+                best = (hit, room, out)
+    hit, compact = _compact_ground(g, c, style, away, near)
+    return (hit, compact) if compact is not None and hit < best[0] - 1e-9 else (best[0], best[2])
 
 
 COMPACT_SIZES = (0.8, 0.7, 0.6)
@@ -78,8 +91,9 @@ COMPACT_HALF = 3.0
 """Half the base of a shrunk ground symbol, in full-size paper mm (the full one's is 4.2, its legs' 2.6): its
 corners lie 35.5° off its direction, not 45°, so it fits between links 80° apart."""
 
-COMPACT_ROOM = math.radians(40.0)
-"""Least angle between a shrunk ground symbol's direction and a link leaving its hinge (corners at 35.5°)."""
+COMPACT_ROOM = math.radians(40.6)
+"""Least angle between a shrunk ground symbol's direction and a link leaving its hinge: its corners' 35.5° and 5°
+(as the full one's 45° and 5°, :data:`GROUND_ROOM`; 001-30b's O, shrunk into its base circle, sat 40° off OA)."""
 
 COMPACT_GAP = (0.8, 2.0)
 """Least paper mm between a shrunk ground symbol and the centre line of a link not at its hinge (half a link's
@@ -87,10 +101,12 @@ width, 0.35 mm, half a stroke and a 0.3 mm gap) and a point of the figure (a pin
 a gap): shrunk, it stands in a tight place and must read as apart from what is near."""
 
 
-def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: Near) -> Drawn | None:
+def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: Near) -> tuple[float, Drawn | None]:
     """The largest shrunk ground symbol (:data:`COMPACT_SIZES`) at paper point ``c`` whose turn
     (:data:`COMPACT_TURNS`) keeps it :data:`COMPACT_GAP` clear of every link and point, out of every angle
-    mark's sector and :data:`COMPACT_ROOM` off the links at its hinge; None when none is.
+    mark's sector and :data:`COMPACT_ROOM` off the links at its hinge, with 0; when none is, the one that meets
+    least (:func:`_collision`) and what it meets (200-19's O: every full-size turn meets a dimension's line or
+    two limit bands, the shrunk one only a band); (inf, None) when no turn keeps that room.
 
     A pin 5.4 mm below the hinge: the full symbol (base 4.2 mm out, 8.4 mm long) would touch it; shrunk to 0.8,
     its base 2 × 3.0 × 0.8 = 4.8 mm long,
@@ -99,20 +115,27 @@ def _compact_ground(g: Ground, c: XY, style: Style, away: list[XY], near: Near) 
     >>> from geomcon.render.style import STYLES
     >>> from geomcon.render.view import View
     >>> ctx = Context(View((-10.0, -10.0, 10.0, 10.0), 1.0, (0.0, 0.0)), points=(Point(0, 0), Point(0, -5.4)))
-    >>> out = _compact_ground(Ground(Point(0, 0)), (10.0, 10.0), STYLES["ground"], [], _near((10.0, 10.0), ctx))
+    >>> hit, out = _compact_ground(Ground(Point(0, 0)), (10.0, 10.0), STYLES["ground"], [], _near((10.0, 10.0), ctx))
     >>> (a, b) = out.shapes[1].pts
     >>> round(math.dist(a, b), 2), round(math.degrees(math.atan2((a[1] + b[1]) / 2 - 10, (a[0] + b[0]) / 2 - 10)))
     (4.8, 35)
     """
+    best: tuple[float, Drawn | None] = (math.inf, None)
+    angles = [g.angle + turn for turn in COMPACT_TURNS
+              if _angular_room((math.cos(g.angle + turn), -math.sin(g.angle + turn)), away) >= COMPACT_ROOM - 1e-9]
     for size in COMPACT_SIZES:
-        for turn in COMPACT_TURNS:
-            angle = g.angle + turn
-            if _angular_room((math.cos(angle), -math.sin(angle)), away) < COMPACT_ROOM - 1e-9:
-                continue
-            out = _ground_at(c, angle, style, size, COMPACT_HALF)
-            if _collision(c, out, near, COMPACT_GAP) == 0.0:
-                return out
-    return None
+        for k in range(0, len(angles), COMPACT_BATCH):
+            outs = [_ground_at(c, a, style, size, COMPACT_HALF) for a in angles[k:k + COMPACT_BATCH]]
+            for hit, out in zip(_collisions(c, outs, near, COMPACT_GAP).tolist(), outs):
+                if hit == 0.0:
+                    return 0.0, out
+                if hit < best[0] - 1e-9:
+                    best = (hit, out)
+    return best
+
+
+COMPACT_BATCH = 12
+"""How many turns of a shrunk ground symbol are measured at once (:func:`_collisions`)."""
 
 
 GROUND_TURNS = tuple(math.radians(d) for d in (0, 45, -45, 90, -90, 135, -135, 180)) + tuple(
@@ -173,12 +196,14 @@ class Near(NamedTuple):
     dims: Any
     guides: Any
     """The guides' hatched bands within reach (:func:`guide_bands`), None without."""
-    hinge: Any
-    """The disc about the hinge left out of the symbol (its legs meet there)."""
     apart: Any
     """Which of ``links`` do not leave the hinge (kept clear of by a shrunk symbol)."""
     spots: Any
     """``pts`` as one shapely MultiPoint (None without points)."""
+    strokes: Any = None
+    """The kept-off circles, arcs and bands within reach (:func:`.keepoff.near_strokes`), or None."""
+    framed: Any = None
+    """Which of ``links`` are fixed links drawn dash-dot (an arrow ω may cross them)."""
 
 
 def _lines(polylines: Any) -> np.ndarray:
@@ -198,10 +223,17 @@ def _near(c: XY, ctx: Context) -> Near:
     within :data:`GROUND_REACH` (as shapely arrays) and the other points within 12 mm."""
     spot = shapely.Point(c)
     lines = ctx.links + ctx.frames + ctx.curves    # a hatch across the frame AD or a cam's profile reads as wrong
-    links = _lines(lines) if lines else None                                     # as across a link
+    made = ctx.memo.get("lines")                                                 # as across a link
+    if made is None or any(a is not b for a, b in zip(made[0], (ctx.links, ctx.frames, ctx.curves))):
+        made = ctx.memo["lines"] = ((ctx.links, ctx.frames, ctx.curves), _lines(lines) if lines else None)
+    links = made[1]                                # made once a figure (a cam's profile: 1 900 points)
     pies = np.array([shapely.Polygon(p) for p in ctx.sectors], dtype=object) if ctx.sectors else None
+    framed = None
     if links is not None:
-        links = links[shapely.dwithin(links, spot, GROUND_REACH)]
+        reach = shapely.dwithin(links, spot, GROUND_REACH)
+        links = links[reach]
+        framed = (np.arange(len(lines)) >= len(ctx.links)) & (np.arange(len(lines)) < len(ctx.links) + len(ctx.frames))
+        framed = framed[reach]
     if pies is not None:
         pies = pies[shapely.dwithin(pies, spot, GROUND_REACH)]
     pts = [q for q in map(ctx.view.p, ctx.points) if 1e-9 < math.hypot(q[0] - c[0], q[1] - c[1]) <= 12.0]
@@ -212,7 +244,8 @@ def _near(c: XY, ctx: Context) -> Near:
     if bands is not None:
         bands = bands[shapely.dwithin(bands, spot, GROUND_REACH + GUIDE_GAP)]
     apart = ~shapely.dwithin(links, spot, 0.5) if links is not None and len(links) else None
-    return Near(links, pies, pts, dims, bands, spot.buffer(1.7, 8), apart, shapely.MultiPoint(pts) if pts else None)
+    return Near(links, pies, pts, dims, bands, apart, shapely.MultiPoint(pts) if pts else None,
+                near_strokes(c, ctx.strokes, GROUND_REACH) if ctx.strokes else None, framed)
 
 
 def dimension_lines(values: list[Any], view: Any) -> tuple[tuple[XY, XY], ...]:
@@ -241,24 +274,49 @@ def _collision(c: XY, drawn: Drawn, near: Near, gaps: tuple[float, float] | None
     """How much a ground symbol at paper point ``c`` meets, away from the hinge it holds: the length of it
     inside angle marks' sectors, plus 10 mm for each link it crosses (or comes within ``gaps[0]`` of, for a link not
     at its hinge) and for each
-    other point of the figure it comes within :data:`POINT_GAP` (``gaps[1]``) of (0 when clear); ``near`` from
-    :func:`_near`."""
+    other point of the figure it comes within :data:`POINT_GAP` (``gaps[1]``) of (0 when clear), 5 mm for each
+    circle or band kept off (:mod:`.keepoff`) it comes near; ``near`` from :func:`_near`."""
+    return float(_collisions(c, [drawn], near, gaps)[0])
+
+
+HINGE_CUT = 1.7
+"""Paper mm of a ground symbol's legs next to its hinge left out when measuring what it meets (they meet there)."""
+
+
+def _toward(p: XY, q: XY, d: float) -> XY:
+    """The point ``d`` from ``p`` towards ``q``."""
+    n = math.hypot(q[0] - p[0], q[1] - p[1])
+    return (p[0] + (q[0] - p[0]) * d / n, p[1] + (q[1] - p[1]) * d / n)
+
+
+def _collisions(c: XY, drawns: list[Drawn], near: Near, gaps: tuple[float, float] | None = None) -> np.ndarray:
+    """:func:`_collision` of each of ``drawns`` (ground symbols at ``c``), measured together (a shrunk symbol's
+    turns are tried a dozen at a time)."""
     links, pies, pts, dims = near.links, near.pies, near.pts, near.dims
-    geo = shapely.MultiLineString([list(s.pts) for s in drawn.shapes]).difference(near.hinge)
-    hit = 0.0
+    parts, counts = [], []
+    for d in drawns:                       # the legs (first shape, through the hinge) cut HINGE_CUT from it
+        (a, h, b), rest = d.shapes[0].pts, d.shapes[1:]
+        parts += [(a, _toward(h, a, HINGE_CUT)), (_toward(h, b, HINGE_CUT), b)] + [s.pts for s in rest]
+        counts.append(2 + len(rest))
+    lines = shapely.linestrings(np.concatenate([np.asarray(q, dtype=float) for q in parts]),
+                                indices=np.repeat(np.arange(len(parts)), [len(q) for q in parts]))
+    geo = shapely.multilinestrings(lines, indices=np.repeat(np.arange(len(drawns)), counts))[:, None]
+    hit = np.zeros(len(drawns))
     if links is not None and len(links):
-        touch = shapely.intersects(geo, links)
+        touch = shapely.intersects(geo, links[None, :])
         if gaps is not None:                       # kept apart from links not at its hinge
-            touch |= shapely.dwithin(geo, links, gaps[0]) & near.apart
-        hit += 10.0 * int(touch.sum())
+            touch |= shapely.dwithin(geo, links[None, :], gaps[0]) & near.apart[None, :]
+        hit += 10.0 * touch.sum(axis=1)
     if pts:
-        hit += 10.0 * int(shapely.dwithin(geo, near.spots, POINT_GAP if gaps is None else gaps[1]))
+        hit += 10.0 * shapely.dwithin(geo[:, 0], near.spots, POINT_GAP if gaps is None else gaps[1])
     if pies is not None and len(pies):
-        hit += float(shapely.length(shapely.intersection(geo, pies)).sum())
+        hit += shapely.length(shapely.intersection(geo, pies[None, :])).sum(axis=1)
     if dims is not None and len(dims):
-        hit += 10.0 * int(shapely.dwithin(geo, dims, DIM_GAP).sum())
+        hit += 10.0 * shapely.dwithin(geo, dims[None, :], DIM_GAP).sum(axis=1)
     if near.guides is not None and len(near.guides):
-        hit += 10.0 * int(shapely.dwithin(geo, near.guides, GUIDE_GAP).sum())
+        hit += 10.0 * shapely.dwithin(geo, near.guides[None, :], GUIDE_GAP).sum(axis=1)
+    if near.strokes is not None:                   # a crank's circle, a limit band: 5 mm each, less than a link
+        hit += 5.0 * strokes_hit(geo, near.strokes)                # or a dimension's line
     return hit
 
 
@@ -649,22 +707,97 @@ def _mark_text(runs: tuple[tuple[str, bool], ...], anchor: XY, prefer: float,
 ROTATION_RADIUS = 6.5
 """Radius (paper mm) of the arrow of a sense of rotation (ω) about its centre."""
 
+ROTATION_SWEEP = math.radians(110.0)
+"""The angle the arrow of a sense of rotation spans."""
+
+ROTATION_SIDES = tuple(math.radians(d) for d in (90, 45, 135, 0, 180, 315, 225, 270))
+"""The model directions of the middle of the arrow of a sense of rotation, in the order tried: above its centre
+first (the ground hangs below), then turned ever further; the first that meets least is drawn (200-09's ω above O
+ran across r0's dimension line and s0's arrowhead)."""
+
+ROTATION_WEIGHTS = (4.0, 10.0, 1.0, 4.0)
+"""What the arrow meeting one of them costs: a link or a curve drawn as a link (a cam's profile; not a dash-dot
+frame line, which an arrow may cross), a dimension's line (most: the arrow reads as the dimension's), a circle or
+band kept off (:mod:`.keepoff`: least, the arrow reads across a translucent band), a point of the figure."""
+
+ROTATION_GAP = 1.0
+"""Least paper mm between the arrow's arc and a link or a dimension's line (its arrowhead is 1.6 mm wide)."""
+
+
+def rotation_arc(m: Rotation, ctx: Context) -> ArcP:
+    """The arc of the arrow of a sense of rotation: :data:`ROTATION_SWEEP` at :data:`ROTATION_RADIUS` about its
+    centre, on the first side (:data:`ROTATION_SIDES`) that meets least (:data:`ROTATION_WEIGHTS`), running the
+    way the part turns.
+
+    Alone, the arrow stands above its centre; a link straight up from it turns it to the right (at 45° its arc
+    would still cross the link):
+
+    >>> from geomcon.render.style import STYLES
+    >>> from geomcon.render.view import View
+    >>> ctx = Context(View((-10.0, -10.0, 10.0, 10.0), 1.0, (0.0, 0.0)))
+    >>> a = rotation_arc(Rotation(Point(0, 0), 1.0), ctx)
+    >>> round(math.degrees(-(a.start + a.sweep / 2)))
+    90
+    >>> ctx.links = (((10.0, 10.0), (10.0, 0.0)),)
+    >>> a = rotation_arc(Rotation(Point(0, 0), 1.0), ctx)
+    >>> round(math.degrees(-(a.start + a.sweep / 2)))
+    0
+    """
+    return rotation_arcs(m, ctx)[0]
+
+
+def rotation_arcs(m: Rotation, ctx: Context) -> list[ArcP]:
+    """The arcs the arrow of a sense of rotation may take (:func:`rotation_arc`): the first side that meets
+    nothing alone, else every side that meets least, in the order tried (the ground at its centre then takes the
+    first that leaves it a clear place, :func:`geomcon.render.figure.rotation_turns`)."""
+    c = ctx.view.p(m.at)
+    near = _near(c, ctx)
+    links = near.links[~near.framed] if near.links is not None else None
+    least, out = math.inf, []
+    for mid in ROTATION_SIDES:
+        lo, hi = mid - ROTATION_SWEEP / 2, mid + ROTATION_SWEEP / 2
+        start, end = (lo, hi) if m.sense > 0 else (hi, lo)
+        arc = ArcP(c, ROTATION_RADIUS, -start, -(end - start), Pen("#000", 0.25))
+        hit = _rotation_hit(arc, near, links)
+        if hit == 0.0:
+            return [arc]
+        if hit < least - 1e-9:
+            least, out = hit, [arc]
+        elif hit <= least + 1e-9:
+            out.append(arc)
+    return out
+
+
+def _rotation_hit(arc: ArcP, near: Near, links: Any) -> float:
+    """What the arrow's ``arc`` meets (:data:`ROTATION_WEIGHTS`), ``near`` from :func:`_near` of its centre,
+    ``links`` the links and curves drawn as links (not the frame lines) near it."""
+    geo = shapely.LineString([arc.at(k / 24) for k in range(25)])
+    w_link, w_dim, w_stroke, w_pt = ROTATION_WEIGHTS
+    hit = 0.0
+    if links is not None and len(links):
+        hit += w_link * int(shapely.dwithin(geo, links, ROTATION_GAP).sum())
+    if near.dims is not None and len(near.dims):
+        hit += w_dim * int(shapely.dwithin(geo, near.dims, ROTATION_GAP).sum())
+    if near.strokes is not None:
+        hit += w_stroke * int(strokes_hit(np.array([geo])[:, None], near.strokes)[0])
+    if near.pts:
+        hit += w_pt * int(shapely.dwithin(geo, shapely.points(near.pts), POINT_GAP).sum())
+    return hit
+
 
 def draw_rotation(m: Rotation, style: Style, ctx: Context) -> Drawn:
-    """The arrow of a sense of rotation: an arc of 110° above its centre (the ground hangs below), its
-    arrowhead at the end the part turns towards, and the symbol ω placed beside it."""
+    """The arrow of a sense of rotation: an arc of 110° about its centre on the side that meets least
+    (:func:`rotation_arc`), its arrowhead at the end the part turns towards, and the symbol ω placed beside it."""
     c = ctx.view.p(m.at)
-    r = ROTATION_RADIUS
-    ccw = m.sense > 0
-    lo, hi = math.radians(35.0), math.radians(145.0)                    # model angles, above the centre
-    start, end = (lo, hi) if ccw else (hi, lo)
-    arc = ArcP(c, r, -start, -(end - start), pen(style))
+    arc = ctx.turns.get(c) or rotation_arc(m, ctx)
+    arc = ArcP(arc.c, arc.r, arc.start, arc.sweep, pen(style))
     tip = arc.at(1.0)
     back = arc.at(0.93)                                                # the tangent's direction, backwards
     out = Drawn([arc, _arrow(tip, back, style)], keep_out=[rotation_inside(arc)])
     runs = rich_runs(m.symbol)
-    req = Request(arc.at(0.5), text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * 0.78, 0.6, -math.pi / 2,
-                  spread=0.05, distances=MARK_DISTANCES)
+    prefer = arc.start + arc.sweep / 2.0                              # outwards from the arc's middle
+    req = Request(arc.at(0.5), text_width(runs, MARK_TEXT_SIZE) + 0.3, MARK_TEXT_SIZE * 0.78, 0.6,
+                  -math.pi / 2 if abs(prefer + math.pi / 2) < 1e-9 else prefer, spread=0.05, distances=MARK_DISTANCES)
     out.texts.append(TextRequest(runs, MARK_TEXT_SIZE, req, italic=True, cls="mark-text"))
     return out
 
