@@ -43,13 +43,17 @@ the gallery's 5 s CPU); ``tests/test_gallery_orientation.py`` renders every prob
 fails, naming the problem, when this set is not the choice."""
 
 
-def problem_sheets(sol: Solution, lang: str | None = None):
-    """The page the gallery prints ``sol`` on and its sheets: :func:`gallery_page`, turned to portrait for the
-    problems of :data:`PORTRAIT` (200-01: 1:2 → 1:1)."""
+def problem_page(pid: str, lang: str | None = None):
+    """The page the gallery prints problem ``pid`` (its file's stem) on: :func:`gallery_page`, turned to portrait
+    for the problems of :data:`PORTRAIT` (200-01: 1:2 → 1:1)."""
     from .render.orient import turned
     page = gallery_page(lang)
-    if sol.problem.id in PORTRAIT:
-        page = turned(page)
+    return turned(page) if pid in PORTRAIT else page
+
+
+def problem_sheets(sol: Solution, lang: str | None = None):
+    """The page the gallery prints ``sol`` on (:func:`problem_page`) and its sheets."""
+    page = problem_page(sol.problem.id, lang)
     return page, sol.sheets(page)
 
 

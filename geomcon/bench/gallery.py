@@ -143,14 +143,14 @@ def _problem_file(pid: str) -> Path | None:
 def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> list[FigureRow]:
     """The shortest CPU time of sheet 1 of each of ``figures`` over ``samples`` fresh solutions (see the
     module); a problem not bundled is left out."""
-    from ..gallery import problem_sheets
+    from ..gallery import problem_page
     from ..problems import load_problem
     from ..solve import solve
 
     from ..render import svg as render_svg
 
     problems = [(pid, load_problem(p)) for pid in figures if (p := _problem_file(pid)) is not None]
-    pages = {pid: problem_sheets(solve(problem))[0] for pid, problem in problems}     # the gallery's paper
+    pages = {pid: problem_page(problem.id) for pid, problem in problems}              # the gallery's paper
     best = {pid: float("inf") for pid, _ in problems}
     first = {pid: float("inf") for pid, _ in problems}
     recipe = {}
@@ -192,7 +192,7 @@ def measure_figures(samples: int = 15, figures: tuple[str, ...] = FIGURES) -> li
 def measure_all_figures(samples: int = 1, only: tuple[str, ...] | None = None) -> SpreadRow | None:
     """Sheet 1's figure of every bundled problem (of ``only``'s ids when given), the shortest CPU time of
     ``samples`` (see the module); None without problems."""
-    from ..gallery import problem_files, problem_sheets
+    from ..gallery import problem_files, problem_page
     from ..problems import load_problem
     from ..render import svg as render_svg
     from ..solve import solve
@@ -211,10 +211,8 @@ def measure_all_figures(samples: int = 1, only: tuple[str, ...] | None = None) -
             pid = path.stem.split("_")[0]
             if only is not None and pid not in only:
                 continue
-            sol = solve(load_problem(path))
-            page = problem_sheets(sol)[0]                   # the gallery's paper, then its sheet 1's figure
             calls.clear()
-            sol.sheets(page)
+            solve(load_problem(path)).sheets(problem_page(path.stem))      # on the gallery's paper
             if calls:
                 figures[path.stem] = calls[0]
     finally:

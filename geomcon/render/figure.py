@@ -40,8 +40,8 @@ from .keepoff import BAND_WIDTH, RING_WIDTH, kept_off
 from .labels import label_extent, text_width
 from .shapes import ArcP, Disc, Pen, Poly, Shape, Text, lean, obstacle, recolour
 from .style import HIGHLIGHT, INK, LAYERS, PAPER, STYLES, TRIM_OVERSHOOT, highlighted, resolve_style
-from .symbols import (dimension_lines, draw, ground_choice, guide_bands, kind_of, right_angle_square, rotation_arcs,
-                      rotation_inside, sector)
+from .symbols import (HINGE_CUT, dimension_lines, draw, ground_choice, guide_bands, kind_of, right_angle_square,
+                      rotation_arcs, rotation_inside, sector)
 from .view import FIG_MARGIN, FIG_TARGET, Box, View, choose_scale, grow
 
 WHOLE_CIRCLE_REACH = 0.75   # a whole-drawn circle enlarges the view when r ≤ this × the content's size
@@ -464,7 +464,7 @@ def rotation_turns(marks: list[Any], ctx: Context) -> dict[tuple[float, float], 
         hit, drawn = ground_choice(grounds[0], STYLES["ground"], ctx)
         if hit != 0.0:
             continue
-        geo = shapely.MultiLineString([list(sh.pts) for sh in drawn.shapes]).difference(shapely.Point(c).buffer(1.7, 8))
+        geo = shapely.MultiLineString([list(sh.pts) for sh in drawn.shapes]).difference(shapely.Point(c).buffer(HINGE_CUT, 8))
         for arc in arcs:
             if shapely.intersection(geo, shapely.Polygon(rotation_inside(arc))).length == 0.0:
                 out[c] = arc

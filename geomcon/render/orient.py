@@ -21,9 +21,8 @@ from typing import Any
 
 from ..paper import Scale
 from ..scene import Scene
-from .figure import content_box, shown_steps
 from .page import PageSpec
-from .svg import _layouts, _not_diagram, figure_scale
+from .svg import _not_diagram, place_figure
 
 
 def turned(page: PageSpec) -> PageSpec:
@@ -36,13 +35,10 @@ def turned(page: PageSpec) -> PageSpec:
 
 
 def drawing_bound(scene: Scene, page: PageSpec) -> Scale:
-    """The largest standard scale sheet 1 of ``page`` can draw ``scene`` at: its steps (a cam's s–δ diagram left
-    out, which :func:`~geomcon.render.svg.diagram_apart` may move to a sheet of its own) in the drawing area of a
-    sheet without results, which holds the area of every other layout
-    (:func:`~geomcon.render.svg._layouts`)."""
-    steps, _ = shown_steps(scene, None, _not_diagram)
-    content = content_box(scene, steps, scene.evaluate([s.key for _, s in steps]))
-    return figure_scale(content, _layouts(page, (), ())[0].area)
+    """The largest standard scale sheet 1 of ``page`` can draw ``scene`` at: the drawing alone (a cam's s–δ
+    diagram left out, which :func:`~geomcon.render.svg.diagram_apart` may move to a sheet of its own) placed with
+    no results (:func:`~geomcon.render.svg.place_figure`), whose drawing area holds every other layout's."""
+    return place_figure(scene, page, keep=_not_diagram)[1]
 
 
 def larger_page(sol: Any, page: PageSpec) -> tuple[PageSpec, list[str]]:
